@@ -1,0 +1,38 @@
+"""Errors every solver raises, so that the command line can map them to exit codes.
+
+``InputError``: the input is invalid (alpha <= -1, Phat <= 0, a negative force,
+a bad mesh file). ``OutOfRangeError``: the input is valid but outside what the
+model describes (no inflated state on the first branch, the free part reaching
+the clamp plane). Both exit with status 2 on the command line.
+``ConvergenceError``: the numerics failed; it says where (load level), after
+how many iterations and with what residual. Exit status 1.
+"""
+
+from __future__ import annotations
+
+__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError"]
+
+
+class PocketError(Exception):
+    """Base class of the errors below; the message is one line."""
+
+
+class InputError(PocketError, ValueError):
+    """Invalid input, detected before any work."""
+
+
+class OutOfRangeError(PocketError, ValueError):
+    """Valid input for which the model has no (first-branch) solution."""
+
+
+class ConvergenceError(PocketError, RuntimeError):
+    """A nonlinear solve failed after step cutting.
+
+    Attributes: ``load`` (the load level reached), ``iterations``, ``residual``.
+    """
+
+    def __init__(self, message: str, *, load=float("nan"), iterations=0, residual=float("nan")):
+        super().__init__(message)
+        self.load = load
+        self.iterations = iterations
+        self.residual = residual
