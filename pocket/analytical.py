@@ -1,0 +1,148 @@
+r"""The paper's small-strain analytical model (section 3, eqs (14)-(26)), corrected.
+
+A small-strain approximation: good while lambda - 1 << 1 (the paper: lambda_0 <= 1.1)
+and at small force; it under-predicts the contact area at large force
+(``tests/test_analytical.py`` measures how much), and its pressure does not tend
+to P_I as the force vanishes: eq (26) does not reduce to (17b) as a_c -> 0 (the
+paper says so), so P/P_I -> 10 / (4 sqrt 6) = 1.0206 there.
+
+Inflation. Eqs (14)-(16): lambda_1 = lambda_0, lambda_2 = lambda_0 - s r^2 with
+s = lambda_0 - 1, eta = sqrt(3 s / 2) (1 - r^2), H0 = sqrt(3 s / 2),
+V = (pi / 4) sqrt(6 s). Linearising eq (6) about lambda = 1 gives
+T = 12 C1 (1 + alpha) T (lambda - 1) = 2 E T (lambda - 1) at the pole: the paper's
+eqs (17a) and (25) lack the factor (1 + alpha). With kappa R = sqrt(6 s), eq (18)
+becomes Phat_I = 2 kappa T / (E T) = 4 sqrt(6) s^(3/2), independent of alpha.
+
+Compression. Eqs (19)-(24): eta = sqrt(s_c) G(r, a), s_c = lambda_c - 1, with
+G(r, a) = c int_max(r,a)^1 sqrt(3 t^2 - a^2) dt, c = sqrt(2 / (1 - a^2)). The
+volume 2 pi sqrt(s_c) int_0^1 r G dr = V fixes s_c / s (eq (24)); integrating
+by parts, int_0^1 r G dr = (c / 2) int_a^1 t^2 sqrt(3 t^2 - a^2) dt. At the
+contact edge, with T = 2 E T s_c (eq (25) corrected) and the curvatures of
+eq (26) (which follow from eq (20)), normal equilibrium gives
+Phat = 2 s_c (3 + 2) sqrt(s_c / (1 - a^2)) = 10 s_c^(3/2) / sqrt(1 - a^2). The
+force is F = P A_c with A_c = pi (lambda_c a R)^2: Fhat = (Phat / Phat_I) lambda_c^2 a^2.
+Fhat(a) rises from 0 and falls back to 0 as a -> 1: past its maximum the model has
+no solution. Tensions in the profiles are the plane-stress linear law with
+Poisson ratio 1/2: T1 / (E T) = (4/3) (e1 + e2 / 2), e = lambda - 1.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.integrate import quad
+from scipy.optimize import brentq, minimize_scalar
+
+from .checks import check_alpha, check_force, check_positive
+from .errors import InputError, OutOfRangeError
+from .states import CompressedState, InflatedState, Profile
+
+__all__ = ["inflate", "compress", "compression_curve", "shape_function", "height_constant"]
+
+_N = 201  # profile points
+
+
+def height_constant() -> float:
+    """H0/R / Phat^(1/3) of the model: sqrt(3/2) (4 sqrt 6)^(-1/3) (eqs (16a) + corrected (18))."""
+    return np.sqrt(1.5) * (4.0 * np.sqrt(6.0)) ** (-1.0 / 3.0)
+
+
+def _antiderivative(t, a):
+    """A primitive of sqrt(3 t^2 - a^2) for t >= a / sqrt(3)."""
+    root3 = np.sqrt(3.0)
+    u = np.sqrt(np.maximum(3.0 * t * t - a * a, 0.0))
+    if a == 0.0:
+        return 0.5 * t * u
+    return 0.5 * t * u - a * a / (2.0 * root3) * np.log(root3 * t + u)
+
+
+def shape_function(r, a):
+    """G(r, a) of eq (21), vectorised over r (shape (n,) or scalar); 0 <= a < 1."""
+    c = np.sqrt(2.0 / (1.0 - a * a))
+    lower = np.maximum(r, a)
+    return c * (_antiderivative(1.0, a) - _antiderivative(lower, a))
+
+
+def _volume_moment(a):
+    """int_0^1 r G(r, a) dr, by parts (module docstring)."""
+    c = np.sqrt(2.0 / (1.0 - a * a))
+    return 0.5 * c * quad(lambda t: t * t * np.sqrt(3.0 * t * t - a * a), a, 1.0, epsabs=1e-14)[0]
+
+
+def _tensions(l1, l2):
+    e1, e2 = l1 - 1.0, l2 - 1.0
+    return 4.0 / 3.0 * (e1 + 0.5 * e2), 4.0 / 3.0 * (e2 + 0.5 * e1)
+
+
+def _profile(r, rho, eta, l1, l2, contact):
+    t1, t2 = _tensions(l1, l2)
+    return Profile(r=r, rho=rho, eta=eta, stretch_1=l1, stretch_2=l2,
+                   tension_1=t1, tension_2=t2, contact=contact)
+
+
+def inflate(alpha, pressure) -> InflatedState:
+    """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``."""
+    alpha = check_alpha(alpha)
+    pressure = check_positive("pressure", pressure)
+    s = (pressure / (4.0 * np.sqrt(6.0))) ** (2.0 / 3.0)
+    r = np.linspace(0.0, 1.0, _N)
+    l2 = 1.0 + s - s * r * r
+    profile = _profile(r, l2 * r, np.sqrt(1.5 * s) * (1.0 - r * r), np.full_like(r, 1.0 + s), l2,
+                       np.zeros(r.size, bool))
+    return InflatedState(alpha=alpha, pressure=pressure, stretch_pole=1.0 + s, height=np.sqrt(1.5 * s),
+                         volume=0.25 * np.pi * np.sqrt(6.0 * s), stretch_clamp=1.0 + s,
+                         profile=profile, solver="analytical")
+
+
+def _contact_strain(a, s0):
+    """lambda_c - 1 at contact radius a, from the volume constraint (eq (24))."""
+    return s0 * (np.sqrt(6.0) / (8.0 * _volume_moment(a))) ** 2
+
+
+def _force(a, s0, pressure_initial):
+    sc = _contact_strain(a, s0)
+    phat = 10.0 * sc**1.5 / np.sqrt(1.0 - a * a)
+    return phat / pressure_initial * (1.0 + sc) ** 2 * a * a
+
+
+def _compressed(inflated, force, a):
+    s0 = inflated.stretch_pole - 1.0
+    sc = _contact_strain(a, s0) if a > 0.0 else s0
+    phat = 10.0 * sc**1.5 / np.sqrt(1.0 - a * a) if a > 0.0 else inflated.pressure
+    r = np.union1d(np.linspace(0.0, a, 33), np.linspace(a, 1.0, _N))
+    l2 = np.where(r <= a, 1.0 + sc, 1.0 + sc - sc * (r * r - a * a) / (1.0 - a * a))
+    profile = _profile(r, l2 * r, np.sqrt(sc) * shape_function(r, a), np.full_like(r, 1.0 + sc), l2,
+                       r <= a if a > 0.0 else np.zeros(r.size, bool))
+    height = np.sqrt(sc) * shape_function(0.0, a)
+    return CompressedState(
+        alpha=inflated.alpha, pressure_initial=inflated.pressure, force=force, pressure=phat,
+        pressure_ratio=phat / inflated.pressure, contact_area=((1.0 + sc) * a) ** 2,
+        contact_radius=a, stretch_contact=1.0 + sc, height=height,
+        height_ratio=height / inflated.height,
+        volume=2.0 * np.pi * np.sqrt(sc) * _volume_moment(a), profile=profile,
+        inflated=inflated, solver="analytical",
+    )
+
+
+def compression_curve(alpha, pressure_initial, forces) -> list[CompressedState]:
+    """Compressed states at each Fhat of ``forces``; OutOfRangeError past the model's maximum force."""
+    inflated = inflate(alpha, pressure_initial)
+    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=float))]
+    if not forces:
+        raise InputError("no force given")
+    s0 = inflated.stretch_pole - 1.0
+    peak = minimize_scalar(lambda a: -_force(a, s0, inflated.pressure), bounds=(1e-6, 1.0 - 1e-9),
+                           method="bounded", options=dict(xatol=1e-12))
+    states = []
+    for f in forces:
+        if f > -peak.fun:
+            raise OutOfRangeError(f"force = {f:.6g} is beyond the analytical model's range "
+                                  f"(its largest force is {-peak.fun:.6g})")
+        a = 0.0 if f == 0.0 else brentq(lambda a: _force(a, s0, inflated.pressure) - f, 0.0, peak.x,
+                                        xtol=1e-15, rtol=1e-14)
+        states.append(_compressed(inflated, f, a))
+    return states
+
+
+def compress(alpha, pressure_initial, force) -> CompressedState:
+    """Compression by eqs (19)-(26) (corrected) at Fhat = ``force``."""
+    return compression_curve(alpha, pressure_initial, [force])[0]

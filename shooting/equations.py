@@ -1,0 +1,100 @@
+r"""The axisymmetric membrane equations in meridian-angle form, and their pole series.
+
+Derivation (from the paper's eqs (2), (4)-(6); Yang & Feng 1970)
+----------------------------------------------------------------
+Lagrangian radius r (units of R), deformed meridian (rho(r), eta(r)), tangent angle
+psi measured below the horizontal, so that with ' = d/dr
+
+    rho' = lambda_1 cos(psi),    eta' = -lambda_1 sin(psi),    lambda_2 = rho / r.
+
+Stress resultants of eq (6) in units of 2 C1 T (``t = T / (2 C1 T)``):
+
+    t1 = (l1/l2 - 1/(l1^3 l2^3)) (1 + alpha l2^2),
+    t2 = (l2/l1 - 1/(l1^3 l2^3)) (1 + alpha l1^2)  =  t1 with l1 <-> l2.
+
+Normal equilibrium, eq (4a), with kappa_1 = d psi/ds = psi'/lambda_1 and
+kappa_2 = sin(psi)/rho (these are eq (5) written with the angle), gives
+
+    psi' = lambda_1 (p - t2 sin(psi) / rho) / t1,    p = P R / (2 C1 T) = 3 (1 + alpha) Phat,
+
+since E = 6 (1 + alpha) C1. Tangential equilibrium, eq (4b), is d(rho T1)/d rho = T2,
+i.e. (rho t1)' = t2 rho', i.e. t1' = (t2 - t1) rho'/rho. With the chain rule and
+lambda_2' = (rho' - lambda_2)/r:
+
+    lambda_1' = [(t2 - t1) rho'/rho - dt1/dl2 * lambda_2'] / (dt1/dl1).
+
+The enclosed volume V = -pi int rho^2 eta' dr (valid for any meridian) is carried as
+the fifth unknown v' = pi rho^2 lambda_1 sin(psi). State y = [rho, eta, psi, lambda_1, v].
+
+Typos found in the paper. Eq (7) is the lambda_1 equation above written with
+w = rho' (it checks: ``tests/test_shooting_equations.py``) and eq (8) is lambda_2'.
+Eq (9), the w equation, has ``(1/2) Phat (1 + alpha)`` where normal equilibrium
+gives ``3 (1 + alpha) Phat r~`` (= p r~): as printed there is no regular solution at the
+pole. The (lambda_1, lambda_2, w) form also contains sqrt(lambda_1^2 - w^2), which
+vanishes where the meridian is horizontal (pole, contact edge) and then admits a
+flat spurious solution; the angle form used here has no such trap.
+
+Pole series (derived here, checked in the tests). With lambda_1 = l0 + a r^2,
+lambda_2 = l0 + b r^2, psi = k r + O(r^3): normal equilibrium at the pole gives
+2 kappa t0 = p with kappa = k / l0, so k = l0 p / (2 t0); rho' = lambda_1 cos(psi)
+at O(r^2) gives a = 3 b + l0 k^2 / 2; tangential equilibrium at O(r) gives
+a (3A - B) + b (3B - A) = 0 with A = dt1/dl1, B = dt1/dl2 at (l0, l0), hence
+b = -l0 k^2 (3A - B) / (16 A).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+__all__ = ["tensions", "rhs", "pole_state", "tension_scale"]
+
+
+@njit(cache=True)
+def tensions(l1, l2, alpha):
+    """Return (t1, t2, dt1/dl1, dt1/dl2), tensions in units of 2 C1 T."""
+    inv = 1.0 / (l1**3 * l2**3)
+    g1 = l1 / l2 - inv
+    t1 = g1 * (1.0 + alpha * l2 * l2)
+    t2 = (l2 / l1 - inv) * (1.0 + alpha * l1 * l1)
+    dt1_dl1 = (1.0 / l2 + 3.0 * inv / l1) * (1.0 + alpha * l2 * l2)
+    dt1_dl2 = (-l1 / (l2 * l2) + 3.0 * inv / l2) * (1.0 + alpha * l2 * l2) + 2.0 * alpha * l2 * g1
+    return t1, t2, dt1_dl1, dt1_dl2
+
+
+@njit(cache=True)
+def rhs(r, y, alpha, p, out):
+    """Write dy/dr into ``out`` (shape (5,)) for y = [rho, eta, psi, lambda_1, v]."""
+    rho, psi, l1 = y[0], y[2], y[3]
+    l2 = rho / r
+    s, c = np.sin(psi), np.cos(psi)
+    t1, t2, a11, a12 = tensions(l1, l2, alpha)
+    drho = l1 * c
+    dl2 = (drho - l2) / r
+    out[0] = drho
+    out[1] = -l1 * s
+    out[2] = l1 * (p - t2 * s / rho) / t1
+    out[3] = ((t2 - t1) * drho / rho - a12 * dl2) / a11
+    out[4] = np.pi * rho * rho * l1 * s
+
+
+def pole_state(l0: float, alpha: float, p: float, r0: float) -> np.ndarray:
+    """State y at r = r0 from the pole series (error O(r0^4) in the stretches).
+
+    ``l0`` is the pole stretch lambda_0, ``p`` the pressure in units of 2 C1 T / R.
+    Returns y = [rho, eta, psi, lambda_1, v], shape (5,); eta is measured from the pole.
+    """
+    t0, _, a, b = tensions(l0, l0, alpha)
+    k = l0 * p / (2.0 * t0)
+    cb = -l0 * k * k * (3.0 * a - b) / (16.0 * a)
+    ca = 3.0 * cb + 0.5 * l0 * k * k
+    rho = r0 * (l0 + cb * r0 * r0)
+    # eta' = -lambda_1 sin(psi) ~ -l0 k r, v' = pi rho^2 lambda_1 sin(psi) ~ pi l0^4 k r^3
+    eta = -0.5 * l0 * k * r0 * r0
+    v = 0.25 * np.pi * l0**4 * k * r0**4
+    return np.array([rho, eta, k * r0, l0 + ca * r0 * r0, v])
+
+
+def tension_scale(alpha: float) -> float:
+    """Factor converting tensions in units of 2 C1 T to units of E T: 1 / (3 (1 + alpha))."""
+    return 1.0 / (3.0 * (1.0 + alpha))

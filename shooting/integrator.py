@@ -1,0 +1,154 @@
+"""A compiled Dormand-Prince 8(5,3) integrator for the membrane equations.
+
+It is scipy's ``DOP853`` (same tableau, read from ``scipy.integrate.DOP853``; same
+error norm and step-size control as ``scipy/integrate/_ivp/rk.py``), compiled with
+numba and specialised to ``shooting.equations.rhs``: a shooting solve calls it
+thousands of times, and the Python version costs about 100x more per call
+(``benchmarks/bench_shooting.py``). ``tests/test_shooting_integrator.py`` checks it
+against ``solve_ivp(method="DOP853")``.
+
+Integration stops early, with a status, where the membrane model stops making
+sense: the meridian reaches the axis (rho <= 0), turns upward past vertical
+(psi >= pi) or downward into the sheet (psi <= -pi/2), or the meridional
+tension vanishes (t1 <= 0, wrinkling).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+from scipy.integrate import DOP853
+
+from .equations import rhs, tensions
+
+__all__ = ["integrate", "OK", "AXIS", "FOLD", "SLACK", "STEPS", "SMALL_STEP", "STATUS"]
+
+OK, AXIS, FOLD, SLACK, STEPS, SMALL_STEP = 0, 1, 2, 3, 4, 5
+STATUS = {
+    OK: "reached the clamp",
+    AXIS: "the meridian reached the axis (rho <= 0)",
+    FOLD: "the meridian folded (psi outside (-pi/2, pi))",
+    SLACK: "the meridional tension vanished (t1 <= 0)",
+    STEPS: "too many steps",
+    SMALL_STEP: "step size underflow",
+}
+
+_A = np.ascontiguousarray(DOP853.A, dtype=float)
+_B = np.ascontiguousarray(DOP853.B, dtype=float)
+_C = np.ascontiguousarray(DOP853.C, dtype=float)
+_E3 = np.ascontiguousarray(DOP853.E3, dtype=float)
+_E5 = np.ascontiguousarray(DOP853.E5, dtype=float)
+_NS = DOP853.n_stages
+_EXPONENT = -1.0 / 8.0
+
+
+@njit(cache=True)
+def _status(y, alpha, r):
+    if not (y[0] > 0.0):
+        return AXIS
+    if not (-0.5 * np.pi < y[2] < np.pi):
+        return FOLD
+    if not (y[3] > 0.0) or not (tensions(y[3], y[0] / r, alpha)[0] > 0.0):
+        return SLACK
+    return OK
+
+
+@njit(cache=True)
+def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, store, A, B, C, E3, E5):
+    n = y0.size
+    K = np.empty((_NS + 1, n))
+    y = y0.copy()
+    ynew = np.empty(n)
+    ytmp = np.empty(n)
+    f = np.empty(n)
+    rhs(r0, y, alpha, p, f)
+    r = r0
+    h = h0
+    nstore = 0
+    if store.shape[0] > 0:
+        store[0, 0] = r
+        store[0, 1:] = y
+        nstore = 1
+    maxsteps = 100000 if store.shape[0] == 0 else store.shape[0] - 1
+    for _ in range(maxsteps):
+        if r >= r1:
+            return OK, r, y, nstore
+        rejected = False
+        while True:
+            min_step = 10.0 * (np.nextafter(r, np.inf) - r)
+            if h < min_step:
+                return SMALL_STEP, r, y, nstore
+            h = min(h, hmax)
+            rnew = min(r + h, r1)
+            hh = rnew - r
+            K[0, :] = f
+            for s in range(1, _NS):
+                for i in range(n):
+                    acc = 0.0
+                    for j in range(s):
+                        acc += A[s, j] * K[j, i]
+                    ytmp[i] = y[i] + hh * acc
+                rhs(r + C[s] * hh, ytmp, alpha, p, K[s])
+            for i in range(n):
+                acc = 0.0
+                for j in range(_NS):
+                    acc += B[j] * K[j, i]
+                ynew[i] = y[i] + hh * acc
+            rhs(rnew, ynew, alpha, p, K[_NS])
+            e5 = 0.0
+            e3 = 0.0
+            for i in range(n):
+                scale = atol + max(abs(y[i]), abs(ynew[i])) * rtol
+                a5 = 0.0
+                a3 = 0.0
+                for j in range(_NS + 1):
+                    a5 += K[j, i] * E5[j]
+                    a3 += K[j, i] * E3[j]
+                e5 += (a5 / scale) ** 2
+                e3 += (a3 / scale) ** 2
+            if e5 == 0.0 and e3 == 0.0:
+                err = 0.0
+            else:
+                err = hh * e5 / np.sqrt((e5 + 0.01 * e3) * n)
+            if err < 1.0 and np.isfinite(err):
+                factor = 10.0 if err == 0.0 else min(10.0, 0.9 * err**_EXPONENT)
+                if rejected:
+                    factor = min(1.0, factor)
+                h = hh * factor if rnew < r1 else h
+                break
+            factor = 0.2 if not np.isfinite(err) else max(0.2, 0.9 * err**_EXPONENT)
+            h = hh * factor
+            rejected = True
+        r = rnew
+        y[:] = ynew
+        f[:] = K[_NS]
+        if nstore > 0:
+            store[nstore, 0] = r
+            store[nstore, 1:] = y
+            nstore += 1
+        status = _status(y, alpha, r)
+        if status != OK:
+            return status, r, y, nstore
+    return STEPS, r, y, nstore
+
+
+def integrate(y0, r0, alpha, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf):
+    """Integrate the membrane equations from r0 to the clamp r = 1.
+
+    y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). alpha: C2/C1.
+    p: pressure in units of 2 C1 T / R. rtol, atol: DOP853 tolerances
+    (atol defaults to rtol / 100). store: if > 0, keep every accepted step, up to
+    ``store`` points. h0: first step (default: a hundredth of r0, or 1e-6).
+    max_step: largest step in r (a finer profile; accuracy is set by rtol).
+
+    Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
+    columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
+    """
+    atol = rtol * 1e-2 if atol is None else atol
+    h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
+    buf = np.empty((store, 6)) if store else np.empty((0, 6))
+    status, r_end, y_end, m = _integrate(
+        np.asarray(y0, dtype=float), float(r0), 1.0, float(alpha), float(p),
+        float(rtol), float(atol), float(h0), float(max_step), buf, _A, _B, _C, _E3, _E5,
+    )
+    return int(status), float(r_end), y_end, buf[:m]

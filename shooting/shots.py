@@ -1,0 +1,82 @@
+"""Single shots: integrate from the pole (inflation) or from the contact edge
+(compression) to the clamp, and turn stored steps into a ``Profile``.
+
+Pressures here are p = P R / (2 C1 T) = 3 (1 + alpha) Phat; tensions in units of
+2 C1 T inside, of E T in the returned profile.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pocket.states import Profile
+
+from .equations import pole_state, tension_scale, tensions
+from .integrator import integrate
+
+__all__ = ["R_POLE", "shot_pole", "shot_edge", "edge_state", "profile_from_steps"]
+
+#: Start of the pole series: its error is O(R_POLE^3) in psi and O(R_POLE^4) in the
+#: stretches, below the integration tolerance (``tests/test_shooting_inflation.py``).
+R_POLE = 1e-5
+
+#: Largest step when a profile is stored, so that plots and VTK files of the
+#: profile have at least this many points per unit radius.
+PROFILE_STEP = 1.0 / 200
+
+
+def shot_pole(l0, alpha, p, rtol, store=0):
+    """Integrate from the pole with pole stretch l0. Returns (status, y(1), steps)."""
+    y0 = pole_state(l0, alpha, p, R_POLE)
+    status, _, y, steps = integrate(y0, R_POLE, alpha, p, rtol=rtol, store=store,
+                                    max_step=PROFILE_STEP if store else np.inf)
+    return status, y, steps
+
+
+def edge_state(lc, a):
+    """State at the contact edge r = a: flat (psi = 0), equibiaxial lambda_c, v = 0.
+
+    eta is measured from the plate, so the height is -eta(1).
+    """
+    return np.array([lc * a, 0.0, 0.0, lc, 0.0])
+
+
+def shot_edge(lc, a, alpha, p, rtol, store=0):
+    """Integrate the free part from the contact edge r = a. Returns (status, y(1), steps)."""
+    status, _, y, steps = integrate(edge_state(lc, a), a, alpha, p, rtol=rtol, store=store,
+                                    max_step=PROFILE_STEP if store else np.inf)
+    return status, y, steps
+
+
+def profile_from_steps(steps, alpha, *, contact_radius=0.0, stretch_contact=None, n_contact=32):
+    """Build a ``Profile`` from integrator steps (columns r, rho, eta, psi, lambda_1, v).
+
+    For inflation (contact_radius = 0) a pole point r = 0 is prepended. For
+    compression the flat contact zone 0 <= r <= a (rho = lambda_c r) is prepended
+    with ``n_contact`` points. Heights are shifted so that eta(1) = 0.
+    """
+    r, rho, eta, l1 = steps[:, 0], steps[:, 1], steps[:, 2], steps[:, 4]
+    if contact_radius > 0.0:
+        rc = np.linspace(0.0, contact_radius, n_contact, endpoint=False)
+        r = np.concatenate([rc, r])
+        rho = np.concatenate([stretch_contact * rc, rho])
+        eta = np.concatenate([np.zeros_like(rc), eta])
+        l1 = np.concatenate([np.full_like(rc, stretch_contact), l1])
+        contact = np.concatenate([np.ones(rc.size, bool), np.zeros(steps.shape[0], bool)])
+        contact[n_contact] = True  # the edge itself touches the plate
+    else:
+        r = np.concatenate([[0.0], r])
+        rho = np.concatenate([[0.0], rho])
+        eta = np.concatenate([[0.0], eta])
+        l1 = np.concatenate([[l1[0]], l1])
+        contact = np.zeros(r.size, bool)
+    l2 = np.empty_like(r)
+    l2[1:] = rho[1:] / r[1:]
+    l2[0] = l1[0]
+    t1, t2, _, _ = tensions(l1, l2, alpha)
+    scale = tension_scale(alpha)
+    return Profile(
+        r=r, rho=rho, eta=eta - eta[-1], stretch_1=l1, stretch_2=l2,
+        tension_1=t1 * scale, tension_2=t2 * scale, contact=contact,
+    )
+
