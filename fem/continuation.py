@@ -1,0 +1,60 @@
+"""Load stepping with a secant predictor and automatic step cutting.
+
+The load goes from ``start`` to ``stop`` through a parameter s in [0, 1].
+Each step solves at the new load from the secant extrapolation of the last
+two converged states. A step that fails is halved; a step that converges in
+few iterations is doubled. Below ``min_step`` the stepping gives up with a
+``ConvergenceError`` naming the load it reached.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+import numpy as np
+
+from pocket.errors import ConvergenceError
+
+__all__ = ["follow"]
+
+_EASY = 4  # iterations at or below which the next step is doubled
+
+
+def follow(
+    solve: Callable[[float, np.ndarray], tuple[np.ndarray, int]],
+    y0: np.ndarray,
+    start: float,
+    stop: float,
+    *,
+    first_step: float = 0.25,
+    min_step: float = 1e-5,
+    max_step: float = 1.0,
+) -> Iterator[tuple[float, np.ndarray, int]]:
+    """Yield (load, y, iterations) for each converged step; the last is at ``stop``.
+
+    ``solve(load, guess)`` returns (y, iterations) or raises ``ConvergenceError``.
+    """
+    s, ds = 0.0, min(first_step, max_step)
+    y, s_prev, y_prev = np.asarray(y0, dtype=float), None, None
+    while s < 1.0:
+        ds = min(ds, 1.0 - s)
+        s_new = 1.0 if s + ds > 1.0 - 1e-12 else s + ds
+        guess = y if y_prev is None else y + ((s_new - s) / (s - s_prev)) * (y - y_prev)
+        load = stop if s_new == 1.0 else start + s_new * (stop - start)
+        try:
+            y_new, iterations = solve(load, guess)
+        except ConvergenceError as err:
+            ds *= 0.5
+            if ds < min_step:
+                reached = start + s * (stop - start)
+                raise ConvergenceError(
+                    f"load stepping gave up at load {reached:.6g} on the way to {stop:.6g}: {err}",
+                    load=reached,
+                    iterations=err.iterations,
+                    residual=err.residual,
+                ) from err
+            continue
+        s_prev, y_prev, s, y = s, y, s_new, y_new
+        yield load, y, iterations
+        if iterations <= _EASY:
+            ds = min(2.0 * ds, max_step)

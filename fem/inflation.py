@@ -1,0 +1,111 @@
+"""Step 1, inflation: from a small dome to a given pressure or volume.
+
+Start: the small-strain dome (``steps.dome``) at Phat_0 = min(Phat, 1e-3),
+polished by Newton under pressure control; the flat sheet is never used (its
+tangent is singular).
+
+Volume target: load stepping in log V under volume control, which passes
+pressure maxima.
+
+Pressure target: the same volume path, monitoring P. When P reaches the
+target, ``steps.land`` solves under pressure control from the bracketing
+states. If P falls before reaching it, the path has passed a pressure maximum
+(neo-Hookean-like alpha): a golden-section search in V locates it; a target
+above it has no state on the first branch (``OutOfRangeError``), one below it
+is landed on the rising side.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pocket.errors import OutOfRangeError
+
+from .continuation import follow
+from .model import Control, Model
+from .newton import Tolerances
+from .post import volume
+from .steps import dome, land, solve
+
+__all__ = ["to_pressure", "to_volume"]
+
+P_START = 1e-3
+LOG_V_RANGE = np.log(1e3)  # how far past the start volume a pressure target is sought
+_STEPS = dict(first_step=0.05, max_step=0.1)  # log V steps of 0.35 to 0.7
+_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
+
+
+def _start(model: Model, pressure: float, lam, tol: Tolerances):
+    p0 = min(pressure, P_START)
+    return solve(model, Control(pressure=p0), dome(model, p0), lam, tol)
+
+
+def to_volume(model: Model, target: float, lam, tol: Tolerances) -> tuple[np.ndarray, int]:
+    """Inflated state of volume ``target``; (y, Newton iterations)."""
+    y, total = _start(model, P_START, lam, tol)
+
+    def along(log_v, guess):
+        return solve(model, Control(volume=np.exp(log_v)), guess, lam, tol)
+
+    for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target)):
+        total += iterations
+    return y, total
+
+
+def to_pressure(model: Model, target: float, lam, tol: Tolerances) -> tuple[np.ndarray, int]:
+    """Inflated state at pressure ``target`` on the first branch; (y, Newton iterations)."""
+    y, total = _start(model, target, lam, tol)
+    if target <= P_START:
+        return y, total
+
+    def along(log_v, guess):
+        return solve(model, Control(volume=np.exp(log_v)), guess, lam, tol)
+
+    def at_target(guess):
+        return solve(model, Control(pressure=target), guess, lam, tol)
+
+    log_v0 = np.log(volume(model, y))
+    path = [(log_v0, y)]
+    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, **_STEPS):
+        total += iterations
+        if y[-2] >= target:
+            y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
+            return y, total + iterations
+        if y[-2] < path[-1][1][-2] and len(path) >= 2:
+            peak, iterations = _pressure_peak(along, path[-2], path[-1], (log_v, y))
+            total += iterations
+            if peak[1][-2] < target:
+                raise OutOfRangeError(
+                    f"Phat = {target:.6g} exceeds the pressure maximum Phat = {peak[1][-2]:.6g} of"
+                    f" the first inflation branch (alpha = {model.material.alpha:.6g})"
+                )
+            y, iterations = land(along, at_target, path[-2], peak, _pressure, target)
+            return y, total + iterations
+        path.append((log_v, y))
+    raise OutOfRangeError(
+        f"Phat = {target:.6g} not reached up to V/R^3 = {np.exp(log_v):.4g} on the first branch"
+    )
+
+
+def _pressure(y: np.ndarray) -> float:
+    return float(y[-2])
+
+
+def _pressure_peak(along, a, m, b, rtol: float = 1e-7):
+    """Golden-section search for max P(log V) in [a, b], P(m) >= P(a), P(b).
+
+    Returns ((log V, y) at the peak, iterations).
+    """
+    (lo, _), best, (hi, _) = a, m, b
+    total = 0
+    while hi - lo > rtol:
+        s1, s2 = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
+        y1, k1 = along(s1, best[1])
+        y2, k2 = along(s2, best[1])
+        total += k1 + k2
+        if y1[-2] >= y2[-2]:
+            hi, cand = s2, (s1, y1)
+        else:
+            lo, cand = s1, (s2, y2)
+        best = cand if cand[1][-2] >= best[1][-2] else best
+    return best, total
