@@ -68,7 +68,7 @@ def _state(force, x, inflated, alpha, rtol):
     p = 3.0 * (1.0 + alpha) * inflated.pressure * q
     status, y, _ = shot_edge(lc, a, alpha, p, rtol)
     _, _, steps = shot_edge(lc, a, alpha, p, rtol, store=20000)
-    profile = profile_from_steps(steps, alpha, contact_radius=a, stretch_contact=lc)
+    profile = profile_from_steps(steps, alpha, lc, contact_radius=a)
     free = ~profile.contact
     if status != OK or np.any(profile.eta[free][:-1] <= 0.0) or np.any(steps[1:, 3] <= 0.0):
         raise OutOfRangeError(

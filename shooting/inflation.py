@@ -99,7 +99,7 @@ def _state(l0, alpha, p, rtol, how):
         height=-y[1],
         volume=y[4],
         stretch_clamp=y[3],
-        profile=profile_from_steps(steps, alpha),
+        profile=profile_from_steps(steps, alpha, l0),
         solver="shooting",
     )
 

@@ -48,10 +48,11 @@ def shot_edge(lc, a, alpha, p, rtol, store=0):
     return status, y, steps
 
 
-def profile_from_steps(steps, alpha, *, contact_radius=0.0, stretch_contact=None, n_contact=32):
+def profile_from_steps(steps, alpha, stretch_centre, *, contact_radius=0.0, n_contact=32):
     """Build a ``Profile`` from integrator steps (columns r, rho, eta, psi, lambda_1, v).
 
-    For inflation (contact_radius = 0) a pole point r = 0 is prepended. For
+    ``stretch_centre`` is the equibiaxial stretch at r = 0 (lambda_0 or lambda_c).
+    For inflation (contact_radius = 0) the pole point r = 0 is prepended. For
     compression the flat contact zone 0 <= r <= a (rho = lambda_c r) is prepended
     with ``n_contact`` points. Heights are shifted so that eta(1) = 0.
     """
@@ -59,20 +60,20 @@ def profile_from_steps(steps, alpha, *, contact_radius=0.0, stretch_contact=None
     if contact_radius > 0.0:
         rc = np.linspace(0.0, contact_radius, n_contact, endpoint=False)
         r = np.concatenate([rc, r])
-        rho = np.concatenate([stretch_contact * rc, rho])
+        rho = np.concatenate([stretch_centre * rc, rho])
         eta = np.concatenate([np.zeros_like(rc), eta])
-        l1 = np.concatenate([np.full_like(rc, stretch_contact), l1])
+        l1 = np.concatenate([np.full_like(rc, stretch_centre), l1])
         contact = np.concatenate([np.ones(rc.size, bool), np.zeros(steps.shape[0], bool)])
         contact[n_contact] = True  # the edge itself touches the plate
     else:
         r = np.concatenate([[0.0], r])
         rho = np.concatenate([[0.0], rho])
         eta = np.concatenate([[0.0], eta])
-        l1 = np.concatenate([[l1[0]], l1])
+        l1 = np.concatenate([[stretch_centre], l1])
         contact = np.zeros(r.size, bool)
     l2 = np.empty_like(r)
     l2[1:] = rho[1:] / r[1:]
-    l2[0] = l1[0]
+    l2[0] = stretch_centre
     t1, t2, _, _ = tensions(l1, l2, alpha)
     scale = tension_scale(alpha)
     return Profile(
