@@ -21,8 +21,9 @@ contact edge, with T = 2 E T s_c (eq (25) corrected) and the curvatures of
 eq (26) (which follow from eq (20)), normal equilibrium gives
 Phat = 2 s_c (3 + 2) sqrt(s_c / (1 - a^2)) = 10 s_c^(3/2) / sqrt(1 - a^2). The
 force is F = P A_c with A_c = pi (lambda_c a R)^2: Fhat = (Phat / Phat_I) lambda_c^2 a^2.
-Fhat(a) rises from 0 and falls back to 0 as a -> 1: past its maximum the model has
-no solution. Tensions in the profiles are the plane-stress linear law with
+Fhat(a) grows without bound as a -> 1, but past the force at which the deformed
+contact radius lambda_c a reaches the clamp radius the model no longer describes
+a pocket: that force is its range. Tensions in the profiles are the plane-stress linear law with
 Poisson ratio 1/2: T1 / (E T) = (4/3) (e1 + e2 / 2), e = lambda - 1.
 """
 
@@ -30,7 +31,7 @@ from __future__ import annotations
 
 import numpy as np
 from scipy.integrate import quad
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import brentq
 
 from .checks import check_alpha, check_force, check_positive
 from .errors import InputError, OutOfRangeError
@@ -130,14 +131,14 @@ def compression_curve(alpha, pressure_initial, forces) -> list[CompressedState]:
     if not forces:
         raise InputError("no force given")
     s0 = inflated.stretch_pole - 1.0
-    peak = minimize_scalar(lambda a: -_force(a, s0, inflated.pressure), bounds=(1e-6, 1.0 - 1e-9),
-                           method="bounded", options=dict(xatol=1e-12))
+    a_max = brentq(lambda a: (1.0 + _contact_strain(a, s0)) * a - 1.0, 0.0, 1.0 - 1e-12)
+    f_max = _force(a_max, s0, inflated.pressure)
     states = []
     for f in forces:
-        if f > -peak.fun:
-            raise OutOfRangeError(f"force = {f:.6g} is beyond the analytical model's range "
-                                  f"(its largest force is {-peak.fun:.6g})")
-        a = 0.0 if f == 0.0 else brentq(lambda a: _force(a, s0, inflated.pressure) - f, 0.0, peak.x,
+        if f > f_max:
+            raise OutOfRangeError(f"force = {f:.6g} is beyond the analytical model's range: the contact "
+                                  f"would reach the clamp (at force = {f_max:.6g})")
+        a = 0.0 if f == 0.0 else brentq(lambda a: _force(a, s0, inflated.pressure) - f, 0.0, a_max,
                                         xtol=1e-15, rtol=1e-14)
         states.append(_compressed(inflated, f, a))
     return states

@@ -1,0 +1,75 @@
+"""The ``pocket`` command line, called through ``main(argv)``."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+import shooting
+from pocket.cli import main
+from pocket.states import CompressedState, InflatedState
+
+
+def run(capsys, *argv):
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_inflate_json_has_the_design_keys(capsys):
+    """Exact answer: the JSON equals the library's state (same solver, same call)."""
+    status, out, err = run(capsys, "inflate", "--alpha", "47/160", "--pressure", "0.31", "--json")
+    assert status == 0 and err == ""
+    data = json.loads(out)
+    assert set(InflatedState.KEYS) <= set(data)
+    ref = shooting.inflate(47 / 160, 0.31).scalars()
+    assert all(data[k] == ref[k] for k in InflatedState.KEYS)
+
+
+def test_compress_curve_is_a_json_list(capsys):
+    status, out, _ = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31",
+                         "--force", "0.05", "0.1", "0.2", "--json")
+    rows = json.loads(out)
+    assert status == 0 and [r["force"] for r in rows] == [0.05, 0.1, 0.2]
+    assert all(set(CompressedState.KEYS) <= set(r) for r in rows)
+
+
+@pytest.mark.parametrize("solver", ["shooting", "analytical"])
+def test_table(capsys, solver):
+    status, out, _ = run(capsys, "compress", "--alpha", "47/160", "--pressure", "0.31",
+                         "--force", "0", "0.19", "--solver", solver)
+    lines = out.splitlines()
+    assert status == 0 and lines[0] == f"# solver: {solver}"
+    assert lines[1].split()[:3] == ["alpha", "pressure_initial", "force"] and len(lines) == 4
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["inflate", "--alpha", "-1", "--pressure", "0.3"], "alpha = -1.0"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0"], "pressure = 0.0"),
+        (["inflate", "--alpha", "0", "--pressure", "1"], "no inflated state on the first branch"),
+        (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "-0.1"], "force = -0.1"),
+        (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "50"], "beyond the model's range"),
+        (["compress", "--alpha", "x", "--pressure", "0.3", "--force", "1"], "'x' is not a number"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--order", "2"], "--order applies to --solver fem"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--solver", "analytical", "--rtol", "1e-8"],
+         "--rtol applies to --solver shooting"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(capsys, argv, message):
+    try:
+        status = main(argv)
+    except SystemExit as exc:  # argparse's own errors
+        status = exc.code
+    out, err = capsys.readouterr()
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and message in err, err
+
+
+def test_console_script_whole_process():
+    """The installed entry point: exit status and stderr of a real process, no traceback."""
+    proc = subprocess.run([sys.executable, "-m", "pocket.cli", "compress", "--alpha", "0.3",
+                           "--pressure", "0.3", "--force", "50"], capture_output=True, text=True)
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
