@@ -52,6 +52,7 @@ def _parser() -> argparse.ArgumentParser:
     fem.add_argument("--penalty", type=_number, help="contact penalty stiffness")
     fem.add_argument("--mesh", help="mesh file of [0, 1] (any meshio format)")
     common.add_argument("--vtk", metavar="DIR", help="write the states as VTK files for ParaView")
+    common.add_argument("--overwrite", action="store_true", help="replace an existing --vtk DIR")
 
     p = sub.add_parser("inflate", parents=[common], help="step 1: inflate at pressure Phat")
     p.add_argument("--pressure", type=_number, required=True, help="Phat = P R / (E T)")
@@ -117,7 +118,10 @@ def main(argv=None) -> int:
         if args.vtk:
             from .vtkfiles import write_series
 
-            write_series(args.vtk, states, times=[getattr(s, "force", 0.0) for s in states])
+            forces = [getattr(s, "force", 0.0) for s in states]
+            increasing = all(a < b for a, b in zip(forces, forces[1:]))
+            write_series(args.vtk, states, times=forces if increasing else None,
+                         overwrite=args.overwrite)
     except PocketError as err:
         status = 1 if isinstance(err, ConvergenceError) else 2
         print(f"pocket: error: {err}", file=sys.stderr)

@@ -189,7 +189,7 @@ def write_series(directory, states, *, times=None, segments=64, overwrite=False)
     if target.exists() and not target.is_dir():
         raise InputError(f"{target} exists and is not a directory")
     if target.is_dir() and any(target.iterdir()) and not overwrite:
-        raise InputError(f"{target} exists and is not empty; pass overwrite=True to replace it")
+        raise InputError(f"{target} exists and is not empty; replace it with overwrite=True (--overwrite)")
     target.parent.mkdir(parents=True, exist_ok=True)
     partial = target.with_name(f".{target.name}.{secrets.token_hex(6)}.partial")
     partial.mkdir()  # not mkdtemp: its mode 0700 would stay with the result

@@ -73,3 +73,22 @@ def test_console_script_whole_process():
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "compress", "--alpha", "0.3",
                            "--pressure", "0.3", "--force", "50"], capture_output=True, text=True)
     assert proc.returncode == 2 and "Traceback" not in proc.stderr
+
+
+def test_vtk_series(capsys, tmp_path):
+    """Exact answer: one surface per force, the .pvd times are the forces, the data read back."""
+    import xml.etree.ElementTree as ET
+
+    import meshio
+
+    out = tmp_path / "series"
+    status, _, _ = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31",
+                       "--force", "0", "0.1", "0.2", "--vtk", str(out))
+    assert status == 0
+    sets = ET.parse(out / "surface.pvd").getroot().iter("DataSet")
+    assert [float(d.get("timestep")) for d in sets] == [0.0, 0.1, 0.2]
+    mesh = meshio.read(out / "step_0002_surface.vtu")
+    assert {"lambda_1", "lambda_2", "lambda_3", "T_1", "T_2", "contact"} <= set(mesh.point_data)
+    status, _, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31",
+                         "--force", "0.1", "--vtk", str(out))
+    assert status == 2 and "--overwrite" in err

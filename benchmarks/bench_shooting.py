@@ -1,0 +1,103 @@
+"""Benchmark of the shooting solver, with scipy's ``solve_bvp`` as the peer on step 1.
+
+    python benchmarks/bench_shooting.py
+
+Prints medians of repeated runs (machines here are noisy) of one inflation, one
+compressed state and a 40-point compression curve; ``solve_bvp`` on the same
+inflation problem at matched accuracy, with the ratio; and a whole
+``pocket compress`` process with 100 forces, split into start-up (imports,
+loading the compiled integrator) and solving.
+"""
+
+from __future__ import annotations
+
+import statistics
+import subprocess
+import sys
+import time
+
+import numpy as np
+from scipy.integrate import solve_bvp
+
+import shooting
+from shooting.equations import pole_state, tensions
+from shooting.shots import R_POLE
+
+ALPHA, PHAT = 47 / 160, 0.31
+
+
+def median_time(fun, repeat):
+    times = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        fun()
+        times.append(time.perf_counter() - t)
+    return statistics.median(times)
+
+
+def bvp_inflate(tol):
+    """Step 1 as a boundary-value problem: unknown lambda_0, y(r0) on the pole series, rho(1) = 1."""
+    p = 3 * (1 + ALPHA) * PHAT
+
+    def f(r, y, par):
+        rho, _, psi, l1, _ = y
+        l2 = rho / r
+        t1, t2, a11, a12 = tensions(l1, l2, ALPHA)
+        drho = l1 * np.cos(psi)
+        dl2 = (drho - l2) / r
+        return np.vstack([drho, -l1 * np.sin(psi), l1 * (p - t2 * np.sin(psi) / rho) / t1,
+                          ((t2 - t1) * drho / rho - a12 * dl2) / a11, np.pi * rho**2 * l1 * np.sin(psi)])
+
+    def bc(ya, yb, par):
+        return np.append(ya - pole_state(par[0], ALPHA, p, R_POLE), yb[0] - 1.0)
+
+    r = np.linspace(R_POLE, 1, 50)
+    s = (PHAT / (4 * np.sqrt(6))) ** (2 / 3)
+    guess = np.vstack([r * (1 + s - s * r * r), -np.sqrt(1.5 * s) * r * r, 2 * np.sqrt(1.5 * s) * r,
+                       np.full_like(r, 1 + s), np.zeros_like(r)])
+    sol = solve_bvp(f, bc, r, guess, p=[1 + s], tol=tol, max_nodes=100000)
+    if not sol.success:
+        raise RuntimeError(sol.message)
+    return sol
+
+
+def main():
+    ref = shooting.inflate(ALPHA, PHAT, rtol=1e-13)
+    shooting.compression_curve(ALPHA, PHAT, [0.1])  # compile/load once
+
+    t_inf = median_time(lambda: shooting.inflate(ALPHA, PHAT), 21)
+    err_inf = abs(shooting.inflate(ALPHA, PHAT).stretch_pole - ref.stretch_pole)
+    t_one = median_time(lambda: shooting.compress(ALPHA, PHAT, 0.19), 11)
+    forces = np.linspace(0.025, 1.0, 40)
+    t_curve = median_time(lambda: shooting.compression_curve(ALPHA, PHAT, forces), 5)
+
+    print(f"shooting (alpha = {ALPHA}, Phat_I = {PHAT}, rtol 1e-10), medians:")
+    print(f"  one inflation            {t_inf * 1e3:8.2f} ms   |lambda_0 error| {err_inf:.1e}")
+    print(f"  one compressed state     {t_one * 1e3:8.2f} ms   (includes its inflation)")
+    print(f"  40-point curve           {t_curve * 1e3:8.2f} ms")
+
+    # The peer at matched accuracy: tighten tol until its lambda_0 error is no worse than ours.
+    for tol in (1e-6, 1e-8, 1e-10):
+        sol = bvp_inflate(tol)
+        err_bvp = abs(sol.p[0] - ref.stretch_pole)
+        if err_bvp <= max(err_inf, 1e-10):
+            break
+    t_bvp = median_time(lambda: bvp_inflate(tol), 3)
+    print(f"  solve_bvp inflation      {t_bvp * 1e3:8.2f} ms   |lambda_0 error| {err_bvp:.1e} "
+          f"(tol {tol:g}, {sol.x.size} nodes)")
+    print(f"  ratio solve_bvp / shooting: {t_bvp / t_inf:.0f}x")
+
+    cmd = [sys.executable, "-m", "pocket.cli", "compress", "--alpha", "47/160", "--pressure", "0.31",
+           "--force", *[f"{f:.4f}" for f in np.linspace(0.01, 1.0, 100)]]
+    t_proc = median_time(lambda: subprocess.run(cmd, check=True, capture_output=True), 5)
+    imports = [sys.executable, "-c", "import pocket.cli, shooting, shooting.integrator"]
+    t_import = median_time(lambda: subprocess.run(imports, check=True), 5)
+    t_solve = median_time(lambda: shooting.compression_curve(ALPHA, PHAT, np.linspace(0.01, 1, 100)), 5)
+    print("whole process `pocket compress` with 100 forces:")
+    print(f"  total                    {t_proc * 1e3:8.0f} ms")
+    print(f"  start-up (python, numpy, scipy, numba, cached integrator) {t_import * 1e3:6.0f} ms")
+    print(f"  solving 100 states       {t_solve * 1e3:8.0f} ms; the rest is printing and exit")
+
+
+if __name__ == "__main__":
+    main()
