@@ -3,6 +3,10 @@
     pocket inflate  --alpha A --pressure PHAT   [--solver S] [--json]
     pocket compress --alpha A --pressure PHAT_I --force FHAT [FHAT ...] [--solver S] [--json]
 
+Further subcommands live in the modules of ``COMMAND_MODULES``: each has
+``register(subparsers)``, adding its parsers with ``set_defaults(handler=f)``
+where ``f(args) -> int`` is the exit status. They share the error handling below.
+
 Quantities are dimensionless (DESIGN.md): Phat = P R / (E T), Fhat = F / (P_I pi R^2).
 Exit status: 0 success, 2 bad input or a state outside the model, 1 solver failure.
 Errors are one line on stderr.
@@ -11,6 +15,7 @@ Errors are one line on stderr.
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import math
 import sys
@@ -23,6 +28,9 @@ from .solvers import SOLVERS, get_solver
 __all__ = ["main"]
 
 _FEM_OPTIONS = ("elements", "order", "penalty", "mesh")
+
+#: modules adding subcommands (imported when the parser is built)
+COMMAND_MODULES: tuple[str, ...] = ()
 
 
 class _Parser(argparse.ArgumentParser):
@@ -60,6 +68,8 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--pressure", type=_number, required=True, help="initial Phat_I = P_I R / (E T)")
     c.add_argument("--force", type=_number, nargs="+", required=True,
                    help="Fhat = F / (P_I pi R^2); several give a curve (continuation)")
+    for name in COMMAND_MODULES:
+        importlib.import_module(name).register(sub)
     return parser
 
 
@@ -110,9 +120,20 @@ def _run(args) -> tuple[list, bool]:
     return states, len(args.force) > 1
 
 
+def _fail(err: PocketError) -> int:
+    """One line on stderr; exit 1 for a solver failure, 2 for input outside the model."""
+    print(f"pocket: error: {err}", file=sys.stderr)
+    return 1 if isinstance(err, ConvergenceError) else 2
+
+
 def main(argv=None) -> int:
     """Run the command line; returns the exit status."""
     args = _parser().parse_args(argv)
+    if hasattr(args, "handler"):
+        try:
+            return args.handler(args)
+        except PocketError as err:
+            return _fail(err)
     try:
         states, curve = _run(args)
         if args.vtk:
@@ -123,9 +144,7 @@ def main(argv=None) -> int:
             write_series(args.vtk, states, times=forces if increasing else None,
                          overwrite=args.overwrite)
     except PocketError as err:
-        status = 1 if isinstance(err, ConvergenceError) else 2
-        print(f"pocket: error: {err}", file=sys.stderr)
-        return status
+        return _fail(err)
     rows = [s.scalars() for s in states]
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
         print("pocket: error: a solver returned a non-finite value", file=sys.stderr)
