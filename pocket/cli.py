@@ -25,7 +25,7 @@ from .checks import check_positive
 from .errors import ConvergenceError, InputError, PocketError
 from .solvers import SOLVERS, get_solver
 
-__all__ = ["main"]
+__all__ = ["main", "number", "COMMAND_MODULES"]
 
 _FEM_OPTIONS = ("elements", "order", "penalty", "mesh")
 
@@ -38,7 +38,7 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def _number(text: str) -> float:
+def number(text: str) -> float:
     """A float or a fraction such as 47/160."""
     try:
         return float(Fraction(text)) if "/" in text else float(text)
@@ -50,23 +50,23 @@ def _parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="pocket", description="Mechanics of pressurised elastic pockets.")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     common = _Parser(add_help=False)
-    common.add_argument("--alpha", type=_number, required=True, help="C2/C1, > -1 (fractions allowed: 47/160)")
+    common.add_argument("--alpha", type=number, required=True, help="C2/C1, > -1 (fractions allowed: 47/160)")
     common.add_argument("--solver", choices=sorted(SOLVERS), default="shooting")
     common.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    common.add_argument("--rtol", type=_number, help="ODE tolerance of the shooting solver (default 1e-10)")
+    common.add_argument("--rtol", type=number, help="ODE tolerance of the shooting solver (default 1e-10)")
     fem = common.add_argument_group("finite elements (--solver fem)")
     fem.add_argument("--elements", type=int, help="number of elements of a uniform mesh")
     fem.add_argument("--order", type=int, help="element order, 1 or 2")
-    fem.add_argument("--penalty", type=_number, help="contact penalty stiffness")
+    fem.add_argument("--penalty", type=number, help="contact penalty stiffness")
     fem.add_argument("--mesh", help="mesh file of [0, 1] (any meshio format)")
     common.add_argument("--vtk", metavar="DIR", help="write the states as VTK files for ParaView")
     common.add_argument("--overwrite", action="store_true", help="replace an existing --vtk DIR")
 
     p = sub.add_parser("inflate", parents=[common], help="step 1: inflate at pressure Phat")
-    p.add_argument("--pressure", type=_number, required=True, help="Phat = P R / (E T)")
+    p.add_argument("--pressure", type=number, required=True, help="Phat = P R / (E T)")
     c = sub.add_parser("compress", parents=[common], help="step 2: compress at fixed volume")
-    c.add_argument("--pressure", type=_number, required=True, help="initial Phat_I = P_I R / (E T)")
-    c.add_argument("--force", type=_number, nargs="+", required=True,
+    c.add_argument("--pressure", type=number, required=True, help="initial Phat_I = P_I R / (E T)")
+    c.add_argument("--force", type=number, nargs="+", required=True,
                    help="Fhat = F / (P_I pi R^2); several give a curve (continuation)")
     for name in COMMAND_MODULES:
         importlib.import_module(name).register(sub)
