@@ -108,16 +108,23 @@ def full(model: Model, y: np.ndarray) -> np.ndarray:
     return u
 
 
+def _fields(w: dict):
+    """The keyword arguments as the forms see them (attribute access)."""
+    return types.SimpleNamespace(**w)
+
+
 def parameters(model: Model, y: np.ndarray, lam: np.ndarray) -> dict:
     """Keyword arguments of the forms at the state y."""
     u = model.basis.interpolate(full(model, y))
-    return dict(u=u, P=y[-2], h=y[-1], kappa=model.penalty, lam=lam)
+    r = model.basis.global_coordinates()[0]
+    return dict(u=u, r=r, P=y[-2], h=y[-1], kappa=model.penalty, lam=lam)
 
 
 def residual(model: Model, y: np.ndarray, control: Control, lam: np.ndarray) -> np.ndarray:
     """The residual vector of the module docstring, length ``model.size``."""
     w = parameters(model, y, lam)
-    r_x = forms.residual(model.material).assemble(model.basis, **w)[model.free]
+    r_x = forms.residual.assemble(model.basis, **forms.residual_coefficients(model.material, _fields(w)))
+    r_x = r_x[model.free]
     if control.pressure is not None:
         r_p = y[-2] - control.pressure
     else:
@@ -133,7 +140,8 @@ def jacobian(model: Model, y: np.ndarray, control: Control, lam: np.ndarray) -> 
     """The bordered tangent of the module docstring, sparse, square."""
     w = parameters(model, y, lam)
     free = model.free
-    k = forms.tangent(model.material).assemble(model.basis, **w).tocsr()[free][:, free]
+    coefficients = forms.tangent_coefficients(model.material, _fields(w))
+    k = forms.tangent.assemble(model.basis, **coefficients).tocsr()[free][:, free]
     dv = sp.csc_matrix(forms.volume_gradient.assemble(model.basis, **w)[free][:, None])
     df = sp.csc_matrix(forms.contact_force_gradient.assemble(model.basis, **w)[free][:, None])
     if control.pressure is not None:
@@ -149,17 +157,14 @@ def jacobian(model: Model, y: np.ndarray, control: Control, lam: np.ndarray) -> 
 
 
 def penetration(model: Model, y: np.ndarray) -> float:
-    """Largest eta - h over nodes and quadrature points (0 if the sheet is below)."""
-    u = full(model, y)
-    eta_q = model.basis.interpolate(u).value[1]
-    eta_n = u[model.basis.nodal_dofs[1]]
-    return max(0.0, float(max(eta_q.max(), eta_n.max()) - y[-1]))
+    """Largest eta - h at the quadrature points, where contact is imposed (0 if none)."""
+    eta = model.basis.interpolate(full(model, y))[1]
+    return max(0.0, float(eta.max() - y[-1]))
 
 
 def plate_pressure(model: Model, y: np.ndarray, lam) -> tuple[np.ndarray, np.ndarray]:
     """(p_N, chi) at the quadrature points: plate pressure per reference area, active set."""
-    w = types.SimpleNamespace(**parameters(model, y, lam))
-    return forms.contact_pressure(w)
+    return forms.contact_pressure(_fields(parameters(model, y, lam)))
 
 
 def multiplier_update(model: Model, y: np.ndarray, lam: np.ndarray) -> np.ndarray:

@@ -21,6 +21,8 @@ the adjacent elements, lambda_2 = rho/r.
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 from scipy.optimize import brentq
 
@@ -57,7 +59,7 @@ def pole_stretch(model: Model, y: np.ndarray) -> float:
 def clamp_stretch(model: Model, y: np.ndarray, lam) -> float:
     """Meridional stretch at the clamp from the reaction (module docstring)."""
     w = parameters(model, y, lam)
-    rows = forms.residual(model.material).assemble(model.basis, **w)
+    rows = forms.residual.assemble(model.basis, **forms.residual_coefficients(model.material, SimpleNamespace(**w)))
     clamp = model.basis.get_dofs(lambda x: x[0] == 1.0).nodal
     tension = np.hypot(rows[clamp["u^1"][0]], rows[clamp["u^2"][0]] - np.pi * y[-2]) / (2 * np.pi)
     return float(brentq(lambda a: (a - a**-3) / 3.0 - tension, 0.5, 1e3, xtol=1e-15, rtol=1e-15))
@@ -77,7 +79,7 @@ def contact_area_active(model: Model, y: np.ndarray, lam) -> float:
     """Deformed area of the active set, 2 pi int chi rho rho' dr (edge resolved to O(h))."""
     u = model.basis.interpolate(full(model, y))
     _, chi = plate_pressure(model, y, lam)
-    return float(np.sum(2 * np.pi * chi * u.value[0] * u.grad[0, 0] * model.basis.dx))
+    return float(np.sum(2 * np.pi * chi * u[0] * u.grad[0, 0] * model.basis.dx))
 
 
 def profile(model: Model, y: np.ndarray, lam, contact_radius: float = 0.0) -> Profile:
