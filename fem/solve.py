@@ -13,8 +13,9 @@ Reported quantities (DESIGN.md keys) from a converged state:
   ``contact_radius`` = sqrt(A_c/pi) / lambda_c (Lagrangian: the zone is a disc
   of reference radius a_c stretched uniformly by lambda_c).
 - ``extra``: ``elements``, ``order``, ``newton_iterations`` (all iterations
-  spent to reach this state from the previous one), ``penetration`` (max, in
-  R), and for compression ``force_reaction`` (the plate reaction as Fhat),
+  spent to reach this state from the previous one), ``penetration`` (max of
+  eta - h over the quadrature points, in R), and for compression
+  ``penetration_pole`` (eta(0) - h, what the penalty adds to the height), ``force_reaction`` (the plate reaction as Fhat),
   ``force_pressure_area`` (P times the deformed area of the active contact
   set, an independent O(h) estimate, as Fhat) and ``force_difference``.
 """
@@ -92,7 +93,12 @@ def _compressed(model, y, lam, iterations, inflated: InflatedState, force=None) 
     active = p * post.contact_area_active(model, y, lam) / (np.pi * p_i)
     _, _, eta = post.nodal(model, y)
     extra = _extra(model, y, iterations)
-    extra.update(force_reaction=reaction, force_pressure_area=active, force_difference=reaction - active)
+    extra.update(
+        penetration_pole=max(0.0, float(eta[0] - y[-1])),
+        force_reaction=reaction,
+        force_pressure_area=active,
+        force_difference=reaction - active,
+    )
     return CompressedState(
         alpha=model.material.alpha,
         pressure_initial=p_i,
@@ -128,8 +134,14 @@ def _uncompressed(inflated: InflatedState) -> CompressedState:
         profile=inflated.profile,
         inflated=inflated,
         solver="fem",
-        extra={**inflated.extra, "newton_iterations": 0, "force_reaction": 0.0,
-               "force_pressure_area": 0.0, "force_difference": 0.0},
+        extra={
+            **inflated.extra,
+            "newton_iterations": 0,
+            "penetration_pole": 0.0,
+            "force_reaction": 0.0,
+            "force_pressure_area": 0.0,
+            "force_difference": 0.0,
+        },
     )
 
 
