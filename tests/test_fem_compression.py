@@ -94,7 +94,7 @@ def test_penalty_penetration_scales_as_one_over_penalty():
     penalty also shifts the contact edge, whose discretization error then enters)."""
     mesh = meshes.uniform(40)
     exact = fem.compress(ALPHA, P_I, 0.19, mesh=mesh)
-    penalties = np.array([1e3, 1e4, 1e5])
+    penalties = np.array([1e2, 1e3, 1e4])
     states = [fem.compress(ALPHA, P_I, 0.19, mesh=mesh, penalty=k, augmented=False) for k in penalties]
     penetration = [s.extra["penetration_pole"] for s in states]
     height_error = [abs(s.height - exact.height) for s in states]
@@ -105,7 +105,7 @@ def test_penalty_penetration_scales_as_one_over_penalty():
     assert np.all(np.array(height_error) <= np.array(penetration))
     # the leading term: p_N = P lambda_c^2 per reference area (1 %: O(1/kappa^2))
     s = states[-1]
-    assert penetration[-1] == pytest.approx(s.pressure * s.stretch_contact**2 / 1e5, rel=1e-2)
+    assert penetration[-1] == pytest.approx(s.pressure * s.stretch_contact**2 / 1e4, rel=1e-2)
 
 
 def test_augmented_lagrangian_removes_penetration():
