@@ -26,7 +26,8 @@ __all__ = ["Curves", "FemCurve", "reference", "fem_curve", "range_end", "force_g
 
 #: forces always on the grid: fig 2 (0.19) and the section 6 design reading (1/5.7)
 DESIGN_FORCES = (0.19, 1.0 / 5.7)
-_SMALL_FORCES = (0.005, 0.01, 0.02, 0.05, 0.1)  # where the analytical model is expected to hold
+_SMALL_FORCES = (0.005, 0.01, 0.02, 0.05)  # where the analytical model is expected to hold
+_PAPER_FORCES = tuple(np.linspace(0.1, 1.0, 10))  # the range of the paper's figs 3 and 5
 
 
 @dataclasses.dataclass(frozen=True)
@@ -77,9 +78,11 @@ def range_end(alpha: float, pressure: float, *, rtol: float = 1e-3) -> float:
 
 
 def force_grid(force_end: float, points: int, extra=()) -> np.ndarray:
-    """Sorted forces: 0, a linear grid to RANGE_FRACTION * force_end, the small and design forces."""
+    """Sorted forces to RANGE_FRACTION * force_end: ``points`` linearly and ``points`` geometrically
+    spaced (from 0.005: ranges differ 20-fold between cases), the small, the paper's and the design forces."""
     top = RANGE_FRACTION * force_end
-    grid = np.concatenate((np.linspace(0.0, top, points), _SMALL_FORCES, DESIGN_FORCES, list(extra)))
+    grid = np.concatenate((np.linspace(0.0, top, points), np.geomspace(0.005, top, points), _SMALL_FORCES, _PAPER_FORCES,
+                           DESIGN_FORCES, list(extra)))
     return np.unique(grid[grid <= top])
 
 

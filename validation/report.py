@@ -1,0 +1,141 @@
+"""Write a validation run as one folder: index.html, report.md, PNGs, CSVs, the VTK series.
+
+The folder is built in a temporary sibling directory and renamed into place
+at the end, so a failed run leaves no complete-looking report. An existing
+folder is replaced only if it holds a previous report (its ``report.md``).
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import os
+import pathlib
+import secrets
+import shutil
+
+from pocket.errors import InputError
+
+from . import checks as checks_module
+from . import document, draw, figures, render, sections
+from .run import headline
+
+__all__ = ["write_report"]
+
+
+def _target(out) -> pathlib.Path:
+    target = pathlib.Path(out).resolve()
+    if target.exists():
+        if not target.is_dir():
+            raise InputError(f"{target} exists and is not a directory")
+        if any(target.iterdir()) and not (target / "report.md").exists():
+            raise InputError(f"{target} exists, is not empty and holds no previous report: choose another --out")
+    return target
+
+
+def _write_rows(path: pathlib.Path, header, rows) -> None:
+    with path.open("w", newline="") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(header)
+        writer.writerows(rows)
+
+
+def _states_rows(results):
+    keys = None
+    rows = []
+    for curves in results.curves:
+        runs = [("shooting", curves.shooting), ("analytical", [a for a in curves.analytical if a is not None])]
+        runs += [(f"FEM P{f.order}", f.states) for f in results.fem if f.case == curves.case]
+        for solver, states in runs:
+            for state in states:
+                values = {k: getattr(state, k) for k in state.KEYS}
+                keys = keys or list(values)
+                rows.append([curves.case.name, solver] + [repr(float(values[k])) for k in keys])
+    return ["case", "solver"] + (keys or []), rows
+
+
+def _write_tables(results, directory: pathlib.Path) -> list[str]:
+    fields = [f.name for f in dataclasses.fields(checks_module.Check)]
+    _write_rows(directory / "checks.csv", fields, [[getattr(c, f) for f in fields] for c in results.checks])
+    summary = checks_module.summary(results.checks)
+    _write_rows(directory / "summary.csv", list(summary[0]) if summary else [],
+                [list(row.values()) for row in summary])
+    _write_rows(directory / "cases.csv", *sections.case_table(results))
+    _write_rows(directory / "convergence_study.csv", *sections.sequence_rows(results))
+    names = ["checks.csv", "summary.csv", "cases.csv", "convergence_study.csv"]
+    if results.curves:
+        _write_rows(directory / "states.csv", *_states_rows(results))
+        names.append("states.csv")
+    return names
+
+
+def _write_vtk(results, directory: pathlib.Path) -> str | None:
+    if not results.curves:
+        return None
+    from pocket.vtkfiles import write_series
+
+    curves = results.curves[results.cases.index(headline(results.cases))]
+    write_series(directory / "vtk", curves.shooting, times=curves.forces)
+    return "vtk"
+
+
+def _picture(results, head, directory):
+    curves = results.curves[results.cases.index(head)]
+    k = int(abs(curves.forces - 0.19).argmin())
+    return render.render_pocket(curves.shooting[0].inflated, curves.shooting[k], directory / "pocket3d.png")
+
+
+def write_report(results, out, *, executor=None, title="pocket validation report") -> pathlib.Path:
+    """Write the report of ``results`` (a ``run.Results``) to the folder ``out``; returns its path.
+
+    The figures and the 3-D picture are drawn on ``executor`` (an Executor) if given, else here.
+    """
+    target = _target(out)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    partial = target.with_name(f".{target.name}.{secrets.token_hex(6)}.partial")
+    partial.mkdir()
+    try:
+        head = headline(results.cases)
+        if results.curves:
+            figs = figures.figures(results, head)
+        else:
+            figs = [figures.convergence_figure(results)]
+        submit = executor.submit if executor is not None else _Now
+        jobs = [submit(draw.draw, fig, partial) for fig in figs]
+        if results.curves:
+            jobs.append(submit(_picture, results, head, partial))
+        for fig in figs:
+            draw.write_csv(fig, partial)
+        tables = _write_tables(results, partial)
+        vtk = _write_vtk(results, partial)
+        picture, why = jobs[-1].result() if results.curves else (None, "")
+        for job in jobs:
+            job.result()
+        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk)
+        (partial / "report.md").write_text(document.markdown(blocks))
+        (partial / "index.html").write_text(document.html_page(title, blocks))
+        _replace(partial, target)
+    except BaseException:
+        shutil.rmtree(partial, ignore_errors=True)
+        raise
+    return target
+
+
+class _Now:
+    """A finished future: ``_Now(f, *args).result()`` is ``f(*args)``, run at construction."""
+
+    def __init__(self, function, *args):
+        self.value = function(*args)
+
+    def result(self):
+        return self.value
+
+
+def _replace(source: pathlib.Path, target: pathlib.Path) -> None:
+    if not target.exists():
+        os.rename(source, target)
+        return
+    trash = target.with_name(f".{target.name}.{secrets.token_hex(6)}.old")
+    os.rename(target, trash)
+    os.rename(source, target)
+    shutil.rmtree(trash, ignore_errors=True)

@@ -1,0 +1,156 @@
+"""The content of the report, as ``document`` blocks and plain table rows."""
+
+from __future__ import annotations
+
+import math
+
+from .checks import TOLERANCES, summary
+from .convergence import EXPECTED, REFINED_P2_FINEST, RICHARDSON_FACTOR, richardson
+from .run import headline
+
+__all__ = ["blocks", "case_table", "sequence_rows", "counts"]
+
+
+def _g(x, digits=4) -> str:
+    if x is None:
+        return ""
+    if isinstance(x, str):
+        return x
+    return "" if isinstance(x, float) and math.isnan(x) else f"{x:.{digits}g}"
+
+
+def counts(results) -> dict:
+    """Number of checks per verdict."""
+    out = {"pass": 0, "fail": 0, "info": 0}
+    for c in results.checks:
+        out[c.verdict] += 1
+    return out
+
+
+def case_table(results):
+    """(header, rows): each case in SI and dimensionless, with the end of its range."""
+    header = ["case", "label", "T (mm)", "C1 (kPa)", "C2 (kPa)", "R (mm)", "P_I (kPa)", "alpha", "E (MPa)",
+              "Phat_I", "lambda_0", "H0/R", "range end Fhat"]
+    ends = {c.case: c for c in results.curves}
+    rows = []
+    for case in results.cases:
+        curves = ends.get(case)
+        inflated = curves.shooting[0].inflated if curves else None
+        rows.append([case.name, case.label, _g(case.thickness * 1e3), _g(case.c1 / 1e3), _g(case.c2 / 1e3),
+                     _g(case.radius * 1e3), _g(case.pressure / 1e3, 6), _g(case.alpha), _g(case.modulus / 1e6),
+                     _g(case.pressure_hat), _g(inflated.stretch_pole, 6) if inflated else "",
+                     _g(inflated.height) if inflated else "", _g(curves.force_end) if curves else ""])
+    return header, rows
+
+
+def sequence_rows(results):
+    """(header, rows): every FE value of the convergence study with its error."""
+    header = ["study", "order", "mesh", "elements", "h", "quantity", "fem", "shooting", "relative_error"]
+    rows = []
+    for seq in results.sequences:
+        for quantity, values in seq.values.items():
+            errors = seq.errors(quantity)
+            for n, h, v, e in zip(seq.elements, seq.sizes, values, errors):
+                rows.append([seq.study, seq.order, seq.mesh, n, repr(float(h)), quantity, repr(float(v)),
+                             repr(seq.reference[quantity]), repr(float(e))])
+    return header, rows
+
+
+def _summary_table(results):
+    rows = [[r["case"], r["comparison"], r["step"], r["checks"], r["worst"], _g(r["error"], 3),
+             _g(r["tolerance"], 3), r["verdict"]] for r in summary(results.checks)]
+    return ("table", ["case", "comparison", "step", "checks", "worst (quantity, where)", "error", "tolerance",
+                      "verdict"], rows)
+
+
+def _convergence_blocks(results):
+    out = [("h", 2, "Mesh convergence"),
+           ("p", "Error of the FE model against the shooting reference on sequences of meshes, for the headline "
+                 "case: inflation, and compression at Fhat = 0.19. Theory: O(h^2p) for smooth functionals (2 for "
+                 "P1, 4 for P2); the curvature jump at the contact edge caps P2 on uniform meshes, refinement at "
+                 "the edge (8x within 0.05) restores accuracy. Expected orders checked: "
+                 + "; ".join(f"{s} P{o} {m}: {q} {p:g} +- {t:g} ({why})" for (s, o, m), d in EXPECTED.items()
+                             for q, (p, t, why) in d.items())
+                 + f"; P2 refined: finest contact-radius error below {REFINED_P2_FINEST:g}.")]
+    rows = []
+    for seq in results.sequences:
+        for quantity, values in seq.values.items():
+            order = [c for c in results.checks if c.step == "order" and c.quantity == quantity
+                     and c.comparison == f"FEM P{seq.order} {seq.mesh} meshes" and c.where.startswith(seq.study)]
+            extrapolated = richardson(seq.sizes, values)
+            value, estimate = (extrapolated[:2] if extrapolated else (None, None))
+            rows.append([seq.study, f"P{seq.order}", seq.mesh, " ".join(map(str, seq.elements)), quantity,
+                         _g(order[0].value, 3) if order else "", _g(values[-1], 12), _g(value, 12),
+                         _g(estimate, 2), _g(seq.reference[quantity], 12),
+                         _g(abs(value - seq.reference[quantity]), 2) if value is not None else "not monotone"])
+    out.append(("table", ["study", "element", "meshes", "elements (base)", "quantity", "observed order",
+                          "finest FE", "Richardson", "its error estimate", "shooting", "|Richardson - shooting|"],
+                rows))
+    out.append(("p", f"Richardson extrapolation from the three finest meshes with their observed order; it is "
+                     f"checked (shooting within {RICHARDSON_FACTOR:g} error estimates) for inflation and for "
+                     "meshes refined at the contact edge. On uniform meshes in contact the edge moves inside its "
+                     "element from mesh to mesh, the error is not a smooth function of h, and the extrapolation is "
+                     "reported only."))
+    return out
+
+
+def _findings_blocks(results):
+    out = [("h", 2, "Where the paper and the model disagree"),
+           ("p", "Each statement of the paper checked against the full model here (the shooting solver, "
+                 "cross-checked by the FE model above); the numbers are computed in this run. Verdicts are about "
+                 "the paper and do not fail the run.")]
+    for f in results.findings:
+        out += [("h", 3, f"{f.title}: {f.verdict}"),
+                ("list", [f"Paper: {f.paper}", f"Model: {f.model}", *[f"Evidence: {e}" for e in f.evidence]])]
+    return out
+
+
+def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
+    """All blocks of the report."""
+    n = counts(results)
+    verdict = "FAIL" if n["fail"] else "PASS"
+    out = [("h", 1, "pocket validation report"),
+           ("p", f"Overall: {verdict}. {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational. "
+                 f"Plan '{results.plan.name}', {len(results.cases)} cases, {results.seconds:.1f} s on 2 processes."),
+           ("h", 2, "Summary"),
+           ("p", "One row per comparison (case, solvers, step): the verdict is 'fail' if any of its checks fails; "
+                 "'info' rows have no tolerance that should hold (the analytical model outside its range). "
+                 "Every check is in 'All checks' below and in checks.csv."),
+           _summary_table(results)]
+    if results.findings:
+        out += [("table", ["statement of the paper", "verdict"], [[f.title, f.verdict] for f in results.findings])]
+    if results.curves:
+        header, rows = case_table(results)
+        out += [("h", 2, "Cases"), ("p", "From validation/cases.toml (SI); alpha = C2/C1, E = 6 (1 + alpha) C1, "
+                                         "Phat_I = P_I R / (E T). The range ends where the free part of the sheet "
+                                         "reaches the clamp plane (shooting, bisection)."),
+                ("table", header, rows), ("h", 2, "Figures")]
+        for fig in figs:
+            if fig.name != "convergence":
+                out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
+        out.append(("h", 2, "The pocket in 3-D"))
+        if picture:
+            out.append(("image", "pocket3d.png", f"{headline(results.cases).label}: the shooting solution revolved "
+                                                 "about the axis, coloured by the meridional stretch; plate shown."))
+        else:
+            out.append(("p", f"No picture: {why}."))
+    if results.sequences:
+        out += _convergence_blocks(results)
+        out.append(("image", "convergence.png", "Error against element size (log-log), observed orders in the "
+                                                "legend. Data: convergence.csv (plotted points), convergence_study.csv (every value)."))
+    if results.findings:
+        out += _findings_blocks(results)
+    out += [("h", 2, "Tolerances"),
+            ("list", [f"{name}: {tol}: {why}" for name, (tol, why) in TOLERANCES.items()]),
+            ("h", 2, "Files"),
+            ("list", [f"{name}: every number of the figures ({', '.join(f.name for f in figs)}.csv), "
+                      "one row per point" if name == "figures" else name for name in ["figures", *tables]]
+             + ([f"{vtk}/: the headline case's compression path (shooting), one profile and one surface per "
+                 "force plus surface.pvd and profile.pvd; open vtk/surface.pvd in ParaView and press play "
+                 "(time = Fhat)."] if vtk else [])),
+            ("h", 2, "All checks"),
+            ("table", ["case", "comparison", "step", "quantity", "where", "value", "reference", "error",
+                       "tolerance", "verdict"],
+             [[c.case, c.comparison, c.step, c.quantity, c.where, _g(c.value, 8), _g(c.reference, 8),
+               _g(c.error, 3), _g(c.tolerance, 3), c.verdict] for c in results.checks])]
+    return out
