@@ -31,7 +31,9 @@ def register(subparsers) -> None:
 def _setup(args):
     from .cases import CASES_FILE, load
     from .plan import DEFAULT, QUICK
+    from .report import check_target
 
+    check_target(args.out)
     cases, design = load(args.cases or CASES_FILE)
     return cases, design, QUICK if args.quick else DEFAULT
 

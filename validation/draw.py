@@ -30,7 +30,9 @@ def draw(figure, directory) -> pathlib.Path:
         for x, y, text in panel.marks:
             ax.axvline(x, color="0.4", linewidth=0.8, linestyle=":")
             ax.axhline(y, color="0.4", linewidth=0.8, linestyle=":")
-            ax.annotate(_math(text), (x, y), xytext=(6, 6), textcoords="offset points", fontsize=8, color="0.3")
+            # in the empty top-right corner, not over the curves
+            ax.text(0.98, 0.97, _math(text) + " (dotted)", transform=ax.transAxes, ha="right", va="top",
+                    fontsize=8, color="0.3")
         if "x" in panel.log:
             ax.set_xscale("log")
         if "y" in panel.log:

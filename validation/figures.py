@@ -133,14 +133,14 @@ def figures(results, head) -> list[Figure]:
     fhat = "F / (P_I pi R^2)"
     design = (1.0 / results.design.pressure_coefficient, results.design.height_ratio,
               f"section 6: Fhat = 1/{results.design.pressure_coefficient:g}, H / H_0 = {results.design.height_ratio:g}")
-    for name, key, ylabel, caption, marks in (
-            ("fig3a", "contact_area", "A_c / (pi R^2)", "Fig. 3a: contact area fraction", ()),
-            ("fig3b", "height_ratio", "H / H_0", "Fig. 3b: normalised height", (design,)),
-            ("fig5", "pressure_ratio", "P / P_I", "Fig. 5: pressure rise", ())):
+    for name, key, ylabel, caption, marks, log in (
+            ("fig3a", "contact_area", "A_c / (pi R^2)", "Fig. 3a: contact area fraction", (), "x"),
+            ("fig3b", "height_ratio", "H / H_0", "Fig. 3b: normalised height", (design,), "x"),
+            ("fig5", "pressure_ratio", "P / P_I", "Fig. 5: pressure rise", (), "xy")):
         near = Panel(f"(a) F/(P_I pi R^2) <= {_NEAR:g}", fhat, ylabel,
                      _curve_series(results, key, ordered, (head,), top=_NEAR), marks=marks, legend=False)
         full = Panel(f"(b) to {RANGE_FRACTION:g} of the end of each case's range", fhat, ylabel,
-                     _curve_series(results, key, ordered, (head,)), log="x", marks=marks)
+                     _curve_series(results, key, ordered, (head,)), log=log, marks=marks)
         out.append(Figure(name, f"{caption} against the force: the shooting solver for every case, the FE model "
                           "(markers) where computed, the analytical model for the headline case; (a) the paper's "
                           f"range, (b) the whole range (the headline case's ends at Fhat = {curves.force_end:.3g}).",

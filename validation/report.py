@@ -20,10 +20,11 @@ from . import checks as checks_module
 from . import document, draw, figures, render, sections
 from .run import headline
 
-__all__ = ["write_report"]
+__all__ = ["write_report", "check_target"]
 
 
-def _target(out) -> pathlib.Path:
+def check_target(out) -> pathlib.Path:
+    """The report folder as an absolute path; InputError if it may not be written (before any work)."""
     target = pathlib.Path(out).resolve()
     if target.exists():
         if not target.is_dir():
@@ -90,7 +91,7 @@ def write_report(results, out, *, executor=None, title="pocket validation report
 
     The figures and the 3-D picture are drawn on ``executor`` (an Executor) if given, else here.
     """
-    target = _target(out)
+    target = check_target(out)
     target.parent.mkdir(parents=True, exist_ok=True)
     partial = target.with_name(f".{target.name}.{secrets.token_hex(6)}.partial")
     partial.mkdir()

@@ -1,0 +1,70 @@
+"""The validation cases file: it loads, and each case's dimensionless numbers are right."""
+
+import math
+
+import pytest
+
+from pocket.errors import InputError
+from validation.cases import load
+
+
+def test_cases_load_and_cover_the_paper():
+    """Exact answer: Table 1 (T = 0.25, 0.5, 0.8, 1.6 mm, C1 = 160, C2 = 47 kPa, R = 20 mm),
+    P_I spanning 2-5 kPa, and alpha = 0 and 1 bracketing the paper's 0.3-1.2."""
+    cases, design = load()
+    table1 = [c for c in cases if c.sample is not None]
+    assert sorted({c.thickness for c in table1}) == pytest.approx([0.25e-3, 0.5e-3, 0.8e-3, 1.6e-3])
+    assert {(c.c1, c.c2, c.radius) for c in table1} == {(160e3, 47e3, 20e-3)}
+    assert min(c.pressure for c in table1) == 2e3 and max(c.pressure for c in table1) == 5e3
+    assert {c.alpha for c in cases} >= {0.0, 1.0, 47 / 160}
+    assert sum("headline" in c.tags for c in cases) == 1
+    assert sorted(c.sample for c in cases if "fig4" in c.tags) == [1, 2, 3, 4]
+    assert design.radius == 20e-3 and design.force == 0.67
+
+
+def test_dimensionless_numbers():
+    """Exact answer: the paper's definitions, recomputed from the TOML's own numbers:
+    alpha = C2/C1, E = 6 (1 + alpha) C1, Phat_I = P_I R / (E T)."""
+    import tomllib
+
+    from validation.cases import CASES_FILE
+
+    raw = {t["name"]: t for t in tomllib.loads(CASES_FILE.read_text())["case"]}
+    for case in load()[0]:
+        t = raw[case.name]
+        alpha = t["c2_kPa"] / t["c1_kPa"]
+        modulus = 6 * (1 + alpha) * t["c1_kPa"] * 1e3
+        phat = t["pressure_kPa"] * 1e3 * t["radius_mm"] * 1e-3 / (modulus * t["thickness_mm"] * 1e-3)
+        assert case.alpha == pytest.approx(alpha, rel=1e-15)
+        assert case.modulus == pytest.approx(modulus, rel=1e-15)
+        assert case.pressure_hat == pytest.approx(phat, rel=1e-14)
+    headline = next(c for c in load()[0] if "headline" in c.tags)
+    # the paper's fig. 2 case: sample 1 at Phat_I = 0.31, E = 1.242 MPa (Table 1)
+    assert headline.pressure_hat == pytest.approx(0.31, rel=1e-12)
+    assert headline.modulus == pytest.approx(1.242e6, rel=1e-12)
+
+
+def test_design_rules():
+    """Exact answer: Table 2, P_I = 5.7 F / (pi R^2), T = 0.216 P_I R^4 / (E H0^3)."""
+    design = load()[1]
+    pressure = 5.7 * 0.67 / (math.pi * 0.02**2)
+    assert design.pressure == pytest.approx(pressure, rel=1e-14)
+    assert design.thickness == pytest.approx(0.216 * pressure * 0.02**4 / (1e6 * 0.01**3), rel=1e-14)
+
+
+@pytest.mark.parametrize("edit, message", [
+    ('thickness_mm = 0.25', 'thickness_mm = -0.25'),
+    ('radius_mm = 20.0', 'radius_cm = 2.0'),
+    ('c2_kPa = 47.0', 'c2_kPa = -200.0'),
+    ('name = "sample1-2kPa"', 'name = "sample1-headline"'),
+])
+def test_bad_case_files_are_refused(tmp_path, edit, message):
+    """Exact answer: an InputError naming the problem, before any solve."""
+    from validation.cases import CASES_FILE
+
+    text = CASES_FILE.read_text().replace(edit, message, 1)
+    path = tmp_path / "cases.toml"
+    path.write_text(text)
+    with pytest.raises(InputError) as err:
+        load(path)
+    assert "\n" not in str(err.value)
