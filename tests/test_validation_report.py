@@ -118,3 +118,14 @@ def test_richardson_and_order_are_exact_on_a_power_law():
     assert estimate == pytest.approx(3.0 * 0.1**2, rel=1e-12)
     assert observed_order(h, f - 2.0) == pytest.approx(2.0, rel=1e-12)
     assert richardson(h, 2.0 + np.array([1.0, -0.5, 0.25])) is None  # alternating: no extrapolation
+
+
+def test_converge_prints_orders_and_richardson(tmp_path, capsys):
+    """Exact answer: the theory's orders (2 for P1, 4 for P2 in inflation) pass, and the
+    Richardson value is printed next to the shooting value."""
+    assert main(["converge", "--quick", "--out", str(tmp_path / "conv")]) == 0
+    out = capsys.readouterr().out
+    assert "observed order" in out and "Richardson" in out and "shooting" in out
+    with (tmp_path / "conv" / "checks.csv").open() as handle:
+        orders = [r for r in csv.DictReader(handle) if r["step"] == "order" and r["where"].startswith("inflation")]
+    assert {float(r["reference"]) for r in orders} == {2.0, 4.0} and all(r["verdict"] == "pass" for r in orders)

@@ -77,8 +77,17 @@ def _converge(args) -> int:
 
 
 def _print_orders(results) -> None:
+    from .convergence import richardson
+
     for check in results.checks:
         if check.step == "order":
             print(f"  {check.comparison:<24} {check.where:<22} {check.quantity:<15} observed order {check.value:.2f}"
                   + (f" (expected {check.reference:g} +- {check.tolerance:g}: {check.verdict})"
                      if check.tolerance is not None else ""))
+    for seq in results.sequences:
+        for quantity, values in seq.values.items():
+            extrapolated = richardson(seq.sizes, values)
+            text = (f"{extrapolated[0]:.12g} +- {extrapolated[1]:.2g}" if extrapolated
+                    else "not monotone, no extrapolation")
+            print(f"  Richardson P{seq.order} {seq.mesh:<8} {seq.study:<12} {quantity:<15} {text:<32} "
+                  f"shooting {seq.reference[quantity]:.12g}")

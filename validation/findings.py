@@ -34,7 +34,7 @@ def _eq9(residuals) -> Finding:
         "Eq (9): the pressure term",
         "the bracket of eq (9) ends with -(1/2) Phat (1 + alpha).",
         "normal equilibrium (eq (4a) with the curvatures of eq (5)) gives -3 (1 + alpha) Phat r~ "
-        "(= P R r / (2 C1 T R)); as printed there is no regular solution at the pole.",
+        "(= p r~ with p = P R / (2 C1 T)); as printed there is no regular solution at the pole.",
         (f"eq (9) evaluated on the shooting solution (headline case), residual max|w' - rhs| / max|w'| for "
          f"0.05 <= r~ <= 0.95: printed term {residuals['printed']:.3g}, corrected term "
          f"{residuals['corrected']:.2g} (finite-difference error of the derivatives).",
