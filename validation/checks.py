@@ -82,7 +82,7 @@ def profile_distance(state, reference) -> float:
 def fem_checks(curves, fem) -> list[Check]:
     """FE (one order) against shooting at each FE force, and the FE's own consistency."""
     name, label = curves.case.name, f"FEM P{fem.order} vs shooting"
-    by_force = dict(zip(curves.forces.tolist(), curves.shooting))
+    by_force = dict(zip(curves.forces.tolist(), curves.shooting, strict=True))
     tol, tol_profile = TOLERANCES["fem"][0], TOLERANCES["fem_profile"][0]
     rows = []
     for state in fem.states:
@@ -128,7 +128,7 @@ def analytical_checks(curves) -> list[Check]:
         where = f"lambda_0 - 1 = {strain:.3g}"
         rows.append(_row(name, label, "inflation", key if not shift else "lambda_0 - 1", where, value, reference,
                          _rel(value, reference), tol))
-    pairs = [(a, s) for a, s in zip(curves.analytical[1:], curves.shooting[1:]) if a is not None]
+    pairs = [(a, s) for a, s in zip(curves.analytical[1:], curves.shooting[1:], strict=True) if a is not None]
     ranges = {"height_ratio": (_HEIGHT_FORCE, TOLERANCES["analytical_height"][0]),
               "pressure_ratio": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0]),
               "contact_area": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0])}

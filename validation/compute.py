@@ -22,7 +22,8 @@ from pocket.states import CompressedState
 from .cases import Case
 from .plan import RANGE_FRACTION, Plan
 
-__all__ = ["Curves", "FemCurve", "reference", "fem_curve", "range_end", "force_grid", "DESIGN_FORCES"]
+__all__ = ["Curves", "FemCurve", "reference", "fem_curve", "fem_forces", "range_end", "force_grid",
+           "DESIGN_FORCES"]
 
 #: forces always on the grid: fig 2 (0.19) and the section 6 design reading (1/5.7)
 DESIGN_FORCES = (0.19, 1.0 / 5.7)
@@ -81,8 +82,8 @@ def force_grid(force_end: float, points: int, extra=()) -> np.ndarray:
     """Sorted forces to RANGE_FRACTION * force_end: ``points`` linearly and ``points`` geometrically
     spaced (from 0.005: ranges differ 20-fold between cases), the small, the paper's and the design forces."""
     top = RANGE_FRACTION * force_end
-    grid = np.concatenate((np.linspace(0.0, top, points), np.geomspace(0.005, top, points), _SMALL_FORCES, _PAPER_FORCES,
-                           DESIGN_FORCES, list(extra)))
+    grid = np.concatenate((np.linspace(0.0, top, points), np.geomspace(0.005, top, points), _SMALL_FORCES,
+                           _PAPER_FORCES, DESIGN_FORCES, list(extra)))
     return np.unique(grid[grid <= top])
 
 

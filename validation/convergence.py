@@ -86,7 +86,7 @@ def observed_order(sizes, errors) -> float:
 
 def richardson(sizes, values) -> tuple[float, float, float] | None:
     """(extrapolated value, error estimate, observed order) from the three finest meshes, or None."""
-    (h4, h2, h1), (f4, f2, f1) = sizes[-3:], values[-3:]
+    (h2, h1), (f4, f2, f1) = sizes[-2:], values[-3:]
     d1, d2 = f1 - f2, f2 - f4
     if d1 == 0.0 or d2 / d1 <= 1.0:
         return None

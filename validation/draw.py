@@ -23,7 +23,7 @@ def draw(figure, directory) -> pathlib.Path:
     panels = figure.panels
     fig, axes = plt.subplots(1, len(panels), figsize=(_WIDTH * len(panels), 4.8), squeeze=False)
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for ax, panel in zip(axes[0], panels):
+    for ax, panel in zip(axes[0], panels, strict=True):
         for s in panel.series:
             style = dict(STYLES.get(s.solver, dict(linestyle="-", marker="o", markersize=4)))
             ax.plot(s.x, s.y, label=s.label, color=colors[s.color % len(colors)], **style)
@@ -82,7 +82,7 @@ def write_csv(figure, directory) -> pathlib.Path:
         out.writerow(["panel", "series", "solver", "x", "y", "x_label", "y_label"])
         for k, panel in enumerate(figure.panels):
             for s in panel.series:
-                for x, y in zip(s.x, s.y):
+                for x, y in zip(s.x, s.y, strict=True):
                     out.writerow([panel.title or k, s.label, s.solver, repr(float(x)), repr(float(y)),
                                   panel.xlabel, panel.ylabel])
     return path

@@ -72,7 +72,8 @@ def _curve_series(results, key, cases, analytical, xkey="force", top=None):
                              color))
         if case in analytical:
             pairs = [a for a in curves.analytical if a is not None and (top is None or a.force <= top) and a.force > 0]
-            series.append(Series(f"{_short(case)}: analytical", "analytical", np.array([getattr(a, xkey) for a in pairs]),
+            series.append(Series(f"{_short(case)}: analytical", "analytical",
+                                 np.array([getattr(a, xkey) for a in pairs]),
                                  np.array([getattr(a, key) for a in pairs]), color))
         for run in (r for r in results.fem if r.case == case and len(r.states) > 1):
             states = [s for s in run.states if top is None or s.force <= top]

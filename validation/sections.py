@@ -50,7 +50,7 @@ def sequence_rows(results):
     for seq in results.sequences:
         for quantity, values in seq.values.items():
             errors = seq.errors(quantity)
-            for n, h, v, e in zip(seq.elements, seq.sizes, values, errors):
+            for n, h, v, e in zip(seq.elements, seq.sizes, values, errors, strict=True):
                 rows.append([seq.study, seq.order, seq.mesh, n, repr(float(h)), quantity, repr(float(v)),
                              repr(seq.reference[quantity]), repr(float(e))])
     return header, rows
@@ -137,7 +137,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
     if results.sequences:
         out += _convergence_blocks(results)
         out.append(("image", "convergence.png", "Error against element size (log-log), observed orders in the "
-                                                "legend. Data: convergence.csv (plotted points), convergence_study.csv (every value)."))
+                                                "legend. Data: convergence.csv (plotted points), "
+                                                "convergence_study.csv (every value)."))
     if results.findings:
         out += _findings_blocks(results)
     out += [("h", 2, "Tolerances"),
