@@ -1,0 +1,90 @@
+"""Inverse problems on the dimensionless model: the load that gives a target value.
+
+Both inflation and compression are monotone in their load on the model's first
+branch: the inflated height H0/R and volume grow with Phat_I; under compression
+the pressure ratio P/P_I grows with Fhat while the height H/R and H/H0 fall.
+So each inverse problem is one scalar root, bracketed and then solved by
+Brent's method on the forward solver:
+
+- ``pressure_for_height``: Phat_I with inflate(alpha, Phat_I).height = H0/R;
+- ``force_where``: Fhat with compress(alpha, Phat_I, Fhat).<key> = target.
+
+The bracket starts at load 0, where the value is known (height 0; the
+uncompressed state), and doubles an upper load until the sign changes. A
+forward solve that is out of the model's range there (OutOfRangeError: past a
+pressure maximum, or the free part reaching the clamp plane) ends the doubling:
+the range edge is then bisected, and a target the model does not reach inside
+its range is an OutOfRangeError, never an extrapolation.
+"""
+
+from __future__ import annotations
+
+from scipy.optimize import brentq
+
+from .analytical import height_constant
+from .errors import OutOfRangeError
+
+__all__ = ["pressure_for_height", "force_where"]
+
+_XTOL, _RTOL = 1e-15, 1e-13  # the forward solvers resolve their values to ~1e-10
+_EDGE = 1e-9  # relative width at which the range edge is located
+
+
+def _bracket(fun, start, what, reached):
+    """[lo, hi] with fun(lo) < 0 <= fun(hi), lo from 0 (fun(0) < 0), doubling from ``start``."""
+    lo, hi = 0.0, start
+    while True:
+        try:
+            if fun(hi) >= 0.0:
+                return lo, hi
+        except OutOfRangeError:
+            break
+        lo, hi = hi, 2.0 * hi
+    while hi - lo > _EDGE * hi:  # bisect the edge of the range between lo (inside) and hi (outside)
+        mid = 0.5 * (lo + hi)
+        try:
+            if fun(mid) >= 0.0:
+                return lo, mid
+        except OutOfRangeError:
+            hi = mid
+            continue
+        lo = mid
+    raise OutOfRangeError(f"{what} is beyond the model's range (it reaches {reached(lo):.10g} at its edge)")
+
+
+def pressure_for_height(solver, alpha, height, **options) -> float:
+    """Phat_I at which the inflated height H0/R is ``height`` (first branch)."""
+
+    def miss(p):
+        return solver.inflate(alpha, p, **options).height - height if p > 0.0 else -height
+
+    guess = (height / height_constant()) ** 3  # the small-strain model's Phat_I
+    lo, hi = _bracket(miss, guess, f"initial height H0/R = {height:.10g}",
+                      lambda p: solver.inflate(alpha, p, **options).height)
+    return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
+
+
+def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **options) -> float:
+    """Fhat at which the compressed state's ``key`` equals ``target``.
+
+    ``increasing``: whether ``key`` grows with the force (``pressure_ratio``) or
+    falls (``height``, ``height_ratio``). A target on the wrong side of the
+    uncompressed value, or past the model's range, is an OutOfRangeError.
+    """
+    sign = 1.0 if increasing else -1.0
+
+    def value(f):
+        return getattr(solver.compress(alpha, pressure_initial, f, **options), key)
+
+    start = value(0.0)
+    if target == start:
+        return 0.0
+    if sign * (target - start) < 0.0:
+        side = "below" if increasing else "above"
+        raise OutOfRangeError(f"{key} = {target:.10g} is {side} its value with no force ({start:.10g})")
+
+    def miss(f):
+        return sign * (value(f) - target) if f > 0.0 else sign * (start - target)
+
+    lo, hi = _bracket(miss, 0.1, f"{key} = {target:.10g}", value)
+    return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
