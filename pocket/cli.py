@@ -30,7 +30,7 @@ __all__ = ["main", "number", "COMMAND_MODULES"]
 _FEM_OPTIONS = ("elements", "order", "penalty", "mesh")
 
 #: modules adding subcommands (imported when the parser is built)
-COMMAND_MODULES: tuple[str, ...] = ("validation.cli", "pocket.run", "pocket.design", "pocket.sense")
+COMMAND_MODULES: tuple[str, ...] = ("validation.cli", "pocket.run", "pocket.design", "pocket.sense", "pocket.sweep")
 
 
 class _Parser(argparse.ArgumentParser):
