@@ -143,7 +143,7 @@ def _loads(table, where) -> tuple[str, tuple[float, ...]]:
         raise InputError(f"{key} = {values!r}, but it must be a non-empty list")
     unit = "force" if kind == "forces" else "length"
     out = tuple(quantity(f"{key}[{i}]", v, unit) for i, v in enumerate(values))
-    for i, (given, value) in enumerate(zip(values, out)):
+    for i, (given, value) in enumerate(zip(values, out, strict=True)):
         if value < 0.0 or (kind == "heights" and value == 0.0):
             bound = ">= 0 (the plate pushes)" if kind == "forces" else "> 0 (above the clamp plane)"
             raise InputError(f"{key}[{i}] = {given!r}, but it must be {bound}")

@@ -81,7 +81,8 @@ class Design:
                 "pressure_initial_hat": self.pressure_initial, "force_hat": self.force_hat,
                 "stiffness": self.stiffness,
                 "curve": [{"force_N": f, "travel_m": t, "stiffness_N_per_m": k} for f, t, k in
-                          zip(self.curve_force.tolist(), self.curve_travel.tolist(), self.curve_stiffness.tolist())]}
+                          zip(self.curve_force.tolist(), self.curve_travel.tolist(), self.curve_stiffness.tolist(),
+                              strict=True)]}
 
 
 def paper_rules(radius, height, modulus, force) -> tuple[float, float]:
@@ -141,7 +142,7 @@ def _main(args) -> int:
     print(f"Phat_I = {result.pressure_initial:.10g}, Fhat = {result.force_hat:.10g}, "
           f"stiffness at F = {result.stiffness:.6g} N/m")
     print(f"{'force, N':>12}{'travel, m':>14}{'dF/dtravel, N/m':>18}")
-    for f, t, k in zip(result.curve_force, result.curve_travel, result.curve_stiffness):
+    for f, t, k in zip(result.curve_force, result.curve_travel, result.curve_stiffness, strict=True):
         print(f"{f:>12.6g}{t:>14.6g}{k:>18.6g}")
     return 0
 

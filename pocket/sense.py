@@ -60,7 +60,7 @@ def _readings(pocket: Pocket, fhats) -> list[Reading]:
     return [Reading(force=s.force * pocket.force_scale, pressure=s.pressure_ratio * pocket.initial_pressure,
                     pressure_ratio=s.pressure_ratio, contact_area=s.contact_area * area,
                     sensitivity=area / slope, force_hat=s.force)
-            for s, slope in zip(states, slopes["pressure_ratio"])]
+            for s, slope in zip(states, slopes["pressure_ratio"], strict=True)]
 
 
 def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:

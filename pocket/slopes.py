@@ -30,12 +30,12 @@ def curve_with_slopes(solver, alpha, pressure_initial, forces, keys, **options):
     forces = [float(f) for f in forces]
     stencils = [_stencil(f) for f in forces]
     points = sorted(set(forces) | {x for _, xs, _ in stencils for x in xs})
-    states = dict(zip(points, solver.compression_curve(alpha, pressure_initial, points, **options)))
+    states = dict(zip(points, solver.compression_curve(alpha, pressure_initial, points, **options), strict=True))
     slopes = {}
     for key in keys:
         out = []
-        for f, (h, xs, weights) in zip(forces, stencils):
+        for f, (h, xs, weights) in zip(forces, stencils, strict=True):
             centre = -1.5 * getattr(states[f], key) if xs[0] > f else 0.0
-            out.append((centre + sum(w * getattr(states[x], key) for x, w in zip(xs, weights))) / h)
+            out.append((centre + sum(w * getattr(states[x], key) for x, w in zip(xs, weights, strict=True))) / h)
         slopes[key] = np.array(out)
     return [states[f] for f in forces], slopes

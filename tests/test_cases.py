@@ -44,7 +44,7 @@ def test_every_sample_runs(number, tmp_path, capsys):
     forces = [0, 0.5, 1, 2, 3, 4.5, 6]
     expected = shooting.compression_curve(47 / 160, phat_i, [f / (p_i * math.pi * radius**2) for f in forces])
     assert [float(r["force_N"]) for r in rows] == pytest.approx(forces, rel=1e-14)
-    for row, state, saved in zip(rows, expected, result["states"]):
+    for row, state, saved in zip(rows, expected, result["states"], strict=True):
         # the same solve: equal to the solver's resolution (~1e-10)
         assert float(row["pressure_Pa"]) == pytest.approx(state.pressure * modulus * thickness / radius, rel=1e-9)
         assert float(row["height_m"]) == pytest.approx(state.height * radius, rel=1e-9)

@@ -2,7 +2,6 @@
 
 import csv
 import json
-import math
 
 import numpy as np
 import pytest
@@ -26,7 +25,7 @@ def test_round_trip(pocket):
     """Exact: sensing the pressure that the forward solver gives at a force returns that force,
     to 1e-8 relative (the issue's bar; the root finding resolves ~1e-12)."""
     states = shooting.compression_curve(pocket.alpha, pocket.pressure_initial, FORCES)
-    for fhat, state in zip(FORCES, states):
+    for fhat, state in zip(FORCES, states, strict=True):
         by_ratio = sense(pocket, ratio=state.pressure_ratio)
         assert by_ratio.force_hat == pytest.approx(fhat, rel=1e-8)
         assert by_ratio.force == pytest.approx(fhat * pocket.force_scale, rel=1e-8)
