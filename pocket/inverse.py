@@ -15,13 +15,13 @@ forward solve that is out of the model's range there (OutOfRangeError: past a
 pressure maximum, or the free part reaching the clamp plane) ends the doubling:
 the range edge is then bisected, and a target the model does not reach inside
 its range is an OutOfRangeError, never an extrapolation.
+
+scipy is imported on first use: the command line imports this module to build
+its parser, and every ``pocket`` command would otherwise pay for it.
 """
 
 from __future__ import annotations
 
-from scipy.optimize import brentq
-
-from .analytical import height_constant
 from .errors import OutOfRangeError
 
 __all__ = ["pressure_for_height", "force_where"]
@@ -55,6 +55,10 @@ def _bracket(fun, start, what, reached):
 def pressure_for_height(solver, alpha, height, **options) -> float:
     """Phat_I at which the inflated height H0/R is ``height`` (first branch)."""
 
+    from scipy.optimize import brentq
+
+    from .analytical import height_constant
+
     def miss(p):
         return solver.inflate(alpha, p, **options).height - height if p > 0.0 else -height
 
@@ -71,6 +75,8 @@ def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **o
     falls (``height``, ``height_ratio``). A target on the wrong side of the
     uncompressed value, or past the model's range, is an OutOfRangeError.
     """
+    from scipy.optimize import brentq
+
     sign = 1.0 if increasing else -1.0
 
     def value(f):
