@@ -18,6 +18,7 @@ import argparse
 import importlib
 import json
 import math
+import os
 import sys
 from fractions import Fraction
 
@@ -127,7 +128,24 @@ def _fail(err: PocketError) -> int:
 
 
 def main(argv=None) -> int:
-    """Run the command line; returns the exit status."""
+    """Run the command line; returns the exit status.
+
+    Output cut short by the reader (``pocket ... | head``) ends quietly with status 1
+    (Python's documented recipe for SIGPIPE), an interrupt with one line and 130.
+    """
+    try:
+        status = _main(argv)
+        sys.stdout.flush()
+        return status
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except KeyboardInterrupt:
+        print("pocket: interrupted", file=sys.stderr)
+        return 130
+
+
+def _main(argv) -> int:
     args = _parser().parse_args(argv)
     if hasattr(args, "handler"):
         try:

@@ -92,3 +92,31 @@ def test_vtk_series(capsys, tmp_path):
     status, _, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31",
                          "--force", "0.1", "--vtk", str(out))
     assert status == 2 and "--overwrite" in err
+
+
+def test_fem_solver_same_keys_as_shooting_plus_its_own(capsys, tmp_path):
+    """The FE answer through the CLI: the shooting keys, agreeing with shooting's to 1e-5
+    (issue 3's bar at its default mesh; a coarser 200-element P2 mesh passes it too), plus
+    the mesh, Newton and contact diagnostics, and a VTK series of the FE states."""
+    argv = ["compress", "--alpha", "47/160", "--pressure", "0.31", "--force", "0.05", "0.19", "--json"]
+    status, out, _ = run(capsys, *argv, "--solver", "fem", "--elements", "200", "--vtk", str(tmp_path / "fe"))
+    fe = json.loads(out)
+    _, out, _ = run(capsys, *argv)
+    ref = json.loads(out)
+    assert status == 0 and [r["solver"] for r in fe] == ["fem", "fem"]
+    for a, b in zip(fe, ref, strict=True):
+        assert {"elements", "order", "newton_iterations", "penetration", "force_difference"} <= set(a)
+        assert a["elements"] == 200 and a["order"] == 2
+        for key in CompressedState.KEYS:
+            assert a[key] == pytest.approx(b[key], rel=1e-5, abs=1e-12), key
+    assert sorted(p.name for p in (tmp_path / "fe").glob("*.pvd")) == ["profile.pvd", "surface.pvd"]
+
+
+def test_closed_pipe_ends_quietly():
+    """`pocket ... | head`: the reader is gone before the output is written (its end of the
+    pipe is closed here first, so the write must fail); no traceback, status 1."""
+    proc = subprocess.Popen([sys.executable, "-m", "pocket.cli", "inflate", "--alpha", "0.3",
+                             "--pressure", "0.3"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc.stdout.close()
+    err = proc.stderr.read().decode()
+    assert proc.wait() == 1 and err == ""
