@@ -29,12 +29,16 @@ def test_dimensionless_numbers():
 
     from validation.cases import CASES_FILE
 
+    def si(text):  # the file's three units, by hand: an independent reading of pocket.units'
+        number, unit = text.split()
+        return float(number) * {"mm": 1e-3, "kPa": 1e3, "N": 1.0}[unit]
+
     raw = {t["name"]: t for t in tomllib.loads(CASES_FILE.read_text())["case"]}
     for case in load()[0]:
-        t = raw[case.name]
-        alpha = t["c2_kPa"] / t["c1_kPa"]
-        modulus = 6 * (1 + alpha) * t["c1_kPa"] * 1e3
-        phat = t["pressure_kPa"] * 1e3 * t["radius_mm"] * 1e-3 / (modulus * t["thickness_mm"] * 1e-3)
+        t = {k: si(v) for k, v in raw[case.name].items() if k in ("c1", "c2", "pressure", "radius", "thickness")}
+        alpha = t["c2"] / t["c1"]
+        modulus = 6 * (1 + alpha) * t["c1"]
+        phat = t["pressure"] * t["radius"] / (modulus * t["thickness"])
         assert case.alpha == pytest.approx(alpha, rel=1e-15)
         assert case.modulus == pytest.approx(modulus, rel=1e-15)
         assert case.pressure_hat == pytest.approx(phat, rel=1e-14)
@@ -52,19 +56,21 @@ def test_design_rules():
     assert design.thickness == pytest.approx(0.216 * pressure * 0.02**4 / (1e6 * 0.01**3), rel=1e-14)
 
 
-@pytest.mark.parametrize("edit, message", [
-    ('thickness_mm = 0.25', 'thickness_mm = -0.25'),
-    ('radius_mm = 20.0', 'radius_cm = 2.0'),
-    ('c2_kPa = 47.0', 'c2_kPa = -200.0'),
-    ('name = "sample1-2kPa"', 'name = "sample1-headline"'),
+@pytest.mark.parametrize("edit, bad, named", [
+    ('thickness = "0.25 mm"', 'thickness = "-0.25 mm"', "thickness"),
+    ('radius = "20.0 mm"', 'radius_cm = 2.0', "radius_cm"),
+    ('c2 = "47.0 kPa"', 'c2 = "-200.0 kPa"', "alpha = C2/C1"),
+    ('c1 = "160.0 kPa"', 'c1 = "160.0 mm"', "c1"),
+    ('name = "sample1-2kPa"', 'name = "sample1-headline"', "names repeat"),
 ])
-def test_bad_case_files_are_refused(tmp_path, edit, message):
-    """Exact answer: an InputError naming the problem, before any solve."""
+def test_bad_case_files_are_refused(tmp_path, edit, bad, named):
+    """Exact answer: a one-line InputError naming the key, before any solve."""
     from validation.cases import CASES_FILE
 
-    text = CASES_FILE.read_text().replace(edit, message, 1)
+    text = CASES_FILE.read_text()
+    assert edit in text
     path = tmp_path / "cases.toml"
-    path.write_text(text)
+    path.write_text(text.replace(edit, bad, 1))
     with pytest.raises(InputError) as err:
         load(path)
-    assert "\n" not in str(err.value)
+    assert "\n" not in str(err.value) and named in str(err.value), err.value

@@ -1,8 +1,8 @@
 """Validation cases as data: ``cases.toml`` in physical units, dimensionless form derived.
 
-Unit handling is local and minimal: each key carries its unit in its name
-(``thickness_mm``, ``c1_kPa``, ...) and ``_UNITS`` scales it to SI. From the SI
-values, with the paper's definitions (eqs (1), (10)):
+Physical values are strings with units (``thickness = "0.25 mm"``, ``c1 =
+"160 kPa"``), or plain numbers in SI, converted by ``pocket.units`` (the one
+place units are handled); ``_KINDS`` names each key's kind. From the SI values, with the paper's definitions (eqs (1), (10)):
 
     alpha = C2 / C1,   E = 6 (1 + alpha) C1 = 6 (C1 + C2),   Phat_I = P_I R / (E T).
 
@@ -18,21 +18,22 @@ import pathlib
 import tomllib
 
 from pocket.errors import InputError
+from pocket.units import quantity
 
 __all__ = ["Case", "Design", "load", "CASES_FILE"]
 
 CASES_FILE = pathlib.Path(__file__).with_name("cases.toml")
 
-#: key -> (field, factor to SI)
-_UNITS = {
-    "thickness_mm": ("thickness", 1e-3),
-    "radius_mm": ("radius", 1e-3),
-    "height_mm": ("height", 1e-3),
-    "c1_kPa": ("c1", 1e3),
-    "c2_kPa": ("c2", 1e3),
-    "modulus_kPa": ("modulus", 1e3),
-    "pressure_kPa": ("pressure", 1e3),
-    "force_N": ("force", 1.0),
+#: physical key -> its kind in pocket.units
+_KINDS = {
+    "thickness": "length",
+    "radius": "length",
+    "height": "length",
+    "c1": "pressure",
+    "c2": "pressure",
+    "modulus": "pressure",
+    "pressure": "pressure",
+    "force": "force",
 }
 
 
@@ -93,13 +94,12 @@ class Design:
 def _fields(table: dict, where: str, plain: dict, required: set) -> dict:
     out = {}
     for key, value in table.items():
-        if key in _UNITS:
-            field, factor = _UNITS[key]
-            out[field] = _number(value, f"{where}: {key}") * factor
+        if key in _KINDS:
+            out[key] = quantity(f"{where}: {key}", value, _KINDS[key])
         elif key in plain:
             out[key] = plain[key](value, f"{where}: {key}")
         else:
-            known = sorted(set(_UNITS) | set(plain))
+            known = sorted(set(_KINDS) | set(plain))
             raise InputError(f"{where}: unknown key {key!r} (known: {', '.join(known)})")
     missing = required - set(out)
     if missing:
