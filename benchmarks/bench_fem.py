@@ -12,12 +12,12 @@ linearly with the element count (the ratio column).
 
 from __future__ import annotations
 
-import statistics
 import sys
 import time
 
 import numpy as np
 import scipy.sparse.linalg as spla
+from timing import median_time
 
 import fem
 import meshes
@@ -25,15 +25,6 @@ from fem import inflation, model
 from fem.newton import Tolerances
 
 ALPHA, PHAT = 47 / 160, 0.31
-
-
-def median_time(fun, repeat):
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fun()
-        times.append(time.perf_counter() - t)
-    return statistics.median(times)
 
 
 def per_iteration(n, repeat):

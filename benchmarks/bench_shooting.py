@@ -11,28 +11,18 @@ loading the compiled integrator) and solving.
 
 from __future__ import annotations
 
-import statistics
 import subprocess
 import sys
-import time
 
 import numpy as np
 from scipy.integrate import solve_bvp
+from timing import median_time
 
 import shooting
 from shooting.equations import pole_state, tensions
 from shooting.shots import R_POLE
 
 ALPHA, PHAT = 47 / 160, 0.31
-
-
-def median_time(fun, repeat):
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fun()
-        times.append(time.perf_counter() - t)
-    return statistics.median(times)
 
 
 def bvp_inflate(tol):

@@ -4,10 +4,11 @@ Converged when both the residual and the Newton increment are small in the
 max norm (absolute: the unknowns and the nodal forces are dimensionless, of
 order one or less). On fine meshes the residual has a round-off floor that can
 sit slightly above ``residual``: a tiny increment with a residual that has
-stopped falling (and is below 1e3 ``residual``) also counts as converged. The merit function for the line search is ||R||_2: the
-bordered system is a saddle point (the pressure is a multiplier), so the
-energy is not a merit function. Failure raises ``ConvergenceError`` with the
-iteration count and the last residual; the caller adds the load level.
+stopped falling (and is below 1e3 ``residual``) also counts as converged.
+The merit function for the line search is ||R||_2: the bordered system is a
+saddle point (the pressure is a multiplier), so the energy is not a merit
+function. Failure raises ``ConvergenceError`` with the iteration count and the
+last residual; the caller adds the load level.
 """
 
 from __future__ import annotations

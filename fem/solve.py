@@ -15,7 +15,8 @@ Reported quantities (DESIGN.md keys) from a converged state:
 - ``extra``: ``elements``, ``order``, ``newton_iterations`` (all iterations
   spent to reach this state from the previous one), ``penetration`` (max of
   eta - h over the quadrature points, in R), and for compression
-  ``penetration_pole`` (eta(0) - h, what the penalty adds to the height), ``force_reaction`` (the plate reaction as Fhat),
+  ``penetration_pole`` (eta(0) - h, what the penalty adds to the height),
+  ``force_reaction`` (the plate reaction as Fhat),
   ``force_pressure_area`` (P times the deformed area of the active contact
   set, an independent O(h) estimate, as Fhat) and ``force_difference``.
 """
@@ -25,12 +26,10 @@ from __future__ import annotations
 import numpy as np
 
 import meshes
-
 from pocket.states import CompressedState, InflatedState
 
-from . import checks, post
+from . import checks, inflation, post
 from .compression import augment, force_path, press_to_force, press_to_height
-from . import inflation
 from .model import Control, Model, discretize, penetration
 from .newton import Tolerances
 

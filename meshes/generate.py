@@ -34,6 +34,7 @@ import operator
 
 import numpy as np
 
+from pocket.checks import check_finite
 from pocket.errors import InputError
 
 __all__ = ["uniform", "graded", "refined"]
@@ -48,16 +49,6 @@ def _count(n, name="n") -> int:
         raise InputError(f"{name} = {n!r}, but a mesh needs an integer number of elements >= 1") from None
     if value < 1:
         raise InputError(f"{name} = {n!r}, but a mesh needs an integer number of elements >= 1")
-    return value
-
-
-def _real(x, name: str) -> float:
-    try:
-        value = float(x)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} = {x!r} is not a number") from None
-    if not math.isfinite(value):
-        raise InputError(f"{name} = {x!r} is not a finite number")
     return value
 
 
@@ -91,8 +82,8 @@ def graded(n, *, towards=1.0, ratio=10.0) -> np.ndarray:
     side of an interior ``towards``); ratio = 1 gives the uniform mesh.
     """
     n = _count(n)
-    towards = _real(towards, "towards")
-    ratio = _real(ratio, "ratio")
+    towards = check_finite("towards", towards)
+    ratio = check_finite("ratio", ratio)
     if not 0.0 <= towards <= 1.0:
         raise InputError(f"towards = {towards!r}, but it must lie in [0, 1]")
     if ratio < 1.0:
@@ -114,9 +105,9 @@ def graded(n, *, towards=1.0, ratio=10.0) -> np.ndarray:
 def refined(n, *, at, width=0.05, factor=8.0) -> np.ndarray:
     """Nodes of a uniform ``n``-element mesh refined ``factor`` times within ``width`` of ``at``."""
     n = _count(n)
-    at = _real(at, "at")
-    width = _real(width, "width")
-    factor = _real(factor, "factor")
+    at = check_finite("at", at)
+    width = check_finite("width", width)
+    factor = check_finite("factor", factor)
     if not 0.0 < at < 1.0:
         raise InputError(f"at = {at!r}, but the refinement point must lie inside (0, 1)")
     if width <= 0.0:
@@ -132,7 +123,7 @@ def refined(n, *, at, width=0.05, factor=8.0) -> np.ndarray:
     breaks = [0.0, low, at, high, 1.0]
     sizes = [coarse, fine, fine, coarse]
     pieces = [np.array([0.0])]
-    for start, stop, size in zip(breaks[:-1], breaks[1:], sizes):
+    for start, stop, size in zip(breaks[:-1], breaks[1:], sizes, strict=True):
         if stop > start:
             count = max(math.ceil((stop - start) / size * (1.0 - 1e-12)), 1)
             piece = start + _split(stop - start, count)

@@ -138,7 +138,7 @@ def compression_curve(alpha, pressure_initial, forces) -> list[CompressedState]:
         if f > f_max:
             raise OutOfRangeError(f"force = {f:.6g} is beyond the analytical model's range: the contact "
                                   f"would reach the clamp (at force = {f_max:.6g})")
-        a = 0.0 if f == 0.0 else brentq(lambda a: _force(a, s0, inflated.pressure) - f, 0.0, a_max,
+        a = 0.0 if f == 0.0 else brentq(lambda a, f=f: _force(a, s0, inflated.pressure) - f, 0.0, a_max,
                                         xtol=1e-15, rtol=1e-14)
         states.append(_compressed(inflated, f, a))
     return states

@@ -6,10 +6,11 @@ import math
 
 from .errors import InputError
 
-__all__ = ["check_alpha", "check_positive", "check_force"]
+__all__ = ["check_finite", "check_alpha", "check_positive", "check_force"]
 
 
-def _finite(name, value):
+def check_finite(name, value) -> float:
+    """``value`` as a finite float."""
     try:
         value = float(value)
     except (TypeError, ValueError):
@@ -21,7 +22,7 @@ def _finite(name, value):
 
 def check_alpha(alpha) -> float:
     """alpha = C2/C1 must be > -1 (E = 6 (1 + alpha) C1 > 0)."""
-    alpha = _finite("alpha", alpha)
+    alpha = check_finite("alpha", alpha)
     if alpha <= -1.0:
         raise InputError(f"alpha = {alpha}, but the Mooney-Rivlin model needs alpha > -1")
     return alpha
@@ -29,7 +30,7 @@ def check_alpha(alpha) -> float:
 
 def check_positive(name, value) -> float:
     """A quantity that must be finite and > 0 (a pressure, a volume)."""
-    value = _finite(name, value)
+    value = check_finite(name, value)
     if value <= 0.0:
         raise InputError(f"{name} = {value}, but it must be > 0")
     return value
@@ -37,7 +38,7 @@ def check_positive(name, value) -> float:
 
 def check_force(force) -> float:
     """The force Fhat = F / (P_I pi R^2) must be finite and >= 0 (the plate pushes)."""
-    force = _finite("force", force)
+    force = check_finite("force", force)
     if force < 0.0:
         raise InputError(f"force = {force}, but a plate can only push: it must be >= 0")
     return force

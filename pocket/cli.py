@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import itertools
 import json
 import math
 import os
@@ -104,7 +105,7 @@ def _table(rows: list[dict]) -> str:
         return "\n".join(f"{k:<{width}}  {_fmt(rows[0][k])}" for k in keys)
     cols = [[k] + [_fmt(r[k]) for r in rows] for k in keys]
     widths = [max(map(len, col)) for col in cols]
-    lines = ["  ".join(col[i].rjust(w) for col, w in zip(cols, widths)) for i in range(len(rows) + 1)]
+    lines = ["  ".join(col[i].rjust(w) for col, w in zip(cols, widths, strict=True)) for i in range(len(rows) + 1)]
     return "\n".join(lines)
 
 
@@ -158,7 +159,7 @@ def _main(argv) -> int:
             from .vtkfiles import write_series
 
             forces = [getattr(s, "force", 0.0) for s in states]
-            increasing = all(a < b for a, b in zip(forces, forces[1:]))
+            increasing = all(a < b for a, b in itertools.pairwise(forces))
             write_series(args.vtk, states, times=forces if increasing else None,
                          overwrite=args.overwrite)
     except PocketError as err:

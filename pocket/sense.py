@@ -26,6 +26,7 @@ import pathlib
 
 import numpy as np
 
+from .checks import check_finite
 from .errors import InputError
 from .inverse import force_where
 from .physical import Pocket, forces, resolve
@@ -70,12 +71,7 @@ def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
     if pressure is not None:
         q = quantity("pressure", pressure, "pressure") / pocket.initial_pressure
     else:
-        try:
-            q = float(ratio)
-        except (TypeError, ValueError):
-            raise InputError(f"ratio = {ratio!r} is not a number") from None
-        if not math.isfinite(q):
-            raise InputError(f"ratio = {ratio!r} is not finite")
+        q = check_finite("ratio", ratio)
     fhat = force_where(pocket.solver(), pocket.alpha, pocket.pressure_initial, "pressure_ratio", q,
                        increasing=True, **pocket.options())
     return _readings(pocket, [fhat])[0]

@@ -49,16 +49,14 @@ and removed on any failure.
 from __future__ import annotations
 
 import operator
-import os
 import pathlib
-import secrets
-import shutil
 from xml.sax.saxutils import quoteattr
 
 import meshio
 import numpy as np
 
 from .errors import InputError
+from .folders import staged
 
 __all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series"]
 
@@ -165,7 +163,7 @@ def _times(times, count: int) -> np.ndarray:
 
 def _pvd(path: pathlib.Path, files: list[str], times: np.ndarray) -> None:
     lines = ['<?xml version="1.0"?>', '<VTKFile type="Collection" version="0.1">', "  <Collection>"]
-    for name, time in zip(files, times):
+    for name, time in zip(files, times, strict=True):
         lines.append(f'    <DataSet timestep="{float(time)!r}" group="" part="0" file={quoteattr(name)}/>')
     lines += ["  </Collection>", "</VTKFile>", ""]
     path.write_text("\n".join(lines))
@@ -190,32 +188,14 @@ def write_series(directory, states, *, times=None, segments=64, overwrite=False)
         raise InputError(f"{target} exists and is not a directory")
     if target.is_dir() and any(target.iterdir()) and not overwrite:
         raise InputError(f"{target} exists and is not empty; replace it with overwrite=True (--overwrite)")
-    target.parent.mkdir(parents=True, exist_ok=True)
-    partial = target.with_name(f".{target.name}.{secrets.token_hex(6)}.partial")
-    partial.mkdir()  # not mkdtemp: its mode 0700 would stay with the result
-    try:
+    with staged(target) as partial:
         width = max(4, len(str(len(states) - 1)))
         files = {"profile": [], "surface": []}
         for k, state in enumerate(states):
             stem = f"step_{k:0{width}d}"
             paths = write_state(partial, state, stem=stem, segments=segments)
-            for part, path in zip(("profile", "surface"), paths):
+            for part, path in zip(("profile", "surface"), paths, strict=True):
                 files[part].append(path.name)
         for part, names in files.items():
             _pvd(partial / f"{part}.pvd", names, times)
-        _replace(partial, target)
-    except BaseException:
-        shutil.rmtree(partial, ignore_errors=True)
-        raise
     return target
-
-
-def _replace(source: pathlib.Path, target: pathlib.Path) -> None:
-    """Rename ``source`` to ``target``; an existing ``target`` is removed only after."""
-    if not target.exists():
-        os.rename(source, target)
-        return
-    trash = target.with_name(f".{target.name}.{secrets.token_hex(6)}.old")
-    os.rename(target, trash)
-    os.rename(source, target)
-    shutil.rmtree(trash, ignore_errors=True)

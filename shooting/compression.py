@@ -30,7 +30,7 @@ from pocket.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.states import CompressedState, InflatedState
 
 from .inflation import inflate
-from .integrator import OK, STATUS
+from .integrator import OK
 from .shots import profile_from_steps, shot_edge
 
 __all__ = ["compress", "compression_curve"]

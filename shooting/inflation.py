@@ -119,7 +119,7 @@ def inflate(alpha, pressure, *, rtol=1e-10) -> InflatedState:
         return pressure_of_stretch(l0, alpha, rtol=rtol) / (3.0 * (1.0 + alpha))
 
     s_lo, s_hi = _bracket(phat, pressure, s_est, "pressure")
-    l0 = brentq(lambda l: _miss(l, alpha, p, rtol), 1.0 + s_lo, 1.0 + s_hi, **_XTOL)
+    l0 = brentq(lambda s: _miss(s, alpha, p, rtol), 1.0 + s_lo, 1.0 + s_hi, **_XTOL)
     return _state(l0, alpha, p, rtol, f"Phat = {pressure}")
 
 
@@ -130,6 +130,6 @@ def inflate_volume(alpha, volume, *, rtol=1e-10) -> InflatedState:
     s_est = (4.0 * volume / np.pi) ** 2 / 6.0  # small-strain eq (16b) inverted
 
     s_lo, s_hi = _bracket(lambda l0: _volume(l0, alpha, rtol), volume, s_est, "volume")
-    l0 = brentq(lambda l: _volume(l, alpha, rtol) - volume, 1.0 + s_lo, 1.0 + s_hi, **_XTOL)
+    l0 = brentq(lambda s: _volume(s, alpha, rtol) - volume, 1.0 + s_lo, 1.0 + s_hi, **_XTOL)
     p = pressure_of_stretch(l0, alpha, rtol=rtol)
     return _state(l0, alpha, p, rtol, f"V = {volume}")

@@ -3,10 +3,10 @@
 import numpy as np
 import pytest
 from scipy.interpolate import CubicSpline
+from test_shooting_inflation import strain_energy
 
 import shooting
 from pocket.errors import InputError, OutOfRangeError
-from test_shooting_inflation import strain_energy
 
 SAMPLE = 47 / 160
 

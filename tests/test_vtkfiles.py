@@ -195,11 +195,11 @@ def test_write_state_round_trip(tmp_path, kind):
     paths = vtkfiles.write_state(tmp_path / "out", state, stem="s", segments=10)
     assert [p.name for p in paths] == ["s_profile.vtu", "s_surface.vtu"]
     expected = [vtkfiles.profile_mesh(state), vtkfiles.surface_mesh(state, segments=10)]
-    for path, mesh in zip(paths, expected):
+    for path, mesh in zip(paths, expected, strict=True):
         back = meshio.read(path)
         np.testing.assert_array_equal(back.points, mesh.points)
         assert [b.type for b in back.cells] == [b.type for b in mesh.cells]
-        for got, want in zip(back.cells, mesh.cells):
+        for got, want in zip(back.cells, mesh.cells, strict=True):
             np.testing.assert_array_equal(got.data, want.data)
         assert set(back.point_data) == NAMES
         for name, values in mesh.point_data.items():
@@ -250,7 +250,7 @@ def test_pyvista_reads_series(tmp_path):
     out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=8)
     reader = pv.get_reader(out / "surface.pvd")
     assert reader.time_values == pytest.approx(forces, rel=1e-15)
-    for state, force in zip(states, forces):
+    for state, force in zip(states, forces, strict=True):
         reader.set_active_time_value(force)
         block = reader.read()[0]
         assert block.points[:, 2].max() == pytest.approx(state.height, rel=1e-15)

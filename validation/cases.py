@@ -2,7 +2,8 @@
 
 Physical values are strings with units (``thickness = "0.25 mm"``, ``c1 =
 "160 kPa"``), or plain numbers in SI, converted by ``pocket.units`` (the one
-place units are handled); ``_KINDS`` names each key's kind. From the SI values, with the paper's definitions (eqs (1), (10)):
+place units are handled); ``_KINDS`` names each key's kind. From the SI
+values, with the paper's definitions (eqs (1), (10)):
 
     alpha = C2 / C1,   E = 6 (1 + alpha) C1 = 6 (C1 + C2),   Phat_I = P_I R / (E T).
 

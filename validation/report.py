@@ -9,12 +9,10 @@ from __future__ import annotations
 
 import csv
 import dataclasses
-import os
 import pathlib
-import secrets
-import shutil
 
 from pocket.errors import InputError
+from pocket.folders import staged
 
 from . import checks as checks_module
 from . import document, draw, figures, render, sections
@@ -92,10 +90,7 @@ def write_report(results, out, *, executor=None, title="pocket validation report
     The figures and the 3-D picture are drawn on ``executor`` (an Executor) if given, else here.
     """
     target = check_target(out)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    partial = target.with_name(f".{target.name}.{secrets.token_hex(6)}.partial")
-    partial.mkdir()
-    try:
+    with staged(target) as partial:
         head = headline(results.cases)
         if results.curves:
             figs = figures.figures(results, head)
@@ -115,10 +110,6 @@ def write_report(results, out, *, executor=None, title="pocket validation report
         blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))
-        _replace(partial, target)
-    except BaseException:
-        shutil.rmtree(partial, ignore_errors=True)
-        raise
     return target
 
 
@@ -130,13 +121,3 @@ class _Now:
 
     def result(self):
         return self.value
-
-
-def _replace(source: pathlib.Path, target: pathlib.Path) -> None:
-    if not target.exists():
-        os.rename(source, target)
-        return
-    trash = target.with_name(f".{target.name}.{secrets.token_hex(6)}.old")
-    os.rename(target, trash)
-    os.rename(source, target)
-    shutil.rmtree(trash, ignore_errors=True)
