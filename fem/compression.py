@@ -58,7 +58,7 @@ def press_to_height(model: Model, y0, volume, height, lam, tol: Tolerances):
         return solve(model, Control(volume=volume, height=h), _onto_plate(model, _at(guess, h)), lam, tol)
 
     y = y0
-    for _, y, iterations in follow(along, y0, y0[-1], height, first_step=0.05):
+    for _, y, iterations in follow(along, y0, y0[-1], height, first_step=0.05, name="plate height h/R"):
         total += iterations
     return y, total
 
@@ -78,7 +78,7 @@ def press_to_force(model: Model, y0, volume, force, lam, tol: Tolerances):
         return plate_force(model, y, lam)
 
     total, previous = 0, (h0, y0)
-    for h, y, iterations in follow(along, y0, h0, LOWEST * h0, first_step=0.05):
+    for h, y, iterations in follow(along, y0, h0, LOWEST * h0, first_step=0.05, name="plate height h/R"):
         total += iterations
         if f(y) >= force:
             y, iterations = land(along, at_target, previous, (h, y), f, force)
@@ -96,7 +96,7 @@ def force_path(model: Model, y0, volume, force, lam, tol: Tolerances):
         return solve(model, Control(volume=volume, height=None, force=f), _onto_plate(model, guess), lam, tol)
 
     total, y = 0, y0
-    for _, y, iterations in follow(along, y0, plate_force(model, y0, lam), force):
+    for _, y, iterations in follow(along, y0, plate_force(model, y0, lam), force, name="plate force F/(E T R)"):
         total += iterations
     return y, total
 

@@ -29,10 +29,12 @@ def follow(
     first_step: float = 0.25,
     min_step: float = 1e-5,
     max_step: float = 1.0,
+    name: str = "load",
 ) -> Iterator[tuple[float, np.ndarray, int]]:
     """Yield (load, y, iterations) for each converged step; the last is at ``stop``.
 
-    ``solve(load, guess)`` returns (y, iterations) or raises ``ConvergenceError``.
+    ``solve(load, guess)`` returns (y, iterations) or raises ``ConvergenceError``;
+    ``name`` says what the load is in that error's message.
     """
     s, ds = 0.0, min(first_step, max_step)
     y, s_prev, y_prev = np.asarray(y0, dtype=float), None, None
@@ -48,7 +50,7 @@ def follow(
             if ds < min_step:
                 reached = start + s * (stop - start)
                 raise ConvergenceError(
-                    f"load stepping gave up at load {reached:.6g} on the way to {stop:.6g}: {err}",
+                    f"load stepping gave up at {name} = {reached:.6g} on the way to {stop:.6g}: {err}",
                     load=reached,
                     iterations=err.iterations,
                     residual=err.residual,

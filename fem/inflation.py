@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pocket.errors import OutOfRangeError
+from pocket.errors import ConvergenceError, OutOfRangeError
 
 from .continuation import follow
 from .model import Control, Model
@@ -36,8 +36,14 @@ _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
 def _start(model: Model, pressure: float, lam, tol: Tolerances):
+    """The first state, at a small pressure from the small-strain dome; (y, iterations)."""
     p0 = min(pressure, P_START)
-    return solve(model, Control(pressure=p0), dome(model, p0), lam, tol)
+    try:
+        return solve(model, Control(pressure=p0), dome(model, p0), lam, tol)
+    except ConvergenceError as err:
+        raise ConvergenceError(f"the first state, from the small-strain dome at Phat = {p0:.6g}, did not "
+                               f"converge: {err}", load=p0, iterations=err.iterations,
+                               residual=err.residual) from err
 
 
 def to_volume(model: Model, target: float, lam, tol: Tolerances) -> tuple[np.ndarray, int]:
@@ -47,7 +53,7 @@ def to_volume(model: Model, target: float, lam, tol: Tolerances) -> tuple[np.nda
     def along(log_v, guess):
         return solve(model, Control(volume=np.exp(log_v)), guess, lam, tol)
 
-    for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target)):
+    for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target), name="log(V/R^3)"):
         total += iterations
     return y, total
 
@@ -66,7 +72,7 @@ def to_pressure(model: Model, target: float, lam, tol: Tolerances) -> tuple[np.n
 
     log_v0 = np.log(volume(model, y))
     path = [(log_v0, y)]
-    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, **_STEPS):
+    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
         total += iterations
         if y[-2] >= target:
             y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)

@@ -120,3 +120,28 @@ def test_closed_pipe_ends_quietly():
     proc.stdout.close()
     err = proc.stderr.read().decode()
     assert proc.wait() == 1 and err == ""
+
+
+@pytest.mark.parametrize("stage, where", [("inflation", "small-strain dome"),
+                                          ("compression", "load stepping gave up at plate height h/R =")])
+def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, monkeypatch, stage, where):
+    """Exact answer: a Newton that never converges (patched in: always, or once the plate is
+    down) makes the FE solver give up and say where; the CLI prints that one line, exits 1,
+    and the --vtk folder does not appear (nothing half-written is left looking complete)."""
+    import fem.steps
+    from fem.model import NO_PLATE
+    from pocket.errors import ConvergenceError
+
+    real = fem.steps.newton
+
+    def failing(residual, jacobian, guess, tol):
+        if stage == "inflation" or guess[-1] != NO_PLATE:
+            raise ConvergenceError("Newton: patched to fail", iterations=1, residual=1.0)
+        return real(residual, jacobian, guess, tol)
+
+    monkeypatch.setattr(fem.steps, "newton", failing)
+    status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.1",
+                           "--solver", "fem", "--elements", "50", "--vtk", str(tmp_path / "fe"))
+    assert status == 1 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert where in err and "patched to fail" in err, err
+    assert list(tmp_path.iterdir()) == []
