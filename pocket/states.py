@@ -40,6 +40,11 @@ class Profile:
     tension_2: np.ndarray
     contact: np.ndarray
 
+    def __post_init__(self):
+        shapes = {f.name: np.shape(getattr(self, f.name)) for f in dataclasses.fields(self)}
+        if len(set(shapes.values())) != 1 or len(shapes["r"]) != 1:
+            raise ValueError(f"Profile fields must be arrays of one common shape (n,), got {shapes}")
+
     @property
     def stretch_3(self) -> np.ndarray:
         """Thickness ratio lambda_3 = 1 / (lambda_1 lambda_2), shape (n,)."""
