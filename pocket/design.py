@@ -27,7 +27,8 @@ analytical model has c = 0.5726, ``pocket.analytical.height_constant``).
 The paper's (P_I, T) are also fed to the full model, which shows the H0 and
 H/H0 they really give.
 
-Feel: the force-travel curve F(H0 - H) at forces up to twice F, and its
+Feel: the force-travel curve F(H0 - H) at forces up to twice F (or to just
+inside the end of the model's range, if that comes first), and its
 stiffness dF/d(travel) = -(P_I pi R^2 / H0) / (d(H/H0)/dFhat), the slope from
 ``pocket.slopes`` (central differences).
 """
@@ -42,7 +43,7 @@ import numpy as np
 
 from .checks import check_alpha
 from .errors import InputError
-from .inverse import force_where, pressure_for_height
+from .inverse import force_where, pressure_for_height, range_end
 from .slopes import curve_with_slopes
 from .solvers import get_solver
 from .units import positive
@@ -69,6 +70,7 @@ class Design:
     curve_force: np.ndarray  # N, shape (n,)
     curve_travel: np.ndarray  # H0 - H, m
     curve_stiffness: np.ndarray  # dF/d(travel), N/m
+    curve_limited: bool  # the curve stops short of 2 F, at the end of the model's range
 
     def report(self) -> dict:
         """JSON-ready: the full model's answer, the paper's, their ratio, the curve."""
@@ -79,7 +81,7 @@ class Design:
                 "paper_model_height": self.paper_model_height,
                 "paper_model_height_ratio": self.paper_model_height_ratio,
                 "pressure_initial_hat": self.pressure_initial, "force_hat": self.force_hat,
-                "stiffness": self.stiffness,
+                "stiffness": self.stiffness, "curve_limited": self.curve_limited,
                 "curve": [{"force_N": f, "travel_m": t, "stiffness_N_per_m": k} for f, t, k in
                           zip(self.curve_force.tolist(), self.curve_travel.tolist(), self.curve_stiffness.tolist(),
                               strict=True)]}
@@ -115,7 +117,10 @@ def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="s
     paper_p, paper_t = paper_rules(radius, height, modulus, force)
     paper_phat = paper_p * radius / (modulus * paper_t)
     paper_state = model.compress(alpha, paper_phat, force / (paper_p * math.pi * radius**2), **options)
-    forces = fhat * np.arange(1, points + 1) * 2.0 / points
+    top = range_end(model, alpha, phat_i, 2.0 * fhat, **options)
+    limited = top < 2.0 * fhat
+    top *= 1.0 - 1e-3 if limited else 1.0  # room for the slope's stencil (pocket/slopes.py, 1e-4 f)
+    forces = top * np.arange(1, points + 1) / points
     states, slopes = curve_with_slopes(model, alpha, phat_i, [fhat, *forces], ["height_ratio"], **options)
     scale = p_i * math.pi * radius**2
     stiffness = -scale / (height * slopes["height_ratio"])
@@ -124,7 +129,7 @@ def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="s
                   paper_model_height_ratio=paper_state.height_ratio, pressure_initial=phat_i, force_hat=fhat,
                   stiffness=float(stiffness[0]), curve_force=forces * scale,
                   curve_travel=np.array([height * (1.0 - s.height_ratio) for s in states[1:]]),
-                  curve_stiffness=stiffness[1:])
+                  curve_stiffness=stiffness[1:], curve_limited=limited)
 
 
 def _main(args) -> int:
@@ -141,6 +146,9 @@ def _main(args) -> int:
           f"H/H0 = {result.paper_model_height_ratio:.6g} at F")
     print(f"Phat_I = {result.pressure_initial:.10g}, Fhat = {result.force_hat:.10g}, "
           f"stiffness at F = {result.stiffness:.6g} N/m")
+    if result.curve_limited:
+        print(f"the curve stops at F = {result.curve_force[-1]:.6g} N, short of 2 F: there the model's range ends "
+              "(the free part of the sheet folds onto the clamp plane)")
     print(f"{'force, N':>12}{'travel, m':>14}{'dF/dtravel, N/m':>18}")
     for f, t, k in zip(result.curve_force, result.curve_travel, result.curve_stiffness, strict=True):
         print(f"{f:>12.6g}{t:>14.6g}{k:>18.6g}")

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from .errors import OutOfRangeError
 
-__all__ = ["pressure_for_height", "force_where"]
+__all__ = ["pressure_for_height", "force_where", "range_end"]
 
 _XTOL, _RTOL = 1e-15, 1e-13  # the forward solvers resolve their values to ~1e-10
 _EDGE = 1e-9  # relative width at which the range edge is located
@@ -94,3 +94,26 @@ def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **o
 
     lo, hi = _bracket(miss, 0.1, f"{key} = {target:.10g}", value)
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
+
+
+def range_end(solver, alpha, pressure_initial, force, **options) -> float:
+    """``force`` (Fhat) if the model has a compressed state there, else the end of its range below.
+
+    The end, where the free part folds onto the clamp plane, is located by bisection
+    to a relative width ``_EDGE``; the value returned is inside the range.
+    """
+
+    def inside(f):
+        try:
+            solver.compress(alpha, pressure_initial, f, **options)
+        except OutOfRangeError:
+            return False
+        return True
+
+    if inside(force):
+        return force
+    lo, hi = 0.0, force
+    while hi - lo > _EDGE * hi:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if inside(mid) else (lo, mid)
+    return lo

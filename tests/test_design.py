@@ -92,3 +92,21 @@ def test_cli_bad_input(option, value, message, capsys):
     assert main(["design", *[x for kv in args.items() for x in kv]]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
+
+
+def test_curve_stops_at_the_end_of_the_range():
+    """Exact answer: pressing to H/H0 = 0.5 puts 2 F past the model's range, so the curve ends
+    just inside it: the forward solver refuses 2 F and a force 0.2 % past the curve's last
+    point (the margin left for the slope stencil, plus the 1e-9 edge bisection), and the
+    curve's designed point still gives H/H0 = 0.5."""
+    from pocket.errors import OutOfRangeError
+
+    d = design("20 mm", "10 mm", "1 MPa", ALPHA, "5 N", 0.5)
+    scale = d.initial_pressure * math.pi * R**2
+    assert d.curve_limited and d.curve_force[-1] < 2 * 5.0
+    with pytest.raises(OutOfRangeError):
+        shooting.compress(ALPHA, d.pressure_initial, 2 * d.force_hat)
+    with pytest.raises(OutOfRangeError):
+        shooting.compress(ALPHA, d.pressure_initial, d.curve_force[-1] / scale * 1.002)
+    assert shooting.compress(ALPHA, d.pressure_initial, d.force_hat).height_ratio == pytest.approx(0.5, rel=1e-8)
+    assert np.all(np.diff(d.curve_travel) > 0)
