@@ -42,7 +42,7 @@ import math
 import numpy as np
 
 from .checks import check_alpha
-from .errors import InputError
+from .errors import InputError, OutOfRangeError
 from .inverse import force_where, pressure_for_height, range_end
 from .slopes import curve_with_slopes
 from .solvers import get_solver
@@ -62,8 +62,8 @@ class Design:
     thickness: float
     paper_initial_pressure: float
     paper_thickness: float
-    paper_model_height: float  # H0 that the paper's (P_I, T) give in the full model, m
-    paper_model_height_ratio: float  # H/H0 that they give at F
+    paper_model_height: float | None  # H0 that the paper's (P_I, T) give in the full model, m
+    paper_model_height_ratio: float | None  # H/H0 that they give at F (None: no such state)
     pressure_initial: float
     force_hat: float
     stiffness: float  # dF/d(travel) at F, N/m
@@ -116,7 +116,11 @@ def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="s
     thickness = p_i * radius / (modulus * phat_i)
     paper_p, paper_t = paper_rules(radius, height, modulus, force)
     paper_phat = paper_p * radius / (modulus * paper_t)
-    paper_state = model.compress(alpha, paper_phat, force / (paper_p * math.pi * radius**2), **options)
+    try:
+        paper_state = model.compress(alpha, paper_phat, force / (paper_p * math.pi * radius**2), **options)
+        paper_model = paper_state.inflated.height * radius, paper_state.height_ratio
+    except OutOfRangeError:  # the paper's rules can ask for a state the model does not have
+        paper_model = None, None
     top = range_end(model, alpha, phat_i, 2.0 * fhat, **options)
     limited = top < 2.0 * fhat
     top *= 1.0 - 1e-3 if limited else 1.0  # room for the slope's stencil (pocket/slopes.py, 1e-4 f)
@@ -125,8 +129,8 @@ def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="s
     scale = p_i * math.pi * radius**2
     stiffness = -scale / (height * slopes["height_ratio"])
     return Design(initial_pressure=p_i, thickness=thickness, paper_initial_pressure=paper_p,
-                  paper_thickness=paper_t, paper_model_height=paper_state.inflated.height * radius,
-                  paper_model_height_ratio=paper_state.height_ratio, pressure_initial=phat_i, force_hat=fhat,
+                  paper_thickness=paper_t, paper_model_height=paper_model[0],
+                  paper_model_height_ratio=paper_model[1], pressure_initial=phat_i, force_hat=fhat,
                   stiffness=float(stiffness[0]), curve_force=forces * scale,
                   curve_travel=np.array([height * (1.0 - s.height_ratio) for s in states[1:]]),
                   curve_stiffness=stiffness[1:], curve_limited=limited)
@@ -142,8 +146,12 @@ def _main(args) -> int:
     for label, a, b in (("initial pressure P_I, Pa", result.initial_pressure, result.paper_initial_pressure),
                         ("thickness T, m", result.thickness, result.paper_thickness)):
         print(f"{label:24}{a:>14.6g}{b:>14.6g}{b / a:>14.6g}")
-    print(f"the paper's design in the full model: H0 = {result.paper_model_height:.6g} m, "
-          f"H/H0 = {result.paper_model_height_ratio:.6g} at F")
+    if result.paper_model_height is None:
+        print("the paper's design in the full model: outside its range (no inflated state on the first branch, "
+              "or none compressed at F)")
+    else:
+        print(f"the paper's design in the full model: H0 = {result.paper_model_height:.6g} m, "
+              f"H/H0 = {result.paper_model_height_ratio:.6g} at F")
     print(f"Phat_I = {result.pressure_initial:.10g}, Fhat = {result.force_hat:.10g}, "
           f"stiffness at F = {result.stiffness:.6g} N/m")
     if result.curve_limited:
