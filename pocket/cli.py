@@ -25,6 +25,7 @@ from fractions import Fraction
 
 from .checks import check_positive
 from .errors import ConvergenceError, InputError, PocketError
+from .provenance import version
 from .solvers import SOLVERS, get_solver
 
 __all__ = ["main", "number", "COMMAND_MODULES"]
@@ -50,6 +51,7 @@ def number(text: str) -> float:
 
 def _parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="pocket", description="Mechanics of pressurised elastic pockets.")
+    parser.add_argument("--version", action="version", version=f"pocket {version()}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     common = _Parser(add_help=False)
     common.add_argument("--alpha", type=number, required=True, help="C2/C1, > -1 (fractions allowed: 47/160)")

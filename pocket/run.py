@@ -3,7 +3,8 @@
 The case (``pocket.cases``) is resolved to the dimensionless model
 (``pocket.physical``), inflated and compressed at each load by its solver, and
 written as ``DIR/<stem>.json`` (the case in SI, the inflated state, the
-compressed states) and ``DIR/<stem>.csv`` (one row per load). Each row holds
+compressed states, and the provenance: pocket's and its libraries' versions)
+and ``DIR/<stem>.csv`` (one row per load). Each row holds
 the SI values (``force_N``, ``pressure_Pa``, ``pressure_rise_Pa``,
 ``contact_area_m2``, ``contact_radius_m``, ``height_m``, ``travel_m`` = H0 - H,
 ``volume_m3``) followed by the dimensionless keys of DESIGN.md.
@@ -12,12 +13,15 @@ the SI values (``force_N``, ``pressure_Pa``, ``pressure_rise_Pa``,
 from __future__ import annotations
 
 import csv
+import io
 import json
+import os
 import pathlib
 
 from .cases import Case, load, sample
 from .errors import InputError
 from .physical import compressed_row, forces, inflated_row, resolve
+from .provenance import environment
 
 __all__ = ["solve", "write", "add_case_arguments", "case_from_args", "register"]
 
@@ -25,13 +29,14 @@ _SHOWN = ("force_N", "pressure_Pa", "contact_area_m2", "height_m", "force", "pre
 
 
 def solve(case: Case) -> dict:
-    """The case solved: {"case": SI inputs, "inflated": row, "states": [rows]} (JSON-ready)."""
+    """The case solved: {"case": SI inputs, "inflated": row, "states": [rows], "provenance": {...}}
+    (JSON-ready)."""
     pocket = resolve(case)
     loads = forces(pocket)
     states = pocket.solver().compression_curve(pocket.alpha, pocket.pressure_initial, loads,
                                                **pocket.options())
     return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
-            "states": [compressed_row(pocket, s) for s in states]}
+            "states": [compressed_row(pocket, s) for s in states], "provenance": environment()}
 
 
 def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
@@ -39,12 +44,15 @@ def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Pat
     directory = pathlib.Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     json_path, csv_path = directory / f"{stem}.json", directory / f"{stem}.csv"
-    json_path.write_text(json.dumps(result, indent=2) + "\n")
     fields = list(dict.fromkeys(k for row in result["states"] for k in row))
-    with csv_path.open("w", newline="") as stream:
-        writer = csv.DictWriter(stream, fields, restval="")
-        writer.writeheader()
-        writer.writerows(result["states"])
+    text = io.StringIO(newline="")
+    writer = csv.DictWriter(text, fields, restval="")
+    writer.writeheader()
+    writer.writerows(result["states"])
+    for path, content in ((json_path, json.dumps(result, indent=2) + "\n"), (csv_path, text.getvalue())):
+        partial = path.with_name(f".{path.name}.partial")  # a file appears whole or not at all
+        partial.write_text(content, newline="")
+        os.replace(partial, path)
     return json_path, csv_path
 
 

@@ -5,6 +5,7 @@ import json
 import math
 
 import pytest
+import scipy
 
 import shooting
 from pocket.cases import SAMPLES, load, sample
@@ -44,6 +45,8 @@ def test_every_sample_runs(number, tmp_path, capsys):
     forces = [0, 0.5, 1, 2, 3, 4.5, 6]
     expected = shooting.compression_curve(47 / 160, phat_i, [f / (p_i * math.pi * radius**2) for f in forces])
     assert [float(r["force_N"]) for r in rows] == pytest.approx(forces, rel=1e-14)
+    assert result["provenance"]["scipy"] == scipy.__version__  # the versions that ran
+    assert not list(tmp_path.glob(".*partial"))
     for row, state, saved in zip(rows, expected, result["states"], strict=True):
         # the same solve: equal to the solver's resolution (~1e-10)
         assert float(row["pressure_Pa"]) == pytest.approx(state.pressure * modulus * thickness / radius, rel=1e-9)

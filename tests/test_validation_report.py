@@ -93,8 +93,12 @@ def test_html_and_markdown_are_complete(report):
     assert parser.images and all((out / src).is_file() and not pathlib.Path(src).is_absolute()
                                  for src in parser.images)
     markdown = (out / "report.md").read_text()
-    for heading in ("Summary", "Figures", "Mesh convergence", "Where the paper and the model disagree"):
+    for heading in ("Summary", "Figures", "Mesh convergence", "Where the paper and the model disagree",
+                    "Provenance"):
         assert heading in parser.headings and f"## {heading}" in markdown
+    import numpy
+
+    assert f"| numpy | {numpy.__version__} |" in markdown  # the versions that ran
     for topic in ("Eq (9)", "(1 + alpha)", "under-predicts A_c", "5.7 F"):
         assert topic in markdown
     assert not list(out.parent.glob(".*partial"))  # the temporary folder is gone

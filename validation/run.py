@@ -1,4 +1,4 @@
-"""Run the validation suite: every solve on two worker processes, then the checks.
+"""Run the validation suite: every solve on worker processes (one per usable CPU, at most 8), then the checks.
 
 The independent solves (a case's reference curves, FE curves, convergence
 sequences, the evidence about the paper) are tasks of a
@@ -15,13 +15,15 @@ import dataclasses
 import sys
 import time
 
+from pocket.provenance import cpus
+
 from . import checks, compute, convergence, evidence, findings
 from .cases import Case, Design
 from .plan import Plan
 
 __all__ = ["Results", "run", "convergence_tasks", "headline"]
 
-WORKERS = 2
+WORKERS = min(8, cpus())
 
 
 @dataclasses.dataclass(frozen=True)

@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import math
 
+from pocket.provenance import environment
+
 from .checks import TOLERANCES, summary
 from .convergence import EXPECTED, REFINED_P2_FINEST, RICHARDSON_FACTOR, richardson
-from .run import headline
+from .run import WORKERS, headline
 
 __all__ = ["blocks", "case_table", "sequence_rows", "counts"]
 
@@ -111,7 +113,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
     verdict = "FAIL" if n["fail"] else "PASS"
     out = [("h", 1, "pocket validation report"),
            ("p", f"Overall: {verdict}. {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational. "
-                 f"Plan '{results.plan.name}', {len(results.cases)} cases, {results.seconds:.1f} s on 2 processes."),
+                 f"Plan '{results.plan.name}', {len(results.cases)} cases, {results.seconds:.1f} s "
+                 f"on {WORKERS} processes."),
            ("h", 2, "Summary"),
            ("p", "One row per comparison (case, solvers, step): the verdict is 'fail' if any of its checks fails; "
                  "'info' rows have no tolerance that should hold (the analytical model outside its range). "
@@ -141,7 +144,10 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
                                                 "convergence_study.csv (every value)."))
     if results.findings:
         out += _findings_blocks(results)
-    out += [("h", 2, "Tolerances"),
+    out += [("h", 2, "Provenance"),
+            ("p", "The software and machine of this run (pocket.provenance)."),
+            ("table", ["", "version"], [[k, v] for k, v in environment().items()]),
+            ("h", 2, "Tolerances"),
             ("list", [f"{name}: {tol}: {why}" for name, (tol, why) in TOLERANCES.items()]),
             ("h", 2, "Files"),
             ("list", [f"{name}: every number of the figures ({', '.join(f.name for f in figs)}.csv), "
