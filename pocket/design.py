@@ -121,7 +121,7 @@ def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="s
         paper_model = paper_state.inflated.height * radius, paper_state.height_ratio
     except OutOfRangeError:  # the paper's rules can ask for a state the model does not have
         paper_model = None, None
-    top = range_end(model, alpha, phat_i, 2.0 * fhat, **options)
+    top = range_end(model, alpha, phat_i, below=2.0 * fhat, **options)
     limited = top < 2.0 * fhat
     top *= 1.0 - 1e-3 if limited else 1.0  # room for the slope's stencil (pocket/slopes.py, 1e-4 f)
     forces = top * np.arange(1, points + 1) / points

@@ -1,8 +1,8 @@
-"""Output folders that appear whole or not at all.
+"""Output files and folders that appear whole or not at all.
 
-A folder of results (a VTK series, a report) is written into a hidden sibling
-``.NAME.XXXXXXXXXXXX.partial`` and renamed onto its target only once complete, so
-an error or an interrupt never leaves a half-written folder looking finished.
+A result (a file, a VTK series, a report folder) is written into a hidden sibling
+``.NAME[.XXXXXXXXXXXX].partial`` and renamed onto its target only once complete,
+so an error or an interrupt never leaves a half-written result looking finished.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import secrets
 import shutil
 from collections.abc import Iterator
 
-__all__ = ["staged"]
+__all__ = ["staged", "write_whole"]
 
 
 @contextlib.contextmanager
@@ -34,6 +34,13 @@ def staged(target: pathlib.Path) -> Iterator[pathlib.Path]:
     except BaseException:
         shutil.rmtree(partial, ignore_errors=True)
         raise
+
+
+def write_whole(path: pathlib.Path, text: str) -> None:
+    """Write ``text`` to the file ``path`` through a hidden sibling renamed onto it."""
+    partial = path.with_name(f".{path.name}.partial")
+    partial.write_text(text, newline="")
+    os.replace(partial, path)
 
 
 def _replace(source: pathlib.Path, target: pathlib.Path) -> None:

@@ -96,11 +96,12 @@ def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **o
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
 
 
-def range_end(solver, alpha, pressure_initial, force, **options) -> float:
-    """``force`` (Fhat) if the model has a compressed state there, else the end of its range below.
+def range_end(solver, alpha, pressure_initial, *, below=None, rtol=_EDGE, **options) -> float:
+    """The end of the model's compression range in Fhat (where the free part folds onto the
+    clamp plane), located by bisection to relative width ``rtol``; the value is inside the range.
 
-    The end, where the free part folds onto the clamp plane, is located by bisection
-    to a relative width ``_EDGE``; the value returned is inside the range.
+    With ``below``: ``below`` itself if the model has a compressed state there, else the end
+    below it. Without: the end is first bracketed by doubling from Fhat = 1 (up to 1e4).
     """
 
     def inside(f):
@@ -110,10 +111,17 @@ def range_end(solver, alpha, pressure_initial, force, **options) -> float:
             return False
         return True
 
-    if inside(force):
-        return force
-    lo, hi = 0.0, force
-    while hi - lo > _EDGE * hi:
+    if below is not None:
+        if inside(below):
+            return below
+        lo, hi = 0.0, below
+    else:
+        lo, hi = 0.0, 1.0
+        while inside(hi):
+            lo, hi = hi, 2.0 * hi
+            if hi > 1e4:
+                raise OutOfRangeError(f"no end of the compression range found below Fhat = {hi:g}")
+    while hi - lo > rtol * hi:
         mid = 0.5 * (lo + hi)
         lo, hi = (mid, hi) if inside(mid) else (lo, mid)
     return lo

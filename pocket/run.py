@@ -15,11 +15,11 @@ from __future__ import annotations
 import csv
 import io
 import json
-import os
 import pathlib
 
 from .cases import Case, load, sample
 from .errors import InputError
+from .folders import write_whole
 from .physical import compressed_row, forces, inflated_row, resolve
 from .provenance import environment
 
@@ -49,10 +49,8 @@ def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Pat
     writer = csv.DictWriter(text, fields, restval="")
     writer.writeheader()
     writer.writerows(result["states"])
-    for path, content in ((json_path, json.dumps(result, indent=2) + "\n"), (csv_path, text.getvalue())):
-        partial = path.with_name(f".{path.name}.partial")  # a file appears whole or not at all
-        partial.write_text(content, newline="")
-        os.replace(partial, path)
+    write_whole(json_path, json.dumps(result, indent=2) + "\n")
+    write_whole(csv_path, text.getvalue())
     return json_path, csv_path
 
 

@@ -20,14 +20,15 @@ does not depend on the executor or on the interruptions.
 from __future__ import annotations
 
 import csv
+import io
 import itertools
-import os
 import pathlib
 import sys
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
 from .checks import check_alpha, check_force, check_positive
 from .errors import ConvergenceError, InputError, OutOfRangeError
+from .folders import write_whole
 from .solvers import SOLVERS, get_solver
 from .states import CompressedState
 
@@ -114,12 +115,11 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
                 future.cancel()
             raise
     ordered = [rows[point] for point in grid] + [rows[k] for k in sorted(set(rows) - set(grid))]
-    partial = path.with_name(f".{path.name}.partial")
-    with partial.open("w", newline="") as stream:
-        writer = csv.DictWriter(stream, COLUMNS)
-        writer.writeheader()
-        writer.writerows(ordered)
-    os.replace(partial, path)
+    text = io.StringIO(newline="")
+    writer = csv.DictWriter(text, COLUMNS)
+    writer.writeheader()
+    writer.writerows(ordered)
+    write_whole(path, text.getvalue())
     return len(todo), len(grid) - len(todo)
 
 

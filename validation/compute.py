@@ -59,23 +59,9 @@ class FemCurve:
 def range_end(alpha: float, pressure: float, *, rtol: float = 1e-3) -> float:
     """The end of the shooting model's range in Fhat, to relative ``rtol`` (a lower bound)."""
     import shooting
+    from pocket.inverse import range_end as model_range_end
 
-    def inside(force):
-        try:
-            shooting.compression_curve(alpha, pressure, [force])
-        except OutOfRangeError:
-            return False
-        return True
-
-    low, high = 0.0, 1.0
-    while inside(high):
-        low, high = high, 2.0 * high
-        if high > 1e4:
-            raise OutOfRangeError(f"no end of the compression range found below Fhat = {high:g}")
-    while high - low > rtol * high:
-        mid = 0.5 * (low + high)
-        low, high = (mid, high) if inside(mid) else (low, mid)
-    return low
+    return model_range_end(shooting, alpha, pressure, rtol=rtol)
 
 
 def force_grid(force_end: float, points: int, extra=()) -> np.ndarray:
