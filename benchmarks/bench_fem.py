@@ -17,12 +17,11 @@ import time
 
 import numpy as np
 import scipy.sparse.linalg as spla
+from pocket.fem import inflation, model
+from pocket.fem.newton import Tolerances
 from timing import median_time
 
-import fem
-import meshes
-from fem import inflation, model
-from fem.newton import Tolerances
+from pocket import fem, meshes
 
 ALPHA, PHAT = 47 / 160, 0.31
 
@@ -64,7 +63,7 @@ class _Timer:
 
 def curve_breakdown(points):
     """Time a compression curve at the default mesh, split into assembly and solve."""
-    from fem import newton, steps
+    from pocket.fem import newton, steps
 
     timers = {"residual": _Timer(model.residual), "tangent": _Timer(model.jacobian),
               "solve": _Timer(spla.spsolve)}

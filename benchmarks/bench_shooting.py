@@ -15,12 +15,12 @@ import subprocess
 import sys
 
 import numpy as np
+from pocket.shooting.equations import pole_state, tensions
+from pocket.shooting.shots import R_POLE
 from scipy.integrate import solve_bvp
 from timing import median_time
 
-import shooting
-from shooting.equations import pole_state, tensions
-from shooting.shots import R_POLE
+from pocket import shooting
 
 ALPHA, PHAT = 47 / 160, 0.31
 

@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterator
 
 import numpy as np
 
-from pocket.errors import ConvergenceError
+from pocket.core.errors import ConvergenceError
 
 __all__ = ["follow"]
 

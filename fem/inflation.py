@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pocket.errors import ConvergenceError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .continuation import follow
 from .model import Control, Model

@@ -19,7 +19,7 @@ from collections.abc import Callable
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from pocket.errors import ConvergenceError
+from pocket.core.errors import ConvergenceError
 
 __all__ = ["Tolerances", "newton"]
 

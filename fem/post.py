@@ -26,7 +26,7 @@ from types import SimpleNamespace
 import numpy as np
 from scipy.optimize import brentq
 
-from pocket.states import Profile
+from pocket.core.states import Profile
 
 from . import forms
 from .model import Model, full, parameters, plate_pressure

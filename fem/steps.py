@@ -1,7 +1,7 @@
 """Shared solving steps: one controlled solve, the starting dome, landing on a target.
 
 ``solve`` is Newton on the bordered system followed by the range check of
-DESIGN.md: a free part below the clamp plane (eta < 0) is outside the model.
+a free part below the clamp plane (eta < 0) is outside the membrane model.
 
 ``land`` finds the state where a monitored quantity f(y) (the pressure along a
 volume path, the plate force along a height path) equals a target, given two
@@ -18,7 +18,8 @@ from collections.abc import Callable
 
 import numpy as np
 
-from pocket.errors import ConvergenceError, OutOfRangeError
+from pocket.core import smallstrain
+from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .model import NO_PLATE, Control, Model, full, jacobian, residual
 from .newton import Tolerances, newton
@@ -53,7 +54,7 @@ def dome(model: Model, pressure: float) -> np.ndarray:
     lambda_0 - 1 = (Phat / (4 sqrt 6))^(2/3), rho = r (lambda_0 - (lambda_0 - 1) r^2),
     eta = sqrt(3 (lambda_0 - 1) / 2) (1 - r^2).
     """
-    e = (pressure / (4.0 * np.sqrt(6.0))) ** (2.0 / 3.0)
+    e = smallstrain.pole_strain(pressure)
     r = model.basis.doflocs[0]
     u = np.where(np.arange(model.basis.N) % 2 == 0, r * (1 + e - e * r**2), np.sqrt(1.5 * e) * (1 - r**2))
     return np.concatenate([u[model.free], [pressure, NO_PLATE]])

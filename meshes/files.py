@@ -30,7 +30,7 @@ import pathlib
 import meshio
 import numpy as np
 
-from pocket.errors import InputError
+from pocket.core.errors import InputError
 
 __all__ = ["read", "write", "check"]
 

@@ -34,8 +34,8 @@ import operator
 
 import numpy as np
 
-from pocket.checks import check_finite
-from pocket.errors import InputError
+from pocket.core.errors import InputError
+from pocket.core.inputs import check_finite
 
 __all__ = ["uniform", "graded", "refined"]
 

@@ -1,7 +1,7 @@
 """Named meshes shipped as ``.vtu`` files beside this module.
 
 ``RECIPES`` says how each was made from ``meshes.generate``; the script
-``meshes/make_named.py`` writes the files from it, and a test checks that
+``pocket.meshes.make_named`` writes the files from it, and a test checks that
 every file still equals its recipe. The names say what each is for:
 
 - ``uniform-64``, ``uniform-256``: the default and a finer uniform mesh;
@@ -16,7 +16,7 @@ import pathlib
 
 import numpy as np
 
-from pocket.errors import InputError
+from pocket.core.errors import InputError
 
 from .files import read
 from .generate import graded, refined, uniform

@@ -2,11 +2,38 @@
 
 ``inflate`` / ``inflate_volume`` solve step 1 (pressure or volume control),
 ``compress`` / ``compression_curve`` step 2 (fixed volume, flat frictionless
-plate, force given). All return ``pocket.states`` containers; the equations and
-their derivation are in ``shooting.equations``.
+plate, force given). All return ``pocket.core.states`` containers; the equations and their
+derivation are in ``pocket.shooting.equations``. ``SOLVER`` is its record
+(entry points and options, ``pocket.core.solver``).
+
+The entry points are imported on first use, so that reading ``SOLVER`` (the
+command line does, to build its flags) costs nothing.
 """
 
-from .compression import compress, compression_curve
-from .inflation import inflate, inflate_volume
+import importlib
 
-__all__ = ["inflate", "inflate_volume", "compress", "compression_curve"]
+from pocket.core.inputs import check_tolerance
+from pocket.core.solver import Option, Solver
+
+__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve"]
+
+#: loosest ODE tolerance accepted: the root finders need residuals far below the quantities they resolve
+RTOL_MAX = 1e-4
+
+SOLVER = Solver(
+    name="shooting",
+    summary="reference: the membrane equations integrated to the clamp, root finding on the unknowns",
+    module=__name__,
+    entry_points=("inflate", "inflate_volume", "compress", "compression_curve"),
+    options=(Option("rtol", "float", 1e-10, f"relative tolerance of the ODE integration (DOP853), "
+                    f"at most {RTOL_MAX:g}", lambda name, value: check_tolerance(name, value, RTOL_MAX)),),
+)
+
+_HOMES = {"inflate": "inflation", "inflate_volume": "inflation", "compress": "compression",
+          "compression_curve": "compression"}
+
+
+def __getattr__(name):
+    if name in _HOMES:
+        return getattr(importlib.import_module(f".{_HOMES[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

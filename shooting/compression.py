@@ -25,9 +25,9 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import root
 
-from pocket.checks import check_alpha, check_force, check_positive
-from pocket.errors import ConvergenceError, InputError, OutOfRangeError
-from pocket.states import CompressedState, InflatedState
+from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.inputs import check_alpha, check_force, check_positive
+from pocket.core.states import CompressedState, InflatedState
 
 from .inflation import inflate
 from .integrator import OK

@@ -20,9 +20,10 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from pocket.checks import check_alpha, check_positive
-from pocket.errors import ConvergenceError, OutOfRangeError
-from pocket.states import InflatedState
+from pocket.core import smallstrain
+from pocket.core.errors import ConvergenceError, OutOfRangeError
+from pocket.core.inputs import check_alpha, check_positive
+from pocket.core.states import InflatedState
 
 from .integrator import OK, STATUS
 from .shots import profile_from_steps, shot_pole
@@ -113,7 +114,7 @@ def inflate(alpha, pressure, *, rtol=1e-10) -> InflatedState:
     alpha = check_alpha(alpha)
     pressure = check_positive("pressure", pressure)
     p = 3.0 * (1.0 + alpha) * pressure
-    s_est = (pressure / (4.0 * np.sqrt(6.0))) ** (2.0 / 3.0)
+    s_est = smallstrain.pole_strain(pressure)
 
     def phat(l0):
         return pressure_of_stretch(l0, alpha, rtol=rtol) / (3.0 * (1.0 + alpha))
@@ -127,7 +128,7 @@ def inflate_volume(alpha, volume, *, rtol=1e-10) -> InflatedState:
     """Inflate to enclosed volume V / R^3 (volume control, passes pressure maxima)."""
     alpha = check_alpha(alpha)
     volume = check_positive("volume", volume)
-    s_est = (4.0 * volume / np.pi) ** 2 / 6.0  # small-strain eq (16b) inverted
+    s_est = smallstrain.strain_of_volume(volume)
 
     s_lo, s_hi = _bracket(lambda l0: _volume(l0, alpha, rtol), volume, s_est, "volume")
     l0 = brentq(lambda s: _volume(s, alpha, rtol) - volume, 1.0 + s_lo, 1.0 + s_hi, **_XTOL)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pocket.states import Profile
+from pocket.core.states import Profile
 
 from .equations import pole_state, tension_scale, tensions
 from .integrator import integrate

@@ -5,9 +5,9 @@ import pytest
 import sympy as sp
 from scipy.integrate import quad
 
-import shooting
-from pocket import analytical
-from pocket.errors import OutOfRangeError
+from pocket import shooting
+from pocket.analytical import model as analytical
+from pocket.core.errors import OutOfRangeError
 
 SAMPLE = 47 / 160
 

@@ -7,8 +7,8 @@ import math
 import pytest
 import scipy
 
-import shooting
-from pocket.cases import SAMPLES, load, sample
+from pocket import shooting
+from pocket.apps.cases import SAMPLES, load, sample
 from pocket.cli import main
 
 BUTTON = """

@@ -6,9 +6,9 @@ import sys
 
 import pytest
 
-import shooting
+from pocket import shooting
 from pocket.cli import main
-from pocket.states import CompressedState, InflatedState
+from pocket.core.states import CompressedState, InflatedState
 
 
 def run(capsys, *argv):
@@ -53,9 +53,14 @@ def test_table(capsys, solver):
         (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "-0.1"], "force = -0.1"),
         (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "50"], "beyond the model's range"),
         (["compress", "--alpha", "x", "--pressure", "0.3", "--force", "1"], "'x' is not a number"),
-        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--order", "2"], "--order applies to --solver fem"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--order", "2"],
+         "--order does not apply to solver shooting (its options: --rtol)"),
         (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--solver", "analytical", "--rtol", "1e-8"],
-         "--rtol applies to --solver shooting"),
+         "--rtol does not apply to solver analytical"),
+        (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "1", "--solver", "fem", "--rtol", "1e-8"],
+         "--rtol does not apply to solver fem"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--solver", "fem", "--penalty", "1e4"],
+         "unrecognized arguments: --penalty"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(capsys, argv, message):
@@ -128,18 +133,19 @@ def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, mo
     """Exact answer: a Newton that never converges (patched in: always, or once the plate is
     down) makes the FE solver give up and say where; the CLI prints that one line, exits 1,
     and the --vtk folder does not appear (nothing half-written is left looking complete)."""
-    import fem.steps
-    from fem.model import NO_PLATE
-    from pocket.errors import ConvergenceError
+    import pocket.fem.steps as steps
+    from pocket.fem.model import NO_PLATE
 
-    real = fem.steps.newton
+    from pocket.core.errors import ConvergenceError
+
+    real = steps.newton
 
     def failing(residual, jacobian, guess, tol):
         if stage == "inflation" or guess[-1] != NO_PLATE:
             raise ConvergenceError("Newton: patched to fail", iterations=1, residual=1.0)
         return real(residual, jacobian, guess, tol)
 
-    monkeypatch.setattr(fem.steps, "newton", failing)
+    monkeypatch.setattr(steps, "newton", failing)
     status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.1",
                            "--solver", "fem", "--elements", "50", "--vtk", str(tmp_path / "fe"))
     assert status == 1 and out == "" and len(err.strip().splitlines()) == 1, err

@@ -6,9 +6,9 @@ import math
 import numpy as np
 import pytest
 
-import shooting
+from pocket import shooting
+from pocket.apps.design import design
 from pocket.cli import main
-from pocket.design import design
 
 # the paper's section 6 example, SI
 R, H0, E, ALPHA, F, RATIO = 0.02, 0.010, 1e6, 0.3, 0.67, 0.8
@@ -22,8 +22,8 @@ def example():
 def test_full_model_answer_fed_back(example):
     """Exact: the forward solver at the designed (P_I, T) gives H0 and H/H0 = 0.8 at F.
     1e-6 relative is the issue's bar; the root finding and the solver resolve ~1e-10."""
-    phat_i = example.initial_pressure * R / (E * example.thickness)
-    fhat = F / (example.initial_pressure * math.pi * R**2)
+    phat_i = example.pressure_initial_Pa * R / (E * example.thickness_m)
+    fhat = F / (example.pressure_initial_Pa * math.pi * R**2)
     state = shooting.compress(ALPHA, phat_i, fhat)
     assert state.inflated.height * R == pytest.approx(H0, rel=1e-6)
     assert state.height_ratio == pytest.approx(RATIO, rel=1e-6)
@@ -32,34 +32,34 @@ def test_full_model_answer_fed_back(example):
 def test_paper_rules(example):
     """Exact: Table 2's formulas, P_I = 5.7 F/(pi R^2), T = 0.216 P_I R^4/(E H0^3)."""
     p_i = 5.7 * 0.67 / (math.pi * 0.02**2)
-    assert example.paper_initial_pressure == pytest.approx(p_i, rel=1e-14)
-    assert example.paper_thickness == pytest.approx(0.216 * p_i * 0.02**4 / (1e6 * 0.01**3), rel=1e-14)
+    assert example.paper_pressure_initial_Pa == pytest.approx(p_i, rel=1e-14)
+    assert example.paper_thickness_m == pytest.approx(0.216 * p_i * 0.02**4 / (1e6 * 0.01**3), rel=1e-14)
     # what the paper's design really gives, by the forward solver
-    state = shooting.compress(ALPHA, p_i * R / (E * example.paper_thickness), F / (p_i * math.pi * R**2))
-    assert example.paper_model_height == pytest.approx(state.inflated.height * R, rel=1e-9)
+    state = shooting.compress(ALPHA, p_i * R / (E * example.paper_thickness_m), F / (p_i * math.pi * R**2))
+    assert example.paper_model_height_m == pytest.approx(state.inflated.height * R, rel=1e-9)
     assert example.paper_model_height_ratio == pytest.approx(state.height_ratio, rel=1e-9)
 
 
 def test_stiffness_is_the_slope_of_the_curve(example):
     """dF/d(travel) at F against a central difference of the forward solver with a 10x larger
     step than the module's (h = 1e-3 F): truncation ~1e-6 relative, so 1e-5."""
-    p_i = example.initial_pressure
-    phat_i, fhat = p_i * R / (E * example.thickness), F / (p_i * math.pi * R**2)
+    p_i = example.pressure_initial_Pa
+    phat_i, fhat = p_i * R / (E * example.thickness_m), F / (p_i * math.pi * R**2)
     lo, hi = shooting.compression_curve(ALPHA, phat_i, [fhat * (1 - 1e-3), fhat * (1 + 1e-3)])
     slope = 2e-3 * F / (H0 * (lo.height_ratio - hi.height_ratio))
-    assert example.stiffness == pytest.approx(slope, rel=1e-5)
-    assert example.curve_force[9] == pytest.approx(F, rel=1e-14)  # F is the 10th of 20 points up to 2F
-    assert example.curve_stiffness[9] == pytest.approx(example.stiffness, rel=1e-9)
-    assert example.curve_travel[9] == pytest.approx((1 - RATIO) * H0, rel=1e-6)
+    assert example.stiffness_N_per_m == pytest.approx(slope, rel=1e-5)
+    assert example.curve_force_N[9] == pytest.approx(F, rel=1e-14)  # F is the 10th of 20 points up to 2F
+    assert example.curve_stiffness_N_per_m[9] == pytest.approx(example.stiffness_N_per_m, rel=1e-9)
+    assert example.curve_travel_m[9] == pytest.approx((1 - RATIO) * H0, rel=1e-6)
     # a button stiffens as it is pressed: travel grows, and ever more slowly
-    assert np.all(np.diff(example.curve_travel) > 0) and np.all(np.diff(example.curve_stiffness) > 0)
+    assert np.all(np.diff(example.curve_travel_m) > 0) and np.all(np.diff(example.curve_stiffness_N_per_m) > 0)
 
 
 def test_modulus_scales_thickness_only(example):
     """Exact (module docstring): P_I does not depend on E and T scales as 1/E."""
     other = design(R, H0, 2 * E, ALPHA, F, RATIO, points=2)
-    assert other.initial_pressure == pytest.approx(example.initial_pressure, rel=1e-9)
-    assert other.thickness == pytest.approx(example.thickness / 2, rel=1e-9)
+    assert other.pressure_initial_Pa == pytest.approx(example.pressure_initial_Pa, rel=1e-9)
+    assert other.thickness_m == pytest.approx(example.thickness_m / 2, rel=1e-9)
 
 
 def test_cli_json(example, capsys):
@@ -68,10 +68,10 @@ def test_cli_json(example, capsys):
             "--force", "0.67 N", "--height-ratio", "0.8", "--json"]
     assert main(argv) == 0
     out = json.loads(capsys.readouterr().out)
-    assert out["initial_pressure"] == pytest.approx(example.initial_pressure, rel=1e-12)
-    assert out["thickness"] == pytest.approx(example.thickness, rel=1e-12)
-    assert out["paper_initial_pressure"] == pytest.approx(example.paper_initial_pressure, rel=1e-14)
-    assert out["paper_thickness"] == pytest.approx(example.paper_thickness, rel=1e-14)
+    assert out["pressure_initial_Pa"] == pytest.approx(example.pressure_initial_Pa, rel=1e-12)
+    assert out["thickness_m"] == pytest.approx(example.thickness_m, rel=1e-12)
+    assert out["paper_pressure_initial_Pa"] == pytest.approx(example.paper_pressure_initial_Pa, rel=1e-14)
+    assert out["paper_thickness_m"] == pytest.approx(example.paper_thickness_m, rel=1e-14)
     assert len(out["curve"]) == 20 and set(out["curve"][0]) == {"force_N", "travel_m", "stiffness_N_per_m"}
 
 
@@ -99,29 +99,29 @@ def test_curve_stops_at_the_end_of_the_range():
     just inside it: the forward solver refuses 2 F and a force 0.2 % past the curve's last
     point (the margin left for the slope stencil, plus the 1e-9 edge bisection), and the
     curve's designed point still gives H/H0 = 0.5."""
-    from pocket.errors import OutOfRangeError
+    from pocket.core.errors import OutOfRangeError
 
     d = design("20 mm", "10 mm", "1 MPa", ALPHA, "5 N", 0.5)
-    scale = d.initial_pressure * math.pi * R**2
-    assert d.curve_limited and d.curve_force[-1] < 2 * 5.0
+    scale = d.pressure_initial_Pa * math.pi * R**2
+    assert d.curve_limited and d.curve_force_N[-1] < 2 * 5.0
     with pytest.raises(OutOfRangeError):
-        shooting.compress(ALPHA, d.pressure_initial, 2 * d.force_hat)
+        shooting.compress(ALPHA, d.pressure_initial, 2 * d.force)
     with pytest.raises(OutOfRangeError):
-        shooting.compress(ALPHA, d.pressure_initial, d.curve_force[-1] / scale * 1.002)
-    assert shooting.compress(ALPHA, d.pressure_initial, d.force_hat).height_ratio == pytest.approx(0.5, rel=1e-8)
-    assert np.all(np.diff(d.curve_travel) > 0)
+        shooting.compress(ALPHA, d.pressure_initial, d.curve_force_N[-1] / scale * 1.002)
+    assert shooting.compress(ALPHA, d.pressure_initial, d.force).height_ratio == pytest.approx(0.5, rel=1e-8)
+    assert np.all(np.diff(d.curve_travel_m) > 0)
 
 
 def test_paper_design_outside_the_model_is_said_not_fatal():
     """Exact answer: for H0 = 16 mm, alpha = 0.1 the paper's rules give Phat_I = H0^3 / (0.216 R^3)
     = 2.37, above the first-branch maximum of Phat(V) for alpha = 0.1 (the forward solver
     refuses it); the full-model design still stands and the paper's column is None."""
-    from pocket.errors import OutOfRangeError
+    from pocket.core.errors import OutOfRangeError
 
     phat = 0.016**3 / (0.216 * 0.02**3)
     with pytest.raises(OutOfRangeError):
         shooting.inflate(0.1, phat)
     d = design("20 mm", "16 mm", "1 MPa", 0.1, "0.67 N", 0.8)
-    assert d.paper_model_height is None and d.paper_model_height_ratio is None
-    state = shooting.compress(0.1, d.pressure_initial, d.force_hat)
+    assert d.paper_model_height_m is None and d.paper_model_height_ratio is None
+    state = shooting.compress(0.1, d.pressure_initial, d.force)
     assert state.inflated.height == pytest.approx(0.8, rel=1e-6) and state.height_ratio == pytest.approx(0.8, rel=1e-6)

@@ -9,11 +9,9 @@ state.
 import numpy as np
 import pytest
 
-import fem
-import meshes
-import shooting
-from pocket.errors import OutOfRangeError
-from pocket.states import CompressedState
+from pocket import fem, meshes, shooting
+from pocket.core.errors import OutOfRangeError
+from pocket.core.states import CompressedState
 
 KEYS = CompressedState.KEYS[3:]  # the solved-for scalars (alpha, Phat_I and Fhat are inputs)
 ALPHA, P_I, FORCES = 47 / 160, 0.31, (0.05, 0.19, 0.5)

@@ -18,9 +18,7 @@ on failure; the finest errors are capped as well.
 import numpy as np
 import pytest
 
-import fem
-import meshes
-import shooting
+from pocket import fem, meshes, shooting
 
 ALPHA, PRESSURE = 47 / 160, 0.31
 INFLATION_MESHES = {1: (20, 40, 80, 160), 2: (10, 20, 40, 80)}

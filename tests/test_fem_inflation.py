@@ -9,10 +9,8 @@ pressure maximum.
 import numpy as np
 import pytest
 
-import fem
-import meshes
-import shooting
-from pocket.errors import OutOfRangeError
+from pocket import fem, meshes, shooting
+from pocket.core.errors import OutOfRangeError
 
 KEYS = ("pressure", "stretch_pole", "height", "volume", "stretch_clamp")
 CASES = [(47 / 160, 0.05), (47 / 160, 0.31), (0.0, 0.05), (0.0, 0.31)]

@@ -4,22 +4,22 @@ raised before any work (STYLE.md, DESIGN.md quality bars)."""
 import numpy as np
 import pytest
 
-import fem
-from pocket.errors import ConvergenceError, InputError
+from pocket import fem
+from pocket.core.errors import ConvergenceError, InputError
 
 CASES = [
     (lambda: fem.inflate(-1.0, 0.1), "alpha = -1.0"),
     (lambda: fem.inflate(-1.5, 0.1), "alpha = -1.5"),
-    (lambda: fem.inflate(0.3, 0.0), "Phat = 0.0"),
-    (lambda: fem.inflate(0.3, -0.2), "Phat = -0.2"),
+    (lambda: fem.inflate(0.3, 0.0), "pressure = 0.0"),
+    (lambda: fem.inflate(0.3, -0.2), "pressure = -0.2"),
     (lambda: fem.inflate_volume(0.3, -1.0), "volume = -1.0"),
     (lambda: fem.compress(0.3, 0.31, -0.1), "force = -0.1"),
-    (lambda: fem.compress(0.3, -0.31, 0.1), "Phat_I = -0.31"),
+    (lambda: fem.compress(0.3, -0.31, 0.1), "pressure_initial = -0.31"),
     (lambda: fem.compress(0.3, 0.31, 0.1, penalty=0.0), "penalty = 0.0"),
     (lambda: fem.compress(0.3, 0.31, 0.1, penalty=-5.0), "penalty = -5.0"),
     (lambda: fem.compress_height(0.3, 0.31, -0.1), "height = -0.1"),
     (lambda: fem.inflate(0.3, 0.1, order=3), "order = 3"),
-    (lambda: fem.inflate(0.3, 0.1, mesh=np.linspace(0, 1, 3)), "2 elements"),
+    (lambda: fem.inflate(0.3, 0.1, mesh=np.linspace(0, 1, 3)), "mesh elements = 2, but it must lie in [4, 1000000]"),
     (lambda: fem.inflate(0.3, 0.1, mesh=np.linspace(0, 2, 11)), "spans"),
     (lambda: fem.inflate(0.3, 0.1, mesh=np.linspace(0, 1, 11)[::-1]), "increasing"),
     (lambda: fem.inflate(0.3, 0.1, mesh=np.zeros((3, 4))), "1-D"),
@@ -39,7 +39,7 @@ def test_load_stepping_cuts_steps_then_says_where():
     """A solve that fails beyond load 0.3: the stepping halves its step until it is
     below min_step, then raises ConvergenceError with the load reached (just under
     0.3), the iterations and the residual of the last failure."""
-    from fem.continuation import follow
+    from pocket.fem.continuation import follow
 
     tried = []
 

@@ -8,10 +8,9 @@ material hessian against central differences of its gradient.
 
 import numpy as np
 import pytest
-
-from fem import compression, inflation, model, post
-from fem.material import MooneyRivlin
-from fem.newton import Tolerances
+from pocket.fem import compression, inflation, model, post
+from pocket.fem.material import MooneyRivlin
+from pocket.fem.newton import Tolerances
 
 
 @pytest.fixture(scope="module")

@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from pocket.meshes.named import RECIPES
 
-import meshes
-from meshes.named import RECIPES
-from pocket.errors import InputError
+from pocket import meshes
+from pocket.core.errors import InputError
 
 counts = st.integers(min_value=1, max_value=400)
 ratios = st.floats(min_value=1.0, max_value=1e3)

@@ -6,7 +6,7 @@ import sys
 import numpy
 import scipy
 
-from pocket.provenance import LIBRARIES, environment, version
+from pocket.apps.provenance import LIBRARIES, environment, version
 
 
 def test_environment_names_the_libraries_that_ran():

@@ -6,12 +6,12 @@ import json
 import numpy as np
 import pytest
 
-import shooting
-from pocket.cases import sample
+from pocket import shooting
+from pocket.apps.cases import sample
+from pocket.apps.physical import resolve
+from pocket.apps.sense import calibration, sense
 from pocket.cli import main
-from pocket.errors import OutOfRangeError
-from pocket.physical import resolve
-from pocket.sense import calibration, sense
+from pocket.core.errors import OutOfRangeError
 
 FORCES = [0.01, 0.05, 0.19, 0.5, 1.0, 3.0, 8.0]  # Fhat, from a touch to near the model's range (~9.9)
 
@@ -27,13 +27,13 @@ def test_round_trip(pocket):
     states = shooting.compression_curve(pocket.alpha, pocket.pressure_initial, FORCES)
     for fhat, state in zip(FORCES, states, strict=True):
         by_ratio = sense(pocket, ratio=state.pressure_ratio)
-        assert by_ratio.force_hat == pytest.approx(fhat, rel=1e-8)
-        assert by_ratio.force == pytest.approx(fhat * pocket.force_scale, rel=1e-8)
+        assert by_ratio.force == pytest.approx(fhat, rel=1e-8)
+        assert by_ratio.force_N == pytest.approx(fhat * pocket.force_scale_N, rel=1e-8)
         # F = P A_c for the frictionless plate
-        assert by_ratio.contact_area * by_ratio.pressure == pytest.approx(by_ratio.force, rel=1e-8)
-    pressure = states[2].pressure_ratio * pocket.initial_pressure
+        assert by_ratio.contact_area_m2 * by_ratio.pressure_Pa == pytest.approx(by_ratio.force_N, rel=1e-8)
+    pressure = states[2].pressure_ratio * pocket.pressure_initial_Pa
     by_pressure = sense(pocket, pressure=f"{float(pressure) / 1e3!r} kPa")
-    assert by_pressure.force_hat == pytest.approx(FORCES[2], rel=1e-8)
+    assert by_pressure.force == pytest.approx(FORCES[2], rel=1e-8)
 
 
 def test_sensitivity(pocket):
@@ -42,8 +42,9 @@ def test_sensitivity(pocket):
     fhat = 0.5
     reading = sense(pocket, ratio=shooting.compress(pocket.alpha, pocket.pressure_initial, fhat).pressure_ratio)
     lo, hi = shooting.compression_curve(pocket.alpha, pocket.pressure_initial, [fhat * 0.999, fhat * 1.001])
-    expected = 0.002 * fhat * pocket.force_scale / ((hi.pressure_ratio - lo.pressure_ratio) * pocket.initial_pressure)
-    assert reading.sensitivity == pytest.approx(expected, rel=1e-5)
+    rise = (hi.pressure_ratio - lo.pressure_ratio) * pocket.pressure_initial_Pa
+    expected = 0.002 * fhat * pocket.force_scale_N / rise
+    assert reading.sensitivity_N_per_Pa == pytest.approx(expected, rel=1e-5)
 
 
 @pytest.mark.parametrize("ratio, message", [(0.9, "below its value with no force"),
@@ -67,9 +68,9 @@ def test_table(pocket, tmp_path, capsys):
     assert float(rows[0]["pressure_ratio"]) == 1.0
     assert np.all(np.diff([float(r["pressure_Pa"]) for r in rows]) > 0)
     row = rows[3]
-    assert sense(pocket, pressure=float(row["pressure_Pa"])).force == pytest.approx(float(row["force_N"]), rel=1e-8)
+    assert sense(pocket, pressure=float(row["pressure_Pa"])).force_N == pytest.approx(float(row["force_N"]), rel=1e-8)
     direct = calibration(pocket, 6.0, 7)
-    assert [r.force for r in direct] == pytest.approx(forces.tolist(), rel=1e-14, abs=1e-15)
+    assert [r.force_N for r in direct] == pytest.approx(forces.tolist(), rel=1e-14, abs=1e-15)
 
 
 @pytest.mark.parametrize(

@@ -5,8 +5,8 @@ import pytest
 from scipy.interpolate import CubicSpline
 from test_shooting_inflation import strain_energy
 
-import shooting
-from pocket.errors import InputError, OutOfRangeError
+from pocket import shooting
+from pocket.core.errors import InputError, OutOfRangeError
 
 SAMPLE = 47 / 160
 

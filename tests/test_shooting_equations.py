@@ -12,9 +12,8 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from shooting.equations import pole_state, rhs
-from shooting.integrator import OK, integrate
+from pocket.shooting.equations import pole_state, rhs
+from pocket.shooting.integrator import OK, integrate
 
 L1, L2, AL = sp.symbols("lambda_1 lambda_2 alpha", positive=True)
 # Eq (6), in units of 2 C1 T, typed from the paper.

@@ -2,10 +2,9 @@
 
 import numpy as np
 import pytest
+from pocket.shooting.equations import pole_state, rhs
+from pocket.shooting.integrator import AXIS, FOLD, OK, integrate
 from scipy.integrate import solve_ivp
-
-from shooting.equations import pole_state, rhs
-from shooting.integrator import AXIS, FOLD, OK, integrate
 
 
 def _scipy(y0, r0, alpha, p, rtol):

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pocket.states import Profile
+from pocket.core.states import Profile
 
 
 def _fields(n):

@@ -5,9 +5,9 @@ from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 
 import pytest
 
-import shooting
+from pocket import shooting
+from pocket.apps.sweep import COLUMNS, run_sweep
 from pocket.cli import main
-from pocket.sweep import COLUMNS, run_sweep
 
 ALPHAS, PRESSURES, FORCES = [0.2, 47 / 160], [0.1, 0.31], [0.0, 0.2, 1.0, 15.0]  # 15: out of range at 0.31
 ARGV = ["--alpha", "0.2", "47/160", "--pressure", "0.1", "0.31", "--force", "0", "0.2", "1", "15"]

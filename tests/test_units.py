@@ -2,8 +2,8 @@
 
 import pytest
 
-from pocket.errors import InputError
-from pocket.units import positive, quantity
+from pocket.core.errors import InputError
+from pocket.core.units import positive, quantity
 
 
 @pytest.mark.parametrize(

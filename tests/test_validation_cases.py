@@ -3,9 +3,9 @@
 import math
 
 import pytest
+from pocket.validation.suite import load
 
-from pocket.errors import InputError
-from validation.cases import load
+from pocket.core.errors import InputError
 
 
 def test_cases_load_and_cover_the_paper():
@@ -27,9 +27,9 @@ def test_dimensionless_numbers():
     alpha = C2/C1, E = 6 (1 + alpha) C1, Phat_I = P_I R / (E T)."""
     import tomllib
 
-    from validation.cases import CASES_FILE
+    from pocket.validation.suite import CASES_FILE
 
-    def si(text):  # the file's three units, by hand: an independent reading of pocket.units'
+    def si(text):  # the file's three units, by hand: an independent reading of pocket.core.units'
         number, unit = text.split()
         return float(number) * {"mm": 1e-3, "kPa": 1e3, "N": 1.0}[unit]
 
@@ -65,7 +65,7 @@ def test_design_rules():
 ])
 def test_bad_case_files_are_refused(tmp_path, edit, bad, named):
     """Exact answer: a one-line InputError naming the key, before any solve."""
-    from validation.cases import CASES_FILE
+    from pocket.validation.suite import CASES_FILE
 
     text = CASES_FILE.read_text()
     assert edit in text

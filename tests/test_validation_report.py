@@ -7,9 +7,9 @@ import pathlib
 import meshio
 import numpy as np
 import pytest
+from pocket.validation.convergence import observed_order, richardson
 
 from pocket.cli import main
-from validation.convergence import observed_order, richardson
 
 
 @pytest.fixture(scope="module")

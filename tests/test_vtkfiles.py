@@ -15,9 +15,9 @@ import meshio
 import numpy as np
 import pytest
 
-from pocket import vtkfiles
-from pocket.errors import InputError
-from pocket.states import CompressedState, InflatedState, Profile
+from pocket.apps import vtkfiles
+from pocket.core.errors import InputError
+from pocket.core.states import CompressedState, InflatedState, Profile
 
 NAMES = {"lambda_1", "lambda_2", "lambda_3", "T_1", "T_2", "contact", "displacement", "r"}
 

@@ -16,11 +16,11 @@ import time
 import numpy as np
 
 from pocket import analytical
-from pocket.errors import OutOfRangeError
-from pocket.states import CompressedState
+from pocket.core.errors import OutOfRangeError
+from pocket.core.states import CompressedState
 
-from .cases import Case
 from .plan import RANGE_FRACTION, Plan
+from .suite import Case
 
 __all__ = ["Curves", "FemCurve", "reference", "fem_curve", "fem_forces", "range_end", "force_grid",
            "DESIGN_FORCES"]
@@ -58,8 +58,8 @@ class FemCurve:
 
 def range_end(alpha: float, pressure: float, *, rtol: float = 1e-3) -> float:
     """The end of the shooting model's range in Fhat, to relative ``rtol`` (a lower bound)."""
-    import shooting
-    from pocket.inverse import range_end as model_range_end
+    from pocket import shooting
+    from pocket.apps.inverse import range_end as model_range_end
 
     return model_range_end(shooting, alpha, pressure, rtol=rtol)
 
@@ -90,7 +90,7 @@ def _analytical(alpha, pressure, forces):
 
 def reference(case: Case, plan: Plan) -> Curves:
     """Shooting and analytical curves of ``case`` on the plan's grid (plus its FEM forces)."""
-    import shooting
+    from pocket import shooting
 
     start = time.perf_counter()
     alpha, pressure = case.alpha, case.pressure_hat
@@ -104,7 +104,7 @@ def reference(case: Case, plan: Plan) -> Curves:
 
 def fem_curve(case: Case, order: int, forces) -> FemCurve:
     """The FEM compression curve (default mesh, element ``order``) at ``forces``."""
-    import fem
+    from pocket import fem
 
     start = time.perf_counter()
     states = fem.compression_curve(case.alpha, case.pressure_hat, list(forces), order=order)

@@ -23,7 +23,7 @@ import time
 
 import numpy as np
 
-from .cases import Case
+from .suite import Case
 
 __all__ = ["Sequence", "FORCE", "QUANTITIES", "sequence", "observed_order", "richardson"]
 
@@ -52,9 +52,7 @@ class Sequence:
 
 def sequence(case: Case, study: str, order: int, mesh: str, counts) -> Sequence:
     """Solve ``study`` of ``case`` with FEM order ``order`` on ``mesh`` meshes of ``counts`` base elements."""
-    import fem
-    import meshes
-    import shooting
+    from pocket import fem, meshes, shooting
 
     start = time.perf_counter()
     alpha, pressure = case.alpha, case.pressure_hat
@@ -112,7 +110,7 @@ RICHARDSON_FACTOR = 3.0
 
 def checks(sequences) -> list:
     """Observed orders against theory, and Richardson extrapolation against shooting, as checks."""
-    from .checks import Check
+    from .verdicts import Check
 
     rows = []
     for seq in sequences:
@@ -138,7 +136,7 @@ def checks(sequences) -> list:
 
 
 def _richardson_row(seq, quantity, label, where):
-    from .checks import Check
+    from .verdicts import Check
 
     ref = seq.reference[quantity]
     result = richardson(seq.sizes, seq.values[quantity])

@@ -64,7 +64,7 @@ def eq9_residuals(inflated) -> dict:
 
 
 def _pole_ratios() -> dict:
-    import shooting
+    from pocket import shooting
 
     out = {}
     for alpha in POLE_ALPHAS:
@@ -74,8 +74,9 @@ def _pole_ratios() -> dict:
 
 
 def _small_strain(alpha) -> dict:
-    import shooting
-    from shooting.inflation import pressure_of_stretch
+    from pocket.shooting.inflation import pressure_of_stretch
+
+    from pocket import shooting
 
     phat = pressure_of_stretch(1.0 + STRAIN_LIMIT, alpha) / (3.0 * (1.0 + alpha))
     full, model = shooting.inflate(alpha, phat), analytical.inflate(alpha, phat)
@@ -85,7 +86,7 @@ def _small_strain(alpha) -> dict:
 
 def _button(alpha, phat, force, target) -> dict:
     """H0/R, H/H0 at ``force`` and the force (and coefficient 1/force) where H/H0 = ``target``."""
-    import shooting
+    from pocket import shooting
 
     state = shooting.compress(alpha, phat, force)
     at = brentq(lambda f: shooting.compress(alpha, phat, f).height_ratio - target, 1e-3, 1.0, xtol=1e-6)
@@ -95,7 +96,7 @@ def _button(alpha, phat, force, target) -> dict:
 
 def collect(design) -> Evidence:
     """Compute the evidence for ``design`` (a ``cases.Design``)."""
-    import shooting
+    from pocket import shooting
 
     alpha, force, target = design.alpha, 1.0 / design.pressure_coefficient, design.height_ratio
     h0 = design.height / design.radius

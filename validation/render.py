@@ -1,6 +1,6 @@
 """A 3-D picture of the pocket, inflated and compressed (pyvista offscreen, optional).
 
-The surfaces are ``pocket.vtkfiles.surface_mesh`` of the states (the meridian
+The surfaces are ``pocket.apps.vtkfiles.surface_mesh`` of the states (the meridian
 revolved about the axis), coloured by the meridional stretch lambda_1; the
 compressed pocket is shown with its plate. Returns None, with the reason, when
 pyvista (the ``render`` extra) is not installed or cannot render here.
@@ -22,8 +22,8 @@ def render_pocket(inflated, compressed, path) -> tuple[pathlib.Path | None, str]
     try:
         import pyvista
     except ImportError:
-        return None, "pyvista is not installed (pip install 'pocket[render]'): no 3-D picture"
-    from pocket.vtkfiles import surface_mesh
+        return None, "pyvista is not installed (pip install 'pocket-mechanics[render]'): no 3-D picture"
+    from pocket.apps.vtkfiles import surface_mesh
 
     pyvista.OFF_SCREEN = True
     try:

@@ -11,12 +11,12 @@ import csv
 import dataclasses
 import pathlib
 
-from pocket.errors import InputError
-from pocket.folders import staged
+from pocket.apps.folders import staged
+from pocket.core.errors import InputError
 
-from . import checks as checks_module
 from . import document, draw, figures, render, sections
-from .run import headline
+from . import verdicts as checks_module
+from .runner import headline
 
 __all__ = ["write_report", "check_target"]
 
@@ -71,7 +71,7 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
 def _write_vtk(results, directory: pathlib.Path) -> str | None:
     if not results.curves:
         return None
-    from pocket.vtkfiles import write_series
+    from pocket.apps.vtkfiles import write_series
 
     curves = results.curves[results.cases.index(headline(results.cases))]
     write_series(directory / "vtk", curves.shooting, times=curves.forces)

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import math
 
-from pocket.provenance import environment
+from pocket.apps.provenance import environment
 
-from .checks import TOLERANCES, summary
 from .convergence import EXPECTED, REFINED_P2_FINEST, RICHARDSON_FACTOR, richardson
-from .run import WORKERS, headline
+from .runner import WORKERS, headline
+from .verdicts import TOLERANCES, summary
 
 __all__ = ["blocks", "case_table", "sequence_rows", "counts"]
 
@@ -145,7 +145,7 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
     if results.findings:
         out += _findings_blocks(results)
     out += [("h", 2, "Provenance"),
-            ("p", "The software and machine of this run (pocket.provenance)."),
+            ("p", "The software and machine of this run (pocket.apps.provenance)."),
             ("table", ["", "version"], [[k, v] for k, v in environment().items()]),
             ("h", 2, "Tolerances"),
             ("list", [f"{name}: {tol}: {why}" for name, (tol, why) in TOLERANCES.items()]),

@@ -22,7 +22,7 @@ its parser, and every ``pocket`` command would otherwise pay for it.
 
 from __future__ import annotations
 
-from .errors import OutOfRangeError
+from pocket.core.errors import OutOfRangeError
 
 __all__ = ["pressure_for_height", "force_where", "range_end"]
 
@@ -57,7 +57,7 @@ def pressure_for_height(solver, alpha, height, **options) -> float:
 
     from scipy.optimize import brentq
 
-    from .analytical import height_constant
+    from pocket.core.smallstrain import height_constant
 
     def miss(p):
         return solver.inflate(alpha, p, **options).height - height if p > 0.0 else -height

@@ -1,4 +1,4 @@
-"""The ``pocket validate`` and ``pocket converge`` subcommands (registered by ``pocket.cli``).
+"""``pocket validate`` and ``pocket converge``: the validation suite and its report (``pocket.validation``).
 
     pocket validate [--out DIR] [--quick] [--cases FILE]
     pocket converge [--out DIR] [--quick] [--cases FILE]
@@ -15,23 +15,26 @@ from concurrent.futures import ProcessPoolExecutor
 
 __all__ = ["register"]
 
+EXIT_CODES_VALIDATE = ("exit status: 0 every verdict passes; 1 a verdict fails, a solver failed or the report "
+                       "could not be written; 2 bad input (one line on stderr, nothing written)")
+
 
 def register(subparsers) -> None:
     """Add the ``validate`` and ``converge`` parsers."""
     for name, handler, text, out in (
             ("validate", _validate, "run the validation suite and write the report", "validation-report"),
             ("converge", _converge, "mesh-convergence study of the FE model against shooting", "convergence-report")):
-        p = subparsers.add_parser(name, help=text, description=text)
+        p = subparsers.add_parser(name, help=text, description=text, epilog=EXIT_CODES_VALIDATE)
         p.add_argument("--out", default=out, help=f"report folder (default: {out}); a previous report is replaced")
         p.add_argument("--quick", action="store_true", help="fewer cases, forces and meshes (CI, under 30 s)")
-        p.add_argument("--cases", help="cases file (default: validation/cases.toml)")
+        p.add_argument("--cases", help="cases file (default: the built-in cases of the suite)")
         p.set_defaults(handler=handler)
 
 
 def _setup(args):
-    from .cases import CASES_FILE, load
-    from .plan import DEFAULT, QUICK
-    from .report import check_target
+    from pocket.validation.plan import DEFAULT, QUICK
+    from pocket.validation.report import check_target
+    from pocket.validation.suite import CASES_FILE, load
 
     check_target(args.out)
     cases, design = load(args.cases or CASES_FILE)
@@ -39,8 +42,8 @@ def _setup(args):
 
 
 def _finish(results, out, start, pool) -> int:
-    from .report import write_report
-    from .sections import counts
+    from pocket.validation.report import write_report
+    from pocket.validation.sections import counts
 
     path = write_report(results, out, executor=pool)
     n = counts(results)
@@ -56,7 +59,7 @@ def _finish(results, out, start, pool) -> int:
 
 
 def _validate(args) -> int:
-    from .run import WORKERS, run
+    from pocket.validation.runner import WORKERS, run
 
     start = time.perf_counter()
     cases, design, plan = _setup(args)
@@ -66,7 +69,7 @@ def _validate(args) -> int:
 
 
 def _converge(args) -> int:
-    from .run import WORKERS, run
+    from pocket.validation.runner import WORKERS, run
 
     start = time.perf_counter()
     cases, design, plan = _setup(args)
@@ -77,7 +80,7 @@ def _converge(args) -> int:
 
 
 def _print_orders(results) -> None:
-    from .convergence import richardson
+    from pocket.validation.convergence import richardson
 
     for check in results.checks:
         if check.step == "order":

@@ -1,6 +1,6 @@
 """VTK files of solved states for ParaView: the profile, the surface, a load path.
 
-Any state with a ``profile`` (``pocket.states.InflatedState`` or
+Any state with a ``profile`` (``pocket.core.states.InflatedState`` or
 ``CompressedState``) can be written; the files hold dimensionless lengths (R).
 
 Axes. z is the height eta, up; the sheet is clamped on the circle of radius 1
@@ -55,7 +55,8 @@ from xml.sax.saxutils import quoteattr
 import meshio
 import numpy as np
 
-from .errors import InputError
+from pocket.core.errors import InputError
+
 from .folders import staged
 
 __all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series"]

@@ -1,7 +1,7 @@
 """Validation cases as data: ``cases.toml`` in physical units, dimensionless form derived.
 
 Physical values are strings with units (``thickness = "0.25 mm"``, ``c1 =
-"160 kPa"``), or plain numbers in SI, converted by ``pocket.units`` (the one
+"160 kPa"``), or plain numbers in SI, converted by ``pocket.core.units`` (the one
 place units are handled); ``_KINDS`` names each key's kind. From the SI
 values, with the paper's definitions (eqs (1), (10)):
 
@@ -18,14 +18,14 @@ import math
 import pathlib
 import tomllib
 
-from pocket.errors import InputError
-from pocket.units import quantity
+from pocket.core.errors import InputError
+from pocket.core.units import quantity
 
 __all__ = ["Case", "Design", "load", "CASES_FILE"]
 
 CASES_FILE = pathlib.Path(__file__).with_name("cases.toml")
 
-#: physical key -> its kind in pocket.units
+#: physical key -> its kind in pocket.core.units
 _KINDS = {
     "thickness": "length",
     "radius": "length",

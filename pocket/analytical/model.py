@@ -33,18 +33,14 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from .checks import check_alpha, check_force, check_positive
-from .errors import InputError, OutOfRangeError
-from .states import CompressedState, InflatedState, Profile
+from pocket.core import smallstrain
+from pocket.core.errors import InputError, OutOfRangeError
+from pocket.core.inputs import check_alpha, check_force, check_positive
+from pocket.core.states import CompressedState, InflatedState, Profile
 
-__all__ = ["inflate", "compress", "compression_curve", "shape_function", "height_constant"]
+__all__ = ["inflate", "compress", "compression_curve", "shape_function"]
 
 _N = 201  # profile points
-
-
-def height_constant() -> float:
-    """H0/R / Phat^(1/3) of the model: sqrt(3/2) (4 sqrt 6)^(-1/3) (eqs (16a) + corrected (18))."""
-    return np.sqrt(1.5) * (4.0 * np.sqrt(6.0)) ** (-1.0 / 3.0)
 
 
 def _antiderivative(t, a):
@@ -84,7 +80,7 @@ def inflate(alpha, pressure) -> InflatedState:
     """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``."""
     alpha = check_alpha(alpha)
     pressure = check_positive("pressure", pressure)
-    s = (pressure / (4.0 * np.sqrt(6.0))) ** (2.0 / 3.0)
+    s = smallstrain.pole_strain(pressure)
     r = np.linspace(0.0, 1.0, _N)
     l2 = 1.0 + s - s * r * r
     profile = _profile(r, l2 * r, np.sqrt(1.5 * s) * (1.0 - r * r), np.full_like(r, 1.0 + s), l2,

@@ -24,15 +24,16 @@ import io
 import itertools
 import pathlib
 import sys
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import as_completed
 
-from .checks import check_alpha, check_force, check_positive
-from .errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.inputs import check_alpha, check_force, check_positive
+from pocket.core.states import CompressedState
+
 from .folders import write_whole
 from .solvers import SOLVERS, get_solver
-from .states import CompressedState
 
-__all__ = ["COLUMNS", "solve_point", "run_sweep", "register"]
+__all__ = ["COLUMNS", "solve_point", "run_sweep"]
 
 COLUMNS = (*CompressedState.KEYS, "solver", "status", "message")
 _PARAMETERS = ("alpha", "pressure_initial", "force")
@@ -121,48 +122,3 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     writer.writerows(ordered)
     write_whole(path, text.getvalue())
     return len(todo), len(grid) - len(todo)
-
-
-def _executor(args):
-    """(executor, client): local processes, or a dask.distributed cluster's executor and its client."""
-    if args.scheduler is None:
-        return ProcessPoolExecutor(max_workers=args.workers), None
-    if args.workers is not None:
-        raise InputError("--workers applies to local processes, not to --scheduler")
-    try:
-        from dask.distributed import Client
-    except ImportError:
-        raise InputError("--scheduler needs dask.distributed: pip install 'pocket[sweep]'") from None
-    try:
-        client = Client(args.scheduler, timeout="10s")
-    except OSError as err:
-        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({err})") from None
-    return client.get_executor(), client
-
-
-def _main(args) -> int:
-    executor, client = _executor(args)
-    try:
-        computed, reused = run_sweep(args.out, args.alpha, args.pressure, args.force, executor,
-                                     solver=args.solver)
-    finally:
-        executor.shutdown()
-        if client is not None:
-            client.close()
-    print(f"sweep: {computed} points computed, {reused} reused; wrote {args.out}")
-    return 0
-
-
-def register(subparsers) -> None:
-    """Add ``pocket sweep``."""
-    from .cli import number
-
-    p = subparsers.add_parser("sweep", help="parameter sweep over alpha, Phat_I, Fhat (parallel, resumable)")
-    p.add_argument("--alpha", type=number, nargs="+", required=True, help="values of C2/C1")
-    p.add_argument("--pressure", type=number, nargs="+", required=True, help="values of Phat_I = P_I R/(E T)")
-    p.add_argument("--force", type=number, nargs="+", required=True, help="values of Fhat = F/(P_I pi R^2)")
-    p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
-    p.add_argument("--solver", choices=sorted(SOLVERS), default="shooting")
-    p.add_argument("--workers", type=int, help="local worker processes (default: one per core)")
-    p.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
-    p.set_defaults(handler=_main)

@@ -15,11 +15,11 @@ import dataclasses
 import sys
 import time
 
-from pocket.provenance import cpus
+from pocket.apps.provenance import cpus
 
-from . import checks, compute, convergence, evidence, findings
-from .cases import Case, Design
+from . import compute, convergence, evidence, findings, verdicts
 from .plan import Plan
+from .suite import Case, Design
 
 __all__ = ["Results", "run", "convergence_tasks", "headline"]
 
@@ -35,7 +35,7 @@ class Results:
     fem: tuple  # compute.FemCurve, in case order then element order
     sequences: tuple  # convergence.Sequence
     evidence: evidence.Evidence | None
-    checks: tuple  # checks.Check
+    checks: tuple  # verdicts.Check
     findings: tuple  # findings.Finding
     seconds: float
 
@@ -131,9 +131,9 @@ def run(cases, design, plan: Plan, *, executor=None, progress=True, convergence_
     sequences = tuple(done["sequence"][k] for k in sorted(done["sequence"]))
     rows = []
     for curve in curves:
-        rows += checks.reference_checks(curve) + checks.analytical_checks(curve)
+        rows += verdicts.reference_checks(curve) + verdicts.analytical_checks(curve)
     for fem in fems:
-        rows += checks.fem_checks(curves[cases.index(fem.case)], fem)
+        rows += verdicts.fem_checks(curves[cases.index(fem.case)], fem)
     rows += convergence.checks(sequences)
     found = ()
     proof = done["evidence"].get(None)

@@ -1,8 +1,13 @@
 """The vocabulary every solver returns: profiles, inflated and compressed states.
 
-All quantities are dimensionless (``../shared/DESIGN.md``): lengths in units of
-the clamp radius R, pressures as Phat = P R / (E T), tensions (membrane stress
-resultants) in units of E T, volumes in R^3, force as Fhat = F / (P_I pi R^2).
+All quantities are dimensionless: lengths in units of the clamp radius R,
+pressures as Phat = P R / (E T) (E = 6 (C1 + C2) the small-strain Young's
+modulus, T the sheet thickness), tensions (membrane stress resultants) in units
+of E T, volumes in R^3, force as Fhat = F / (P_I pi R^2).
+
+A state echoes its inputs exactly: ``alpha``, ``pressure`` of an inflation,
+``pressure_initial`` and ``force`` of a compression are the numbers the caller
+gave, never recomputed ones.
 Solvers share these containers and nothing else, so that a bug in one cannot
 hide from the cross-check with another.
 """
@@ -63,7 +68,7 @@ class InflatedState:
     """Step 1: the sheet inflated at pressure ``pressure`` (Phat).
 
     ``extra`` holds solver-specific diagnostics (mesh size, iterations, ...);
-    ``scalars()`` returns the DESIGN.md keys followed by those.
+    ``scalars()`` returns the reported keys (``KEYS``) followed by those.
     """
 
     alpha: float

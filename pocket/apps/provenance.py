@@ -14,6 +14,9 @@ from importlib import metadata
 
 __all__ = ["version", "cpus", "environment"]
 
+#: the name pocket is installed under (the import name is pocket)
+DISTRIBUTION = "pocket-mechanics"
+
 #: distributions whose versions change the numbers or the files
 LIBRARIES = ("numpy", "scipy", "numba", "scikit-fem", "meshio", "matplotlib", "pint", "pyvista")
 
@@ -21,7 +24,7 @@ LIBRARIES = ("numpy", "scipy", "numba", "scikit-fem", "meshio", "matplotlib", "p
 def version() -> str:
     """pocket's installed version (``0+unknown`` when run from a source tree not installed)."""
     try:
-        return metadata.version("pocket")
+        return metadata.version(DISTRIBUTION)
     except metadata.PackageNotFoundError:
         return "0+unknown"
 

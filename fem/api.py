@@ -1,6 +1,6 @@
 """Public entry points: inflate, compress, and the states they return.
 
-Reported quantities (DESIGN.md keys) from a converged state:
+Reported quantities (the keys of ``pocket.core.states``) from a converged state:
 
 - ``height``: eta at the pole, the sheet's own height (with a pure penalty the
   sheet sits about p_N/kappa above the plate; the sheet is what is measured).
@@ -23,12 +23,16 @@ Reported quantities (DESIGN.md keys) from a converged state:
 
 from __future__ import annotations
 
+import pathlib
+
 import numpy as np
 
-import meshes
-from pocket.states import CompressedState, InflatedState
+from pocket import meshes
+from pocket.core.errors import InputError
+from pocket.core.inputs import check_alpha, check_non_negative, check_positive
+from pocket.core.states import CompressedState, InflatedState
 
-from . import checks, inflation, post
+from . import DEFAULT_ELEMENTS, SOLVER, inflation, post
 from .compression import augment, force_path, press_to_force, press_to_height
 from .model import Control, Model, discretize, penetration
 from .newton import Tolerances
@@ -42,7 +46,6 @@ __all__ = [
     "default_mesh",
 ]
 
-DEFAULT_ELEMENTS = 1000
 DEFAULT_PENALTY = 1e5
 
 
@@ -56,12 +59,23 @@ def default_mesh() -> np.ndarray:
     return meshes.uniform(DEFAULT_ELEMENTS)
 
 
-def _model(alpha, mesh, order, penalty) -> Model:
-    alpha = checks.alpha(alpha)
-    order = checks.order(order)
-    penalty = checks.positive("penalty", penalty)
-    nodes = checks.mesh(default_mesh() if mesh is None else mesh)
-    return discretize(alpha, nodes, order, penalty)
+def _nodes(mesh, elements) -> np.ndarray:
+    """The mesh nodes: ``mesh`` (an array of nodes or a mesh file), or a uniform mesh of ``elements``."""
+    if mesh is not None and elements is not None:
+        raise InputError("give either mesh or elements, not both")
+    if mesh is None:
+        count = DEFAULT_ELEMENTS if elements is None else SOLVER.option("elements").checked(elements)
+        return meshes.uniform(count)
+    nodes = meshes.read(mesh) if isinstance(mesh, (str, pathlib.PurePath)) else meshes.check(mesh, "mesh")
+    SOLVER.option("elements").checked(nodes.size - 1, lambda _: "mesh elements")
+    return nodes
+
+
+def _model(alpha, mesh, elements, order, penalty) -> Model:
+    alpha = check_alpha(alpha)
+    order = SOLVER.option("order").checked(order)
+    penalty = check_positive("penalty", penalty)
+    return discretize(alpha, _nodes(mesh, elements), order, penalty)
 
 
 def _extra(model, y, iterations) -> dict:
@@ -151,29 +165,44 @@ def _uncompressed(inflated: InflatedState) -> CompressedState:
     )
 
 
-def inflate(alpha, pressure, *, mesh=None, order=2, tol=1e-10) -> InflatedState:
-    """Inflated state at Phat = ``pressure`` (first branch), by pressure control."""
-    model = _model(alpha, mesh, order, DEFAULT_PENALTY)
-    pressure = checks.positive("Phat", pressure)
+def inflate(alpha, pressure, *, mesh=None, elements=None, order=2, tol=1e-10) -> InflatedState:
+    """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
+
+    mesh: nodes of [0, 1] (array, shape (n+1,)) or a mesh file; else a uniform mesh of
+    ``elements`` (default ``DEFAULT_ELEMENTS``). order: 1 or 2. tol: Newton tolerance.
+    """
+    model = _model(alpha, mesh, elements, order, DEFAULT_PENALTY)
+    pressure = check_positive("pressure", pressure)
+    tol = SOLVER.option("tol").checked(tol)
     y, iterations = inflation.to_pressure(model, pressure, model.zero_multiplier(), Tolerances(tol, tol))
     return _inflated(model, y, iterations)
 
 
-def inflate_volume(alpha, volume, *, mesh=None, order=2, tol=1e-10) -> InflatedState:
-    """Inflated state of volume V/R^3 = ``volume``, by volume control."""
-    model = _model(alpha, mesh, order, DEFAULT_PENALTY)
-    volume = checks.positive("volume", volume)
+def inflate_volume(alpha, volume, *, mesh=None, elements=None, order=2, tol=1e-10) -> InflatedState:
+    """Inflated state of volume V/R^3 = ``volume``, by volume control (options as ``inflate``)."""
+    model = _model(alpha, mesh, elements, order, DEFAULT_PENALTY)
+    volume = check_positive("volume", volume)
+    tol = SOLVER.option("tol").checked(tol)
     y, iterations = inflation.to_volume(model, volume, model.zero_multiplier(), Tolerances(tol, tol))
     return _inflated(model, y, iterations)
 
 
 def compression_curve(
-    alpha, pressure_initial, forces, *, mesh=None, order=2, penalty=DEFAULT_PENALTY, augmented=True, tol=1e-10
+    alpha, pressure_initial, forces, *, mesh=None, elements=None, order=2, penalty=DEFAULT_PENALTY, augmented=True,
+    tol=1e-10
 ) -> list[CompressedState]:
-    """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the last."""
-    model = _model(alpha, mesh, order, penalty)
-    p_i = checks.positive("Phat_I", pressure_initial)
-    forces = [checks.non_negative("force", f) for f in np.atleast_1d(forces)]
+    """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the last.
+
+    Options as ``inflate``, and the contact ``penalty`` (units E T / R^2) with ``augmented``
+    Lagrangian updates.
+    """
+    model = _model(alpha, mesh, elements, order, penalty)
+    p_i = check_positive("pressure_initial", pressure_initial)
+    tol = SOLVER.option("tol").checked(tol)
+    augmented = SOLVER.option("augmented").checked(augmented)
+    forces = [check_non_negative("force", f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
+    if not forces:
+        raise InputError("no force given")
     tol = Tolerances(tol, tol)
     lam = model.zero_multiplier()
     y_i, iterations = inflation.to_pressure(model, p_i, lam, tol)
@@ -202,12 +231,14 @@ def compress(alpha, pressure_initial, force, **options) -> CompressedState:
 
 
 def compress_height(
-    alpha, pressure_initial, height, *, mesh=None, order=2, penalty=DEFAULT_PENALTY, augmented=True, tol=1e-10
+    alpha, pressure_initial, height, *, mesh=None, elements=None, order=2, penalty=DEFAULT_PENALTY, augmented=True,
+    tol=1e-10
 ) -> CompressedState:
     """Compressed state with the plate at height H/R = ``height`` (plate-height control)."""
-    model = _model(alpha, mesh, order, penalty)
-    p_i = checks.positive("Phat_I", pressure_initial)
-    height = checks.positive("height", height)
+    model = _model(alpha, mesh, elements, order, penalty)
+    p_i = check_positive("pressure_initial", pressure_initial)
+    height = check_positive("height", height)
+    tol = SOLVER.option("tol").checked(tol)
     tol = Tolerances(tol, tol)
     lam = model.zero_multiplier()
     y_i, iterations = inflation.to_pressure(model, p_i, lam, tol)

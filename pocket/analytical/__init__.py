@@ -1,0 +1,25 @@
+"""The paper's small-strain analytical model (its section 3), corrected: the approximate third column.
+
+``inflate``, ``compress`` and ``compression_curve`` return ``pocket.core.states``
+containers; the model and its corrections are derived in
+``pocket.analytical.model``. ``SOLVER`` is its record (it takes no options).
+"""
+
+import importlib
+
+from pocket.core.solver import Solver
+
+__all__ = ["SOLVER", "inflate", "compress", "compression_curve", "shape_function"]
+
+SOLVER = Solver(
+    name="analytical",
+    summary="the paper's small-strain model (approximate; good for lambda - 1 << 1 and small force)",
+    module=__name__,
+    entry_points=("inflate", "compress", "compression_curve"),
+)
+
+
+def __getattr__(name):
+    if name in __all__[1:]:
+        return getattr(importlib.import_module(".model", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

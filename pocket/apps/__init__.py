@@ -1,0 +1,9 @@
+"""Applications on top of the solvers, in physical units and for users' tasks.
+
+``cases`` (case files), ``physical`` (a case resolved to the dimensionless
+model and back to SI), ``inverse`` (the load that gives a target value),
+``casefile`` (``pocket run``), ``design`` (soft buttons), ``sense`` (force from
+pressure), ``sweep`` (parameter grids on any executor), ``slopes``, ``vtkfiles``
+(ParaView output), ``folders`` (outputs written whole or not at all),
+``provenance`` and ``solvers`` (the solvers by name).
+"""

@@ -1,0 +1,51 @@
+"""Solve a case file and write its results as JSON and CSV (``pocket run``).
+
+The case (``pocket.apps.cases``) is resolved to the dimensionless model
+(``pocket.apps.physical``), inflated and compressed at each load by its solver, and
+written as ``DIR/<stem>.json`` (the case in SI, the inflated state, the
+compressed states, and the provenance: pocket's and its libraries' versions)
+and ``DIR/<stem>.csv`` (one row per load). Each row holds
+the SI values (``force_N``, ``pressure_Pa``, ``pressure_rise_Pa``,
+``contact_area_m2``, ``contact_radius_m``, ``height_m``, ``travel_m`` = H0 - H,
+``volume_m3``) followed by the dimensionless keys of ``CompressedState.KEYS``.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import pathlib
+
+from .cases import Case
+from .folders import write_whole
+from .physical import compressed_row, forces, inflated_row, resolve
+from .provenance import environment
+
+__all__ = ["solve", "write"]
+
+
+def solve(case: Case) -> dict:
+    """The case solved: {"case": SI inputs, "inflated": row, "states": [rows], "provenance": {...}}
+    (JSON-ready)."""
+    pocket = resolve(case)
+    loads = forces(pocket)
+    states = pocket.solver().compression_curve(pocket.alpha, pocket.pressure_initial, loads,
+                                               **pocket.options())
+    return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
+            "states": [compressed_row(pocket, s) for s in states], "provenance": environment()}
+
+
+def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
+    """Write ``stem.json`` and ``stem.csv`` into ``directory``; returns their paths."""
+    directory = pathlib.Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    json_path, csv_path = directory / f"{stem}.json", directory / f"{stem}.csv"
+    fields = list(dict.fromkeys(k for row in result["states"] for k in row))
+    text = io.StringIO(newline="")
+    writer = csv.DictWriter(text, fields, restval="")
+    writer.writeheader()
+    writer.writerows(result["states"])
+    write_whole(json_path, json.dumps(result, indent=2) + "\n")
+    write_whole(csv_path, text.getvalue())
+    return json_path, csv_path

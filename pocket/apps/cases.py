@@ -1,0 +1,281 @@
+"""Case files: one pocket and its loads, in physical units (TOML).
+
+    name = "sample 1"                    # optional
+    label = "sample 1 at 4.8 kPa"        # optional, a longer description (reports)
+    tags = ["headline"]                  # optional labels (the validation suite uses them)
+    [sheet]
+    thickness = "0.25 mm"
+    c1 = "160 kPa"                       # either c1 and c2 ...
+    c2 = "47 kPa"
+    # modulus = "1.242 MPa"              # ... or modulus E = 6 (1 + alpha) C1 and alpha = C2/C1
+    # alpha = 0.29375
+    [clamp]
+    radius = "20 mm"
+    [initial]                            # exactly one of
+    pressure = "4.8 kPa"                 # P_I, or height = "10 mm" (H0), or volume = "2 mL"
+    [loads]                              # exactly one of
+    forces = ["0 N", "0.5 N", "1 N"]     # plate forces F, or heights = ["9 mm", "8 mm"] (plate heights H)
+    [solver]                             # optional, default shooting
+    name = "shooting"                    # or "fem" or "analytical", with that solver's options:
+                                         # rtol (shooting); elements, mesh, order, penalty, augmented, tol (fem)
+
+The solver options and their checks come from the solver's record
+(``pocket.core.solver``), the same that the command line's flags come from.
+
+Values carry units (``pocket.core.units``); plain numbers are SI. Every problem
+(unknown, missing or misplaced keys, wrong dimensions, impossible or absurd
+values, a file that is not UTF-8 TOML, more than ``MAX_LOADS`` loads or a file
+over ``MAX_BYTES``) is a one-line ``InputError`` naming the key, raised before
+any solver runs: the work a case can ask for is bounded.
+
+A ``Case`` keeps the values as the user wrote them (``given``), so that results
+quote ``"0.2 N"``, not 0.19999999999999998, and errors quote the user's value
+and unit.
+
+The four silicone samples of the paper's Table 1 are built in (``sample(n)``):
+T = 0.25, 0.5, 0.8, 1.6 mm, C1 = 160 kPa, C2 = 47 kPa, R = 20 mm, at
+P_I = 4.81275 kPa, inside Table 1's 2-5 kPa and the pressure of the paper's
+figure 2 for sample 1 (Phat_I = 0.31).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import pathlib
+import tomllib
+
+from pocket.core.errors import InputError
+from pocket.core.inputs import check_alpha
+from pocket.core.units import positive, quantity
+
+from .solvers import SOLVERS, record
+
+__all__ = ["Case", "SAMPLES", "MAX_LOADS", "MAX_BYTES", "load", "parse", "sample"]
+
+#: most loads a case may list, and largest case file read: bounds on the work a case can ask for
+MAX_LOADS = 10_000
+MAX_BYTES = 1_000_000
+
+_SECTIONS = {"name": None, "label": None, "tags": None,
+             "sheet": ("thickness", "c1", "c2", "modulus", "alpha"), "clamp": ("radius",),
+             "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"),
+             "solver": ("name", *dict.fromkeys(o.name for s in SOLVERS.values() for o in s.options))}
+
+
+@dataclasses.dataclass(frozen=True)
+class Case:
+    """A pocket in SI units: sheet, clamp, initial state and loads, with the solver to use.
+
+    ``initial`` is ``("pressure", P_I)``, ``("height", H0)`` or ``("volume", V)``;
+    ``load_kind`` is ``"forces"`` (F in N) or ``"heights"`` (plate height H in m), or ``""``
+    for a case without loads (the validation suite chooses its own). ``given`` maps each
+    physical key (``"sheet.thickness"``, ``"loads.forces[0]"``) to the value as written.
+    """
+
+    name: str
+    thickness: float
+    c1: float
+    c2: float
+    radius: float
+    initial: tuple[str, float]
+    load_kind: str = ""
+    loads: tuple[float, ...] = ()
+    solver: str = "shooting"
+    options: tuple[tuple[str, object], ...] = ()
+    label: str = ""
+    tags: tuple[str, ...] = ()
+    given: tuple[tuple[str, object], ...] = ()
+
+    @property
+    def alpha(self) -> float:
+        """C2 / C1."""
+        return self.c2 / self.c1
+
+    @property
+    def modulus(self) -> float:
+        """E = 6 (1 + alpha) C1 = 6 (C1 + C2), Pa."""
+        return 6.0 * (self.c1 + self.c2)
+
+    def as_given(self, key: str):
+        """The value of the physical ``key`` as the user wrote it (else None)."""
+        return dict(self.given).get(key)
+
+    def fields(self) -> dict:
+        """The case as a flat JSON-ready dict: SI values, then the inputs as given."""
+        return {"name": self.name, "thickness_m": self.thickness, "c1_Pa": self.c1, "c2_Pa": self.c2,
+                "modulus_Pa": self.modulus, "alpha": self.alpha, "radius_m": self.radius,
+                f"initial_{self.initial[0]}": self.initial[1], "load_kind": self.load_kind,
+                "loads": list(self.loads), "solver": self.solver, **dict(self.options),
+                "given": dict(self.given)}
+
+
+def _table(data, section, where) -> dict:
+    if section not in data:
+        raise InputError(f"{where}: missing key '{section}'")
+    table = data[section]
+    if not isinstance(table, dict):
+        raise InputError(f"{where}: '{section}' must be a table ([{section}]), got {table!r}")
+    return table
+
+
+def _one_of(table, keys, section, where) -> str:
+    given = [k for k in keys if k in table]
+    if len(given) != 1:
+        names = " or ".join(f"'{section}.{k}'" for k in keys)
+        raise InputError(f"{where}: missing key {names}" if not given else
+                         f"{where}: give one of {names}, not {len(given)}")
+    return given[0]
+
+
+def _need(table, key, section, where):
+    if key not in table:
+        raise InputError(f"{where}: missing key '{section}.{key}'")
+    return table[key]
+
+
+def _sheet(table, where, given) -> tuple[float, float, float]:
+    thickness = positive("sheet.thickness", _need(table, "thickness", "sheet", where), "length")
+    given["sheet.thickness"] = table["thickness"]
+    if "c1" in table or "c2" in table:
+        if "modulus" in table or "alpha" in table:
+            raise InputError(f"{where}: give either sheet.c1 and sheet.c2 or sheet.modulus and sheet.alpha")
+        c1 = positive("sheet.c1", _need(table, "c1", "sheet", where), "pressure")
+        c2 = quantity("sheet.c2", _need(table, "c2", "sheet", where), "pressure")
+        given.update({"sheet.c1": table["c1"], "sheet.c2": table["c2"]})
+        if not c2 / c1 > -1.0:
+            raise InputError(f"sheet.c2 = {table['c2']!r}, but C2/C1 must be > -1")
+        return thickness, c1, c2
+    if "modulus" not in table and "alpha" not in table:
+        raise InputError(f"{where}: missing key 'sheet.c1' (with 'sheet.c2') or 'sheet.modulus' (with 'sheet.alpha')")
+    modulus = positive("sheet.modulus", _need(table, "modulus", "sheet", where), "pressure")
+    alpha = _need(table, "alpha", "sheet", where)
+    given.update({"sheet.modulus": table["modulus"], "sheet.alpha": alpha})
+    if isinstance(alpha, str):
+        raise InputError(f"sheet.alpha = {alpha!r} is not a number (C2/C1 has no unit)")
+    try:
+        alpha = check_alpha(alpha)
+    except InputError as err:
+        raise InputError(f"sheet.{err}") from None
+    c1 = modulus / (6.0 * (1.0 + alpha))
+    return thickness, c1, alpha * c1
+
+
+def _loads(table, where, given) -> tuple[str, tuple[float, ...]]:
+    kind = _one_of(table, ("forces", "heights"), "loads", where)
+    values = table[kind]
+    key = f"loads.{kind}"
+    if not isinstance(values, list) or not values:
+        raise InputError(f"{key} = {values!r}, but it must be a non-empty list")
+    if len(values) > MAX_LOADS:
+        raise InputError(f"{key} has {len(values)} values, but a case takes at most {MAX_LOADS}")
+    unit = "force" if kind == "forces" else "length"
+    out = []
+    for i, value in enumerate(values):
+        si = quantity(f"{key}[{i}]", value, unit)
+        if si < 0.0 or (kind == "heights" and si == 0.0):
+            bound = ">= 0 (the plate pushes)" if kind == "forces" else "> 0 (above the clamp plane)"
+            raise InputError(f"{key}[{i}] = {value!r}, but it must be {bound}")
+        given[f"{key}[{i}]"] = value
+        out.append(si)
+    return kind, tuple(out)
+
+
+def _solver(table, where) -> tuple[str, tuple]:
+    name = table.get("name", "shooting")
+    if not isinstance(name, str) or name not in SOLVERS:
+        raise InputError(f"solver.name = {name!r}, but it must be one of {', '.join(SOLVERS)}")
+    given = {k: v for k, v in table.items() if k != "name"}
+    options = record(name).checked(given, "compress", spell=lambda key: f"solver.{key}")
+    return name, tuple(options.items())
+
+
+def _text(data, key, where) -> str:
+    value = data.get(key, "")
+    if not isinstance(value, str):
+        raise InputError(f"{where}: {key} = {value!r}, but it must be a string")
+    return value
+
+
+def _tags(data, where) -> tuple[str, ...]:
+    value = data.get("tags", [])
+    if not isinstance(value, list) or not all(isinstance(t, str) for t in value):
+        raise InputError(f"{where}: tags = {value!r}, but it must be a list of strings")
+    return tuple(value)
+
+
+def parse(data: dict, where: str = "case", *, require_loads: bool = True) -> Case:
+    """A ``Case`` from the TOML table ``data``; ``where`` names it in error messages.
+
+    Without ``require_loads`` the ``[loads]`` table is optional (a pocket without loads).
+    """
+    if not isinstance(data, dict):
+        raise InputError(f"{where}: a case must be a table, got {data!r}")
+    for section, value in data.items():
+        if section not in _SECTIONS:
+            raise InputError(f"{where}: unknown key '{section}' (known: {', '.join(_SECTIONS)})")
+        keys = _SECTIONS[section]
+        if keys is not None and isinstance(value, dict):
+            for key in value:
+                if key not in keys:
+                    raise InputError(f"{where}: unknown key '{section}.{key}' (known: {', '.join(keys)})")
+    name = _text(data, "name", where) or where
+    given: dict = {}
+    thickness, c1, c2 = _sheet(_table(data, "sheet", where), where, given)
+    clamp = _table(data, "clamp", where)
+    radius = positive("clamp.radius", _need(clamp, "radius", "clamp", where), "length")
+    given["clamp.radius"] = clamp["radius"]
+    initial = _table(data, "initial", where)
+    kind = _one_of(initial, ("pressure", "height", "volume"), "initial", where)
+    value = positive(f"initial.{kind}", initial[kind], {"height": "length"}.get(kind, kind))
+    given[f"initial.{kind}"] = initial[kind]
+    load_kind, loads = "", ()
+    if require_loads or "loads" in data:
+        load_kind, loads = _loads(_table(data, "loads", where), where, given)
+    solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, where)
+    return Case(name=name, thickness=thickness, c1=c1, c2=c2, radius=radius, initial=(kind, value),
+                load_kind=load_kind, loads=loads, solver=solver, options=options, label=_text(data, "label", where),
+                tags=_tags(data, where), given=tuple(given.items()))
+
+
+def read_toml(path) -> dict:
+    """The TOML file ``path`` as a dict; a missing, huge, non-UTF-8 or malformed file is an InputError."""
+    path = pathlib.Path(path)
+    try:
+        size = path.stat().st_size
+        if path.is_dir():
+            raise InputError(f"{path}: is a directory, not a case file")
+        if size > MAX_BYTES:
+            raise InputError(f"{path}: {size} bytes, but a case file has at most {MAX_BYTES}")
+        raw = path.read_bytes()
+    except OSError as err:
+        raise InputError(f"{path}: cannot read the file ({err.strerror})") from None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as err:
+        raise InputError(f"{path}: not a UTF-8 text file (byte {err.start}), so not a TOML case file") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as err:
+        raise InputError(f"{path}: not valid TOML ({err})") from None
+    except RecursionError:
+        raise InputError(f"{path}: values nested too deeply to be a case file") from None
+
+
+def load(path, *, require_loads: bool = True) -> Case:
+    """Read and check the case file ``path``."""
+    return parse(read_toml(path), where=str(path), require_loads=require_loads)
+
+
+#: Table 1 of the paper: sample number -> sheet thickness
+SAMPLES = {1: "0.25 mm", 2: "0.5 mm", 3: "0.8 mm", 4: "1.6 mm"}
+
+
+def sample(number) -> Case:
+    """Sample ``number`` (1-4) of the paper's Table 1, at P_I = 4.81275 kPa, forces 0-6 N (Fhat up to 0.99)."""
+    if isinstance(number, bool) or number not in SAMPLES:
+        raise InputError(f"sample = {number!r}, but Table 1 has samples {', '.join(map(str, SAMPLES))}")
+    data = {"name": f"sample {number}",
+            "sheet": {"thickness": SAMPLES[number], "c1": "160 kPa", "c2": "47 kPa"},
+            "clamp": {"radius": "20 mm"}, "initial": {"pressure": "4.81275 kPa"},
+            "loads": {"forces": [f"{f} N" for f in (0, 0.5, 1, 2, 3, 4.5, 6)]}}
+    return parse(data, where=f"sample {number}")

@@ -1,0 +1,134 @@
+r"""Designing a soft button (the paper's section 6, Table 2): P_I and T from R, H0, E, F, H/H0.
+
+Given the clamp radius R, the inflated height H0, the modulus E (and alpha),
+the finger force F and the target height ratio H/H0 = h at that force, find
+the initial pressure P_I and the thickness T.
+
+The paper's rules (Table 2): P_I = 5.7 F / (pi R^2), T = 0.216 P_I R^4 / (E H0^3).
+
+The full model. In the model's dimensionless variables the unknowns enter only as
+Phat_I = P_I R / (E T) and Fhat = F / (P_I pi R^2), and
+
+    H0 / R = h0(alpha, Phat_I)                (inflation)
+    H / H0 = g(alpha, Phat_I, Fhat)           (compression at fixed volume)
+
+The inflated height depends on Phat_I alone, so the problem decouples:
+
+    1. Phat_I* solves h0(alpha, Phat_I) = H0 / R     (pocket.apps.inverse.pressure_for_height)
+    2. Fhat*   solves g(alpha, Phat_I*, Fhat) = h    (pocket.apps.inverse.force_where)
+    3. P_I = F / (pi R^2 Fhat*)                      (definition of Fhat)
+    4. T   = P_I R / (E Phat_I*)                     (definition of Phat)
+
+Two scalar roots, each monotone on the first branch, so the answer is unique.
+P_I depends on R, H0, F and h but not on E, which scales T alone. In the same
+terms the paper's rules say Fhat* = 1/5.7 and H0/R = (0.216 Phat_I)^(1/3),
+the small-strain law H0/R = c Phat_I^(1/3) with c = 0.6 (the corrected
+analytical model has c = 0.5726, ``pocket.core.smallstrain.height_constant``).
+The paper's (P_I, T) are also fed to the full model, which shows the H0 and
+H/H0 they really give.
+
+Feel: the force-travel curve F(H0 - H) at forces up to twice F (or to just
+inside the end of the model's range, if that comes first), and its
+stiffness dF/d(travel) = -(P_I pi R^2 / H0) / (d(H/H0)/dFhat), the slope from
+``pocket.apps.slopes`` (central differences).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from pocket.core.errors import InputError, OutOfRangeError
+from pocket.core.inputs import check_alpha
+from pocket.core.units import positive
+
+from .inverse import force_where, pressure_for_height, range_end
+from .slopes import curve_with_slopes
+from .solvers import get_solver
+
+__all__ = ["Design", "design", "paper_rules", "PAPER_FORCE_FACTOR", "PAPER_THICKNESS_FACTOR"]
+
+PAPER_FORCE_FACTOR = 5.7  # P_I = 5.7 F / (pi R^2): Fhat = 1/5.7 gives H/H0 ~ 0.8 (paper's figure 3b)
+PAPER_THICKNESS_FACTOR = 0.216  # T = 0.216 P_I R^4 / (E H0^3) (Bouremel et al. 2017)
+
+
+@dataclasses.dataclass(frozen=True)
+class Design:
+    """A button design: SI values carry their unit in the name; ``pressure_initial`` (Phat_I*)
+    and ``force`` (Fhat*) are the model's dimensionless answer."""
+
+    pressure_initial_Pa: float
+    thickness_m: float
+    paper_pressure_initial_Pa: float
+    paper_thickness_m: float
+    paper_model_height_m: float | None  # H0 that the paper's (P_I, T) give in the full model
+    paper_model_height_ratio: float | None  # H/H0 that they give at F (None: no such state)
+    pressure_initial: float
+    force: float
+    stiffness_N_per_m: float  # dF/d(travel) at F
+    curve_force_N: np.ndarray  # shape (n,)
+    curve_travel_m: np.ndarray  # H0 - H, shape (n,)
+    curve_stiffness_N_per_m: np.ndarray  # dF/d(travel), shape (n,)
+    curve_limited: bool  # the curve stops short of 2 F, at the end of the model's range
+
+    def report(self) -> dict:
+        """JSON-ready: the full model's answer, the paper's, their ratios, the curve."""
+        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if not f.name.startswith("curve_")}
+        out["pressure_initial_ratio_paper_to_model"] = self.paper_pressure_initial_Pa / self.pressure_initial_Pa
+        out["thickness_ratio_paper_to_model"] = self.paper_thickness_m / self.thickness_m
+        out["curve_limited"] = self.curve_limited
+        out["curve"] = [{"force_N": f, "travel_m": t, "stiffness_N_per_m": k} for f, t, k in
+                        zip(self.curve_force_N.tolist(), self.curve_travel_m.tolist(),
+                            self.curve_stiffness_N_per_m.tolist(), strict=True)]
+        return out
+
+
+def paper_rules(radius, height, modulus, force) -> tuple[float, float]:
+    """(P_I, T) by the paper's Table 2."""
+    p_i = PAPER_FORCE_FACTOR * force / (math.pi * radius**2)
+    return p_i, PAPER_THICKNESS_FACTOR * p_i * radius**4 / (modulus * height**3)
+
+
+def _check(radius, height, modulus, alpha, force, height_ratio):
+    values = [positive(k, v, kind) for k, v, kind in (("radius", radius, "length"), ("height", height, "length"),
+                                                      ("modulus", modulus, "pressure"), ("force", force, "force"))]
+    try:
+        ratio = float(height_ratio)
+    except (TypeError, ValueError):
+        raise InputError(f"height_ratio = {height_ratio!r} is not a number") from None
+    if not 0.0 < ratio < 1.0:
+        raise InputError(f"height_ratio = {height_ratio!r}, but a pressed button needs 0 < H/H0 < 1")
+    return (*values, check_alpha(alpha), ratio)
+
+
+def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="shooting", points=20,
+           **options) -> Design:
+    """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units."""
+    radius, height, modulus, force, alpha, ratio = _check(radius, height, modulus, alpha, force, height_ratio)
+    model = get_solver(solver)
+    phat_i = pressure_for_height(model, alpha, height / radius, **options)
+    fhat = force_where(model, alpha, phat_i, "height_ratio", ratio, increasing=False, **options)
+    p_i = force / (math.pi * radius**2 * fhat)
+    thickness = p_i * radius / (modulus * phat_i)
+    paper_p, paper_t = paper_rules(radius, height, modulus, force)
+    paper_phat = paper_p * radius / (modulus * paper_t)
+    try:
+        paper_state = model.compress(alpha, paper_phat, force / (paper_p * math.pi * radius**2), **options)
+        paper_model = paper_state.inflated.height * radius, paper_state.height_ratio
+    except OutOfRangeError:  # the paper's rules can ask for a state the model does not have
+        paper_model = None, None
+    top = range_end(model, alpha, phat_i, below=2.0 * fhat, **options)
+    limited = top < 2.0 * fhat
+    top *= 1.0 - 1e-3 if limited else 1.0  # room for the slope's stencil (pocket/slopes.py, 1e-4 f)
+    forces = top * np.arange(1, points + 1) / points
+    states, slopes = curve_with_slopes(model, alpha, phat_i, [fhat, *forces], ["height_ratio"], **options)
+    scale = p_i * math.pi * radius**2
+    stiffness = -scale / (height * slopes["height_ratio"])
+    return Design(pressure_initial_Pa=p_i, thickness_m=thickness, paper_pressure_initial_Pa=paper_p,
+                  paper_thickness_m=paper_t, paper_model_height_m=paper_model[0],
+                  paper_model_height_ratio=paper_model[1], pressure_initial=phat_i, force=fhat,
+                  stiffness_N_per_m=float(stiffness[0]), curve_force_N=forces * scale,
+                  curve_travel_m=np.array([height * (1.0 - s.height_ratio) for s in states[1:]]),
+                  curve_stiffness_N_per_m=stiffness[1:], curve_limited=limited)

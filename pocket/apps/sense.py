@@ -1,0 +1,82 @@
+"""Force sensing: the force on a pocket from its measured pressure (``pocket sense``).
+
+The paper's conclusion: the applied force can be inferred from the pressure
+rise. The pressure ratio q = P/P_I grows monotonically with the force on the
+model's first branch, so the force is the root Fhat of q(Fhat) = q_measured
+(``pocket.apps.inverse.force_where``), solved on the forward solver to its
+resolution: no fitted curve and no extrapolation. A pressure below P_I, or
+above what the model reaches before the free part of the sheet meets the
+clamp plane, is an OutOfRangeError.
+
+With F = Fhat P_I pi R^2 and P = q P_I, the sensitivity is
+dF/dP = pi R^2 / (dq/dFhat) (units m^2 = N/Pa), dq/dFhat by ``pocket.apps.slopes``.
+The contact area is A_c = F / P (frictionless flat plate).
+
+Pressures are gauge pressures, as P_I is: the pressure in the pocket above
+the ambient pressure.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from pocket.core.errors import InputError
+from pocket.core.inputs import check_finite
+from pocket.core.units import quantity
+
+from .inverse import force_where
+from .physical import Pocket
+from .slopes import curve_with_slopes
+
+__all__ = ["Reading", "sense", "calibration"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Reading:
+    """A force reading: SI values carry their unit in the name, ``force`` is Fhat = F / (P_I pi R^2)."""
+
+    force_N: float
+    pressure_Pa: float
+    pressure_ratio: float  # P / P_I
+    contact_area_m2: float
+    sensitivity_N_per_Pa: float  # dF/dP
+    force: float
+
+    def row(self) -> dict:
+        """The reading as a flat dict (JSON- and CSV-ready)."""
+        return dataclasses.asdict(self)
+
+
+def _readings(pocket: Pocket, fhats) -> list[Reading]:
+    states, slopes = curve_with_slopes(pocket.solver(), pocket.alpha, pocket.pressure_initial, fhats,
+                                       ["pressure_ratio"], **pocket.options())
+    area = math.pi * pocket.case.radius**2
+    return [Reading(force_N=s.force * pocket.force_scale_N, pressure_Pa=s.pressure_ratio * pocket.pressure_initial_Pa,
+                    pressure_ratio=s.pressure_ratio, contact_area_m2=s.contact_area * area,
+                    sensitivity_N_per_Pa=area / slope, force=s.force)
+            for s, slope in zip(states, slopes["pressure_ratio"], strict=True)]
+
+
+def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
+    """The force at the measured ``pressure`` (Pa, or a string with unit) or pressure ``ratio`` P/P_I."""
+    if (pressure is None) == (ratio is None):
+        raise InputError("give either a pressure or a pressure ratio, not both or neither")
+    if pressure is not None:
+        q = quantity("pressure", pressure, "pressure") / pocket.pressure_initial_Pa
+    else:
+        q = check_finite("ratio", ratio)
+    fhat = force_where(pocket.solver(), pocket.alpha, pocket.pressure_initial, "pressure_ratio", q,
+                       increasing=True, **pocket.options())
+    return _readings(pocket, [fhat])[0]
+
+
+def calibration(pocket: Pocket, max_force: float, points: int = 21) -> list[Reading]:
+    """Readings at ``points`` forces evenly spaced from 0 to ``max_force`` (N)."""
+    if points < 2:
+        raise InputError(f"points = {points}, but a table needs >= 2")
+    if not (math.isfinite(max_force) and max_force > 0.0):
+        raise InputError(f"max_force = {max_force!r}, but it must be > 0")
+    return _readings(pocket, np.linspace(0.0, max_force / pocket.force_scale_N, points))

@@ -1,0 +1,69 @@
+"""The ``pocket`` command: ``main(argv)`` builds the parser and maps errors to exit codes.
+
+Each subcommand lives in a module of ``COMMANDS`` with ``register(subparsers)``,
+which adds its parser with ``set_defaults(handler=f)``, ``f(args) -> int`` the
+exit status. They share the error handling here: a ``PocketError`` is one line
+on stderr, status 1 for a solver failure (``ConvergenceError``) or output that
+cannot be written (``OutputError``), 2 for bad input or a state outside the
+model (``pocket.cli.common.EXIT_CODES``).
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+
+from pocket.apps.provenance import version
+from pocket.core.errors import ConvergenceError, PocketError
+
+from .common import EXIT_CODES, Parser
+
+__all__ = ["main", "COMMANDS"]
+
+#: modules adding subcommands, in the order of ``pocket --help``
+COMMANDS = ("pocket.cli.solve", "pocket.cli.run", "pocket.cli.design", "pocket.cli.sense", "pocket.cli.sweep",
+            "pocket.cli.validate")
+
+
+def _parser() -> Parser:
+    parser = Parser(prog="pocket", description="Mechanics of pressurised elastic pockets: a clamped rubber "
+                    "sheet inflated by a fluid and pressed by a flat plate (Bouremel et al., 'Compression of "
+                    "pressurised elastic pockets').", epilog=EXIT_CODES)
+    parser.add_argument("--version", action="version", version=f"pocket {version()}")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND")
+    for name in COMMANDS:
+        importlib.import_module(name).register(sub)
+    return parser
+
+
+def _status(err: PocketError) -> int:
+    """1 for a solver failure or an output that cannot be written, 2 for input outside the model."""
+    return 1 if isinstance(err, ConvergenceError) or getattr(err, "exit_status", 2) == 1 else 2
+
+
+def main(argv=None) -> int:
+    """Run the command line; returns the exit status.
+
+    Output cut short by the reader (``pocket ... | head``) ends quietly with status 1
+    (Python's documented recipe for SIGPIPE), an interrupt with one line and 130.
+    """
+    try:
+        args = _parser().parse_args(argv)
+        try:
+            status = args.handler(args)
+        except PocketError as err:
+            print(f"pocket: error: {err}", file=sys.stderr)
+            return _status(err)
+        sys.stdout.flush()
+        return status
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except KeyboardInterrupt:
+        print("pocket: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

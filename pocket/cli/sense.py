@@ -1,0 +1,61 @@
+"""``pocket sense``: the force on a pocket from its measured pressure, and a calibration table."""
+
+from __future__ import annotations
+
+import csv
+import json
+import pathlib
+
+from pocket.apps.physical import forces, resolve
+from pocket.apps.sense import calibration, sense
+from pocket.core.errors import InputError
+from pocket.core.units import quantity
+
+from .common import EXIT_CODES, number
+from .run import add_case_arguments, case_from_args
+
+__all__ = ["register"]
+
+
+def _main(args) -> int:
+    case, _ = case_from_args(args)
+    if args.pressure is None and args.ratio is None and args.table is None:
+        raise InputError("give a measured --pressure or --ratio, or --table FILE.csv")
+    pocket = resolve(case)
+    out = {}
+    if args.pressure is not None or args.ratio is not None:
+        out = sense(pocket, pressure=args.pressure, ratio=args.ratio).row()
+    if args.table is not None:
+        top = (quantity("max-force", args.max_force, "force") if args.max_force is not None
+               else max(forces(pocket)) * pocket.force_scale_N)
+        rows = [r.row() for r in calibration(pocket, top, args.points)]
+        path = pathlib.Path(args.table)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with path.open("w", newline="") as stream:
+            writer = csv.DictWriter(stream, list(rows[0]))
+            writer.writeheader()
+            writer.writerows(rows)
+        out["table"] = str(path)
+    if args.json:
+        print(json.dumps(out))
+    else:
+        for key, value in out.items():
+            print(f"{key:<22}{value:.10g}" if isinstance(value, float) else f"{key:<22}{value}")
+    return 0
+
+
+def register(subparsers) -> None:
+    """Add ``pocket sense``."""
+    text = "force sensing: force, contact area and dF/dP from a measured pressure"
+    p = subparsers.add_parser("sense", help=text, description=f"{text} (gauge, like P_I), by inverting the "
+                              "full model (no extrapolation: a pressure below P_I or past the model's range is "
+                              "an error); --table writes a calibration table over the force range.",
+                              epilog=EXIT_CODES)
+    add_case_arguments(p)
+    p.add_argument("--pressure", help="measured gauge pressure P ('5.2 kPa', SI if plain)")
+    p.add_argument("--ratio", type=number, help="measured pressure rise P/P_I")
+    p.add_argument("--table", metavar="FILE.csv", help="write a calibration table over the force range")
+    p.add_argument("--max-force", help="top of the table's force range (default: the case's largest load)")
+    p.add_argument("--points", type=int, default=21, help="rows of the table (default 21)")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(handler=_main)

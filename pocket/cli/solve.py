@@ -1,0 +1,84 @@
+"""``pocket inflate`` and ``pocket compress``: one state or a compression curve, dimensionless.
+
+Quantities (the model's own units): Phat = P R / (E T), Fhat = F / (P_I pi R^2),
+lengths in R. Output: a table (or ``--json``) of the reported keys of
+``pocket.core.states``; ``--vtk DIR`` writes the states for ParaView.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+
+from pocket.apps.solvers import SOLVERS, get_solver
+from pocket.core.errors import ConvergenceError
+
+from .common import EXIT_CODES, add_solver_flags, number, solver_flags
+
+__all__ = ["register"]
+
+_UNITS = ("units: Phat = P R / (E T) with E = 6 (C1 + C2) and T the thickness, Fhat = F / (P_I pi R^2), "
+          "lengths in units of the clamp radius R")
+
+
+def register(subparsers) -> None:
+    """Add ``inflate`` and ``compress``."""
+    for name, text in (("inflate", "step 1: inflate the pocket at pressure Phat"),
+                       ("compress", "step 2: press the inflated pocket with a flat plate at fixed fluid volume")):
+        p = subparsers.add_parser(name, help=text, description=f"{text}. {_UNITS}.", epilog=EXIT_CODES)
+        p.add_argument("--alpha", type=number, required=True, help="C2/C1 of the Mooney-Rivlin rubber, > -1 "
+                       "(fractions allowed: 47/160)")
+        if name == "inflate":
+            p.add_argument("--pressure", type=number, required=True, help="Phat = P R / (E T)")
+        else:
+            p.add_argument("--pressure", type=number, required=True, help="initial Phat_I = P_I R / (E T)")
+            p.add_argument("--force", type=number, nargs="+", required=True,
+                           help="Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
+        p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
+                       help="shooting (the reference, default), fem or analytical")
+        p.add_argument("--json", action="store_true", help="print JSON (a list for several forces)")
+        p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView")
+        p.add_argument("--overwrite", action="store_true", help="replace an existing --vtk DIR")
+        add_solver_flags(p, "inflate" if name == "inflate" else "compress")
+        p.set_defaults(handler=_main)
+
+
+def _table(rows: list[dict]) -> str:
+    keys = [k for k in rows[0] if k != "solver"]
+    if len(rows) == 1:
+        width = max(map(len, keys))
+        return "\n".join(f"{k:<{width}}  {_fmt(rows[0][k])}" for k in keys)
+    cols = [[k] + [_fmt(r[k]) for r in rows] for k in keys]
+    widths = [max(map(len, col)) for col in cols]
+    lines = ["  ".join(col[i].rjust(w) for col, w in zip(cols, widths, strict=True)) for i in range(len(rows) + 1)]
+    return "\n".join(lines)
+
+
+def _fmt(value) -> str:
+    return f"{value:.10g}" if isinstance(value, float) else str(value)
+
+
+def _main(args) -> int:
+    step = "inflate" if args.command == "inflate" else "compress"
+    options = solver_flags(args, args.solver, step)
+    solver = get_solver(args.solver)
+    if step == "inflate":
+        states = [solver.inflate(args.alpha, args.pressure, **options)]
+    else:
+        states = solver.compression_curve(args.alpha, args.pressure, args.force, **options)
+    rows = [s.scalars() for s in states]
+    if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
+        raise ConvergenceError(f"solver {args.solver} returned a non-finite value")
+    if args.vtk:
+        from pocket.apps.vtkfiles import write_series
+
+        forces = [getattr(s, "force", 0.0) for s in states]
+        increasing = all(a < b for a, b in itertools.pairwise(forces))
+        write_series(args.vtk, states, times=forces if increasing else None, overwrite=args.overwrite)
+    if args.json:
+        print(json.dumps(rows if step == "compress" and len(args.force) > 1 else rows[0]))
+    else:
+        print(f"# solver: {rows[0]['solver']}")
+        print(_table(rows))
+    return 0

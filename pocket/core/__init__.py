@@ -1,0 +1,7 @@
+"""The vocabulary every layer of pocket shares: states, errors, input checks, units, solver records.
+
+Nothing here imports a solver or an application; the solvers (``pocket.shooting``,
+``pocket.fem``, ``pocket.analytical``) build on it, the applications
+(``pocket.apps``) on them, and the command line (``pocket.cli``) and the
+validation suite (``pocket.validation``) on top.
+"""

@@ -1,0 +1,122 @@
+"""The one input checker: every value a user gives passes through here before any work.
+
+Each check returns the value in its checked form (a float, an int) or raises an
+``InputError`` of one line that names the input and quotes the value, e.g.
+``alpha = -1.2, but the Mooney-Rivlin model needs alpha > -1``.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+import operator
+
+from .errors import InputError
+
+__all__ = [
+    "check_finite",
+    "check_alpha",
+    "check_positive",
+    "check_non_negative",
+    "check_force",
+    "check_count",
+    "check_tolerance",
+    "check_flag",
+    "check_choice",
+    "quote",
+]
+
+#: smallest relative tolerance a solver is asked for: a few ulps of a number of order one
+TOLERANCE_FLOOR = 1e-14
+
+
+def quote(value) -> str:
+    """A value as a message quotes it: numbers plainly (numpy's ``np.float64(...)`` as ``0.1``), text in quotes."""
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return repr(value)
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
+    return repr(value)
+
+
+def check_finite(name, value) -> float:
+    """``value`` as a finite float (a bool is not a number)."""
+    if isinstance(value, bool):
+        raise InputError(f"{name} = {quote(value)} is not a number")
+    try:
+        number = float(value)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError(f"{name} = {quote(value)} is not a number") from None
+    if not math.isfinite(number):
+        raise InputError(f"{name} = {quote(value)} is not finite")
+    return number
+
+
+def check_alpha(alpha) -> float:
+    """alpha = C2/C1 must be > -1 (E = 6 (1 + alpha) C1 > 0)."""
+    value = check_finite("alpha", alpha)
+    if value <= -1.0:
+        raise InputError(f"alpha = {quote(alpha)}, but the Mooney-Rivlin model needs alpha > -1")
+    return value
+
+
+def check_positive(name, value) -> float:
+    """A quantity that must be finite and > 0 (a pressure, a volume, a penalty)."""
+    number = check_finite(name, value)
+    if number <= 0.0:
+        raise InputError(f"{name} = {quote(value)}, but it must be > 0")
+    return number
+
+
+def check_non_negative(name, value) -> float:
+    """A quantity that must be finite and >= 0."""
+    number = check_finite(name, value)
+    if number < 0.0:
+        raise InputError(f"{name} = {quote(value)}, but it must be >= 0")
+    return number
+
+
+def check_force(force) -> float:
+    """The force Fhat = F / (P_I pi R^2) must be finite and >= 0 (the plate pushes)."""
+    number = check_finite("force", force)
+    if number < 0.0:
+        raise InputError(f"force = {quote(force)}, but a plate can only push: it must be >= 0")
+    return number
+
+
+def check_count(name, value, low: int, high: int) -> int:
+    """An integer in [low, high] (an element count, a number of points; ``high`` bounds the work)."""
+    try:
+        if isinstance(value, bool):
+            raise TypeError
+        number = operator.index(value)
+    except TypeError:
+        raise InputError(f"{name} = {quote(value)} is not an integer") from None
+    if not low <= number <= high:
+        raise InputError(f"{name} = {quote(value)}, but it must lie in [{low}, {high}]")
+    return number
+
+
+def check_tolerance(name, value, high: float) -> float:
+    """A relative tolerance in [TOLERANCE_FLOOR, high]: below the floor no double can meet it."""
+    number = check_finite(name, value)
+    if not TOLERANCE_FLOOR <= number <= high:
+        raise InputError(f"{name} = {quote(value)}, but it must lie in [{TOLERANCE_FLOOR:g}, {high:g}] "
+                         "(below that no double-precision solve can meet it)")
+    return number
+
+
+def check_flag(name, value) -> bool:
+    """A true/false switch (a bool, not a number or a string)."""
+    if not isinstance(value, bool):
+        raise InputError(f"{name} = {quote(value)}, but it must be true or false")
+    return value
+
+
+def check_choice(name, value, choices):
+    """One of ``choices`` (compared with ==; a bool is not the integer 1)."""
+    if isinstance(value, bool) or value not in choices:
+        raise InputError(f"{name} = {quote(value)}, but it must be one of {', '.join(map(repr, choices))}")
+    return value

@@ -1,0 +1,90 @@
+"""The record of a solver: its name, its entry points and the options it takes, declared once.
+
+Every solver package declares one ``Solver`` (``pocket.shooting.SOLVER``,
+``pocket.fem.SOLVER``, ``pocket.analytical.SOLVER``). The command line's flags
+(``--rtol``, ``--elements``, ...), the case-file keys (``[solver] elements = 200``)
+and the validation suite's solver columns are all derived from it, so that an
+option a solver does not take is an error everywhere, never silently ignored.
+
+An ``Option`` is one keyword argument of the solver's entry points. Its name is
+the keyword, the case-file key and (as ``--name``) the command-line flag. Its
+``check`` turns a given value into the checked one or raises a one-line
+``InputError`` (the checks live in ``pocket.core.inputs``). ``steps`` says
+which steps take it: a contact penalty means nothing to an inflation.
+
+Entry points (functions of the module ``Solver.module``), all in the
+dimensionless units of ``pocket.core.states``:
+
+- ``inflate(alpha, pressure, **options) -> InflatedState``
+- ``inflate_volume(alpha, volume, **options) -> InflatedState``
+- ``compress(alpha, pressure_initial, force, **options) -> CompressedState``
+- ``compression_curve(alpha, pressure_initial, forces, **options) -> list[CompressedState]``
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+
+from .errors import InputError
+
+__all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS"]
+
+#: the two steps of the problem
+STEPS = ("inflate", "compress")
+#: entry point -> the step it belongs to
+ENTRY_POINTS = {"inflate": "inflate", "inflate_volume": "inflate", "compress": "compress",
+                "compression_curve": "compress"}
+
+
+@dataclasses.dataclass(frozen=True)
+class Option:
+    """One keyword option of a solver (see the module docstring).
+
+    ``kind`` is how a user writes it: ``"float"``, ``"int"``, ``"bool"`` or
+    ``"path"`` (a file name); ``default`` is what the solver uses when it is
+    not given (documentation: the solver's signature holds the same value).
+    """
+
+    name: str
+    kind: str
+    default: object
+    help: str
+    check: Callable[[str, object], object]
+    steps: tuple[str, ...] = STEPS
+
+    def checked(self, value, spell: Callable[[str], str] = str):
+        """``value`` checked, with errors naming the option as ``spell(name)`` would."""
+        return self.check(spell(self.name), value)
+
+
+@dataclasses.dataclass(frozen=True)
+class Solver:
+    """A solver: its name, a one-line summary, the module of its entry points, its options."""
+
+    name: str
+    summary: str
+    module: str
+    entry_points: tuple[str, ...]
+    options: tuple[Option, ...] = ()
+
+    def option(self, name: str) -> Option | None:
+        """The option ``name``, or None if this solver does not take it."""
+        return next((o for o in self.options if o.name == name), None)
+
+    def checked(self, given: dict, step: str, spell: Callable[[str], str] = str) -> dict:
+        """The options ``given`` (name -> value) checked for ``step`` ("inflate" or "compress").
+
+        An option this solver does not take, or one its ``step`` does not use,
+        is an ``InputError`` naming it as ``spell(name)``.
+        """
+        out = {}
+        for name, value in given.items():
+            option = self.option(name)
+            if option is None:
+                takes = ", ".join(spell(o.name) for o in self.options) or "none"
+                raise InputError(f"{spell(name)} does not apply to solver {self.name} (its options: {takes})")
+            if step not in option.steps:
+                raise InputError(f"{spell(name)} applies to {' and '.join(option.steps)}, not to {step}")
+            out[name] = option.checked(value, spell)
+        return out

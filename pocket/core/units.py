@@ -1,0 +1,87 @@
+"""Physical quantities in, SI floats out: the one place units are handled (pint).
+
+A value is a number (taken as SI: metres, pascals, newtons, cubic metres) or a
+string with a unit, ``"0.25 mm"``, ``"4.8 kPa"``, ``"0.67 N"``, ``"2 mL"``,
+which pint parses and converts. A string without a unit is SI too. The
+quantity's dimension must match its kind: ``"4 mm"`` for a pressure is an
+``InputError`` naming the key. A nonzero magnitude must lie within
+``MAGNITUDES`` (in SI): products of a few such values stay far from the
+overflow and underflow of doubles, where ``"1e300 m"`` would silently give
+inf or 0. Everything past this module is SI floats.
+
+pint is imported on first use, so that commands which need no units do not pay
+for its registry (about 0.2 s).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+from .errors import InputError
+from .inputs import quote
+
+__all__ = ["KINDS", "MAGNITUDES", "quantity", "positive"]
+
+#: kind -> (pint dimensionality, SI unit)
+KINDS = {
+    "length": ("[length]", "m"),
+    "pressure": ("[pressure]", "Pa"),
+    "force": ("[force]", "N"),
+    "volume": ("[volume]", "m**3"),
+}
+
+
+#: smallest and largest nonzero |value| in SI units
+MAGNITUDES = (1e-20, 1e20)
+
+
+@functools.cache
+def _registry():
+    import pint
+
+    return pint.UnitRegistry()
+
+
+class _WrongDimension(Exception):
+    """A parsed quantity of another dimension (its message is that dimension)."""
+
+
+def _si(text: str, dimension: str, unit: str) -> float:
+    parsed = _registry().Quantity(text)
+    if parsed.dimensionless:
+        return float(parsed.to("dimensionless").magnitude)
+    if not parsed.check(dimension):
+        raise _WrongDimension(str(parsed.dimensionality))
+    return float(parsed.to(unit).magnitude)
+
+
+def quantity(key: str, value, kind: str) -> float:
+    """The SI magnitude of ``value`` (number or string with unit), a quantity of ``kind``."""
+    dimension, unit = KINDS[kind]
+    if isinstance(value, bool) or not isinstance(value, (int, float, str)):
+        raise InputError(f"{key} = {quote(value)} is not a {kind} (give a number in SI or a string like "
+                         f"'1 {unit}')")
+    try:
+        magnitude = _si(value, dimension, unit) if isinstance(value, str) else float(value)
+    except OverflowError:
+        magnitude = math.inf
+    except _WrongDimension as err:
+        raise InputError(f"{key} = {quote(value)} has dimension {err}, but a {kind} ({unit}) is needed") from None
+    except Exception:  # pint's parser raises many types on malformed text (even AssertionError)
+        raise InputError(f"{key} = {quote(value)} is not a quantity with a known unit") from None
+    if not math.isfinite(magnitude):
+        raise InputError(f"{key} = {quote(value)} is not finite")
+    low, high = MAGNITUDES
+    if magnitude != 0.0 and not low <= abs(magnitude) <= high:
+        raise InputError(f"{key} = {quote(value)} is outside the magnitudes pocket handles "
+                         f"({low:g} to {high:g} {unit})")
+    return magnitude
+
+
+def positive(key: str, value, kind: str) -> float:
+    """``quantity`` that must be > 0 (a thickness, a radius, a modulus)."""
+    magnitude = quantity(key, value, kind)
+    if magnitude <= 0.0:
+        raise InputError(f"{key} = {quote(value)}, but it must be > 0")
+    return magnitude
