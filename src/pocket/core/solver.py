@@ -18,7 +18,12 @@ dimensionless units of ``pocket.core.states``:
 - ``inflate(alpha, pressure, **options) -> InflatedState``
 - ``inflate_volume(alpha, volume, **options) -> InflatedState``
 - ``compress(alpha, pressure_initial, force, **options) -> CompressedState``
-- ``compression_curve(alpha, pressure_initial, forces, **options) -> list[CompressedState]``
+- ``compression_curve(alpha, pressure_initial, forces, *, progress=None, **options) -> list[CompressedState]``
+
+``progress``, if given, is called as ``progress(done, total)`` after each force of a
+curve (a command line shows a bar with it); it is not an option of the record.
+A solver may also have ``range_end(alpha, pressure_initial, **options) -> float``,
+the force Fhat at which its model's range ends (listed in ``entry_points``).
 """
 
 from __future__ import annotations

@@ -69,6 +69,9 @@ class InflatedState:
 
     ``extra`` holds solver-specific diagnostics (mesh size, iterations, ...);
     ``scalars()`` returns the reported keys (``KEYS``) followed by those.
+    ``warnings`` are one-line notes on a state that is returned but should not
+    pass unremarked (an approximate model outside its range); the command line
+    prints them and JSON carries them.
     """
 
     alpha: float
@@ -80,6 +83,7 @@ class InflatedState:
     profile: Profile | None
     solver: str
     extra: Mapping[str, float] = dataclasses.field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
 
     KEYS = ("alpha", "pressure", "stretch_pole", "height", "volume", "stretch_clamp")
 
@@ -94,7 +98,8 @@ class CompressedState:
 
     ``contact_area`` is the deformed area A_c/(pi R^2) = pi (lambda_c a_c)^2 /
     (pi R^2); ``contact_radius`` the Lagrangian a_c/R. ``inflated`` is the
-    step-1 state this one was compressed from.
+    step-1 state this one was compressed from. ``extra`` and ``warnings`` as
+    for ``InflatedState``.
     """
 
     alpha: float
@@ -112,6 +117,7 @@ class CompressedState:
     inflated: InflatedState
     solver: str
     extra: Mapping[str, float] = dataclasses.field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
 
     KEYS = (
         "alpha",
