@@ -1,8 +1,18 @@
-"""Output files and folders that appear whole or not at all.
+"""Output files and folders: checked before any work, then written whole or not at all.
 
-A result (a file, a VTK series, a report folder) is written into a hidden sibling
-``.NAME[.XXXXXXXXXXXX].partial`` and renamed onto its target only once complete,
-so an error or an interrupt never leaves a half-written result looking finished.
+Before solving, ``check_output_file`` and ``check_output_dir`` make sure a
+result can go where the user asked: not onto a folder (for a file) or a file
+(for a folder), not below a file, not into a folder that cannot be written.
+Each failure is a one-line ``InputError`` (exit status 2) raised before any
+work.
+
+A result (a file, a VTK series, a report folder) is then written into a hidden
+sibling ``.NAME.XXXXXXXXXXXX.partial`` (a random name, so that two writers of one
+target never share a temporary) and renamed onto its target only once
+complete, so an error or an interrupt never leaves a half-written result
+looking finished. An operating-system error while writing (a full disk, a
+folder made read-only meanwhile) removes the partial result and becomes an
+``OutputError`` (exit status 1) naming the target.
 """
 
 from __future__ import annotations
@@ -14,7 +24,48 @@ import secrets
 import shutil
 from collections.abc import Iterator
 
-__all__ = ["staged", "write_whole"]
+from pocket.core.errors import InputError, OutputError
+
+__all__ = ["check_output_file", "check_output_dir", "staged", "write_whole"]
+
+
+def _writable_parent(path: pathlib.Path, what: str) -> None:
+    """The nearest existing ancestor of ``path`` is a folder this process may create entries in."""
+    for parent in path.parents:
+        if parent.exists():
+            if not parent.is_dir():
+                raise InputError(f"{what} {path}: {parent} is a file, not a folder")
+            if not os.access(parent, os.W_OK | os.X_OK):
+                raise InputError(f"{what} {path}: the folder {parent} is not writable")
+            return
+        if parent.is_symlink():  # a dangling link in the way
+            raise InputError(f"{what} {path}: {parent} is a broken link")
+
+
+def check_output_file(path, what: str = "output") -> pathlib.Path:
+    """The absolute path of a file that may be created or replaced; InputError (before any work) if not."""
+    target = pathlib.Path(path).absolute()
+    if target.is_dir():
+        raise InputError(f"{what} {path}: is a folder, not a file")
+    if target.exists() and not os.access(target, os.W_OK):
+        raise InputError(f"{what} {path}: the file is not writable")
+    _writable_parent(target, what)
+    return target
+
+
+def check_output_dir(path, what: str = "output") -> pathlib.Path:
+    """The absolute path of a folder that may be created or filled; InputError (before any work) if not."""
+    target = pathlib.Path(path).absolute()
+    if target.exists() and not target.is_dir():
+        raise InputError(f"{what} {path}: is a file, not a folder")
+    if target.is_dir() and not os.access(target, os.W_OK | os.X_OK):
+        raise InputError(f"{what} {path}: the folder is not writable")
+    _writable_parent(target, what)
+    return target
+
+
+def _partial(target: pathlib.Path) -> pathlib.Path:
+    return target.with_name(f".{target.name}.{secrets.token_hex(6)}.partial")
 
 
 @contextlib.contextmanager
@@ -25,12 +76,18 @@ def staged(target: pathlib.Path) -> Iterator[pathlib.Path]:
     previous ``target`` is removed only after the new one is in place; on any
     exception the sibling is deleted and ``target`` is left as it was.
     """
-    target.parent.mkdir(parents=True, exist_ok=True)
-    partial = target.with_name(f".{target.name}.{secrets.token_hex(6)}.partial")
-    partial.mkdir()  # not mkdtemp: its mode 0700 would stay with the result
+    partial = _partial(target)
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        partial.mkdir()  # not mkdtemp: its mode 0700 would stay with the result
+    except OSError as err:
+        raise OutputError(f"cannot write {target}: {err.strerror or err}") from None
     try:
         yield partial
         _replace(partial, target)
+    except OSError as err:
+        shutil.rmtree(partial, ignore_errors=True)
+        raise OutputError(f"cannot write {target}: {err.strerror or err}") from None
     except BaseException:
         shutil.rmtree(partial, ignore_errors=True)
         raise
@@ -38,9 +95,18 @@ def staged(target: pathlib.Path) -> Iterator[pathlib.Path]:
 
 def write_whole(path: pathlib.Path, text: str) -> None:
     """Write ``text`` to the file ``path`` through a hidden sibling renamed onto it."""
-    partial = path.with_name(f".{path.name}.partial")
-    partial.write_text(text, newline="")
-    os.replace(partial, path)
+    path = pathlib.Path(path)
+    partial = _partial(path)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        partial.write_text(text, newline="")
+        os.replace(partial, path)
+    except OSError as err:
+        partial.unlink(missing_ok=True)
+        raise OutputError(f"cannot write {path}: {err.strerror or err}") from None
+    except BaseException:
+        partial.unlink(missing_ok=True)
+        raise
 
 
 def _replace(source: pathlib.Path, target: pathlib.Path) -> None:

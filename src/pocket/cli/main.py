@@ -15,7 +15,7 @@ import os
 import sys
 
 from pocket.apps.provenance import version
-from pocket.core.errors import ConvergenceError, PocketError
+from pocket.core.errors import PocketError, exit_status
 
 from .common import EXIT_CODES, Parser
 
@@ -37,11 +37,6 @@ def _parser() -> Parser:
     return parser
 
 
-def _status(err: PocketError) -> int:
-    """1 for a solver failure or an output that cannot be written, 2 for input outside the model."""
-    return 1 if isinstance(err, ConvergenceError) or getattr(err, "exit_status", 2) == 1 else 2
-
-
 def main(argv=None) -> int:
     """Run the command line; returns the exit status.
 
@@ -54,7 +49,7 @@ def main(argv=None) -> int:
             status = args.handler(args)
         except PocketError as err:
             print(f"pocket: error: {err}", file=sys.stderr)
-            return _status(err)
+            return exit_status(err)
         sys.stdout.flush()
         return status
     except BrokenPipeError:

@@ -5,12 +5,14 @@ a bad mesh file). ``OutOfRangeError``: the input is valid but outside what the
 model describes (no inflated state on the first branch, the free part reaching
 the clamp plane). Both exit with status 2 on the command line.
 ``ConvergenceError``: the numerics failed; it says where (load level), after
-how many iterations and with what residual. Exit status 1.
+how many iterations and with what residual. ``OutputError``: a result could
+not be written (a read-only folder, a full disk); nothing half-written is left.
+Both exit with status 1.
 """
 
 from __future__ import annotations
 
-__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError"]
+__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "exit_status"]
 
 
 class PocketError(Exception):
@@ -36,3 +38,13 @@ class ConvergenceError(PocketError, RuntimeError):
         self.load = load
         self.iterations = iterations
         self.residual = residual
+
+
+class OutputError(PocketError, OSError):
+    """A result could not be written; the partial output has been removed."""
+
+
+def exit_status(err: PocketError) -> int:
+    """The command line's exit status for ``err``: 1 for a solver failure or an output that could not
+    be written, 2 for bad input or a state outside the model."""
+    return 1 if isinstance(err, (ConvergenceError, OutputError)) else 2
