@@ -1,0 +1,210 @@
+r"""Incompressible hyperelastic rubbers: the one shared definition of each strain-energy law.
+
+A law is its strain energy W per unit reference volume as a function of the
+principal stretches, with lambda_3 = 1 / (lambda_1 lambda_2) (incompressible):
+
+    I1 = l1^2 + l2^2 + l3^2,    I2 = l1^-2 + l2^-2 + l3^-2.
+
+=============  ==========================================================  ============  =====================
+law            W                                                           parameters    mu_0
+=============  ==========================================================  ============  =====================
+mooney-rivlin  C1 (I1 - 3) + C2 (I2 - 3)                                   c1, c2        2 (C1 + C2)
+neo-hookean    (mu / 2) (I1 - 3)                                           mu            mu
+yeoh           C10 (I1 - 3) + C20 (I1 - 3)^2 + C30 (I1 - 3)^3              c10, c20, c30 2 C10
+gent           -(mu Jm / 2) ln(1 - (I1 - 3) / Jm)                          mu, jm        mu
+ogden          sum_p (mu_p / alpha_p) (l1^alpha_p + l2^alpha_p + l3^alpha_p - 3)  mu, exponents  (1/2) sum mu_p alpha_p
+=============  ==========================================================  ============  =====================
+
+mu_0 is the small-strain shear modulus and E = 3 mu_0 the small-strain Young's
+modulus, which makes the model's pressure dimensionless as Phat = P R / (E T)
+for every law (for Mooney-Rivlin E = 6 (C1 + C2), as in the paper).
+
+Conventions differ between codes. Here the Ogden law is written as Ogden did,
+with stresses mu_p and mu_0 = (1/2) sum mu_p alpha_p. Abaqus writes the same
+energy as sum 2 mu_i / alpha_i^2 (...), so its mu_i = mu_p alpha_p / 2 (and
+mu_0 = sum mu_i); FEBio writes sum c_i / m_i^2 (...), so its c_i = mu_p alpha_p.
+Convert before entering another code's fit. Yeoh's C_i0 and Mooney-Rivlin's C1, C2 multiply the invariants directly, so
+neo-hookean(mu) = mooney-rivlin(mu/2, 0) = yeoh(mu/2, 0, 0) = ogden([mu], [2]),
+and ogden([2 C1, -2 C2], [2, -2]) = mooney-rivlin(C1, C2).
+
+A ``Material`` holds the law's name and its parameters in any consistent unit
+(Pa in case files, units of mu_0 inside the solvers: ``scaled`` divides the
+stresses by mu_0). ``check`` refuses, in one line naming the parameter, what
+is not a stable rubber: a non-positive mu_0, Jm <= 0, a Yeoh polynomial whose
+slope dW/dI1 is not positive for every I1 >= 3, an Ogden term with
+mu_p alpha_p <= 0. The solvers derive their tensions, residuals and tangents
+from W each by its own route; tests compare them with finite differences of
+``energy``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from .errors import InputError
+from .inputs import check_finite, quote
+
+__all__ = ["LAWS", "Material", "mooney_rivlin", "energy", "check"]
+
+#: law -> its parameters (names as in case files), in order
+LAWS = {
+    "mooney-rivlin": ("c1", "c2"),
+    "neo-hookean": ("mu",),
+    "yeoh": ("c10", "c20", "c30"),
+    "gent": ("mu", "jm"),
+    "ogden": ("mu", "exponents"),
+}
+#: parameters that are stresses (the rest are dimensionless: jm, exponents)
+STRESSES = {"c1", "c2", "mu", "c10", "c20", "c30"}
+
+
+@dataclasses.dataclass(frozen=True)
+class Material:
+    """A law by name with its parameters: ``params`` maps each name of ``LAWS[law]`` to a float
+    (Ogden's ``mu`` and ``exponents`` to tuples of floats)."""
+
+    law: str
+    params: tuple[tuple[str, object], ...]
+
+    def __getitem__(self, name: str):
+        return dict(self.params)[name]
+
+    @property
+    def mu0(self) -> float:
+        """The small-strain shear modulus mu_0, in the unit of the stresses."""
+        p = dict(self.params)
+        if self.law == "mooney-rivlin":
+            return 2.0 * (p["c1"] + p["c2"])
+        if self.law == "yeoh":
+            return 2.0 * p["c10"]
+        if self.law == "ogden":
+            return 0.5 * sum(m * a for m, a in zip(p["mu"], p["exponents"], strict=True))
+        return p["mu"]
+
+    @property
+    def modulus(self) -> float:
+        """E = 3 mu_0, the small-strain Young's modulus."""
+        return 3.0 * self.mu0
+
+    @property
+    def alpha(self) -> float | None:
+        """C2/C1 for a Mooney-Rivlin rubber, else None."""
+        return self["c2"] / self["c1"] if self.law == "mooney-rivlin" else None
+
+    def scaled(self) -> Material:
+        """The same law with its stresses in units of mu_0 (so that mu_0 = 1)."""
+        mu0 = self.mu0
+        out = []
+        for name, value in self.params:
+            if name in STRESSES:
+                value = tuple(v / mu0 for v in value) if isinstance(value, tuple) else value / mu0
+            out.append((name, value))
+        return Material(self.law, tuple(out))
+
+    def describe(self) -> dict:
+        """The law and its parameters as a flat JSON-ready dict."""
+        out = {"material": self.law}
+        for name, value in self.params:
+            out[name] = list(value) if isinstance(value, tuple) else value
+        return out
+
+
+def mooney_rivlin(alpha: float) -> Material:
+    """The Mooney-Rivlin rubber with C2/C1 = ``alpha``, in units of mu_0: C1 = 1 / (2 (1 + alpha))."""
+    c1 = 0.5 / (1.0 + alpha)
+    return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)))
+
+
+def _invariants(l1, l2):
+    l3 = 1.0 / (l1 * l2)
+    return l1**2 + l2**2 + l3**2, l1**-2 + l2**-2 + l3**-2, l3
+
+
+def energy(material: Material, l1, l2):
+    """W(l1, l2) per unit reference volume (the unit of the stresses); arrays broadcast."""
+    l1, l2 = np.asarray(l1, dtype=float), np.asarray(l2, dtype=float)
+    i1, i2, l3 = _invariants(l1, l2)
+    p = dict(material.params)
+    law = material.law
+    if law == "mooney-rivlin":
+        return p["c1"] * (i1 - 3.0) + p["c2"] * (i2 - 3.0)
+    if law == "neo-hookean":
+        return 0.5 * p["mu"] * (i1 - 3.0)
+    if law == "yeoh":
+        x = i1 - 3.0
+        return p["c10"] * x + p["c20"] * x**2 + p["c30"] * x**3
+    if law == "gent":
+        return -0.5 * p["mu"] * p["jm"] * np.log1p(-(i1 - 3.0) / p["jm"])
+    if law == "ogden":
+        return sum(m / a * (l1**a + l2**a + l3**a - 3.0) for m, a in zip(p["mu"], p["exponents"], strict=True))
+    raise InputError(f"material = {quote(law)}, but it must be one of {', '.join(LAWS)}")
+
+
+def _yeoh_stable(c10: float, c20: float, c30: float) -> bool:
+    """dW/dI1 = c10 + 2 c20 x + 3 c30 x^2 > 0 for every x = I1 - 3 >= 0."""
+    if c10 <= 0.0 or c30 < 0.0:
+        return False
+    if c20 >= 0.0:
+        return True
+    if c30 == 0.0:
+        return False  # the slope falls without bound
+    x = -c20 / (3.0 * c30)  # the minimum of the quadratic, at x > 0
+    return c10 + 2.0 * c20 * x + 3.0 * c30 * x * x > 0.0
+
+
+def check(law, params: dict, where: str = "sheet") -> Material:
+    """A ``Material`` from ``law`` and ``params`` (name -> number, or list of numbers for Ogden), checked.
+
+    Every parameter of the law must be given and no other; errors name ``where.<parameter>``.
+    """
+    if law not in LAWS:
+        raise InputError(f"{where}.material = {quote(law)}, but it must be one of {', '.join(LAWS)}")
+    names = LAWS[law]
+    extra = sorted(set(params) - set(names))
+    if extra:
+        raise InputError(f"{where}.{extra[0]} is not a parameter of the {law} law (its parameters: "
+                         f"{', '.join(names)})")
+    missing = [n for n in names if n not in params]
+    if missing:
+        raise InputError(f"{where}.{missing[0]} is missing: the {law} law needs {', '.join(names)}")
+    values = {}
+    for name in names:
+        value = params[name]
+        if law == "ogden":
+            if not isinstance(value, (list, tuple)) or not value:
+                raise InputError(f"{where}.{name} = {quote(value)}, but the ogden law needs a non-empty list")
+            values[name] = tuple(check_finite(f"{where}.{name}[{i}]", v) for i, v in enumerate(value))
+        else:
+            values[name] = check_finite(f"{where}.{name}", value)
+    _check_stable(law, values, where)
+    return Material(law, tuple((n, values[n]) for n in names))
+
+
+def _check_stable(law: str, v: dict, where: str) -> None:
+    if law == "mooney-rivlin":
+        if v["c1"] <= 0.0 or v["c1"] + v["c2"] <= 0.0:
+            raise InputError(f"{where}.c1 = {quote(v['c1'])}, {where}.c2 = {quote(v['c2'])}, but a Mooney-Rivlin "
+                             "rubber needs C1 > 0 and C1 + C2 > 0 (alpha = C2/C1 > -1)")
+    elif law in ("neo-hookean", "gent"):
+        if v["mu"] <= 0.0:
+            raise InputError(f"{where}.mu = {quote(v['mu'])}, but the shear modulus must be > 0")
+        if law == "gent" and v["jm"] <= 0.0:
+            raise InputError(f"{where}.jm = {quote(v['jm'])}, but the locking parameter Jm must be > 0")
+    elif law == "yeoh":
+        if not _yeoh_stable(v["c10"], v["c20"], v["c30"]):
+            raise InputError(f"{where}.c10, c20, c30 = {v['c10']:g}, {v['c20']:g}, {v['c30']:g}, but a stable Yeoh "
+                             "rubber needs C10 > 0 and dW/dI1 = C10 + 2 C20 x + 3 C30 x^2 > 0 for all x = I1 - 3 >= 0")
+    elif law == "ogden":
+        mu, exponents = v["mu"], v["exponents"]
+        if len(mu) != len(exponents):
+            raise InputError(f"{where}.mu has {len(mu)} terms but {where}.exponents has {len(exponents)}")
+        for k, (m, a) in enumerate(zip(mu, exponents, strict=True)):
+            if not m * a > 0.0:
+                raise InputError(f"{where}.mu[{k}] = {m:g} with exponent {a:g}, but a stable Ogden term needs "
+                                 "mu_p alpha_p > 0")
+    mu0 = Material(law, tuple(v.items())).mu0
+    if not (math.isfinite(mu0) and mu0 > 0.0):
+        raise InputError(f"{where}: the small-strain shear modulus mu_0 of these parameters is not > 0")
