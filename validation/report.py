@@ -72,14 +72,11 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
     return names
 
 
-def _write_vtk(results, directory: pathlib.Path) -> str | None:
-    if not results.curves:
-        return None
+def _write_vtk(curves, directory: pathlib.Path) -> None:
+    """The headline pocket's reference compression path as a VTK series, time = Fhat."""
     from pocket.apps.vtkfiles import write_series
 
-    curves = results.curves_of(headline(results.pockets))
     write_series(directory / "vtk", curves.reference, times=curves.forces)
-    return "vtk"
 
 
 def _picture(curves, directory):
@@ -90,7 +87,8 @@ def _picture(curves, directory):
 def write_report(results, out, *, executor=None, title="pocket validation report") -> pathlib.Path:
     """Write the report of ``results`` (a ``run.Results``) to the folder ``out``; returns its path.
 
-    The figures and the 3-D picture are drawn on ``executor`` (an Executor) if given, else here.
+    The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
+    else here.
     """
     target = check_target(out)
     with staged(target) as partial:
@@ -99,16 +97,16 @@ def write_report(results, out, *, executor=None, title="pocket validation report
         else:
             figs = [figures.convergence_figure(results)]
         submit = executor.submit if executor is not None else _Now
-        jobs = [submit(draw.draw, fig, partial) for fig in figs]
-        if results.curves:
-            jobs.append(submit(_picture, results.curves_of(headline(results.pockets)), partial))
+        head = results.curves_of(headline(results.pockets)) if results.curves else None
+        extra = [submit(_write_vtk, head, partial), submit(_picture, head, partial)] if head else []
+        jobs = [submit(draw.draw, fig, partial) for fig in figs] + extra
         for fig in figs:
             draw.write_csv(fig, partial)
         tables = _write_tables(results, partial)
-        vtk = _write_vtk(results, partial)
-        picture, why = jobs[-1].result() if results.curves else (None, "")
         for job in jobs:
             job.result()
+        picture, why = extra[-1].result() if extra else (None, "")
+        vtk = "vtk" if extra else None
         blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))
