@@ -73,7 +73,8 @@ def convergence_tasks(pocket, plan: Plan) -> list[tuple]:
 
 
 def progress_bar(enabled: bool, stream=None) -> tqdm:
-    """A tqdm bar counting solves on ``stream`` (stderr), disabled unless ``enabled`` and a terminal."""
+    """A tqdm bar counting solves on ``stream`` (stderr), disabled unless ``enabled`` and a terminal;
+    cleared when closed."""
     stream = sys.stderr if stream is None else stream
     return tqdm(total=0, unit=" solves", file=stream, disable=not (enabled and stream.isatty()), leave=False,
                 dynamic_ncols=True)

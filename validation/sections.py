@@ -32,6 +32,11 @@ def _g(x, digits=4) -> str:
     return "" if isinstance(x, float) and math.isnan(x) else f"{x:.{digits}g}"
 
 
+def _tolerance(tol) -> str:
+    """A tolerance, or several by quantity ("height 0.1, volume 0.15")."""
+    return ", ".join(f"{k} {v:g}" for k, v in tol.items()) if isinstance(tol, dict) else f"{tol:g}"
+
+
 def counts(results) -> dict:
     """Number of checks per verdict."""
     out = {"pass": 0, "fail": 0, "info": 0}
@@ -212,7 +217,7 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
             ("p", "One row per pocket, comparison and step: the verdict is 'fail' if any of its checks fails."),
             _summary_table(results),
             ("h", 2, "Tolerances"),
-            ("list", [f"{name}: {tol}: {why}" for name, (tol, why) in TOLERANCES.items()]),
+            ("list", [f"{name}: {_tolerance(tol)}: {why}" for name, (tol, why) in TOLERANCES.items()]),
             ("h", 2, "Timing"),
             ("p", f"Wall time of each solve task in its worker ({WORKERS} processes; the run took "
                   f"{results.seconds:.1f} s in all). The plan (pocket.validation.plan) sets how much each task "

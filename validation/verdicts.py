@@ -34,7 +34,7 @@ TOLERANCES = {
     "analytical_height": (0.06, "H/H0 is the robust output of the model (paper, fig. 3b): within 6 % for "
                                 "Fhat <= 2, a bound on a known approximation, not a convergence bar (measured "
                                 "5.3-5.9 %: near Fhat = 0.12, and for sample 4 at 2 kPa near Fhat = 1.6; "
-                                "each case's worst is in the summary)"),
+                                "each pocket's worst is in its verdicts)"),
     "analytical_small_force": (0.08, "P/P_I and A_c/(pi R^2) within 8 % for Fhat <= 0.05 (paper: good for "
                                      "Fhat < 0.1; eq (26) is singular as a_c -> 0, so P/P_I -> 1.02 there)"),
 }
