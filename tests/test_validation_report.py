@@ -195,12 +195,13 @@ def test_legends_name_pockets_and_solvers_once(report):
 
 
 def test_log_axes_have_enough_tick_labels():
-    """Exact answer: a log axis over 1-80 (fig 4's P/P_I) is labelled 1, 2, 5, 10, 20, 50 (it had two labels)."""
+    """Exact answer: a log axis over 1-80 (fig 4's P/P_I) is labelled 1, 2, 5, 10, 20, 50 (it had two labels);
+    outside 0.001-10000 labels are powers of ten (not 1e-05 beside 0.0001)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from pocket.validation.draw import _log_ticks
+    from pocket.validation.draw import _log_ticks, _tick
 
     fig, ax = plt.subplots()
     ax.set_xscale("log")
@@ -210,6 +211,8 @@ def test_log_axes_have_enough_tick_labels():
     labels = [t.get_text() for t in ax.get_xticklabels() if 1.0 <= t.get_position()[0] <= 80.0]
     plt.close(fig)
     assert labels == ["1", "2", "5", "10", "20", "50"]
+    assert [_tick(v) for v in (1e-5, 2e-7, 1e-3, 1e4, 1e5)] == ["$10^{-5}$", r"$2\times 10^{-7}$", "0.001", "10000",
+                                                               "$10^{5}$"]
 
 
 def test_progress_bar_only_on_a_terminal():

@@ -33,13 +33,22 @@ def _style(series, colors) -> dict:
     return style
 
 
+def _tick(value: float, _=None) -> str:
+    """A log axis' tick label: plain from 0.001 to 10000 (0.01, 2, 50), else a power of ten (10^-5, 2 x 10^-7)."""
+    if 1e-3 <= value <= 1e4:
+        return f"{value:g}"
+    exponent = math.floor(math.log10(value) + 1e-9)
+    mantissa = round(value / 10.0**exponent, 6)
+    return f"$10^{{{exponent}}}$" if mantissa == 1 else f"${mantissa:g}\\times 10^{{{exponent}}}$"
+
+
 def _log_ticks(axis, low: float, high: float) -> None:
-    """Ticks at 1, 2, 5 times powers of ten over up to three decades (else at powers of ten), as plain numbers."""
+    """Ticks at 1, 2, 5 times powers of ten over up to three decades (else at powers of ten), labelled by _tick."""
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
     subs = (1.0, 2.0, 5.0) if math.log10(high / low) <= 3.0 else (1.0,)
     axis.set_major_locator(LogLocator(base=10.0, subs=subs))
-    axis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+    axis.set_major_formatter(FuncFormatter(_tick))
     axis.set_minor_formatter(NullFormatter())
 
 

@@ -195,7 +195,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
     header, rows = glance(results)
     out = [("h", 1, "pocket validation report"),
            ("p", f"Overall: {verdict}. {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational. "
-                 f"Plan '{results.plan.name}', {len(results.pockets)} pockets, {results.seconds:.1f} s "
+                 f"Plan '{results.plan.name}', {len(results.curves) or 'the headline'} pocket"
+                 f"{'s' if len(results.curves) > 1 else ''}, {results.seconds:.1f} s "
                  f"on {WORKERS} processes. The model and its solvers follow {PAPER}; "
                  "dimensionless units throughout: lengths / R, Phat = P R / (E T), Fhat = F / (P_I pi R^2)."),
            ("h", 2, "Verdicts"),
