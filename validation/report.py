@@ -57,6 +57,7 @@ def _states_rows(results):
 
 
 def _write_tables(results, directory: pathlib.Path) -> list[str]:
+    """Write the CSV tables; returns a line per file for the report's list of files."""
     fields = [f.name for f in dataclasses.fields(checks_module.Check)]
     _write_rows(directory / "checks.csv", fields, [[getattr(c, f) for f in fields] for c in results.checks])
     summary = checks_module.summary(results.checks)
@@ -65,10 +66,13 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
     _write_rows(directory / "cases.csv", *sections.case_table(results))
     _write_rows(directory / "convergence_study.csv", *sections.sequence_rows(results))
     _write_rows(directory / "timing.csv", *sections.task_rows(results))
-    names = ["checks.csv", "summary.csv", "cases.csv", "convergence_study.csv", "timing.csv"]
+    names = ["checks.csv: every check (value, reference, error, tolerance, verdict)",
+             "summary.csv: the verdicts per pocket, comparison and step",
+             "cases.csv: the pockets, SI and dimensionless",
+             "convergence_study.csv: every FE value of the convergence study", "timing.csv: each solve task's seconds"]
     if results.curves:
         _write_rows(directory / "states.csv", *_states_rows(results))
-        names.append("states.csv")
+        names.append("states.csv: every state of every solver (the dimensionless keys)")
     return names
 
 

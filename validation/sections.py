@@ -178,7 +178,7 @@ def _pockets_blocks(results) -> list:
 
 
 def _files_block(figs, tables, vtk) -> tuple:
-    items = [f"{', '.join(f.name for f in figs)}.csv: every number of the figures, one row per point"]
+    items = [f"{', '.join(f'{f.name}.csv' for f in figs)}: every number of the figures, one row per point"]
     items += tables
     if vtk:
         items.append(f"{vtk}/: the headline case's compression path (shooting), one profile and one surface per "
