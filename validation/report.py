@@ -102,8 +102,9 @@ def write_report(results, out, *, executor=None, title="pocket validation report
             figs = [figures.convergence_figure(results)]
         submit = executor.submit if executor is not None else _Now
         head = results.curves_of(headline(results.pockets)) if results.curves else None
+        # the longest jobs first: the VTK series (seconds of zlib), then the 3-D picture (pyvista's start)
         extra = [submit(_write_vtk, head, partial), submit(_picture, head, partial)] if head else []
-        jobs = [submit(draw.draw, fig, partial) for fig in figs] + extra
+        jobs = extra + [submit(draw.draw, fig, partial) for fig in figs]
         for fig in figs:
             draw.write_csv(fig, partial)
         tables = _write_tables(results, partial)
