@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+import textwrap
 import time
 from concurrent.futures import ProcessPoolExecutor
 
@@ -49,7 +50,9 @@ def register(subparsers) -> None:
              "validation-report"),
             ("converge", _converge, "mesh-convergence study of the FE model against shooting", _CONVERGE,
              "convergence-report")):
-        p = subparsers.add_parser(name, help=text, description=description, epilog=EXIT_CODES_VALIDATE,
+        # raw: the description's paragraphs as written, so the epilog is wrapped here
+        p = subparsers.add_parser(name, help=text, description=description,
+                                  epilog=textwrap.fill(EXIT_CODES_VALIDATE, 79),
                                   formatter_class=argparse.RawDescriptionHelpFormatter)
         p.add_argument("--out", default=out, metavar="DIR",
                        help=f"report folder (default: {out}); a previous report there is replaced, any other "
