@@ -1,72 +1,99 @@
-"""The validation cases file: it loads, and each case's dimensionless numbers are right."""
+"""The validation cases file: read as case files, each pocket's dimensionless numbers right, bad files refused."""
 
 import math
+import tomllib
 
 import pytest
-from pocket.validation.suite import load
+from pocket.validation.plan import DEFAULT, QUICK, Column
+from pocket.validation.suite import CASES_FILE, load
 
+from pocket.apps.cases import sample
 from pocket.core.errors import InputError
 
 
-def test_cases_load_and_cover_the_paper():
-    """Exact answer: Table 1 (T = 0.25, 0.5, 0.8, 1.6 mm, C1 = 160, C2 = 47 kPa, R = 20 mm),
-    P_I spanning 2-5 kPa, and alpha = 0 and 1 bracketing the paper's 0.3-1.2."""
-    cases, design = load()
-    table1 = [c for c in cases if c.sample is not None]
-    assert sorted({c.thickness for c in table1}) == pytest.approx([0.25e-3, 0.5e-3, 0.8e-3, 1.6e-3])
-    assert {(c.c1, c.c2, c.radius) for c in table1} == {(160e3, 47e3, 20e-3)}
-    assert min(c.pressure for c in table1) == 2e3 and max(c.pressure for c in table1) == 5e3
+def test_cases_cover_the_paper():
+    """Exact answer: the paper's Table 1 (the built-in samples 1-4 of ``pocket run --sample``: sheets and
+    clamp), P_I spanning 2-5 kPa, and alpha = 0 and 1 bracketing the paper's 0.3-1.2."""
+    pockets, button = load()
+    cases = [p.case for p in pockets]
+    for number in (1, 2, 3, 4):
+        table1 = sample(number)
+        same = [c for c in cases if (c.thickness, c.c1, c.c2, c.radius) ==
+                (table1.thickness, table1.c1, table1.c2, table1.radius)]
+        assert same, f"no case with the sheet of sample {number}"
+    silicone = [p for p in pockets if p.case.c2 / p.case.c1 == 47 / 160]
+    assert min(p.pressure_initial_Pa for p in silicone) == pytest.approx(2e3, rel=1e-12)
+    assert max(p.pressure_initial_Pa for p in silicone) == pytest.approx(5e3, rel=1e-12)
     assert {c.alpha for c in cases} >= {0.0, 1.0, 47 / 160}
     assert sum("headline" in c.tags for c in cases) == 1
-    assert sorted(c.sample for c in cases if "fig4" in c.tags) == [1, 2, 3, 4]
-    assert design.radius == 20e-3 and design.force == 0.67
+    four = [p for p in pockets if "fig4" in p.case.tags]
+    assert sorted(p.case.thickness for p in four) == [sample(n).thickness for n in (1, 2, 3, 4)]
+    assert len({p.pressure_initial_Pa for p in four}) == 1  # the same P_I
+    assert all(c.label for c in cases) and len({c.label for c in cases}) == len(cases)
+    assert button.radius == 20e-3 and button.force == 0.67 and button.height_ratio == 0.8
 
 
 def test_dimensionless_numbers():
-    """Exact answer: the paper's definitions, recomputed from the TOML's own numbers:
+    """Exact answer: the paper's definitions recomputed from the TOML's own text, units read by hand:
     alpha = C2/C1, E = 6 (1 + alpha) C1, Phat_I = P_I R / (E T)."""
-    import tomllib
 
-    from pocket.validation.suite import CASES_FILE
-
-    def si(text):  # the file's three units, by hand: an independent reading of pocket.core.units'
+    def si(text):  # the file's two units, by hand: an independent reading of pocket.core.units'
         number, unit = text.split()
-        return float(number) * {"mm": 1e-3, "kPa": 1e3, "N": 1.0}[unit]
+        return float(number) * {"mm": 1e-3, "kPa": 1e3}[unit]
 
     raw = {t["name"]: t for t in tomllib.loads(CASES_FILE.read_text())["case"]}
-    for case in load()[0]:
-        t = {k: si(v) for k, v in raw[case.name].items() if k in ("c1", "c2", "pressure", "radius", "thickness")}
-        alpha = t["c2"] / t["c1"]
-        modulus = 6 * (1 + alpha) * t["c1"]
-        phat = t["pressure"] * t["radius"] / (modulus * t["thickness"])
-        assert case.alpha == pytest.approx(alpha, rel=1e-15)
-        assert case.modulus == pytest.approx(modulus, rel=1e-15)
-        assert case.pressure_hat == pytest.approx(phat, rel=1e-14)
-    headline = next(c for c in load()[0] if "headline" in c.tags)
+    pockets = load()[0]
+    for pocket in pockets:
+        t = raw[pocket.case.name]
+        c1, c2, thickness = (si(t["sheet"][k]) for k in ("c1", "c2", "thickness"))
+        radius, pressure = si(t["clamp"]["radius"]), si(t["initial"]["pressure"])
+        alpha = c2 / c1
+        modulus = 6 * (1 + alpha) * c1
+        assert pocket.alpha == pytest.approx(alpha, rel=1e-15)
+        assert pocket.case.modulus == pytest.approx(modulus, rel=1e-15)
+        assert pocket.pressure_initial == pytest.approx(pressure * radius / (modulus * thickness), rel=1e-14)
+    head = next(p for p in pockets if "headline" in p.case.tags)
     # the paper's fig. 2 case: sample 1 at Phat_I = 0.31, E = 1.242 MPa (Table 1)
-    assert headline.pressure_hat == pytest.approx(0.31, rel=1e-12)
-    assert headline.modulus == pytest.approx(1.242e6, rel=1e-12)
+    assert head.pressure_initial == pytest.approx(0.31, rel=1e-12)
+    assert head.case.modulus == pytest.approx(1.242e6, rel=1e-12)
 
 
-def test_design_rules():
-    """Exact answer: Table 2, P_I = 5.7 F / (pi R^2), T = 0.216 P_I R^4 / (E H0^3)."""
-    design = load()[1]
-    pressure = 5.7 * 0.67 / (math.pi * 0.02**2)
-    assert design.pressure == pytest.approx(pressure, rel=1e-14)
-    assert design.thickness == pytest.approx(0.216 * pressure * 0.02**4 / (1e6 * 0.01**3), rel=1e-14)
+def test_button_rules():
+    """Exact answer: Table 2 by hand from the file's inputs, P_I = 5.7 F / (pi R^2), T = 0.216 P_I R^4 / (E H0^3)."""
+    pressure, thickness = load()[1].paper
+    expected = 5.7 * 0.67 / (math.pi * 0.02**2)
+    assert pressure == pytest.approx(expected, rel=1e-14)
+    assert thickness == pytest.approx(0.216 * expected * 0.02**4 / (1e6 * 0.01**3), rel=1e-14)
+
+
+def test_initial_height_is_resolved(tmp_path):
+    """Exact answer: a pocket given by its inflated height H0 gets the Phat_I whose inflated height is
+    H0 / R (the case-file resolution, checked by inflating again)."""
+    from pocket import shooting
+
+    text = CASES_FILE.read_text().replace('pressure = "4.81275 kPa"', 'height = "9 mm"', 1)
+    path = tmp_path / "cases.toml"
+    path.write_text(text)
+    head = next(p for p in load(path)[0] if "headline" in p.case.tags)
+    assert shooting.inflate(head.alpha, head.pressure_initial).height == pytest.approx(9 / 20, rel=1e-10)
 
 
 @pytest.mark.parametrize("edit, bad, named", [
     ('thickness = "0.25 mm"', 'thickness = "-0.25 mm"', "thickness"),
-    ('radius = "20.0 mm"', 'radius_cm = 2.0', "radius_cm"),
-    ('c2 = "47.0 kPa"', 'c2 = "-200.0 kPa"', "alpha = C2/C1"),
-    ('c1 = "160.0 kPa"', 'c1 = "160.0 mm"', "c1"),
+    ('radius = "20 mm"', 'radius_cm = 2.0', "radius_cm"),
+    ('c2 = "47 kPa"', 'c2 = "-200 kPa"', "C2/C1"),
+    ('c1 = "160 kPa"', 'c1 = "160 mm"', "c1"),
     ('name = "sample1-2kPa"', 'name = "sample1-headline"', "names repeat"),
+    ('label = "sample 1 at 2 kPa"', 'tags = []', "label"),
+    ('[case.clamp]', '[case.loads]\nforces = ["1 N"]\n[case.clamp]', "loads"),
+    ('[case.clamp]', '[case.solver]\nname = "fem"\n[case.clamp]', "solver"),
+    ('height_ratio = 0.8', 'height_ratio = 1.2', "height_ratio"),
+    ('force = "0.67 N"', 'force = "0.67 m"', "design.force"),
+    ('alpha = 0.29375', 'alpha = -1.5', "alpha"),
+    ('alpha = 0.29375', 'colour = "red"', "colour"),
 ])
 def test_bad_case_files_are_refused(tmp_path, edit, bad, named):
     """Exact answer: a one-line InputError naming the key, before any solve."""
-    from pocket.validation.suite import CASES_FILE
-
     text = CASES_FILE.read_text()
     assert edit in text
     path = tmp_path / "cases.toml"
@@ -74,3 +101,23 @@ def test_bad_case_files_are_refused(tmp_path, edit, bad, named):
     with pytest.raises(InputError) as err:
         load(path)
     assert "\n" not in str(err.value) and named in str(err.value), err.value
+
+
+@pytest.mark.parametrize("solver, options, named", [
+    ("fem", (("order", 3),), "order"),
+    ("shooting", (("order", 1),), "does not apply"),
+    ("fem", (("penalty", -1.0),), "penalty"),
+    ("spectral", (), "spectral"),
+])
+def test_columns_are_checked_by_the_solver_records(solver, options, named):
+    """Exact answer: a solver column is checked by its solver's record, as a command-line flag is."""
+    with pytest.raises(InputError, match=named):
+        Column(solver, "column", options)
+
+
+def test_plans_columns_take_their_options():
+    """Exact answer: the FE columns of both plans are the fem solver at orders 1 and 2, the options its
+    record checked (an int order, not a string)."""
+    for plan in (DEFAULT, QUICK):
+        assert [(c.solver, dict(c.options)) for c in plan.fem_columns] == [("fem", {"order": 1}), ("fem", {"order": 2})]
+        assert [c.kwargs("inflate") for c in plan.fem_columns] == [{"order": 1}, {"order": 2}]

@@ -1,39 +1,49 @@
-"""``pocket validate --quick`` end to end, and the report's files parsed back."""
+"""``pocket validate --quick`` end to end, and the report's files parsed back as a reader meets them."""
 
 import csv
+import errno
 import html.parser
 import pathlib
+import subprocess
 
 import meshio
 import numpy as np
 import pytest
+from pocket.validation import document, runner
 from pocket.validation.convergence import observed_order, richardson
+from pocket.validation.plan import RANGE_FRACTION
 
 from pocket.cli import main
 
 
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
+    """The quick run through the command line, and the Results it wrote (captured on the way)."""
     out = tmp_path_factory.mktemp("validate") / "report"
-    status = main(["validate", "--quick", "--out", str(out)])
-    return status, out
+    captured, real = [], runner.run
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(runner, "run", lambda *args, **kwargs: captured.append(real(*args, **kwargs)) or captured[-1])
+        status = main(["validate", "--quick", "--out", str(out)])
+    return status, out, captured[0]
 
 
-def test_quick_run_passes(report, capsys):
+def _rows(path):
+    with path.open() as handle:
+        return list(csv.DictReader(handle))
+
+
+def test_quick_run_passes(report):
     """Exact answer: every verdict passes (exit status 0), and summary.csv agrees."""
-    status, out = report
+    status, out, _ = report
     assert status == 0
-    with (out / "summary.csv").open() as handle:
-        rows = list(csv.DictReader(handle))
+    rows = _rows(out / "summary.csv")
     assert rows and {r["verdict"] for r in rows} <= {"pass", "info"}
     assert {r["comparison"] for r in rows} >= {"FEM P1 vs shooting", "FEM P2 vs shooting", "analytical vs shooting"}
 
 
 def test_every_check_has_a_verdict_that_matches_its_numbers(report):
     """Exact answer: pass iff error <= tolerance; info iff no tolerance."""
-    _, out = report
-    with (out / "checks.csv").open() as handle:
-        rows = list(csv.DictReader(handle))
+    rows = _rows(report[1] / "checks.csv")
     assert len(rows) > 50
     for r in rows:
         if r["tolerance"] in ("", "None"):
@@ -44,58 +54,80 @@ def test_every_check_has_a_verdict_that_matches_its_numbers(report):
 
 def test_figure_csvs_hold_the_plotted_numbers(report):
     """Exact answer: each PNG has its CSV, with finite numbers; fig2's shooting profile ends at the clamp (1, 0)."""
-    _, out = report
+    out = report[1]
     for name in ("fig2", "fig3a", "fig3b", "fig4", "fig5", "convergence"):
         png = out / f"{name}.png"
         assert png.stat().st_size > 10_000 and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-        with (out / f"{name}.csv").open() as handle:
-            rows = list(csv.DictReader(handle))
+        rows = _rows(out / f"{name}.csv")
         assert rows and all(np.isfinite([float(r["x"]), float(r["y"])]).all() for r in rows)
-    with (out / "fig2.csv").open() as handle:
-        clamp = [r for r in csv.DictReader(handle) if r["series"] == "shooting"][-1]
+    clamp = [r for r in _rows(out / "fig2.csv") if r["series"] == "shooting"][-1]
     assert float(clamp["x"]) == pytest.approx(1.0, abs=1e-9) and float(clamp["y"]) == pytest.approx(0.0, abs=1e-9)
 
 
 def test_vtk_series_opens(report):
-    """Exact answer: the .pvd lists every step; each surface reads back with meshio and carries the point data."""
-    _, out = report
+    """Exact answer: the .pvd lists every shooting state of the headline pocket; every step has one point
+    count and the state's scalars as field data (states.csv's numbers)."""
+    out = report[1]
     pvd = (out / "vtk" / "surface.pvd").read_text()
     files = [line.split('file="')[1].split('"')[0] for line in pvd.splitlines() if "file=" in line]
-    with (out / "states.csv").open() as handle:
-        shooting = [r for r in csv.DictReader(handle) if r["case"] == "sample1-headline" and r["solver"] == "shooting"]
+    shooting = [r for r in _rows(out / "states.csv") if r["case"] == "sample1-headline" and r["solver"] == "shooting"]
     assert len(files) == len(shooting) > 10
-    for name in (files[0], files[-1]):
-        mesh = meshio.read(out / "vtk" / name)
+    meshes = [meshio.read(out / "vtk" / name) for name in (files[0], files[-1])]
+    assert len(meshes[0].points) == len(meshes[1].points)
+    for mesh, row in zip(meshes, (shooting[0], shooting[-1]), strict=True):
         assert {"lambda_1", "T_1", "contact"} <= set(mesh.point_data)
-    assert mesh.point_data["contact"].any()  # the last step is compressed
+        for key in ("force", "pressure", "height", "volume", "contact_radius"):
+            assert mesh.field_data[key][0] == float(row[key]), key
+    assert meshes[-1].point_data["contact"].any()  # the last step is compressed
 
 
-class _Links(html.parser.HTMLParser):
+class _Page(html.parser.HTMLParser):
+    """The page as a reader meets it: headings, images and table rows in order, and the numeric cells."""
+
     def __init__(self):
         super().__init__()
-        self.images, self.headings, self.depth = [], [], 0
+        self.images, self.headings, self.order, self.cells = [], [], [], []
+        self._cell = None
 
     def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
         if tag == "img":
-            self.images.append(dict(attrs)["src"])
+            self.images.append(attrs["src"])
+            self.order.append(("img", attrs["src"]))
+        elif tag == "tr":
+            self.order.append(("tr", None))
+        elif tag == "td":
+            self._cell = [attrs.get("class", ""), ""]
+
+    def handle_endtag(self, tag):
+        if tag == "td":
+            self.cells.append(tuple(self._cell))
+            self._cell = None
 
     def handle_data(self, data):
-        if self.lasttag in ("h1", "h2", "h3"):
+        if self._cell is not None:
+            self._cell[1] += data
+        if self.lasttag in ("h1", "h2", "h3") and data.strip():
             self.headings.append(data)
+            self.order.append((self.lasttag, data))
 
 
-def test_html_and_markdown_are_complete(report):
+@pytest.fixture(scope="module")
+def page(report):
+    parser = _Page()
+    parser.feed((report[1] / "index.html").read_text())
+    return parser
+
+
+def test_html_and_markdown_are_complete(report, page):
     """Exact answer: the HTML parses, its images are files beside it (relative paths: no server), and the
     Markdown has the same sections, including the paper's disagreements."""
-    _, out = report
-    parser = _Links()
-    parser.feed((out / "index.html").read_text())
-    assert parser.images and all((out / src).is_file() and not pathlib.Path(src).is_absolute()
-                                 for src in parser.images)
+    out = report[1]
+    assert page.images and all((out / src).is_file() and not pathlib.Path(src).is_absolute() for src in page.images)
     markdown = (out / "report.md").read_text()
-    for heading in ("Summary", "Figures", "Mesh convergence", "Where the paper and the model disagree",
-                    "Provenance"):
-        assert heading in parser.headings and f"## {heading}" in markdown
+    for heading in ("Verdicts", "Figures", "Mesh convergence", "Where the paper and the model disagree",
+                    "Verdicts per pocket", "Timing", "Provenance", "All checks"):
+        assert heading in page.headings and f"## {heading}" in markdown
     import numpy
 
     assert f"| numpy | {numpy.__version__} |" in markdown  # the versions that ran
@@ -104,13 +136,189 @@ def test_html_and_markdown_are_complete(report):
     assert not list(out.parent.glob(".*partial"))  # the temporary folder is gone
 
 
-def test_refuses_a_folder_that_is_not_a_report(tmp_path, capsys):
-    """Exact answer: exit 2 with one line, the folder untouched, nothing left behind."""
+def test_figures_come_before_the_long_tables(page):
+    """Exact answer (layout): at most 20 table rows stand between the title and the first figure; the
+    per-pocket verdicts and all checks come after every figure."""
+    first = next(k for k, (kind, _) in enumerate(page.order) if kind == "img")
+    assert sum(kind == "tr" for kind, _ in page.order[:first]) <= 20
+    last_image = max(k for k, (kind, _) in enumerate(page.order) if kind == "img")
+    long_tables = [k for k, item in enumerate(page.order) if item in (("h2", "Verdicts per pocket"),
+                                                                        ("h2", "All checks"))]
+    assert len(long_tables) == 2 and min(long_tables) > last_image
+
+
+def test_numbers_never_wrap(page):
+    """Exact answer: every table cell that is a number (an exponent like 1.2e-06 included) carries the class
+    that keeps it on one line, and the page's style says so."""
+    numbers = [(css, text) for css, text in page.cells if document._is_number(text)]
+    assert any("e-" in text for _, text in numbers)
+    assert all(css == "num" for css, _ in numbers), [n for n in numbers if n[0] != "num"][:5]
+    assert "td.num{white-space:nowrap" in document.html_page("t", [])
+
+
+def test_nothing_points_outside_the_report(report):
+    """Exact answer: no issue numbers, no design notes, no paths into the repository's tests or shared files."""
+    text = (report[1] / "report.md").read_text()
+    for word in ("issue", "DESIGN", "STYLE", "shared/", "tests/", "test_"):
+        assert word not in text, word
+
+
+def test_captions_say_what_the_panels_show(report):
+    """Exact answer: fig 3's and fig 5's captions name the same stopping point as their panel (b), the
+    fraction RANGE_FRACTION of the end of the range, and no longer 'the whole range'."""
+    from pocket.validation.figures import figures
+
+    for fig in figures(report[2]):
+        if fig.name in ("fig3a", "fig3b", "fig5"):
+            assert f"{RANGE_FRACTION:g} of the end" in fig.caption and "whole range" not in fig.caption
+            assert f"{RANGE_FRACTION:g} of the end" in fig.panels[1].title
+
+
+def test_legends_name_pockets_and_solvers_once(report):
+    """Exact answer: fig 3a's legends have one entry per pocket (its label, never its id) and one per
+    solver; the headline pocket comes first, broad and beneath the others (lower zorder), so that a curve
+    lying on it shows inside it."""
+    from pocket.validation.draw import _style
+    from pocket.validation.figures import figures
+
+    results = report[2]
+    fig = next(f for f in figures(results) if f.name == "fig3a")
+    series = [s for panel in fig.panels for s in panel.series]
+    groups = {s.group for s in series}
+    assert len(groups) == len(results.pockets) and len({s.solver for s in series}) == 4
+    assert not groups & {p.case.name for p in results.pockets}
+    head = [s for s in series if s.emphasis]
+    assert {s.group for s in head} == {next(s.group for s in series)}  # the headline, first
+    colors = ["C0"]
+    broad, thin = _style(head[0], colors), _style(next(s for s in series if not s.emphasis), colors)
+    assert broad["zorder"] < thin["zorder"] and broad["linewidth"] > thin["linewidth"]
+
+
+def test_log_axes_have_enough_tick_labels():
+    """Exact answer: a log axis over 1-80 (fig 4's P/P_I) is labelled 1, 2, 5, 10, 20, 50 (it had two labels);
+    outside 0.001-10000 labels are powers of ten (not 1e-05 beside 0.0001)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from pocket.validation.draw import _log_ticks, _tick
+
+    fig, ax = plt.subplots()
+    ax.set_xscale("log")
+    ax.set_xlim(1.0, 80.0)
+    _log_ticks(ax.xaxis, 1.0, 80.0)
+    fig.canvas.draw()
+    labels = [t.get_text() for t in ax.get_xticklabels() if 1.0 <= t.get_position()[0] <= 80.0]
+    plt.close(fig)
+    assert labels == ["1", "2", "5", "10", "20", "50"]
+    assert [_tick(v) for v in (1e-5, 2e-7, 1e-3, 1e4, 1e5)] == ["$10^{-5}$", r"$2\times 10^{-7}$", "0.001", "10000",
+                                                               "$10^{5}$"]
+
+
+def test_progress_bar_only_on_a_terminal():
+    """Exact answer: the bar writes to a terminal and writes nothing to a pipe or file."""
+    import io
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    for stream, shown in ((Terminal(), True), (io.StringIO(), False)):
+        bar = runner.progress_bar(True, stream)
+        bar.total = 3
+        bar.update(2)
+        bar.refresh()
+        assert ("2/3" in stream.getvalue()) == shown, stream.getvalue()
+        bar.close()
+    quiet = Terminal()
+    runner.progress_bar(False, quiet).close()
+    assert quiet.getvalue() == ""
+
+
+def test_timing_lists_every_task(report):
+    """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence)."""
+    results = report[2]
+    rows = _rows(report[1] / "timing.csv")
+    assert len(rows) == len(results.tasks) and {r["task"] for r in rows} == {"reference", "column", "convergence",
+                                                                             "evidence"}
+    assert len([r for r in rows if r["task"] == "reference"]) == len(results.pockets)
+    assert all(float(r["seconds"]) > 0 for r in rows)
+
+
+def test_refuses_a_folder_that_is_not_a_report(tmp_path, capsys, monkeypatch):
+    """Exact answer: exit 2 with one line before any solve, the folder untouched, nothing left behind."""
+    monkeypatch.setattr(runner, "run", lambda *a, **k: pytest.fail("solved before checking the folder"))
     (tmp_path / "mine.txt").write_text("keep")
     assert main(["validate", "--quick", "--out", str(tmp_path)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "not empty" in err
     assert [p.name for p in tmp_path.iterdir()] == ["mine.txt"]
+
+
+@pytest.mark.parametrize("where", ["file", "below a file"])
+def test_refuses_an_unwritable_folder_before_any_work(tmp_path, capsys, monkeypatch, where):
+    """Exact answer: --out naming a file, or a folder below a file, is exit 2 with one line naming it,
+    before any solve."""
+    monkeypatch.setattr(runner, "run", lambda *a, **k: pytest.fail("solved before checking the folder"))
+    blocker = tmp_path / "blocker"
+    blocker.write_text("a file")
+    out = blocker if where == "file" else blocker / "report"
+    assert main(["validate", "--quick", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "blocker" in err
+    assert blocker.read_text() == "a file" and [p.name for p in tmp_path.iterdir()] == ["blocker"]
+
+
+def test_a_bad_cases_file_is_refused_before_any_work(tmp_path, capsys, monkeypatch):
+    """Exact answer: exit 2 with one line naming the key, nothing written."""
+    from pocket.validation.suite import CASES_FILE
+
+    monkeypatch.setattr(runner, "run", lambda *a, **k: pytest.fail("solved before reading the cases"))
+    cases = tmp_path / "cases.toml"
+    cases.write_text(CASES_FILE.read_text().replace('thickness = "0.25 mm"', 'thickness = "0 mm"', 1))
+    assert main(["validate", "--cases", str(cases), "--out", str(tmp_path / "report")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "thickness" in err and not (tmp_path / "report").exists()
+
+
+def test_a_write_error_is_one_line_exit_1_and_leaves_nothing(report, tmp_path, capsys, monkeypatch):
+    """Exact answer: a full disk while writing the report is exit 1 with one line (OutputError), and
+    neither the report folder nor a temporary one is left."""
+
+    def full(*args, **kwargs):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(runner, "run", lambda *a, **k: report[2])
+    monkeypatch.setattr(document, "html_page", full)
+    out = tmp_path / "report"
+    assert main(["validate", "--quick", "--out", str(out)]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "No space left on device" in err and str(out) in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_report_folders_are_ignored_by_git():
+    """Exact answer: git ignores the default report folders of validate and converge."""
+    root = pathlib.Path(__file__).resolve().parents[1]
+    if not (root / ".git").exists():
+        pytest.skip("not a git checkout")
+    for folder in ("validation-report", "convergence-report"):
+        done = subprocess.run(["git", "check-ignore", "-q", f"{folder}/index.html"], cwd=root)
+        assert done.returncode == 0, folder
+
+
+@pytest.mark.parametrize("command, default", [("validate", "validation-report"), ("converge", "convergence-report")])
+def test_help(capsys, command, default):
+    """Exact answer: the help has a description, every option with its default, and the exit codes."""
+    with pytest.raises(SystemExit) as done:
+        main([command, "--help"])
+    assert done.value.code == 0
+    text = " ".join(capsys.readouterr().out.split())
+    for option in ("--out DIR", "--quick", "--cases FILE"):
+        assert option in text
+    assert f"(default: {default})" in text and "default: the suite's own cases.toml" in text
+    assert "exit status: 0" in text and "; 1 " in text and "; 2 bad input" in text
+    assert ("shooting solver" in text) and len(text) > 600
 
 
 def test_richardson_and_order_are_exact_on_a_power_law():
@@ -130,6 +338,6 @@ def test_converge_prints_orders_and_richardson(tmp_path, capsys):
     assert main(["converge", "--quick", "--out", str(tmp_path / "conv")]) == 0
     out = capsys.readouterr().out
     assert "observed order" in out and "Richardson" in out and "shooting" in out
-    with (tmp_path / "conv" / "checks.csv").open() as handle:
-        orders = [r for r in csv.DictReader(handle) if r["step"] == "order" and r["where"].startswith("inflation")]
+    orders = [r for r in _rows(tmp_path / "conv" / "checks.csv")
+              if r["step"] == "order" and r["where"].startswith("inflation")]
     assert {float(r["reference"]) for r in orders} == {2.0, 4.0} and all(r["verdict"] == "pass" for r in orders)

@@ -1,4 +1,4 @@
-"""VTK output: profile and revolved surface of synthetic states, series, atomic writes.
+"""VTK output: profile and revolved surface of synthetic states, resampling, field data, series, atomic writes.
 
 The states are built analytically (a spherical cap; a flat-topped pocket whose
 free part is a circular arc), not solved, so these tests do not depend on the
@@ -15,7 +15,7 @@ import meshio
 import numpy as np
 import pytest
 
-from pocket.apps import vtkfiles
+from pocket.apps import resampling, vtkfiles
 from pocket.core.errors import InputError
 from pocket.core.states import CompressedState, InflatedState, Profile
 
@@ -45,20 +45,27 @@ def cap(height, n=201, pressure=0.1):
     return InflatedState(0.3, pressure, *stretches, profile, "test")
 
 
-def pressed(n=201, contact_radius=0.3, stretch=1.2, height=0.3):
-    """Flat top (rho = stretch r, eta = height for r <= a_c), then a circular arc with
-    horizontal tangent at the contact edge down to the clamp (1, 0).
+def pressed_shape(r, contact_radius=0.3, stretch=1.2, height=0.3):
+    """(rho, eta) at Lagrangian radii ``r`` of the flat-topped pocket: rho = stretch r, eta = height for
+    r <= a_c, then a circular arc with horizontal tangent at the contact edge down to the clamp (1, 0),
+    its angle linear in r. Arc radius b = ((1 - c)^2 + H^2) / (2 H) about (c, H - b), c = stretch a_c."""
+    c, H = stretch * contact_radius, height
+    b = ((1 - c) ** 2 + H**2) / (2 * H)
+    free = r > contact_radius
+    psi = (r - contact_radius) / (1 - contact_radius) * math.acos((b - H) / b)
+    return np.where(free, c + b * np.sin(psi), stretch * r), np.where(free, H - b + b * np.cos(psi), H)
 
-    Arc radius b = ((1 - c)^2 + H^2) / (2 H) about (c, H - b), c = stretch a_c.
+
+def pressed(n=201, contact_radius=0.3, stretch=1.2, height=0.3, r=None):
+    """The flat-topped pocket (``pressed_shape``) sampled at ``r`` (default n equally spaced radii).
+
     Volume pi int_0^H (c + s)^2 dz, s = sqrt(b^2 - (z - H + b)^2): closed form below.
     """
     c, H = stretch * contact_radius, height
     b = ((1 - c) ** 2 + H**2) / (2 * H)
-    r = np.linspace(0.0, 1.0, n)
+    r = np.linspace(0.0, 1.0, n) if r is None else r
     free = r > contact_radius
-    psi = (r - contact_radius) / (1 - contact_radius) * math.acos((b - H) / b)
-    rho = np.where(free, c + b * np.sin(psi), stretch * r)
-    eta = np.where(free, H - b + b * np.cos(psi), H)
+    rho, eta = pressed_shape(r, contact_radius, stretch, height)
     rho[-1], eta[-1] = 1.0, 0.0
     u0, u1 = b - H, b  # u = z - (H - b) over the free part
 
@@ -221,9 +228,16 @@ def test_pyvista_reads_state(tmp_path):
     np.testing.assert_array_equal(grid.points, expected.points)
 
 
+def edged(n, contact_radius):
+    """n equally spaced Lagrangian radii and the contact edge: a solver's profile has a point there."""
+    return np.union1d(np.linspace(0.0, 1.0, n), [contact_radius])
+
+
 def series():
-    """A synthetic compression path: pocket flattening, plate force as time."""
-    states = [pressed(n=41, contact_radius=a, height=h) for a, h in [(0.1, 0.4), (0.2, 0.35), (0.3, 0.3)]]
+    """A synthetic compression path: pocket flattening, plate force as time; each profile has its own
+    point count, as the shooting solver's have."""
+    states = [pressed(contact_radius=a, height=h, r=edged(n, a))
+              for n, a, h in [(41, 0.1, 0.4), (57, 0.2, 0.35), (33, 0.3, 0.3)]]
     return states, [s.force for s in states]
 
 
@@ -257,7 +271,8 @@ def test_pyvista_reads_series(tmp_path):
         assert NAMES <= set(block.point_data.keys())
     assert [d.path for d in reader.datasets] == [f"step_{k:04d}_surface.vtu" for k in range(3)]
     first = pv.read(out / "profile.pvd")  # pyvista.read gives the first step as a MultiBlock
-    assert first[0].n_points == len(states[0].profile.r)
+    radii = resampling.series_radii([s.profile for s in states], vtkfiles.SERIES_POINTS)
+    assert first[0].n_points == len(radii)
 
 
 def test_series_default_times(tmp_path):
@@ -336,3 +351,99 @@ def test_no_profile(tmp_path):
         vtkfiles.write_state(tmp_path, state)
     with pytest.raises(InputError, match="no states"):
         vtkfiles.write_series(tmp_path / "path", [])
+
+
+def test_resample_keeps_the_flat_zone_and_the_kink():
+    """Exact answer: ``pressed_shape`` itself. The flat zone (rho = stretch r, eta = H) is reproduced to
+    round-off (cubic splines reproduce lines and constants); on the arc, splines through 201 points
+    (h = 0.005) are fourth-order accurate: below 1e-9 at 1001 other radii (measured 3.6e-11). ``contact``
+    is exactly r <= a_c. A single spline across the edge, as a resampler blind to the kink would use, is
+    off by about the curvature jump times h^2 (measured 8e-7): over 1e3 times further (measured 2e4)."""
+    from scipy.interpolate import CubicSpline
+
+    a = 0.3
+    state = pressed(contact_radius=a, r=edged(201, a))
+    at = np.linspace(0.0, 1.0, 1001)
+    out = resampling.resample(state.profile, at)
+    rho, eta = pressed_shape(at, contact_radius=a)
+    flat = at <= a
+    np.testing.assert_array_equal(out.contact, flat)
+    np.testing.assert_allclose(out.eta[flat], 0.3, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(out.rho[flat], 1.2 * at[flat], rtol=0, atol=1e-15)
+    piecewise = max(np.abs(out.rho - rho).max(), np.abs(out.eta - eta).max())
+    assert piecewise < 1e-9, piecewise
+    blind = np.abs(CubicSpline(state.profile.r, state.profile.eta)(at) - eta).max()
+    assert blind > 1e3 * piecewise, (blind, piecewise)
+
+
+def test_resample_at_the_solver_radii_is_the_identity():
+    """Exact answer: resampled at its own radii a profile is unchanged (a spline passes through its data)."""
+    state = pressed(contact_radius=0.25, r=edged(81, 0.25))
+    out = resampling.resample(state.profile, state.profile.r)
+    for name in ("r", "rho", "eta", "stretch_1", "stretch_2", "tension_1", "tension_2", "contact"):
+        np.testing.assert_allclose(getattr(out, name), getattr(state.profile, name), rtol=1e-14, atol=1e-15,
+                                   err_msg=name)
+
+
+@pytest.mark.parametrize("radii, message", [([0.0], "at least 2"), ([0.5, 0.2], "increasing"),
+                                            ([0.0, 1.5], "increasing"), ([], "empty")])
+def test_resample_refuses_bad_radii(radii, message):
+    """Exact answer: radii outside the profile's span, decreasing or too few are an InputError."""
+    with pytest.raises(InputError, match=message):
+        resampling.resample(cap(0.5).profile, radii)
+
+
+def test_series_radii_hold_every_contact_edge():
+    """Exact answer: the equally spaced radii plus each state's contact edge, each edge once; an edge within
+    1e-9 of an equally spaced radius replaces it (no two points nearly coincide)."""
+    states, _ = series()
+    radii = resampling.series_radii([s.profile for s in states], 11)
+    assert set(np.round(np.linspace(0, 1, 11), 12)) | {0.1, 0.2, 0.3} == set(np.round(radii, 12))
+    assert len(radii) == 11 and {0.1, 0.2, 0.3} <= set(radii.tolist())
+    assert np.diff(radii).min() > 0.05
+
+
+def test_series_has_one_point_set(tmp_path):
+    """Exact answer: every step of a series (profiles of 41, 57 and 33 points) has the same points count
+    and the same Lagrangian radii r, so an index is one material point; each step has a point exactly at
+    its own contact edge, in contact, and the next point is free (read back with meshio)."""
+    states, forces = series()
+    out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=6)
+    radii = None
+    for k, state in enumerate(states):
+        profile = meshio.read(out / f"step_{k:04d}_profile.vtu")
+        surface = meshio.read(out / f"step_{k:04d}_surface.vtu")
+        radii = profile.point_data["r"] if radii is None else radii
+        np.testing.assert_array_equal(profile.point_data["r"], radii)
+        assert len(surface.points) == 1 + (len(radii) - 1) * 6
+        edge = int(np.flatnonzero(radii == state.contact_radius)[0])
+        assert profile.point_data["contact"][edge] == 1 and profile.point_data["contact"][edge + 1] == 0
+        assert profile.points[edge, 0] == pytest.approx(1.2 * state.contact_radius, abs=1e-15)
+
+
+def test_field_data_round_trip(tmp_path):
+    """Exact answer: each step carries its state's scalars (force, pressure, P/P_I, height, volume,
+    contact radius, ...) as field data; meshio and pyvista's PVD reader give them back exactly."""
+    states, forces = series()
+    out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=6)
+    for k, state in enumerate(states):
+        for part in ("profile", "surface"):
+            back = meshio.read(out / f"step_{k:04d}_{part}.vtu")
+            assert set(back.field_data) == set(CompressedState.KEYS)
+            for key in CompressedState.KEYS:
+                assert back.field_data[key].tolist() == [float(getattr(state, key))], key
+    pv = pytest.importorskip("pyvista")
+    reader = pv.get_reader(out / "surface.pvd")
+    for state, force in zip(states, forces, strict=True):
+        reader.set_active_time_value(force)
+        block = reader.read()[0]
+        for key in ("force", "pressure", "pressure_ratio", "height", "volume", "contact_radius"):
+            assert block.field_data[key][0] == float(getattr(state, key)), key
+
+
+def test_inflated_state_field_data():
+    """Exact answer: an inflated state carries its own keys (pressure, stretch_pole, height, ...)."""
+    state = cap(0.5)
+    mesh = vtkfiles.profile_mesh(state)
+    assert {k: v.tolist() for k, v in mesh.field_data.items()} == {k: [float(getattr(state, k))]
+                                                                   for k in InflatedState.KEYS}

@@ -4,12 +4,13 @@
 (``pocket.cli.validate``). From Python::
 
     from pocket.validation import load, run, write_report, DEFAULT
-    cases, design = load()
-    results = run(cases, design, DEFAULT)
+    pockets, button = load()
+    results = run(pockets, button, DEFAULT)
     write_report(results, "validation-report")
 
-Modules: ``suite`` (the cases of cases.toml and the design), ``plan`` (what a
-run computes), ``compute`` / ``convergence`` / ``evidence`` (the solves),
+Modules: ``suite`` (the pockets of cases.toml, read as case files, and the
+button of the paper's section 6), ``plan`` (what a run computes, the solver
+columns), ``compute`` / ``convergence`` / ``evidence`` (the solves),
 ``verdicts`` and ``findings`` (tolerances, verdicts, the paper's statements),
 ``runner`` (the parallel run), ``figures`` / ``draw`` / ``render`` (plots, 3-D picture),
 ``sections`` / ``document`` / ``report`` (the report folder).

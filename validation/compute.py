@@ -1,67 +1,68 @@
 """The solves of a validation run, as functions of plain data (run in worker processes).
 
-``reference(case, plan)``: the shooting solver (the reference) and the analytical
-model on a grid of forces from 0 to near the end of the shooting model's range,
-which ``range_end`` finds by bisection: the largest Fhat with a compressed state
-(past it the free part of the sheet reaches the clamp plane).
-``fem_curve(case, order, forces)``: the finite-element curve at the default mesh.
-Every function returns frozen dataclasses (picklable) and draws nothing.
+``reference(pocket, plan)``: the reference column (shooting) and the approximate one
+(the analytical model) on a grid of forces from 0 to near the end of the
+reference model's range, found by ``pocket.apps.inverse.range_end``: the
+largest Fhat with a compressed state (past it the free part of the sheet
+reaches the clamp plane).
+``column_curve(pocket, column, forces)``: a solver column's curve (the FE columns).
+Each solver is reached through its record (``pocket.apps.solvers.get_solver``)
+with the column's options. Every function returns frozen dataclasses
+(picklable) and draws nothing.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import time
 
 import numpy as np
 
-from pocket import analytical
+from pocket.apps.inverse import range_end as model_range_end
+from pocket.apps.physical import Pocket
+from pocket.apps.solvers import get_solver
 from pocket.core.errors import OutOfRangeError
 from pocket.core.states import CompressedState
 
-from .plan import RANGE_FRACTION, Plan
-from .suite import Case
+from .plan import APPROXIMATE, RANGE_FRACTION, REFERENCE, Column, Plan
 
-__all__ = ["Curves", "FemCurve", "reference", "fem_curve", "fem_forces", "range_end", "force_grid",
-           "DESIGN_FORCES"]
+__all__ = ["Curves", "ColumnCurve", "reference", "column_curve", "fem_forces", "range_end", "force_grid",
+           "DESIGN_FORCES", "RANGE_RTOL"]
 
 #: forces always on the grid: fig 2 (0.19) and the section 6 design reading (1/5.7)
 DESIGN_FORCES = (0.19, 1.0 / 5.7)
 _SMALL_FORCES = (0.005, 0.01, 0.02, 0.05)  # where the analytical model is expected to hold
 _PAPER_FORCES = tuple(np.linspace(0.1, 1.0, 10))  # the range of the paper's figs 3 and 5
+#: relative width to which the end of the range is located (the curves stop at 0.95 of it)
+RANGE_RTOL = 1e-3
 
 
 @dataclasses.dataclass(frozen=True)
 class Curves:
-    """Shooting and analytical compression curves of one case (index 0: Fhat = 0).
+    """Reference and approximate compression curves of one pocket (index 0: Fhat = 0).
 
-    ``analytical`` holds None where a force is past the analytical model's own range.
+    ``approximate`` holds None where a force is past the approximate model's own range.
     """
 
-    case: Case
+    pocket: Pocket
     force_end: float
     forces: np.ndarray
-    shooting: tuple[CompressedState, ...]
-    analytical: tuple[CompressedState | None, ...]
-    seconds: float
+    reference: tuple[CompressedState, ...]
+    approximate: tuple[CompressedState | None, ...]
 
 
 @dataclasses.dataclass(frozen=True)
-class FemCurve:
-    """The FEM curve of one case and element order at the default mesh."""
+class ColumnCurve:
+    """The compression curve of one pocket by one solver column."""
 
-    case: Case
-    order: int
+    pocket: Pocket
+    column: Column
     states: tuple[CompressedState, ...]
-    seconds: float
 
 
-def range_end(alpha: float, pressure: float, *, rtol: float = 1e-3) -> float:
-    """The end of the shooting model's range in Fhat, to relative ``rtol`` (a lower bound)."""
-    from pocket import shooting
-    from pocket.apps.inverse import range_end as model_range_end
-
-    return model_range_end(shooting, alpha, pressure, rtol=rtol)
+def range_end(pocket: Pocket, column: Column = REFERENCE, *, rtol: float = RANGE_RTOL) -> float:
+    """The end of ``column``'s compression range in Fhat, to relative ``rtol`` (a lower bound)."""
+    return model_range_end(get_solver(column.solver), pocket.alpha, pocket.pressure_initial, rtol=rtol,
+                           **column.kwargs())
 
 
 def force_grid(force_end: float, points: int, extra=()) -> np.ndarray:
@@ -74,38 +75,34 @@ def force_grid(force_end: float, points: int, extra=()) -> np.ndarray:
 
 
 def fem_forces(plan_forces, force_end: float) -> list[float]:
-    """A plan's FEM forces with None replaced by RANGE_FRACTION * force_end."""
+    """A plan's FE forces with None replaced by RANGE_FRACTION * force_end."""
     return [RANGE_FRACTION * force_end if f is None else float(f) for f in plan_forces]
 
 
-def _analytical(alpha, pressure, forces):
+def _pointwise(pocket, column, forces):
+    """``column``'s state at each force, None past its own range."""
+    solver, options = get_solver(column.solver), column.kwargs()
     out = []
     for force in forces:
         try:
-            out.append(analytical.compress(alpha, pressure, force))
+            out.append(solver.compress(pocket.alpha, pocket.pressure_initial, float(force), **options))
         except OutOfRangeError:
             out.append(None)
     return tuple(out)
 
 
-def reference(case: Case, plan: Plan) -> Curves:
-    """Shooting and analytical curves of ``case`` on the plan's grid (plus its FEM forces)."""
-    from pocket import shooting
-
-    start = time.perf_counter()
-    alpha, pressure = case.alpha, case.pressure_hat
-    end = range_end(alpha, pressure)
-    wanted = plan.fem_forces_of(case)
-    forces = force_grid(end, plan.curve_points, fem_forces(wanted, end))
-    states = tuple(shooting.compression_curve(alpha, pressure, forces))
-    return Curves(case=case, force_end=end, forces=forces, shooting=states,
-                  analytical=_analytical(alpha, pressure, forces), seconds=time.perf_counter() - start)
+def reference(pocket: Pocket, plan: Plan) -> Curves:
+    """Reference and approximate curves of ``pocket`` on the plan's grid (plus its FE forces)."""
+    end = range_end(pocket)
+    forces = force_grid(end, plan.curve_points, fem_forces(plan.fem_forces_of(pocket), end))
+    states = column_curve(pocket, REFERENCE, forces).states
+    return Curves(pocket=pocket, force_end=end, forces=forces, reference=states,
+                  approximate=_pointwise(pocket, APPROXIMATE, forces))
 
 
-def fem_curve(case: Case, order: int, forces) -> FemCurve:
-    """The FEM compression curve (default mesh, element ``order``) at ``forces``."""
-    from pocket import fem
-
-    start = time.perf_counter()
-    states = fem.compression_curve(case.alpha, case.pressure_hat, list(forces), order=order)
-    return FemCurve(case=case, order=order, states=tuple(states), seconds=time.perf_counter() - start)
+def column_curve(pocket: Pocket, column: Column, forces) -> ColumnCurve:
+    """The compression curve of ``pocket`` at ``forces`` by the solver of ``column``."""
+    solver = get_solver(column.solver)
+    states = solver.compression_curve(pocket.alpha, pocket.pressure_initial, [float(f) for f in forces],
+                                      **column.kwargs())
+    return ColumnCurve(pocket=pocket, column=column, states=tuple(states))

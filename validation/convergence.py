@@ -23,7 +23,7 @@ import time
 
 import numpy as np
 
-from .suite import Case
+from pocket.apps.physical import Pocket
 
 __all__ = ["Sequence", "FORCE", "QUANTITIES", "sequence", "observed_order", "richardson"]
 
@@ -50,12 +50,12 @@ class Sequence:
         return np.abs(self.values[quantity] / self.reference[quantity] - 1.0)
 
 
-def sequence(case: Case, study: str, order: int, mesh: str, counts) -> Sequence:
+def sequence(case: Pocket, study: str, order: int, mesh: str, counts) -> Sequence:
     """Solve ``study`` of ``case`` with FEM order ``order`` on ``mesh`` meshes of ``counts`` base elements."""
     from pocket import fem, meshes, shooting
 
     start = time.perf_counter()
-    alpha, pressure = case.alpha, case.pressure_hat
+    alpha, pressure = case.alpha, case.pressure_initial
     if study == "inflation":
         ref = shooting.inflate(alpha, pressure)
     else:

@@ -17,7 +17,7 @@ table{border-collapse:collapse;margin:1em 0;font-size:90%}td,th{border:1px solid
 text-align:left}th{background:#eee}img{max-width:100%;border:1px solid #ddd}figure{margin:1.5em 0}
 figcaption{font-size:90%;color:#444}.pass{color:#186a18;font-weight:bold}.fail{color:#b00;font-weight:bold}
 .info{color:#666}.agrees{color:#186a18}.disagrees{color:#a55a00;font-weight:bold}pre{background:#f6f6f6;
-padding:.5em;overflow-x:auto}"""
+padding:.5em;overflow-x:auto}td.num{white-space:nowrap;text-align:right;font-variant-numeric:tabular-nums}"""
 _VERDICTS = ("pass", "fail", "info", "agrees", "disagrees")
 
 
@@ -50,9 +50,20 @@ def markdown(blocks) -> str:
     return "\n\n".join(out) + "\n"
 
 
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
 def _cell_html(value) -> str:
+    """A table cell: verdicts coloured, numbers kept on one line (an exponent never wraps) and right-aligned."""
     text = html.escape(str(value))
-    return f'<span class="{text}">{text}</span>' if text in _VERDICTS else text
+    if text in _VERDICTS:
+        return f'<td><span class="{text}">{text}</span></td>'
+    return f'<td class="num">{text}</td>' if _is_number(text) else f"<td>{text}</td>"
 
 
 def html_page(title: str, blocks) -> str:
@@ -69,7 +80,7 @@ def html_page(title: str, blocks) -> str:
             out.append("<ul>" + "".join(f"<li>{html.escape(str(i))}</li>" for i in block[1]) + "</ul>")
         elif kind == "table":
             head = "".join(f"<th>{html.escape(str(h))}</th>" for h in block[1])
-            body = "".join("<tr>" + "".join(f"<td>{_cell_html(v)}</td>" for v in row) + "</tr>" for row in block[2])
+            body = "".join("<tr>" + "".join(_cell_html(v) for v in row) + "</tr>" for row in block[2])
             out.append(f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>")
         elif kind == "image":
             src, caption = html.escape(block[1], quote=True), html.escape(block[2])

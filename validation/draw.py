@@ -1,16 +1,76 @@
-"""Figures to PNG (matplotlib, imported here only) and to CSV (every plotted number)."""
+"""Figures to PNG (matplotlib, imported here only) and to CSV (every plotted number).
+
+Figures whose series name their pocket (``Series.group``) get two legends below
+the panels, shared by all of them: colours are pockets, line styles and markers
+are solvers. Other figures (the convergence study) keep a legend per panel.
+Log axes carry plain tick labels (1, 2, 5, 10, ...), not only powers of ten.
+"""
 
 from __future__ import annotations
 
 import csv
+import math
 import pathlib
 import re
 
 from .figures import STYLES
 
-__all__ = ["draw", "write_csv"]
+__all__ = ["draw", "write_csv", "math_text"]
 
 _WIDTH = 6.4  # inches per panel
+_EMPHASIS = "0.15"  # the headline pocket's colour: near black
+_BROAD = 3.4  # the headline pocket's line width
+_FALLBACK = dict(linestyle="-", marker="o", markersize=4)
+
+
+def _style(series, colors) -> dict:
+    style = dict(STYLES.get(series.solver, _FALLBACK))
+    line = style.get("linestyle") != "none"
+    style["zorder"] = 3 if not line else 1.5 if series.emphasis else 2
+    style["color"] = _EMPHASIS if series.emphasis else colors[series.color % len(colors)]
+    if series.emphasis and line:
+        style["linewidth"] = _BROAD
+    return style
+
+
+def _tick(value: float, _=None) -> str:
+    """A log axis' tick label: plain from 0.001 to 10000 (0.01, 2, 50), else a power of ten (10^-5, 2 x 10^-7)."""
+    if 1e-3 <= value <= 1e4:
+        return f"{value:g}"
+    exponent = math.floor(math.log10(value) + 1e-9)
+    mantissa = round(value / 10.0**exponent, 6)
+    return f"$10^{{{exponent}}}$" if mantissa == 1 else f"${mantissa:g}\\times 10^{{{exponent}}}$"
+
+
+def _log_ticks(axis, low: float, high: float) -> None:
+    """Ticks at 1, 2, 5 times powers of ten over up to three decades (else at powers of ten), labelled by _tick."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    subs = (1.0, 2.0, 5.0) if math.log10(high / low) <= 3.0 else (1.0,)
+    axis.set_major_locator(LogLocator(base=10.0, subs=subs))
+    axis.set_major_formatter(FuncFormatter(_tick))
+    axis.set_minor_formatter(NullFormatter())
+
+
+def _legends(fig, figure, colors) -> None:
+    """The two shared legends below the panels: pockets by colour, solvers by style."""
+    from matplotlib.lines import Line2D
+
+    groups, solvers = {}, {}
+    for panel in figure.panels:
+        for s in panel.series:
+            groups.setdefault(s.group, s)
+            solvers.setdefault(s.solver, s)
+    lines = {"linestyle": "-", "marker": "", "linewidth": 1.4}
+    pockets = [Line2D([], [], **{**lines, "color": _style(s, colors)["color"],
+                                 "linewidth": _BROAD if s.emphasis else 1.4}) for s in groups.values()]
+    styles = [Line2D([], [], **{**STYLES.get(name, _FALLBACK), "color": "0.3"}) for name in solvers]
+    first = fig.legend(pockets, [math_text(g) for g in groups], loc="upper left", bbox_to_anchor=(0.02, 0.0),
+                       ncol=2 if len(groups) > 4 else 1, fontsize=8, title="pockets (colour)", title_fontsize=8,
+                       frameon=False)
+    fig.legend(styles, list(solvers), loc="upper right", bbox_to_anchor=(0.98, 0.0), fontsize=8,
+               title="solvers (line, marker)", title_fontsize=8, frameon=False)
+    fig.add_artist(first)
 
 
 def draw(figure, directory) -> pathlib.Path:
@@ -23,15 +83,15 @@ def draw(figure, directory) -> pathlib.Path:
     panels = figure.panels
     fig, axes = plt.subplots(1, len(panels), figsize=(_WIDTH * len(panels), 4.8), squeeze=False)
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    shared = any(s.group for panel in panels for s in panel.series)
     for ax, panel in zip(axes[0], panels, strict=True):
         for s in panel.series:
-            style = dict(STYLES.get(s.solver, dict(linestyle="-", marker="o", markersize=4)))
-            ax.plot(s.x, s.y, label=s.label, color=colors[s.color % len(colors)], **style)
+            ax.plot(s.x, s.y, label=math_text(s.label), **_style(s, colors))
         for x, y, text in panel.marks:
             ax.axvline(x, color="0.4", linewidth=0.8, linestyle=":")
             ax.axhline(y, color="0.4", linewidth=0.8, linestyle=":")
             # in the empty top-right corner, not over the curves
-            ax.text(0.98, 0.97, _math(text) + " (dotted)", transform=ax.transAxes, ha="right", va="top",
+            ax.text(0.98, 0.97, math_text(text) + " (dotted)", transform=ax.transAxes, ha="right", va="top",
                     fontsize=8, color="0.3")
         if "x" in panel.log:
             ax.set_xscale("log")
@@ -42,34 +102,37 @@ def draw(figure, directory) -> pathlib.Path:
         if panel.limits:
             ax.set_xlim(*panel.limits[0])
             ax.set_ylim(*panel.limits[1])
-        ax.set_xlabel(_math(panel.xlabel))
-        ax.set_ylabel(_math(panel.ylabel))
+        if "x" in panel.log:
+            _log_ticks(ax.xaxis, *ax.get_xlim())
+        if "y" in panel.log:
+            _log_ticks(ax.yaxis, *ax.get_ylim())
+        ax.set_xlabel(math_text(panel.xlabel))
+        ax.set_ylabel(math_text(panel.ylabel))
         if panel.title:
-            ax.set_title(_math(panel.title), fontsize=10)
+            ax.set_title(math_text(panel.title), fontsize=10)
         ax.grid(True, which="both", linewidth=0.3, alpha=0.5)
-        if not panel.legend:
-            pass
-        elif len(panel.series) <= 8:
+        if panel.legend and not shared:
             ax.legend(fontsize=7, loc="best", framealpha=0.85)
-        else:  # beside the axes, not over the curves (bbox_inches="tight" keeps it in the picture)
-            ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     fig.tight_layout()
+    if shared:
+        _legends(fig, figure, colors)
     path = pathlib.Path(directory) / f"{figure.name}.png"
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return path
 
 
-_SYMBOLS = (("A_c / (pi R^2)", r"$A_c/\pi R^2$"), ("F / (P_I pi R^2)", r"$F/P_I\pi R^2$"),
-            ("F/(P_I pi R^2)", r"$F/P_I\pi R^2$"), ("H / H_0", r"$H/H_0$"), ("H / R", r"$H/R$"),
+_SYMBOLS = (("A_c / (pi R^2)", r"$A_c/(\pi R^2)$"), ("F / (P_I pi R^2)", r"$F/(P_I\pi R^2)$"),
+            ("F/(P_I pi R^2)", r"$F/(P_I\pi R^2)$"), ("H / H_0", r"$H/H_0$"), ("H / R", r"$H/R$"),
             ("P / P_I", r"$P/P_I$"), ("rho / R", r"$\rho/R$"), ("eta / R", r"$\eta/R$"),
-            ("H_0", r"$H_0$"), ("a_c", r"$a_c$"), ("Fhat", r"$\hat F$"))
+            ("H_0", r"$H_0$"), ("a_c", r"$a_c$"), ("Fhat", r"$\hat F$"), ("Phat_I", r"$\hat P_I$"),
+            ("alpha", r"$\alpha$"), ("lambda_1", r"$\lambda_1$"), ("<=", r"$\leq$"))
 
 
 _PATTERN = re.compile("|".join(re.escape(p) for p, _ in sorted(_SYMBOLS, key=lambda s: -len(s[0]))))
 
 
-def _math(text: str) -> str:
+def math_text(text: str) -> str:
     """The paper's symbols in matplotlib mathtext (one pass: a replacement is not replaced again)."""
     return _PATTERN.sub(lambda m: dict(_SYMBOLS)[m.group(0)], text)
 

@@ -11,10 +11,12 @@ r"""Numbers behind "where the paper and the model disagree", from the full (shoo
 - ``pole_tensions``: T1 at the pole over 2 E T (lambda_0 - 1) at small Phat, for
   several alpha. Linearising eq (6) gives 1 (then eq (18) is alpha-free); the
   paper's eq (17a), T1 = 12 C1 T (lambda_0 - 1), gives 1 / (1 + alpha).
-- ``buttons``: the soft button of section 6 by the full model, with the thickness
-  of the paper's rule T = 0.216 P_I R^4 / (E H0^3) ("paper") and with the thickness
-  that gives the wanted H0 ("full"): its H0, H/H0 at the paper's Fhat = 1/5.7, and
-  the Fhat (hence the coefficient 1/Fhat in P_I = c F / (pi R^2)) where H/H0 = 0.8.
+- ``buttons``: the soft button of section 6 by the full model, designed by
+  ``pocket.apps.design.design`` ("full": the Phat_I that gives the wanted H0 and the
+  Fhat where H/H0 is the target) and as the paper's rules size it ("paper":
+  T = 0.216 P_I R^4 / (E H0^3), P_I = 5.7 F / (pi R^2)): each one's H0, H/H0 at the
+  paper's Fhat = 1/5.7, and the Fhat (hence the coefficient 1/Fhat in P_I = c F / (pi R^2))
+  where H/H0 is the target (``pocket.apps.inverse.force_where``).
 - ``small_strain``: the analytical model's inflation error at lambda_0 = 1.1, the
   limit of validity the paper quotes.
 """
@@ -24,9 +26,11 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
-from scipy.optimize import brentq
 
 from pocket import analytical
+from pocket.apps.design import PAPER_FORCE_FACTOR, design
+from pocket.apps.inverse import force_where
+from pocket.core.errors import OutOfRangeError
 
 __all__ = ["Evidence", "collect", "eq9_residuals"]
 
@@ -41,7 +45,7 @@ class Evidence:
 
     pole_ratio: dict  # alpha -> T1(0) / (2 E T (lambda_0 - 1)), full model
     small_strain: dict  # key -> analytical / shooting - 1 at lambda_0 = 1.1
-    buttons: dict  # "paper" (T by the paper's rule) / "full" (T giving H0): see ``_button``
+    buttons: dict  # "paper" (the paper's rules) / "full" (the full model's design): see ``_button``
     thickness_coefficient: float  # k in T = k P_I R^4 / (E H0^3) that gives H0, full model
 
 
@@ -84,27 +88,38 @@ def _small_strain(alpha) -> dict:
             "volume": float(model.volume / full.volume - 1.0)}
 
 
-def _button(alpha, phat, force, target) -> dict:
-    """H0/R, H/H0 at ``force`` and the force (and coefficient 1/force) where H/H0 = ``target``."""
+def _button(alpha, phat, state, target, at=None) -> dict:
+    """Phat_I, H0/R and H/H0 of ``state`` (None: no state there), the Fhat where H/H0 = ``target``
+    (``at``, else solved for) and the coefficient 1/Fhat."""
     from pocket import shooting
 
-    state = shooting.compress(alpha, phat, force)
-    at = brentq(lambda f: shooting.compress(alpha, phat, f).height_ratio - target, 1e-3, 1.0, xtol=1e-6)
-    return {"pressure_hat": float(phat), "height": float(state.inflated.height),
-            "height_ratio": float(state.height_ratio), "force_at_target": float(at), "coefficient": 1.0 / at}
+    if at is None:
+        at = force_where(shooting, alpha, phat, "height_ratio", target, increasing=False)
+    return {"pressure_hat": float(phat), "height": None if state is None else float(state.inflated.height),
+            "height_ratio": None if state is None else float(state.height_ratio),
+            "force_at_target": float(at), "coefficient": 1.0 / at}
 
 
-def collect(design) -> Evidence:
-    """Compute the evidence for ``design`` (a ``cases.Design``)."""
+def _buttons(button) -> tuple[dict, float]:
+    """The "full" and "paper" buttons (module docstring) and k of T = k P_I R^4 / (E H0^3), full model."""
     from pocket import shooting
 
-    alpha, force, target = design.alpha, 1.0 / design.pressure_coefficient, design.height_ratio
-    h0 = design.height / design.radius
-    phat_paper = design.pressure * design.radius / (design.modulus * design.thickness)
-    phat_full = brentq(lambda q: shooting.inflate(alpha, q).height - h0, 1e-3, 1.0, xtol=1e-12)
-    return Evidence(
-        pole_ratio=_pole_ratios(), small_strain=_small_strain(alpha),
-        buttons={"paper": _button(alpha, phat_paper, force, target),
-                 "full": _button(alpha, phat_full, force, target)},
-        thickness_coefficient=float(h0**3 / phat_full),
-    )
+    alpha, force, target = button.alpha, 1.0 / PAPER_FORCE_FACTOR, button.height_ratio
+    full = design(button.radius, button.height, button.modulus, alpha, button.force, target, solver="shooting")
+    pressure, thickness = button.paper
+    phat_paper = pressure * button.radius / (button.modulus * thickness)
+    try:
+        paper_state = shooting.compress(alpha, phat_paper, force)
+    except OutOfRangeError:  # the paper's rules can ask for a pocket the model does not have
+        paper_state = None
+    buttons = {"full": _button(alpha, full.pressure_initial, shooting.compress(alpha, full.pressure_initial, force),
+                               target, at=full.force),
+               "paper": _button(alpha, phat_paper, paper_state, target)}
+    return buttons, (button.height / button.radius) ** 3 / full.pressure_initial
+
+
+def collect(button) -> Evidence:
+    """Compute the evidence for ``button`` (a ``suite.Button``)."""
+    buttons, coefficient = _buttons(button)
+    return Evidence(pole_ratio=_pole_ratios(), small_strain=_small_strain(button.alpha), buttons=buttons,
+                    thickness_coefficient=float(coefficient))

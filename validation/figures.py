@@ -2,7 +2,10 @@
 
 A ``Figure`` is what gets drawn (``draw.py``) and what goes into its CSV, so
 every plotted number is in the CSV. Solvers are told apart by line style and
-marker (``STYLES``), cases by colour.
+marker (``STYLES``, one legend), pockets by colour (a second legend, the
+pockets' labels). The headline pocket is drawn first as a broad dark line, the
+others as thin coloured lines over it, so that a curve lying on the headline's
+(sample 1 at 5 kPa, Phat_I 0.322, against 0.31) still shows inside it.
 """
 
 from __future__ import annotations
@@ -11,15 +14,18 @@ import dataclasses
 
 import numpy as np
 
+from pocket.apps.design import PAPER_FORCE_FACTOR
+
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .convergence import observed_order
 from .plan import RANGE_FRACTION
+from .suite import headline
 
-__all__ = ["Series", "Panel", "Figure", "figures", "convergence_figure", "STYLES"]
+__all__ = ["Series", "Panel", "Figure", "figures", "convergence_figure", "STYLES", "pocket_label"]
 
-#: solver -> matplotlib style: line style, marker, marker face
+#: solver column label -> matplotlib style: line style, marker, marker face
 STYLES = {
-    "shooting": dict(linestyle="-", marker="", linewidth=1.6),
+    "shooting": dict(linestyle="-", marker="", linewidth=1.4),
     "FEM P1": dict(linestyle="none", marker="o", markerfacecolor="none", markersize=7),
     "FEM P2": dict(linestyle="none", marker="x", markersize=6),
     "analytical": dict(linestyle="--", marker="", linewidth=1.3),
@@ -30,11 +36,16 @@ _NEAR = 1.0  # Fhat range of the paper's figures 3 and 5
 
 @dataclasses.dataclass(frozen=True)
 class Series:
+    """One plotted line. ``group`` names the pocket (the colour legend; "" for none); ``emphasis``
+    marks the headline pocket, drawn broad and dark beneath the others."""
+
     label: str
     solver: str  # a key of STYLES, or "convergence"
     x: np.ndarray
     y: np.ndarray
     color: int = 0  # index into the colour cycle
+    group: str = ""
+    emphasis: bool = False
 
 
 @dataclasses.dataclass(frozen=True)
@@ -57,44 +68,51 @@ class Figure:
     panels: tuple
 
 
-def _short(case) -> str:
-    return case.name if case.sample is None else f"sample {case.sample}, Phat_I = {case.pressure_hat:.3g}"
+def pocket_label(pocket) -> str:
+    """The pocket's label with its Phat_I: what the legends show."""
+    return f"{pocket.case.label} (Phat_I = {pocket.pressure_initial:.3g})"
 
 
-def _curve_series(results, key, cases, analytical, xkey="force", top=None):
-    """Shooting for ``cases``, FE markers where computed, analytical for the cases in ``analytical``."""
+def _values(states, key):
+    return np.array([getattr(s, key) for s in states])
+
+
+def _curve_series(results, key, pockets, approximate, xkey="force", top=None):
+    """The reference for ``pockets``, solver columns (markers) where computed, the approximate model
+    for the pockets in ``approximate``; the headline pocket first, emphasised."""
+    head = headline(results.pockets)
+    colors = {p: k for k, p in enumerate(p for p in pockets if p != head)}
     series = []
-    for color, case in enumerate(cases):
-        curves = results.curves[results.cases.index(case)]
-        keep = [s for s in curves.shooting if top is None or s.force <= top]
-        series.append(Series(f"{_short(case)}: shooting", "shooting",
-                             np.array([getattr(s, xkey) for s in keep]), np.array([getattr(s, key) for s in keep]),
-                             color))
-        if case in analytical:
-            pairs = [a for a in curves.analytical if a is not None and (top is None or a.force <= top) and a.force > 0]
-            series.append(Series(f"{_short(case)}: analytical", "analytical",
-                                 np.array([getattr(a, xkey) for a in pairs]),
-                                 np.array([getattr(a, key) for a in pairs]), color))
-        for run in (r for r in results.fem if r.case == case and len(r.states) > 1):
-            states = [s for s in run.states if top is None or s.force <= top]
-            series.append(Series(f"{_short(case)}: FEM P{run.order}", f"FEM P{run.order}",
-                                 np.array([getattr(s, xkey) for s in states]),
-                                 np.array([getattr(s, key) for s in states]), color))
+    for pocket in pockets:
+        curves, group, emphasis = results.curves_of(pocket), pocket_label(pocket), pocket == head
+        color = colors.get(pocket, 0)
+        name = f"{pocket.case.label}: "
+
+        def add(solver, states, name=name, color=color, group=group, emphasis=emphasis):
+            states = [s for s in states if top is None or s.force <= top]
+            series.append(Series(name + solver, solver, _values(states, xkey), _values(states, key), color,
+                                 group, emphasis))
+
+        add("shooting", curves.reference)
+        if pocket in approximate:
+            add("analytical", [a for a in curves.approximate if a is not None and a.force > 0])
+        for run in (r for r in results.columns if r.pocket == pocket and len(r.states) > 1):
+            add(run.column.label, run.states)
     return tuple(series)
 
 
 def _profiles(results, head, force):
-    curves = results.curves[results.cases.index(head)]
+    curves = results.curves_of(head)
     k = int(np.argmin(np.abs(curves.forces - force)))
-    shot, ana = curves.shooting[k], curves.analytical[k]
+    shot, ana = curves.reference[k], curves.approximate[k]
     series = [Series("shooting", "shooting", shot.profile.rho, shot.profile.eta)]
     if ana is not None:
         series.append(Series("analytical", "analytical", ana.profile.rho, ana.profile.eta))
-    for run in (r for r in results.fem if r.case == head):
+    for run in (r for r in results.columns if r.pocket == head):
         for state in run.states:
             if state.force == shot.force:
                 pick = np.linspace(0, len(state.profile.r) - 1, _PROFILE_MARKERS).round().astype(int)
-                series.append(Series(f"FEM P{run.order}", f"FEM P{run.order}", state.profile.rho[pick],
+                series.append(Series(run.column.label, run.column.label, state.profile.rho[pick],
                                      state.profile.eta[pick]))
     return shot.force, tuple(series)
 
@@ -117,39 +135,41 @@ def convergence_figure(results) -> Figure:
                   "observed orders fitted by least squares (np.polyfit) on log(error) vs log(h).", tuple(panels))
 
 
-def figures(results, head) -> list[Figure]:
+def figures(results) -> list[Figure]:
     """The paper's figs 2-5 and the convergence study, from a run's results."""
+    head = headline(results.pockets)
+    curves = results.curves_of(head)
     out = []
     panels = []
-    top_eta = results.curves[results.cases.index(head)].shooting[0].inflated.height
-    limits = ((-0.02, 1.05), (-0.02, 1.1 * top_eta))
+    limits = ((-0.02, 1.05), (-0.02, 1.1 * curves.reference[0].inflated.height))
     for letter, force in (("a", 0.0), ("b", 0.19)):
         f, series = _profiles(results, head, force)
         panels.append(Panel(f"({letter}) F/(P_I pi R^2) = {f:.3g}", "rho / R", "eta / R", series, equal=True,
                             limits=limits))
-    out.append(Figure("fig2", f"Fig. 2: profiles of {head.label}, inflated (a) and compressed (b); FE nodes "
-                      f"subsampled to {_PROFILE_MARKERS} markers.", tuple(panels)))
-    curves = results.curves[results.cases.index(head)]
-    ordered = [head] + [c for c in results.cases if c != head]
+    out.append(Figure("fig2", f"Fig. 2: profiles of {pocket_label(head)}, inflated (a) and compressed (b); FE "
+                      f"nodes subsampled to {_PROFILE_MARKERS} markers.", tuple(panels)))
+    ordered = [head] + [p for p in results.pockets if p != head]
     fhat = "F / (P_I pi R^2)"
-    design = (1.0 / results.design.pressure_coefficient, results.design.height_ratio,
-              f"section 6: Fhat = 1/{results.design.pressure_coefficient:g}, H / H_0 = {results.design.height_ratio:g}")
+    h = results.button.height_ratio
+    design = (1.0 / PAPER_FORCE_FACTOR, h, f"section 6: F/(P_I pi R^2) = 1/{PAPER_FORCE_FACTOR:g}, H / H_0 = {h:g}")
     for name, key, ylabel, caption, marks, log in (
             ("fig3a", "contact_area", "A_c / (pi R^2)", "Fig. 3a: contact area fraction", (), "x"),
             ("fig3b", "height_ratio", "H / H_0", "Fig. 3b: normalised height", (design,), "x"),
             ("fig5", "pressure_ratio", "P / P_I", "Fig. 5: pressure rise", (), "xy")):
         near = Panel(f"(a) F/(P_I pi R^2) <= {_NEAR:g}", fhat, ylabel,
-                     _curve_series(results, key, ordered, (head,), top=_NEAR), marks=marks, legend=False)
-        full = Panel(f"(b) to {RANGE_FRACTION:g} of the end of each case's range", fhat, ylabel,
+                     _curve_series(results, key, ordered, (head,), top=_NEAR), marks=marks)
+        full = Panel(f"(b) each pocket to {RANGE_FRACTION:g} of the end of its range", fhat, ylabel,
                      _curve_series(results, key, ordered, (head,)), log=log, marks=marks)
-        out.append(Figure(name, f"{caption} against the force: the shooting solver for every case, the FE model "
-                          "(markers) where computed, the analytical model for the headline case; (a) the paper's "
-                          f"range, (b) the whole range (the headline case's ends at Fhat = {curves.force_end:.3g}).",
-                          (near, full)))
-    four = [c for c in results.cases if "fig4" in c.tags]
+        out.append(Figure(name, f"{caption} against the force: the shooting solver for every pocket, the FE "
+                          "model (markers) where computed, the analytical model for the headline pocket (the "
+                          f"broad dark line); (a) the paper's range, (b) each pocket to {RANGE_FRACTION:g} of the "
+                          "end of its range (where the free part of the sheet would reach the clamp plane; the "
+                          f"headline's ends at F/(P_I pi R^2) = {curves.force_end:.3g}).", (near, full)))
+    four = [p for p in results.pockets if "fig4" in p.case.tags]
     series = _curve_series(results, "height", four, four, xkey="pressure_ratio")
     out.append(Figure("fig4", "Fig. 4: height H/R against the pressure rise P/P_I for the four samples of Table 1 "
-                      "at the same P_I, to near the end of each range (log scale in P/P_I).",
+                      f"at the same P_I, each to {RANGE_FRACTION:g} of the end of its range (log scale in P/P_I); "
+                      "solid: shooting, dashed: the analytical model.",
                       (Panel("", "P / P_I", "H / R", series, log="x"),)))
     if results.sequences:
         out.append(convergence_figure(results))

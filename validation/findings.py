@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import dataclasses
 
+from pocket.apps.design import PAPER_FORCE_FACTOR, PAPER_THICKNESS_FACTOR
+
 __all__ = ["Finding", "findings", "HEIGHT_READING"]
 
 #: how far from the paper's "H/H0 ~ 0.8" a value read off its fig. 3b may be
@@ -38,7 +40,7 @@ def _eq9(residuals) -> Finding:
         (f"eq (9) evaluated on the shooting solution (headline case), residual max|w' - rhs| / max|w'| for "
          f"0.05 <= r~ <= 0.95: printed term {residuals['printed']:.3g}, corrected term "
          f"{residuals['corrected']:.2g} (finite-difference error of the derivatives).",
-         "symbolic check: tests/test_shooting_equations.py::test_eq9_holds_only_with_the_corrected_pressure_term."),
+         "the corrected form is also checked symbolically (sympy) in the project's tests."),
         "disagrees")
 
 
@@ -52,7 +54,7 @@ def _one_plus_alpha(ratios) -> Finding:
         "Phat_I = 4 sqrt(6) (lambda_0 - 1)^(3/2), independent of alpha.",
         ("pole tension of the full model at Phat = 1e-3 (lambda_0 - 1 ~ 2e-3), all alpha near 1, "
          "as the corrected form says:", *lines,
-         "symbolic check: tests/test_analytical.py::test_linearised_tension_has_the_factor_one_plus_alpha."),
+         "the linearisation is also checked symbolically (sympy) in the project's tests."),
         "disagrees")
 
 
@@ -60,7 +62,7 @@ def _contact_area(curves) -> Finding:
     rows = []
     for target in (0.1, 0.19, 0.5, 1.0):
         k = min(range(len(curves.forces)), key=lambda i: abs(curves.forces[i] - target))
-        a, s = curves.analytical[k], curves.shooting[k]
+        a, s = curves.approximate[k], curves.reference[k]
         if a is not None:
             rows.append(f"Fhat = {s.force:.3g}: A_c/(pi R^2) analytical {a.contact_area:.4f}, full model "
                         f"{s.contact_area:.4f} ({_pct(a.contact_area / s.contact_area - 1)}); P/P_I "
@@ -71,8 +73,8 @@ def _contact_area(curves) -> Finding:
         "(section 5, fig. 3a).",
         "the corrected analytical model over-predicts A_c (its pressure rises too slowly, and A_c = F/P), "
         "by 10-15 % already at Fhat = 0.1 and by about 40 % at Fhat = 1; its H/H0 stays within 6 %.",
-        (f"{curves.case.label}:", *rows, "see also tests/test_analytical.py::test_departs_at_large_force "
-         "and the analytical rows of the summary."),
+        (f"{curves.pocket.case.label} (Phat_I = {curves.pocket.pressure_initial:.3g}):", *rows,
+         "see also the analytical rows of the verdict table."),
         "disagrees")
 
 
@@ -87,9 +89,14 @@ def _small_strain(small) -> Finding:
         "disagrees")
 
 
-def _design(design, evidence) -> list[Finding]:
+def _mm(x) -> str:
+    return "none (outside the model's range)" if x is None else f"{x:.4f}"
+
+
+def _design(button, evidence) -> list[Finding]:
     full, paper = evidence.buttons["full"], evidence.buttons["paper"]
-    target, c = design.height_ratio, design.pressure_coefficient
+    target, c, k = button.height_ratio, PAPER_FORCE_FACTOR, PAPER_THICKNESS_FACTOR
+    pressure, thickness = button.paper
     agrees = abs(full["height_ratio"] - target) <= HEIGHT_READING
     tactile = Finding(
         f"Section 6: P_I ~ {c:g} F / (pi R^2) gives H/H0 ~ {target:g}",
@@ -97,32 +104,32 @@ def _design(design, evidence) -> list[Finding]:
         f"the full model gives H/H0 = {full['height_ratio']:.3f} at Fhat = 1/{c:g}, within +-{HEIGHT_READING} of "
         f"{target:g} (a reading off a figure); H/H0 = {target:g} exactly needs P_I = {full['coefficient']:.2f} "
         "F/(pi R^2).",
-        (f"button R = {design.radius * 1e3:g} mm, H0 = {design.height * 1e3:g} mm, alpha = {design.alpha:.4g}, "
+        (f"button R = {button.radius * 1e3:g} mm, H0 = {button.height * 1e3:g} mm, alpha = {button.alpha:.4g}, "
          f"sized by the full model (Phat_I = {full['pressure_hat']:.4f}): H/H0 = {full['height_ratio']:.4f} at "
          f"Fhat = {1 / c:.4f}; H/H0 = {target:g} at Fhat = {full['force_at_target']:.4f}.",
-         f"sized by the paper's thickness rule (Phat_I = {paper['pressure_hat']:.4f}): H/H0 = "
-         f"{paper['height_ratio']:.4f}; coefficient for H/H0 = {target:g}: {paper['coefficient']:.2f}."),
+         f"sized by the paper's rules (Phat_I = {paper['pressure_hat']:.4f}): H/H0 = "
+         f"{_mm(paper['height_ratio'])}; coefficient for H/H0 = {target:g}: {paper['coefficient']:.2f}."),
         "agrees" if agrees else "disagrees")
-    k = design.thickness_coefficient
-    thickness_full = design.pressure * design.radius / (design.modulus * full["pressure_hat"])
-    thickness = Finding(
+    thickness_full = pressure * button.radius / (button.modulus * full["pressure_hat"])
+    paper_height = "none" if paper["height"] is None else f"{paper['height'] * button.radius * 1e3:.1f} mm"
+    thickness_finding = Finding(
         f"Section 6: T = {k:g} P_I R^4 / (E H0^3)",
         f"the sheet thickness follows from H0, R, P_I and E through T = {k:g} P_I R^4 / (E H0^3) "
-        "(Bouremel et al., 2017).",
-        f"with E = 6 (C1 + C2) and the full model, H0 = {design.height * 1e3:g} mm at R = {design.radius * 1e3:g} mm "
+        "(the paper cites Bouremel et al., 2017, for it).",
+        f"with E = 6 (C1 + C2) and the full model, H0 = {button.height * 1e3:g} mm at R = {button.radius * 1e3:g} mm "
         f"needs T = {evidence.thickness_coefficient:.3f} P_I R^4 / (E H0^3): the paper's T is "
-        f"{k / evidence.thickness_coefficient:.2f} times that, and its button bulges to "
-        f"H0 = {paper['height'] * design.radius * 1e3:.1f} mm. (The small-strain limit of the coefficient is "
-        "0.1875 with the corrected eq (18), 0.1875 (1 + alpha) with eq (17a) as printed.)",
-        (f"P_I = {c:g} F / (pi R^2) = {design.pressure:.0f} Pa, E = {design.modulus:.3g} Pa: paper's T = "
-         f"{design.thickness * 1e3:.4f} mm (Phat_I = {paper['pressure_hat']:.4f}) gives H0/R = "
-         f"{paper['height']:.4f}; the full model's H0/R = {design.height / design.radius:g} needs Phat_I = "
+        f"{k / evidence.thickness_coefficient:.2f} times that, and its button bulges to H0 = {paper_height}. "
+        "(The small-strain limit of the coefficient is 0.1875 with the corrected eq (18), 0.1875 (1 + alpha) "
+        "with eq (17a) as printed.)",
+        (f"P_I = {c:g} F / (pi R^2) = {pressure:.0f} Pa, E = {button.modulus:.3g} Pa: paper's T = "
+         f"{thickness * 1e3:.4f} mm (Phat_I = {paper['pressure_hat']:.4f}) gives H0/R = "
+         f"{_mm(paper['height'])}; the full model's H0/R = {button.height / button.radius:g} needs Phat_I = "
          f"{full['pressure_hat']:.4f}, T = {thickness_full * 1e3:.4f} mm.",),
         "agrees" if abs(k / evidence.thickness_coefficient - 1) <= 0.1 else "disagrees")
-    return [tactile, thickness]
+    return [tactile, thickness_finding]
 
 
-def findings(design, evidence, eq9, headline) -> list[Finding]:
-    """All findings, in the order of the paper."""
+def findings(button, evidence, eq9, headline) -> list[Finding]:
+    """All findings, in the order of the paper (``headline``: the headline pocket's ``compute.Curves``)."""
     return [_eq9(eq9), _one_plus_alpha(evidence.pole_ratio), _small_strain(evidence.small_strain),
-            _contact_area(headline), *_design(design, evidence)]
+            _contact_area(headline), *_design(button, evidence)]

@@ -1,44 +1,77 @@
-"""How much a validation run computes: the default run and ``--quick``.
+"""How much a validation run computes: the default run and ``--quick``, and the solver columns.
 
-Budgets (2 cores): the default under 2 minutes, ``--quick`` under 30 s. The
+Budgets on 2 cores: the default under 60 s, ``--quick`` under 20 s. The
 shooting and analytical columns are cheap (a compression curve in well under a
-second), so every case gets them in both plans; the finite-element curves at the
-default mesh cost seconds per force (tens of Newton iterations per load step),
-so the headline case gets a FE curve to the end of the range, the cases tagged
-"fem" (the alpha extremes, the lowest pressure) three forces, the others their
-inflated state; ``--quick`` keeps the headline case's FE columns at three forces.
+second), so every case gets them in both plans. Finite-element curves cost the
+most, so the plan says per case tag at which forces the FE columns run: the
+headline case to the end of the range, the cases tagged "fem" (the alpha
+extremes, the lowest pressure) at a few forces, the others at their inflated
+state; ``--quick`` keeps the headline case's FE columns at three forces. The
+report's timing table gives each task's seconds, to re-tune these numbers.
+
+A column is a solver of ``pocket.apps.solvers`` with options, checked by its
+record when the plan is built: the same checks as the command line's flags and
+the case files' ``[solver]`` tables.
 """
 
 from __future__ import annotations
 
 import dataclasses
 
-__all__ = ["Plan", "DEFAULT", "QUICK", "RANGE_FRACTION"]
+from pocket.apps.solvers import record, solver_options
+
+__all__ = ["Column", "Plan", "DEFAULT", "QUICK", "RANGE_FRACTION", "REFERENCE", "APPROXIMATE", "FEM_COLUMNS"]
 
 #: curves run to this fraction of the end of the shooting model's range
 RANGE_FRACTION = 0.95
 
 
 @dataclasses.dataclass(frozen=True)
+class Column:
+    """A solver (a name in ``pocket.apps.solvers.SOLVERS``) with options, named ``label`` in the report."""
+
+    solver: str
+    label: str
+    options: tuple[tuple[str, object], ...] = ()
+
+    def __post_init__(self):
+        checked = solver_options(self.solver, dict(self.options), "compress", spell=lambda k: f"{self.label}: {k}")
+        object.__setattr__(self, "options", tuple(checked.items()))
+
+    def kwargs(self, step: str = "compress") -> dict:
+        """The options that ``step`` ("inflate" or "compress") takes, as keyword arguments."""
+        solver = record(self.solver)
+        return {k: v for k, v in self.options if step in solver.option(k).steps}
+
+
+REFERENCE = Column("shooting", "shooting")
+APPROXIMATE = Column("analytical", "analytical")
+FEM_COLUMNS = (Column("fem", "FEM P1", (("order", 1),)), Column("fem", "FEM P2", (("order", 2),)))
+
+
+@dataclasses.dataclass(frozen=True)
 class Plan:
     """What a run computes.
 
-    curve_points: shooting / analytical points on a linear Fhat grid to the range end
-        (small forces, where the analytical model holds, and the design forces are added).
-    fem: case tag -> Fhat of the FE curves at the default mesh, the first tag of the
-        case found here wins, "*" matches every case; ``None`` stands for
-        RANGE_FRACTION times the end of the range, 0 gives the inflated state.
+    curve_points: shooting / analytical points per spacing (linear and geometric) on the Fhat
+        grid to the range end (small forces, where the analytical model holds, and the design
+        forces are added).
+    fem: case tag -> Fhat of the FE columns, the first tag of the case found here wins, "*"
+        matches every case; ``None`` stands for RANGE_FRACTION times the end of the range, 0
+        gives the inflated state.
     convergence_sizes: element counts per order of the mesh-convergence study.
+    fem_columns: the FE columns compared with the reference (shooting).
     """
 
     name: str
     curve_points: int
     fem: dict
     convergence_sizes: dict
+    fem_columns: tuple[Column, ...] = FEM_COLUMNS
 
-    def fem_forces_of(self, case) -> tuple:
-        """The FE forces of ``case`` (empty: no FE column in this plan)."""
-        for tag in (*case.tags, "*"):
+    def fem_forces_of(self, pocket) -> tuple:
+        """The FE forces of ``pocket`` (empty: no FE column for it in this plan)."""
+        for tag in (*pocket.case.tags, "*"):
             if tag in self.fem:
                 return self.fem[tag]
         return ()

@@ -1,8 +1,13 @@
 """Write a validation run as one folder: index.html, report.md, PNGs, CSVs, the VTK series.
 
-The folder is built in a temporary sibling directory and renamed into place
-at the end, so a failed run leaves no complete-looking report. An existing
-folder is replaced only if it holds a previous report (its ``report.md``).
+``check_target`` runs before any solve (``pocket validate`` calls it first): the
+folder must be one this process may create or fill
+(``pocket.apps.folders.check_output_dir``), and an existing non-empty folder
+is replaced only if it holds a previous report (its ``report.md``); else an
+``InputError``. The report is then built in a temporary sibling folder and
+renamed into place at the end (``pocket.apps.folders.staged``), so a failed
+run leaves no complete-looking report; an error while writing is an
+``OutputError`` and leaves nothing behind.
 """
 
 from __future__ import annotations
@@ -11,24 +16,22 @@ import csv
 import dataclasses
 import pathlib
 
-from pocket.apps.folders import staged
+from pocket.apps.folders import check_output_dir, staged
 from pocket.core.errors import InputError
 
 from . import document, draw, figures, render, sections
 from . import verdicts as checks_module
-from .runner import headline
+from .suite import headline
 
 __all__ = ["write_report", "check_target"]
 
 
 def check_target(out) -> pathlib.Path:
     """The report folder as an absolute path; InputError if it may not be written (before any work)."""
-    target = pathlib.Path(out).resolve()
-    if target.exists():
-        if not target.is_dir():
-            raise InputError(f"{target} exists and is not a directory")
-        if any(target.iterdir()) and not (target / "report.md").exists():
-            raise InputError(f"{target} exists, is not empty and holds no previous report: choose another --out")
+    target = check_output_dir(pathlib.Path(out).resolve(), "report folder")
+    if target.is_dir() and any(target.iterdir()) and not (target / "report.md").is_file():
+        raise InputError(f"report folder {out}: exists, is not empty and holds no previous report (report.md): "
+                         "choose another --out")
     return target
 
 
@@ -43,17 +46,18 @@ def _states_rows(results):
     keys = None
     rows = []
     for curves in results.curves:
-        runs = [("shooting", curves.shooting), ("analytical", [a for a in curves.analytical if a is not None])]
-        runs += [(f"FEM P{f.order}", f.states) for f in results.fem if f.case == curves.case]
+        runs = [("shooting", curves.reference), ("analytical", [a for a in curves.approximate if a is not None])]
+        runs += [(c.column.label, c.states) for c in results.columns if c.pocket == curves.pocket]
         for solver, states in runs:
             for state in states:
                 values = {k: getattr(state, k) for k in state.KEYS}
                 keys = keys or list(values)
-                rows.append([curves.case.name, solver] + [repr(float(values[k])) for k in keys])
+                rows.append([curves.pocket.case.name, solver] + [repr(float(values[k])) for k in keys])
     return ["case", "solver"] + (keys or []), rows
 
 
 def _write_tables(results, directory: pathlib.Path) -> list[str]:
+    """Write the CSV tables; returns a line per file for the report's list of files."""
     fields = [f.name for f in dataclasses.fields(checks_module.Check)]
     _write_rows(directory / "checks.csv", fields, [[getattr(c, f) for f in fields] for c in results.checks])
     summary = checks_module.summary(results.checks)
@@ -61,52 +65,53 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
                 [list(row.values()) for row in summary])
     _write_rows(directory / "cases.csv", *sections.case_table(results))
     _write_rows(directory / "convergence_study.csv", *sections.sequence_rows(results))
-    names = ["checks.csv", "summary.csv", "cases.csv", "convergence_study.csv"]
+    _write_rows(directory / "timing.csv", *sections.task_rows(results))
+    names = ["checks.csv: every check (value, reference, error, tolerance, verdict)",
+             "summary.csv: the verdicts per pocket, comparison and step",
+             "cases.csv: the pockets, SI and dimensionless",
+             "convergence_study.csv: every FE value of the convergence study", "timing.csv: each solve task's seconds"]
     if results.curves:
         _write_rows(directory / "states.csv", *_states_rows(results))
-        names.append("states.csv")
+        names.append("states.csv: every state of every solver (the dimensionless keys)")
     return names
 
 
-def _write_vtk(results, directory: pathlib.Path) -> str | None:
-    if not results.curves:
-        return None
+def _write_vtk(curves, directory: pathlib.Path) -> None:
+    """The headline pocket's reference compression path as a VTK series, time = Fhat."""
     from pocket.apps.vtkfiles import write_series
 
-    curves = results.curves[results.cases.index(headline(results.cases))]
-    write_series(directory / "vtk", curves.shooting, times=curves.forces)
-    return "vtk"
+    write_series(directory / "vtk", curves.reference, times=curves.forces)
 
 
-def _picture(results, head, directory):
-    curves = results.curves[results.cases.index(head)]
+def _picture(curves, directory):
     k = int(abs(curves.forces - 0.19).argmin())
-    return render.render_pocket(curves.shooting[0].inflated, curves.shooting[k], directory / "pocket3d.png")
+    return render.render_pocket(curves.reference[0].inflated, curves.reference[k], directory / "pocket3d.png")
 
 
 def write_report(results, out, *, executor=None, title="pocket validation report") -> pathlib.Path:
     """Write the report of ``results`` (a ``run.Results``) to the folder ``out``; returns its path.
 
-    The figures and the 3-D picture are drawn on ``executor`` (an Executor) if given, else here.
+    The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
+    else here.
     """
     target = check_target(out)
     with staged(target) as partial:
-        head = headline(results.cases)
         if results.curves:
-            figs = figures.figures(results, head)
+            figs = figures.figures(results)
         else:
             figs = [figures.convergence_figure(results)]
         submit = executor.submit if executor is not None else _Now
-        jobs = [submit(draw.draw, fig, partial) for fig in figs]
-        if results.curves:
-            jobs.append(submit(_picture, results, head, partial))
+        head = results.curves_of(headline(results.pockets)) if results.curves else None
+        # the longest jobs first: the VTK series (seconds of zlib), then the 3-D picture (pyvista's start)
+        extra = [submit(_write_vtk, head, partial), submit(_picture, head, partial)] if head else []
+        jobs = extra + [submit(draw.draw, fig, partial) for fig in figs]
         for fig in figs:
             draw.write_csv(fig, partial)
         tables = _write_tables(results, partial)
-        vtk = _write_vtk(results, partial)
-        picture, why = jobs[-1].result() if results.curves else (None, "")
         for job in jobs:
             job.result()
+        picture, why = extra[-1].result() if extra else (None, "")
+        vtk = "vtk" if extra else None
         blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))

@@ -1,11 +1,14 @@
 """Run the validation suite: every solve on worker processes (one per usable CPU, at most 8), then the checks.
 
-The independent solves (a case's reference curves, FE curves, convergence
-sequences, the evidence about the paper) are tasks of a
-``concurrent.futures.ProcessPoolExecutor``; an FE curve that runs to the end of
-the range waits for its case's reference, which finds that end. The longest
-tasks (FE at the default mesh) start first. Any ``Executor`` works (a dask
-``Client().get_executor()`` spreads a run over a cluster).
+The independent solves (a pocket's reference curves, its FE columns, the
+convergence sequences, the evidence about the paper) are tasks of a
+``concurrent.futures.ProcessPoolExecutor``; an FE column waits for its pocket's
+reference, which finds the end of the range. The reference curves start first
+(headline first), the convergence sequences once no reference is pending. Any
+``Executor`` works (a dask ``Client().get_executor()`` spreads a run over a
+cluster). Each task's wall time is kept (``Results.tasks``) for re-tuning the plan.
+
+Progress is a tqdm bar on stderr, shown only when stderr is a terminal.
 """
 
 from __future__ import annotations
@@ -15,110 +18,124 @@ import dataclasses
 import sys
 import time
 
+from tqdm import tqdm
+
 from pocket.apps.provenance import cpus
 
 from . import compute, convergence, evidence, findings, verdicts
 from .plan import Plan
-from .suite import Case, Design
+from .suite import Button, headline
 
-__all__ = ["Results", "run", "convergence_tasks", "headline"]
+__all__ = ["Results", "Task", "run", "convergence_tasks", "progress_bar", "WORKERS"]
 
 WORKERS = min(8, cpus())
 
 
 @dataclasses.dataclass(frozen=True)
+class Task:
+    """One solve of a run and its wall time (in the worker)."""
+
+    kind: str  # "reference" | "column" | "convergence" | "evidence"
+    case: str
+    what: str
+    seconds: float
+
+
+@dataclasses.dataclass(frozen=True)
 class Results:
     plan: Plan
-    cases: tuple[Case, ...]
-    design: Design
-    curves: tuple  # compute.Curves per case, in case order
-    fem: tuple  # compute.FemCurve, in case order then element order
+    pockets: tuple  # pocket.apps.physical.Pocket, in file order
+    button: Button
+    curves: tuple  # compute.Curves per pocket, in pocket order
+    columns: tuple  # compute.ColumnCurve, in pocket order then column order
     sequences: tuple  # convergence.Sequence
     evidence: evidence.Evidence | None
     checks: tuple  # verdicts.Check
     findings: tuple  # findings.Finding
+    tasks: tuple  # Task, in order of submission
     seconds: float
 
     @property
     def failed(self) -> list:
         return [c for c in self.checks if c.verdict == "fail"]
 
-
-def headline(cases) -> Case:
-    """The case tagged "headline" (the first one if several)."""
-    for case in cases:
-        if "headline" in case.tags:
-            return case
-    return cases[0]
+    def curves_of(self, pocket):
+        """The ``compute.Curves`` of ``pocket``."""
+        return self.curves[self.pockets.index(pocket)]
 
 
-def convergence_tasks(case: Case, plan: Plan) -> list[tuple]:
+def convergence_tasks(pocket, plan: Plan) -> list[tuple]:
     """Arguments of ``convergence.sequence`` for the study of ``plan``."""
     sizes = plan.convergence_sizes
-    tasks = [(case, "inflation", order, "uniform", sizes[order]) for order in (1, 2)]
-    tasks += [(case, "compression", order, mesh, sizes[order]) for order in (1, 2) for mesh in ("uniform", "refined")]
+    tasks = [(pocket, "inflation", order, "uniform", sizes[order]) for order in (1, 2)]
+    tasks += [(pocket, "compression", order, mesh, sizes[order]) for order in (1, 2) for mesh in ("uniform", "refined")]
     return tasks
 
 
-class _Progress:
-    """A one-line bar on stderr, only when stderr is a terminal."""
-
-    def __init__(self, enabled: bool):
-        self.enabled = enabled and sys.stderr.isatty()
-        self.done = self.total = 0
-
-    def add(self, count: int = 1):
-        self.total += count
-        self._draw()
-
-    def step(self):
-        self.done += 1
-        self._draw()
-
-    def _draw(self):
-        if self.enabled:
-            filled = int(30 * self.done / max(self.total, 1))
-            sys.stderr.write(f"\r[{'#' * filled}{'.' * (30 - filled)}] {self.done}/{self.total} solves")
-            sys.stderr.flush()
-
-    def close(self):
-        if self.enabled:
-            sys.stderr.write("\n")
+def progress_bar(enabled: bool, stream=None) -> tqdm:
+    """A tqdm bar counting solves on ``stream`` (stderr), disabled unless ``enabled`` and a terminal;
+    cleared when closed."""
+    stream = sys.stderr if stream is None else stream
+    return tqdm(total=0, unit=" solves", file=stream, disable=not (enabled and stream.isatty()), leave=False,
+                dynamic_ncols=True)
 
 
-def run(cases, design, plan: Plan, *, executor=None, progress=True, convergence_only=False) -> Results:
+def _timed(function, *args):
+    start = time.perf_counter()
+    return function(*args), time.perf_counter() - start
+
+
+def _task(kind, key, pockets, args) -> Task:
+    if kind == "reference":
+        return Task(kind, pockets[key].case.name, "reference and analytical curves", 0.0)
+    if kind == "column":
+        return Task(kind, pockets[key[0]].case.name, f"{args[1].label} at {len(args[2])} forces", 0.0)
+    if kind == "convergence":
+        _, study, order, mesh, sizes = args
+        return Task(kind, args[0].case.name, f"{study} P{order} {mesh}, {len(sizes)} meshes", 0.0)
+    return Task(kind, "", "the paper's statements", 0.0)
+
+
+def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergence_only=False) -> Results:
     """All solves and checks of ``plan`` (only the convergence study if ``convergence_only``)."""
     start = time.perf_counter()
+    pockets = tuple(pockets)
     own = executor is None
     pool = cf.ProcessPoolExecutor(max_workers=WORKERS) if own else executor
-    bar = _Progress(progress)
-    main = headline(cases)
+    bar = progress_bar(progress)
+    main = headline(pockets)
+    pending, tasks = {}, []  # future -> (kind, key, index into tasks)
+    done = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}}
+
+    def submit(kind, key, function, *args):
+        pending[pool.submit(_timed, function, *args)] = (kind, key, len(tasks))
+        tasks.append(_task(kind, key, pockets, args))
+        bar.total += 1
+        bar.refresh()
+
     try:
-        pending = {}  # future -> (kind, key)
         if not convergence_only:
-            for k, case in sorted(enumerate(cases), key=lambda kc: "headline" not in kc[1].tags):
-                pending[pool.submit(compute.reference, case, plan)] = ("reference", k)
-            pending[pool.submit(evidence.collect, design)] = ("evidence", None)
-        later = list(enumerate(convergence_tasks(main, plan)))  # after the FE curves: shorter
-        bar.add(len(pending) + len(later))
-        done = {"reference": {}, "fem": {}, "sequence": {}, "evidence": {}}
+            for k in sorted(range(len(pockets)), key=lambda k: pockets[k] is not main):
+                submit("reference", k, compute.reference, pockets[k], plan)
+            submit("evidence", None, evidence.collect, button)
+        later = convergence_tasks(main, plan)
         while pending or later:
-            if later and not any(kind == "reference" for kind, _ in pending.values()):
-                for k, args in later:
-                    pending[pool.submit(convergence.sequence, *args)] = ("sequence", k)
+            if later and not any(kind == "reference" for kind, _, _ in pending.values()):
+                for k, args in enumerate(later):
+                    submit("convergence", k, convergence.sequence, *args)
                 later = []
             finished, _ = cf.wait(pending, return_when=cf.FIRST_COMPLETED)
             for future in finished:
-                kind, key = pending.pop(future)
-                done[kind][key] = future.result()
-                bar.step()
+                kind, key, index = pending.pop(future)
+                done[kind][key], seconds = future.result()
+                tasks[index] = dataclasses.replace(tasks[index], seconds=seconds)
+                bar.update()
                 if kind == "reference":
-                    for order in (1, 2):
-                        forces = plan.fem_forces_of(cases[key])
-                        if forces:
-                            args = (cases[key], order, compute.fem_forces(forces, done[kind][key].force_end))
-                            pending[pool.submit(compute.fem_curve, *args)] = ("fem", (key, order))
-                            bar.add()
+                    forces = plan.fem_forces_of(pockets[key])
+                    if forces:
+                        forces = compute.fem_forces(forces, done[kind][key].force_end)
+                        for j, column in enumerate(plan.fem_columns):
+                            submit("column", (key, j), compute.column_curve, pockets[key], column, forces)
     except BaseException:
         pool.shutdown(wait=False, cancel_futures=True)
         raise
@@ -126,19 +143,24 @@ def run(cases, design, plan: Plan, *, executor=None, progress=True, convergence_
         bar.close()
         if own:
             pool.shutdown()
+    return _results(plan, pockets, button, done, tuple(tasks), time.perf_counter() - start)
+
+
+def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     curves = tuple(done["reference"][k] for k in sorted(done["reference"]))
-    fems = tuple(done["fem"][k] for k in sorted(done["fem"]))
-    sequences = tuple(done["sequence"][k] for k in sorted(done["sequence"]))
+    columns = tuple(done["column"][k] for k in sorted(done["column"]))
+    sequences = tuple(done["convergence"][k] for k in sorted(done["convergence"]))
+    by_pocket = {c.pocket: c for c in curves}
     rows = []
     for curve in curves:
         rows += verdicts.reference_checks(curve) + verdicts.analytical_checks(curve)
-    for fem in fems:
-        rows += verdicts.fem_checks(curves[cases.index(fem.case)], fem)
+    for column in columns:
+        rows += verdicts.fem_checks(by_pocket[column.pocket], column)
     rows += convergence.checks(sequences)
     found = ()
     proof = done["evidence"].get(None)
     if proof is not None:
-        head = curves[cases.index(main)]
-        found = tuple(findings.findings(design, proof, evidence.eq9_residuals(head.shooting[0].inflated), head))
-    return Results(plan=plan, cases=tuple(cases), design=design, curves=curves, fem=fems, sequences=sequences,
-                   evidence=proof, checks=tuple(rows), findings=found, seconds=time.perf_counter() - start)
+        head = by_pocket[headline(pockets)]
+        found = tuple(findings.findings(button, proof, evidence.eq9_residuals(head.reference[0].inflated), head))
+    return Results(plan=plan, pockets=pockets, button=button, curves=curves, columns=columns, sequences=sequences,
+                   evidence=proof, checks=tuple(rows), findings=found, tasks=tasks, seconds=seconds)

@@ -1,4 +1,10 @@
-"""The content of the report, as ``document`` blocks and plain table rows."""
+"""The content of the report, as ``document`` blocks and plain table rows.
+
+Order, for a reader: the overall verdict and one line per comparison, then the
+figures, the pockets, the paper's statements, the convergence study, and only
+then the long tables (verdicts per pocket, every check), the timings, the
+tolerances and the provenance.
+"""
 
 from __future__ import annotations
 
@@ -7,10 +13,15 @@ import math
 from pocket.apps.provenance import environment
 
 from .convergence import EXPECTED, REFINED_P2_FINEST, RICHARDSON_FACTOR, richardson
-from .runner import WORKERS, headline
+from .figures import pocket_label
+from .runner import WORKERS
+from .suite import headline
 from .verdicts import TOLERANCES, summary
 
-__all__ = ["blocks", "case_table", "sequence_rows", "counts"]
+__all__ = ["blocks", "case_table", "sequence_rows", "counts", "glance", "task_rows"]
+
+#: the paper, cited where the report refers to it
+PAPER = "Bouremel et al., \"Compression of pressurised elastic pockets\""
 
 
 def _g(x, digits=4) -> str:
@@ -21,6 +32,11 @@ def _g(x, digits=4) -> str:
     return "" if isinstance(x, float) and math.isnan(x) else f"{x:.{digits}g}"
 
 
+def _tolerance(tol) -> str:
+    """A tolerance, or several by quantity ("height 0.1, volume 0.15")."""
+    return ", ".join(f"{k} {v:g}" for k, v in tol.items()) if isinstance(tol, dict) else f"{tol:g}"
+
+
 def counts(results) -> dict:
     """Number of checks per verdict."""
     out = {"pass": 0, "fail": 0, "info": 0}
@@ -29,19 +45,39 @@ def counts(results) -> dict:
     return out
 
 
+def glance(results) -> tuple[list, list]:
+    """(header, rows): one row per comparison over all pockets, with its worst checked error."""
+    groups: dict = {}
+    for c in results.checks:
+        groups.setdefault(c.comparison, []).append(c)
+    rows = []
+    for comparison, group in groups.items():
+        n = {v: sum(c.verdict == v for c in group) for v in ("pass", "fail", "info")}
+        scored = [c for c in group if c.tolerance]
+        worst = max(scored, key=lambda c: c.error / c.tolerance) if scored else None
+        where = f"{worst.case}: {worst.quantity} ({worst.where})" if worst else ""
+        rows.append([comparison, len({c.case for c in group}), len(group), n["pass"], n["fail"], n["info"],
+                     _g(worst.error / worst.tolerance, 2) if worst else "", where,
+                     "fail" if n["fail"] else "pass" if n["pass"] else "info"])
+    header = ["comparison", "pockets", "checks", "pass", "fail", "info", "largest error / tolerance",
+              "where", "verdict"]
+    return header, rows
+
+
 def case_table(results):
-    """(header, rows): each case in SI and dimensionless, with the end of its range."""
+    """(header, rows): each pocket in SI and dimensionless, with the end of its range."""
     header = ["case", "label", "T (mm)", "C1 (kPa)", "C2 (kPa)", "R (mm)", "P_I (kPa)", "alpha", "E (MPa)",
               "Phat_I", "lambda_0", "H0/R", "range end Fhat"]
-    ends = {c.case: c for c in results.curves}
+    ends = {c.pocket: c for c in results.curves}
     rows = []
-    for case in results.cases:
-        curves = ends.get(case)
-        inflated = curves.shooting[0].inflated if curves else None
+    for pocket in results.pockets:
+        case, curves = pocket.case, ends.get(pocket)
+        inflated = curves.reference[0].inflated if curves else None
         rows.append([case.name, case.label, _g(case.thickness * 1e3), _g(case.c1 / 1e3), _g(case.c2 / 1e3),
-                     _g(case.radius * 1e3), _g(case.pressure / 1e3, 6), _g(case.alpha), _g(case.modulus / 1e6),
-                     _g(case.pressure_hat), _g(inflated.stretch_pole, 6) if inflated else "",
-                     _g(inflated.height) if inflated else "", _g(curves.force_end) if curves else ""])
+                     _g(case.radius * 1e3), _g(pocket.pressure_initial_Pa / 1e3, 6), _g(case.alpha),
+                     _g(case.modulus / 1e6), _g(pocket.pressure_initial),
+                     _g(inflated.stretch_pole, 6) if inflated else "", _g(inflated.height) if inflated else "",
+                     _g(curves.force_end) if curves else ""])
     return header, rows
 
 
@@ -56,6 +92,13 @@ def sequence_rows(results):
                 rows.append([seq.study, seq.order, seq.mesh, n, repr(float(h)), quantity, repr(float(v)),
                              repr(seq.reference[quantity]), repr(float(e))])
     return header, rows
+
+
+def task_rows(results):
+    """(header, rows): every solve task of the run with its wall time, longest first."""
+    header = ["task", "case", "what", "seconds"]
+    tasks = sorted(results.tasks, key=lambda t: -t.seconds)
+    return header, [[t.kind, t.case, t.what, f"{t.seconds:.2f}"] for t in tasks]
 
 
 def _summary_table(results):
@@ -98,63 +141,94 @@ def _convergence_blocks(results):
 
 def _findings_blocks(results):
     out = [("h", 2, "Where the paper and the model disagree"),
-           ("p", "Each statement of the paper checked against the full model here (the shooting solver, "
-                 "cross-checked by the FE model above); the numbers are computed in this run. Verdicts are about "
-                 "the paper and do not fail the run.")]
+           ("p", f"Each statement of the paper ({PAPER}) checked against the full model here (the shooting "
+                 "solver, cross-checked by the FE model); the numbers are computed in this run. Verdicts are "
+                 "about the paper and do not fail the run."),
+           ("table", ["statement of the paper", "verdict"], [[f.title, f.verdict] for f in results.findings])]
     for f in results.findings:
         out += [("h", 3, f"{f.title}: {f.verdict}"),
                 ("list", [f"Paper: {f.paper}", f"Model: {f.model}", *[f"Evidence: {e}" for e in f.evidence]])]
     return out
 
 
+def _figure_blocks(results, figs, picture: bool, why: str) -> list:
+    out = [("h", 2, "Figures"),
+           ("p", f"The paper's figures 2-5 ({PAPER}) recomputed: colours are pockets, line styles and markers "
+                 "are solvers; the headline pocket is the broad dark line, drawn beneath the others.")]
+    for fig in figs:
+        if fig.name != "convergence":
+            out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
+    out.append(("h", 2, "The pocket in 3-D"))
+    if picture:
+        out.append(("image", "pocket3d.png", f"{pocket_label(headline(results.pockets))}: the shooting solution "
+                                             "revolved about the axis, coloured by the meridional stretch (one "
+                                             "scale for both views), the plate shown in (b)."))
+    else:
+        out.append(("p", f"No picture: {why}."))
+    return out
+
+
+def _pockets_blocks(results) -> list:
+    header, rows = case_table(results)
+    return [("h", 2, "Pockets"),
+            ("p", "From the cases file (the suite's own cases.toml unless --cases names another), in SI units; "
+                  "alpha = C2/C1, E = 6 (1 + alpha) C1, Phat_I = P_I R / (E T). The range ends where the free "
+                  "part of the sheet reaches the clamp plane (shooting, bisection)."),
+            ("table", header, rows)]
+
+
+def _files_block(figs, tables, vtk) -> tuple:
+    items = [f"{', '.join(f'{f.name}.csv' for f in figs)}: every number of the figures, one row per point"]
+    items += tables
+    if vtk:
+        items.append(f"{vtk}/: the headline case's compression path (shooting), one profile and one surface per "
+                     "force on one fixed set of Lagrangian radii, with the state's scalars as field data, plus "
+                     "surface.pvd and profile.pvd; open vtk/surface.pvd in ParaView and press play "
+                     "(time = F/(P_I pi R^2)).")
+    return ("list", items)
+
+
 def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
     """All blocks of the report."""
     n = counts(results)
     verdict = "FAIL" if n["fail"] else "PASS"
+    header, rows = glance(results)
     out = [("h", 1, "pocket validation report"),
            ("p", f"Overall: {verdict}. {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational. "
-                 f"Plan '{results.plan.name}', {len(results.cases)} cases, {results.seconds:.1f} s "
-                 f"on {WORKERS} processes."),
-           ("h", 2, "Summary"),
-           ("p", "One row per comparison (case, solvers, step): the verdict is 'fail' if any of its checks fails; "
-                 "'info' rows have no tolerance that should hold (the analytical model outside its range). "
-                 "Every check is in 'All checks' below and in checks.csv."),
-           _summary_table(results)]
-    if results.findings:
-        out += [("table", ["statement of the paper", "verdict"], [[f.title, f.verdict] for f in results.findings])]
+                 f"Plan '{results.plan.name}', {len(results.curves) or 'the headline'} pocket"
+                 f"{'s' if len(results.curves) > 1 else ''}, {results.seconds:.1f} s "
+                 f"on {WORKERS} processes. The model and its solvers follow {PAPER}; "
+                 "dimensionless units throughout: lengths / R, Phat = P R / (E T), Fhat = F / (P_I pi R^2)."),
+           ("h", 2, "Verdicts"),
+           ("p", "One line per comparison over all pockets: a comparison fails if any of its checks fails; "
+                 "'info' checks have no tolerance that should hold (the analytical model outside its range). "
+                 "The largest error / tolerance is the closest call (1 is the limit). Per pocket: 'Verdicts "
+                 "per pocket' below; every check: 'All checks' and checks.csv."),
+           ("table", header, rows)]
     if results.curves:
-        header, rows = case_table(results)
-        out += [("h", 2, "Cases"), ("p", "From validation/cases.toml (SI); alpha = C2/C1, E = 6 (1 + alpha) C1, "
-                                         "Phat_I = P_I R / (E T). The range ends where the free part of the sheet "
-                                         "reaches the clamp plane (shooting, bisection)."),
-                ("table", header, rows), ("h", 2, "Figures")]
-        for fig in figs:
-            if fig.name != "convergence":
-                out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
-        out.append(("h", 2, "The pocket in 3-D"))
-        if picture:
-            out.append(("image", "pocket3d.png", f"{headline(results.cases).label}: the shooting solution revolved "
-                                                 "about the axis, coloured by the meridional stretch; plate shown."))
-        else:
-            out.append(("p", f"No picture: {why}."))
+        out += _figure_blocks(results, figs, picture, why) + _pockets_blocks(results)
+    if results.findings:
+        out += _findings_blocks(results)
     if results.sequences:
         out += _convergence_blocks(results)
         out.append(("image", "convergence.png", "Error against element size (log-log), observed orders in the "
                                                 "legend. Data: convergence.csv (plotted points), "
                                                 "convergence_study.csv (every value)."))
-    if results.findings:
-        out += _findings_blocks(results)
-    out += [("h", 2, "Provenance"),
-            ("p", "The software and machine of this run (pocket.apps.provenance)."),
-            ("table", ["", "version"], [[k, v] for k, v in environment().items()]),
+    out += [("h", 2, "Verdicts per pocket"),
+            ("p", "One row per pocket, comparison and step: the verdict is 'fail' if any of its checks fails."),
+            _summary_table(results),
             ("h", 2, "Tolerances"),
-            ("list", [f"{name}: {tol}: {why}" for name, (tol, why) in TOLERANCES.items()]),
+            ("list", [f"{name}: {_tolerance(tol)}: {why}" for name, (tol, why) in TOLERANCES.items()]),
+            ("h", 2, "Timing"),
+            ("p", f"Wall time of each solve task in its worker ({WORKERS} processes; the run took "
+                  f"{results.seconds:.1f} s in all). The plan (pocket.validation.plan) sets how much each task "
+                  "computes."),
+            ("table", *task_rows(results)),
+            ("h", 2, "Provenance"),
+            ("p", "The software and machine of this run."),
+            ("table", ["", "version"], [[k, v] for k, v in environment().items()]),
             ("h", 2, "Files"),
-            ("list", [f"{name}: every number of the figures ({', '.join(f.name for f in figs)}.csv), "
-                      "one row per point" if name == "figures" else name for name in ["figures", *tables]]
-             + ([f"{vtk}/: the headline case's compression path (shooting), one profile and one surface per "
-                 "force plus surface.pvd and profile.pvd; open vtk/surface.pvd in ParaView and press play "
-                 "(time = Fhat)."] if vtk else [])),
+            _files_block(figs, tables, vtk),
             ("h", 2, "All checks"),
             ("table", ["case", "comparison", "step", "quantity", "where", "value", "reference", "error",
                        "tolerance", "verdict"],

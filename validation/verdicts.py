@@ -12,12 +12,15 @@ import dataclasses
 
 import numpy as np
 
+from .plan import APPROXIMATE, REFERENCE
+
 __all__ = ["Check", "TOLERANCES", "fem_checks", "analytical_checks", "reference_checks", "summary"]
 
 #: name -> (tolerance, reason)
 TOLERANCES = {
-    "fem": (1e-5, "issue 3: every scalar within 1e-5 of the shooting solver at the default mesh "
-                  "(1000 elements; measured <= 3e-6 for P1, <= 5e-7 for P2)"),
+    "fem": (1e-5, "every scalar of the FE model within 1e-5 of the shooting solver at its default mesh: "
+                  "two independent discretisations of one model agree to their discretisation error "
+                  "(measured <= 3e-6 for P1, <= 5e-7 for P2 at 1000 elements)"),
     "fem_profile": (1e-5, "largest distance between the FE and shooting meridians at the shooting's "
                           "radii, in R; interpolating the FE nodes (h = 1e-3) adds ~ h^2 kappa / 8 < 1e-6"),
     "fem_force": (1e-8, "augmented-Lagrangian contact: the plate reaction equals the applied force to the "
@@ -31,7 +34,7 @@ TOLERANCES = {
     "analytical_height": (0.06, "H/H0 is the robust output of the model (paper, fig. 3b): within 6 % for "
                                 "Fhat <= 2, a bound on a known approximation, not a convergence bar (measured "
                                 "5.3-5.9 %: near Fhat = 0.12, and for sample 4 at 2 kPa near Fhat = 1.6; "
-                                "each case's worst is in the summary)"),
+                                "each pocket's worst is in its verdicts)"),
     "analytical_small_force": (0.08, "P/P_I and A_c/(pi R^2) within 8 % for Fhat <= 0.05 (paper: good for "
                                      "Fhat < 0.1; eq (26) is singular as a_c -> 0, so P/P_I -> 1.02 there)"),
 }
@@ -82,9 +85,11 @@ def profile_distance(state, reference) -> float:
 
 
 def fem_checks(curves, fem) -> list[Check]:
-    """FE (one order) against shooting at each FE force, and the FE's own consistency."""
-    name, label = curves.case.name, f"FEM P{fem.order} vs shooting"
-    by_force = dict(zip(curves.forces.tolist(), curves.shooting, strict=True))
+    """A solver column (``compute.ColumnCurve``) against the reference at each of its forces, and its
+    own consistency (plate reaction = F, volume = V_I)."""
+    name, own = curves.pocket.case.name, fem.column.label
+    label = f"{own} vs {REFERENCE.label}"
+    by_force = dict(zip(curves.forces.tolist(), curves.reference, strict=True))
     tol, tol_profile = TOLERANCES["fem"][0], TOLERANCES["fem_profile"][0]
     rows = []
     for state in fem.states:
@@ -100,26 +105,27 @@ def fem_checks(curves, fem) -> list[Check]:
         rows.append(_row(name, label, step, "profile (distance / R)", where, distance, 0.0, distance, tol_profile))
         if state.force > 0.0:
             reaction = state.extra["force_reaction"]
-            rows.append(_row(name, f"FEM P{fem.order}", "consistency", "plate reaction = F", where,
+            rows.append(_row(name, own, "consistency", "plate reaction = F", where,
                              reaction, state.force, _rel(reaction, state.force), TOLERANCES["fem_force"][0]))
-            rows.append(_row(name, f"FEM P{fem.order}", "consistency", "volume = V_I", where, state.volume,
+            rows.append(_row(name, own, "consistency", "volume = V_I", where, state.volume,
                              state.inflated.volume, _rel(state.volume, state.inflated.volume),
                              TOLERANCES["volume"][0]))
     return rows
 
 
 def reference_checks(curves) -> list[Check]:
-    """The shooting curve's own consistency: fixed volume at every force."""
-    worst = max(curves.shooting, key=lambda s: _rel(s.volume, s.inflated.volume))
+    """The reference curve's own consistency: fixed volume at every force."""
+    worst = max(curves.reference, key=lambda s: _rel(s.volume, s.inflated.volume))
     err = _rel(worst.volume, worst.inflated.volume)
-    return [_row(curves.case.name, "shooting", "consistency", "volume = V_I", f"worst of {len(curves.forces)} forces",
-                 worst.volume, worst.inflated.volume, err, TOLERANCES["volume"][0])]
+    return [_row(curves.pocket.case.name, REFERENCE.label, "consistency", "volume = V_I",
+                 f"worst of {len(curves.forces)} forces", worst.volume, worst.inflated.volume, err,
+                 TOLERANCES["volume"][0])]
 
 
 def analytical_checks(curves) -> list[Check]:
     """The analytical model against shooting: checked in its range, else informational (worst error)."""
-    name, label = curves.case.name, "analytical vs shooting"
-    ref_i, ana_i = curves.shooting[0].inflated, curves.analytical[0].inflated
+    name, label = curves.pocket.case.name, f"{APPROXIMATE.label} vs {REFERENCE.label}"
+    ref_i, ana_i = curves.reference[0].inflated, curves.approximate[0].inflated
     strain = ref_i.stretch_pole - 1.0
     tols = TOLERANCES["analytical_inflation"][0]
     rows = []
@@ -130,7 +136,7 @@ def analytical_checks(curves) -> list[Check]:
         where = f"lambda_0 - 1 = {strain:.3g}"
         rows.append(_row(name, label, "inflation", key if not shift else "lambda_0 - 1", where, value, reference,
                          _rel(value, reference), tol))
-    pairs = [(a, s) for a, s in zip(curves.analytical[1:], curves.shooting[1:], strict=True) if a is not None]
+    pairs = [(a, s) for a, s in zip(curves.approximate[1:], curves.reference[1:], strict=True) if a is not None]
     ranges = {"height_ratio": (_HEIGHT_FORCE, TOLERANCES["analytical_height"][0]),
               "pressure_ratio": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0]),
               "contact_area": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0])}

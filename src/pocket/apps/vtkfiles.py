@@ -26,15 +26,45 @@ tends to the true volume as segments^-2 (a regular N-gon inscribed in a
 circle has N sin(2 pi/N) / (2 pi) = 1 - (2 pi/N)^2 / 6 + ... of its area),
 plus the error of sampling the meridian at the profile's points.
 
-Point data, on the profile and the surface alike (copied around each ring):
-``lambda_1``, ``lambda_2``, ``lambda_3`` (meridional, hoop, thickness
-stretches), ``T_1``, ``T_2`` (tensions, units of E T), ``contact`` (1 where
-the sheet touches the plate, else 0, uint8), ``r`` (Lagrangian radius) and
-``displacement``, the deformed minus the reference position of each material
+Point data, on the profile and the surface alike (copied around each ring),
+all dimensionless:
+
+=================  ==========================================================
+``lambda_1``       meridional stretch (deformed / flat length along a meridian)
+``lambda_2``       hoop stretch rho / r
+``lambda_3``       thickness stretch 1 / (lambda_1 lambda_2) (incompressible)
+``T_1``, ``T_2``   meridional and hoop tensions (stress resultants), units of E T
+``contact``        1 where the sheet touches the plate, else 0 (uint8)
+``r``              Lagrangian radius: the point's radius in the flat sheet, units of R
+``displacement``   deformed minus flat position, units of R (below)
+=================  ==========================================================
+
+The displacement is the deformed minus the reference position of each material
 point, the reference being the flat sheet at height 0: point (r, t) of the
 sheet moves from (r cos t, r sin t, 0) to (rho cos t, rho sin t, eta), so the
 displacement is ((rho - r) cos t, (rho - r) sin t, eta). In ParaView,
 "Warp By Vector" with scale -1 brings the surface back to the flat sheet.
+
+Field data (one value per file, the state's scalars, named as everywhere in
+pocket: ``pocket.core.states``): for a compressed state ``alpha``,
+``pressure_initial`` (Phat_I), ``force`` (Fhat = F / (P_I pi R^2)), ``pressure``
+(Phat = P R / (E T)), ``pressure_ratio`` (P / P_I), ``contact_area``
+(A_c / (pi R^2)), ``contact_radius`` (Lagrangian a_c / R), ``stretch_contact``,
+``height`` (H / R), ``height_ratio`` (H / H0), ``volume`` (V / R^3); for an
+inflated state ``alpha``, ``pressure``, ``stretch_pole``, ``height``, ``volume``,
+``stretch_clamp``. meshio writes no field data, so it is added to each file
+as a ``<FieldData>`` block of ASCII values written with 17 significant digits
+(they read back exactly).
+
+One point set along a series. A solver samples each state's profile at its own
+Lagrangian radii (the shooting solver's adaptive steps: a different count at
+every force), and ParaView's temporal interpolation and point tracking need
+the same points at every step. So ``write_series`` resamples every profile on
+one fixed set of Lagrangian radii, ``points`` equally spaced radii plus the
+contact edge of every state of the series, each profile piecewise on either
+side of its own edge (``pocket.apps.resampling``): every step has a point
+exactly at its contact edge, the kink of the meridian there is kept, and a
+point index is one material point throughout the series.
 
 Load paths. ``write_series`` writes ``step_0000_profile.vtu``,
 ``step_0000_surface.vtu``, ... and the collections ``profile.pvd`` and
@@ -56,10 +86,15 @@ import meshio
 import numpy as np
 
 from pocket.core.errors import InputError
+from pocket.core.inputs import check_count
 
 from .folders import staged
+from .resampling import resample, series_radii
 
-__all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series"]
+__all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS"]
+
+#: equally spaced Lagrangian radii of a series (the contact edges are added)
+SERIES_POINTS = 201
 
 
 def _profile(state):
@@ -70,6 +105,11 @@ def _profile(state):
     if n < 2 or any(len(getattr(profile, f)) != n for f in ("rho", "eta", "stretch_1", "stretch_2")):
         raise InputError(f"the profile needs >= 2 points and arrays of equal length, got r of length {n}")
     return profile
+
+
+def field_data(state) -> dict[str, np.ndarray]:
+    """The state's scalars (its ``KEYS``), one float64 value each."""
+    return {key: np.array([float(getattr(state, key))]) for key in state.KEYS}
 
 
 def _point_data(profile) -> dict[str, np.ndarray]:
@@ -87,13 +127,19 @@ def _point_data(profile) -> dict[str, np.ndarray]:
     }
 
 
-def profile_mesh(state) -> meshio.Mesh:
-    """The meridian as a polyline of points (rho, 0, eta) with point data."""
+def _sampled(state, radii):
     profile = _profile(state)
+    return profile if radii is None else resample(profile, radii)
+
+
+def profile_mesh(state, *, radii=None) -> meshio.Mesh:
+    """The meridian as a polyline of points (rho, 0, eta) with point data and the state's field data;
+    at the solver's radii, or resampled at ``radii``."""
+    profile = _sampled(state, radii)
     rho, eta = np.asarray(profile.rho, dtype=float), np.asarray(profile.eta, dtype=float)
     points = np.column_stack((rho, np.zeros_like(rho), eta))
     lines = np.column_stack((np.arange(len(rho) - 1), np.arange(1, len(rho))))
-    return meshio.Mesh(points, [("line", lines)], point_data=_point_data(profile))
+    return meshio.Mesh(points, [("line", lines)], point_data=_point_data(profile), field_data=field_data(state))
 
 
 def _segments(segments) -> int:
@@ -106,10 +152,10 @@ def _segments(segments) -> int:
     return value
 
 
-def surface_mesh(state, *, segments=64) -> meshio.Mesh:
-    """The profile revolved about the z axis: quads, triangles at the pole."""
+def surface_mesh(state, *, segments=64, radii=None) -> meshio.Mesh:
+    """The profile (resampled at ``radii`` if given) revolved about the z axis: quads, triangles at the pole."""
     segments = _segments(segments)
-    profile = _profile(state)
+    profile = _sampled(state, radii)
     rho, eta = np.asarray(profile.rho, dtype=float), np.asarray(profile.eta, dtype=float)
     pole = rho[0] == 0.0
     angle = 2.0 * np.pi * np.arange(segments) / segments
@@ -136,18 +182,32 @@ def surface_mesh(state, *, segments=64) -> meshio.Mesh:
     data = {name: values[source] for name, values in _point_data(profile).items()}
     radial, up = data["displacement"][:, 0], data["displacement"][:, 2]
     data["displacement"] = np.column_stack((radial * cos[hoop], radial * sin[hoop], up))
-    return meshio.Mesh(points, cells, point_data=data)
+    return meshio.Mesh(points, cells, point_data=data, field_data=field_data(state))
 
 
-def write_state(directory, state, *, stem="state", segments=64) -> list[pathlib.Path]:
-    """Write ``{stem}_profile.vtu`` and ``{stem}_surface.vtu`` into ``directory``."""
-    meshes = {"profile": profile_mesh(state), "surface": surface_mesh(state, segments=segments)}
+def _write_vtu(path: pathlib.Path, mesh: meshio.Mesh) -> None:
+    """meshio's .vtu with the mesh's field data added (meshio reads field data but does not write it)."""
+    meshio.write(path, meshio.Mesh(mesh.points, mesh.cells, point_data=mesh.point_data), file_format="vtu")
+    arrays = "".join(f'<DataArray type="Float64" Name={quoteattr(name)} NumberOfTuples="{len(values)}" '
+                     f'format="ascii">{" ".join(repr(float(v)) for v in values)}</DataArray>\n'
+                     for name, values in mesh.field_data.items())
+    text = path.read_text()
+    if arrays:
+        text = text.replace("<UnstructuredGrid>", f"<UnstructuredGrid>\n<FieldData>\n{arrays}</FieldData>", 1)
+    path.write_text(text)
+
+
+def write_state(directory, state, *, stem="state", segments=64, radii=None) -> list[pathlib.Path]:
+    """Write ``{stem}_profile.vtu`` and ``{stem}_surface.vtu`` into ``directory`` (profiles at ``radii``
+    if given)."""
+    meshes = {"profile": profile_mesh(state, radii=radii), "surface": surface_mesh(state, segments=segments,
+                                                                                   radii=radii)}
     directory = pathlib.Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     paths = []
     for part, mesh in meshes.items():
         paths.append(directory / f"{stem}_{part}.vtu")
-        meshio.write(paths[-1], mesh)
+        _write_vtu(paths[-1], mesh)
     return paths
 
 
@@ -170,11 +230,13 @@ def _pvd(path: pathlib.Path, files: list[str], times: np.ndarray) -> None:
     path.write_text("\n".join(lines))
 
 
-def write_series(directory, states, *, times=None, segments=64, overwrite=False) -> pathlib.Path:
+def write_series(directory, states, *, times=None, segments=64, points=SERIES_POINTS,
+                 overwrite=False) -> pathlib.Path:
     """Write one profile and one surface per state plus ``profile.pvd`` and ``surface.pvd``.
 
-    ``times`` (default: the step index) label the steps. An existing
-    non-empty ``directory`` is refused unless ``overwrite``; then it is
+    ``times`` (default: the step index) label the steps. Every step has the same
+    points: the profiles are resampled on ``series_radii(states, points)``. An
+    existing non-empty ``directory`` is refused unless ``overwrite``; then it is
     replaced as a whole. Returns the directory (as an absolute path).
     """
     states = list(states)
@@ -182,8 +244,8 @@ def write_series(directory, states, *, times=None, segments=64, overwrite=False)
         raise InputError("no states to write")
     times = _times(times, len(states))
     segments = _segments(segments)
-    for state in states:
-        _profile(state)
+    points = check_count("points", points, 2, 100_000)
+    radii = series_radii([_profile(s) for s in states], points)
     target = pathlib.Path(directory).resolve()  # "." and "out/" need a name for the sibling
     if target.exists() and not target.is_dir():
         raise InputError(f"{target} exists and is not a directory")
@@ -194,7 +256,7 @@ def write_series(directory, states, *, times=None, segments=64, overwrite=False)
         files = {"profile": [], "surface": []}
         for k, state in enumerate(states):
             stem = f"step_{k:0{width}d}"
-            paths = write_state(partial, state, stem=stem, segments=segments)
+            paths = write_state(partial, state, stem=stem, segments=segments, radii=radii)
             for part, path in zip(("profile", "surface"), paths, strict=True):
                 files[part].append(path.name)
         for part, names in files.items():

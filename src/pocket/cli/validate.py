@@ -3,31 +3,65 @@
     pocket validate [--out DIR] [--quick] [--cases FILE]
     pocket converge [--out DIR] [--quick] [--cases FILE]
 
-Both print a short summary and exit 1 if any verdict fails (0 otherwise; 2 for
-bad input, through ``pocket.cli``).
+The report folder and the cases file are checked before any solve (a bad one
+is one line on stderr, exit 2, nothing written). Both print a short summary and
+exit 1 if any verdict fails, a solver fails or the report cannot be written
+(then nothing is left behind), 0 otherwise.
 """
 
 from __future__ import annotations
 
+import argparse
 import sys
+import textwrap
 import time
 from concurrent.futures import ProcessPoolExecutor
 
-__all__ = ["register"]
+__all__ = ["register", "EXIT_CODES_VALIDATE"]
 
 EXIT_CODES_VALIDATE = ("exit status: 0 every verdict passes; 1 a verdict fails, a solver failed or the report "
-                       "could not be written; 2 bad input (one line on stderr, nothing written)")
+                       "could not be written (nothing is left behind); 2 bad input: an --out folder that cannot "
+                       "be written or holds something other than a previous report, a bad cases file (one line "
+                       "on stderr, checked before any solve, nothing written)")
+
+_VALIDATE = """\
+Run the validation suite and write its report: the shooting solver (the
+reference), the finite-element model (P1 and P2) and the paper's analytical
+model compared on the pockets of the cases file (the paper's Table 1 samples,
+alpha = 0 and 1), each comparison with a tolerance and a pass/fail verdict; the
+paper's figures 2-5 recomputed; a mesh-convergence study of the FE model; the
+paper's statements checked against the full model; a 3-D picture (with the
+'render' extra) and the headline pocket's compression path as VTK files for
+ParaView. The report folder holds index.html and report.md (the same content),
+the PNGs and a CSV of every number. Progress shows on a terminal."""
+
+_CONVERGE = """\
+Run the mesh-convergence study alone: the FE model (P1 and P2, uniform meshes
+and meshes refined at the contact edge) against the shooting solver on the
+headline pocket, inflated and compressed; prints the observed orders against
+the theory's and Richardson extrapolations against the shooting values, and
+writes them as a report folder (index.html, report.md, CSVs, the plot)."""
 
 
 def register(subparsers) -> None:
     """Add the ``validate`` and ``converge`` parsers."""
-    for name, handler, text, out in (
-            ("validate", _validate, "run the validation suite and write the report", "validation-report"),
-            ("converge", _converge, "mesh-convergence study of the FE model against shooting", "convergence-report")):
-        p = subparsers.add_parser(name, help=text, description=text, epilog=EXIT_CODES_VALIDATE)
-        p.add_argument("--out", default=out, help=f"report folder (default: {out}); a previous report is replaced")
-        p.add_argument("--quick", action="store_true", help="fewer cases, forces and meshes (CI, under 30 s)")
-        p.add_argument("--cases", help="cases file (default: the built-in cases of the suite)")
+    for name, handler, text, description, out in (
+            ("validate", _validate, "run the validation suite and write its report", _VALIDATE,
+             "validation-report"),
+            ("converge", _converge, "mesh-convergence study of the FE model against shooting", _CONVERGE,
+             "convergence-report")):
+        # raw: the description's paragraphs as written, so the epilog is wrapped here
+        p = subparsers.add_parser(name, help=text, description=description,
+                                  epilog=textwrap.fill(EXIT_CODES_VALIDATE, 79),
+                                  formatter_class=argparse.RawDescriptionHelpFormatter)
+        p.add_argument("--out", default=out, metavar="DIR",
+                       help=f"report folder (default: {out}); a previous report there is replaced, any other "
+                            "non-empty folder is refused")
+        p.add_argument("--quick", action="store_true",
+                       help="the quick plan: fewer forces, FE columns and meshes (for CI; default: the full plan)")
+        p.add_argument("--cases", metavar="FILE",
+                       help="cases file in the case-file schema, [[case]] tables and a [design] table "
+                            "(default: the suite's own cases.toml)")
         p.set_defaults(handler=handler)
 
 
@@ -37,8 +71,8 @@ def _setup(args):
     from pocket.validation.suite import CASES_FILE, load
 
     check_target(args.out)
-    cases, design = load(args.cases or CASES_FILE)
-    return cases, design, QUICK if args.quick else DEFAULT
+    pockets, button = load(args.cases or CASES_FILE)
+    return pockets, button, QUICK if args.quick else DEFAULT
 
 
 def _finish(results, out, start, pool) -> int:
@@ -62,9 +96,9 @@ def _validate(args) -> int:
     from pocket.validation.runner import WORKERS, run
 
     start = time.perf_counter()
-    cases, design, plan = _setup(args)
+    pockets, button, plan = _setup(args)
     with ProcessPoolExecutor(max_workers=WORKERS) as pool:
-        results = run(cases, design, plan, executor=pool, progress=sys.stderr.isatty())
+        results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty())
         return _finish(results, args.out, start, pool)
 
 
@@ -72,9 +106,9 @@ def _converge(args) -> int:
     from pocket.validation.runner import WORKERS, run
 
     start = time.perf_counter()
-    cases, design, plan = _setup(args)
+    pockets, button, plan = _setup(args)
     with ProcessPoolExecutor(max_workers=WORKERS) as pool:
-        results = run(cases, design, plan, executor=pool, progress=sys.stderr.isatty(), convergence_only=True)
+        results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty(), convergence_only=True)
         _print_orders(results)
         return _finish(results, args.out, start, pool)
 
