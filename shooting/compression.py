@@ -94,9 +94,10 @@ class _Branch:
 
 
 def _orientation(problem, sol, force, branch):
-    """sign det J at a solution, confirmed by differences when the updated J disagrees with the branch."""
-    sign = np.sign(np.linalg.det(sol.jacobian))
-    if branch.orientation and sign != branch.orientation:
+    """sign det J at a solution: by differences for the first state of a branch, or when the
+    Broyden-updated J (an approximation) disagrees with the branch."""
+    sign = 0.0 if sol.jacobian is None else np.sign(np.linalg.det(sol.jacobian))
+    if sign != branch.orientation or not branch.orientation:
         jac = newton.differences(lambda v: problem.residual(v, force), sol.x, sol.f)
         sign = 0.0 if jac is None else np.sign(np.linalg.det(jac))
     return sign

@@ -1,31 +1,36 @@
 """Step 1, inflation: find the pole stretch lambda_0 = 1 + s such that lambda_2(1) = 1.
 
-Pressure control (the paper's step 1). At a fixed pressure p, a shot from the
-pole with strain s lands at rho(1) = 1 + m(s). Below the first-branch root the
-pressure is too high for that stretch: the meridian lands inside the clamp
-(m < 0) or curls back before reaching it (the shot stops: axis, fold, vanishing
-tension). So s is marched up from below the small-strain estimate (the Hencky
-regime, ``pocket.core.smallstrain``) by a factor 1.25 until m >= 0, and the root
-is found by Brent's method in that bracket (relative to s, so that Phat = 1e-6,
-s ~ 2e-5, is resolved as well as Phat = 1).
+The first branch. A shot from the pole with strain s at pressure p lands at
+rho(1) = 1 + m(s, p). At fixed s, m falls as p rises from m(s, 0) = s > 0 (the
+flat sheet); p(s), the pressure with m = 0, is the pressure that holds the dome
+of pole strain s. The first branch is the curve p(s) followed continuously from
+s = 0, where the small-strain (Hencky) regime gives p ~ 3 (1 + alpha) 4 sqrt(6) s^1.5
+(``pocket.core.smallstrain``). Following it matters: a root of m found by marching s at
+the target pressure can skip over a maximum of p(s), or land on another branch.
 
-The march may overstep the first branch: near a pressure maximum (alpha near 0
-or below) m(s) > 0 only on a short interval, and above the maximum nowhere. The
-march gives up as soon as it sees that (m falls, or a shot fails after one
-landed), and the robust path takes over: march the first-branch pressure p(s)
-(a root in p of m at fixed s, ``pressure_of_stretch``) until it passes the target,
-or locate its maximum by golden sections and report that no first-branch state
-exists above it (``OutOfRangeError`` naming the maximum). For alpha < 0 the pole
-tension (1 - l^-6)(1 + alpha l^2) vanishes at l^2 = -1/alpha: p(s) exists only
-below, and the maximum lies there.
+Pressure control (the paper's step 1). s is marched up by a factor 1.4 from
+below the small-strain estimate, computing p(s) at each step from a power-law
+prediction through the last two points (a bracket grown around the prediction,
+then Brent's method: about 4 shots each), until p(s) passes the target. The pole
+strain is then the root of m(s, p_target) in the last step, by Brent's method
+relative to s (so Phat = 1e-6, s ~ 2e-5, is resolved as well as Phat = 1). If
+p(s) falls first, the first branch has a maximum (alpha near 0 or below):
+golden sections locate it, and above it no first-branch state exists
+(``OutOfRangeError`` naming the maximum). For alpha < 0 the pole tension
+(1 - l^-6)(1 + alpha l^2) vanishes at l^2 = -1/alpha: p(s) exists only below, and
+the maximum lies there. A march that starts past a maximum (a target far above
+it) is restarted lower.
 
-Volume control (``inflate_volume``) brackets V(s) the same way, on the first
-branch p = p(s); the volume grows through pressure maxima, so it reaches states
-pressure control cannot.
+Volume control (``inflate_volume``) marches V(s) on the first branch the same way;
+the volume grows through pressure maxima, so it reaches states pressure control
+cannot.
 
-A shot that fails for numerical reasons (too many steps) is a ConvergenceError, and
-so is a final shot that does not land on the clamp: only the bracketing reads a
-shot that stops early as "too much pressure for this stretch".
+Below the first-branch root, at the target pressure, the pressure is too high
+for the stretch: the meridian lands inside the clamp or curls back before
+reaching it (the shot stops: axis, fold, vanishing tension). Only inside such a
+bracket is a shot that stops early read as "too much pressure for this stretch".
+A shot that fails for numerical reasons (too many steps) is a ConvergenceError,
+and so is a final shot that does not land on the clamp.
 """
 
 from __future__ import annotations
@@ -43,10 +48,11 @@ from .shots import Tolerance, profile_from_steps, shot_pole
 
 __all__ = ["inflate", "inflate_volume", "pressure_of_stretch"]
 
-_GROWTH = 1.25  # ratio of successive s = lambda_0 - 1 in the marches
+_GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
 _S_MAX = 20.0  # s beyond which the marches give up
 _S_RTOL = 1e-13  # relative accuracy of the root in s
-_P_RTOL = 1e-14  # relative accuracy of the pressure p(s)
+_P_RTOL = 1e-14  # relative accuracy of the pressure p(s) where its value matters
+_MARCH_RTOL = 1e-9  # ... and where only its trend matters (the march)
 _PEAK_RTOL = 1e-9  # relative width in s to which a pressure maximum is located (its value to ~1e-18)
 
 
@@ -69,81 +75,101 @@ def _signed(value):
     return -1.0 if value is None else value
 
 
-def pressure_of_stretch(l0, alpha, *, rtol=1e-10, tol=None) -> float | None:
-    """The pressure p (units 2 C1 T / R) at which the shot from pole stretch ``l0`` lands on rho(1) = 1.
-
-    None if there is none: for alpha < 0 past l0^2 = -1/alpha the pole tension vanishes.
+def pressure_of_stretch(l0, alpha, *, rtol=1e-10, tol=None, guess=None, accuracy=_P_RTOL) -> float | None:
+    """The pressure p (units 2 C1 T / R) at which the shot from pole stretch ``l0`` lands on rho(1) = 1,
+    to relative ``accuracy``: the root of m(s, .) nearest above or below ``guess`` (default: the
+    small-strain pressure). None if there is none: for alpha < 0 past l0^2 = -1/alpha the pole
+    tension vanishes.
     """
     s = l0 - 1.0
     tol = _tolerance(rtol, s) if tol is None else tol
-    if (1.0 - l0**-6) * (1.0 + alpha * l0 * l0) <= 0.0:
+    if not (s > 0.0 and (1.0 - l0**-6) * (1.0 + alpha * l0 * l0) > 0.0):
         return None
     what = f"p(lambda_0 = {l0:.12g})"
-    hi = 3.0 * (1.0 + alpha) * 4.0 * math.sqrt(6.0) * s**1.5 * 2.0
-    f_hi = _signed(_landing(s, alpha, hi, tol, what))
-    while f_hi >= 0.0:
-        hi *= 2.0
-        if hi > 1e6:
-            raise ConvergenceError(f"inflation: no pressure up to 1e6 closes the shot from lambda_0 = {l0!r}",
-                                   load=l0)
-        f_hi = _signed(_landing(s, alpha, hi, tol, what))
-    return brent.root(lambda p: _signed(_landing(s, alpha, p, tol, what)), 0.0, hi, fa=s, fb=f_hi,
-                      rtol=_P_RTOL)
+
+    def miss(p):
+        return _signed(_landing(s, alpha, p, tol, what))
+
+    p = 3.0 * (1.0 + alpha) * 4.0 * math.sqrt(6.0) * s**1.5 if guess is None else guess
+    f, width = miss(p), 0.02 * p
+    if f >= 0.0:  # grow a bracket upward from the guess
+        lo, f_lo = p, f
+        hi, f_hi = p + width, miss(p + width)
+        while f_hi >= 0.0:
+            width *= 4.0
+            lo, f_lo, hi = hi, f_hi, hi + width
+            if hi > 1e6:
+                raise ConvergenceError(f"inflation: no pressure up to 1e6 closes the shot from lambda_0 = {l0!r}",
+                                       load=l0)
+            f_hi = miss(hi)
+    else:  # downward: m(s, 0) = s > 0
+        hi, f_hi = p, f
+        lo = max(p - width, 0.0)
+        f_lo = s if lo == 0.0 else miss(lo)
+        while f_lo < 0.0:
+            width *= 4.0
+            hi, f_hi, lo = lo, f_lo, max(lo - width, 0.0)
+            f_lo = s if lo == 0.0 else miss(lo)
+    return brent.root(miss, lo, hi, fa=f_lo, fb=f_hi, rtol=accuracy)
 
 
-def _march(fun, s):
-    """Fast path: s up by _GROWTH from below the root until fun(s) >= 0 (fun None where a shot stops).
+class _Branch:
+    """The first branch p(s) of one pocket, computed point by point; each pressure is predicted by
+    the power law through the two points computed nearest to it (p ~ s^1.5 at first)."""
 
-    Returns (s_lo, f_lo, s_hi, f_hi) bracketing a sign change, or None if the march oversteps.
-    """
-    f = fun(s)
-    while f is not None and f >= 0.0:
-        s /= _GROWTH**4
-        f = fun(s)
-    landed = False
-    while s < _S_MAX:
-        s_new = s * _GROWTH
-        f_new = fun(s_new)
-        if f_new is not None and f_new >= 0.0:
-            return s, _signed(f), s_new, f_new
-        if landed and (f_new is None or f_new < f):  # past a maximum of m: the root may lie behind
-            return None
-        landed = landed or f_new is not None
-        s, f = s_new, f_new
-    return None
+    def __init__(self, alpha, tol):
+        self.alpha, self.tol, self.points = alpha, tol, []
+
+    def pressure(self, s, precise=False):
+        near = sorted(self.points, key=lambda point: abs(math.log(point[0] / s)))[:2]
+        guess = None
+        if len(near) == 2 and near[0][0] != near[1][0]:
+            (s0, p0), (s1, p1) = near
+            guess = p0 * (s / s0) ** (math.log(p1 / p0) / math.log(s1 / s0))
+        elif near:
+            guess = near[0][1] * (s / near[0][0]) ** 1.5
+        p = pressure_of_stretch(1.0 + s, self.alpha, tol=self.tol, guess=guess,
+                                accuracy=_P_RTOL if precise else _MARCH_RTOL)
+        if p is not None:
+            self.points.append((s, p))
+        return p
+
+    def phat(self, s, precise=False):
+        p = self.pressure(s, precise)
+        return None if p is None else p / (3.0 * (1.0 + self.alpha))
 
 
-def _first_branch(phat, target, s, alpha, what):
-    """Robust path: s_lo < s_hi with phat(s_lo) < target <= phat(s_hi) on the first branch.
-
-    ``phat(s)`` is the first-branch value (pressure or volume), None where there is none;
-    the march starts below ``s`` and below a tenth of the equibiaxial limit of alpha < 0,
-    so that it starts on the rising part of the first branch.
-    Raises OutOfRangeError when phat has a maximum below ``target``.
-    """
-    if alpha < 0.0:
-        s = min(s, 0.1 * (1.0 / math.sqrt(-alpha) - 1.0))
-    history = [(s, phat(s))]
-    while history[-1][1] is None or history[-1][1] >= target:
-        s /= _GROWTH**4
-        history = [(s, phat(s))]
+def _first_branch(value, target, s, what):
+    """s_lo < s_hi with value(s_lo) < target <= value(s_hi) on the first branch, and whether s_hi is
+    a maximum of ``value`` (a pressure or a volume, None where there is none; ``value(s, True)``
+    to full accuracy). Raises OutOfRangeError when value has a maximum below ``target``."""
     while True:
-        s *= _GROWTH
-        if s > _S_MAX:
-            raise OutOfRangeError(f"{what} = {target:.6g} is not reached for lambda_0 up to {1 + _S_MAX:g}")
-        value = phat(s)
-        if value is not None and value >= target:
-            return history[-1][0], s
-        if value is None or value < history[-1][1]:
-            lo = history[-2][0] if len(history) > 1 else history[0][0]
-            peak_s, peak = brent.maximum(lambda x: _minus_inf(phat(x)), lo, s, xtol=_PEAK_RTOL * s)
+        start = value(s)
+        while start is None or start >= target:
+            s /= _GROWTH**4
+            start = value(s)
+        history = [(s, start)]
+        while True:
+            if s >= _S_MAX:
+                raise OutOfRangeError(f"{what} = {target:.6g} is not reached for lambda_0 up to {1 + _S_MAX:g}")
+            s = min(s * _GROWTH, _S_MAX)
+            current = value(s)
+            if current is not None and current >= target:
+                return history[-1][0], s, False
+            if current is not None and current >= history[-1][1]:
+                history.append((s, current))
+                continue
+            if len(history) == 1:  # falling from the start: it lies past a maximum; start lower
+                s = history[0][0] / _GROWTH**4
+                break
+            lo = history[-2][0]
+            peak_s, peak = brent.maximum(lambda x: _minus_inf(value(x, True)), lo, s, xtol=_PEAK_RTOL * s)
             if peak < target:
                 raise OutOfRangeError(
                     f"no inflated state on the first branch: {what} = {target:.6g} is above "
                     f"its maximum {peak:.6g} (reached at lambda_0 = {1 + peak_s:.6g})"
                 )
-            return lo, peak_s
-        history.append((s, value))
+            return lo, peak_s, True
 
 
 def _minus_inf(value):
@@ -176,33 +202,40 @@ def inflate(alpha, pressure, *, rtol=1e-10) -> InflatedState:
     s_est = smallstrain.pole_strain(pressure)
     tol = _tolerance(rtol, s_est)
     what = f"Phat = {pressure!r}"
+    branch = _Branch(alpha, tol)
+    lo, hi, peak = _first_branch(branch.phat, pressure, s_est, "pressure")
 
     def miss(s):
-        return _landing(s, alpha, p, tol, what)
+        return _signed(_landing(s, alpha, p, tol, what))
 
-    bracket = _march(miss, s_est)
-    if bracket is None:
-        def phat(s):
-            value = pressure_of_stretch(1.0 + s, alpha, tol=tol)
-            return None if value is None else value / (3.0 * (1.0 + alpha))
-
-        lo, hi = _first_branch(phat, pressure, s_est, alpha, "pressure")
-        bracket = lo, _signed(miss(lo)), hi, _signed(miss(hi))
-    s_lo, f_lo, s_hi, f_hi = bracket
-    s = brent.root(lambda x: _signed(miss(x)), s_lo, s_hi, fa=f_lo, fb=f_hi, rtol=_S_RTOL)
+    # p(lo) < target <= p(hi) to the march's accuracy: the sign of m can still be the other one there
+    f_lo, f_hi = miss(lo), miss(hi)
+    while f_lo >= 0.0:
+        hi, f_hi, lo = lo, f_lo, lo / _GROWTH
+        f_lo = miss(lo)
+    while f_hi < 0.0 and not peak:
+        lo, f_lo, hi = hi, f_hi, hi * _GROWTH
+        f_hi = miss(hi)
+    if f_hi < 0.0:
+        raise OutOfRangeError(f"no inflated state on the first branch: pressure = {pressure:.6g} is at its "
+                              f"maximum (reached at lambda_0 = {1 + hi:.6g}) to within the solver's accuracy")
+    s = brent.root(miss, lo, hi, fa=f_lo, fb=f_hi, rtol=_S_RTOL)
+    if abs(branch.phat(s) / pressure - 1.0) > 1e-7:  # a root of m on another branch: follow p(s) itself
+        s = brent.root(lambda x: branch.phat(x, True) - pressure, lo, hi, rtol=_S_RTOL)
     return _state(1.0 + s, alpha, p, tol, what, pressure=pressure)
 
 
 def inflate_volume(alpha, volume, *, rtol=1e-10) -> InflatedState:
-    """Inflate to enclosed volume V / R^3 (volume control, passes pressure maxima)."""
+    """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima)."""
     alpha = check_alpha(alpha)
     volume = check_positive("volume", volume)
     s_est = smallstrain.strain_of_volume(volume)
     tol = _tolerance(rtol, s_est)
     what = f"V = {volume!r}"
+    branch = _Branch(alpha, tol)
 
-    def volume_of(s):
-        p = pressure_of_stretch(1.0 + s, alpha, tol=tol)
+    def volume_of(s, precise=True):
+        p = branch.pressure(s, precise=True)
         if p is None:
             return None
         status, y, _ = shot_pole(1.0 + s, alpha, p, tol)
@@ -211,7 +244,6 @@ def inflate_volume(alpha, volume, *, rtol=1e-10) -> InflatedState:
                                    f"{STATUS[status]}", load=1.0 + s)
         return y[4]
 
-    lo, hi = _first_branch(volume_of, volume, s_est, alpha, "volume")
+    lo, hi, _ = _first_branch(volume_of, volume, s_est, "volume")
     s = brent.root(lambda x: volume_of(x) - volume, lo, hi, rtol=_S_RTOL)
-    p = pressure_of_stretch(1.0 + s, alpha, tol=tol)
-    return _state(1.0 + s, alpha, p, tol, what, volume=volume)
+    return _state(1.0 + s, alpha, branch.pressure(s, precise=True), tol, what, volume=volume)
