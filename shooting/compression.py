@@ -106,7 +106,7 @@ def _orientation(problem, sol, force, branch):
 def _advance(problem, branch, force):
     """Continue ``branch`` (a ``_Branch``) to ``force``; returns the branch there."""
     f0, x0 = branch.points[-1]
-    step = force - f0
+    step, end, unknown = force - f0, None, ""
     while f0 < force:
         f_try = min(f0 + step, force)
         guess = branch.guess(f_try)
@@ -120,30 +120,41 @@ def _advance(problem, branch, force):
                 f0, x0 = f_try, sol.x
                 step = min(2.0 * step, force - f0) if f0 < force else step
                 continue
-        end = _beyond(force, problem, (f0, x0) if f0 > 0.0 else None)
+        if not unknown:
+            try:
+                end = _beyond(force, problem, (f0, x0) if f0 > 0.0 else None)
+            except ConvergenceError as err:  # keep stepping (the force may still be reached), once
+                end, unknown = None, f"; locating the end of the range failed too: {err}"
         step *= 0.5
         branch = dataclasses.replace(branch, jacobian=None)
-        if step < (_FOLD_STEP if end.fold else _MIN_STEP) * force:
-            found = _on_branch(problem, force)
+        if step < (_FOLD_STEP if end is not None and end.fold else _MIN_STEP) * force:
+            found = _on_branch(problem, force) if end is not None else None
             if found is not None:
                 return branch.then(force, found.x, found.jacobian, 0.0)
-            q, e = sol.x
-            why = sol.message if not sol.success else "the solution left the branch (past pi, a fold, or a jump)"
-            raise ConvergenceError(
-                f"compression failed at force = {f_try:.10g} (continuing from force = {f0:.10g} towards "
-                f"{force!r}, alpha = {problem.alpha!r}, pressure = {problem.inflated.pressure!r}): {why}; "
-                f"max |residual| = {sol.residual:.3g} at P/P_I = {q:.10g}, lambda_c = {problem.stretch(e):.10g}",
-                load=f_try, iterations=sol.evaluations, residual=sol.residual)
+            raise _failed(problem, sol, f_try, f0, force, unknown)
     return branch
+
+
+def _failed(problem, sol, f_try, f0, force, more):
+    """The ConvergenceError of a continuation step that could not be taken: where, from where, why."""
+    q, e = sol.x
+    why = sol.message if not sol.success else "the solution left the branch (past pi, a fold, or a jump)"
+    last = problem.failure()
+    return ConvergenceError(
+        f"compression failed at force = {f_try:.10g} (continuing from force = {f0:.10g} towards {force!r}, "
+        f"alpha = {problem.alpha!r}, pressure = {problem.inflated.pressure!r}): {why}; max |residual| = "
+        f"{sol.residual:.3g} at P/P_I = {q:.10g}, lambda_c = {problem.stretch(e):.10g}" + (f"; {last}" if last else "")
+        + more, load=f_try, iterations=sol.evaluations, residual=sol.residual)
 
 
 def _state(problem, force, x) -> tuple[CompressedState, float]:
     """The compressed state at ``force`` (as given) for the solved unknowns x, and its clamp angle psi(1)."""
     q, lc, a, p = problem.geometry(x, force)
     status, y, _ = problem.shoot(x, force)
-    _, _, steps = problem.shoot(x, force, store=20000)
-    if status != OK:  # cannot happen at a solution (its residual needed the shot): checked all the same
-        raise ConvergenceError(f"compression at force = {force!r}: the final shot {STATUS[status]}", load=force)
+    profile_status, _, steps = problem.shoot(x, force, store=20000)
+    for what, code in (("final", status), ("profile", profile_status)):
+        if code != OK:
+            raise ConvergenceError(f"compression at force = {force!r}: the {what} shot {STATUS[code]}", load=force)
     inflated = problem.inflated
     height = -y[1]
     state = CompressedState(

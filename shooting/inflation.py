@@ -184,7 +184,10 @@ def _state(l0, alpha, p, tol, what, **echo):
     if status != OK or abs(miss) > 1e-8 * (l0 - 1.0) + 1e-13:
         raise ConvergenceError(f"inflation ({what}): the final shot from lambda_0 = {l0:.12g} "
                                f"{STATUS[status]}, rho(1) - 1 = {miss:.3g}", load=l0, residual=miss)
-    _, _, steps = shot_pole(l0, alpha, p, tol, store=20000)
+    status, _, steps = shot_pole(l0, alpha, p, tol, store=20000)
+    if status != OK:
+        raise ConvergenceError(f"inflation ({what}): the profile shot from lambda_0 = {l0:.12g} {STATUS[status]}",
+                               load=l0)
     scalars = dict(alpha=alpha, pressure=p / (3.0 * (1.0 + alpha)), stretch_pole=l0, height=-y[1], volume=y[4],
                    stretch_clamp=y[3])
     return InflatedState(**{**scalars, **echo}, profile=profile_from_steps(steps, alpha, l0), solver="shooting")

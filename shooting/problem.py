@@ -36,7 +36,7 @@ import numpy as np
 
 from pocket.core.states import InflatedState
 
-from .integrator import OK
+from .integrator import OK, STATUS
 from .shots import Tolerance, shot_edge
 
 __all__ = ["Problem"]
@@ -105,6 +105,14 @@ class Problem:
             self._last.update(key=key, shot=shot)
         return shot
 
+    def failure(self) -> str:
+        """The last shot that did not reach the clamp, in words ('' if none did)."""
+        if "failure" not in self._last:
+            return ""
+        status, q, lc, force = self._last["failure"]
+        return (f"the last shot that failed {STATUS[status]} (P/P_I = {q:.10g}, lambda_c = {lc:.10g}, "
+                f"force = {force:.10g})")
+
     def clamp_angle(self, x, force) -> float:
         """psi(1), the meridian's angle at the clamp (pi where the free sheet reaches the clamp plane)."""
         return float(self.shoot(x, force)[1][2])
@@ -120,6 +128,8 @@ class Problem:
         where the shot does not reach the clamp or x is outside the domain."""
         shot = self.shoot(x, force)
         if shot is None or shot[0] != OK:
+            if shot is not None:
+                self._last["failure"] = (shot[0], float(x[0]), self.stretch(x[1]), float(force))
             return None
         y = shot[1]
         out = [(y[0] - 1.0) / self.strain, y[4] / self.inflated.volume - 1.0]
