@@ -20,8 +20,11 @@ not cached. An entry that fails to load is treated as absent: the function is
 compiled afresh and the entry overwritten. A cache that cannot be written costs
 compile time, never a result.
 
+Loading an entry initialises only numba's runtime, not its whole compiler (see
+``_Cache.load_overload``): that halves the start-up of a command.
+
 This uses numba's cache classes (``numba.core.caching``), as custom cache locators
-do; ``tests/test_shooting_cache.py`` runs both failures in subprocesses.
+do; ``tests/test_shooting_cache.py`` runs the failures in subprocesses.
 """
 
 from __future__ import annotations
@@ -37,6 +40,7 @@ from numba.core.caching import (
     _CacheLocator,
     _SourceFileBackedLocatorMixin,
 )
+from numba.core.runtime import rtsys
 
 __all__ = ["compiled", "private_cache_root"]
 
@@ -77,7 +81,13 @@ class _Cache(FunctionCache):
 
     def load_overload(self, sig, target_context):
         try:
-            return super().load_overload(sig, target_context)
+            # numba refreshes its whole target context here (every typing and lowering registry,
+            # and, for its BLAS check, scipy.linalg): 0.3 s of start-up that only compiling needs,
+            # and compiling refreshes it itself. Loading machine code needs the runtime (NRT) that
+            # the refresh would have initialised; the C helpers and math symbols are installed
+            # when the context is created.
+            rtsys.initialize(target_context)
+            return self._load_overload(sig, target_context)
         except Exception:  # stale (a module that moved), foreign or damaged: compile afresh
             return None
 

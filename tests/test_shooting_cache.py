@@ -26,7 +26,8 @@ import {package}.integrator as integrator
 from {package}.equations import pole_state
 status, r, y, _ = integrator.integrate(pole_state(1.1, 0.3, 1.0, 1e-5), 1e-5, 0.3, 1.0, rtol=1e-10)
 stats = integrator._integrate.stats
-print(status, r, stats.cache_path, sum(stats.cache_hits.values()), sum(stats.cache_misses.values()))
+print(status, r, stats.cache_path, sum(stats.cache_hits.values()), sum(stats.cache_misses.values()),
+      ",".join(map(repr, y)))
 """
 
 
@@ -47,14 +48,14 @@ def _read_only(folder: pathlib.Path) -> None:
 
 
 def _run(folder, package, home, tmp):
-    """Run CHILD in a fresh process; returns (status, r_end, cache_path, hits, misses)."""
+    """Run CHILD in a fresh process; returns (status, r_end, cache_path, hits, misses, y(1) as text)."""
     env = {k: v for k, v in os.environ.items() if k not in ("NUMBA_CACHE_DIR", "XDG_CACHE_HOME")}
     env.update(HOME=str(home), TMPDIR=str(tmp), PYTHONPATH=str(folder))
     done = subprocess.run([sys.executable, "-c", CHILD.format(package=package)], env=env, cwd=folder,
                           capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stderr
-    status, r_end, path, hits, misses = done.stdout.split()
-    return int(status), float(r_end), path, int(hits), int(misses)
+    status, r_end, path, hits, misses, y = done.stdout.split()
+    return int(status), float(r_end), path, int(hits), int(misses), y
 
 
 def _homeless(tmp_path):
@@ -68,7 +69,8 @@ def _homeless(tmp_path):
 
 def test_read_only_package_without_a_writable_home_caches_in_a_private_temp_folder(tmp_path):
     """Exact answer: the integrator runs (status 0 at r = 1); numba could not cache in the package or
-    the home, so the cache is <TMPDIR>/pocket-numba-<uid>, mode 0700, and a second process loads it."""
+    the home, so the cache is <TMPDIR>/pocket-numba-<uid>, mode 0700, and a second process loads it
+    and computes the same numbers, bit for bit, as the compiled code did."""
     package = _copy(tmp_path / "site", "shooting_ro")
     _blocked(package / "__pycache__")
     _read_only(package.parent)
@@ -79,7 +81,7 @@ def test_read_only_package_without_a_writable_home_caches_in_a_private_temp_fold
     assert first[:2] == (0, 1.0) and first[2].startswith(str(private)) and first[4] == 1
     assert stat.S_IMODE(private.stat().st_mode) == 0o700
     second = _run(package.parent, "shooting_ro", home, tmp)
-    assert second[:2] == (0, 1.0) and (second[3], second[4]) == (1, 0)
+    assert second[:2] == (0, 1.0) and (second[3], second[4]) == (1, 0) and second[5] == first[5]
 
 
 def test_nowhere_to_cache_compiles_without_a_cache(tmp_path):
@@ -90,7 +92,7 @@ def test_nowhere_to_cache_compiles_without_a_cache(tmp_path):
     home, tmp = _homeless(tmp_path), tmp_path / "tmp"
     tmp.mkdir()
     _blocked(tmp / f"pocket-numba-{os.getuid()}")
-    status, r_end, path, hits, misses = _run(package.parent, "shooting_nowhere", home, tmp)
+    status, r_end, path, hits, misses, _ = _run(package.parent, "shooting_nowhere", home, tmp)
     assert (status, r_end, hits) == (0, 1.0, 0) and not path.startswith(str(tmp_path))
 
 
@@ -106,3 +108,16 @@ def test_a_cache_left_by_a_module_that_moved_is_recompiled(tmp_path):
     package.rename(site / "shooting_after")
     second = _run(site, "shooting_after", home, tmp)
     assert second[:2] == (0, 1.0) and second[4] == 1
+
+
+def test_a_cached_solve_loads_no_compiler_and_no_scipy_solvers(tmp_path):
+    """Exact answer: with the cache warm, a whole compression in a fresh process imports neither
+    scipy.optimize, scipy.integrate nor scipy.linalg (numba's compiler would import the last), and
+    none of numba's typing registries (numba.np.arraymath is one)."""
+    script = ("import sys; from pocket import shooting; shooting.compression_curve(0.3, 0.31, [0.1, 0.5]); "
+              "print(' '.join(m for m in ('scipy.optimize', 'scipy.integrate', 'scipy.linalg', "
+              "'numba.np.arraymath') if m in sys.modules))")
+    for _ in range(2):  # the first run may compile (a cold cache); the second loads
+        done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == ""
