@@ -9,8 +9,9 @@ Nonlinear Equations, 1983, ch. 6 and 8):
   lies where the residual is defined (``fun`` returns None outside the model's domain,
   e.g. a shot that does not reach the clamp);
 - J starts as the caller's (the last solve's, in a continuation) or as differences,
-  gets Broyden's rank-one update after each step, and is recomputed by differences
-  whenever a step with an updated J fails to decrease the residual;
+  gets Broyden's rank-one update after each step that halves the residual, and is
+  recomputed by differences after a slower step or when a step with an updated J
+  fails to decrease the residual;
 - it stops when max |f| <= ``tol`` (the caller scales f so that this is a relative
   accuracy), and reports failure (never an exception) with what it reached, so the
   caller can cut its load step or say where it failed.
@@ -31,6 +32,7 @@ __all__ = ["Solution", "solve", "differences"]
 
 _ARMIJO = 1e-4
 _MIN_FRACTION = 2.0**-12
+_SLOW = 0.5  # a step that reduces max |f| by less than this factor ends Broyden's updates
 _STEP = 1e-7  # relative difference step: about the square root of the residuals' noise (rtol ~ 1e-10 and up)
 
 
@@ -112,7 +114,10 @@ def solve(fun: Callable[[np.ndarray], np.ndarray | None], x0, *, tol: float, jac
             continue
         x_new, f_new = step
         s, y = x_new - x, f_new - f
-        jac = jac + np.outer(y - jac @ s, s) / (s @ s)  # Broyden's ("good") update
+        if np.max(np.abs(f_new)) <= _SLOW * norm:
+            jac = jac + np.outer(y - jac @ s, s) / (s @ s)  # Broyden's ("good") update
+        else:  # slow progress: the Jacobian is stale; difference it afresh at the new point
+            jac = None
         x, f, fresh = x_new, f_new, False
     return result(x, f, jac, np.max(np.abs(f)) <= tol, f"{max_iterations} iterations")
 
