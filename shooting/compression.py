@@ -196,7 +196,7 @@ def compression_curve(alpha, pressure_initial, forces, *, rtol=1e-10, progress=N
     """
     alpha = check_alpha(alpha)
     pressure_initial = check_positive("pressure", pressure_initial)
-    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=float))]
+    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
     problem = Problem(inflate(alpha, pressure_initial, rtol=rtol), rtol)

@@ -142,6 +142,19 @@ def _contact_limit(s0, pressure_initial):
     return a_max, _force(a_max, s0, pressure_initial)
 
 
+def _contact_radius(force, s0, pressure_initial, a_max):
+    """a with Fhat(a) = ``force`` (0 < force <= Fhat(a_max)), to 1e-14 relative in the force: solved
+    for b = a / sqrt(force), of order one however small the force (Fhat ~ a^2 as a -> 0)."""
+    scale = np.sqrt(force)
+
+    def miss(b):
+        return _force(b * scale, s0, pressure_initial) / force - 1.0
+
+    hi = min(a_max / scale, 10.0)  # for small forces b ~ 1 / lambda_0: the bracket stays of order one
+    hi = hi if miss(hi) >= 0.0 else a_max / scale
+    return min(brentq(miss, 0.0, hi, xtol=1e-300, rtol=1e-14) * scale, a_max)
+
+
 def range_end(alpha, pressure_initial) -> float:
     """The force Fhat at which the model's contact reaches the clamp (A_c = pi R^2): its range."""
     inflated = inflate(alpha, pressure_initial)
@@ -154,7 +167,7 @@ def compression_curve(alpha, pressure_initial, forces, *, progress=None) -> list
     ``progress(done, total)``, if given, is called after each force (``total`` = len(forces)).
     """
     inflated = inflate(alpha, pressure_initial)
-    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=float))]
+    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
     s0 = inflated.stretch_pole - 1.0
@@ -164,8 +177,7 @@ def compression_curve(alpha, pressure_initial, forces, *, progress=None) -> list
         if f > f_max:
             raise OutOfRangeError(f"force = {f:.6g} is beyond the analytical model's range: the contact "
                                   f"would reach the clamp (at force = {f_max:.6g})")
-        a = 0.0 if f == 0.0 else brentq(lambda a, f=f: _force(a, s0, inflated.pressure) - f, 0.0, a_max,
-                                        xtol=1e-15, rtol=1e-14)
+        a = 0.0 if f == 0.0 else _contact_radius(f, s0, inflated.pressure, a_max)
         states.append(_compressed(inflated, f, a))
         if progress is not None:
             progress(len(states), len(forces))
