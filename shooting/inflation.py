@@ -11,9 +11,11 @@ the target pressure can skip over a maximum of p(s), or land on another branch.
 Pressure control (the paper's step 1). s is marched up by a factor 1.4 from
 below the small-strain estimate, computing p(s) at each step from a power-law
 prediction through the last two points (a bracket grown around the prediction,
-then Brent's method: about 4 shots each), until p(s) passes the target. The pole
+then Brent's method: about 7 shots each), until p(s) passes the target. The pole
 strain is then the root of m(s, p_target) in the last step, by Brent's method
-relative to s (so Phat = 1e-6, s ~ 2e-5, is resolved as well as Phat = 1). If
+relative to s (so Phat = 1e-6, s ~ 2e-5, is resolved as well as Phat = 1), and
+checked to lie on p(s). In all, 35 to 90 shots (the paper's silicone at Phat = 0.31:
+48; the fixed-pressure bisections used before took 123). If
 p(s) falls first, the first branch has a maximum (alpha near 0 or below):
 golden sections locate it, and above it no first-branch state exists
 (``OutOfRangeError`` naming the maximum). For alpha < 0 the pole tension
