@@ -14,9 +14,8 @@ import stat
 import subprocess
 import sys
 
-import pytest
-
 import pocket.shooting
+import pytest
 
 pytestmark = pytest.mark.slow
 

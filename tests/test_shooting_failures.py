@@ -2,11 +2,11 @@
 is an OutOfRangeError. Failures are provoked by an integrator that reports a failing status."""
 
 import pytest
+from pocket.shooting import shots
+from pocket.shooting.integrator import FOLD, STEPS
 
 from pocket import shooting
 from pocket.core.errors import ConvergenceError, OutOfRangeError
-from pocket.shooting import shots
-from pocket.shooting.integrator import FOLD, STEPS
 
 SAMPLE = 47 / 160
 
