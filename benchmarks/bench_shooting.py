@@ -2,19 +2,24 @@
 
     python benchmarks/bench_shooting.py
 
-Prints medians of repeated runs (machines here are noisy) of one inflation, one
-compressed state and a 40-point compression curve; ``solve_bvp`` on the same
-inflation problem at matched accuracy, with the ratio; and a whole
-``pocket compress`` process with 100 forces, split into start-up (imports,
-loading the compiled integrator) and solving.
+Prints medians of repeated runs (machines here are noisy; the load average is
+printed with them) of one inflation, one compressed state, a 40-point compression
+curve and a range end; ``solve_bvp`` on the same inflation problem at matched
+accuracy, with the ratio; and a whole ``pocket compress`` process with 100 forces
+(the first run, which may compile, excluded), with its start-up split into imports
+(``python -X importtime``), the first call (numba's runtime and the cached machine
+code) and solving.
 """
 
 from __future__ import annotations
 
+import os
+import re
 import subprocess
 import sys
 
 import numpy as np
+from pocket.shooting import rangeend
 from pocket.shooting.equations import pole_state, tensions
 from pocket.shooting.shots import R_POLE
 from scipy.integrate import solve_bvp
@@ -23,6 +28,16 @@ from timing import median_time
 from pocket import shooting
 
 ALPHA, PHAT = 47 / 160, 0.31
+FORCES_100 = [f"{f:.4f}" for f in np.linspace(0.01, 1.0, 100)]
+FIRST_CALL = """
+import time
+import numpy as np
+from pocket.shooting.integrator import integrate
+from pocket.shooting.equations import pole_state
+t = time.perf_counter()
+integrate(pole_state(1.1, 0.3, 1.0, 1e-5), 1e-5, 0.3, 1.0, rtol=1e-10)
+print(time.perf_counter() - t)
+"""
 
 
 def bvp_inflate(tol):
@@ -51,7 +66,24 @@ def bvp_inflate(tol):
     return sol
 
 
+def _python(*args, **kw):
+    return subprocess.run([sys.executable, *args], check=True, capture_output=True, text=True, **kw)
+
+
+def import_breakdown() -> dict[str, float]:
+    """Cumulative import time (s) of the modules a ``pocket compress`` loads, median of 5 processes."""
+    names = ("numpy", "numba", "pocket.cli.main", "pocket.shooting.compression")
+    runs = []
+    for _ in range(5):
+        err = _python("-X", "importtime", "-c", "import pocket.cli.main, pocket.shooting.compression").stderr
+        pattern = r"^import time:\s*\d+ \|\s*(\d+) \|\s*(\S+)"
+        found = {name: int(total) for total, name in re.findall(pattern, err, re.M)}
+        runs.append([found.get(n, 0) * 1e-6 for n in names])
+    return dict(zip(names, np.median(runs, axis=0), strict=True))
+
+
 def main():
+    load = os.getloadavg()[0]
     ref = shooting.inflate(ALPHA, PHAT, rtol=1e-13)
     shooting.compression_curve(ALPHA, PHAT, [0.1])  # compile/load once
 
@@ -59,12 +91,15 @@ def main():
     err_inf = abs(shooting.inflate(ALPHA, PHAT).stretch_pole - ref.stretch_pole)
     t_one = median_time(lambda: shooting.compress(ALPHA, PHAT, 0.19), 11)
     forces = np.linspace(0.025, 1.0, 40)
-    t_curve = median_time(lambda: shooting.compression_curve(ALPHA, PHAT, forces), 5)
+    t_curve = median_time(lambda: shooting.compression_curve(ALPHA, PHAT, forces), 11)
+    t_end = median_time(lambda: (rangeend._ENDS.clear(), shooting.range_end(ALPHA, PHAT)), 5)
 
-    print(f"shooting (alpha = {ALPHA}, Phat_I = {PHAT}, rtol 1e-10), medians:")
+    print(f"shooting (alpha = {ALPHA}, Phat_I = {PHAT}, rtol 1e-10), medians; load average {load:.1f} on "
+          f"{os.cpu_count()} cores:")
     print(f"  one inflation            {t_inf * 1e3:8.2f} ms   |lambda_0 error| {err_inf:.1e}")
     print(f"  one compressed state     {t_one * 1e3:8.2f} ms   (includes its inflation)")
     print(f"  40-point curve           {t_curve * 1e3:8.2f} ms")
+    print(f"  range end (uncached)     {t_end * 1e3:8.2f} ms   Fhat_end = {shooting.range_end(ALPHA, PHAT):.10g}")
 
     # The peer at matched accuracy: tighten tol until its lambda_0 error is no worse than ours.
     for tol in (1e-6, 1e-8, 1e-10):
@@ -75,18 +110,22 @@ def main():
     t_bvp = median_time(lambda: bvp_inflate(tol), 3)
     print(f"  solve_bvp inflation      {t_bvp * 1e3:8.2f} ms   |lambda_0 error| {err_bvp:.1e} "
           f"(tol {tol:g}, {sol.x.size} nodes)")
-    print(f"  ratio solve_bvp / shooting: {t_bvp / t_inf:.0f}x")
+    print(f"  ratio solve_bvp / shooting: {t_bvp / t_inf:.1f}x")
 
-    cmd = [sys.executable, "-m", "pocket.cli", "compress", "--alpha", "47/160", "--pressure", "0.31",
-           "--force", *[f"{f:.4f}" for f in np.linspace(0.01, 1.0, 100)]]
-    t_proc = median_time(lambda: subprocess.run(cmd, check=True, capture_output=True), 5)
-    imports = [sys.executable, "-c", "import pocket.cli, shooting, shooting.integrator"]
-    t_import = median_time(lambda: subprocess.run(imports, check=True), 5)
+    cmd = ["-m", "pocket.cli", "compress", "--alpha", "47/160", "--pressure", "0.31", "--force", *FORCES_100]
+    _python(*cmd)  # a first run may compile
+    t_proc = median_time(lambda: _python(*cmd), 9)
+    t_bare = median_time(lambda: _python("-c", "pass"), 9)
+    first = np.median([float(_python("-c", FIRST_CALL).stdout) for _ in range(5)])
     t_solve = median_time(lambda: shooting.compression_curve(ALPHA, PHAT, np.linspace(0.01, 1, 100)), 5)
-    print("whole process `pocket compress` with 100 forces:")
+    print(f"whole process `pocket compress` with 100 forces (median of 9; load average now "
+          f"{os.getloadavg()[0]:.1f}):")
     print(f"  total                    {t_proc * 1e3:8.0f} ms")
-    print(f"  start-up (python, numpy, scipy, numba, cached integrator) {t_import * 1e3:6.0f} ms")
-    print(f"  solving 100 states       {t_solve * 1e3:8.0f} ms; the rest is printing and exit")
+    print(f"  python itself            {t_bare * 1e3:8.0f} ms")
+    for name, seconds in import_breakdown().items():
+        print(f"  import {name:<28s}{seconds * 1e3:6.0f} ms (cumulative)")
+    print(f"  first call (numba runtime, cached code) {first * 1e3:5.0f} ms")
+    print(f"  solving 100 states       {t_solve * 1e3:8.0f} ms; the rest is the command line, printing and exit")
 
 
 if __name__ == "__main__":

@@ -2,9 +2,11 @@
 
 ``inflate`` / ``inflate_volume`` solve step 1 (pressure or volume control),
 ``compress`` / ``compression_curve`` step 2 (fixed volume, flat frictionless
-plate, force given). All return ``pocket.core.states`` containers; the equations and their
-derivation are in ``pocket.shooting.equations``. ``SOLVER`` is its record
-(entry points and options, ``pocket.core.solver``).
+plate, force given), ``range_end`` the force at which step 2 leaves the model (the
+free sheet reaches the clamp plane). The states are ``pocket.core.states`` containers;
+the equations and their derivation are in ``pocket.shooting.equations``, the range end
+in ``pocket.shooting.rangeend``. ``SOLVER`` is its record (entry points and options,
+``pocket.core.solver``).
 
 The entry points are imported on first use, so that reading ``SOLVER`` (the
 command line does, to build its flags) costs nothing.
@@ -15,7 +17,7 @@ import importlib
 from pocket.core.inputs import check_tolerance
 from pocket.core.solver import Option, Solver
 
-__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve"]
+__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "range_end"]
 
 #: loosest ODE tolerance accepted: the root finders need residuals far below the quantities they resolve
 RTOL_MAX = 1e-4
@@ -24,13 +26,13 @@ SOLVER = Solver(
     name="shooting",
     summary="reference: the membrane equations integrated to the clamp, root finding on the unknowns",
     module=__name__,
-    entry_points=("inflate", "inflate_volume", "compress", "compression_curve"),
+    entry_points=("inflate", "inflate_volume", "compress", "compression_curve", "range_end"),
     options=(Option("rtol", "float", 1e-10, f"relative tolerance of the ODE integration (DOP853), "
                     f"at most {RTOL_MAX:g}", lambda name, value: check_tolerance(name, value, RTOL_MAX)),),
 )
 
 _HOMES = {"inflate": "inflation", "inflate_volume": "inflation", "compress": "compression",
-          "compression_curve": "compression"}
+          "compression_curve": "compression", "range_end": "rangeend"}
 
 
 def __getattr__(name):

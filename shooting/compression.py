@@ -1,83 +1,164 @@
-"""Step 2, compression at fixed volume by a flat frictionless plate.
+"""Step 2, compression at fixed volume by a flat frictionless plate, force given.
 
-Contact zone (0 <= r <= a): the sheet lies flat on the plate; tangential
-equilibrium with no friction and regularity at the axis leave the uniform
-equibiaxial stretch rho = lambda_c r, lambda_1 = lambda_2 = lambda_c (the normal
-load is carried by the plate). At the contact edge the tension T_1 and the
-position are continuous and the meridian is horizontal (a smooth plate cannot
-exert a line force), so the free part a <= r <= 1 starts from
-rho = lambda_c a, psi = 0, lambda_1 = lambda_c and is integrated to the clamp.
+The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.problem``.
+Each force is solved by the damped Newton-Broyden method of
+``pocket.shooting.newton``, by continuation in the force from the inflated state:
+forces are taken in increasing order, each seeded by secant extrapolation from
+the last two states and the last Jacobian. A step that does not converge is
+halved (and the step grows again after successes). Near a fold of the force
+(the end of the range for some alpha < 0, ``pocket.shooting.rangeend``) continuation in
+the force stalls; there the state is found on the branch by its clamp angle instead.
+A solve fails, with a ConvergenceError saying at which force, from which force, with
+what residual and why, only when both fail and the step is below 1e-9 of the force.
 
-Unknowns (q, lambda_c) with q = P/P_I. The force fixes the contact radius:
-F = P A_c with A_c = pi (lambda_c a)^2 gives Fhat = q (lambda_c a)^2, so
-a = sqrt(Fhat / q) / lambda_c. Residuals: rho(1) - 1 (clamp) and V/V_I - 1
-(fixed fluid volume), where V = -pi int rho^2 eta' dr is carried by the free
-part alone (eta' = 0 on the contact zone). They are solved by MINPACK's hybrid
-method (``scipy.optimize.root``), each force seeded by the last (continuation),
-with the force step halved on failure.
-
-The model holds while the free meridian stays above the clamp plane and does
-not fold (psi in (0, pi)); past that a force is reported out of range.
+The model's range ends at the force Fhat_end where the free sheet reaches the
+clamp plane (``pocket.shooting.rangeend``; psi(1) = pi). A force above it is an
+OutOfRangeError quoting Fhat_end, the same number whatever force was asked; a
+force up to it is solved. Fhat_end is computed (once, cached) only when it can
+matter: when a step fails, or when a state's clamp angle psi(1) comes within
+1e-6 rad (or 1e4 rtol) of pi.
 """
 
 from __future__ import annotations
 
+import dataclasses
+import math
+
 import numpy as np
-from scipy.optimize import root
 
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.inputs import check_alpha, check_force, check_positive
 from pocket.core.states import CompressedState, InflatedState
 
+from . import newton
 from .inflation import inflate
-from .integrator import OK
-from .shots import profile_from_steps, shot_edge
+from .integrator import OK, STATUS
+from .problem import Problem
+from .rangeend import end_of, solve_on_branch
+from .shots import profile_from_steps
 
 __all__ = ["compress", "compression_curve"]
 
-_FAIL = 10.0  # residual returned for a shot that does not reach the clamp
-_TOL = 1e-12  # residual accepted at convergence (volume fraction and clamp radius)
-_MAX_HALVINGS = 12
+_MIN_STEP = 1e-9  # smallest force step, relative to the force, before a solve is declared failed
+_FOLD_STEP = 1e-3  # near a fold of the force, the step below which the state is sought by the clamp angle
 
 
-def _residual(x, force, inflated, alpha, rtol):
-    q, lc = x
-    if not (q > 0.0 and lc > 0.0):
-        return np.array([_FAIL, _FAIL])
-    a = np.sqrt(force / q) / lc
-    if not a < 1.0:
-        return np.array([_FAIL, _FAIL])
-    p = 3.0 * (1.0 + alpha) * inflated.pressure * q
-    status, y, _ = shot_edge(lc, a, alpha, p, rtol)
-    if status != OK:
-        return np.array([_FAIL, _FAIL])
-    return np.array([y[0] - 1.0, y[4] / inflated.volume - 1.0])
+def _band(rtol):
+    """Distance of psi(1) below pi inside which a state consults the range end (rad)."""
+    return max(1e-6, 1e4 * rtol)
 
 
-def _solve(force, seed, inflated, alpha, rtol):
-    """Newton-like solve for (q, lambda_c) at one force; returns x or None."""
-    sol = root(_residual, seed, args=(force, inflated, alpha, rtol), method="hybr",
-               options=dict(xtol=1e-14))
-    res = _residual(sol.x, force, inflated, alpha, rtol)
-    return sol.x if np.max(np.abs(res)) < _TOL else None
-
-
-def _state(force, x, inflated, alpha, rtol):
-    q, lc = x
-    a = np.sqrt(force / q) / lc
-    p = 3.0 * (1.0 + alpha) * inflated.pressure * q
-    status, y, _ = shot_edge(lc, a, alpha, p, rtol)
-    _, _, steps = shot_edge(lc, a, alpha, p, rtol, store=20000)
-    profile = profile_from_steps(steps, alpha, lc, contact_radius=a)
-    free = ~profile.contact
-    if status != OK or np.any(profile.eta[free][:-1] <= 0.0) or np.any(steps[1:, 3] <= 0.0):
+def _beyond(force, problem, seed):
+    """The range end of ``problem`` (``rangeend.End``); OutOfRangeError if ``force`` is past it."""
+    end = end_of(problem, seed)
+    if force > end.force:
+        where = ("the free part of the sheet reaches the clamp plane" if not end.fold else
+                 f"the force has a maximum, with the sheet's angle at the clamp at {end.angle:.6g} rad")
         raise OutOfRangeError(
-            f"force = {force:.6g} is beyond the model's range: the free part of the sheet "
-            "reaches the clamp plane"
+            f"force = {force!r} is beyond the model's range, which ends at force = {end.force:.10g} "
+            f"(alpha = {problem.alpha!r}, pressure = {problem.inflated.pressure!r}): there {where}"
         )
+    return end
+
+
+def _on_branch(problem, force):
+    """newton.Solution at ``force`` seeded on the branch by its clamp angle (near a fold), or None."""
+    x = solve_on_branch(problem, force)
+    if x is None:
+        return None
+    sol = newton.solve(lambda v: problem.residual(v, force), x, tol=problem.residual_tol)
+    return sol if sol.success else None
+
+
+@dataclasses.dataclass(frozen=True)
+class _Branch:
+    """Where a continuation stands: the last two solved (force, x), the last Jacobian, and the sign
+    of det dR/dx on the first branch (it changes at a fold of the force: a state with the other
+    sign lies past the fold, on another branch)."""
+
+    points: tuple
+    jacobian: np.ndarray | None = None
+    orientation: float = 0.0
+
+    def guess(self, force):
+        """Secant prediction of x at ``force`` from the last two points."""
+        (f0, x0) = self.points[-1]
+        if len(self.points) < 2 or self.points[-2][0] <= 0.0:
+            return x0
+        f_prev, x_prev = self.points[-2]
+        return x0 + (force - f0) * (x0 - x_prev) / (f0 - f_prev)
+
+    def then(self, force, x, jacobian, orientation):
+        return _Branch(points=(self.points[-1], (force, x)), jacobian=jacobian,
+                       orientation=self.orientation or orientation)
+
+
+def _orientation(problem, sol, force, branch):
+    """sign det J at a solution: by differences for the first state of a branch, or when the
+    Broyden-updated J (an approximation) disagrees with the branch."""
+    sign = 0.0 if sol.jacobian is None else np.sign(np.linalg.det(sol.jacobian))
+    if sign != branch.orientation or not branch.orientation:
+        jac = newton.differences(lambda v: problem.residual(v, force), sol.x, sol.f)
+        sign = 0.0 if jac is None else np.sign(np.linalg.det(jac))
+    return sign
+
+
+def _advance(problem, branch, force):
+    """Continue ``branch`` (a ``_Branch``) to ``force``; returns the branch there."""
+    f0, x0 = branch.points[-1]
+    step, end, unknown = force - f0, None, ""
+    while f0 < force:
+        f_try = min(f0 + step, force)
+        guess = branch.guess(f_try)
+        sol = newton.solve(lambda x, f=f_try: problem.residual(x, f), guess, tol=problem.residual_tol,
+                           jacobian=branch.jacobian)
+        if sol.success and problem.close(sol.x, guess, x0) and \
+                problem.clamp_angle(sol.x, f_try) <= math.pi + _band(problem.rtol):
+            sign = _orientation(problem, sol, f_try, branch)
+            if not branch.orientation or sign == branch.orientation:
+                branch = branch.then(f_try, sol.x, sol.jacobian, sign)
+                f0, x0 = f_try, sol.x
+                step = min(2.0 * step, force - f0) if f0 < force else step
+                continue
+        if not unknown:
+            try:
+                end = _beyond(force, problem, (f0, x0) if f0 > 0.0 else None)
+            except ConvergenceError as err:  # keep stepping (the force may still be reached), once
+                end, unknown = None, f"; locating the end of the range failed too: {err}"
+        step *= 0.5
+        branch = dataclasses.replace(branch, jacobian=None)
+        if step < (_FOLD_STEP if end is not None and end.fold else _MIN_STEP) * force:
+            found = _on_branch(problem, force) if end is not None else None
+            if found is not None:
+                return branch.then(force, found.x, found.jacobian, 0.0)
+            raise _failed(problem, sol, f_try, f0, force, unknown)
+    return branch
+
+
+def _failed(problem, sol, f_try, f0, force, more):
+    """The ConvergenceError of a continuation step that could not be taken: where, from where, why."""
+    q, e = sol.x
+    why = sol.message if not sol.success else "the solution left the branch (past pi, a fold, or a jump)"
+    last = problem.failure()
+    return ConvergenceError(
+        f"compression failed at force = {f_try:.10g} (continuing from force = {f0:.10g} towards {force!r}, "
+        f"alpha = {problem.alpha!r}, pressure = {problem.inflated.pressure!r}): {why}; max |residual| = "
+        f"{sol.residual:.3g} at P/P_I = {q:.10g}, lambda_c = {problem.stretch(e):.10g}" + (f"; {last}" if last else "")
+        + more, load=f_try, iterations=sol.evaluations, residual=sol.residual)
+
+
+def _state(problem, force, x) -> tuple[CompressedState, float]:
+    """The compressed state at ``force`` (as given) for the solved unknowns x, and its clamp angle psi(1)."""
+    q, lc, a, p = problem.geometry(x, force)
+    status, y, _ = problem.shoot(x, force)
+    profile_status, _, steps = problem.shoot(x, force, store=20000)
+    for what, code in (("final", status), ("profile", profile_status)):
+        if code != OK:
+            raise ConvergenceError(f"compression at force = {force!r}: the {what} shot {STATUS[code]}", load=force)
+    inflated = problem.inflated
     height = -y[1]
-    return CompressedState(
-        alpha=alpha,
+    state = CompressedState(
+        alpha=problem.alpha,
         pressure_initial=inflated.pressure,
         force=force,
         pressure=inflated.pressure * q,
@@ -88,69 +169,54 @@ def _state(force, x, inflated, alpha, rtol):
         height=height,
         height_ratio=height / inflated.height,
         volume=y[4],
-        profile=profile,
+        profile=profile_from_steps(steps, problem.alpha, lc, contact_radius=a),
         inflated=inflated,
         solver="shooting",
     )
+    return state, y[2]
 
 
-def _uncompressed(inflated: InflatedState) -> CompressedState:
+def _uncompressed(inflated: InflatedState, force: float) -> CompressedState:
     """Fhat = 0: the inflated state itself, seen as a compressed state with no contact."""
     return CompressedState(
-        alpha=inflated.alpha, pressure_initial=inflated.pressure, force=0.0,
+        alpha=inflated.alpha, pressure_initial=inflated.pressure, force=force,
         pressure=inflated.pressure, pressure_ratio=1.0, contact_area=0.0, contact_radius=0.0,
         stretch_contact=inflated.stretch_pole, height=inflated.height, height_ratio=1.0,
         volume=inflated.volume, profile=inflated.profile, inflated=inflated, solver="shooting",
     )
 
 
-def _continue(f_from, x_from, f_to, inflated, alpha, rtol):
-    """Solve at f_to starting from the solution x_from at f_from, halving the step on failure."""
-    f, x = f_from, x_from
-    step = f_to - f_from
-    halvings = 0
-    while f < f_to:
-        f_try = min(f + step, f_to)
-        x_try = _solve(f_try, x, inflated, alpha, rtol)
-        if x_try is None:
-            halvings += 1
-            if halvings > _MAX_HALVINGS:
-                raise OutOfRangeError(
-                    f"force = {f_to:.6g} is beyond the model's range: no compressed state past "
-                    f"force = {f:.6g} (the free part folds onto the clamp plane or the solve fails)"
-                ) if f > 0.0 else ConvergenceError(
-                    f"compression failed to start from the inflated state towards force = {f_to:.6g}",
-                    load=f, iterations=halvings)
-            step /= 2.0
-            continue
-        f, x = f_try, x_try
-    return x
-
-
-def compression_curve(alpha, pressure_initial, forces, *, rtol=1e-10) -> list[CompressedState]:
+def compression_curve(alpha, pressure_initial, forces, *, rtol=1e-10, progress=None) -> list[CompressedState]:
     """Compress at each force Fhat = F/(P_I pi R^2) of ``forces`` (any order), by continuation.
 
-    Returns the states in the order of ``forces``. Raises OutOfRangeError for a force past
-    the model's range, InputError for invalid input.
+    Returns the states in the order of ``forces``, each echoing its inputs exactly.
+    ``progress(done, total)``, if given, is called after each force (``total`` = len(forces)).
+    Raises OutOfRangeError for a force past the end of the model's range (``range_end``),
+    ConvergenceError if a solve fails, InputError for invalid input.
     """
     alpha = check_alpha(alpha)
     pressure_initial = check_positive("pressure", pressure_initial)
-    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=float))]
+    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    inflated = inflate(alpha, pressure_initial, rtol=rtol)
-    states = {}
-    f_prev, x_prev = 0.0, np.array([1.0, inflated.stretch_pole])
-    for f in sorted(set(forces)):
+    problem = Problem(inflate(alpha, pressure_initial, rtol=rtol), rtol)
+    counts = {f: forces.count(f) for f in forces}
+    states, done = {}, 0
+    branch = _Branch(points=((0.0, problem.start()),))
+    for f in sorted(counts):
         if f == 0.0:
-            states[f] = _uncompressed(inflated)
-            continue
-        x_prev = _continue(f_prev, x_prev, f, inflated, alpha, rtol)
-        f_prev = f
-        states[f] = _state(f, x_prev, inflated, alpha, rtol)
+            states[f] = _uncompressed(problem.inflated, f)
+        else:
+            branch = _advance(problem, branch, f)
+            states[f], clamp_angle = _state(problem, f, branch.points[-1][1])
+            if clamp_angle >= math.pi - _band(rtol):
+                _beyond(f, problem, branch.points[-1])
+        done += counts[f]
+        if progress is not None:
+            progress(done, len(forces))
     return [states[f] for f in forces]
 
 
 def compress(alpha, pressure_initial, force, *, rtol=1e-10) -> CompressedState:
-    """Compress the pocket inflated at Phat_I = ``pressure_initial`` by force Fhat."""
+    """Compress the pocket inflated at Phat_I = ``pressure_initial`` by force Fhat (``compression_curve``)."""
     return compression_curve(alpha, pressure_initial, [force], rtol=rtol)[0]

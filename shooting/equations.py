@@ -45,14 +45,18 @@ b = -l0 k^2 (3A - B) / (16 A).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
-__all__ = ["tensions", "rhs", "pole_state", "tension_scale"]
+from .compiled import compiled
+
+__all__ = ["tensions", "tensions_compiled", "rhs", "pole_state", "tension_scale"]
 
 
-@njit(cache=True)
 def tensions(l1, l2, alpha):
-    """Return (t1, t2, dt1/dl1, dt1/dl2), tensions in units of 2 C1 T."""
+    """Return (t1, t2, dt1/dl1, dt1/dl2), tensions in units of 2 C1 T.
+
+    Plain numpy (floats or arrays of one shape); ``tensions_compiled`` is the same
+    function compiled, for the integrator.
+    """
     inv = 1.0 / (l1**3 * l2**3)
     g1 = l1 / l2 - inv
     t1 = g1 * (1.0 + alpha * l2 * l2)
@@ -62,13 +66,16 @@ def tensions(l1, l2, alpha):
     return t1, t2, dt1_dl1, dt1_dl2
 
 
-@njit(cache=True)
+tensions_compiled = compiled(tensions)
+
+
+@compiled
 def rhs(r, y, alpha, p, out):
     """Write dy/dr into ``out`` (shape (5,)) for y = [rho, eta, psi, lambda_1, v]."""
     rho, psi, l1 = y[0], y[2], y[3]
     l2 = rho / r
     s, c = np.sin(psi), np.cos(psi)
-    t1, t2, a11, a12 = tensions(l1, l2, alpha)
+    t1, t2, a11, a12 = tensions_compiled(l1, l2, alpha)
     drho = l1 * c
     dl2 = (drho - l2) / r
     out[0] = drho

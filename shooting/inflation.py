@@ -1,108 +1,198 @@
-"""Step 1, inflation: find the pole stretch lambda_0 such that lambda_2(1) = 1.
+"""Step 1, inflation: find the pole stretch lambda_0 = 1 + s such that lambda_2(1) = 1.
 
-Pressure control (the paper's step 1). For a given lambda_0, the clamp radius
-rho(1) falls from lambda_0 (> 1, at p = 0) as p rises, so ``pressure_of_stretch``
-finds the pressure p(lambda_0) with rho(1) = 1 by a bracketing root finder
-(brentq). Along the first branch p(lambda_0) rises from 0; for alpha near 0 it
-reaches a maximum and falls (DESIGN.md). ``inflate`` marches lambda_0 upward from
-below the small-strain estimate until p(lambda_0) passes the target; if p falls
-first, it locates the maximum and, above it, reports that no inflated state
-exists on the first branch. The final lambda_0 is then found at fixed pressure
-by brentq inside that bracket (rho(1) - 1 changes sign there), which is the
-paper's formulation with a robust root finder instead of fixed bisections.
+The first branch. A shot from the pole with strain s at pressure p lands at
+rho(1) = 1 + m(s, p). At fixed s, m falls as p rises from m(s, 0) = s > 0 (the
+flat sheet); p(s), the pressure with m = 0, is the pressure that holds the dome
+of pole strain s. The first branch is the curve p(s) followed continuously from
+s = 0, where the small-strain (Hencky) regime gives p ~ 3 (1 + alpha) 4 sqrt(6) s^1.5
+(``pocket.core.smallstrain``). Following it matters: a root of m found by marching s at
+the target pressure can skip over a maximum of p(s), or land on another branch.
 
-Volume control (``inflate_volume``) brackets V(lambda_0) the same way; the
-volume grows through pressure maxima, so it reaches states pressure control cannot.
+Pressure control (the paper's step 1). s is marched up by a factor 1.4 from
+below the small-strain estimate, computing p(s) at each step from a power-law
+prediction through the last two points (a bracket grown around the prediction,
+then Brent's method: about 7 shots each), until p(s) passes the target. The pole
+strain is then the root of m(s, p_target) in the last step, by Brent's method
+relative to s (so Phat = 1e-6, s ~ 2e-5, is resolved as well as Phat = 1), and
+checked to lie on p(s). In all, 35 to 90 shots (the paper's silicone at Phat = 0.31:
+48; the fixed-pressure bisections used before took 123). If
+p(s) falls first, the first branch has a maximum (alpha near 0 or below):
+golden sections locate it, and above it no first-branch state exists
+(``OutOfRangeError`` naming the maximum). For alpha < 0 the pole tension
+(1 - l^-6)(1 + alpha l^2) vanishes at l^2 = -1/alpha: p(s) exists only below, and
+the maximum lies there. A march that starts past a maximum (a target far above
+it) is restarted lower.
+
+Volume control (``inflate_volume``) marches V(s) on the first branch the same way;
+the volume grows through pressure maxima, so it reaches states pressure control
+cannot.
+
+Below the first-branch root, at the target pressure, the pressure is too high
+for the stretch: the meridian lands inside the clamp or curls back before
+reaching it (the shot stops: axis, fold, vanishing tension). Only inside such a
+bracket is a shot that stops early read as "too much pressure for this stretch".
+A shot that fails for numerical reasons (too many steps) is a ConvergenceError,
+and so is a final shot that does not land on the clamp.
 """
 
 from __future__ import annotations
 
-import numpy as np
-from scipy.optimize import brentq, minimize_scalar
+import math
 
 from pocket.core import smallstrain
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.inputs import check_alpha, check_positive
 from pocket.core.states import InflatedState
 
-from .integrator import OK, STATUS
-from .shots import profile_from_steps, shot_pole
+from . import brent
+from .integrator import OK, STATUS, STEPS
+from .shots import Tolerance, profile_from_steps, shot_pole
 
 __all__ = ["inflate", "inflate_volume", "pressure_of_stretch"]
 
-_GROWTH = 1.25  # ratio of successive lambda_0 - 1 in the march
-_S_MAX = 20.0  # lambda_0 - 1 beyond which we give up the march
-_XTOL = dict(xtol=1e-15, rtol=1e-14, maxiter=200)
+_GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
+_S_MAX = 20.0  # s beyond which the marches give up
+_S_RTOL = 1e-13  # relative accuracy of the root in s
+_P_RTOL = 1e-14  # relative accuracy of the pressure p(s) where its value matters
+_MARCH_RTOL = 1e-9  # ... and where only its trend matters (the march)
+_PEAK_RTOL = 1e-9  # relative width in s to which a pressure maximum is located (its value to ~1e-18)
 
 
-def _miss(l0, alpha, p, rtol):
-    """rho(1) - 1 for a shot from the pole; -1 when the meridian curls back first."""
-    status, y, _ = shot_pole(l0, alpha, p, rtol)
-    return y[0] - 1.0 if status == OK else -1.0
+def _tolerance(rtol, strain):
+    """Integration tolerances for a dome of pole strain ~ ``strain`` (``Tolerance.scaled``)."""
+    return Tolerance.scaled(rtol, math.sqrt(1.5 * strain), 0.25 * math.pi * math.sqrt(6.0 * strain))
 
 
-def pressure_of_stretch(l0, alpha, *, rtol=1e-10):
-    """The pressure p (units 2 C1 T / R) at which the shot from pole stretch l0 lands on rho(1) = 1."""
-    s = l0 - 1.0
-    hi = 3.0 * (1.0 + alpha) * 4.0 * np.sqrt(6.0) * s**1.5 * 2.0
-    while _miss(l0, alpha, hi, rtol) > 0.0:
-        hi *= 2.0
-        if hi > 1e6:
-            raise ConvergenceError(f"no pressure closes the shot from lambda_0 = {l0}", load=l0)
-    return brentq(lambda p: _miss(l0, alpha, p, rtol), 0.0, hi, **_XTOL)
+def _landing(s, alpha, p, tol, what):
+    """rho(1) - 1 of the shot from pole strain s at pressure p, or None if it stops before the clamp."""
+    status, y, _ = shot_pole(1.0 + s, alpha, p, tol)
+    if status == STEPS:
+        raise ConvergenceError(f"inflation ({what}): the shot from lambda_0 = {1 + s:.12g} took too many steps",
+                               load=1.0 + s)
+    return y[0] - 1.0 if status == OK else None
 
 
-def _volume(l0, alpha, rtol):
-    p = pressure_of_stretch(l0, alpha, rtol=rtol)
-    status, y, _ = shot_pole(l0, alpha, p, rtol)
-    return y[4]
+def _signed(value):
+    """A landing as a sign for bracketing: a shot that stopped early had too much pressure (-1)."""
+    return -1.0 if value is None else value
 
 
-def _bracket(fun, target, s_start, what):
-    """March s = lambda_0 - 1 up from below s_start until fun(1 + s) >= target.
-
-    Returns (s_lo, s_hi) with fun below/above target, on the first branch. Raises
-    OutOfRangeError when fun has a maximum below the target.
+def pressure_of_stretch(l0, alpha, *, rtol=1e-10, tol=None, guess=None, accuracy=_P_RTOL) -> float | None:
+    """The pressure p (units 2 C1 T / R) at which the shot from pole stretch ``l0`` lands on rho(1) = 1,
+    to relative ``accuracy``: the root of m(s, .) nearest above or below ``guess`` (default: the
+    small-strain pressure). None if there is none: for alpha < 0 past l0^2 = -1/alpha the pole
+    tension vanishes.
     """
-    s = s_start
-    while fun(1.0 + s) >= target:
-        s /= _GROWTH**4
-    history = [(s, fun(1.0 + s))]
-    while history[-1][1] < target:
-        s *= _GROWTH
-        if s > _S_MAX:
-            raise OutOfRangeError(f"{what} = {target:.6g} not reached for lambda_0 up to {1 + _S_MAX}")
-        history.append((s, fun(1.0 + s)))
-        if history[-1][1] < history[-2][1]:
-            lo = history[-3][0] if len(history) > 2 else history[0][0]
-            peak = minimize_scalar(lambda x: -fun(1.0 + x), bounds=(lo, s), method="bounded",
-                                   options=dict(xatol=1e-12 * s))
-            if -peak.fun < target:
+    s = l0 - 1.0
+    tol = _tolerance(rtol, s) if tol is None else tol
+    if not (s > 0.0 and (1.0 - l0**-6) * (1.0 + alpha * l0 * l0) > 0.0):
+        return None
+    what = f"p(lambda_0 = {l0:.12g})"
+
+    def miss(p):
+        return _signed(_landing(s, alpha, p, tol, what))
+
+    p = 3.0 * (1.0 + alpha) * 4.0 * math.sqrt(6.0) * s**1.5 if guess is None else guess
+    f, width = miss(p), 0.02 * p
+    if f >= 0.0:  # grow a bracket upward from the guess
+        lo, f_lo = p, f
+        hi, f_hi = p + width, miss(p + width)
+        while f_hi >= 0.0:
+            width *= 4.0
+            lo, f_lo, hi = hi, f_hi, hi + width
+            if hi > 1e6:
+                raise ConvergenceError(f"inflation: no pressure up to 1e6 closes the shot from lambda_0 = {l0!r}",
+                                       load=l0)
+            f_hi = miss(hi)
+    else:  # downward: m(s, 0) = s > 0
+        hi, f_hi = p, f
+        lo = max(p - width, 0.0)
+        f_lo = s if lo == 0.0 else miss(lo)
+        while f_lo < 0.0:
+            width *= 4.0
+            hi, f_hi, lo = lo, f_lo, max(lo - width, 0.0)
+            f_lo = s if lo == 0.0 else miss(lo)
+    return brent.root(miss, lo, hi, fa=f_lo, fb=f_hi, rtol=accuracy)
+
+
+class _Branch:
+    """The first branch p(s) of one pocket, computed point by point; each pressure is predicted by
+    the power law through the two points computed nearest to it (p ~ s^1.5 at first)."""
+
+    def __init__(self, alpha, tol):
+        self.alpha, self.tol, self.points = alpha, tol, []
+
+    def pressure(self, s, precise=False):
+        near = sorted(self.points, key=lambda point: abs(math.log(point[0] / s)))[:2]
+        guess = None
+        if len(near) == 2 and near[0][0] != near[1][0]:
+            (s0, p0), (s1, p1) = near
+            guess = p0 * (s / s0) ** (math.log(p1 / p0) / math.log(s1 / s0))
+        elif near:
+            guess = near[0][1] * (s / near[0][0]) ** 1.5
+        p = pressure_of_stretch(1.0 + s, self.alpha, tol=self.tol, guess=guess,
+                                accuracy=_P_RTOL if precise else _MARCH_RTOL)
+        if p is not None:
+            self.points.append((s, p))
+        return p
+
+    def phat(self, s, precise=False):
+        p = self.pressure(s, precise)
+        return None if p is None else p / (3.0 * (1.0 + self.alpha))
+
+
+def _first_branch(value, target, s, what):
+    """s_lo < s_hi with value(s_lo) < target <= value(s_hi) on the first branch, and whether s_hi is
+    a maximum of ``value`` (a pressure or a volume, None where there is none; ``value(s, True)``
+    to full accuracy). Raises OutOfRangeError when value has a maximum below ``target``."""
+    while True:
+        start = value(s)
+        while start is None or start >= target:
+            s /= _GROWTH**4
+            start = value(s)
+        history = [(s, start)]
+        while True:
+            if s >= _S_MAX:
+                raise OutOfRangeError(f"{what} = {target:.6g} is not reached for lambda_0 up to {1 + _S_MAX:g}")
+            s = min(s * _GROWTH, _S_MAX)
+            current = value(s)
+            if current is not None and current >= target:
+                return history[-1][0], s, False
+            if current is not None and current >= history[-1][1]:
+                history.append((s, current))
+                continue
+            if len(history) == 1:  # falling from the start: it lies past a maximum; start lower
+                s = history[0][0] / _GROWTH**4
+                break
+            lo = history[-2][0]
+            peak_s, peak = brent.maximum(lambda x: _minus_inf(value(x, True)), lo, s, xtol=_PEAK_RTOL * s)
+            if peak < target:
                 raise OutOfRangeError(
                     f"no inflated state on the first branch: {what} = {target:.6g} is above "
-                    f"its maximum {-peak.fun:.6g} (reached at lambda_0 = {1 + peak.x:.6g})"
+                    f"its maximum {peak:.6g} (reached at lambda_0 = {1 + peak_s:.6g})"
                 )
-            return lo, peak.x
-    return history[-2][0], history[-1][0]
+            return lo, peak_s, True
 
 
-def _state(l0, alpha, p, rtol, how):
-    """The state at the root: scalars from the same shot as the root finder, the
-    profile from a finer-stepped shot of the same problem."""
-    status, y, _ = shot_pole(l0, alpha, p, rtol)
-    if status != OK or abs(y[0] - 1.0) > 1e-9:
-        raise ConvergenceError(f"inflation ({how}): final shot {STATUS[status]}, rho(1) - 1 = {y[0] - 1:.3g}")
-    _, _, steps = shot_pole(l0, alpha, p, rtol, store=20000)
-    return InflatedState(
-        alpha=alpha,
-        pressure=p / (3.0 * (1.0 + alpha)),
-        stretch_pole=l0,
-        height=-y[1],
-        volume=y[4],
-        stretch_clamp=y[3],
-        profile=profile_from_steps(steps, alpha, l0),
-        solver="shooting",
-    )
+def _minus_inf(value):
+    return -math.inf if value is None else value
+
+
+def _state(l0, alpha, p, tol, what, **echo):
+    """The state at the root: scalars from the same shot as the root finder, the profile from a
+    finer-stepped shot of the same problem; ``echo`` the inputs as given (pressure or volume)."""
+    status, y, _ = shot_pole(l0, alpha, p, tol)
+    miss = y[0] - 1.0
+    if status != OK or abs(miss) > 1e-8 * (l0 - 1.0) + 1e-13:
+        raise ConvergenceError(f"inflation ({what}): the final shot from lambda_0 = {l0:.12g} "
+                               f"{STATUS[status]}, rho(1) - 1 = {miss:.3g}", load=l0, residual=miss)
+    status, _, steps = shot_pole(l0, alpha, p, tol, store=20000)
+    if status != OK:
+        raise ConvergenceError(f"inflation ({what}): the profile shot from lambda_0 = {l0:.12g} {STATUS[status]}",
+                               load=l0)
+    scalars = dict(alpha=alpha, pressure=p / (3.0 * (1.0 + alpha)), stretch_pole=l0, height=-y[1], volume=y[4],
+                   stretch_clamp=y[3])
+    return InflatedState(**{**scalars, **echo}, profile=profile_from_steps(steps, alpha, l0), solver="shooting")
 
 
 def inflate(alpha, pressure, *, rtol=1e-10) -> InflatedState:
@@ -115,22 +205,50 @@ def inflate(alpha, pressure, *, rtol=1e-10) -> InflatedState:
     pressure = check_positive("pressure", pressure)
     p = 3.0 * (1.0 + alpha) * pressure
     s_est = smallstrain.pole_strain(pressure)
+    tol = _tolerance(rtol, s_est)
+    what = f"Phat = {pressure!r}"
+    branch = _Branch(alpha, tol)
+    lo, hi, peak = _first_branch(branch.phat, pressure, s_est, "pressure")
 
-    def phat(l0):
-        return pressure_of_stretch(l0, alpha, rtol=rtol) / (3.0 * (1.0 + alpha))
+    def miss(s):
+        return _signed(_landing(s, alpha, p, tol, what))
 
-    s_lo, s_hi = _bracket(phat, pressure, s_est, "pressure")
-    l0 = brentq(lambda s: _miss(s, alpha, p, rtol), 1.0 + s_lo, 1.0 + s_hi, **_XTOL)
-    return _state(l0, alpha, p, rtol, f"Phat = {pressure}")
+    # p(lo) < target <= p(hi) to the march's accuracy: the sign of m can still be the other one there
+    f_lo, f_hi = miss(lo), miss(hi)
+    while f_lo >= 0.0:
+        hi, f_hi, lo = lo, f_lo, lo / _GROWTH
+        f_lo = miss(lo)
+    while f_hi < 0.0 and not peak:
+        lo, f_lo, hi = hi, f_hi, hi * _GROWTH
+        f_hi = miss(hi)
+    if f_hi < 0.0:
+        raise OutOfRangeError(f"no inflated state on the first branch: pressure = {pressure:.6g} is at its "
+                              f"maximum (reached at lambda_0 = {1 + hi:.6g}) to within the solver's accuracy")
+    s = brent.root(miss, lo, hi, fa=f_lo, fb=f_hi, rtol=_S_RTOL)
+    if abs(branch.phat(s) / pressure - 1.0) > 1e-7:  # a root of m on another branch: follow p(s) itself
+        s = brent.root(lambda x: branch.phat(x, True) - pressure, lo, hi, rtol=_S_RTOL)
+    return _state(1.0 + s, alpha, p, tol, what, pressure=pressure)
 
 
 def inflate_volume(alpha, volume, *, rtol=1e-10) -> InflatedState:
-    """Inflate to enclosed volume V / R^3 (volume control, passes pressure maxima)."""
+    """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima)."""
     alpha = check_alpha(alpha)
     volume = check_positive("volume", volume)
     s_est = smallstrain.strain_of_volume(volume)
+    tol = _tolerance(rtol, s_est)
+    what = f"V = {volume!r}"
+    branch = _Branch(alpha, tol)
 
-    s_lo, s_hi = _bracket(lambda l0: _volume(l0, alpha, rtol), volume, s_est, "volume")
-    l0 = brentq(lambda s: _volume(s, alpha, rtol) - volume, 1.0 + s_lo, 1.0 + s_hi, **_XTOL)
-    p = pressure_of_stretch(l0, alpha, rtol=rtol)
-    return _state(l0, alpha, p, rtol, f"V = {volume}")
+    def volume_of(s, precise=True):
+        p = branch.pressure(s, precise=True)
+        if p is None:
+            return None
+        status, y, _ = shot_pole(1.0 + s, alpha, p, tol)
+        if status != OK:
+            raise ConvergenceError(f"inflation ({what}): the shot from lambda_0 = {1 + s:.12g} at its pressure "
+                                   f"{STATUS[status]}", load=1.0 + s)
+        return y[4]
+
+    lo, hi, _ = _first_branch(volume_of, volume, s_est, "volume")
+    s = brent.root(lambda x: volume_of(x) - volume, lo, hi, rtol=_S_RTOL)
+    return _state(1.0 + s, alpha, branch.pressure(s, precise=True), tol, what, volume=volume)

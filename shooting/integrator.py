@@ -1,60 +1,61 @@
 """A compiled Dormand-Prince 8(5,3) integrator for the membrane equations.
 
-It is scipy's ``DOP853`` (same tableau, read from ``scipy.integrate.DOP853``; same
+It is scipy's ``DOP853`` (the same tableau, stored in ``pocket.shooting.tableau``; the same
 error norm and step-size control as ``scipy/integrate/_ivp/rk.py``), compiled with
-numba and specialised to ``shooting.equations.rhs``: a shooting solve calls it
+numba and specialised to ``pocket.shooting.equations.rhs``: a shooting solve calls it
 thousands of times, and the Python version costs about 100x more per call
 (``benchmarks/bench_shooting.py``). ``tests/test_shooting_integrator.py`` checks it
-against ``solve_ivp(method="DOP853")``.
+against ``solve_ivp(method="DOP853")``. The absolute tolerance may differ per
+component, so that small quantities (the height and angle of a shallow dome, its
+volume) are resolved relative to their own size.
 
 Integration stops early, with a status, where the membrane model stops making
-sense: the meridian reaches the axis (rho <= 0), turns upward past vertical
-(psi >= pi) or downward into the sheet (psi <= -pi/2), or the meridional
-tension vanishes (t1 <= 0, wrinkling).
+sense: the meridian reaches the axis (rho <= 0), its angle leaves (-pi/2, psi_max)
+(curled back past the horizontal, or turned up into the sheet), or the meridional
+tension vanishes (t1 <= 0, wrinkling); or where the integration itself fails (too
+many steps, a step below the resolution of r).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
-from scipy.integrate import DOP853
 
-from .equations import rhs, tensions
+from . import tableau
+from .compiled import compiled
+from .equations import rhs, tensions_compiled
 
-__all__ = ["integrate", "OK", "AXIS", "FOLD", "SLACK", "STEPS", "SMALL_STEP", "STATUS"]
+__all__ = ["integrate", "OK", "AXIS", "FOLD", "SLACK", "STEPS", "SMALL_STEP", "STATUS", "NUMERICAL"]
 
 OK, AXIS, FOLD, SLACK, STEPS, SMALL_STEP = 0, 1, 2, 3, 4, 5
 STATUS = {
     OK: "reached the clamp",
     AXIS: "the meridian reached the axis (rho <= 0)",
-    FOLD: "the meridian folded (psi outside (-pi/2, pi))",
+    FOLD: "the meridian folded (its angle psi left (-pi/2, psi_max))",
     SLACK: "the meridional tension vanished (t1 <= 0)",
     STEPS: "too many steps",
     SMALL_STEP: "step size underflow",
 }
 
-_A = np.ascontiguousarray(DOP853.A, dtype=float)
-_B = np.ascontiguousarray(DOP853.B, dtype=float)
-_C = np.ascontiguousarray(DOP853.C, dtype=float)
-_E3 = np.ascontiguousarray(DOP853.E3, dtype=float)
-_E5 = np.ascontiguousarray(DOP853.E5, dtype=float)
-_NS = DOP853.n_stages
+#: the failures of the integration itself, as opposed to a meridian outside the model
+NUMERICAL = (STEPS, SMALL_STEP)
+
+_NS = tableau.N_STAGES
 _EXPONENT = -1.0 / 8.0
 
 
-@njit(cache=True)
-def _status(y, alpha, r):
+@compiled
+def _status(y, alpha, r, psi_max):
     if not (y[0] > 0.0):
         return AXIS
-    if not (-0.5 * np.pi < y[2] < np.pi):
+    if not (-0.5 * np.pi < y[2] < psi_max):
         return FOLD
-    if not (y[3] > 0.0) or not (tensions(y[3], y[0] / r, alpha)[0] > 0.0):
+    if not (y[3] > 0.0) or not (tensions_compiled(y[3], y[0] / r, alpha)[0] > 0.0):
         return SLACK
     return OK
 
 
-@njit(cache=True)
-def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, store, A, B, C, E3, E5):
+@compiled
+def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, psi_max, store, A, B, C, E3, E5):
     n = y0.size
     K = np.empty((_NS + 1, n))
     y = y0.copy()
@@ -98,7 +99,7 @@ def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, store, A, B, C, E3, E
             e5 = 0.0
             e3 = 0.0
             for i in range(n):
-                scale = atol + max(abs(y[i]), abs(ynew[i])) * rtol
+                scale = atol[i] + max(abs(y[i]), abs(ynew[i])) * rtol
                 a5 = 0.0
                 a3 = 0.0
                 for j in range(_NS + 1):
@@ -126,29 +127,30 @@ def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, store, A, B, C, E3, E
             store[nstore, 0] = r
             store[nstore, 1:] = y
             nstore += 1
-        status = _status(y, alpha, r)
+        status = _status(y, alpha, r, psi_max)
         if status != OK:
             return status, r, y, nstore
     return STEPS, r, y, nstore
 
 
-def integrate(y0, r0, alpha, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf):
+def integrate(y0, r0, alpha, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi):
     """Integrate the membrane equations from r0 to the clamp r = 1.
 
     y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). alpha: C2/C1.
-    p: pressure in units of 2 C1 T / R. rtol, atol: DOP853 tolerances
-    (atol defaults to rtol / 100). store: if > 0, keep every accepted step, up to
-    ``store`` points. h0: first step (default: a hundredth of r0, or 1e-6).
-    max_step: largest step in r (a finer profile; accuracy is set by rtol).
+    p: pressure in units of 2 C1 T / R. rtol: DOP853 relative tolerance; atol: absolute
+    tolerance, a float or one per component, shape (5,) (default rtol / 100). store: if > 0,
+    keep every accepted step, up to ``store`` points. h0: first step (default: a hundredth
+    of r0, or 1e-6). max_step: largest step in r (a finer profile; accuracy is set by rtol).
+    psi_max: the meridian angle at which the meridian counts as folded (status FOLD).
 
     Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
     columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
     """
-    atol = rtol * 1e-2 if atol is None else atol
+    atol = np.broadcast_to(rtol * 1e-2 if atol is None else np.asarray(atol, dtype=float), (5,)).copy()
     h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
     buf = np.empty((store, 6)) if store else np.empty((0, 6))
     status, r_end, y_end, m = _integrate(
-        np.asarray(y0, dtype=float), float(r0), 1.0, float(alpha), float(p),
-        float(rtol), float(atol), float(h0), float(max_step), buf, _A, _B, _C, _E3, _E5,
+        np.asarray(y0, dtype=float), float(r0), 1.0, float(alpha), float(p), float(rtol), atol,
+        float(h0), float(max_step), float(psi_max), buf, tableau.A, tableau.B, tableau.C, tableau.E3, tableau.E5,
     )
     return int(status), float(r_end), y_end, buf[:m]

@@ -85,3 +85,37 @@ def test_force_beyond_the_model():
         analytical.compress(SAMPLE, 0.31, 100.0)
     f_max = float(str(err.value).split("at force = ")[1].rstrip(")"))
     assert analytical.compress(SAMPLE, 0.31, f_max * (1 - 1e-9)).contact_area == pytest.approx(1.0, rel=1e-6)
+
+
+def test_states_outside_the_small_strain_range_say_so():
+    """Exact answer: lambda_0 = 1 + (Phat / (4 sqrt 6))^(2/3) (eq (18) corrected) is 1.1 at
+    Phat = 4 sqrt(6) 0.1^1.5 = 0.3098; above it every state carries one warning quoting lambda_0
+    (and its compressed states one for lambda_c too); below, none. alpha = 0, Phat = 1 (no
+    first-branch state in the full model) is warned about, not refused."""
+    edge = 4 * np.sqrt(6) * 0.1**1.5
+    assert analytical.inflate(SAMPLE, edge * 0.999).warnings == ()
+    assert analytical.compress(SAMPLE, 0.01, 0.05).warnings == ()
+    high = analytical.inflate(0.0, 1.0)
+    assert len(high.warnings) == 1 and f"lambda_0 = {high.stretch_pole:.6g} exceeds 1.1" in high.warnings[0]
+    pressed = analytical.compress(0.0, 1.0, 0.5)
+    assert [w.split(" =")[0] for w in pressed.warnings] == ["lambda_0", "lambda_c"]
+    assert f"{pressed.stretch_contact:.6g}" in pressed.warnings[1]
+    with pytest.raises(OutOfRangeError):  # while the full model has no such state
+        shooting.inflate(0.0, 1.0)
+
+
+def test_states_echo_inputs_and_report_progress():
+    """Exact answer: alpha, pressure(_initial), force as given; progress(done, total) after each force."""
+    calls = []
+    forces = [0.1, 0.0, 0.05]
+    states = analytical.compression_curve(1.2, 0.1, forces, progress=lambda d, t: calls.append((d, t)))
+    assert [(s.alpha, s.pressure_initial, s.force) for s in states] == [(1.2, 0.1, f) for f in forces]
+    assert calls == [(1, 3), (2, 3), (3, 3)]
+
+
+def test_range_end_is_where_the_contact_reaches_the_clamp():
+    """Exact answer: range_end is the force quoted past the range, and there A_c = pi R^2."""
+    end = analytical.range_end(SAMPLE, 0.31)
+    assert analytical.compress(SAMPLE, 0.31, end).contact_area == pytest.approx(1.0, rel=1e-9)
+    with pytest.raises(OutOfRangeError, match=f"{end:.6g}"):
+        analytical.compress(SAMPLE, 0.31, end * (1 + 1e-9))

@@ -113,15 +113,16 @@ def test_curve_stops_at_the_end_of_the_range():
 
 
 def test_paper_design_outside_the_model_is_said_not_fatal():
-    """Exact answer: for H0 = 16 mm, alpha = 0.1 the paper's rules give Phat_I = H0^3 / (0.216 R^3)
-    = 2.37, above the first-branch maximum of Phat(V) for alpha = 0.1 (the forward solver
-    refuses it); the full-model design still stands and the paper's column is None."""
+    """Exact answer: for H0 = 16 mm, alpha = 0 the paper's rules give Phat_I = H0^3 / (0.216 R^3)
+    = 2.37, above the first-branch maximum of Phat(V) for alpha = 0 (0.626: the forward solver
+    refuses it); the full-model design still stands and the paper's column is None. (For
+    alpha = 0.1 Phat(V) has no maximum: 2.37 is a dome 17 R high, lambda_0 = 18.6.)"""
     from pocket.core.errors import OutOfRangeError
 
     phat = 0.016**3 / (0.216 * 0.02**3)
     with pytest.raises(OutOfRangeError):
-        shooting.inflate(0.1, phat)
-    d = design("20 mm", "16 mm", "1 MPa", 0.1, "0.67 N", 0.8)
+        shooting.inflate(0.0, phat)
+    d = design("20 mm", "16 mm", "1 MPa", 0.0, "0.67 N", 0.8)
     assert d.paper_model_height_m is None and d.paper_model_height_ratio is None
-    state = shooting.compress(0.1, d.pressure_initial, d.force)
+    state = shooting.compress(0.0, d.pressure_initial, d.force)
     assert state.inflated.height == pytest.approx(0.8, rel=1e-6) and state.height_ratio == pytest.approx(0.8, rel=1e-6)

@@ -1,5 +1,7 @@
 """Step 1 (inflation) of the shooting solver: limits, self-consistency, energy."""
 
+import re
+
 import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
@@ -130,3 +132,23 @@ def test_volume_formula_matches_disc_integration():
     p = s.profile
     spline = CubicSpline(p.r, -np.pi * p.rho**2 * CubicSpline(p.r, p.eta)(p.r, 1))
     assert quad(spline, 0, 1, limit=400)[0] == pytest.approx(s.volume, rel=1e-7)
+
+
+@pytest.mark.parametrize("alpha, pressure", [(-0.9, 0.1), (-0.9, 2.0), (-0.5, 2.0), (-0.2, 0.5)])
+def test_negative_alpha_above_its_maximum_names_it(alpha, pressure):
+    """Exact answer: for alpha < 0 Phat(V) has a first-branch maximum; above it an OutOfRangeError
+    quotes it (and the pole stretch there). Checked independently: a pressure 1e-5 below it inflates,
+    1e-5 above it does not, and volume control, which passes the maximum, reaches no higher
+    pressure around that stretch (a smooth maximum: within O(dV^2))."""
+    with pytest.raises(OutOfRangeError, match="above its maximum") as err:
+        shooting.inflate(alpha, pressure)
+    found = re.search(r"maximum (\S+) \(reached at lambda_0 = (\S+)\)", str(err.value))
+    peak, stretch = float(found.group(1)), float(found.group(2))
+    shooting.inflate(alpha, peak * (1 - 1e-5))
+    with pytest.raises(OutOfRangeError):
+        shooting.inflate(alpha, peak * (1 + 1e-5))
+    at_peak = shooting.inflate(alpha, peak * (1 - 1e-5))
+    assert at_peak.stretch_pole == pytest.approx(stretch, rel=1e-2)  # ~sqrt(1e-5) from the top
+    swept = [shooting.inflate_volume(alpha, at_peak.volume * k).pressure for k in np.linspace(0.999, 1.0005, 7)]
+    # quoted to 6 digits: 1e-6 relative
+    assert max(swept) <= peak * (1 + 1e-6) and max(swept) >= peak * (1 - 1e-4), (max(swept), peak)

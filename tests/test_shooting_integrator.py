@@ -40,3 +40,26 @@ def test_stops_when_the_meridian_curls_back():
     alpha, l0 = 0.3, 1.01
     status, r, y, _ = integrate(pole_state(l0, alpha, 50.0, 1e-5), 1e-5, alpha, 50.0, rtol=1e-10)
     assert status in (AXIS, FOLD) and r < 1.0 and np.all(np.isfinite(y))
+
+
+def test_tableau_is_scipys_bit_for_bit():
+    """Exact answer: the stored DOP853 coefficients (pocket.shooting.tableau) equal scipy's exactly,
+    so the compiled integrator takes scipy's steps without importing scipy.integrate."""
+    from pocket.shooting import tableau
+    from scipy.integrate import DOP853
+
+    for name in ("A", "B", "C", "E3", "E5"):
+        assert np.array_equal(getattr(tableau, name), getattr(DOP853, name)), name
+    assert tableau.N_STAGES == DOP853.n_stages
+
+
+def test_per_component_absolute_tolerance():
+    """Exact answer: an absolute tolerance per component equal to the scalar one changes nothing
+    (the same steps, bit for bit); a tighter one on the volume alone reaches the clamp with the
+    same volume to the relative tolerance."""
+    y0 = pole_state(1.16, 47 / 160, 1.2, 1e-5)
+    scalar = integrate(y0, 1e-5, 47 / 160, 1.2, rtol=1e-10, atol=1e-12, store=5000)
+    vector = integrate(y0, 1e-5, 47 / 160, 1.2, rtol=1e-10, atol=np.full(5, 1e-12), store=5000)
+    assert np.array_equal(scalar[3], vector[3])
+    tight = integrate(y0, 1e-5, 47 / 160, 1.2, rtol=1e-10, atol=[1e-12] * 4 + [1e-15], store=5000)
+    assert tight[0] == OK and tight[2][4] == pytest.approx(scalar[2][4], rel=1e-9)

@@ -1,7 +1,9 @@
 """The paper's small-strain analytical model (its section 3), corrected: the approximate third column.
 
 ``inflate``, ``compress`` and ``compression_curve`` return ``pocket.core.states``
-containers; the model and its corrections are derived in
+containers, with a warning on every state outside the model's range of validity
+(pole or contact stretch above 1.1); ``range_end`` is the force at which its contact
+reaches the clamp. The model and its corrections are derived in
 ``pocket.analytical.model``. ``SOLVER`` is its record (it takes no options).
 """
 
@@ -9,13 +11,13 @@ import importlib
 
 from pocket.core.solver import Solver
 
-__all__ = ["SOLVER", "inflate", "compress", "compression_curve", "shape_function"]
+__all__ = ["SOLVER", "inflate", "compress", "compression_curve", "range_end", "shape_function"]
 
 SOLVER = Solver(
     name="analytical",
     summary="the paper's small-strain model (approximate; good for lambda - 1 << 1 and small force)",
     module=__name__,
-    entry_points=("inflate", "compress", "compression_curve"),
+    entry_points=("inflate", "compress", "compression_curve", "range_end"),
 )
 
 

@@ -10,11 +10,14 @@ Brent's method on the forward solver:
 - ``force_where``: Fhat with compress(alpha, Phat_I, Fhat).<key> = target.
 
 The bracket starts at load 0, where the value is known (height 0; the
-uncompressed state), and doubles an upper load until the sign changes. A
+uncompressed state). For a force, a solver that knows the end of its range
+(``range_end``, an optional entry point: ``pocket.core.solver``) gives the top of
+the bracket directly. Otherwise an upper load doubles until the sign changes; a
 forward solve that is out of the model's range there (OutOfRangeError: past a
 pressure maximum, or the free part reaching the clamp plane) ends the doubling:
-the range edge is then bisected, and a target the model does not reach inside
-its range is an OutOfRangeError, never an extrapolation.
+the range edge is then bisected. A target the model does not reach inside its
+range is an OutOfRangeError, never an extrapolation. A solver that fails
+(ConvergenceError) is not a range edge: the error propagates.
 
 scipy is imported on first use: the command line imports this module to build
 its parser, and every ``pocket`` command would otherwise pay for it.
@@ -92,17 +95,35 @@ def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **o
     def miss(f):
         return sign * (value(f) - target) if f > 0.0 else sign * (start - target)
 
-    lo, hi = _bracket(miss, 0.1, f"{key} = {target:.10g}", value)
+    end = _own_end(solver, alpha, pressure_initial, options)
+    if end is None:
+        lo, hi = _bracket(miss, 0.1, f"{key} = {target:.10g}", value)
+    elif miss(end) < 0.0:
+        raise OutOfRangeError(f"{key} = {target:.10g} is beyond the model's range (it reaches {value(end):.10g} "
+                              f"at its edge, force = {end:.10g})")
+    else:
+        lo, hi = 0.0, end
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
 
 
-def range_end(solver, alpha, pressure_initial, *, below=None, rtol=_EDGE, **options) -> float:
-    """The end of the model's compression range in Fhat (where the free part folds onto the
-    clamp plane), located by bisection to relative width ``rtol``; the value is inside the range.
+def _own_end(solver, alpha, pressure_initial, options):
+    """The solver's own ``range_end`` (its entry point), or None if it has none."""
+    own = getattr(solver, "range_end", None)
+    return None if own is None else own(alpha, pressure_initial, **options)
 
-    With ``below``: ``below`` itself if the model has a compressed state there, else the end
-    below it. Without: the end is first bracketed by doubling from Fhat = 1 (up to 1e4).
+
+def range_end(solver, alpha, pressure_initial, *, below=None, rtol=_EDGE, **options) -> float:
+    """The end of the model's compression range in Fhat (where the free part reaches the
+    clamp plane); the value is inside the range.
+
+    A solver with its own ``range_end`` gives it (``rtol`` is then not used: the solver states
+    its own tolerance). Otherwise the end is located by bisection to relative width ``rtol``,
+    first bracketed by doubling from Fhat = 1 (up to 1e4). With ``below``: ``below`` itself if
+    the model has a compressed state there, else the end below it.
     """
+    end = _own_end(solver, alpha, pressure_initial, options)
+    if end is not None:
+        return end if below is None else min(below, end)
 
     def inside(f):
         try:

@@ -1,0 +1,108 @@
+"""``compiled``: numba's ``njit`` with an on-disk cache that can never stop the solver.
+
+numba compiles the integrator in seconds and caches the machine code on disk, so
+that later processes load it in milliseconds. Its own cache (``njit(cache=True)``)
+has two ways to crash a program that is otherwise fine:
+
+- in an installation whose package folder is not writable (system-wide, or a
+  container run as another user) with no writable home either, decorating the
+  function raises "cannot cache function ...: no locator available";
+- a cache entry written for the same source under another module name (a module
+  that moved: the entry's index still matches, the pickled data names the old
+  module), or a damaged one, raises while it is loaded, at the first call.
+
+Here a function is compiled with ``njit`` and given a cache that looks in numba's
+usual places (``NUMBA_CACHE_DIR``, the package's ``__pycache__``, the user's cache
+folder) and then in a private folder under the temporary directory (created for
+this user only, mode 0700, and used only if this user owns it and no one else can
+write to it: the cache holds pickles). If none is writable the function is simply
+not cached. An entry that fails to load is treated as absent: the function is
+compiled afresh and the entry overwritten. A cache that cannot be written costs
+compile time, never a result.
+
+Loading an entry initialises only numba's runtime, not its whole compiler (see
+``_Cache.load_overload``): that halves the start-up of a command.
+
+This uses numba's cache classes (``numba.core.caching``), as custom cache locators
+do; ``tests/test_shooting_cache.py`` runs the failures in subprocesses.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+import tempfile
+
+from numba import njit
+from numba.core.caching import (
+    CompileResultCacheImpl,
+    FunctionCache,
+    _CacheLocator,
+    _SourceFileBackedLocatorMixin,
+)
+from numba.core.runtime import rtsys
+
+__all__ = ["compiled", "private_cache_root"]
+
+
+def private_cache_root() -> str:
+    """The fallback cache folder: ``<tempdir>/pocket-numba-<uid>``."""
+    return os.path.join(tempfile.gettempdir(), f"pocket-numba-{os.getuid()}")
+
+
+class _PrivateTempLocator(_SourceFileBackedLocatorMixin, _CacheLocator):
+    """The last place to cache: a folder under the temporary directory that only this user can write."""
+
+    def __init__(self, py_func, py_file):
+        self._py_file = py_file
+        self._lineno = py_func.__code__.co_firstlineno
+        self._cache_path = os.path.join(private_cache_root(), self.get_suitable_cache_subpath(py_file))
+
+    def get_cache_path(self):
+        return self._cache_path
+
+    def ensure_cache_path(self):
+        root = private_cache_root()
+        os.makedirs(root, mode=0o700, exist_ok=True)
+        info = os.lstat(root)
+        if not stat.S_ISDIR(info.st_mode) or info.st_uid != os.getuid() or info.st_mode & 0o022:
+            raise PermissionError(f"{root} is not a private folder of this user")
+        super().ensure_cache_path()
+
+
+class _Impl(CompileResultCacheImpl):
+    _locator_classes = [*CompileResultCacheImpl._locator_classes, _PrivateTempLocator]
+
+
+class _Cache(FunctionCache):
+    """numba's function cache, where an entry that cannot be loaded or saved is a cache miss."""
+
+    _impl_class = _Impl
+
+    def load_overload(self, sig, target_context):
+        try:
+            # numba refreshes its whole target context here (every typing and lowering registry,
+            # and, for its BLAS check, scipy.linalg): 0.3 s of start-up that only compiling needs,
+            # and compiling refreshes it itself. Loading machine code needs the runtime (NRT) that
+            # the refresh would have initialised; the C helpers and math symbols are installed
+            # when the context is created.
+            rtsys.initialize(target_context)
+            return self._load_overload(sig, target_context)
+        except Exception:  # stale (a module that moved), foreign or damaged: compile afresh
+            return None
+
+    def save_overload(self, sig, data):
+        try:
+            super().save_overload(sig, data)
+        except OSError:  # a full disk or a folder that went read-only: stay uncached
+            pass
+
+
+def compiled(function):
+    """``numba.njit(function)``, cached on disk where possible (module docstring)."""
+    dispatcher = njit(function)
+    try:
+        dispatcher._cache = _Cache(function)  # what njit(cache=True) does, with the cache above
+    except RuntimeError:  # no writable place at all: compile in every process
+        pass
+    return dispatcher

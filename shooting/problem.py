@@ -1,0 +1,136 @@
+"""Step 2 of one inflated pocket as a shooting problem: unknowns, shots and residuals.
+
+Contact zone (0 <= r <= a): the sheet lies flat on the plate; tangential
+equilibrium with no friction and regularity at the axis leave the uniform
+equibiaxial stretch rho = lambda_c r, lambda_1 = lambda_2 = lambda_c (the normal
+load is carried by the plate). At the contact edge the tension T_1 and the
+position are continuous and the meridian is horizontal (a smooth plate cannot
+exert a line force), so the free part a <= r <= 1 starts from
+rho = lambda_c a, psi = 0, lambda_1 = lambda_c and is integrated to the clamp.
+
+Unknowns x = (q, e): the pressure ratio q = P/P_I and the contact strain relative
+to the inflated pole strain s_0 = lambda_0 - 1, e = (lambda_c - 1)/s_0, both of
+order one for every Phat_I from 1e-6 up (a shallow dome has s_0 ~ 2e-5 at
+Phat_I = 1e-6: lambda_c itself would be 1 to four digits). The force fixes the
+contact radius: F = P A_c with A_c = pi (lambda_c a)^2 gives Fhat = q (lambda_c a)^2,
+so a = sqrt(Fhat / q) / lambda_c. Residuals, also of order one:
+
+    (rho(1) - 1) / s_0    (the clamp, relative to the pocket's strain)
+    V / V_I - 1           (fixed fluid volume; V = -pi int rho^2 eta' dr over the free
+                           part alone, eta' = 0 on the contact zone)
+
+and, for the end of the range (``pocket.shooting.rangeend``), with the force as a
+third unknown, psi(1) - theta (the meridian's angle at the clamp).
+
+Residual noise. rho(1) - 1 is a difference of numbers near 1: a few ulps of 1,
+divided by s_0, are its floor. The root finders stop at ``residual_tol``: rtol/100,
+or 100 ulps / s_0 if that is larger (1e-9 at Phat_I = 1e-6).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from pocket.core.states import InflatedState
+
+from .integrator import OK, STATUS
+from .shots import Tolerance, shot_edge
+
+__all__ = ["Problem"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Problem:
+    """The compression of ``inflated`` (alpha, Phat_I) at ODE tolerance ``rtol``."""
+
+    inflated: InflatedState
+    rtol: float
+    _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
+
+    @property
+    def alpha(self) -> float:
+        return self.inflated.alpha
+
+    @property
+    def strain(self) -> float:
+        """s_0 = lambda_0 - 1, the scale of every strain of this pocket."""
+        return self.inflated.stretch_pole - 1.0
+
+    @property
+    def tolerance(self) -> Tolerance:
+        return Tolerance.scaled(self.rtol, self.inflated.height, self.inflated.volume)
+
+    @property
+    def residual_tol(self) -> float:
+        """Accepted max |residual| (module docstring)."""
+        return max(1e-2 * self.rtol, 100.0 * np.finfo(float).eps / self.strain)
+
+    def start(self) -> np.ndarray:
+        """Unknowns (q, e) of the inflated state (Fhat -> 0): the guess for the first force."""
+        return np.array([1.0, 1.0])
+
+    def stretch(self, e) -> float:
+        """lambda_c for the scaled contact strain e."""
+        return 1.0 + self.strain * e
+
+    def geometry(self, x, force):
+        """(q, lambda_c, a, p) for unknowns x at ``force``, or None outside the model's domain."""
+        q, e = x[0], x[1]
+        lc = self.stretch(e)
+        if not (q > 0.0 and lc > 0.0 and force > 0.0):
+            return None
+        a = math.sqrt(force / q) / lc
+        if not a < 1.0:
+            return None
+        return q, lc, a, 3.0 * (1.0 + self.alpha) * self.inflated.pressure * q
+
+    def shoot(self, x, force, store=0):
+        """(status, y(1), steps) of the free part for unknowns x at ``force``; None outside the domain.
+
+        The last shot without ``store`` is remembered: the solvers' last evaluation is at their
+        solution, whose state is then read without shooting again.
+        """
+        g = self.geometry(x, force)
+        if g is None:
+            return None
+        key = (float(x[0]), float(x[1]), float(force))
+        if not store and self._last.get("key") == key:
+            return self._last["shot"]
+        q, lc, a, p = g
+        shot = shot_edge(lc, a, self.alpha, p, self.tolerance, store=store)
+        if not store:
+            self._last.update(key=key, shot=shot)
+        return shot
+
+    def failure(self) -> str:
+        """The last shot that did not reach the clamp, in words ('' if none did)."""
+        if "failure" not in self._last:
+            return ""
+        status, q, lc, force = self._last["failure"]
+        return (f"the last shot that failed {STATUS[status]} (P/P_I = {q:.10g}, lambda_c = {lc:.10g}, "
+                f"force = {force:.10g})")
+
+    def clamp_angle(self, x, force) -> float:
+        """psi(1), the meridian's angle at the clamp (pi where the free sheet reaches the clamp plane)."""
+        return float(self.shoot(x, force)[1][2])
+
+    @staticmethod
+    def close(x, guess, previous) -> bool:
+        """Whether a solution x stayed near the predicted ``guess``: within max(1, |previous|) in each
+        unknown. A continuation step that jumps further may have landed on another branch."""
+        return bool(np.all(np.abs(x - guess) <= np.maximum(1.0, np.abs(previous))))
+
+    def residual(self, x, force, angle=None):
+        """The residuals at ``force`` (shape (2,)), with psi(1) - ``angle`` appended if given; None
+        where the shot does not reach the clamp or x is outside the domain."""
+        shot = self.shoot(x, force)
+        if shot is None or shot[0] != OK:
+            if shot is not None:
+                self._last["failure"] = (shot[0], float(x[0]), self.stretch(x[1]), float(force))
+            return None
+        y = shot[1]
+        out = [(y[0] - 1.0) / self.strain, y[4] / self.inflated.volume - 1.0]
+        return np.array(out if angle is None else [*out, y[2] - angle])
