@@ -24,7 +24,10 @@ Loading an entry initialises only numba's runtime, not its whole compiler (see
 ``_Cache.load_overload``): that halves the start-up of a command.
 
 This uses numba's cache classes (``numba.core.caching``), as custom cache locators
-do; ``tests/test_shooting_cache.py`` runs the failures in subprocesses.
+do; ``tests/test_shooting_cache.py`` runs the failures in subprocesses. Those
+classes are numba internals: should a numba release rename them, ``compiled``
+falls back to plain ``njit`` without an on-disk cache (every process then
+compiles, in seconds) rather than failing to import.
 """
 
 from __future__ import annotations
@@ -34,13 +37,17 @@ import stat
 import tempfile
 
 from numba import njit
-from numba.core.caching import (
-    CompileResultCacheImpl,
-    FunctionCache,
-    _CacheLocator,
-    _SourceFileBackedLocatorMixin,
-)
-from numba.core.runtime import rtsys
+
+try:
+    from numba.core.caching import (
+        CompileResultCacheImpl,
+        FunctionCache,
+        _CacheLocator,
+        _SourceFileBackedLocatorMixin,
+    )
+    from numba.core.runtime import rtsys
+except ImportError:  # a numba without these internals: no on-disk cache (module docstring)
+    FunctionCache = None
 
 __all__ = ["compiled", "private_cache_root"]
 
@@ -50,59 +57,63 @@ def private_cache_root() -> str:
     return os.path.join(tempfile.gettempdir(), f"pocket-numba-{os.getuid()}")
 
 
-class _PrivateTempLocator(_SourceFileBackedLocatorMixin, _CacheLocator):
-    """The last place to cache: a folder under the temporary directory that only this user can write."""
+if FunctionCache is not None:
 
-    def __init__(self, py_func, py_file):
-        self._py_file = py_file
-        self._lineno = py_func.__code__.co_firstlineno
-        self._cache_path = os.path.join(private_cache_root(), self.get_suitable_cache_subpath(py_file))
+    class _PrivateTempLocator(_SourceFileBackedLocatorMixin, _CacheLocator):
+        """The last place to cache: a folder under the temporary directory that only this user can write."""
 
-    def get_cache_path(self):
-        return self._cache_path
+        def __init__(self, py_func, py_file):
+            self._py_file = py_file
+            self._lineno = py_func.__code__.co_firstlineno
+            self._cache_path = os.path.join(private_cache_root(), self.get_suitable_cache_subpath(py_file))
 
-    def ensure_cache_path(self):
-        root = private_cache_root()
-        os.makedirs(root, mode=0o700, exist_ok=True)
-        info = os.lstat(root)
-        if not stat.S_ISDIR(info.st_mode) or info.st_uid != os.getuid() or info.st_mode & 0o022:
-            raise PermissionError(f"{root} is not a private folder of this user")
-        super().ensure_cache_path()
+        def get_cache_path(self):
+            return self._cache_path
 
-
-class _Impl(CompileResultCacheImpl):
-    _locator_classes = [*CompileResultCacheImpl._locator_classes, _PrivateTempLocator]
+        def ensure_cache_path(self):
+            root = private_cache_root()
+            os.makedirs(root, mode=0o700, exist_ok=True)
+            info = os.lstat(root)
+            if not stat.S_ISDIR(info.st_mode) or info.st_uid != os.getuid() or info.st_mode & 0o022:
+                raise PermissionError(f"{root} is not a private folder of this user")
+            super().ensure_cache_path()
 
 
-class _Cache(FunctionCache):
-    """numba's function cache, where an entry that cannot be loaded or saved is a cache miss."""
+    class _Impl(CompileResultCacheImpl):
+        _locator_classes = [*CompileResultCacheImpl._locator_classes, _PrivateTempLocator]
 
-    _impl_class = _Impl
 
-    def load_overload(self, sig, target_context):
-        try:
-            # numba refreshes its whole target context here (every typing and lowering registry,
-            # and, for its BLAS check, scipy.linalg): 0.3 s of start-up that only compiling needs,
-            # and compiling refreshes it itself. Loading machine code needs the runtime (NRT) that
-            # the refresh would have initialised; the C helpers and math symbols are installed
-            # when the context is created.
-            rtsys.initialize(target_context)
-            return self._load_overload(sig, target_context)
-        except Exception:  # stale (a module that moved), foreign or damaged: compile afresh
-            return None
+    class _Cache(FunctionCache):
+        """numba's function cache, where an entry that cannot be loaded or saved is a cache miss."""
 
-    def save_overload(self, sig, data):
-        try:
-            super().save_overload(sig, data)
-        except OSError:  # a full disk or a folder that went read-only: stay uncached
-            pass
+        _impl_class = _Impl
+
+        def load_overload(self, sig, target_context):
+            try:
+                # numba refreshes its whole target context here (every typing and lowering registry,
+                # and, for its BLAS check, scipy.linalg): 0.3 s of start-up that only compiling needs,
+                # and compiling refreshes it itself. Loading machine code needs the runtime (NRT) that
+                # the refresh would have initialised; the C helpers and math symbols are installed
+                # when the context is created.
+                rtsys.initialize(target_context)
+                return self._load_overload(sig, target_context)
+            except Exception:  # stale (a module that moved), foreign or damaged: compile afresh
+                return None
+
+        def save_overload(self, sig, data):
+            try:
+                super().save_overload(sig, data)
+            except OSError:  # a full disk or a folder that went read-only: stay uncached
+                pass
 
 
 def compiled(function):
     """``numba.njit(function)``, cached on disk where possible (module docstring)."""
     dispatcher = njit(function)
+    if FunctionCache is None:
+        return dispatcher
     try:
         dispatcher._cache = _Cache(function)  # what njit(cache=True) does, with the cache above
-    except RuntimeError:  # no writable place at all: compile in every process
+    except Exception:  # no writable place at all, or a numba whose cache differs: compile in every process
         pass
     return dispatcher
