@@ -8,11 +8,13 @@ of its range, above a pressure maximum). Errors are one line on stderr.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import sys
 from fractions import Fraction
 
 from pocket.apps.solvers import all_options, solver_options
 
-__all__ = ["EXIT_CODES", "Parser", "number", "add_solver_flags", "solver_flags", "flag"]
+__all__ = ["EXIT_CODES", "Parser", "number", "add_solver_flags", "solver_flags", "flag", "progress_bar"]
 
 EXIT_CODES = ("exit status: 0 success; 1 a solver failed (the message says where) or output could not be "
               "written; 2 bad input or a state outside the model (one line on stderr, nothing written)")
@@ -64,3 +66,20 @@ def solver_flags(args, solver: str, step: str) -> dict:
     """The solver options given on the command line, checked against ``solver`` for ``step``."""
     given = {name: getattr(args, name) for name in all_options() if getattr(args, name, None) is not None}
     return solver_options(solver, given, step, flag)
+
+
+@contextlib.contextmanager
+def progress_bar(what: str, unit: str):
+    """A ``progress(done, total)`` callback drawing a bar (tqdm) on stderr if it is a terminal, else None."""
+    if not sys.stderr.isatty():
+        yield None
+        return
+    from tqdm import tqdm
+
+    with tqdm(desc=what, unit=unit, file=sys.stderr, leave=False, dynamic_ncols=True) as bar:
+
+        def progress(done: int, total: int) -> None:
+            bar.total = total
+            bar.update(done - bar.n)
+
+        yield progress
