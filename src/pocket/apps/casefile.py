@@ -18,7 +18,7 @@ import json
 import pathlib
 
 from .cases import Case
-from .folders import write_whole
+from .folders import write_files
 from .physical import compressed_row, forces, inflated_row, resolve
 from .provenance import environment
 
@@ -37,15 +37,13 @@ def solve(case: Case) -> dict:
 
 
 def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
-    """Write ``stem.json`` and ``stem.csv`` into ``directory``; returns their paths."""
+    """Write ``stem.json`` and ``stem.csv`` into ``directory``, both or neither; returns their paths."""
     directory = pathlib.Path(directory)
-    directory.mkdir(parents=True, exist_ok=True)
     json_path, csv_path = directory / f"{stem}.json", directory / f"{stem}.csv"
     fields = list(dict.fromkeys(k for row in result["states"] for k in row))
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, fields, restval="")
     writer.writeheader()
     writer.writerows(result["states"])
-    write_whole(json_path, json.dumps(result, indent=2) + "\n")
-    write_whole(csv_path, text.getvalue())
+    write_files({json_path: json.dumps(result, indent=2) + "\n", csv_path: text.getvalue()})
     return json_path, csv_path

@@ -30,9 +30,10 @@ __all__ = ["check_output_file", "check_output_dir", "staged", "write_whole", "wr
            "remove_created"]
 
 
-def _writable_parent(path: pathlib.Path, what: str) -> None:
-    """The nearest existing ancestor of ``path`` is a folder this process may create entries in."""
-    for parent in path.parents:
+def _writable_parent(target: pathlib.Path, what: str, path) -> None:
+    """The nearest existing ancestor of ``target`` (``path`` as the user wrote it) is a folder this
+    process may create entries in."""
+    for parent in target.parents:
         if parent.exists():
             if not parent.is_dir():
                 raise InputError(f"{what} {path}: {parent} is a file, not a folder")
@@ -44,24 +45,39 @@ def _writable_parent(path: pathlib.Path, what: str) -> None:
 
 
 def check_output_file(path, what: str = "output") -> pathlib.Path:
-    """The absolute path of a file that may be created or replaced; InputError (before any work) if not."""
+    """The absolute path of a file that may be created or replaced; InputError (before any work) if not.
+
+    An existing link is followed: the path returned is its target's, which is written (the
+    link stays). Only a regular file is replaced: not a device, a pipe or ``/dev/stdout``.
+    """
     target = pathlib.Path(path).absolute()
+    if target.is_symlink():
+        if not target.exists():
+            raise InputError(f"{what} {path}: is a broken link")
+        target = target.resolve()
     if target.is_dir():
         raise InputError(f"{what} {path}: is a folder, not a file")
+    if target.exists() and not target.is_file():
+        raise InputError(f"{what} {path}: is not a regular file (a device or a pipe), so it cannot be replaced")
     if target.exists() and not os.access(target, os.W_OK):
         raise InputError(f"{what} {path}: the file is not writable")
-    _writable_parent(target, what)
+    _writable_parent(target, what, path)
     return target
 
 
-def check_output_dir(path, what: str = "output") -> pathlib.Path:
-    """The absolute path of a folder that may be created or filled; InputError (before any work) if not."""
+def check_output_dir(path, what: str = "output", *, overwrite: bool = True) -> pathlib.Path:
+    """The absolute path of a folder that may be created or filled; InputError (before any work) if not.
+
+    Without ``overwrite`` an existing folder must be empty (a result would replace it whole).
+    """
     target = pathlib.Path(path).absolute()
     if target.exists() and not target.is_dir():
         raise InputError(f"{what} {path}: is a file, not a folder")
     if target.is_dir() and not os.access(target, os.W_OK | os.X_OK):
         raise InputError(f"{what} {path}: the folder is not writable")
-    _writable_parent(target, what)
+    if not overwrite and target.is_dir() and any(target.iterdir()):
+        raise InputError(f"{what} {path}: the folder exists and is not empty (--overwrite replaces it)")
+    _writable_parent(target, what, path)
     return target
 
 

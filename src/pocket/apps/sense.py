@@ -24,14 +24,17 @@ import math
 import numpy as np
 
 from pocket.core.errors import InputError
-from pocket.core.inputs import check_finite
+from pocket.core.inputs import check_count, check_finite
 from pocket.core.units import quantity
 
 from .inverse import force_where
 from .physical import Pocket
 from .slopes import curve_with_slopes
 
-__all__ = ["Reading", "sense", "calibration"]
+__all__ = ["Reading", "sense", "calibration", "MAX_POINTS"]
+
+#: most rows of a calibration table (a bound on the work it asks for)
+MAX_POINTS = 10_000
 
 
 @dataclasses.dataclass(frozen=True)
@@ -75,8 +78,7 @@ def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
 
 def calibration(pocket: Pocket, max_force: float, points: int = 21) -> list[Reading]:
     """Readings at ``points`` forces evenly spaced from 0 to ``max_force`` (N)."""
-    if points < 2:
-        raise InputError(f"points = {points}, but a table needs >= 2")
+    points = check_count("points", points, 2, MAX_POINTS)
     if not (math.isfinite(max_force) and max_force > 0.0):
         raise InputError(f"max_force = {max_force!r}, but it must be > 0")
     return _readings(pocket, np.linspace(0.0, max_force / pocket.force_scale_N, points))

@@ -6,6 +6,7 @@ import pathlib
 
 from pocket.apps.casefile import solve, write
 from pocket.apps.cases import Case, load, sample
+from pocket.apps.folders import check_output_dir, check_output_file
 from pocket.core.errors import InputError
 
 from .common import EXIT_CODES
@@ -33,6 +34,9 @@ def case_from_args(args) -> tuple[Case, str]:
 
 def _main(args) -> int:
     case, stem = case_from_args(args)
+    check_output_dir(args.out, "--out")
+    for suffix in (".json", ".csv"):
+        check_output_file(pathlib.Path(args.out) / f"{stem}{suffix}", "--out")
     result = solve(case)
     paths = write(result, args.out, stem)
     rows = result["states"]

@@ -11,6 +11,7 @@ import itertools
 import json
 import math
 
+from pocket.apps.folders import check_output_dir
 from pocket.apps.solvers import SOLVERS, get_solver
 from pocket.core.errors import ConvergenceError
 
@@ -62,6 +63,8 @@ def _fmt(value) -> str:
 def _main(args) -> int:
     step = "inflate" if args.command == "inflate" else "compress"
     options = solver_flags(args, args.solver, step)
+    if args.vtk:
+        check_output_dir(args.vtk, "--vtk", overwrite=args.overwrite)
     solver = get_solver(args.solver)
     if step == "inflate":
         states = [solver.inflate(args.alpha, args.pressure, **options)]
