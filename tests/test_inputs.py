@@ -3,10 +3,10 @@
 import math
 
 import pytest
+from pocket.fem import SOLVER as FEM
 
 from pocket.core.errors import InputError
 from pocket.core.inputs import MAGNITUDES, check_alpha, check_file, check_force, check_positive, quote
-from pocket.fem import SOLVER as FEM
 
 
 @pytest.mark.parametrize("check", [lambda v: check_positive("pressure", v), check_force,
