@@ -3,8 +3,8 @@
 import math
 
 import pytest
-from pocket.fem import SOLVER as FEM
 
+from pocket.apps.solvers import record
 from pocket.core.errors import InputError
 from pocket.core.inputs import MAGNITUDES, check_alpha, check_file, check_force, check_positive, quote
 
@@ -55,4 +55,4 @@ def test_check_file(tmp_path):
 def test_a_path_option_is_a_checked_file():
     """Exact answer: the FE record's mesh option (kind "path") refuses a device before any read."""
     with pytest.raises(InputError, match="--mesh = '/dev/zero' is not a regular file"):
-        FEM.checked({"mesh": "/dev/zero"}, "inflate", lambda name: f"--{name}")
+        record("fem").checked({"mesh": "/dev/zero"}, "inflate", lambda name: f"--{name}")
