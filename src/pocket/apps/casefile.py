@@ -28,13 +28,14 @@ from .provenance import environment
 __all__ = ["solve", "write"]
 
 
-def solve(case: Case) -> dict:
+def solve(case: Case, progress=None) -> dict:
     """The case solved: {"case": SI inputs, "inflated": row, "states": [rows], "provenance": {...}}
-    (JSON-ready)."""
+    (JSON-ready). ``progress(done, total)``, if given, goes to the solver's compression curve."""
     pocket = resolve(case)
     loads = forces(pocket)
+    extra = {} if progress is None else {"progress": progress}
     states = pocket.solver().compression_curve(pocket.alpha, pocket.pressure_initial, loads,
-                                               **pocket.options())
+                                               **pocket.options(), **extra)
     return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
             "states": [compressed_row(pocket, s, i) for i, s in enumerate(states)], "provenance": environment()}
 

@@ -38,13 +38,18 @@ def _parser() -> Parser:
 
 
 def main(argv=None) -> int:
-    """Run the command line; returns the exit status.
+    """Run the command line; returns the exit status (also for ``--help``, ``--version`` and usage
+    errors, which argparse ends with SystemExit).
 
     Output cut short by the reader (``pocket ... | head``) ends quietly with status 1
     (Python's documented recipe for SIGPIPE), an interrupt with one line and 130.
     """
     try:
-        args = _parser().parse_args(argv)
+        try:
+            args = _parser().parse_args(argv)
+        except SystemExit as stop:
+            sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's last flush
+            return stop.code if isinstance(stop.code, int) else 2
         try:
             status = args.handler(args)
         except PocketError as err:

@@ -62,7 +62,7 @@ def register(subparsers) -> None:
     p.add_argument("--pressure", type=number, nargs="+", required=True, help="values of Phat_I = P_I R/(E T)")
     p.add_argument("--force", type=number, nargs="+", required=True, help="values of Fhat = F/(P_I pi R^2)")
     p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
-    p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting", help="solver")
+    p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting", help="solver of every point")
     p.add_argument("--workers", type=int, help=f"local worker processes (default: one per usable CPU; at most "
                    f"{max_workers()}, 4 per CPU)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
