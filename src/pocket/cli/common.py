@@ -1,8 +1,9 @@
 """What every ``pocket`` subcommand shares: the parser class, number parsing, solver flags, exit codes.
 
-Exit status: 0 success; 1 a solver failed (the message says where) or output
-could not be written; 2 bad input, or a state outside the model (past the end
-of its range, above a pressure maximum). Errors are one line on stderr.
+Exit status: 0 success; 1 a solver failed (the message says where), output
+could not be written, or an internal error (a bug); 2 bad input, or a state
+outside the model (past the end of its range, above a pressure maximum); 130
+interrupted. Errors are one line on stderr.
 """
 
 from __future__ import annotations
@@ -18,9 +19,9 @@ from pocket.core.inputs import quote
 __all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "add_solver_flags", "solver_flags", "flag",
            "progress_bar", "warn", "report"]
 
-EXIT_CODES = ("exit status: 0 success; 1 a solver failed (the message says where) or output could not be "
-              "written; 2 bad input or a state outside the model (one line on stderr, nothing written); "
-              "130 interrupted (Ctrl-C)")
+EXIT_CODES = ("exit status: 0 success; 1 a solver failed (the message says where), output could not be "
+              "written, or an internal error (a bug); 2 bad input or a state outside the model (one line on "
+              "stderr, nothing written); 130 interrupted (Ctrl-C)")
 
 
 class HelpFormatter(argparse.HelpFormatter):
