@@ -335,3 +335,32 @@ def test_bad_sweep_options(tmp_path, capsys, extra, message):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
     assert not path.exists()
+
+
+def test_warnings_go_to_the_message_column(tmp_path, monkeypatch):
+    """An ok point's message is its state's warnings, joined by '; ' on one line."""
+    import dataclasses
+    import types
+
+    import pocket.apps.sweep as sweep
+
+    def compress(*args, **options):
+        return dataclasses.replace(shooting.compress(*args, **options), warnings=("first\nnote", "second"))
+
+    monkeypatch.setattr(sweep, "get_solver", lambda name: types.SimpleNamespace(compress=compress))
+    path = tmp_path / "w.csv"
+    with CountingExecutor() as executor:
+        run_sweep(path, [0.3], [0.3], [0.1], executor)
+    (row,) = csv.DictReader(path.open())
+    assert row["status"] == "ok" and row["message"] == "first note; second"
+
+
+def test_a_bad_scheduler_address_is_input(tmp_path, capsys):
+    """A malformed dask address: exit 2, one line naming it, no file."""
+    pytest.importorskip("dask.distributed")
+    path = tmp_path / "s.csv"
+    assert main(["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--out", str(path),
+                 "--scheduler", "not an address"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--scheduler not an address: cannot connect" in err, err
+    assert not path.exists()
