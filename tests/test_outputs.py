@@ -146,8 +146,8 @@ def test_folder_made_read_only_during_the_solve(tmp_path, monkeypatch, capsys):
     state = contextlib.ExitStack()
     real = run.solve
 
-    def solve_then_lock(case):
-        result = real(case)
+    def solve_then_lock(case, progress=None):
+        result = real(case, progress)
         state.enter_context(read_only(out))
         return result
 
