@@ -232,9 +232,9 @@ class _FullDisk:
 
 
 def test_full_disk_while_appending_keeps_complete_rows(reference, tmp_path, monkeypatch, capsys):
-    """ENOSPC in the middle of a row (the disk fills after 3 rows and a half): exit 1, one line naming
-    the file, the file cut back to the header and 3 complete rows; freed, the rerun resumes and
-    ends with the reference's bytes."""
+    """ENOSPC in the middle of a row (the disk fills after the bytes of the header and 3.5 rows): exit
+    1, one line naming the file, the file cut back to the header and the complete rows that fitted;
+    freed, the rerun resumes and ends with the reference's bytes."""
     import io
 
     lines = reference.read_bytes().splitlines(keepends=True)
@@ -245,8 +245,9 @@ def test_full_disk_while_appending_keeps_complete_rows(reference, tmp_path, monk
     assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 1
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and f"cannot write {path}: No space left on device" in err, err
-    kept = path.read_bytes().splitlines(keepends=True)
-    assert len(kept) == 4 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
+    kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
+    assert len(kept) >= 2 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
+    assert path.stat().st_size <= room
     monkeypatch.undo()
     assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 0
     assert path.read_bytes() == reference.read_bytes()
@@ -276,7 +277,8 @@ def test_full_disk_at_the_final_rewrite_keeps_the_journal(reference, tmp_path, m
 
 def test_file_size_limit_in_a_real_process(reference, tmp_path):
     """A real write failure (RLIMIT_FSIZE: writes past it fail with EFBIG, as on a full disk) in the
-    installed command: exit 1, one line, no traceback, complete rows only, within the limit."""
+    installed command: exit 1, one line, no traceback, complete rows only, within the limit; the
+    rerun without the limit resumes and ends with the reference's bytes."""
     import resource
     import subprocess
     import sys
@@ -291,9 +293,11 @@ def test_file_size_limit_in_a_real_process(reference, tmp_path):
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "sweep", *ARGV, "--out", str(path), "--workers", "2"],
                           capture_output=True, text=True, preexec_fn=small_files)
     assert proc.returncode == 1 and proc.stderr.count("\n") == 1 and "File too large" in proc.stderr, proc.stderr
-    kept = path.read_bytes().splitlines(keepends=True)
-    assert len(kept) == 7 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["limited.csv"]
+    kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
+    assert len(kept) >= 2 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
+    assert path.stat().st_size <= limit and sorted(p.name for p in tmp_path.iterdir()) == ["limited.csv"]
+    assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 0
+    assert path.read_bytes() == reference.read_bytes()
 
 
 def test_one_writer_at_a_time(tmp_path, capsys):
