@@ -363,16 +363,25 @@ def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
     assert status == 130 and out == "" and err == "pocket: interrupted\n"
 
 
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads the process's CPU time in /proc")
 def test_sigint_to_a_long_fe_solve(tmp_path):
-    """A real SIGINT to a long FE solve (20000 elements, about a minute): status 130 within seconds,
-    stderr exactly `pocket: interrupted`, no --vtk folder."""
+    """A real SIGINT to a long FE solve (20000 elements, about a minute), once it has run 3 s of CPU:
+    status 130 within seconds, stderr exactly `pocket: interrupted`, no --vtk folder."""
+    import os
     import signal
     import time
 
     proc = subprocess.Popen([sys.executable, "-m", "pocket.cli", "compress", "--alpha", "0.3", "--pressure", "0.3",
                              "--force", "0.5", "--solver", "fem", "--elements", "20000", "--vtk", str(tmp_path / "v")],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    time.sleep(4.0)  # past the imports, inside the solve
+    def cpu_seconds():  # user + system time of the process (the imports take well under a second)
+        with open(f"/proc/{proc.pid}/stat") as stat:
+            fields = stat.read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+    end = time.monotonic() + 60
+    while cpu_seconds() < 3.0 and time.monotonic() < end:  # inside the solve
+        time.sleep(0.1)
     proc.send_signal(signal.SIGINT)
     out, err = proc.communicate(timeout=30)
     assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
