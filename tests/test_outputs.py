@@ -9,7 +9,6 @@ import errno
 import json
 import os
 import pathlib
-import resource
 import shutil
 import subprocess
 import sys
@@ -209,6 +208,7 @@ def test_sense_table_on_a_full_disk(tmp_path, monkeypatch, capsys):
 def test_file_size_limit_in_a_real_process(tmp_path):
     """A real write failure (RLIMIT_FSIZE: writes past 2000 bytes fail with EFBIG, as on a full
     disk) in the installed command: exit 1, one line, no traceback, nothing left."""
+    resource = pytest.importorskip("resource")
 
     def small_files():
         resource.setrlimit(resource.RLIMIT_FSIZE, (2000, 2000))
