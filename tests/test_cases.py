@@ -150,6 +150,12 @@ def _with(key_line: str, section: str = "[clamp]") -> str:
         (BUTTON.replace('radius = "20 mm"', 'radius = "1e300 m"'), "clamp.radius = '1e300 m' is outside the"),
         (BUTTON.replace('radius = "20 mm"', "radius = 1e300"), "clamp.radius = 1e+300 is outside the magnitudes"),
         (BUTTON.replace('radius = "20 mm"', 'radius = "1e-300 mm"'), "outside the magnitudes"),
+        (BUTTON.replace('height = "10 mm"', 'pressure = "1e-15 Pa"'),  # Phat_I = 1e-15 0.02 / (1e6 2.5e-4)
+         "initial.pressure = '1e-15 Pa' gives Phat_I = P_I R / (E T) = 8e-20, outside the magnitudes"),
+        (BUTTON.replace('height = "10 mm"', 'pressure = "4 kPa"').replace('heights = ["9 mm", "8 mm"]',
+                                                                          'forces = ["1 N", "1e-15 N"]'),
+         # Fhat = 1e-15 / (4e3 pi 0.02^2)
+         "loads.forces[1] = '1e-15 N' gives Fhat = F / (P_I pi R^2) = 1.99e-16, outside the magnitudes"),
         (BUTTON.replace('radius = "20 mm"', 'radius = "1' + "0" * 400 + ' m"'), "is not finite"),
         (BUTTON.replace("alpha = 0.3", "alpha = 1e300"), "sheet.alpha = 1e+300 is outside the magnitudes"),
         (BUTTON + "[solver]\nrtol = 1e-20\n", "solver.rtol = 1e-20, but it must lie in [1e-14, 0.0001]"),

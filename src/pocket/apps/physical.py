@@ -14,8 +14,8 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from pocket.core.errors import OutOfRangeError, PocketError
-from pocket.core.inputs import quote
+from pocket.core.errors import InputError, OutOfRangeError, PocketError
+from pocket.core.inputs import MAGNITUDES, quote
 from pocket.core.units import written_like
 
 from .cases import Case
@@ -64,6 +64,16 @@ class Pocket:
         return {k: v for k, v in self.case.options if step in solver.option(k).steps}
 
 
+def _inside(key: str, given: str, name: str, value: float) -> float:
+    """``value``, the dimensionless form of the case's ``key``, if the model takes it (0, or a magnitude
+    within ``pocket.core.inputs.MAGNITUDES``); else an InputError quoting the case's value."""
+    low, high = MAGNITUDES
+    if value != 0.0 and not low <= abs(value) <= high:
+        raise InputError(f"{key} = {given} gives {name} = {value:.3g}, outside the magnitudes of the model's "
+                         f"dimensionless inputs ({low:g} to {high:g})")
+    return value
+
+
 def resolve(case: Case) -> Pocket:
     """Solve for Phat_I from the case's initial state (pressure, height or volume).
 
@@ -75,7 +85,8 @@ def resolve(case: Case) -> Pocket:
     solver, options = unit.solver(), unit.options("inflate")
     given = quote(case.as_given(f"initial.{kind}"))
     if kind == "pressure":
-        return Pocket(case, value / unit.pressure_scale_Pa)
+        return Pocket(case, _inside("initial.pressure", given, "Phat_I = P_I R / (E T)",
+                                    value / unit.pressure_scale_Pa))
     if kind == "height":
         try:
             return Pocket(case, pressure_for_height(solver, case.alpha, value / case.radius, **options))
@@ -116,7 +127,8 @@ def forces(pocket: Pocket) -> list[float]:
     """
     case = pocket.case
     if case.load_kind == "forces":
-        return [f / pocket.force_scale_N for f in case.loads]
+        return [_inside(f"loads.forces[{i}]", quote(case.as_given(f"loads.forces[{i}]")), "Fhat = F / (P_I pi R^2)",
+                        f / pocket.force_scale_N) for i, f in enumerate(case.loads)]
     solver, options = pocket.solver(), pocket.options()
     top = solver.inflate(pocket.alpha, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
     out = []
