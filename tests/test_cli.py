@@ -1,6 +1,7 @@
 """The ``pocket`` command line, called through ``main(argv)``."""
 
 import json
+import re
 import subprocess
 import sys
 
@@ -64,10 +65,7 @@ def test_table(capsys, solver):
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(capsys, argv, message):
-    try:
-        status = main(argv)
-    except SystemExit as exc:  # argparse's own errors
-        status = exc.code
+    status = main(argv)  # argparse's own errors too: main returns their status
     out, err = capsys.readouterr()
     assert status == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and message in err, err
@@ -150,4 +148,241 @@ def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, mo
                            "--solver", "fem", "--elements", "50", "--vtk", str(tmp_path / "fe"))
     assert status == 1 and out == "" and len(err.strip().splitlines()) == 1, err
     assert where in err and "patched to fail" in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def _commands():
+    """Every subcommand's parser, by name (the parser ``pocket --help`` lists)."""
+    from pocket.cli.main import _parser
+
+    parser = _parser()
+    sub = next(a for a in parser._actions if isinstance(a, __import__("argparse")._SubParsersAction))
+    return sub.choices
+
+
+@pytest.mark.parametrize("name", sorted(_commands()))
+def test_every_subcommand_help(name, capsys):
+    """`pocket COMMAND --help`: exit 0, a description, help for every option, each option's default
+    (for solver flags the default of the solver's record), and the exit codes."""
+    import argparse
+
+    from pocket.apps.solvers import all_options
+
+    parser = _commands()[name]
+    assert main([name, "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert parser.description and "exit status: 0 " in text
+    records = all_options()
+    for action in parser._actions:
+        if isinstance(action, argparse._HelpAction):
+            continue
+        assert action.help, action.option_strings
+        line = " ".join(parser._get_formatter()._expand_help(action).split())
+        assert line in text
+        name_ = action.dest
+        default = records[name_][0][1].default if name_ in records else action.default
+        if isinstance(default, bool | str) and default:
+            assert str(default).lower() in line.lower(), (action.option_strings, line)
+        elif isinstance(default, int | float) and not isinstance(default, bool):  # 1e5 or 100000: the number
+            numbers = {float(x) for x in re.findall(r"\d+(?:\.\d+)?(?:e[-+]?\d+)?", line)}
+            assert float(default) in numbers, (action.option_strings, line)
+
+
+def test_a_default_the_help_text_omits_comes_from_the_record(capsys, monkeypatch):
+    """Exact answer: --rtol's help text names no default, so the help adds the shooting record's
+    (1e-10); change the record's default and the help follows."""
+    import dataclasses
+
+    from pocket.apps import solvers
+
+    assert main(["inflate", "--help"]) == 0
+    assert "(default: 1e-10)" in " ".join(capsys.readouterr().out.split())
+    rtol = dataclasses.replace(solvers.SOLVERS["shooting"].options[0], default=3e-9)
+    monkeypatch.setitem(solvers.SOLVERS, "shooting", dataclasses.replace(solvers.SOLVERS["shooting"], options=(rtol,)))
+    assert main(["inflate", "--help"]) == 0
+    assert "(default: 3e-09)" in " ".join(capsys.readouterr().out.split())
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--rtol", "2"], "--rtol = 2.0, but it must lie in [1e-14"),
+        (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--rtol", "1e-20"],
+         "--rtol = 1e-20, but it must lie in [1e-14, 0.0001]"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--solver", "fem", "--tol", "0"], "--tol = 0.0"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--solver", "fem", "--elements", "1000000"],
+         "--elements = 1000000, but it must lie in [4, 100000]"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--solver", "fem", "--mesh", "/dev/zero"],
+         "--mesh = '/dev/zero' is not a regular file"),
+        (["inflate", "--alpha", "0.3", "--pressure", "1e300"], "pressure = 1e+300 is outside the magnitudes"),
+        (["inflate", "--alpha", "0.3", "--pressure", "1e-300"], "pressure = 1e-300 is outside the magnitudes"),
+        (["inflate", "--alpha", "0.3", "--pressure", "1" + "0" * 400 + "/1"], "is not a number"),
+        (["inflate", "--alpha", "0.3", "--pressure", "0/0"], "'0/0' is not a number"),
+        (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "nan"], "force = nan is not finite"),
+    ],
+)
+def test_solver_options_and_magnitudes_through_the_cli(capsys, argv, message):
+    """Option values the records refuse, and numbers outside the model's magnitudes: exit 2, one line."""
+    status = main(argv)  # argparse's own errors too: main returns their status
+    out, err = capsys.readouterr()
+    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+
+
+def _with_warnings(monkeypatch):
+    """The shooting solver, patched so that every state carries two warnings (one of its inflated state)."""
+    import dataclasses
+
+    import pocket.shooting.compression as compression
+    import pocket.shooting.inflation as inflation
+
+    real_inflate, real_curve = inflation.inflate, compression.compression_curve
+
+    def inflate(*args, **kwargs):
+        return dataclasses.replace(real_inflate(*args, **kwargs), warnings=("inflated: note",))
+
+    def compression_curve(*args, **kwargs):
+        return [dataclasses.replace(s, warnings=(f"at force {s.force}",),
+                                    inflated=dataclasses.replace(s.inflated, warnings=("inflated: note",)))
+                for s in real_curve(*args, **kwargs)]
+
+    monkeypatch.setattr(inflation, "inflate", inflate)
+    monkeypatch.setattr(compression, "compression_curve", compression_curve)
+
+
+def test_warnings_on_stderr_and_in_json(capsys, monkeypatch, tmp_path):
+    """Each state's warnings: `pocket: warning: ...` lines on stderr (each once), and a `warnings`
+    list per state in JSON, for inflate, compress and run."""
+    _with_warnings(monkeypatch)
+    status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--pressure", "0.3", "--json")
+    assert status == 0 and json.loads(out)["warnings"] == ["inflated: note"]
+    assert err == "pocket: warning: inflated: note\n"
+    status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "0.2",
+                           "--json")
+    assert [r["warnings"] for r in json.loads(out)] == [["at force 0.1"], ["at force 0.2"]]
+    assert err.splitlines() == ["pocket: warning: inflated: note", "pocket: warning: at force 0.1",
+                                "pocket: warning: at force 0.2"]
+    status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1")
+    assert status == 0 and "warnings" not in out and "at force 0.1" in err
+    status, out, err = run(capsys, "run", "--sample", "1", "--out", str(tmp_path))
+    result = json.loads((tmp_path / "sample1.json").read_text())
+    assert status == 0 and result["inflated"]["warnings"] == ["inflated: note"]
+    assert [s["warnings"] for s in result["states"]] == [[f"at force {s['force']}"] for s in result["states"]]
+    assert err.splitlines()[0] == "pocket: warning: inflated: note" and len(err.splitlines()) == 8
+
+
+class _Terminal(__import__("io").StringIO):
+    """A stderr that says it is a terminal."""
+
+    def isatty(self):
+        return True
+
+
+def _curve_with_progress(monkeypatch, calls):
+    """The shooting curve, patched to take ``progress`` as the entry-point protocol says, recording it."""
+    import pocket.shooting.compression as compression
+
+    real = compression.compression_curve
+
+    def compression_curve(alpha, pressure_initial, forces, *, progress=None, **options):
+        calls.append(progress)
+        states = []
+        for done, force in enumerate(forces, start=1):
+            states += real(alpha, pressure_initial, [force], **options)
+            if progress is not None:
+                progress(done, len(forces))
+        return states
+
+    monkeypatch.setattr(compression, "compression_curve", compression_curve)
+
+
+@pytest.mark.parametrize("terminal", [True, False])
+def test_progress_bar_only_on_a_terminal(terminal, capsys, monkeypatch, tmp_path):
+    """A curve on a terminal: the solver gets a progress callback and a tqdm bar reaches 3/3 on
+    stderr; off a terminal (a file, a pipe) it gets none and stderr stays empty."""
+    calls = []
+    _curve_with_progress(monkeypatch, calls)
+    stderr = _Terminal() if terminal else __import__("io").StringIO()
+    monkeypatch.setattr(sys, "stderr", stderr)
+    assert main(["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "0.2", "0.3"]) == 0
+    assert main(["run", "--sample", "1", "--out", str(tmp_path)]) == 0
+    assert len(calls) == 2 and all((c is not None) == terminal for c in calls)
+    text = stderr.getvalue()
+    assert ("3/3" in text and "7/7" in text) if terminal else text == ""
+
+
+def test_sweep_bar_on_a_terminal(monkeypatch, tmp_path, capsys):
+    """The sweep's tqdm bar counts its points on a terminal."""
+    stderr = _Terminal()
+    monkeypatch.setattr(sys, "stderr", stderr)
+    assert main(["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "0.2", "--out",
+                 str(tmp_path / "s.csv"), "--workers", "1"]) == 0
+    assert "2/2" in stderr.getvalue() and "points" in stderr.getvalue()
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "0.2", "--json"],
+        ["design", "--radius", "20 mm", "--height", "10 mm", "--modulus", "1 MPa", "--alpha", "0.3",
+         "--force", "0.67 N"],
+        ["sense", "--sample", "1", "--ratio", "1.2"],
+        ["run", "--sample", "1", "--out", "{tmp}"],
+        ["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--out", "{tmp}/s.csv", "--workers", "1"],
+        ["--help"],
+        ["inflate", "--help"],
+        ["--version"],
+    ],
+)
+@pytest.mark.parametrize("buffered", [True, False])
+def test_every_command_on_a_closed_pipe(argv, buffered, tmp_path):
+    """`pocket ... | head` with the reader gone before any output: status 1, nothing on stderr, with
+    Python's stdout buffered (as for users) or not (PYTHONUNBUFFERED, as in some CI)."""
+    import os
+
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"} | ({} if buffered else
+                                                                              {"PYTHONUNBUFFERED": "1"})
+    proc = subprocess.Popen([sys.executable, "-m", "pocket.cli", *argv], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, env=env)
+    proc.stdout.close()
+    err = proc.stderr.read().decode()
+    # unbuffered, argparse's help and version writes swallow the broken pipe themselves (then status 0)
+    quiet = not buffered and ("--help" in argv or "--version" in argv)
+    assert proc.wait() in ({0, 1} if quiet else {1}) and err == "", err
+
+
+def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
+    """Ctrl-C during a solve (KeyboardInterrupt in the solver): status 130, `pocket: interrupted`."""
+    import pocket.shooting.inflation as inflation
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(inflation, "inflate", interrupted)
+    status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--pressure", "0.3")
+    assert status == 130 and out == "" and err == "pocket: interrupted\n"
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads the process's CPU time in /proc")
+def test_sigint_to_a_long_fe_solve(tmp_path):
+    """A real SIGINT to a long FE solve (20000 elements, about a minute), once it has run 3 s of CPU:
+    status 130 within seconds, stderr exactly `pocket: interrupted`, no --vtk folder."""
+    import os
+    import signal
+    import time
+
+    proc = subprocess.Popen([sys.executable, "-m", "pocket.cli", "compress", "--alpha", "0.3", "--pressure", "0.3",
+                             "--force", "0.5", "--solver", "fem", "--elements", "20000", "--vtk", str(tmp_path / "v")],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    def cpu_seconds():  # user + system time of the process (the imports take well under a second)
+        with open(f"/proc/{proc.pid}/stat") as stat:
+            fields = stat.read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+    end = time.monotonic() + 60
+    while cpu_seconds() < 3.0 and time.monotonic() < end:  # inside the solve
+        time.sleep(0.1)
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=30)
+    assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
     assert list(tmp_path.iterdir()) == []

@@ -76,13 +76,32 @@ def test_table(pocket, tmp_path, capsys):
 @pytest.mark.parametrize(
     "args, message",
     [
-        (["--ratio", "0.5"], "pressure_ratio = 0.5 is below its value with no force"),
+        (["--ratio", "0.5"], "pressure ratio = 0.5 is below its value with no force (P_I = 4812.75 Pa, ratio 1)"),
+        (["--pressure", "2 kPa"], "pressure = '2 kPa' is below its value with no force (P_I = 4.81275 kPa, ratio 1)"),
+        (["--pressure", "5 kPa", "--points", "1", "--table", "t.csv"], "--points = 1, but it must lie in [2, 10000]"),
+        (["--table", "t.csv", "--max-force", "-1 N"], "--max-force = '-1 N', but it must be > 0"),
         (["--pressure", "5 mm"], "pressure = '5 mm' has dimension [length], but a pressure"),
         ([], "give a measured --pressure or --ratio, or --table FILE.csv"),
         (["--ratio", "1.2", "--pressure", "5 kPa"], "give either a pressure or a pressure ratio"),
     ],
 )
-def test_cli_errors(args, message, capsys):
+def test_cli_errors(args, message, capsys, tmp_path, monkeypatch):
+    """Exit 2, one line quoting the value as given (P_I of sample 2 is 4812.75 Pa), nothing written."""
+    monkeypatch.chdir(tmp_path)
     assert main(["sense", "--sample", "2", *args]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_pressure_past_the_range_names_the_highest(pocket, capsys):
+    """Exact answer: the highest pressure quoted is P_I times the pressure ratio of the state at the
+    end of the model's range (inverse.range_end), in the kPa the user wrote."""
+    from pocket.apps.inverse import range_end
+
+    end = range_end(shooting, pocket.alpha, pocket.pressure_initial)
+    q = shooting.compress(pocket.alpha, pocket.pressure_initial, end).pressure_ratio
+    assert main(["sense", "--sample", "1", "--pressure", "60 kPa"]) == 2
+    err = capsys.readouterr().err
+    assert f"pressure = '60 kPa' is beyond the model's range (it reaches {q * 4.81275:.6g} kPa, " \
+           f"P/P_I = {q:.6g})" in err, err

@@ -23,3 +23,17 @@ def test_profile_with_a_field_of_another_length_is_refused(field):
     fields[field] = fields[field][:4]
     with pytest.raises(ValueError, match="one common shape"):
         Profile(*fields)
+
+
+def test_warnings_stay_out_of_the_scalars():
+    """Exact answer: a state's warnings default to none and are no reported scalar; the command line
+    adds them to JSON as a list (pocket.cli.common.report)."""
+    import dataclasses
+
+    from pocket import shooting
+    from pocket.cli.common import report
+
+    state = shooting.inflate(0.3, 0.3)
+    assert state.warnings == () and "warnings" not in state.scalars()
+    noted = dataclasses.replace(state, warnings=("a note",))
+    assert report(noted) == {**state.scalars(), "warnings": ["a note"]}

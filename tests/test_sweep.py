@@ -108,3 +108,263 @@ def test_not_a_sweep_file(tmp_path, capsys):
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--out", str(path)]) == 2
     assert "is not a sweep file" in capsys.readouterr().err
     assert path.read_text() == "a,b\n1,2\n"
+
+
+def test_rows_record_the_grid_as_asked(tmp_path, monkeypatch):
+    """Exact answer: a solver whose states echo each input one ulp off (0.1 -> 0.10000000000000002)
+    still gives rows holding the numbers asked, written so that they read back equal; a rerun on
+    the file finds every point and adds no row."""
+    import dataclasses
+    import math
+    import types
+
+    import pocket.apps.sweep as sweep
+
+    def compress(alpha, pressure_initial, force, **options):
+        state = shooting.compress(alpha, pressure_initial, force, **options)
+        return dataclasses.replace(state, alpha=math.nextafter(alpha, 2.0), force=math.nextafter(force, 2.0),
+                                   pressure_initial=math.nextafter(pressure_initial, 2.0))
+
+    monkeypatch.setattr(sweep, "get_solver", lambda name: types.SimpleNamespace(compress=compress))
+    path = tmp_path / "echo.csv"
+    grid = ([0.3, 1.2], [0.05, 0.1], [0.05, 0.1])
+    with CountingExecutor() as executor:
+        assert run_sweep(path, *grid, executor) == (8, 0)
+    rows = list(csv.DictReader(path.open()))
+    assert [(float(r["alpha"]), float(r["pressure_initial"]), float(r["force"])) for r in rows] == [
+        (a, p, f) for a in grid[0] for p in grid[1] for f in grid[2]]
+    before = path.read_bytes()
+    with CountingExecutor() as executor:
+        assert run_sweep(path, *grid, executor) == (0, 8) and executor.points == []
+    assert path.read_bytes() == before
+
+
+def test_readme_example_runs_and_reruns(tmp_path, capsys):
+    """The README's sweep, on local processes: 2 x 4 x 5 = 40 rows holding exactly the grid asked;
+    run again on the same file it computes nothing and leaves the same bytes."""
+    argv = ["sweep", "--alpha", "0.3", "1.2", "--pressure", "0.05", "0.1", "0.2", "0.32",
+            "--force", "0.05", "0.1", "0.2", "0.5", "1", "--out", str(tmp_path / "s.csv"), "--workers", "2"]
+    assert main(argv) == 0
+    assert "40 points computed, 0 reused" in capsys.readouterr().out
+    text = (tmp_path / "s.csv").read_text()
+    rows = list(csv.DictReader(text.splitlines()))
+    assert {(r["alpha"], r["pressure_initial"]) for r in rows} == {
+        (a, p) for a in ("0.3", "1.2") for p in ("0.05", "0.1", "0.2", "0.32")}
+    assert len(rows) == 40 and {r["status"] for r in rows} == {"ok"}
+    assert main(argv) == 0
+    assert "0 points computed, 40 reused" in capsys.readouterr().out
+    assert (tmp_path / "s.csv").read_text() == text
+
+
+@pytest.mark.parametrize("content", [b"my notes\nthe last line, no newline at its end",
+                                     b"my notes without any newline",
+                                     ",".join(COLUMNS).encode() + b"\n0.3,0.1\n",  # a short row
+                                     b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR"])
+def test_a_file_that_is_not_a_sweep_is_left_untouched(tmp_path, capsys, content):
+    """Checked before anything is written: exit 2, one line, the file's bytes unchanged."""
+    path = tmp_path / "notes.csv"
+    path.write_bytes(content)
+    assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
+                 "--workers", "1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "is not a sweep file" in err, err
+    assert path.read_bytes() == content
+
+
+def test_the_start_of_a_header_is_a_new_sweep(tmp_path):
+    """A sweep killed while writing its header left a prefix of it: that file is a new sweep."""
+    path = tmp_path / "cut.csv"
+    path.write_text(",".join(COLUMNS)[:30])
+    with CountingExecutor() as executor:
+        assert run_sweep(path, [0.3], [0.1], [0.1], executor) == (1, 0)
+    assert [r["force"] for r in csv.DictReader(path.open())] == ["0.1"]
+
+
+def test_interrupted_sweep_keeps_complete_rows_and_resumes(reference, tmp_path):
+    """An interrupt after 5 points: the file holds the header and exactly 5 complete rows of the
+    reference; the rerun computes the other 11 and ends with the reference's bytes."""
+    path = tmp_path / "stopped.csv"
+
+    def progress(done, total):
+        if done == 5:
+            raise KeyboardInterrupt
+
+    with CountingExecutor() as executor, pytest.raises(KeyboardInterrupt):
+        run_sweep(path, ALPHAS, PRESSURES, FORCES, executor, progress=progress)
+    lines = path.read_text().splitlines(keepends=True)
+    assert len(lines) == 6 and lines[0] == reference.read_text().splitlines(keepends=True)[0]
+    assert set(lines[1:]) <= set(reference.read_text().splitlines(keepends=True))
+    with CountingExecutor() as executor:
+        assert run_sweep(path, ALPHAS, PRESSURES, FORCES, executor) == (11, 5)
+    assert path.read_bytes() == reference.read_bytes()
+
+
+def test_a_new_sweep_stopped_before_any_point_leaves_nothing(tmp_path):
+    """Nothing finished: neither the file nor the folders made for it remain."""
+
+    class Refusing(CountingExecutor):
+        def submit(self, fn, *args, **kwargs):
+            raise KeyboardInterrupt
+
+    with Refusing() as executor, pytest.raises(KeyboardInterrupt):
+        run_sweep(tmp_path / "new" / "deeper" / "s.csv", [0.3], [0.1], [0.1], executor)
+    assert list(tmp_path.iterdir()) == []
+
+
+class _FullDisk:
+    """A file whose writes stop at ``room`` bytes: the write that reaches it is short, the next
+    fails with ENOSPC (what write(2) does on a full disk)."""
+
+    def __init__(self, file, room):
+        self._file, self._room = file, room
+
+    def write(self, data):
+        import errno
+
+        if not self._room:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        written = self._file.write(data[: self._room])
+        self._room -= written
+        return written
+
+    def __getattr__(self, name):
+        return getattr(self._file, name)
+
+
+def test_full_disk_while_appending_keeps_complete_rows(reference, tmp_path, monkeypatch, capsys):
+    """ENOSPC in the middle of a row (the disk fills after the bytes of the header and 3.5 rows): exit
+    1, one line naming the file, the file cut back to the header and the complete rows that fitted;
+    freed, the rerun resumes and ends with the reference's bytes."""
+    import io
+
+    lines = reference.read_bytes().splitlines(keepends=True)
+    room = sum(map(len, lines[:4])) + len(lines[4]) // 2
+    real = io.FileIO
+    monkeypatch.setattr(io, "FileIO", lambda *args: _FullDisk(real(*args), room))
+    path = tmp_path / "full.csv"
+    assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"cannot write {path}: No space left on device" in err, err
+    kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
+    assert len(kept) >= 2 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
+    assert path.stat().st_size <= room
+    monkeypatch.undo()
+    assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 0
+    assert path.read_bytes() == reference.read_bytes()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["full.csv"]
+
+
+def test_full_disk_at_the_final_rewrite_keeps_the_journal(reference, tmp_path, monkeypatch, capsys):
+    """ENOSPC while the finished file is rewritten in grid order: exit 1, no hidden sibling left, and
+    the file still holds all 16 points (in the order they finished), so a rerun only reorders it."""
+    import errno
+    import pathlib
+
+    def full(self, *args, **kwargs):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(pathlib.Path, "write_text", full)
+    path = tmp_path / "last.csv"
+    assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 1
+    assert "No space left on device" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["last.csv"]
+    assert sorted(path.read_bytes().splitlines()) == sorted(reference.read_bytes().splitlines())
+    monkeypatch.undo()
+    with CountingExecutor() as executor:
+        assert run_sweep(path, ALPHAS, PRESSURES, FORCES, executor) == (0, 16)
+    assert path.read_bytes() == reference.read_bytes()
+
+
+def test_file_size_limit_in_a_real_process(reference, tmp_path):
+    """A real write failure (RLIMIT_FSIZE: writes past it fail with EFBIG, as on a full disk) in the
+    installed command: exit 1, one line, no traceback, complete rows only, within the limit; the
+    rerun without the limit resumes and ends with the reference's bytes."""
+    import resource
+    import subprocess
+    import sys
+
+    lines = reference.read_bytes().splitlines(keepends=True)
+    limit = sum(map(len, lines[:7])) + 10
+
+    def small_files():
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+
+    path = tmp_path / "limited.csv"
+    proc = subprocess.run([sys.executable, "-m", "pocket.cli", "sweep", *ARGV, "--out", str(path), "--workers", "2"],
+                          capture_output=True, text=True, preexec_fn=small_files)
+    assert proc.returncode == 1 and proc.stderr.count("\n") == 1 and "File too large" in proc.stderr, proc.stderr
+    kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
+    assert len(kept) >= 2 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
+    assert path.stat().st_size <= limit and sorted(p.name for p in tmp_path.iterdir()) == ["limited.csv"]
+    assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 0
+    assert path.read_bytes() == reference.read_bytes()
+
+
+def test_one_writer_at_a_time(tmp_path, capsys):
+    """While another process holds the file's lock (as a running sweep does), a sweep on it is
+    refused: exit 2, one line, the file unchanged."""
+    import subprocess
+    import sys
+
+    pytest.importorskip("fcntl")
+    path = tmp_path / "busy.csv"
+    path.write_text(",".join(COLUMNS) + "\n")
+    holder = subprocess.Popen([sys.executable, "-c", "import fcntl, sys; f = open(sys.argv[1], 'r+b'); "
+                               "fcntl.lockf(f.fileno(), fcntl.LOCK_EX); print('locked', flush=True); sys.stdin.read()",
+                               str(path)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    try:
+        assert holder.stdout.readline() == "locked\n"
+        assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path)]) == 2
+    finally:
+        holder.communicate("")
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "another pocket sweep is writing this file" in err, err
+    assert path.read_text() == ",".join(COLUMNS) + "\n"
+
+
+@pytest.mark.parametrize(
+    "extra, message",
+    [
+        (["--workers", "0"], "workers = 0, but it must lie in [1, "),
+        (["--workers", "100000"], "workers = 100000, but it must lie in [1, "),
+        (["--rtol", "2"], "--rtol = 2.0, but it must lie in [1e-14, 0.0001]"),
+        (["--solver", "fem", "--rtol", "1e-8"], "--rtol does not apply to solver fem"),
+        (["--force", *map(str, range(200_000))], "the grid has 200000 points, but a sweep takes at most 100000"),
+    ],
+)
+def test_bad_sweep_options(tmp_path, capsys, extra, message):
+    """Checked before any work: exit 2, one line, no file."""
+    path = tmp_path / "s.csv"
+    assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path), *extra]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and message in err, err
+    assert not path.exists()
+
+
+def test_warnings_go_to_the_message_column(tmp_path, monkeypatch):
+    """An ok point's message is its state's warnings, joined by '; ' on one line."""
+    import dataclasses
+    import types
+
+    import pocket.apps.sweep as sweep
+
+    def compress(*args, **options):
+        return dataclasses.replace(shooting.compress(*args, **options), warnings=("first\nnote", "second"))
+
+    monkeypatch.setattr(sweep, "get_solver", lambda name: types.SimpleNamespace(compress=compress))
+    path = tmp_path / "w.csv"
+    with CountingExecutor() as executor:
+        run_sweep(path, [0.3], [0.3], [0.1], executor)
+    (row,) = csv.DictReader(path.open())
+    assert row["status"] == "ok" and row["message"] == "first note; second"
+
+
+def test_a_bad_scheduler_address_is_input(tmp_path, capsys):
+    """A malformed dask address: exit 2, one line naming it, no file."""
+    pytest.importorskip("dask.distributed")
+    path = tmp_path / "s.csv"
+    assert main(["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--out", str(path),
+                 "--scheduler", "not an address"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--scheduler not an address: cannot connect" in err, err
+    assert not path.exists()

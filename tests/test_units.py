@@ -47,3 +47,21 @@ def test_positive():
     assert positive("sheet.thickness", "0.25 mm", "length") == pytest.approx(2.5e-4, rel=1e-15)
     with pytest.raises(InputError, match=r"sheet.thickness = '-0.25 mm', but it must be > 0"):
         positive("sheet.thickness", "-0.25 mm", "length")
+
+
+@pytest.mark.parametrize(
+    "value, given, kind, text",
+    [
+        (0.0098787, "20 mm", "length", "9.8787 mm"),
+        (0.01, "2 cm", "length", "1 cm"),
+        (7e-6, "2 mL", "volume", "7 ml"),
+        (4812.75, "4.8 kPa", "pressure", "4.81275 kPa"),
+        (0.01, 0.02, "length", "0.01 m"),  # the user wrote plain SI
+        (0.01, "4 bananas", "length", "0.01 m"),  # nothing to copy
+    ],
+)
+def test_written_like(value, given, kind, text):
+    """Exact: an SI value written in the unit the user wrote (prefixes are powers of ten)."""
+    from pocket.core.units import written_like
+
+    assert written_like(value, given, kind) == text

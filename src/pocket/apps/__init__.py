@@ -3,7 +3,8 @@
 ``cases`` (case files), ``physical`` (a case resolved to the dimensionless
 model and back to SI), ``inverse`` (the load that gives a target value),
 ``casefile`` (``pocket run``), ``design`` (soft buttons), ``sense`` (force from
-pressure), ``sweep`` (parameter grids on any executor), ``slopes``, ``vtkfiles``
-(ParaView output), ``folders`` (outputs written whole or not at all),
-``provenance`` and ``solvers`` (the solvers by name).
+pressure), ``sweep`` (parameter grids on any executor) with ``sweepfile`` (its
+CSV journal) and ``workers`` (local processes that die with their parent),
+``slopes``, ``vtkfiles`` (ParaView output), ``folders`` (outputs checked first,
+written whole or not at all), ``provenance`` and ``solvers`` (the solvers by name).
 """

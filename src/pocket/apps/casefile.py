@@ -2,12 +2,15 @@
 
 The case (``pocket.apps.cases``) is resolved to the dimensionless model
 (``pocket.apps.physical``), inflated and compressed at each load by its solver, and
-written as ``DIR/<stem>.json`` (the case in SI, the inflated state, the
-compressed states, and the provenance: pocket's and its libraries' versions)
-and ``DIR/<stem>.csv`` (one row per load). Each row holds
-the SI values (``force_N``, ``pressure_Pa``, ``pressure_rise_Pa``,
-``contact_area_m2``, ``contact_radius_m``, ``height_m``, ``travel_m`` = H0 - H,
-``volume_m3``) followed by the dimensionless keys of ``CompressedState.KEYS``.
+written as ``DIR/<stem>.json`` (the case: SI values and, under ``given``, every
+input as the file wrote it; the inflated state, the compressed states, and the
+provenance: pocket's and its libraries' versions) and ``DIR/<stem>.csv`` (one row
+per load), both or neither. Each row holds the load as written (``load``: ``"0.2 N"``),
+the SI values (``force_N``, for a force load the force as parsed; ``pressure_Pa``,
+``pressure_rise_Pa``, ``contact_area_m2``, ``contact_radius_m``, ``height_m``,
+``travel_m`` = H0 - H, ``volume_m3``), the dimensionless keys of
+``CompressedState.KEYS`` (the inputs as asked, not a solver's echo) and the state's
+``warnings`` (a list in JSON, joined by "; " in CSV).
 """
 
 from __future__ import annotations
@@ -18,34 +21,34 @@ import json
 import pathlib
 
 from .cases import Case
-from .folders import write_whole
+from .folders import write_files
 from .physical import compressed_row, forces, inflated_row, resolve
 from .provenance import environment
 
 __all__ = ["solve", "write"]
 
 
-def solve(case: Case) -> dict:
+def solve(case: Case, progress=None) -> dict:
     """The case solved: {"case": SI inputs, "inflated": row, "states": [rows], "provenance": {...}}
-    (JSON-ready)."""
+    (JSON-ready). ``progress(done, total)``, if given, goes to the solver's compression curve."""
     pocket = resolve(case)
     loads = forces(pocket)
+    extra = {} if progress is None else {"progress": progress}
     states = pocket.solver().compression_curve(pocket.alpha, pocket.pressure_initial, loads,
-                                               **pocket.options())
+                                               **pocket.options(), **extra)
     return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
-            "states": [compressed_row(pocket, s) for s in states], "provenance": environment()}
+            "states": [compressed_row(pocket, s, i) for i, s in enumerate(states)], "provenance": environment()}
 
 
 def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
-    """Write ``stem.json`` and ``stem.csv`` into ``directory``; returns their paths."""
+    """Write ``stem.json`` and ``stem.csv`` into ``directory``, both or neither; returns their paths."""
     directory = pathlib.Path(directory)
-    directory.mkdir(parents=True, exist_ok=True)
     json_path, csv_path = directory / f"{stem}.json", directory / f"{stem}.csv"
     fields = list(dict.fromkeys(k for row in result["states"] for k in row))
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, fields, restval="")
     writer.writeheader()
-    writer.writerows(result["states"])
-    write_whole(json_path, json.dumps(result, indent=2) + "\n")
-    write_whole(csv_path, text.getvalue())
+    writer.writerows({k: "; ".join(v) if isinstance(v, list) else v for k, v in row.items()}
+                     for row in result["states"])
+    write_files({json_path: json.dumps(result, indent=2) + "\n", csv_path: text.getvalue()})
     return json_path, csv_path

@@ -17,7 +17,8 @@
     forces = ["0 N", "0.5 N", "1 N"]     # plate forces F, or heights = ["9 mm", "8 mm"] (plate heights H)
     [solver]                             # optional, default shooting
     name = "shooting"                    # or "fem" or "analytical", with that solver's options:
-                                         # rtol (shooting); elements, mesh, order, penalty, augmented, tol (fem)
+                                         # rtol (shooting); elements, mesh, order, penalty, augmented, tol (fem);
+                                         # a mesh file name is relative to the case file's folder
 
 The solver options and their checks come from the solver's record
 (``pocket.core.solver``), the same that the command line's flags come from.
@@ -45,7 +46,7 @@ import pathlib
 import tomllib
 
 from pocket.core.errors import InputError
-from pocket.core.inputs import check_alpha
+from pocket.core.inputs import check_alpha, quote
 from pocket.core.units import positive, quantity
 
 from .solvers import SOLVERS, record
@@ -114,7 +115,7 @@ def _table(data, section, where) -> dict:
         raise InputError(f"{where}: missing key '{section}'")
     table = data[section]
     if not isinstance(table, dict):
-        raise InputError(f"{where}: '{section}' must be a table ([{section}]), got {table!r}")
+        raise InputError(f"{where}: '{section}' must be a table ([{section}]), got {quote(table)}")
     return table
 
 
@@ -143,7 +144,7 @@ def _sheet(table, where, given) -> tuple[float, float, float]:
         c2 = quantity("sheet.c2", _need(table, "c2", "sheet", where), "pressure")
         given.update({"sheet.c1": table["c1"], "sheet.c2": table["c2"]})
         if not c2 / c1 > -1.0:
-            raise InputError(f"sheet.c2 = {table['c2']!r}, but C2/C1 must be > -1")
+            raise InputError(f"sheet.c2 = {quote(table['c2'])}, but C2/C1 must be > -1")
         return thickness, c1, c2
     if "modulus" not in table and "alpha" not in table:
         raise InputError(f"{where}: missing key 'sheet.c1' (with 'sheet.c2') or 'sheet.modulus' (with 'sheet.alpha')")
@@ -151,7 +152,7 @@ def _sheet(table, where, given) -> tuple[float, float, float]:
     alpha = _need(table, "alpha", "sheet", where)
     given.update({"sheet.modulus": table["modulus"], "sheet.alpha": alpha})
     if isinstance(alpha, str):
-        raise InputError(f"sheet.alpha = {alpha!r} is not a number (C2/C1 has no unit)")
+        raise InputError(f"sheet.alpha = {quote(alpha)} is not a number (C2/C1 has no unit)")
     try:
         alpha = check_alpha(alpha)
     except InputError as err:
@@ -165,7 +166,7 @@ def _loads(table, where, given) -> tuple[str, tuple[float, ...]]:
     values = table[kind]
     key = f"loads.{kind}"
     if not isinstance(values, list) or not values:
-        raise InputError(f"{key} = {values!r}, but it must be a non-empty list")
+        raise InputError(f"{key} = {quote(values)}, but it must be a non-empty list")
     if len(values) > MAX_LOADS:
         raise InputError(f"{key} has {len(values)} values, but a case takes at most {MAX_LOADS}")
     unit = "force" if kind == "forces" else "length"
@@ -174,42 +175,51 @@ def _loads(table, where, given) -> tuple[str, tuple[float, ...]]:
         si = quantity(f"{key}[{i}]", value, unit)
         if si < 0.0 or (kind == "heights" and si == 0.0):
             bound = ">= 0 (the plate pushes)" if kind == "forces" else "> 0 (above the clamp plane)"
-            raise InputError(f"{key}[{i}] = {value!r}, but it must be {bound}")
+            raise InputError(f"{key}[{i}] = {quote(value)}, but it must be {bound}")
         given[f"{key}[{i}]"] = value
         out.append(si)
     return kind, tuple(out)
 
 
-def _solver(table, where) -> tuple[str, tuple]:
+def _solver(table, base, given) -> tuple[str, tuple]:
+    """The solver's name and its options checked; a relative file name (a mesh) is relative to ``base``."""
     name = table.get("name", "shooting")
     if not isinstance(name, str) or name not in SOLVERS:
-        raise InputError(f"solver.name = {name!r}, but it must be one of {', '.join(SOLVERS)}")
-    given = {k: v for k, v in table.items() if k != "name"}
-    options = record(name).checked(given, "compress", spell=lambda key: f"solver.{key}")
+        raise InputError(f"solver.name = {quote(name)}, but it must be one of {', '.join(SOLVERS)}")
+    solver = record(name)
+    asked = {k: v for k, v in table.items() if k != "name"}
+    given.update({f"solver.{k}": v for k, v in table.items()})
+    for key, value in asked.items():
+        option = solver.option(key)
+        if option is not None and option.kind == "path" and isinstance(value, str) and base is not None:
+            asked[key] = str(pathlib.Path(base) / value)  # an absolute value stays as it is
+    options = solver.checked(asked, "compress", spell=lambda key: f"solver.{key}")
     return name, tuple(options.items())
 
 
 def _text(data, key, where) -> str:
     value = data.get(key, "")
     if not isinstance(value, str):
-        raise InputError(f"{where}: {key} = {value!r}, but it must be a string")
+        raise InputError(f"{where}: {key} = {quote(value)}, but it must be a string")
     return value
 
 
 def _tags(data, where) -> tuple[str, ...]:
     value = data.get("tags", [])
     if not isinstance(value, list) or not all(isinstance(t, str) for t in value):
-        raise InputError(f"{where}: tags = {value!r}, but it must be a list of strings")
+        raise InputError(f"{where}: tags = {quote(value)}, but it must be a list of strings")
     return tuple(value)
 
 
-def parse(data: dict, where: str = "case", *, require_loads: bool = True) -> Case:
+def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=None) -> Case:
     """A ``Case`` from the TOML table ``data``; ``where`` names it in error messages.
 
     Without ``require_loads`` the ``[loads]`` table is optional (a pocket without loads).
+    ``base`` is the folder that relative file names (a mesh) are relative to (the case
+    file's; by default the current folder).
     """
     if not isinstance(data, dict):
-        raise InputError(f"{where}: a case must be a table, got {data!r}")
+        raise InputError(f"{where}: a case must be a table, got {quote(data)}")
     for section, value in data.items():
         if section not in _SECTIONS:
             raise InputError(f"{where}: unknown key '{section}' (known: {', '.join(_SECTIONS)})")
@@ -231,7 +241,7 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True) -> Cas
     load_kind, loads = "", ()
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)
-    solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, where)
+    solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
     return Case(name=name, thickness=thickness, c1=c1, c2=c2, radius=radius, initial=(kind, value),
                 load_kind=load_kind, loads=loads, solver=solver, options=options, label=_text(data, "label", where),
                 tags=_tags(data, where), given=tuple(given.items()))
@@ -262,8 +272,8 @@ def read_toml(path) -> dict:
 
 
 def load(path, *, require_loads: bool = True) -> Case:
-    """Read and check the case file ``path``."""
-    return parse(read_toml(path), where=str(path), require_loads=require_loads)
+    """Read and check the case file ``path`` (file names in it are relative to its folder)."""
+    return parse(read_toml(path), where=str(path), require_loads=require_loads, base=pathlib.Path(path).parent)
 
 
 #: Table 1 of the paper: sample number -> sheet thickness

@@ -41,7 +41,7 @@ import math
 import numpy as np
 
 from pocket.core.errors import InputError, OutOfRangeError
-from pocket.core.inputs import check_alpha
+from pocket.core.inputs import check_alpha, quote
 from pocket.core.units import positive
 
 from .inverse import force_where, pressure_for_height, range_end
@@ -106,9 +106,14 @@ def _check(radius, height, modulus, alpha, force, height_ratio):
 def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="shooting", points=20,
            **options) -> Design:
     """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units."""
+    given_height = height
     radius, height, modulus, force, alpha, ratio = _check(radius, height, modulus, alpha, force, height_ratio)
     model = get_solver(solver)
-    phat_i = pressure_for_height(model, alpha, height / radius, **options)
+    try:
+        phat_i = pressure_for_height(model, alpha, height / radius, **options)
+    except OutOfRangeError as err:
+        raise OutOfRangeError(f"height = {quote(given_height)}: no inflated state of the model's first branch is "
+                              f"that high ({err})") from None
     fhat = force_where(model, alpha, phat_i, "height_ratio", ratio, increasing=False, **options)
     p_i = force / (math.pi * radius**2 * fhat)
     thickness = p_i * radius / (modulus * phat_i)

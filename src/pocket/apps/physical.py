@@ -14,10 +14,12 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from pocket.core.errors import OutOfRangeError
+from pocket.core.errors import InputError, OutOfRangeError, PocketError
+from pocket.core.inputs import MAGNITUDES, quote
+from pocket.core.units import written_like
 
 from .cases import Case
-from .inverse import force_where, pressure_for_height
+from .inverse import force_where, pressure_for_height, range_end
 from .solvers import get_solver, record
 
 __all__ = ["Pocket", "resolve", "forces", "inflated_row", "compressed_row"]
@@ -62,47 +64,115 @@ class Pocket:
         return {k: v for k, v in self.case.options if step in solver.option(k).steps}
 
 
+def _inside(key: str, given: str, name: str, value: float) -> float:
+    """``value``, the dimensionless form of the case's ``key``, if the model takes it (0, or a magnitude
+    within ``pocket.core.inputs.MAGNITUDES``); else an InputError quoting the case's value."""
+    low, high = MAGNITUDES
+    if value != 0.0 and not low <= abs(value) <= high:
+        raise InputError(f"{key} = {given} gives {name} = {value:.3g}, outside the magnitudes of the model's "
+                         f"dimensionless inputs ({low:g} to {high:g})")
+    return value
+
+
 def resolve(case: Case) -> Pocket:
-    """Solve for Phat_I from the case's initial state (pressure, height or volume)."""
+    """Solve for Phat_I from the case's initial state (pressure, height or volume).
+
+    A height or volume the model's first branch does not reach is an ``OutOfRangeError``
+    quoting the value as the case gives it (``Case.as_given``).
+    """
     kind, value = case.initial
     unit = Pocket(case, 1.0)  # Phat_I = 1: its pressure_initial_Pa is E T / R
     solver, options = unit.solver(), unit.options("inflate")
+    given = quote(case.as_given(f"initial.{kind}"))
     if kind == "pressure":
-        return Pocket(case, value / unit.pressure_scale_Pa)
+        return Pocket(case, _inside("initial.pressure", given, "Phat_I = P_I R / (E T)",
+                                    value / unit.pressure_scale_Pa))
     if kind == "height":
-        return Pocket(case, pressure_for_height(solver, case.alpha, value / case.radius, **options))
+        try:
+            return Pocket(case, pressure_for_height(solver, case.alpha, value / case.radius, **options))
+        except OutOfRangeError as err:
+            raise OutOfRangeError(f"initial.height = {given}: no inflated state of the model's first branch is "
+                                  f"that high ({err})") from None
     volume = value / case.radius**3
     phat = solver.inflate_volume(case.alpha, volume, **options).pressure
     reached = solver.inflate(case.alpha, phat, **options).volume
     if abs(reached - volume) > 1e-6 * volume:  # the two solves agree to ~1e-10 on the first branch
-        raise OutOfRangeError(f"initial.volume = {value:.6g} m^3 lies past the pressure maximum of "
-                              "the first branch, where the pocket cannot be held at fixed pressure")
+        raise OutOfRangeError(f"initial.volume = {given} lies past the pressure maximum of the first branch, "
+                              "where the pocket cannot be held at fixed pressure")
     return Pocket(case, phat)
 
 
+def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
+    """Why plate height ``index`` (below the inflated height ``top``, m) has no state: it is below the
+    lowest plate height the model reaches, said in the case's own unit."""
+    case = pocket.case
+    given = case.as_given(f"loads.heights[{index}]")
+    lowest = ""
+    try:
+        end = range_end(pocket.solver(), pocket.alpha, pocket.pressure_initial, **pocket.options())
+        low = pocket.solver().compress(pocket.alpha, pocket.pressure_initial, end, **pocket.options()).height
+        lowest = f" ({written_like(low * case.radius, given, 'length')}; the inflated height is " \
+                 f"{written_like(top, given, 'length')})"
+    except PocketError:  # the reason stands without the number
+        pass
+    return OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is below the lowest plate height the model "
+                           f"reaches{lowest}: the free part of the sheet would fold onto the clamp plane first")
+
+
 def forces(pocket: Pocket) -> list[float]:
-    """The case's loads as forces Fhat (plate heights solved for their force)."""
+    """The case's loads as forces Fhat (plate heights solved for their force).
+
+    A plate height above the inflated pocket, or below the lowest the model reaches, is an
+    ``OutOfRangeError`` quoting the height as the case gives it, with the bound in its unit.
+    """
     case = pocket.case
     if case.load_kind == "forces":
-        return [f / pocket.force_scale_N for f in case.loads]
+        return [_inside(f"loads.forces[{i}]", quote(case.as_given(f"loads.forces[{i}]")), "Fhat = F / (P_I pi R^2)",
+                        f / pocket.force_scale_N) for i, f in enumerate(case.loads)]
     solver, options = pocket.solver(), pocket.options()
-    return [force_where(solver, pocket.alpha, pocket.pressure_initial, "height", h / case.radius,
-                        increasing=False, **options) for h in case.loads]
+    top = solver.inflate(pocket.alpha, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
+    out = []
+    for index, height in enumerate(case.loads):
+        if height > top:
+            given = case.as_given(f"loads.heights[{index}]")
+            raise OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket "
+                                  f"(H0 = {written_like(top, given, 'length')}): the plate would not touch it")
+        try:
+            out.append(force_where(solver, pocket.alpha, pocket.pressure_initial, "height", height / case.radius,
+                                   increasing=False, **options))
+        except OutOfRangeError:
+            raise _height_error(pocket, index, top) from None
+    return out
 
 
 def inflated_row(pocket: Pocket, state) -> dict:
-    """The inflated state in SI units, then its dimensionless keys."""
+    """The inflated state in SI units, then its dimensionless keys and its ``warnings`` (a list)."""
     r = pocket.case.radius
     return {"pressure_Pa": state.pressure * pocket.pressure_scale_Pa, "height_m": state.height * r,
-            "volume_m3": state.volume * r**3, **state.scalars()}
+            "volume_m3": state.volume * r**3, **state.scalars(), "warnings": list(state.warnings)}
 
 
-def compressed_row(pocket: Pocket, state) -> dict:
-    """A compressed state in SI units, then its dimensionless keys (``CompressedState.KEYS``)."""
-    r, scale = pocket.case.radius, pocket.pressure_scale_Pa
-    return {"force_N": state.force * pocket.force_scale_N, "pressure_Pa": state.pressure * scale,
-            "pressure_rise_Pa": (state.pressure - state.pressure_initial) * scale,
-            "contact_area_m2": state.contact_area * math.pi * r**2,
-            "contact_radius_m": state.contact_radius * r, "height_m": state.height * r,
-            "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
-            **state.scalars()}
+def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
+    """A compressed state in SI units, then its dimensionless keys (``CompressedState.KEYS``) and its
+    ``warnings`` (a list).
+
+    The inputs are the ones asked, never a solver's echo of them: ``alpha`` and
+    ``pressure_initial`` are the pocket's. With ``load``, the state of the case's load of that
+    index: the row starts with the load as the case gives it (``"0.2 N"``, ``"9 mm"``), and a
+    force load's ``force_N`` is the force as parsed and its ``force`` the Fhat given to the solver
+    (``forces``), not values recomputed from the state.
+    """
+    case, r, scale = pocket.case, pocket.case.radius, pocket.pressure_scale_Pa
+    asked = {"alpha": pocket.alpha, "pressure_initial": pocket.pressure_initial}
+    row = {"force_N": state.force * pocket.force_scale_N}
+    if load is not None:
+        row = {"load": case.as_given(f"loads.{case.load_kind}[{load}]"), **row}
+        if case.load_kind == "forces":
+            row["force_N"], asked["force"] = case.loads[load], case.loads[load] / pocket.force_scale_N
+    row.update({"pressure_Pa": state.pressure * scale,
+                "pressure_rise_Pa": (state.pressure - pocket.pressure_initial) * scale,
+                "contact_area_m2": state.contact_area * math.pi * r**2,
+                "contact_radius_m": state.contact_radius * r, "height_m": state.height * r,
+                "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
+                **state.scalars(), **asked, "warnings": list(state.warnings)})
+    return row

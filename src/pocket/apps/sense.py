@@ -6,7 +6,8 @@ model's first branch, so the force is the root Fhat of q(Fhat) = q_measured
 (``pocket.apps.inverse.force_where``), solved on the forward solver to its
 resolution: no fitted curve and no extrapolation. A pressure below P_I, or
 above what the model reaches before the free part of the sheet meets the
-clamp plane, is an OutOfRangeError.
+clamp plane, is an OutOfRangeError quoting the pressure as given and the bound
+in its unit.
 
 With F = Fhat P_I pi R^2 and P = q P_I, the sensitivity is
 dF/dP = pi R^2 / (dq/dFhat) (units m^2 = N/Pa), dq/dFhat by ``pocket.apps.slopes``.
@@ -23,15 +24,18 @@ import math
 
 import numpy as np
 
-from pocket.core.errors import InputError
-from pocket.core.inputs import check_finite
-from pocket.core.units import quantity
+from pocket.core.errors import InputError, OutOfRangeError, PocketError
+from pocket.core.inputs import check_count, check_finite, quote
+from pocket.core.units import quantity, written_like
 
-from .inverse import force_where
+from .inverse import force_where, range_end
 from .physical import Pocket
 from .slopes import curve_with_slopes
 
-__all__ = ["Reading", "sense", "calibration"]
+__all__ = ["Reading", "sense", "calibration", "MAX_POINTS"]
+
+#: most rows of a calibration table (a bound on the work it asks for)
+MAX_POINTS = 10_000
 
 
 @dataclasses.dataclass(frozen=True)
@@ -60,23 +64,49 @@ def _readings(pocket: Pocket, fhats) -> list[Reading]:
             for s, slope in zip(states, slopes["pressure_ratio"], strict=True)]
 
 
+def _beyond(pocket: Pocket, what: str, given) -> OutOfRangeError:
+    """A measured pressure past the model's range, with the highest pressure it reaches (in the unit
+    of ``given``) where the end of the range can be located."""
+    top = ""
+    try:
+        solver, options = pocket.solver(), pocket.options()
+        end = range_end(solver, pocket.alpha, pocket.pressure_initial, **options)
+        q = solver.compress(pocket.alpha, pocket.pressure_initial, end, **options).pressure_ratio
+        top = f" (it reaches {written_like(q * pocket.pressure_initial_Pa, given, 'pressure')}, P/P_I = {q:.6g})"
+    except PocketError:  # the reason stands without the number
+        pass
+    return OutOfRangeError(f"{what} is beyond the model's range{top}: the free part of the sheet would fold onto "
+                           "the clamp plane first")
+
+
 def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
-    """The force at the measured ``pressure`` (Pa, or a string with unit) or pressure ``ratio`` P/P_I."""
+    """The force at the measured ``pressure`` (Pa, or a string with unit) or pressure ``ratio`` P/P_I.
+
+    A pressure below P_I, or past the model's range, is an ``OutOfRangeError`` quoting it as given.
+    """
     if (pressure is None) == (ratio is None):
         raise InputError("give either a pressure or a pressure ratio, not both or neither")
     if pressure is not None:
         q = quantity("pressure", pressure, "pressure") / pocket.pressure_initial_Pa
+        what = f"pressure = {quote(pressure)}"
     else:
         q = check_finite("ratio", ratio)
-    fhat = force_where(pocket.solver(), pocket.alpha, pocket.pressure_initial, "pressure_ratio", q,
-                       increasing=True, **pocket.options())
+        what = f"pressure ratio = {quote(ratio)}"
+    if q < 1.0:
+        raise OutOfRangeError(f"{what} is below its value with no force (P_I = "
+                              f"{written_like(pocket.pressure_initial_Pa, pressure, 'pressure')}, ratio 1): "
+                              "a plate can only push")
+    try:
+        fhat = force_where(pocket.solver(), pocket.alpha, pocket.pressure_initial, "pressure_ratio", q,
+                           increasing=True, **pocket.options())
+    except OutOfRangeError:
+        raise _beyond(pocket, what, pressure) from None
     return _readings(pocket, [fhat])[0]
 
 
 def calibration(pocket: Pocket, max_force: float, points: int = 21) -> list[Reading]:
     """Readings at ``points`` forces evenly spaced from 0 to ``max_force`` (N)."""
-    if points < 2:
-        raise InputError(f"points = {points}, but a table needs >= 2")
+    points = check_count("points", points, 2, MAX_POINTS)
     if not (math.isfinite(max_force) and max_force > 0.0):
         raise InputError(f"max_force = {max_force!r}, but it must be > 0")
     return _readings(pocket, np.linspace(0.0, max_force / pocket.force_scale_N, points))

@@ -1,36 +1,57 @@
 """What every ``pocket`` subcommand shares: the parser class, number parsing, solver flags, exit codes.
 
-Exit status: 0 success; 1 a solver failed (the message says where) or output
-could not be written; 2 bad input, or a state outside the model (past the end
-of its range, above a pressure maximum). Errors are one line on stderr.
+Exit status: 0 success; 1 a solver failed (the message says where), output
+could not be written, or an internal error (a bug); 2 bad input, or a state
+outside the model (past the end of its range, above a pressure maximum); 130
+interrupted. Errors are one line on stderr.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import sys
 from fractions import Fraction
 
 from pocket.apps.solvers import all_options, solver_options
+from pocket.core.inputs import quote
 
-__all__ = ["EXIT_CODES", "Parser", "number", "add_solver_flags", "solver_flags", "flag"]
+__all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "add_solver_flags", "solver_flags", "flag",
+           "progress_bar", "warn", "report"]
 
-EXIT_CODES = ("exit status: 0 success; 1 a solver failed (the message says where) or output could not be "
-              "written; 2 bad input or a state outside the model (one line on stderr, nothing written)")
+EXIT_CODES = ("exit status: 0 success; 1 a solver failed (the message says where), output could not be "
+              "written, or an internal error (a bug); 2 bad input or a state outside the model (one line on "
+              "stderr, nothing written); 130 interrupted (Ctrl-C)")
+
+
+class HelpFormatter(argparse.HelpFormatter):
+    """Each option's help ends with its default, unless it names it already or has none to name."""
+
+    def _get_help_string(self, action):
+        text = action.help or ""
+        if action.default in (None, False, argparse.SUPPRESS) or "default" in text or action.nargs == 0:
+            return text
+        return f"{text} (default: %(default)s)"
 
 
 class Parser(argparse.ArgumentParser):
-    """argparse with one-line errors and exit status 2 (argparse would print the usage too)."""
+    """argparse with one-line errors and exit status 2 (argparse would print the usage too), and
+    help that shows the defaults (``HelpFormatter``)."""
+
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("formatter_class", HelpFormatter)
+        super().__init__(*args, **kwargs)
 
     def error(self, message):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
 def number(text: str) -> float:
-    """A float or a fraction such as 47/160."""
+    """A float or a fraction such as 47/160 (one too large for a double is no number)."""
     try:
         return float(Fraction(text)) if "/" in text else float(text)
-    except (ValueError, ZeroDivisionError):
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    except (ValueError, ZeroDivisionError, OverflowError):
+        raise argparse.ArgumentTypeError(f"{quote(text)} is not a number") from None
 
 
 def flag(name: str) -> str:
@@ -39,6 +60,13 @@ def flag(name: str) -> str:
 
 
 _TYPES = {"float": number, "int": int, "path": str}
+
+
+def _shown(value) -> str:
+    """A record's default as the help shows it (``1e-10``, ``1000``, ``true``)."""
+    if isinstance(value, bool):
+        return str(value).lower()
+    return f"{value:g}" if isinstance(value, float) else str(value)
 
 
 def add_solver_flags(parser, step: str) -> None:
@@ -51,7 +79,9 @@ def add_solver_flags(parser, step: str) -> None:
         solver, option = owners[0]
         if solver not in groups:
             groups[solver] = parser.add_argument_group(f"{solver} options (with --solver {solver})")
-        text = f"{option.help}" + ("" if len(owners) == 1 else f" (also {', '.join(s for s, _ in owners[1:])})")
+        text = option.help + ("" if len(owners) == 1 else f" (also {', '.join(s for s, _ in owners[1:])})")
+        if option.default is not None and "default" not in text:  # argparse's default stays None: "not given"
+            text += f" (default: {_shown(option.default)})"
         if option.kind == "bool":
             groups[solver].add_argument(flag(name), action=argparse.BooleanOptionalAction, default=None,
                                         help=text)
@@ -64,3 +94,39 @@ def solver_flags(args, solver: str, step: str) -> dict:
     """The solver options given on the command line, checked against ``solver`` for ``step``."""
     given = {name: getattr(args, name) for name in all_options() if getattr(args, name, None) is not None}
     return solver_options(solver, given, step, flag)
+
+
+@contextlib.contextmanager
+def progress_bar(what: str, unit: str):
+    """A ``progress(done, total)`` callback drawing a bar (tqdm) on stderr if it is a terminal, else None."""
+    if not sys.stderr.isatty():
+        yield None
+        return
+    from tqdm import tqdm
+
+    with tqdm(desc=what, unit=unit, file=sys.stderr, leave=False, dynamic_ncols=True) as bar:
+
+        def progress(done: int, total: int) -> None:
+            bar.total = total
+            bar.update(done - bar.n)
+            if done == total:
+                bar.refresh()  # the last count is shown even if it came within tqdm's refresh interval
+
+        yield progress
+
+
+def report(state) -> dict:
+    """A state as JSON and tables show it: its scalars, then its ``warnings`` (a list)."""
+    return {**state.scalars(), "warnings": list(state.warnings)}
+
+
+def warn(states) -> None:
+    """Print the warnings of ``states`` (and of the inflated states they start from) on stderr, each
+    once, as ``pocket: warning: ...`` lines."""
+    seen = []
+    for state in states:
+        for text in (*getattr(getattr(state, "inflated", None), "warnings", ()), *state.warnings):
+            if text not in seen:
+                seen.append(text)
+    for text in seen:
+        print(f"pocket: warning: {text}", file=sys.stderr)

@@ -5,7 +5,9 @@ which adds its parser with ``set_defaults(handler=f)``, ``f(args) -> int`` the
 exit status. They share the error handling here: a ``PocketError`` is one line
 on stderr, status 1 for a solver failure (``ConvergenceError``) or output that
 cannot be written (``OutputError``), 2 for bad input or a state outside the
-model (``pocket.cli.common.EXIT_CODES``).
+model (``pocket.cli.common.EXIT_CODES``). Any other exception is a bug in pocket:
+one line (``pocket: internal error: ...``) and status 1, or its traceback when
+the environment sets ``POCKET_TRACEBACK``.
 """
 
 from __future__ import annotations
@@ -38,18 +40,31 @@ def _parser() -> Parser:
 
 
 def main(argv=None) -> int:
-    """Run the command line; returns the exit status.
+    """Run the command line; returns the exit status (also for ``--help``, ``--version`` and usage
+    errors, which argparse ends with SystemExit).
 
     Output cut short by the reader (``pocket ... | head``) ends quietly with status 1
     (Python's documented recipe for SIGPIPE), an interrupt with one line and 130.
     """
     try:
-        args = _parser().parse_args(argv)
+        try:
+            args = _parser().parse_args(argv)
+        except SystemExit as stop:
+            sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's last flush
+            return stop.code if isinstance(stop.code, int) else 2
         try:
             status = args.handler(args)
         except PocketError as err:
             print(f"pocket: error: {err}", file=sys.stderr)
             return exit_status(err)
+        except (BrokenPipeError, KeyboardInterrupt):
+            raise
+        except Exception as err:  # a bug: one line, unless its traceback is asked for
+            if os.environ.get("POCKET_TRACEBACK"):
+                raise
+            print(f"pocket: internal error: {type(err).__name__}: {' '.join(str(err).split())} (a bug in pocket: "
+                  "please report it with the command; POCKET_TRACEBACK=1 shows where)", file=sys.stderr)
+            return 1
         sys.stdout.flush()
         return status
     except BrokenPipeError:

@@ -3,16 +3,19 @@
 from __future__ import annotations
 
 import pathlib
+import sys
 
 from pocket.apps.casefile import solve, write
 from pocket.apps.cases import Case, load, sample
+from pocket.apps.folders import check_output_dir, check_output_file
 from pocket.core.errors import InputError
 
-from .common import EXIT_CODES
+from .common import EXIT_CODES, progress_bar
 
 __all__ = ["register", "add_case_arguments", "case_from_args"]
 
-_SHOWN = ("force_N", "pressure_Pa", "contact_area_m2", "height_m", "force", "pressure_ratio", "height_ratio")
+_SHOWN = ("load", "force_N", "pressure_Pa", "contact_area_m2", "height_m", "force", "pressure_ratio",
+          "height_ratio")
 
 
 def add_case_arguments(parser) -> None:
@@ -33,14 +36,20 @@ def case_from_args(args) -> tuple[Case, str]:
 
 def _main(args) -> int:
     case, stem = case_from_args(args)
-    result = solve(case)
+    check_output_dir(args.out, "--out")
+    for suffix in (".json", ".csv"):
+        check_output_file(pathlib.Path(args.out) / f"{stem}{suffix}", "--out")
+    with progress_bar(case.name, " loads") as progress:
+        result = solve(case, progress)
     paths = write(result, args.out, stem)
+    for text in dict.fromkeys(w for row in (result["inflated"], *result["states"]) for w in row["warnings"]):
+        print(f"pocket: warning: {text}", file=sys.stderr)
     rows = result["states"]
     print(f"# {case.name}: solver {case.solver}, Phat_I = {rows[0]['pressure_initial']:.10g}, "
           f"H0 = {result['inflated']['height_m']:.6g} m")
     print("  ".join(f"{k:>15}" for k in _SHOWN))
     for row in rows:
-        print("  ".join(f"{row[k]:>15.8g}" for k in _SHOWN))
+        print("  ".join(f"{row[k]:>15.8g}" if isinstance(row[k], float) else f"{row[k]!s:>15}" for k in _SHOWN))
     print("wrote " + ", ".join(map(str, paths)))
     return 0
 
@@ -52,5 +61,5 @@ def register(subparsers) -> None:
                               "the inflated state, every compressed state, SI and dimensionless, and the "
                               "provenance) and DIR/STEM.csv (one row per load).", epilog=EXIT_CODES)
     add_case_arguments(p)
-    p.add_argument("--out", default=".", metavar="DIR", help="folder for the results (default: the current one)")
+    p.add_argument("--out", default=".", metavar="DIR", help="folder for the results (default: ., the current folder)")
     p.set_defaults(handler=_main)

@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import csv
+import io
 import json
-import pathlib
 
+from pocket.apps.folders import check_output_file, write_whole
 from pocket.apps.physical import forces, resolve
-from pocket.apps.sense import calibration, sense
+from pocket.apps.sense import MAX_POINTS, calibration, sense
 from pocket.core.errors import InputError
-from pocket.core.units import quantity
+from pocket.core.inputs import check_count
+from pocket.core.units import positive, quantity
 
 from .common import EXIT_CODES, number
 from .run import add_case_arguments, case_from_args
@@ -21,21 +23,23 @@ def _main(args) -> int:
     case, _ = case_from_args(args)
     if args.pressure is None and args.ratio is None and args.table is None:
         raise InputError("give a measured --pressure or --ratio, or --table FILE.csv")
+    table = None if args.table is None else check_output_file(args.table, "--table")
+    top = None if args.max_force is None else positive("--max-force", args.max_force, "force")
+    points = check_count("--points", args.points, 2, MAX_POINTS)
+    if args.pressure is not None:
+        quantity("--pressure", args.pressure, "pressure")
     pocket = resolve(case)
     out = {}
     if args.pressure is not None or args.ratio is not None:
         out = sense(pocket, pressure=args.pressure, ratio=args.ratio).row()
-    if args.table is not None:
-        top = (quantity("max-force", args.max_force, "force") if args.max_force is not None
-               else max(forces(pocket)) * pocket.force_scale_N)
-        rows = [r.row() for r in calibration(pocket, top, args.points)]
-        path = pathlib.Path(args.table)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        with path.open("w", newline="") as stream:
-            writer = csv.DictWriter(stream, list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
-        out["table"] = str(path)
+    if table is not None:
+        rows = [r.row() for r in calibration(pocket, top or max(forces(pocket)) * pocket.force_scale_N, points)]
+        text = io.StringIO(newline="")
+        writer = csv.DictWriter(text, list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+        write_whole(table, text.getvalue())
+        out["table"] = args.table
     if args.json:
         print(json.dumps(out))
     else:
@@ -56,6 +60,6 @@ def register(subparsers) -> None:
     p.add_argument("--ratio", type=number, help="measured pressure rise P/P_I")
     p.add_argument("--table", metavar="FILE.csv", help="write a calibration table over the force range")
     p.add_argument("--max-force", help="top of the table's force range (default: the case's largest load)")
-    p.add_argument("--points", type=int, default=21, help="rows of the table (default 21)")
+    p.add_argument("--points", type=int, default=21, help=f"rows of the table (2 to {MAX_POINTS})")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(handler=_main)

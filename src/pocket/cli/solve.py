@@ -1,8 +1,10 @@
 """``pocket inflate`` and ``pocket compress``: one state or a compression curve, dimensionless.
 
 Quantities (the model's own units): Phat = P R / (E T), Fhat = F / (P_I pi R^2),
-lengths in R. Output: a table (or ``--json``) of the reported keys of
-``pocket.core.states``; ``--vtk DIR`` writes the states for ParaView.
+lengths in R. Output: a table (or ``--json``, with each state's ``warnings``) of
+the reported keys of ``pocket.core.states``; the warnings also go to stderr as
+``pocket: warning: ...`` lines; ``--vtk DIR`` writes the states for ParaView. A
+curve shows a progress bar on a terminal (``progress`` of ``compression_curve``).
 """
 
 from __future__ import annotations
@@ -11,10 +13,11 @@ import itertools
 import json
 import math
 
+from pocket.apps.folders import check_output_dir
 from pocket.apps.solvers import SOLVERS, get_solver
 from pocket.core.errors import ConvergenceError
 
-from .common import EXIT_CODES, add_solver_flags, number, solver_flags
+from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
 
 __all__ = ["register"]
 
@@ -45,7 +48,7 @@ def register(subparsers) -> None:
 
 
 def _table(rows: list[dict]) -> str:
-    keys = [k for k in rows[0] if k != "solver"]
+    keys = [k for k in rows[0] if k not in ("solver", "warnings")]
     if len(rows) == 1:
         width = max(map(len, keys))
         return "\n".join(f"{k:<{width}}  {_fmt(rows[0][k])}" for k in keys)
@@ -59,15 +62,22 @@ def _fmt(value) -> str:
     return f"{value:.10g}" if isinstance(value, float) else str(value)
 
 
+def _solve(args, step: str, options: dict) -> list:
+    solver = get_solver(args.solver)
+    if step == "inflate":
+        return [solver.inflate(args.alpha, args.pressure, **options)]
+    with progress_bar(f"compress ({args.solver})", " forces") as progress:
+        extra = {} if progress is None or len(args.force) == 1 else {"progress": progress}
+        return solver.compression_curve(args.alpha, args.pressure, args.force, **options, **extra)
+
+
 def _main(args) -> int:
     step = "inflate" if args.command == "inflate" else "compress"
     options = solver_flags(args, args.solver, step)
-    solver = get_solver(args.solver)
-    if step == "inflate":
-        states = [solver.inflate(args.alpha, args.pressure, **options)]
-    else:
-        states = solver.compression_curve(args.alpha, args.pressure, args.force, **options)
-    rows = [s.scalars() for s in states]
+    if args.vtk:
+        check_output_dir(args.vtk, "--vtk", overwrite=args.overwrite)
+    states = _solve(args, step, options)
+    rows = [report(s) for s in states]
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
         raise ConvergenceError(f"solver {args.solver} returned a non-finite value")
     if args.vtk:
@@ -76,6 +86,7 @@ def _main(args) -> int:
         forces = [getattr(s, "force", 0.0) for s in states]
         increasing = all(a < b for a, b in itertools.pairwise(forces))
         write_series(args.vtk, states, times=forces if increasing else None, overwrite=args.overwrite)
+    warn(states)
     if args.json:
         print(json.dumps(rows if step == "compress" and len(args.force) > 1 else rows[0]))
     else:

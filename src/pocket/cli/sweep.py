@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from concurrent.futures import ProcessPoolExecutor
-
+from pocket.apps.folders import check_output_file
 from pocket.apps.solvers import SOLVERS
-from pocket.apps.sweep import run_sweep
+from pocket.apps.sweep import MAX_POINTS, run_sweep
+from pocket.apps.workers import local_executor, max_workers, stop
 from pocket.core.errors import InputError
 
-from .common import EXIT_CODES, number
+from .common import EXIT_CODES, add_solver_flags, number, progress_bar, solver_flags
 
 __all__ = ["register"]
 
@@ -16,7 +16,7 @@ __all__ = ["register"]
 def _executor(args):
     """(executor, client): local processes, or a dask.distributed cluster's executor and its client."""
     if args.scheduler is None:
-        return ProcessPoolExecutor(max_workers=args.workers), None
+        return local_executor(args.workers), None
     if args.workers is not None:
         raise InputError("--workers applies to local processes, not to --scheduler")
     try:
@@ -25,18 +25,24 @@ def _executor(args):
         raise InputError("--scheduler needs dask.distributed: pip install 'pocket-mechanics[sweep]'") from None
     try:
         client = Client(args.scheduler, timeout="10s")
-    except OSError as err:
-        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({err})") from None
+    except (OSError, ValueError, TypeError) as err:
+        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({' '.join(str(err).split())})") from None
     return client.get_executor(), client
 
 
 def _main(args) -> int:
+    check_output_file(args.out, "--out")
+    options = solver_flags(args, args.solver, "compress")
     executor, client = _executor(args)
     try:
-        computed, reused = run_sweep(args.out, args.alpha, args.pressure, args.force, executor,
-                                     solver=args.solver)
-    finally:
+        with progress_bar("sweep", " points") as progress:
+            computed, reused = run_sweep(args.out, args.alpha, args.pressure, args.force, executor,
+                                         solver=args.solver, options=options, progress=progress)
         executor.shutdown()
+    except BaseException:
+        stop(executor)
+        raise
+    finally:
         if client is not None:
             client.close()
     print(f"sweep: {computed} points computed, {reused} reused; wrote {args.out}")
@@ -46,14 +52,19 @@ def _main(args) -> int:
 def register(subparsers) -> None:
     """Add ``pocket sweep``."""
     text = "parameter sweep over alpha, Phat_I and Fhat (parallel, resumable)"
-    p = subparsers.add_parser("sweep", help=text, description=f"{text}: one compressed state per grid point, "
-                              "one CSV row each, with a status (ok, out_of_range, failed); rerun on the same "
-                              "file to compute only the missing points.", epilog=EXIT_CODES)
+    p = subparsers.add_parser(
+        "sweep", help=text, epilog=EXIT_CODES,
+        description=f"{text}: one compressed state per grid point (at most {MAX_POINTS}), one CSV row each, "
+        "with a status (ok, out_of_range, failed) and a message; rerun the same command to compute only the "
+        "missing points. While it runs the file collects finished points; at the end it is rewritten in grid "
+        "order. Stopped early (interrupt, error), the file keeps its complete rows only.")
     p.add_argument("--alpha", type=number, nargs="+", required=True, help="values of C2/C1")
     p.add_argument("--pressure", type=number, nargs="+", required=True, help="values of Phat_I = P_I R/(E T)")
     p.add_argument("--force", type=number, nargs="+", required=True, help="values of Fhat = F/(P_I pi R^2)")
     p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
-    p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting", help="solver (default shooting)")
-    p.add_argument("--workers", type=int, help="local worker processes (default: one per core)")
+    p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting", help="solver of every point")
+    p.add_argument("--workers", type=int, help=f"local worker processes (default: one per usable CPU; at most "
+                   f"{max_workers()}, 4 per CPU)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
+    add_solver_flags(p, "compress")
     p.set_defaults(handler=_main)

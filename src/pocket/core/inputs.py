@@ -10,6 +10,10 @@ from __future__ import annotations
 import math
 import numbers
 import operator
+import os
+import pathlib
+import reprlib
+import stat
 
 from .errors import InputError
 
@@ -23,22 +27,37 @@ __all__ = [
     "check_tolerance",
     "check_flag",
     "check_choice",
+    "check_file",
     "quote",
+    "MAGNITUDES",
+    "MAX_FILE_BYTES",
 ]
 
 #: smallest relative tolerance a solver is asked for: a few ulps of a number of order one
 TOLERANCE_FLOOR = 1e-14
 
+#: smallest and largest nonzero |value| of a dimensionless input (alpha, Phat, Fhat, a penalty):
+#: far outside what a rubber pocket is, and far from where the solvers' products of such numbers
+#: overflow or underflow a double (Phat = 1e300 or 1e-300 would, inside them)
+MAGNITUDES = (1e-12, 1e12)
+
+#: largest input file a solver option may name (a mesh file): a bound on the work it can ask for
+MAX_FILE_BYTES = 100_000_000
+
+_QUOTE = reprlib.Repr()
+_QUOTE.maxlevel, _QUOTE.maxlist, _QUOTE.maxdict, _QUOTE.maxstring, _QUOTE.maxother = 2, 4, 4, 60, 60
+
 
 def quote(value) -> str:
-    """A value as a message quotes it: numbers plainly (numpy's ``np.float64(...)`` as ``0.1``), text in quotes."""
-    if isinstance(value, bool) or value is None or isinstance(value, str):
+    """A value as a message quotes it: numbers plainly (numpy's ``np.float64(...)`` as ``0.1``), text in
+    quotes, long text and nested lists or tables shortened with ``...`` (a message stays one short line)."""
+    if isinstance(value, bool) or value is None:
         return repr(value)
     if isinstance(value, numbers.Integral):
-        return str(int(value))
+        return str(int(value)) if abs(value) < 10**30 else _QUOTE.repr(int(value))
     if isinstance(value, numbers.Real):
         return repr(float(value))
-    return repr(value)
+    return " ".join(_QUOTE.repr(value).split())
 
 
 def check_finite(name, value) -> float:
@@ -54,20 +73,29 @@ def check_finite(name, value) -> float:
     return number
 
 
+def _magnitude(name, value, number: float) -> float:
+    """``number`` if it is 0 or its magnitude lies within ``MAGNITUDES``."""
+    low, high = MAGNITUDES
+    if number != 0.0 and not low <= abs(number) <= high:
+        raise InputError(f"{name} = {quote(value)} is outside the magnitudes of the model's dimensionless inputs "
+                         f"({low:g} to {high:g})")
+    return number
+
+
 def check_alpha(alpha) -> float:
     """alpha = C2/C1 must be > -1 (E = 6 (1 + alpha) C1 > 0)."""
     value = check_finite("alpha", alpha)
     if value <= -1.0:
         raise InputError(f"alpha = {quote(alpha)}, but the Mooney-Rivlin model needs alpha > -1")
-    return value
+    return _magnitude("alpha", alpha, value)
 
 
 def check_positive(name, value) -> float:
-    """A quantity that must be finite and > 0 (a pressure, a volume, a penalty)."""
+    """A dimensionless quantity that must be > 0 (a pressure, a volume, a penalty), within ``MAGNITUDES``."""
     number = check_finite(name, value)
     if number <= 0.0:
         raise InputError(f"{name} = {quote(value)}, but it must be > 0")
-    return number
+    return _magnitude(name, value, number)
 
 
 def check_non_negative(name, value) -> float:
@@ -79,11 +107,11 @@ def check_non_negative(name, value) -> float:
 
 
 def check_force(force) -> float:
-    """The force Fhat = F / (P_I pi R^2) must be finite and >= 0 (the plate pushes)."""
+    """The force Fhat = F / (P_I pi R^2) must be >= 0 (the plate pushes), 0 or within ``MAGNITUDES``."""
     number = check_finite("force", force)
     if number < 0.0:
         raise InputError(f"force = {quote(force)}, but a plate can only push: it must be >= 0")
-    return number
+    return _magnitude("force", force, number)
 
 
 def check_count(name, value, low: int, high: int) -> int:
@@ -120,3 +148,20 @@ def check_choice(name, value, choices):
     if isinstance(value, bool) or value not in choices:
         raise InputError(f"{name} = {quote(value)}, but it must be one of {', '.join(map(repr, choices))}")
     return value
+
+
+def check_file(name, value, max_bytes: int = MAX_FILE_BYTES) -> str:
+    """The name of an existing regular file of at most ``max_bytes`` bytes (an input a solver reads)."""
+    if not isinstance(value, (str, os.PathLike)):
+        raise InputError(f"{name} = {quote(value)}, but it must be a file name")
+    path = pathlib.Path(value)
+    try:
+        info = path.stat()
+    except OSError as err:
+        raise InputError(f"{name} = {quote(str(value))}: cannot read it ({err.strerror})") from None
+    if not stat.S_ISREG(info.st_mode):
+        raise InputError(f"{name} = {quote(str(value))} is not a regular file")
+    if info.st_size > max_bytes:
+        raise InputError(f"{name} = {quote(str(value))} has {info.st_size} bytes, but an input file has at most "
+                         f"{max_bytes}")
+    return str(value)

@@ -32,6 +32,7 @@ import dataclasses
 from collections.abc import Callable
 
 from .errors import InputError
+from .inputs import check_file
 
 __all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS"]
 
@@ -59,7 +60,10 @@ class Option:
     steps: tuple[str, ...] = STEPS
 
     def checked(self, value, spell: Callable[[str], str] = str):
-        """``value`` checked, with errors naming the option as ``spell(name)`` would."""
+        """``value`` checked, with errors naming the option as ``spell(name)`` would; a ``"path"``
+        is first checked to name a readable regular file of bounded size (``check_file``)."""
+        if self.kind == "path":
+            value = check_file(spell(self.name), value)
         return self.check(spell(self.name), value)
 
 

@@ -21,7 +21,7 @@ import math
 from .errors import InputError
 from .inputs import quote
 
-__all__ = ["KINDS", "MAGNITUDES", "quantity", "positive"]
+__all__ = ["KINDS", "MAGNITUDES", "quantity", "positive", "written_like"]
 
 #: kind -> (pint dimensionality, SI unit)
 KINDS = {
@@ -85,3 +85,17 @@ def positive(key: str, value, kind: str) -> float:
     if magnitude <= 0.0:
         raise InputError(f"{key} = {quote(value)}, but it must be > 0")
     return magnitude
+
+
+def written_like(value: float, given, kind: str) -> str:
+    """The SI ``value`` of ``kind`` written in the unit of ``given`` (a value as the user wrote it):
+    ``written_like(0.0098787, "20 mm", "length")`` is ``"9.8787 mm"``; SI when ``given`` has no unit."""
+    dimension, unit = KINDS[kind]
+    if isinstance(given, str):
+        try:
+            parsed = _registry().Quantity(given)
+            if not parsed.dimensionless and parsed.check(dimension):
+                return f"{_registry().Quantity(value, unit).to(parsed.units).magnitude:.6g} {parsed.units:~}"
+        except Exception:  # pint's parser raises many types; the SI form below is always right
+            pass
+    return f"{value:.6g} {unit}"

@@ -1,0 +1,173 @@
+"""The sweep file: one CSV row per grid point, appended while a sweep runs (``pocket.apps.sweep``).
+
+Columns (``COLUMNS``): the keys of a compressed state (``CompressedState.KEYS``),
+the solver, a ``status`` (``STATUSES``) and a one-line ``message``. Floats are
+written exactly (``repr``), so a point reads back equal to the number asked.
+
+``Journal`` opens a sweep file for a sweep: it refuses, untouched, a file that
+is not a sweep file (``InputError``), takes an advisory POSIX lock so that one
+sweep at a time writes it, reads back its complete rows (a line cut off by a
+sudden end of an earlier run is left out, and written over), and appends one
+complete row per finished point. Writes are unbuffered: what a failed write
+leaves is on the disk, where ``close(failed=True)`` cuts it off again, never in
+a buffer that a later flush would retry. A write that fails is an
+``OutputError`` saying how many points the file keeps.
+"""
+
+from __future__ import annotations
+
+import csv
+import errno
+import io
+import os
+import pathlib
+import stat
+
+from pocket.core.errors import InputError, OutputError
+from pocket.core.states import CompressedState
+
+from .folders import created_parents, remove_created
+
+try:
+    import fcntl
+except ImportError:  # not a POSIX system: no lock
+    fcntl = None
+
+__all__ = ["COLUMNS", "STATUSES", "Journal", "key", "line", "rows_csv"]
+
+COLUMNS = (*CompressedState.KEYS, "solver", "status", "message")
+STATUSES = ("ok", "out_of_range", "failed")
+_PARAMETERS = ("alpha", "pressure_initial", "force")
+
+
+def line(text) -> str:
+    """``text`` on one line (a CSV cell that never spans lines)."""
+    return " ".join(str(text).split())
+
+
+def key(row) -> tuple[float, float, float]:
+    """The grid point (alpha, Phat_I, Fhat) of a row."""
+    return tuple(float(row[k]) for k in _PARAMETERS)
+
+
+def rows_csv(rows, *, header=False) -> bytes:
+    """``rows`` (dicts of COLUMNS) as CSV bytes, after the header if ``header``."""
+    text = io.StringIO(newline="")
+    writer = csv.DictWriter(text, COLUMNS, lineterminator="\n")
+    if header:
+        writer.writeheader()
+    writer.writerows(rows)
+    return text.getvalue().encode("utf-8")
+
+
+_HEADER = rows_csv([], header=True)
+
+
+def _not_a_sweep(path, why) -> InputError:
+    return InputError(f"{path} exists but is not a sweep file ({why}); give another --out file")
+
+
+def _parse(data: bytes, path) -> tuple[dict, int]:
+    """The complete rows of the sweep file ``data`` by point, and their length in bytes.
+
+    An empty file, or the start of the header alone, has no rows; a cut last line is left out.
+    """
+    if _HEADER.startswith(data):
+        return {}, 0
+    end = data.rfind(b"\n") + 1
+    try:
+        text = data[:end].decode("utf-8")
+    except UnicodeDecodeError:
+        raise _not_a_sweep(path, "it is not UTF-8 text") from None
+    lines = csv.reader(io.StringIO(text, newline=""))
+    next(lines)  # the header, checked by Journal
+    rows = {}
+    for number, values in enumerate(lines, start=2):
+        row = dict(zip(COLUMNS, values, strict=False))
+        try:
+            if len(values) != len(COLUMNS) or row["status"] not in STATUSES:
+                raise ValueError
+            point = key(row)
+        except ValueError:
+            raise _not_a_sweep(path, f"line {number} is not a row of one") from None
+        rows[point] = row
+    return rows, end
+
+
+class Journal:
+    """A sweep file, locked and opened for appending rows (module docstring); ``rows`` maps each
+    point to its row, ``path`` is the file."""
+
+    def __init__(self, path: pathlib.Path):
+        self.path, self.made, self.end, self.locked = path, created_parents(path), None, False
+        try:
+            for folder in self.made:
+                folder.mkdir(exist_ok=True)
+            try:
+                fd, self.created = os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666), True
+            except FileExistsError:
+                fd, self.created = os.open(path, os.O_RDWR), False
+        except OSError as err:
+            remove_created(self.made)
+            raise OutputError(f"cannot write {path}: {err.strerror or err}") from None
+        self.file = io.FileIO(fd, "r+")
+        try:
+            if not stat.S_ISREG(os.fstat(fd).st_mode):
+                raise InputError(f"{path} is not a regular file, so not a sweep file; give another --out file")
+            self._lock()
+            self.rows, self.end = _parse(self._read(), path)
+        except BaseException:
+            self.close(failed=True)
+            raise
+
+    def _read(self) -> bytes:
+        """The file's bytes, once its start is known to be (a prefix of) the header."""
+        start = self.file.read(len(_HEADER))
+        if not (_HEADER.startswith(start) if len(start) < len(_HEADER) else start == _HEADER):
+            first = start.split(b"\n", 1)[0][:80].decode("utf-8", errors="replace")
+            raise _not_a_sweep(self.path, f"its first line starts {line(first)!r}")
+        return start + self.file.readall()
+
+    def _lock(self) -> None:
+        if fcntl is not None:
+            try:  # a POSIX record lock: held by this process only, not by the workers it forks
+                fcntl.lockf(self.file.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError as err:
+                if err.errno not in (errno.EACCES, errno.EAGAIN):
+                    raise OutputError(f"cannot lock {self.path}: {err.strerror or err}") from None
+                raise InputError(f"{self.path}: another pocket sweep is writing this file; wait for it to "
+                                 "finish or give another --out file") from None
+            if os.fstat(self.file.fileno()).st_ino != os.stat(self.path).st_ino:
+                raise InputError(f"{self.path}: another pocket sweep has just rewritten this file; run again")
+        self.locked = True
+
+    def _write(self, data: bytes) -> None:
+        try:
+            self.file.truncate(self.end)  # a line cut by an earlier run
+            self.file.seek(self.end)
+            view = memoryview(data)
+            while view:
+                view = view[self.file.write(view):]
+        except OSError as err:
+            raise OutputError(f"cannot write {self.path}: {err.strerror or err}; it keeps the {len(self.rows)} "
+                              "points finished before, and the same command resumes the sweep") from None
+        self.end += len(data)
+
+    def append(self, row: dict) -> None:
+        """Add one finished point (the header first if the file is new)."""
+        self._write((_HEADER if self.end == 0 else b"") + rows_csv([row]))
+        self.rows[key(row)] = row
+
+    def close(self, *, failed: bool) -> None:
+        """Close the file; after a failure cut it back to its complete rows, or remove it if this
+        sweep created it and finished no point (only if the lock was ours: the file is then this sweep's)."""
+        try:
+            if failed and self.end is not None:
+                self.file.truncate(self.end)
+        except OSError:
+            pass  # the rows written stay complete; a cut line is ignored by the next run
+        finally:
+            self.file.close()
+        if failed and self.created and self.locked and not self.end:
+            self.path.unlink(missing_ok=True)
+            remove_created(self.made)
