@@ -162,13 +162,12 @@ def test_an_unexpected_exception_is_one_line(capsys, monkeypatch):
 
 
 @pytest.mark.parametrize("argv", [
-    pytest.param(["inflate", "--alpha", "-0.616392062062302", "--pressure", "1.1721496966838862"],
-                 marks=pytest.mark.xfail(strict=True, reason="found by the test above: the shooting inflation's "
-                                         "bracket ends in scipy's brentq ValueError (f(a) and f(b) must have "
-                                         "different signs) instead of a PocketError")),
+    # found by the test above: the shooting inflation's bracket ended in scipy's brentq ValueError
+    # (f(a) and f(b) must have different signs) instead of a PocketError
+    ["inflate", "--alpha", "-0.616392062062302", "--pressure", "1.1721496966838862"],
 ])
 def test_solver_bugs_found_here(argv, capsys):
-    """Argument lists that reached a bug in a solver (an internal error, not a PocketError): kept as
-    strict expected failures until the solver says what went wrong in its own words."""
+    """Argument lists that once reached a bug in a solver (an internal error, not a PocketError): each now
+    ends in a state or in one of the named errors."""
     main(argv)
     assert "internal error" not in capsys.readouterr().err

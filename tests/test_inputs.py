@@ -1,5 +1,6 @@
 """The one input checker: magnitudes of dimensionless inputs, file inputs, and how messages quote values."""
 
+import functools
 import math
 
 import pytest
@@ -9,15 +10,24 @@ from pocket.core.errors import InputError
 from pocket.core.inputs import MAGNITUDES, check_alpha, check_file, check_force, check_positive, quote
 
 
-@pytest.mark.parametrize("check", [lambda v: check_positive("pressure", v), check_force,
-                                   lambda v: check_alpha(v)])
-def test_magnitude_bounds_are_inclusive(check):
+def test_magnitude_bounds_are_inclusive():
     """Exact answer: the bounds of MAGNITUDES pass, the next doubles outside them do not."""
     low, high = MAGNITUDES
+    check = functools.partial(check_positive, "pressure")
     assert check(low) == low and check(high) == high
     for outside in (math.nextafter(low, 0.0), math.nextafter(high, math.inf), 1e300, 1e-300):
         with pytest.raises(InputError, match="is outside the magnitudes of the model's dimensionless inputs"):
             check(outside)
+
+
+@pytest.mark.parametrize("check", [check_force, check_alpha])
+def test_ratios_and_forces_are_bounded_above_only(check):
+    """A force or an alpha may be as small as a double allows (the unloaded and the neo-Hookean limits);
+    above the largest magnitude it is refused."""
+    low, high = MAGNITUDES
+    assert check(1e-300) == 1e-300 and check(high) == high
+    with pytest.raises(InputError, match="is outside the magnitudes of the model's dimensionless inputs"):
+        check(math.nextafter(high, math.inf))
 
 
 def test_zero_force_and_zero_alpha_are_inputs():

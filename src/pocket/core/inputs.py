@@ -87,7 +87,10 @@ def check_alpha(alpha) -> float:
     value = check_finite("alpha", alpha)
     if value <= -1.0:
         raise InputError(f"alpha = {quote(alpha)}, but the Mooney-Rivlin model needs alpha > -1")
-    return _magnitude("alpha", alpha, value)
+    if value > MAGNITUDES[1]:  # a ratio: any small value (neo-Hookean-like) is fine, a huge one is not a rubber
+        raise InputError(f"alpha = {quote(alpha)} is outside the magnitudes of the model's dimensionless inputs "
+                         f"(at most {MAGNITUDES[1]:g})")
+    return value
 
 
 def check_positive(name, value) -> float:
@@ -107,11 +110,15 @@ def check_non_negative(name, value) -> float:
 
 
 def check_force(force) -> float:
-    """The force Fhat = F / (P_I pi R^2) must be >= 0 (the plate pushes), 0 or within ``MAGNITUDES``."""
+    """The force Fhat = F / (P_I pi R^2) must be >= 0 (the plate pushes) and at most the largest of
+    ``MAGNITUDES``; any small force is the limit of an unloaded pocket, not an error."""
     number = check_finite("force", force)
     if number < 0.0:
         raise InputError(f"force = {quote(force)}, but a plate can only push: it must be >= 0")
-    return _magnitude("force", force, number)
+    if number > MAGNITUDES[1]:
+        raise InputError(f"force = {quote(force)} is outside the magnitudes of the model's dimensionless inputs "
+                         f"(at most {MAGNITUDES[1]:g})")
+    return number
 
 
 def check_count(name, value, low: int, high: int) -> int:
