@@ -37,3 +37,40 @@ def test_warnings_stay_out_of_the_scalars():
     assert state.warnings == () and "warnings" not in state.scalars()
     noted = dataclasses.replace(state, warnings=("a note",))
     assert report(noted) == {**state.scalars(), "warnings": ["a note"]}
+
+
+def _inflated(tension_2=None, **fields):
+    from pocket.core.states import InflatedState
+
+    parts = _fields(5)
+    if tension_2 is not None:
+        parts[6] = tension_2
+    return InflatedState(alpha=fields.pop("alpha", 0.3), pressure=0.3, stretch_pole=1.1, height=0.5, volume=0.8,
+                         stretch_clamp=1.05, profile=Profile(*parts), solver="test", **fields)
+
+
+def test_material_defaults_to_the_mooney_rivlin_of_alpha_and_is_reported():
+    """Exact answer: alpha = C2/C1 = 0.3 with mu_0 = 2 (C1 + C2) = 1 gives C1 = 1/2.6, C2 = 0.3/2.6."""
+    state = _inflated()
+    assert state.material.law == "mooney-rivlin" and state.material.mu0 == pytest.approx(1.0, rel=1e-15)
+    out = state.scalars()
+    assert out["alpha"] == 0.3 and out["material"] == "mooney-rivlin"
+    assert out["c1"] == pytest.approx(1 / 2.6, rel=1e-15) and out["c2"] == pytest.approx(0.3 / 2.6, rel=1e-15)
+
+
+def test_another_law_reports_no_alpha():
+    from pocket.core.materials import check
+
+    state = _inflated(alpha=None, material=check("neo-hookean", {"mu": 1.0}))
+    out = state.scalars()
+    assert "alpha" not in out and out["material"] == "neo-hookean" and out["mu"] == 1.0
+
+
+def test_smallest_tensions_and_the_wrinkling_flag():
+    """Exact answer: the minima over the profile's tensions; a non-positive one flags the state and
+    warns once, naming the tension, its value and where."""
+    state = _inflated()
+    assert (state.tension_1_min, state.tension_2_min, state.wrinkled, state.warnings) == (1.0, 1.0, False, ())
+    slack = _inflated(tension_2=np.array([1.0, 0.5, -0.25, 0.5, 1.0]))
+    assert slack.tension_2_min == -0.25 and slack.wrinkled and slack.scalars()["wrinkled"] is True
+    assert len(slack.warnings) == 1 and "T_2 = -0.25 E T at r = 0.5 R" in slack.warnings[0]

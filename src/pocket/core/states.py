@@ -1,13 +1,21 @@
 """The vocabulary every solver returns: profiles, inflated and compressed states.
 
 All quantities are dimensionless: lengths in units of the clamp radius R,
-pressures as Phat = P R / (E T) (E = 6 (C1 + C2) the small-strain Young's
-modulus, T the sheet thickness), tensions (membrane stress resultants) in units
-of E T, volumes in R^3, force as Fhat = F / (P_I pi R^2).
+pressures as Phat = P R / (E T) (E = 3 mu_0 the small-strain Young's modulus of
+the rubber, 6 (C1 + C2) for Mooney-Rivlin; T the sheet thickness), tensions
+(membrane stress resultants) in units of E T, volumes in R^3, force as
+Fhat = F / (P_I pi R^2).
 
-A state echoes its inputs exactly: ``alpha``, ``pressure`` of an inflation,
-``pressure_initial`` and ``force`` of a compression are the numbers the caller
-gave, never recomputed ones.
+A state echoes its inputs exactly: ``alpha`` (a Mooney-Rivlin rubber given by
+C2/C1; None for another law), ``material``, ``pressure`` of an inflation,
+``pressure_initial``, ``force`` and ``fluid`` of a compression are what the
+caller gave, never recomputed ones.
+
+Every state also carries its smallest tensions ``tension_1_min`` and
+``tension_2_min`` (units E T; by default the minima over its profile) and
+``wrinkled``: membrane theory holds only while both tensions are positive, so
+a state with a compressive tension anywhere is flagged and carries a warning
+saying where, rather than passing for valid.
 Solvers share these containers and nothing else, so that a bug in one cannot
 hide from the cross-check with another.
 """
@@ -15,11 +23,18 @@ hide from the cross-check with another.
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Mapping
 
 import numpy as np
 
-__all__ = ["Profile", "InflatedState", "CompressedState"]
+from .fluids import LIQUID, Fluid
+from .materials import Material, mooney_rivlin
+
+__all__ = ["Profile", "InflatedState", "CompressedState", "CHECKS"]
+
+#: the membrane's own validity, reported by every state after its KEYS
+CHECKS = ("tension_1_min", "tension_2_min", "wrinkled")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -56,8 +71,36 @@ class Profile:
         return 1.0 / (self.stretch_1 * self.stretch_2)
 
 
-def _scalars(state, keys, extra) -> dict[str, float]:
-    out = {key: float(getattr(state, key)) for key in keys}
+def _complete(state) -> None:
+    """Fill the defaults of a new state: its material from alpha, its smallest tensions from its profile,
+    and a warning if one is not positive (frozen dataclass: object.__setattr__)."""
+    if state.material is None:
+        if state.alpha is None:
+            raise ValueError("a state needs alpha (Mooney-Rivlin) or a material")
+        object.__setattr__(state, "material", mooney_rivlin(state.alpha))
+    profile = state.profile
+    for k in (1, 2):
+        name = f"tension_{k}_min"
+        if math.isnan(getattr(state, name)) and profile is not None:
+            object.__setattr__(state, name, float(np.min(getattr(profile, f"tension_{k}"))))
+    low = min(state.tension_1_min, state.tension_2_min)
+    if low <= 0.0:
+        which = 1 if state.tension_1_min <= state.tension_2_min else 2
+        where = ""
+        if profile is not None:
+            i = int(np.argmin(getattr(profile, f"tension_{which}")))
+            where = f" at r = {profile.r[i]:.4g} R"
+        note = (f"compressive tension: T_{which} = {low:.4g} E T{where}; membrane theory needs T_1, T_2 > 0 "
+                "(the sheet would wrinkle there)")
+        if note not in state.warnings:
+            object.__setattr__(state, "warnings", (*state.warnings, note))
+
+
+def _scalars(state, keys, extra, described) -> dict:
+    out = {key: float(getattr(state, key)) for key in keys if getattr(state, key) is not None}
+    out.update({key: float(getattr(state, key)) for key in CHECKS[:2]})
+    out["wrinkled"] = state.wrinkled
+    out.update(described)
     out.update({k: (v if isinstance(v, (str, bool, int)) else float(v)) for k, v in extra.items()})
     out["solver"] = state.solver
     return out
@@ -70,11 +113,13 @@ class InflatedState:
     ``extra`` holds solver-specific diagnostics (mesh size, iterations, ...);
     ``scalars()`` returns the reported keys (``KEYS``) followed by those.
     ``warnings`` are one-line notes on a state that is returned but should not
-    pass unremarked (an approximate model outside its range); the command line
-    prints them and JSON carries them.
+    pass unremarked (an approximate model outside its range, a compressive
+    tension); the command line prints them and JSON carries them. ``material``
+    (default: Mooney-Rivlin of ``alpha``, in units of mu_0) and the smallest
+    tensions (default: from the profile) are filled in when not given.
     """
 
-    alpha: float
+    alpha: float | None
     pressure: float
     stretch_pole: float
     height: float
@@ -84,12 +129,24 @@ class InflatedState:
     solver: str
     extra: Mapping[str, float] = dataclasses.field(default_factory=dict)
     warnings: tuple[str, ...] = ()
+    material: Material | None = None
+    tension_1_min: float = math.nan
+    tension_2_min: float = math.nan
 
     KEYS = ("alpha", "pressure", "stretch_pole", "height", "volume", "stretch_clamp")
 
-    def scalars(self) -> dict[str, float]:
-        """The reported quantities as a flat dict (JSON-ready)."""
-        return _scalars(self, self.KEYS, self.extra)
+    def __post_init__(self):
+        _complete(self)
+
+    @property
+    def wrinkled(self) -> bool:
+        """A tension is not positive somewhere: outside membrane theory."""
+        return min(self.tension_1_min, self.tension_2_min) <= 0.0
+
+    def scalars(self) -> dict:
+        """The reported quantities as a flat dict (JSON-ready): KEYS (``alpha`` only for Mooney-Rivlin),
+        CHECKS, the material's law and parameters, then ``extra`` and the solver."""
+        return _scalars(self, self.KEYS, self.extra, self.material.describe())
 
 
 @dataclasses.dataclass(frozen=True)
@@ -98,11 +155,12 @@ class CompressedState:
 
     ``contact_area`` is the deformed area A_c/(pi R^2) = pi (lambda_c a_c)^2 /
     (pi R^2); ``contact_radius`` the Lagrangian a_c/R. ``inflated`` is the
-    step-1 state this one was compressed from. ``extra`` and ``warnings`` as
-    for ``InflatedState``.
+    step-1 state this one was compressed from. ``fluid`` is the fluid sealed
+    in the pocket at Phat_I (its ambient pressure as Phat_atm). ``extra``,
+    ``warnings``, ``material`` and the smallest tensions as for ``InflatedState``.
     """
 
-    alpha: float
+    alpha: float | None
     pressure_initial: float
     force: float
     pressure: float
@@ -118,6 +176,10 @@ class CompressedState:
     solver: str
     extra: Mapping[str, float] = dataclasses.field(default_factory=dict)
     warnings: tuple[str, ...] = ()
+    material: Material | None = None
+    fluid: Fluid = LIQUID
+    tension_1_min: float = math.nan
+    tension_2_min: float = math.nan
 
     KEYS = (
         "alpha",
@@ -133,6 +195,14 @@ class CompressedState:
         "volume",
     )
 
-    def scalars(self) -> dict[str, float]:
-        """The reported quantities as a flat dict (JSON-ready)."""
-        return _scalars(self, self.KEYS, self.extra)
+    def __post_init__(self):
+        _complete(self)
+
+    @property
+    def wrinkled(self) -> bool:
+        """A tension is not positive somewhere: outside membrane theory."""
+        return min(self.tension_1_min, self.tension_2_min) <= 0.0
+
+    def scalars(self) -> dict:
+        """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars``, and the fluid."""
+        return _scalars(self, self.KEYS, self.extra, {**self.material.describe(), **self.fluid.describe()})
