@@ -38,7 +38,7 @@ def flag(name: str) -> str:
     return f"--{name}"
 
 
-_TYPES = {"float": number, "int": int, "path": str}
+_TYPES = {"float": number, "int": int, "path": str, "choice": str}
 
 
 def add_solver_flags(parser, step: str) -> None:

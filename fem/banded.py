@@ -1,0 +1,129 @@
+r"""The bordered Newton system: a banded block and a few dense rows and columns, solved in O(N).
+
+The system is
+
+    [ A  B ] [x]   [r]
+    [ C  D ] [y] = [s],
+
+A (N x N) banded with half-bandwidths kl = ku (the stiffness, with the rows and
+columns of prescribed dofs replaced by the identity), B (N x m) and C (m x N)
+the couplings to the m <= 3 scalar unknowns (pressure, plate height, contact
+radius), D (m x m). Block elimination with A's banded LU (LAPACK gbtrf with
+partial pivoting; cost O(N kl^2) and storage O(N kl)):
+
+    A [z, W] = [r, B],   S = D - C W,   S y = s - C z,   x = z - W y.
+
+The bordered matrix is regular at a pressure maximum even where A alone is
+nearly singular (A is the stiffness at fixed pressure), and the elimination
+then loses digits; one or two steps of iterative refinement with the whole
+matrix recover them (the correction reuses both factorisations). An exactly
+singular A, or a refinement that does not converge, falls back to a sparse
+LU of the whole bordered matrix (SuperLU); a singular bordered matrix is
+``SingularSystem``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from scipy.linalg import lapack
+
+__all__ = ["Bordered", "SingularSystem", "matvec"]
+
+_REFINE = 2  # iterative-refinement steps at most
+_ACCURATE = 1e-8  # residual of the linear solve, relative to the right-hand side, that needs no refinement
+
+
+class SingularSystem(ArithmeticError):
+    """The bordered matrix is singular (to working precision)."""
+
+
+def matvec(band: np.ndarray, kl: int, ku: int, x: np.ndarray) -> np.ndarray:
+    """A x for A in LAPACK band storage ``band[kl + ku + i - j, j] = A[i, j]``."""
+    n = x.shape[0]
+    out = np.zeros_like(x)
+    for d in range(-kl, ku + 1):  # A[i, i + d]
+        row = band[kl + ku - d]
+        if d >= 0:
+            out[: n - d] += row[d:, None] * x[d:] if x.ndim == 2 else row[d:] * x[d:]
+        else:
+            out[-d:] += row[: n + d, None] * x[: n + d] if x.ndim == 2 else row[: n + d] * x[: n + d]
+    return out
+
+
+@dataclasses.dataclass(eq=False)
+class Bordered:
+    """The system above: ``band`` (A in gbtrf storage, (2 kl + ku + 1, N)), B (N, m), C (m, N), D (m, m)."""
+
+    band: np.ndarray
+    kl: int
+    B: np.ndarray
+    C: np.ndarray
+    D: np.ndarray
+
+    def __post_init__(self):
+        self._lu = None
+
+    def apply(self, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The matrix times (x, y)."""
+        return matvec(self.band, self.kl, self.kl, x) + self.B @ y, self.C @ x + self.D @ y
+
+    def _factor(self):
+        if self._lu is None:
+            lu, piv, info = lapack.dgbtrf(self.band, self.kl, self.kl)
+            if info != 0:
+                self._lu = False
+            else:
+                self._lu = (lu, piv)
+                self._w = self._a_solve(self.B)
+                self._schur = self.D - self.C @ self._w
+                if not np.all(np.isfinite(self._schur)) or np.linalg.cond(self._schur) > 1e15:
+                    self._lu = False
+        return self._lu
+
+    def _a_solve(self, rhs: np.ndarray) -> np.ndarray:
+        lu, piv = self._lu
+        out, info = lapack.dgbtrs(lu, self.kl, self.kl, rhs, piv)
+        return out
+
+    def _eliminate(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        z = self._a_solve(r)
+        y = np.linalg.solve(self._schur, s - self.C @ z)
+        return z - self._w @ y, y
+
+    def solve(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(x, y) solving the system for the right-hand side (r, s)."""
+        if self._factor():
+            x, y = self._eliminate(r, s)
+            scale = max(np.abs(r).max(initial=0.0), np.abs(s).max(initial=0.0), 1e-300)
+            for _ in range(_REFINE + 1):
+                ax, cy = self.apply(x, y)
+                e_r, e_s = r - ax, s - cy
+                if max(np.abs(e_r).max(initial=0.0), np.abs(e_s).max(initial=0.0)) <= _ACCURATE * scale:
+                    return x, y
+                dx, dy = self._eliminate(e_r, e_s)
+                x, y = x + dx, y + dy
+            if np.all(np.isfinite(x)) and np.all(np.isfinite(y)):
+                ax, cy = self.apply(x, y)
+                if max(np.abs(r - ax).max(initial=0.0), np.abs(s - cy).max(initial=0.0)) <= 1e-8 * scale:
+                    return x, y
+        return self._sparse(r, s)
+
+    def _sparse(self, r, s):
+        """SuperLU of the whole bordered matrix (the fallback)."""
+        n, kl = self.band.shape[1], self.kl
+        offsets = np.arange(-kl, kl + 1)
+        diagonals = [self.band[2 * kl - d, max(d, 0): n + min(d, 0)] for d in offsets]
+        a = sp.diags(diagonals, offsets, shape=(n, n), format="csc")
+        full = sp.bmat([[a, sp.csc_matrix(self.B)], [sp.csc_matrix(self.C), sp.csc_matrix(self.D)]], format="csc")
+        try:
+            lu = spla.splu(full)
+        except RuntimeError as err:  # "Factor is exactly singular"
+            raise SingularSystem(str(err)) from None
+        out = lu.solve(np.concatenate([r, s]))
+        if not np.all(np.isfinite(out)):
+            raise SingularSystem("the bordered tangent is singular")
+        return out[:n], out[n:]
