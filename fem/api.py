@@ -14,6 +14,7 @@ relative error in any reported scalar is 3e-8 at 64 elements, 2e-9 at 128,
 4e-10 at 192 and 1.3e-10 at 256 (the pole stretch; 8e-11 in compression);
 256 is the smallest of these with a margin of about 8 below the 1e-9 bar.
 The P2 error falls as h^4, so 10 times the elements buys 1e-4 of the error.
+P1 (error O(h^2)) gets 1024 elements by default: within 1e-6 of shooting.
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ from pocket import meshes
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_alpha, check_force, check_positive, quote
 
-from . import DEFAULT_ELEMENTS, SOLVER, curves, inflation, results
+from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results
 from .model import FITTED, Model, discretize
 from .newton import Tolerances
 
@@ -43,8 +44,11 @@ MAX_RATIO = 1e3
 MIN_LENGTH = 1e-10
 
 
-def default_mesh(elements: int = DEFAULT_ELEMENTS) -> np.ndarray:
-    """The default mesh family: ``meshes.polar(elements, power=POLAR_POWER)``."""
+def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
+    """The default mesh family, ``meshes.polar(elements, power=POLAR_POWER)``; without ``elements``
+    the default mesh of P``order``: DEFAULT_ELEMENTS (P2) or DEFAULT_ELEMENTS_P1 (P1) elements."""
+    if elements is None:
+        elements = DEFAULT_ELEMENTS if order == 2 else DEFAULT_ELEMENTS_P1
     return meshes.polar(elements, power=POLAR_POWER)
 
 
@@ -63,13 +67,12 @@ def _usable(nodes: np.ndarray, where: str) -> np.ndarray:
     return nodes
 
 
-def _nodes(mesh, elements) -> np.ndarray:
+def _nodes(mesh, elements, order) -> np.ndarray:
     """The mesh nodes: ``mesh`` (an array of nodes or a mesh file), or the default family of ``elements``."""
     if mesh is not None and elements is not None:
         raise InputError("give either mesh or elements, not both")
     if mesh is None:
-        count = DEFAULT_ELEMENTS if elements is None else SOLVER.option("elements").checked(elements)
-        return default_mesh(count)
+        return default_mesh(None if elements is None else SOLVER.option("elements").checked(elements), order)
     nodes = meshes.read(mesh) if isinstance(mesh, (str, pathlib.PurePath)) else meshes.check(mesh, "mesh")
     SOLVER.option("elements").checked(nodes.size - 1, lambda _: "mesh elements")
     return _usable(nodes, "mesh" if not isinstance(mesh, (str, pathlib.PurePath)) else str(mesh))
@@ -78,7 +81,7 @@ def _nodes(mesh, elements) -> np.ndarray:
 def _model(alpha, mesh, elements, order, penalty) -> Model:
     alpha = check_alpha(alpha)
     order = SOLVER.option("order").checked(order)
-    return discretize(alpha, _nodes(mesh, elements), order, penalty)
+    return discretize(alpha, _nodes(mesh, elements, order), order, penalty)
 
 
 def _tolerances(tol) -> Tolerances:
@@ -103,7 +106,8 @@ def inflate(alpha, pressure, *, mesh=None, elements=None, order=2, tol=1e-10):
     """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
 
     mesh: nodes of [0, 1] (array, shape (n+1,)) or a mesh file; else the default mesh
-    family of ``elements`` (default ``DEFAULT_ELEMENTS``). order: 1 or 2. tol: Newton tolerance.
+    family of ``elements`` (default: DEFAULT_ELEMENTS with P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or
+    2. tol: Newton tolerance.
     """
     model = _model(alpha, mesh, elements, order, DEFAULT_PENALTY)
     pressure = check_positive("pressure", pressure)

@@ -54,10 +54,7 @@ def headline(cases) -> Case:
 
 def convergence_tasks(case: Case, plan: Plan) -> list[tuple]:
     """Arguments of ``convergence.sequence`` for the study of ``plan``."""
-    sizes = plan.convergence_sizes
-    tasks = [(case, "inflation", order, "uniform", sizes[order]) for order in (1, 2)]
-    tasks += [(case, "compression", order, mesh, sizes[order]) for order in (1, 2) for mesh in ("uniform", "refined")]
-    return tasks
+    return convergence.tasks(case, plan)
 
 
 class _Progress:
