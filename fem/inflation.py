@@ -22,8 +22,7 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .continuation import follow
-from .kernel import volume as _volume
-from .model import FREE, Control, Model, fields
+from .model import FREE, Control, Model, forms
 from .newton import Tolerances
 from .steps import dome, land, solve
 
@@ -99,7 +98,7 @@ def _pressure(y: np.ndarray) -> float:
 
 def volume(model: Model, y: np.ndarray) -> float:
     """V(x) of the FREE state y."""
-    return _volume(model.ref, fields(model, y, FREE))
+    return forms(model, y, FREE).volume
 
 
 def _pressure_peak(along, a, m, b, rtol: float = 1e-7):

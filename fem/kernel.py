@@ -53,10 +53,9 @@ parametrised) and
 
 On element e (r = r_e + L_e t, t in [0, 1]) with the Gauss rule (w_q, t_q):
 int f v' dr = sum_q w_q f v'(t_q) and int g v dr = sum_q w_q L_e g v(t_q),
-where v' = dv/dt / L_e. Every field is an (elements, points) array, element
-vectors and matrices come out of small matrix products with the reference
-tables, and ``assemble`` adds them into the global vector or the banded
-matrix with strided slices (``reference`` explains the dof layout).
+where v' = dv/dt / L_e. ``evaluate`` runs these sums in one compiled pass
+over the elements (``loops``); ``fields`` interpolates the state at the
+points (vectorised) for the post-processing and the checks.
 Quadrature points lie inside the elements, so r > 0 wherever 1/r appears.
 """
 
@@ -66,14 +65,12 @@ import dataclasses
 
 import numpy as np
 
+from . import loops
 from .geometry import Placement
 from .material import MooneyRivlin
 from .reference import Reference
 
-__all__ = ["Fields", "Contact", "fields", "derivatives", "residual_vector", "tangent_matrices", "pressure_vector",
-           "radius_vector", "penalty_vectors", "volume", "plate_force", "assemble", "band_add"]
-
-TWO_PI = 2.0 * np.pi
+__all__ = ["Fields", "Contact", "Linear", "element_dofs", "fields", "evaluate"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -101,137 +98,49 @@ class Fields:
     pressure: float
 
 
-def _nodal(ref: Reference, u: np.ndarray, elements: int) -> np.ndarray:
-    """Element nodal values, shape (n, p + 1, 2)."""
-    p = ref.order
-    return u.reshape(-1, 2)[p * np.arange(elements)[:, None] + np.arange(p + 1)]
+@dataclasses.dataclass(frozen=True, eq=False)
+class Linear:
+    """The forms at one state: R, dR/dP, dR/da and the penalty's dF/dx (each (N,)), dF/dh, the plate
+    force F (penalty) and the volume V, and the element matrices (n, 2 (p + 1), 2 (p + 1)) of K."""
+
+    residual: np.ndarray
+    pressure: np.ndarray
+    radius: np.ndarray
+    force: np.ndarray
+    force_stiffness: float
+    plate_force: float
+    volume: float
+    matrices: np.ndarray
+
+
+def element_dofs(ref: Reference, u: np.ndarray, elements: int) -> np.ndarray:
+    """Element dofs as a read-only strided view of ``u``, shape (n, 2 (p + 1)) (no copy)."""
+    u = np.ascontiguousarray(u)
+    step = u.strides[0]
+    return np.lib.stride_tricks.as_strided(u, shape=(elements, ref.local), strides=(2 * ref.order * step, step),
+                                           writeable=False)
 
 
 def fields(ref: Reference, placement: Placement, u: np.ndarray, pressure: float) -> Fields:
     """The state with nodal dofs ``u`` (shape (2 (p n + 1),)) at the quadrature points."""
     lengths = placement.lengths
-    x = _nodal(ref, u, lengths.size)
-    rho, eta = x[:, :, 0] @ ref.phi.T, x[:, :, 1] @ ref.phi.T
-    drho, deta = (x[:, :, 0] @ ref.dphi.T) / lengths[:, None], (x[:, :, 1] @ ref.dphi.T) / lengths[:, None]
+    q = ref.weights.size
+    values = element_dofs(ref, u, lengths.size) @ ref.interp
+    rho, eta = values[:, :q], values[:, q:2 * q]
+    drho, deta = values[:, 2 * q:3 * q] / lengths[:, None], values[:, 3 * q:] / lengths[:, None]
     l1 = np.sqrt(drho**2 + deta**2)
     return Fields(placement.r, rho, eta, drho, deta, l1, rho / placement.r, lengths, pressure)
 
 
-def derivatives(material: MooneyRivlin, w: Fields) -> tuple:
-    """(w_1, w_2, w_11, w_12, w_22) at the quadrature points (``material``)."""
-    return material.derivatives(w.l1, w.l2)
-
-
-def _penalty(w: Fields, contact: Contact | None):
-    """(p_N, chi) at the quadrature points; zeros without a plate."""
-    if contact is None:
-        return 0.0, 0.0
-    trial = contact.multiplier + contact.penalty * (w.eta - contact.height)
-    chi = trial > 0.0
-    return np.where(chi, trial, 0.0), chi
-
-
-def _vector(ref: Reference, lengths, f0, f1, g0, g1) -> np.ndarray:
-    """Element vectors sum_q w_q (f_c v_c'(t_q) + L g_c v_c(t_q)), shape (n, 2 (p + 1))."""
-    wq = ref.weights
-    out = np.empty((lengths.size, ref.local))
-    scale = lengths[:, None] * wq
-    out[:, 0::2] = (f0 * wq) @ ref.dphi + (g0 * scale) @ ref.phi
-    out[:, 1::2] = (f1 * wq) @ ref.dphi + (g1 * scale if np.ndim(g1) else np.zeros_like(scale)) @ ref.phi
-    return out
-
-
-def residual_vector(ref: Reference, w: Fields, d: tuple, contact: Contact | None = None):
-    """Element vectors of R (module docstring), shape (n, 2 (p + 1)); ``d`` from ``derivatives``."""
-    w1, w2 = d[:2]
-    p_n, _ = _penalty(w, contact)
-    f0 = TWO_PI * w1 * w.drho / w.l1 * w.r
-    f1 = TWO_PI * w1 * w.deta / w.l1 * w.r + np.pi * w.pressure * w.rho**2
-    g0 = TWO_PI * (w2 + w.pressure * w.rho * w.deta)
-    g1 = TWO_PI * p_n * w.r if contact is not None else 0.0
-    return _vector(ref, w.lengths, f0, f1, g0, g1)
-
-
-def pressure_vector(ref: Reference, w: Fields) -> np.ndarray:
-    """Element vectors of dR/dP = -dV (module docstring)."""
-    zero = np.zeros_like(w.r)
-    return _vector(ref, w.lengths, zero, np.pi * w.rho**2, TWO_PI * w.rho * w.deta, 0.0)
-
-
-def radius_vector(ref: Reference, placement: Placement, w: Fields, d: tuple) -> np.ndarray:
-    """Element vectors of dR/da, the derivative along the ALE map (module docstring)."""
-    w1, w2, w11, w12, w22 = d
-    v, dv = placement.velocity, placement.stretch_rate[:, None]
-    common = TWO_PI * ((w1 - w.l2 * w12) * v - w11 * w.r * w.l1 * dv) / w.l1
-    g0 = TWO_PI * ((w2 - w.l1 * w12) * dv - w22 * w.l2 / w.r * v)
-    return _vector(ref, w.lengths, common * w.drho, common * w.deta, g0, 0.0)
-
-
-def penalty_vectors(ref: Reference, w: Fields, contact: Contact) -> tuple[np.ndarray, float]:
-    """(element vectors of dF/dx = -dR/dh, dF/dh) of the penalty plate."""
-    _, chi = _penalty(w, contact)
-    stiff = TWO_PI * contact.penalty * chi * w.r
-    zero = np.zeros_like(w.r)
-    return _vector(ref, w.lengths, zero, zero, zero, stiff), -float(np.sum(stiff * w.lengths[:, None] * ref.weights))
-
-
-def plate_force(ref: Reference, w: Fields, contact: Contact) -> float:
-    """Penalty plate force F = 2 pi int p_N r dr (units E T R)."""
-    p_n, _ = _penalty(w, contact)
-    return float(np.sum(TWO_PI * p_n * w.r * w.lengths[:, None] * ref.weights))
-
-
-def volume(ref: Reference, w: Fields) -> float:
-    """V = -pi int rho^2 eta' dr (units R^3)."""
-    return float(-np.pi * np.sum(w.rho**2 * w.deta * w.lengths[:, None] * ref.weights))
-
-
-def tangent_matrices(ref: Reference, w: Fields, d: tuple, contact: Contact | None = None):
-    """Element matrices of K (module docstring), shape (n, 2 (p + 1), 2 (p + 1))."""
-    w1, _, w11, w12, w22 = d
-    t0, t1 = w.drho / w.l1, w.deta / w.l1
-    along, across = TWO_PI * (w11 - w1 / w.l1) * w.r, TWO_PI * w1 / w.l1 * w.r
-    g00, g01, g11 = along * t0 * t0 + across, along * t0 * t1, along * t1 * t1 + across
-    m00, m01 = TWO_PI * w12 * t0, TWO_PI * (w12 * t1 + w.pressure * w.rho)
-    n00 = TWO_PI * (w22 / w.r + w.pressure * w.deta)
-    _, chi = _penalty(w, contact)
-    n11 = TWO_PI * contact.penalty * chi * w.r if contact is not None else None
-    wq, length = ref.weights, w.lengths[:, None]
-    k = ref.order + 1
-    t = ref.tables
-
-    def block(*terms):
-        coefficients = np.concatenate([c * wq for c, _ in terms], axis=1)
-        return (coefficients @ np.concatenate([t[name] for _, name in terms], axis=0)).reshape(-1, k, k)
-
-    out = np.empty((w.lengths.size, 2 * k, 2 * k))
-    # [test c, trial d]: G_dc dv_c' du_d' / L + M_dc dv_c' du_d + M_cd v_c du_d' + L N_dc v_c du_d
-    out[:, 0::2, 0::2] = block((g00 / length, "dd"), (m00, "dp"), (m00, "pd"), (n00 * length, "pp"))
-    out[:, 0::2, 1::2] = block((g01 / length, "dd"), (m01, "pd"))
-    out[:, 1::2, 0::2] = block((g01 / length, "dd"), (m01, "dp"))
-    terms = [(g11 / length, "dd")] + ([(n11 * length, "pp")] if n11 is not None else [])
-    out[:, 1::2, 1::2] = block(*terms)
-    return out
-
-
-def assemble(ref: Reference, element_vectors: np.ndarray) -> np.ndarray:
-    """The global vector (length 2 (p n + 1)) of element vectors of shape (n, 2 (p + 1))."""
-    p, n = ref.order, element_vectors.shape[0]
-    out = np.zeros((p * n + 1, 2))
-    for a in range(p + 1):
-        out[a: a + p * n: p] += element_vectors[:, 2 * a: 2 * a + 2]
-    return out.ravel()
-
-
-def band_add(ref: Reference, matrices: np.ndarray, band: np.ndarray, diagonal_row: int) -> None:
-    """Add element matrices (n, 2 (p + 1), 2 (p + 1)) into LAPACK band storage.
-
-    ``band[diagonal_row + i - j, j]`` holds A[i, j] (``diagonal_row`` = kl + ku for
-    ``dgbtrf``). Element e's block starts at global dof 2 p e.
-    """
-    p, n = ref.order, matrices.shape[0]
-    size = ref.local
-    columns = np.ascontiguousarray(matrices.transpose(2, 1, 0))  # [m, l, e]: one contiguous block per column
-    for m in range(size):
-        top = diagonal_row - m
-        band[top: top + size, m: m + 2 * p * n: 2 * p] += columns[m]
+def evaluate(material: MooneyRivlin, ref: Reference, placement: Placement, u: np.ndarray, pressure: float,
+             contact: Contact | None = None, tangent: bool = True) -> Linear:
+    """The forms of the module docstring at the state (``u``, P), with the element matrices if ``tangent``."""
+    n, q = placement.lengths.size, ref.weights.size
+    height, penalty, multiplier = (0.0, 0.0, 0.0) if contact is None else \
+        (contact.height, contact.penalty, contact.multiplier)
+    multiplier = np.broadcast_to(np.asarray(multiplier, dtype=float), (n, q))
+    out = loops.element_loop(np.ascontiguousarray(u, dtype=float), placement.vertices, ref.t, ref.weights, ref.phi,
+                             ref.dphi, float(pressure), float(material.alpha), float(height), float(penalty),
+                             np.ascontiguousarray(multiplier), float(placement.a or 0.0), tangent)
+    res, res_p, res_a, force_x, (force_h, force, volume), matrices = out
+    return Linear(res, res_p, res_a, force_x, float(force_h), float(force), float(volume), matrices)

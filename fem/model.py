@@ -48,14 +48,13 @@ import dataclasses
 
 import numpy as np
 
-from . import kernel
-from .banded import Bordered
+from . import banded, kernel
 from .geometry import Placement, place
 from .material import MooneyRivlin
 from .reference import Reference, reference
 
-__all__ = ["FREE", "PENALTY", "FITTED", "Control", "Model", "discretize", "placement", "fields", "split", "conform",
-           "residual", "linearize", "plate_force", "edge"]
+__all__ = ["FREE", "PENALTY", "FITTED", "Control", "Model", "discretize", "placement", "fields", "forms", "split",
+           "conform", "residual", "linearize", "plate_force", "edge"]
 
 FREE, PENALTY, FITTED = "free", "penalty", "fitted"
 _SCALARS = {FREE: 1, PENALTY: 2, FITTED: 3}
@@ -158,36 +157,37 @@ def fields(model: Model, y: np.ndarray, mode: str) -> kernel.Fields:
     return kernel.fields(model.ref, placement(model, y, mode), u, s[0])
 
 
+def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False) -> kernel.Linear:
+    """The forms at the state y (``kernel.evaluate``): R and its derivatives, the volume, the plate force."""
+    u, s = split(model, y)
+    return kernel.evaluate(model.material, model.ref, placement(model, y, mode), u, s[0],
+                           _contact(model, y, mode, multiplier), tangent)
+
+
 def plate_force(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> float:
     """Plate force F (units E T R): the penalty integral, or the reaction -sum_C R_j (FITTED)."""
-    if mode == PENALTY:
-        return kernel.plate_force(model.ref, fields(model, y, mode), _contact(model, y, mode, multiplier))
-    w = fields(model, y, mode)
-    full = kernel.assemble(model.ref, kernel.residual_vector(model.ref, w, kernel.derivatives(model.material, w)))
-    return -float(full[model.tied()].sum())
+    linear = forms(model, y, mode, multiplier)
+    return linear.plate_force if mode == PENALTY else -float(linear.residual[model.tied()].sum())
 
 
 def residual(model: Model, y: np.ndarray, mode: str, control: Control, multiplier=0.0) -> np.ndarray:
     """The residual [R with fixed rows zeroed, control rows], length ``len(y)``."""
-    w = fields(model, y, mode)
-    contact = _contact(model, y, mode, multiplier)
-    d = kernel.derivatives(model.material, w)
-    full = kernel.assemble(model.ref, kernel.residual_vector(model.ref, w, d, contact))
-    border = _border_residual(model, y, mode, control, w, full, contact)
+    linear = forms(model, y, mode, multiplier)
+    full = linear.residual.copy()
+    border = _border_residual(model, y, mode, control, linear)
     full[model.fixed(mode)] = 0.0
     return np.concatenate([full, border])
 
 
-def _border_residual(model, y, mode, control, w, full, contact) -> np.ndarray:
+def _border_residual(model, y, mode, control, linear) -> np.ndarray:
     u, s = split(model, y)
-    rows = [s[0] / control.pressure - 1.0 if control.pressure is not None
-            else kernel.volume(model.ref, w) / control.volume - 1.0]
+    rows = [s[0] / control.pressure - 1.0 if control.pressure is not None else linear.volume / control.volume - 1.0]
     if mode == PENALTY:
         rows.append(s[1] - control.height if control.height is not None
-                    else (kernel.plate_force(model.ref, w, contact) - control.force) / control.scale)
+                    else (linear.plate_force - control.force) / control.scale)
     elif mode == FITTED:
         pa = np.pi * s[0] * u[edge(model)] ** 2
-        rows.append((full[model.tied()].sum() + pa) / control.scale)
+        rows.append((linear.residual[model.tied()].sum() + pa) / control.scale)
         if control.height is not None:
             rows.append(s[1] - control.height)
         elif control.radius is not None:
@@ -198,41 +198,29 @@ def _border_residual(model, y, mode, control, w, full, contact) -> np.ndarray:
 
 
 def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multiplier=0.0):
-    """(residual, the bordered tangent ``banded.Bordered``) at y."""
-    ref, mat = model.ref, model.material
+    """(residual, the bordered tangent: ``banded.system``) at y."""
     u, s = split(model, y)
-    n, kl, m = model.dofs, model.kl, _SCALARS[mode]
-    place_ = placement(model, y, mode)
-    w = kernel.fields(ref, place_, u, s[0])
-    contact = _contact(model, y, mode, multiplier)
-    d = kernel.derivatives(mat, w)
-    full = kernel.assemble(ref, kernel.residual_vector(ref, w, d, contact))
-    border = _border_residual(model, y, mode, control, w, full, contact)
+    n, m = model.dofs, _SCALARS[mode]
+    linear = forms(model, y, mode, multiplier, tangent=True)
+    border = _border_residual(model, y, mode, control, linear)
     fixed = model.fixed(mode)
+    full = linear.residual.copy()
     full[fixed] = 0.0
-    matrices = kernel.tangent_matrices(ref, w, d, contact)
-    band = np.zeros((3 * kl + 1, n))
-    kernel.band_add(ref, matrices, band, 2 * kl)
-    rp = kernel.assemble(ref, kernel.pressure_vector(ref, w))  # dR/dP = -dV
+    matrices, rp = linear.matrices, linear.pressure  # dR/dP = -dV
     columns, rows = [rp], [-rp / control.volume if control.pressure is None else np.zeros(n)]
     corner = np.zeros((m, m))
     corner[0, 0] = 1.0 / control.pressure if control.pressure is not None else 0.0
     if mode == PENALTY:
-        df, dfdh = kernel.penalty_vectors(ref, w, contact)
-        df = kernel.assemble(ref, df)
-        columns.append(-df)
+        columns.append(-linear.force)
         if control.height is not None:
             rows.append(np.zeros(n))
             corner[1, 1] = 1.0
         else:
-            rows.append(df / control.scale)
-            corner[1, 1] = dfdh / control.scale
+            rows.append(linear.force / control.scale)
+            corner[1, 1] = linear.force_stiffness / control.scale
     elif mode == FITTED:
         tied, e = model.tied(), edge(model)
-        ones = np.zeros(n)
-        ones[tied] = 1.0
-        k_c = _column(model, matrices, ones)
-        r_a = kernel.assemble(ref, kernel.radius_vector(ref, place_, w, d))
+        k_c, r_a = _tied_column(model, matrices), linear.radius
         pa_u = np.zeros(n)
         pa_u[e] = 2.0 * np.pi * s[0] * u[e]
         columns += [k_c, r_a]
@@ -251,23 +239,17 @@ def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multipli
     b, c = np.stack(columns, axis=1), np.stack(rows, axis=0)
     b[fixed] = 0.0
     c[:, fixed] = 0.0
-    _identity(band, fixed, kl)
-    return np.concatenate([full, border]), Bordered(band, kl, b, c, corner)
+    banded.constrain(matrices, 2 * model.order, fixed)
+    return np.concatenate([full, border]), banded.system(matrices, model.order, b, c, corner)
 
 
-def _column(model: Model, matrices: np.ndarray, vector: np.ndarray) -> np.ndarray:
-    """K @ vector from the element matrices."""
-    ref = model.ref
-    local = vector.reshape(-1, 2)[ref.order * np.arange(model.elements)[:, None] + np.arange(ref.order + 1)]
-    return kernel.assemble(ref, np.einsum("nij,nj->ni", matrices, local.reshape(model.elements, -1)))
-
-
-def _identity(band: np.ndarray, dofs: np.ndarray, kl: int) -> None:
-    """Replace the rows and columns of ``dofs`` by those of the identity (gbtrf storage, kl = ku)."""
-    n = band.shape[1]
-    band[:, dofs] = 0.0
-    for d in range(-kl, kl + 1):  # row j, column j + d
-        cols = dofs + d
-        ok = (cols >= 0) & (cols < n)
-        band[2 * kl - d, cols[ok]] = 0.0
-    band[2 * kl, dofs] = 1.0
+def _tied_column(model: Model, matrices: np.ndarray) -> np.ndarray:
+    """k_C = K 1_C from the two elements that hold the tied dofs (the contact element and the next)."""
+    local = np.zeros((2, model.ref.local))
+    local[0, 1::2] = 1.0  # every eta dof of the contact element
+    local[1, 1] = 1.0  # the edge vertex's eta dof, first in the next element
+    out = np.zeros(model.dofs)
+    for e in range(2):
+        start = 2 * model.order * e
+        out[start: start + model.ref.local] += matrices[e] @ local[e]
+    return out

@@ -35,8 +35,7 @@ from scipy.optimize import brentq
 
 from pocket.core.states import Profile
 
-from . import kernel
-from .model import Model, fields, placement, split
+from .model import Model, forms, placement, split
 
 __all__ = ["vertices", "reaction", "pole_stretch", "clamp_stretch", "volume", "profile", "R_FIT"]
 
@@ -52,10 +51,7 @@ def vertices(model: Model, y: np.ndarray, mode: str) -> tuple[np.ndarray, np.nda
 
 def reaction(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> np.ndarray:
     """The residual R at every nodal dof, fixed ones included (their reactions)."""
-    contact = kernel.Contact(y[model.dofs + 1], model.penalty, multiplier) if mode == "penalty" else None
-    w = fields(model, y, mode)
-    return kernel.assemble(model.ref, kernel.residual_vector(model.ref, w, kernel.derivatives(model.material, w),
-                                                            contact))
+    return forms(model, y, mode, multiplier).residual
 
 
 def pole_stretch(model: Model, y: np.ndarray, mode: str) -> float:
@@ -78,7 +74,7 @@ def clamp_stretch(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> flo
 
 def volume(model: Model, y: np.ndarray, mode: str) -> float:
     """V(x)."""
-    return kernel.volume(model.ref, fields(model, y, mode))
+    return forms(model, y, mode).volume
 
 
 def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float,

@@ -9,9 +9,12 @@ tangent banded (half-bandwidth 2p + 1) and lets the assembly add whole element
 arrays with strided slices.
 
 The shape functions are scikit-fem's (``ElementLineP1``/``ElementLineP2``,
-reordered along r) and the rule is scikit-fem's Gauss-Legendre rule with p + 2
-points (exact for polynomials of degree 2p + 3): its error in the energy is
+reordered along r) and the rule is scikit-fem's Gauss-Legendre rule with p + 1
+points (exact for polynomials of degree 2p + 1): its error in the energy is
 O(h^(2p+2)), below the O(h^(2p)) discretisation error of smooth functionals.
+
+``interp`` maps the element dofs (n, 2 (p + 1)) to rho, eta, drho/dt, deta/dt
+at the Q points in one matrix product (``kernel.fields``).
 """
 
 from __future__ import annotations
@@ -34,9 +37,7 @@ class Reference:
     t, weights: quadrature points and weights on [0, 1], shape (Q,).
     phi, dphi: shape functions and their t-derivatives at the points, shape (Q, p + 1).
     nodes: the local nodes' positions in t, shape (p + 1,).
-    tables: products of shape functions at the points, shape (Q, (p + 1)^2) each:
-    ``dd`` = dphi_a dphi_b, ``dp`` = dphi_a phi_b, ``pd`` = phi_a dphi_b, ``pp`` = phi_a phi_b
-    (a the test function, b the trial one).
+    interp: the table of the module docstring, shape (2 (p + 1), 4 Q).
     """
 
     order: int
@@ -45,7 +46,7 @@ class Reference:
     phi: np.ndarray
     dphi: np.ndarray
     nodes: np.ndarray
-    tables: dict
+    interp: np.ndarray
 
     @property
     def local(self) -> int:
@@ -63,11 +64,14 @@ def reference(order: int) -> Reference:
     """The reference tables of P``order`` (1 or 2)."""
     element, along = _ALONG_R[order]
     e = element()
-    points, weights = get_quadrature(e.refdom, 2 * order + 3)
+    points, weights = get_quadrature(e.refdom, 2 * order + 1)
+    weights = np.asarray(weights, dtype=float)
     phi = np.stack([e.lbasis(points, i)[0] for i in along], axis=-1)
     dphi = np.stack([e.lbasis(points, i)[1][0] for i in along], axis=-1)
     nodes = np.asarray(e.doflocs)[list(along), 0]
-    k = order + 1
-    pairs = {"dd": (dphi, dphi), "dp": (dphi, phi), "pd": (phi, dphi), "pp": (phi, phi)}
-    tables = {name: (a[:, :, None] * b[:, None, :]).reshape(-1, k * k) for name, (a, b) in pairs.items()}
-    return Reference(order, points[0].copy(), np.asarray(weights, dtype=float), phi, dphi, nodes, tables)
+    q, k = weights.size, order + 1
+    interp = np.zeros((2 * k, 4 * q))
+    for c in range(2):
+        interp[c::2, c * q:(c + 1) * q] = phi.T
+        interp[c::2, (2 + c) * q:(3 + c) * q] = dphi.T
+    return Reference(order, points[0].copy(), weights, phi, dphi, nodes, interp)

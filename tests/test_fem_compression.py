@@ -61,11 +61,12 @@ def test_volume_is_conserved(default_curve):
 
 def test_force_is_pressure_times_contact_area(default_curve):
     """The plate reaction (the flux through the first free element) and P A_c (the pressure times
-    the deformed area pi rho(a)^2) both equal the force to 1e-10."""
+    the deformed area pi rho(a)^2) both equal the force to 1e-9 (the Newton tolerance on the plate's
+    rows is 1e-10 of the force)."""
     for state in default_curve:
-        assert state.extra["force_reaction"] == pytest.approx(state.force, rel=1e-10)
-        assert state.extra["force_pressure_area"] == pytest.approx(state.force, rel=1e-10)
-        assert state.contact_area == pytest.approx(state.force / state.pressure_ratio, rel=1e-10)
+        assert state.extra["force_reaction"] == pytest.approx(state.force, rel=1e-9)
+        assert state.extra["force_pressure_area"] == pytest.approx(state.force, rel=1e-9)
+        assert state.contact_area == pytest.approx(state.force / state.pressure_ratio, rel=1e-9)
 
 
 def test_plate_carries_the_fluid_pressure(default_curve):
