@@ -15,8 +15,9 @@ partial pivoting; cost O(N kl^2) and storage O(N kl)):
 
 The bordered matrix is regular at a pressure maximum even where A alone is
 nearly singular (A is the stiffness at fixed pressure), and the elimination
-then loses digits; one or two steps of iterative refinement with the whole
-matrix recover them (the correction reuses both factorisations). An exactly
+then loses digits in x = z - W y (W y much larger than x); when that
+cancellation exceeds 1e4, the solve is checked against the whole matrix and
+refined by one or two steps (the correction reuses both factorisations). An exactly
 singular A, or a refinement that does not converge, falls back to a sparse
 LU of the whole bordered matrix (SuperLU); a singular bordered matrix is
 ``SingularSystem``.
@@ -57,6 +58,7 @@ __all__ = ["Bordered", "Condensed", "SingularSystem", "matvec", "band", "constra
 
 _REFINE = 2  # iterative-refinement steps at most
 _ACCURATE = 1e-8  # residual of the linear solve, relative to the right-hand side, that needs no refinement
+_CANCELLATION = 1e4  # x = z - W y losing more digits than this is checked and refined
 
 
 class SingularSystem(ArithmeticError):
@@ -117,28 +119,35 @@ class Bordered:
         """The matrix times (x, y)."""
         return matvec(self.band, self.kl, self.kl, x) + self.B @ y, self.C @ x + self.D @ y
 
-    def _factor(self):
+    def _factor(self, r: np.ndarray | None = None):
+        """Factor A and solve A [z, W] = [r, B] in one sweep; returns the LU (False if A is singular) and z."""
         if self._lu is None:
             lu, piv, info = lapack.dgbtrf(self.band, self.kl, self.kl)
             if info != 0:
                 self._lu = False
-            else:
-                self._lu = (lu, piv)
-                self._w = self._a_solve(self.B)
-                self._schur = self.D - self.C @ self._w
-                if not np.all(np.isfinite(self._schur)) or np.linalg.cond(self._schur) > 1e15:
-                    self._lu = False
-        return self._lu
+                return False, None
+            self._lu = (lu, piv)
+            both = self._a_solve(self.B if r is None else np.column_stack([self.B, r]))
+            self._w, z = (both, None) if r is None else (both[:, :-1], both[:, -1])
+            self._schur = self.D - self.C @ self._w
+            if not np.all(np.isfinite(self._schur)) or np.linalg.cond(self._schur) > 1e15:
+                self._lu = False
+            return self._lu, z
+        return self._lu, None
 
     def _a_solve(self, rhs: np.ndarray) -> np.ndarray:
         lu, piv = self._lu
         out, info = lapack.dgbtrs(lu, self.kl, self.kl, rhs, piv)
         return out
 
-    def _eliminate(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        z = self._a_solve(r)
+    def _eliminate(self, r: np.ndarray, s: np.ndarray, z: np.ndarray | None = None):
+        """(x, y, cancellation): cancellation = max |W y| / max |x|, large when A is nearly singular;
+        ``z`` = A^-1 r if known."""
+        z = self._a_solve(r) if z is None else z
         y = np.linalg.solve(self._schur, s - self.C @ z)
-        return z - self._w @ y, y
+        wy = self._w @ y
+        x = z - wy
+        return x, y, np.abs(wy).max(initial=0.0) / max(np.abs(x).max(initial=0.0), 1e-300)
 
     def solve(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(x, y) solving the system for the right-hand side (r, s)."""
@@ -146,15 +155,18 @@ class Bordered:
             return self._solve(r, s)
 
     def _solve(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        if self._factor():
-            x, y = self._eliminate(r, s)
+        lu, z = self._factor(r)
+        if lu:
+            x, y, cancellation = self._eliminate(r, s, z)
+            if cancellation < _CANCELLATION and np.all(np.isfinite(x)):
+                return x, y
             scale = max(np.abs(r).max(initial=0.0), np.abs(s).max(initial=0.0), 1e-300)
             for _ in range(_REFINE + 1):
                 ax, cy = self.apply(x, y)
                 e_r, e_s = r - ax, s - cy
                 if max(np.abs(e_r).max(initial=0.0), np.abs(e_s).max(initial=0.0)) <= _ACCURATE * scale:
                     return x, y
-                dx, dy = self._eliminate(e_r, e_s)
+                dx, dy, _ = self._eliminate(e_r, e_s)
                 x, y = x + dx, y + dy
             if np.all(np.isfinite(x)) and np.all(np.isfinite(y)):
                 ax, cy = self.apply(x, y)

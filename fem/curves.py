@@ -63,6 +63,11 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, forces, tol: Tolerance
         if fhat == 0.0:
             states.append(results.uncompressed(inflated, FITTED))
         else:
+            if fhat < fitted.SMALLEST_FORCE:
+                raise ConvergenceError(
+                    f"force = {fhat!r} is below the smallest force the edge-fitted finite elements resolve "
+                    f"({fitted.SMALLEST_FORCE:g}): the plate's balance is lost in round-off (the shooting solver "
+                    "resolves it)")
             force = fhat * np.pi * p_i
             if not history:
                 a0 = _first_radius(model, inflated, fhat)

@@ -32,9 +32,12 @@ from .model import FITTED, Control, Model
 from .newton import Tolerances
 from .steps import solve
 
-__all__ = ["touch", "first_contact", "force_path", "height_path", "plate_force_of", "A_FIRST"]
+__all__ = ["touch", "first_contact", "force_path", "height_path", "plate_force_of", "A_FIRST", "SMALLEST_FORCE"]
 
 A_FIRST = 0.05  # largest contact radius of the first contact state
+#: smallest force Fhat solved: below it the plate's balance, a difference of nodal forces of the
+#: first free element, is lost in their round-off (measured: 1e-8 fails on fine meshes at Phat_I = 1.5)
+SMALLEST_FORCE = 1e-7
 _HALVINGS = 6
 
 

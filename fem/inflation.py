@@ -101,17 +101,30 @@ def volume(model: Model, y: np.ndarray) -> float:
     return forms(model, y, FREE).volume
 
 
+def _reach(along, known, s):
+    """The state at log V = s: Newton from the nearest known state, else stepping from it; (y, iterations)."""
+    s_near, y_near = min(known, key=lambda item: abs(item[0] - s))
+    try:
+        return along(s, y_near)
+    except ConvergenceError:
+        total, y = 0, y_near
+        for _, y, iterations in follow(along, y_near, s_near, s, name="log(V/R^3)"):
+            total += iterations
+        return y, total
+
+
 def _pressure_peak(along, a, m, b, rtol: float = 1e-7):
     """Golden-section search for max P(log V) in [a, b], P(m) >= P(a), P(b).
 
     Returns ((log V, y) at the peak, iterations).
     """
     (lo, _), best, (hi, _) = a, m, b
-    total = 0
+    known, total = [a, m, b], 0
     while hi - lo > rtol:
         s1, s2 = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
-        y1, k1 = along(s1, best[1])
-        y2, k2 = along(s2, best[1])
+        y1, k1 = _reach(along, known, s1)
+        y2, k2 = _reach(along, known, s2)
+        known += [(s1, y1), (s2, y2)]
         total += k1 + k2
         if y1[-1] >= y2[-1]:
             hi, cand = s2, (s1, y1)

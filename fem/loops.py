@@ -14,7 +14,9 @@ the vertex band (``banded``'s docstring gives the algebra); ``condense_rhs``
 and ``expand`` do the same for a right-hand side and back-substitute.
 
 Compiled once per installation (``cache=True``, in ``__pycache__``): a cold
-start costs a few seconds, later imports a fraction of one.
+start costs a few seconds, later imports a fraction of one. Arithmetic
+follows numpy's rules (``error_model="numpy"``): a division by zero gives an
+infinity that the Newton iteration rejects, not an exception.
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ __all__ = ["element_loop", "condense", "condense_rhs", "expand"]
 TWO_PI = 2.0 * np.pi
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _material(alpha, a, b):
     """(w_1, w_2, w_11, w_12, w_22) of the Mooney-Rivlin membrane (``material.MooneyRivlin.derivatives``)."""
     s = 1.0 / (6.0 * (1.0 + alpha))
@@ -42,7 +44,7 @@ def _material(alpha, a, b):
     return w1, w2, w11, w12, w22
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty, multiplier, radius, tangent):
     """One pass over the elements.
 
@@ -140,7 +142,7 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty
 _VERTEX = (0, 1, 4, 5)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def condense(matrices, border_columns, border_rows):
     """Static condensation of the P2 midpoint dofs (``banded``'s docstring).
 
@@ -198,7 +200,7 @@ def condense(matrices, border_columns, border_rows):
     return True, band, b_v, c_v, d, inv, x, y
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def condense_rhs(r, s, matrices, border_rows, inv):
     """(r_v, s', z = K_mm^-1 r_m) of the right-hand side (r (N,), s (m,)), with ``condense``'s K_mm^-1."""
     n = inv.shape[0]
@@ -218,7 +220,7 @@ def condense_rhs(r, s, matrices, border_rows, inv):
     return r_v, s_out, z
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def expand(x_v, y, z, x, ymid):
     """The whole solution (N,) from the vertex one: x_m = z - K_mm^-1 K_mv x_v - K_mm^-1 B_m y."""
     n = z.shape[0]

@@ -69,9 +69,12 @@ def newton(linearize: Callable, y0: np.ndarray, tol: Tolerances = Tolerances(),
     ``increment(y, dx, ds)`` assembles dy from the solver's (nodal, scalar) parts;
     ``scales``: what the increments are measured against (module docstring).
     """
-    y = np.array(y0, dtype=float)
-    with np.errstate(all="ignore"):
-        r, system = linearize(y)
+    with np.errstate(all="ignore"):  # overflow and invalid values are caught as non-finite numbers
+        return _iterate(linearize, np.array(y0, dtype=float), tol, increment, scales)
+
+
+def _iterate(linearize, y, tol, increment, scales) -> Result:
+    r, system = linearize(y)
     history, r_prev, k = [], np.inf, 0
     for k in range(1, tol.max_iterations + 1):
         if not _finite(r):
@@ -93,8 +96,7 @@ def newton(linearize: Callable, y0: np.ndarray, tol: Tolerances = Tolerances(),
         merit, step = np.linalg.norm(r), 1.0
         for _ in range(tol.max_halvings + 1):
             trial = y + step * dy
-            with np.errstate(all="ignore"):
-                r_trial, system_trial = linearize(trial)
+            r_trial, system_trial = linearize(trial)
             if _finite(r_trial) and np.linalg.norm(r_trial) <= (1.0 - 1e-4 * step) * merit:
                 break
             step *= 0.5
@@ -102,8 +104,7 @@ def newton(linearize: Callable, y0: np.ndarray, tol: Tolerances = Tolerances(),
             if r_max > _FLOOR * tol.residual:
                 break
             trial = y + dy  # at round-off level the merit need not decrease
-            with np.errstate(all="ignore"):
-                r_trial, system_trial = linearize(trial)
+            r_trial, system_trial = linearize(trial)
         y, r, system = trial, r_trial, system_trial
     res = float(np.abs(r).max()) if _finite(r) else float("nan")
     raise ConvergenceError(f"Newton failed after {k} iterations, residual {res:.3e}", iterations=k, residual=res)
