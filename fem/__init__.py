@@ -36,8 +36,8 @@ DEFAULT_ELEMENTS = 256
 #: elements of the default mesh with P1 elements: P1's error falls as h^2, not h^4, and 4 times the
 #: elements keep it near 1e-6 (the cost of 1024 P1 elements is that of 512 P2 ones)
 DEFAULT_ELEMENTS_P1 = 1024
-#: most elements a solve may ask for: bounds the memory (about 2 kB per element) and the time
-#: (about 1 ms per element for a compressed state) a case file can ask for
+#: most elements a solve may ask for: bounds the memory and the time a case file can ask for (measured
+#: at 1e6 on this 2-core machine: a compressed state in 90 s, 57 Newton iterations, 3.9 GB at the peak)
 MAX_ELEMENTS = 1_000_000
 #: fewest elements: the pole stretch is fitted to three vertices off the axis
 MIN_ELEMENTS = 4

@@ -45,11 +45,17 @@ MIN_LENGTH = 1e-10
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
-    """The default mesh family, ``meshes.polar(elements, power=POLAR_POWER)``; without ``elements``
-    the default mesh of P``order``: DEFAULT_ELEMENTS (P2) or DEFAULT_ELEMENTS_P1 (P1) elements."""
+    """The default mesh family, ``meshes.polar(elements, power)``; without ``elements`` the default
+    mesh of P``order``: DEFAULT_ELEMENTS (P2) or DEFAULT_ELEMENTS_P1 (P1) elements.
+
+    The power is POLAR_POWER up to 1585 elements; beyond, 8 / log10(elements), so that the first
+    element, about power / elements^power long, stays above 1e-8 R (the pole stretch on so fine a
+    mesh is accurate to 1e-12 with any grading, and a shorter first element would only carry
+    round-off: a nodal value's 1e-16 R over its radius).
+    """
     if elements is None:
         elements = DEFAULT_ELEMENTS if order == 2 else DEFAULT_ELEMENTS_P1
-    return meshes.polar(elements, power=POLAR_POWER)
+    return meshes.polar(elements, power=min(POLAR_POWER, 8.0 / np.log10(elements)))
 
 
 def _usable(nodes: np.ndarray, where: str) -> np.ndarray:
@@ -72,7 +78,8 @@ def _nodes(mesh, elements, order) -> np.ndarray:
     if mesh is not None and elements is not None:
         raise InputError("give either mesh or elements, not both")
     if mesh is None:
-        return default_mesh(None if elements is None else SOLVER.option("elements").checked(elements), order)
+        nodes = default_mesh(None if elements is None else SOLVER.option("elements").checked(elements), order)
+        return _usable(nodes, "default mesh")
     nodes = meshes.read(mesh) if isinstance(mesh, (str, pathlib.PurePath)) else meshes.check(mesh, "mesh")
     SOLVER.option("elements").checked(nodes.size - 1, lambda _: "mesh elements")
     return _usable(nodes, "mesh" if not isinstance(mesh, (str, pathlib.PurePath)) else str(mesh))

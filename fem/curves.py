@@ -8,6 +8,8 @@ natural parameter, the contact radius grows about linearly in it). All
 states share the reference mesh, so their unknown vectors extrapolate
 directly. If that solve fails or leaves the model, the force is reached by
 stepping (``fitted.force_path``) from the last state, which cuts its steps.
+A force below ``fitted.SMALLEST_FORCE`` is not attempted (``ConvergenceError``
+saying why): the plate's balance at the edge would be lost in round-off.
 
 Penalty contact. The plate is lowered to the first force under height
 control, then each force follows under force control, with

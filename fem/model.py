@@ -9,8 +9,8 @@ identity in the tangent and zero in the residual.
 control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
 
 ``PENALTY`` (fixed mesh, penalty plate at height h), s = [P, h]: R includes
-the plate pressure (``kernel``); control rows V - V_I and h - h* (plate
-height) or F(U, h) - F* (plate force F = 2 pi int p_N r dr).
+the plate pressure (``kernel``); control rows V / V_I - 1 and h - h* (plate
+height) or (F(U, h) - F*) / F* (plate force F = 2 pi int p_N r dr).
 
 ``FITTED`` (edge-fitted mesh, exact contact), s = [P, h, a]. The first element
 is the contact zone [0, a] (``geometry``): its eta dofs (the set C) are tied to
@@ -26,9 +26,11 @@ so the line force vanishes iff
     T(y) = sum_C R_j + pi P U_E^2 = 0,      U_E = rho(a) (the dof of vertex 1).
 
 Unlike the energy's derivative in a, which vanishes quadratically there (a
-configurational force ~ (line force)^2), T has a simple root. Rows: V - V_I,
-T, and one control: h - h* (plate height), a - a* (contact radius) or
-pi P U_E^2 - F* (plate force: with T = 0 it is F_plate = F*).
+configurational force ~ (line force)^2), T has a simple root. Rows:
+V / V_I - 1, T / F_s, and one control: h - h* (plate height), a - a* (contact
+radius) or (pi P U_E^2 - F*) / F_s (plate force: with T = 0 it is
+F_plate = F*); F_s is the plate force the rows are measured against
+(``Control.scale``), so that the Newton tolerance is relative to it.
 
 Tangent (``kernel`` for K, dR/dP, dR/da; k_C = K 1_C the column of h, before
 the tied rows and columns are removed):
@@ -38,8 +40,10 @@ the tied rows and columns are removed):
     [ k_C^T + 2 pi P U_E e_E    1_C.dR/dP + pi U_E^2   1_C.k_C   1_C.dR/da ] [dh]
     [ control row                                         ] [da]
 
-(dV does not depend on a: the volume is a property of the curve.) The
-increment of the tied dofs is dh.
+(dV does not depend on a: the volume is a property of the curve; the rows
+carry the scalings above.) The increment of the tied dofs is dh. The prescribed
+and tied dofs' rows and columns are cleared in the element matrices, which
+``banded.system`` condenses (P2) and factors.
 """
 
 from __future__ import annotations

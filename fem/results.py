@@ -74,7 +74,7 @@ def _check_common(model: Model, y: np.ndarray, mode: str, state, where: str, vol
     smallest = min(float(w.l1.min()), float(w.l2.min()), float(state.profile.stretch_1.min()),
                    float(state.profile.stretch_2.min()))
     if smallest <= 0.0:
-        _fail(where, f"a stretch {smallest:.3g} <= 0 (a folded or inverted element)")
+        _fail(where, f"a stretch {smallest:.3g} <= 0 (the meridian degenerate or through the axis)")
     if abs(state.profile.rho[-1] - 1.0) > 1e-14:
         _fail(where, f"rho(1) = {state.profile.rho[-1]!r}, not 1 (lambda_2(1) = 1)")
     if abs(state.volume / volume_target - 1.0) > CONSISTENCY:

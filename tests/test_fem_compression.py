@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from pocket import fem, meshes, shooting
-from pocket.core.errors import OutOfRangeError
+from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.states import CompressedState
 
 KEYS = CompressedState.KEYS[3:]  # the solved-for scalars (alpha, Phat_I and Fhat are inputs)
@@ -168,3 +168,29 @@ def test_penalty_and_fitted_agree_on_a_fine_mesh():
     fitted = fem.compress(ALPHA, P_I, 0.19, elements=64)
     unfitted = fem.compress(ALPHA, P_I, 0.19, mesh=meshes.uniform(200), contact="penalty")
     assert max(_diffs(unfitted, fitted).values()) < 1e-5, _diffs(unfitted, fitted)
+
+
+@pytest.mark.parametrize("contact", ["fitted", "penalty"])
+def test_first_contact_at_a_small_force_is_quiet(contact):
+    """Fhat = 0.0027, where the fixed-mesh Newton used to meet a singular matrix (scipy's
+    MatrixRankWarning): no warning of any kind, and the state agrees with shooting (1e-6; the penalty
+    method's edge element limits it)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        state = fem.compress(0.3, 0.3, 0.0027, elements=64, contact=contact)
+    ref = shooting.compress(0.3, 0.3, 0.0027)
+    assert max(_diffs(state, ref).values()) < 1e-6, _diffs(state, ref)
+
+
+def test_a_state_failing_its_own_check_is_not_returned():
+    """An inflated unknown vector whose meridian crosses the axis (rho < 0 at vertex 2: a negative hoop
+    stretch) given to the state builder is a ConvergenceError naming the check, never a state."""
+    from pocket.fem import inflation, model, results
+    from pocket.fem.newton import Tolerances
+
+    m = model.discretize(0.3, fem.default_mesh(8), 2, 1e5)
+    y, _ = inflation.to_pressure(m, 0.3, Tolerances())
+    y = y.copy()
+    y[8] = -0.01  # rho at node 4, vertex 2
+    with pytest.raises(ConvergenceError, match="fails its own check: a stretch"):
+        results.inflated(m, y, 1, pressure=0.3)
