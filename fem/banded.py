@@ -54,7 +54,7 @@ from scipy.linalg import lapack
 
 from . import loops
 
-__all__ = ["Bordered", "Condensed", "SingularSystem", "matvec", "band", "constrain", "system"]
+__all__ = ["Bordered", "Condensed", "SingularSystem", "matvec", "band", "constrain", "system", "Buffers"]
 
 _REFINE = 2  # iterative-refinement steps at most
 _ACCURATE = 1e-8  # residual of the linear solve, relative to the right-hand side, that needs no refinement
@@ -102,47 +102,78 @@ def constrain(matrices: np.ndarray, period: int, dofs) -> np.ndarray:
     return matrices
 
 
+def _refined(first, eliminate, apply, r: np.ndarray, s: np.ndarray):
+    """(x, y) from ``first`` = ``eliminate(r, s)`` = (x, y, cancellation), checked against ``apply`` and
+    refined when the elimination cancelled more than _CANCELLATION; None if it does not reach 1e-8."""
+    x, y, cancellation = first
+    if cancellation < _CANCELLATION and np.all(np.isfinite(x)) and np.all(np.isfinite(y)):
+        return x, y
+    scale = max(np.abs(r).max(initial=0.0), np.abs(s).max(initial=0.0), 1e-300)
+    for _ in range(_REFINE + 1):
+        ax, cy = apply(x, y)
+        e_r, e_s = r - ax, s - cy
+        error = max(np.abs(e_r).max(initial=0.0), np.abs(e_s).max(initial=0.0))
+        if error <= _ACCURATE * scale:
+            return x, y
+        dx, dy, _ = eliminate(e_r, e_s)
+        x, y = x + dx, y + dy
+    ax, cy = apply(x, y)
+    ok = np.all(np.isfinite(x)) and np.all(np.isfinite(y))
+    return (x, y) if ok and max(np.abs(r - ax).max(), np.abs(s - cy).max(initial=0.0)) <= 1e-8 * scale else None
+
+
 @dataclasses.dataclass(eq=False)
 class Bordered:
-    """The system above: ``band`` (A in gbtrf storage, (2 kl + ku + 1, N)), B (N, m), C (m, N), D (m, m)."""
+    """The system above: ``band`` (A in gbtrf storage, (2 kl + ku + 1, N)), B (N, m), C (m, N), D (m, m).
+
+    With a ``workspace`` (a dict) the band is factored in place and the solves written into the
+    workspace's arrays: the band is then consumed, and checking a solve is left to the caller.
+    """
 
     band: np.ndarray
     kl: int
     B: np.ndarray
     C: np.ndarray
     D: np.ndarray
+    workspace: dict | None = None
 
     def __post_init__(self):
         self._lu = None
 
     def apply(self, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The matrix times (x, y)."""
+        """The matrix times (x, y) (before the band is factored in place)."""
         return matvec(self.band, self.kl, self.kl, x) + self.B @ y, self.C @ x + self.D @ y
 
-    def _factor(self, r: np.ndarray | None = None):
-        """Factor A and solve A [z, W] = [r, B] in one sweep; returns the LU (False if A is singular) and z."""
-        if self._lu is None:
-            lu, piv, info = lapack.dgbtrf(self.band, self.kl, self.kl)
-            if info != 0:
-                self._lu = False
-                return False, None
-            self._lu = (lu, piv)
-            both = self._a_solve(self.B if r is None else np.column_stack([self.B, r]))
-            self._w, z = (both, None) if r is None else (both[:, :-1], both[:, -1])
-            self._schur = self.D - self.C @ self._w
-            if not np.all(np.isfinite(self._schur)) or np.linalg.cond(self._schur) > 1e15:
-                self._lu = False
-            return self._lu, z
-        return self._lu, None
+    def _factor(self, r: np.ndarray):
+        """Factor A and solve A [W, z] = [B, r] in one sweep; returns the LU (False if A is singular) and z."""
+        if self._lu is not None:
+            return self._lu, None
+        lu, piv, info = lapack.dgbtrf(self.band, self.kl, self.kl, overwrite_ab=self.workspace is not None)
+        if info != 0:
+            self._lu = False
+            return False, None
+        self._lu = (lu, piv)
+        m = self.B.shape[1]
+        block = Buffers(self.workspace)("rhs", (m + 1, r.size)).T  # column-major (N, m + 1)
+        block[:, :m], block[:, m] = self.B, r
+        both, _ = lapack.dgbtrs(lu, self.kl, self.kl, block, piv, overwrite_b=1)
+        self._w, z = both[:, :m], both[:, m]
+        self._schur = self.D - self.C @ self._w
+        if not np.all(np.isfinite(self._schur)) or np.linalg.cond(self._schur) > 1e15:
+            self._lu = False
+        return self._lu, z
 
     def _a_solve(self, rhs: np.ndarray) -> np.ndarray:
         lu, piv = self._lu
         out, info = lapack.dgbtrs(lu, self.kl, self.kl, rhs, piv)
         return out
 
-    def _eliminate(self, r: np.ndarray, s: np.ndarray, z: np.ndarray | None = None):
-        """(x, y, cancellation): cancellation = max |W y| / max |x|, large when A is nearly singular;
-        ``z`` = A^-1 r if known."""
+    def eliminate(self, r: np.ndarray, s: np.ndarray):
+        """(x, y, cancellation) by block elimination, or None if A is singular; cancellation =
+        max |W y| / max |x|, large when A is nearly singular (the result then needs checking)."""
+        lu, z = self._factor(r)
+        if not lu:
+            return None
         z = self._a_solve(r) if z is None else z
         y = np.linalg.solve(self._schur, s - self.C @ z)
         wy = self._w @ y
@@ -152,27 +183,9 @@ class Bordered:
     def solve(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(x, y) solving the system for the right-hand side (r, s)."""
         with np.errstate(all="ignore"):
-            return self._solve(r, s)
-
-    def _solve(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        lu, z = self._factor(r)
-        if lu:
-            x, y, cancellation = self._eliminate(r, s, z)
-            if cancellation < _CANCELLATION and np.all(np.isfinite(x)):
-                return x, y
-            scale = max(np.abs(r).max(initial=0.0), np.abs(s).max(initial=0.0), 1e-300)
-            for _ in range(_REFINE + 1):
-                ax, cy = self.apply(x, y)
-                e_r, e_s = r - ax, s - cy
-                if max(np.abs(e_r).max(initial=0.0), np.abs(e_s).max(initial=0.0)) <= _ACCURATE * scale:
-                    return x, y
-                dx, dy, _ = self._eliminate(e_r, e_s)
-                x, y = x + dx, y + dy
-            if np.all(np.isfinite(x)) and np.all(np.isfinite(y)):
-                ax, cy = self.apply(x, y)
-                if max(np.abs(r - ax).max(initial=0.0), np.abs(s - cy).max(initial=0.0)) <= 1e-8 * scale:
-                    return x, y
-        return self._sparse(r, s)
+            first = self.eliminate(r, s)
+            out = None if first is None else _refined(first, self.eliminate, self.apply, r, s)
+            return self._sparse(r, s) if out is None else out
 
     def _sparse(self, r, s):
         """SuperLU of the whole bordered matrix (the fallback)."""
@@ -200,13 +213,17 @@ class Condensed:
     every element's midpoint block could be inverted (else use the full band).
     """
 
-    def __init__(self, matrices: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray):
+    def __init__(self, matrices: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray, workspace=None):
         self.matrices, self.B, self.C, self.D = matrices, B, C, D
         self._c = np.ascontiguousarray(C)
-        out = loops.condense(matrices, np.ascontiguousarray(B), self._c)
-        self.regular, vertex_band, b_v, c_v, d, self.inv, self.x, self.y = out
+        n, m = matrices.shape[0], B.shape[1]
+        buffer, nv = Buffers(workspace), 2 * n + 2
+        vertex_band, b_v, c_v = buffer("band", (nv, 10)), buffer("b_v", (nv, m)), buffer("c_v", (m, nv))
+        self.inv, self.x, self.y = buffer("inv", (n, 2, 2)), buffer("x", (n, 2, 4)), buffer("y", (n, 2, m))
+        self.regular, d = loops.condense(matrices, np.ascontiguousarray(B), self._c, vertex_band, b_v, c_v, self.inv,
+                                         self.x, self.y)
         if self.regular:
-            self.reduced = Bordered(vertex_band.T, 3, b_v, c_v, D + d)
+            self.reduced = Bordered(vertex_band.T, 3, b_v, c_v, D + d, workspace)
 
     def apply(self, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The whole (uncondensed) matrix times (x, y)."""
@@ -218,18 +235,47 @@ class Condensed:
             out[a: a + 4 * n: 4] += products[:, a]
         return out + self.B @ y, self.C @ x + self.D @ y
 
-    def solve(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(x, y) solving the whole system for (r, s)."""
+    def eliminate(self, r: np.ndarray, s: np.ndarray):
+        """(x, y, cancellation) through the vertex system, or None if its band is singular."""
         r_v, s_v, z = loops.condense_rhs(np.ascontiguousarray(r), np.ascontiguousarray(s, dtype=float),
                                          self.matrices, self._c, self.inv)
-        x_v, y = self.reduced.solve(r_v, s_v)
-        return loops.expand(x_v, y, z, self.x, self.y), y
+        out = self.reduced.eliminate(r_v, s_v)
+        if out is None:
+            return None
+        x_v, y, cancellation = out
+        return loops.expand(x_v, y, z, self.x, self.y), y, cancellation
+
+    def solve(self, r: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(x, y) solving the whole system for (r, s), checked with the element matrices when the
+        elimination cancelled; the full band (``Bordered``) if the vertex band is singular."""
+        with np.errstate(all="ignore"):
+            first = self.eliminate(r, s)
+            out = None if first is None else _refined(first, self.eliminate, self.apply, r, s)
+        return Bordered(band(self.matrices, 4, 5), 5, self.B, self.C, self.D).solve(r, s) if out is None else out
 
 
-def system(matrices: np.ndarray, order: int, B: np.ndarray, C: np.ndarray, D: np.ndarray):
-    """The bordered system of constrained element matrices: condensed for P2 (when it can be), else banded."""
+class Buffers:
+    """Arrays by name from a workspace dict, reused while their shape holds (fresh ones without a dict)."""
+
+    def __init__(self, workspace: dict | None):
+        self.workspace = workspace
+
+    def __call__(self, name: str, shape: tuple) -> np.ndarray:
+        if self.workspace is None:
+            return np.empty(shape)
+        array = self.workspace.get(name)
+        if array is None or array.shape != shape:
+            array = self.workspace[name] = np.empty(shape)
+        return array
+
+
+def system(matrices: np.ndarray, order: int, B: np.ndarray, C: np.ndarray, D: np.ndarray, workspace=None):
+    """The bordered system of constrained element matrices: condensed for P2 (when it can be), else banded.
+
+    ``workspace``: a dict whose arrays the condensation writes over (the system is then valid until
+    the next one built on the same workspace)."""
     if order == 2:
-        condensed = Condensed(matrices, B, C, D)
+        condensed = Condensed(matrices, B, C, D, workspace)
         if condensed.regular:
             return condensed
     kl = 2 * order + 1

@@ -133,14 +133,23 @@ def fields(ref: Reference, placement: Placement, u: np.ndarray, pressure: float)
 
 
 def evaluate(material: MooneyRivlin, ref: Reference, placement: Placement, u: np.ndarray, pressure: float,
-             contact: Contact | None = None, tangent: bool = True) -> Linear:
-    """The forms of the module docstring at the state (``u``, P), with the element matrices if ``tangent``."""
+             contact: Contact | None = None, tangent: bool = True, out: tuple | None = None) -> Linear:
+    """The forms of the module docstring at the state (``u``, P), with the element matrices if ``tangent``.
+
+    ``out``: arrays to write them into, (vectors (4, N), matrices (n, s, s)), reused from call to
+    call by the caller (a workspace: allocating fresh ones costs more than filling them at 1e5
+    elements, as the memory goes back to the system and comes back page by page).
+    """
     n, q = placement.lengths.size, ref.weights.size
     height, penalty, multiplier = (0.0, 0.0, 0.0) if contact is None else \
         (contact.height, contact.penalty, contact.multiplier)
     multiplier = np.broadcast_to(np.asarray(multiplier, dtype=float), (n, q))
-    out = loops.element_loop(np.ascontiguousarray(u, dtype=float), placement.vertices, ref.t, ref.weights, ref.phi,
-                             ref.dphi, float(pressure), float(material.alpha), float(height), float(penalty),
-                             np.ascontiguousarray(multiplier), float(placement.a or 0.0), tangent)
-    res, res_p, res_a, force_x, (force_h, force, volume), matrices = out
-    return Linear(res, res_p, res_a, force_x, float(force_h), float(force), float(volume), matrices)
+    vectors, matrices = out if out is not None else (np.empty((4, u.size)), None)
+    if matrices is None:
+        matrices = np.empty((n if tangent else 0, ref.local, ref.local))
+    force_h, force, volume = loops.element_loop(
+        np.ascontiguousarray(u, dtype=float), placement.vertices, ref.t, ref.weights, ref.phi, ref.dphi,
+        float(pressure), float(material.alpha), float(height), float(penalty), np.ascontiguousarray(multiplier),
+        float(placement.a or 0.0), vectors, matrices)
+    return Linear(vectors[0], vectors[1], vectors[2], vectors[3], float(force_h), float(force), float(volume),
+                  matrices)

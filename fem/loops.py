@@ -45,29 +45,28 @@ def _material(alpha, a, b):
 
 
 @njit(cache=True, error_model="numpy")
-def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty, multiplier, radius, tangent):
+def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty, multiplier, radius, vectors,
+                 matrices):
     """One pass over the elements.
 
     u: nodal dofs (N,); vertices: physical vertices (n + 1,); t, wq: Gauss points and weights on
     [0, 1] (Q,); phi, dphi: shape functions and t-derivatives there (Q, p + 1); pressure: P;
     alpha: C2/C1; height, penalty, multiplier (n, Q): the penalty plate (penalty 0: none);
-    radius: the contact radius of the ALE map (0: none, dR/da is then zero); tangent: whether to
-    compute the element matrices.
+    radius: the contact radius of the ALE map (0: none, dR/da is then zero). Written over:
+    ``vectors`` (4, N) gets R, dR/dP, dR/da, dF/dx; ``matrices`` (n, 2 (p + 1), 2 (p + 1)) the
+    element tangents [test dof, trial dof], or has no rows when the tangent is not wanted.
 
-    Returns R, dR/dP, dR/da, dF/dx (each (N,)), (dF/dh, F, V) and the element matrices
-    (n, 2 (p + 1), 2 (p + 1)) [test dof, trial dof] (zeros if not ``tangent``).
+    Returns (dF/dh, F, V).
     """
     n = vertices.size - 1
     k = phi.shape[1]
     p = k - 1
     size = 2 * k
-    dofs = u.size
-    res = np.zeros(dofs)
-    res_p = np.zeros(dofs)
-    res_a = np.zeros(dofs)
-    force_x = np.zeros(dofs)
+    tangent = matrices.shape[0] == n
+    vectors[:] = 0.0
+    matrices[:] = 0.0
+    res, res_p, res_a, force_x = vectors[0], vectors[1], vectors[2], vectors[3]
     scalars = np.zeros(3)
-    matrices = np.zeros((n if tangent else 0, size, size))
     for e in range(n):
         r0, length = vertices[e], vertices[e + 1] - vertices[e]
         first = 2 * p * e
@@ -136,31 +135,28 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty
             for i in range(size):
                 for j in range(i):
                     matrices[e, i, j] = matrices[e, j, i]
-    return res, res_p, res_a, force_x, scalars, matrices
+    return scalars
 
 
 _VERTEX = (0, 1, 4, 5)
 
 
 @njit(cache=True, error_model="numpy")
-def condense(matrices, border_columns, border_rows):
+def condense(matrices, border_columns, border_rows, band, b_v, c_v, inv, x, y):
     """Static condensation of the P2 midpoint dofs (``banded``'s docstring).
 
-    matrices (n, 6, 6) constrained; border_columns B (N, m); border_rows C (m, N).
-    Returns (regular, the vertex band in gbtrf storage as (Nv, 10) rows of columns, B_v (Nv, m),
-    C_v (m, Nv), the correction to D (m, m), K_mm^-1 (n, 2, 2), K_mm^-1 K_mv (n, 2, 4),
-    K_mm^-1 B_m (n, 2, m)).
+    matrices (n, 6, 6) constrained; border_columns B (N, m); border_rows C (m, N). Written over:
+    ``band`` (Nv, 10), the vertex band in gbtrf storage, column j in band[j] (A[i, j] at
+    band[j, 6 + i - j]); B_v ``b_v`` (Nv, m); C_v ``c_v`` (m, Nv); K_mm^-1 ``inv`` (n, 2, 2);
+    K_mm^-1 K_mv ``x`` (n, 2, 4); K_mm^-1 B_m ``y`` (n, 2, m).
+    Returns (regular, the correction to D (m, m)).
     """
     n = matrices.shape[0]
     m = border_columns.shape[1]
-    nv = 2 * (n + 1)
-    band = np.zeros((nv, 10))  # column j of the band is band[j]; A[i, j] at band[j, 6 + i - j]
-    b_v = np.zeros((nv, m))
-    c_v = np.zeros((m, nv))
+    band[:] = 0.0
+    b_v[:] = 0.0
+    c_v[:] = 0.0
     d = np.zeros((m, m))
-    inv = np.empty((n, 2, 2))
-    x = np.empty((n, 2, 4))
-    y = np.empty((n, 2, m))
     kvm = np.empty((4, 2))
     c_m = np.empty((2, m))
     for e in range(n):
@@ -169,7 +165,7 @@ def condense(matrices, border_columns, border_rows):
         det = a00 * a11 - a01 * a10
         scale = max(abs(a00), abs(a01), abs(a10), abs(a11))
         if not abs(det) > 1e-12 * scale * scale:
-            return False, band, b_v, c_v, d, inv, x, y
+            return False, d
         inv[e, 0, 0], inv[e, 0, 1], inv[e, 1, 0], inv[e, 1, 1] = a11 / det, -a01 / det, -a10 / det, a00 / det
         mid = 4 * e + 2
         for i in range(2):
@@ -197,7 +193,7 @@ def condense(matrices, border_columns, border_rows):
             for j in range(m):
                 b_v[2 * g + c, j] += border_columns[4 * g + c, j]
                 c_v[j, 2 * g + c] += border_rows[j, 4 * g + c]
-    return True, band, b_v, c_v, d, inv, x, y
+    return True, d
 
 
 @njit(cache=True, error_model="numpy")

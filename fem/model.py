@@ -85,12 +85,17 @@ class Control:
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Model:
-    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, material and penalty."""
+    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, material and penalty.
+
+    ``workspace`` holds the large arrays of ``linearize`` from one call to the next (a system it
+    returns is valid until the next call, which is how Newton uses it).
+    """
 
     material: MooneyRivlin
     xi: np.ndarray
     ref: Reference
     penalty: float
+    workspace: dict = dataclasses.field(default_factory=dict, repr=False)
 
     @property
     def order(self) -> int:
@@ -161,11 +166,11 @@ def fields(model: Model, y: np.ndarray, mode: str) -> kernel.Fields:
     return kernel.fields(model.ref, placement(model, y, mode), u, s[0])
 
 
-def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False) -> kernel.Linear:
+def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False, out=None) -> kernel.Linear:
     """The forms at the state y (``kernel.evaluate``): R and its derivatives, the volume, the plate force."""
     u, s = split(model, y)
     return kernel.evaluate(model.material, model.ref, placement(model, y, mode), u, s[0],
-                           _contact(model, y, mode, multiplier), tangent)
+                           _contact(model, y, mode, multiplier), tangent, out)
 
 
 def plate_force(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> float:
@@ -205,54 +210,59 @@ def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multipli
     """(residual, the bordered tangent: ``banded.system``) at y."""
     u, s = split(model, y)
     n, m = model.dofs, _SCALARS[mode]
-    linear = forms(model, y, mode, multiplier, tangent=True)
+    buffer = banded.Buffers(model.workspace)
+    out = buffer("vectors", (4, n)), buffer("matrices", (model.elements, model.ref.local, model.ref.local))
+    linear = forms(model, y, mode, multiplier, tangent=True, out=out)
     border = _border_residual(model, y, mode, control, linear)
     fixed = model.fixed(mode)
     full = linear.residual.copy()
     full[fixed] = 0.0
     matrices, rp = linear.matrices, linear.pressure  # dR/dP = -dV
-    columns, rows = [rp], [-rp / control.volume if control.pressure is None else np.zeros(n)]
+    b, c = buffer("columns", (n, m)), buffer("rows", (m, n))  # B and C of the bordered system
+    b[:, 0] = rp
+    if control.pressure is None:
+        np.divide(rp, -control.volume, out=c[0])
+    else:
+        c[0] = 0.0
     corner = np.zeros((m, m))
     corner[0, 0] = 1.0 / control.pressure if control.pressure is not None else 0.0
     if mode == PENALTY:
-        columns.append(-linear.force)
+        b[:, 1] = -linear.force
         if control.height is not None:
-            rows.append(np.zeros(n))
+            c[1] = 0.0
             corner[1, 1] = 1.0
         else:
-            rows.append(linear.force / control.scale)
+            np.divide(linear.force, control.scale, out=c[1])
             corner[1, 1] = linear.force_stiffness / control.scale
     elif mode == FITTED:
         tied, e = model.tied(), edge(model)
-        k_c, r_a = _tied_column(model, matrices), linear.radius
-        pa_u = np.zeros(n)
-        pa_u[e] = 2.0 * np.pi * s[0] * u[e]
-        columns += [k_c, r_a]
-        rows.append((k_c + pa_u) / control.scale)
+        k_c, r_a = _tied_column(model, matrices, buffer("tied", (n,))), linear.radius
+        b[:, 1], b[:, 2] = k_c, r_a
+        np.divide(k_c, control.scale, out=c[1])
+        c[1, e] += 2.0 * np.pi * s[0] * u[e] / control.scale
+        c[2] = 0.0
         corner[0, 1] = -rp[tied].sum() / control.volume if control.pressure is None else 0.0
         corner[1] = np.array([rp[tied].sum() + np.pi * u[e] ** 2, k_c[tied].sum(), r_a[tied].sum()]) / control.scale
         if control.height is not None:
-            rows.append(np.zeros(n))
             corner[2, 1] = 1.0
         elif control.radius is not None:
-            rows.append(np.zeros(n))
             corner[2, 2] = 1.0
         else:
-            rows.append(pa_u / control.scale)
+            c[2, e] = 2.0 * np.pi * s[0] * u[e] / control.scale
             corner[2, 0] = np.pi * u[e] ** 2 / control.scale
-    b, c = np.stack(columns, axis=1), np.stack(rows, axis=0)
     b[fixed] = 0.0
     c[:, fixed] = 0.0
     banded.constrain(matrices, 2 * model.order, fixed)
-    return np.concatenate([full, border]), banded.system(matrices, model.order, b, c, corner)
+    return np.concatenate([full, border]), banded.system(matrices, model.order, b, c, corner, model.workspace)
 
 
-def _tied_column(model: Model, matrices: np.ndarray) -> np.ndarray:
-    """k_C = K 1_C from the two elements that hold the tied dofs (the contact element and the next)."""
+def _tied_column(model: Model, matrices: np.ndarray, out: np.ndarray) -> np.ndarray:
+    """k_C = K 1_C, written into ``out``, from the two elements that hold the tied dofs (the contact
+    element and the next)."""
     local = np.zeros((2, model.ref.local))
     local[0, 1::2] = 1.0  # every eta dof of the contact element
     local[1, 1] = 1.0  # the edge vertex's eta dof, first in the next element
-    out = np.zeros(model.dofs)
+    out[:] = 0.0
     for e in range(2):
         start = 2 * model.order * e
         out[start: start + model.ref.local] += matrices[e] @ local[e]
