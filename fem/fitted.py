@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError
+from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .continuation import follow
 from .geometry import evaluate, node_radii, place
@@ -76,17 +76,43 @@ def first_contact(model: Model, inflated: np.ndarray, volume: float, a: float,
 def force_path(model: Model, y0: np.ndarray, volume: float, force: float, tol: Tolerances, unit: float = 1.0):
     """From a FITTED state y0 to the plate force ``force`` (units E T R), stepping in sqrt(F); (y, iterations).
 
-    ``unit``: the force in messages is F / unit (pi Phat_I gives Fhat)."""
+    ``unit``: the force in messages is F / unit (pi Phat_I gives Fhat). If the stepping stalls at a
+    maximum of the force (a limit point: past it the pocket has no state on this branch, for some
+    alpha < 0 before the free part reaches the clamp plane), that is ``OutOfRangeError``.
+    """
 
     def along(sigma, guess):
         return solve(model, FITTED, Control(volume=volume, force=sigma**2), guess, tol)
 
+    name = "force" if unit != 1.0 else "plate force F/(E T R)"
     total, y = 0, y0
-    for _, y, iterations in follow(along, y0, np.sqrt(plate_force_of(model, y0)), np.sqrt(force),
-                                   name="force" if unit != 1.0 else "plate force F/(E T R)",
-                                   show=lambda sigma: sigma**2 / unit):
-        total += iterations
+    try:
+        for _, y, iterations in follow(along, y0, np.sqrt(plate_force_of(model, y0)), np.sqrt(force), name=name,
+                                       show=lambda sigma: sigma**2 / unit):
+            total += iterations
+    except ConvergenceError as err:
+        peak = _force_peak(model, y, volume, tol)
+        if peak is None:
+            raise
+        raise OutOfRangeError(f"the plate force has a maximum, {name} = {peak / unit:.6g}, before the target "
+                              f"{force / unit:.6g}: no compressed state on the first branch above it") from err
     return y, total
+
+
+def _force_peak(model: Model, y: np.ndarray, volume: float, tol: Tolerances, steps: int = 4) -> float | None:
+    """The plate force's maximum if plate-height control, stepping down from y by 1e-3 of its height,
+    finds the force falling within ``steps`` steps; None if it keeps rising or a step fails."""
+    height, best = float(y[model.dofs + 1]), plate_force_of(model, y)
+    for k in range(1, steps + 1):
+        try:
+            y, _ = solve(model, FITTED, Control(volume=volume, height=height * (1.0 - 1e-3 * k)), y, tol)
+        except (ConvergenceError, OutOfRangeError):
+            return None
+        force = plate_force_of(model, y)
+        if force < best:
+            return best
+        best = force
+    return None
 
 
 def height_path(model: Model, y0: np.ndarray, volume: float, height: float, tol: Tolerances):

@@ -194,3 +194,17 @@ def test_a_state_failing_its_own_check_is_not_returned():
     y[8] = -0.01  # rho at node 4, vertex 2
     with pytest.raises(ConvergenceError, match="fails its own check: a stretch"):
         results.inflated(m, y, 1, pressure=0.3)
+
+
+def test_a_force_maximum_ends_the_range():
+    """alpha = -0.42, Phat_I = 0.173: the plate force has a maximum (a limit point) before the free part
+    reaches the clamp plane; a larger force is OutOfRangeError naming the maximum, which agrees with
+    the end of the shooting solver's range (bisected to 1e-5) to 1e-4."""
+    from pocket.apps.inverse import range_end
+
+    alpha, pressure = -0.42, 0.173
+    end = range_end(shooting, alpha, pressure, rtol=1e-5)
+    with pytest.raises(OutOfRangeError, match="has a maximum") as info:
+        fem.compress(alpha, pressure, 2 * end, elements=64)
+    peak = float(re.search(r"force = ([0-9.e+-]+), before", str(info.value)).group(1))
+    assert peak == pytest.approx(end, rel=1e-4), (peak, end)

@@ -163,3 +163,26 @@ def test_condensed_solve_equals_the_full_band():
     x_f, y_f = full.solve(rhs[:n], rhs[n:])
     np.testing.assert_allclose(np.concatenate([x_c, y_c]), np.concatenate([x_f, y_f]), rtol=1e-10,
                                atol=1e-10 * np.abs(x_f).max())
+
+
+def test_a_slack_element_sends_the_solve_to_the_full_band():
+    """An element whose midpoint block is singular (a slack element: no stiffness of its midpoint
+    against itself, only its couplings to the vertices) cannot be condensed: the system falls back
+    to the whole band, whose solve equals numpy's dense solve of the assembled bordered matrix
+    (1e-10; that matrix is regular, its condition printed on failure)."""
+    rng = np.random.default_rng(6)
+    n, size = 5, 6
+    matrices = rng.standard_normal((n, size, size))
+    matrices = matrices + matrices.transpose(0, 2, 1) + 12 * np.eye(size)
+    matrices[2, 2:4, 2:4] = 0.0
+    b, c, corner = rng.standard_normal((4 * n + 2, 1)), rng.standard_normal((1, 4 * n + 2)), np.eye(1)
+    system = banded.system(matrices, 2, b, c, corner)
+    assert isinstance(system, banded.Bordered)
+    dense = np.zeros((4 * n + 2, 4 * n + 2))
+    for e in range(n):
+        dense[4 * e: 4 * e + size, 4 * e: 4 * e + size] += matrices[e]
+    full = np.block([[dense, b], [c, corner]])
+    r = rng.standard_normal(4 * n + 3)
+    x, y = system.solve(r[:-1], r[-1:])
+    np.testing.assert_allclose(np.concatenate([x, y]), np.linalg.solve(full, r), rtol=1e-10, atol=1e-10,
+                               err_msg=f"condition {np.linalg.cond(full):.3g}")
