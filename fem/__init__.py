@@ -10,13 +10,13 @@ penalty with augmented-Lagrangian updates.
 
 Modules: ``material`` (the energy), ``reference`` (element tables),
 ``geometry`` (the mesh and its map to the contact edge), ``kernel`` (residual
-and tangent, derived in its docstring, assembled in vectorised form),
-``model`` (unknowns, equations and the bordered tangent), ``banded`` (its
-O(N) solution), ``newton``, ``continuation``, ``steps``, ``inflation``,
-``fitted`` and ``penalty`` (the two contact methods), ``curves``, ``post``,
-``results`` (the states and their checks) and ``api`` (the entry points
-below). ``SOLVER`` is its record (entry points and options,
-``pocket.core.solver``).
+and tangent, derived in its docstring) and ``loops`` (their compiled element
+loop), ``model`` (unknowns, equations and the bordered tangent), ``banded``
+and ``condensed`` (its O(N) solution), ``newton``, ``continuation``,
+``steps``, ``inflation``, ``fitted`` and ``penalty`` (the two contact
+methods), ``curves``, ``post``, ``results`` (the states and their checks)
+and ``api`` (the entry points below). ``SOLVER`` is its record (entry points
+and options, ``pocket.core.solver``).
 
 The entry points are imported on first use (scikit-fem's import is not free),
 so that reading ``SOLVER`` costs nothing.

@@ -43,7 +43,7 @@ the tied rows and columns are removed):
 (dV does not depend on a: the volume is a property of the curve; the rows
 carry the scalings above.) The increment of the tied dofs is dh. The prescribed
 and tied dofs' rows and columns are cleared in the element matrices, which
-``banded.system`` condenses (P2) and factors.
+``condensed.system`` condenses (P2) and factors.
 """
 
 from __future__ import annotations
@@ -52,7 +52,7 @@ import dataclasses
 
 import numpy as np
 
-from . import banded, kernel
+from . import banded, condensed, kernel
 from .geometry import Placement, place
 from .material import MooneyRivlin
 from .reference import Reference, reference
@@ -207,7 +207,7 @@ def _border_residual(model, y, mode, control, linear) -> np.ndarray:
 
 
 def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multiplier=0.0):
-    """(residual, the bordered tangent: ``banded.system``) at y."""
+    """(residual, the bordered tangent: ``condensed.system``) at y."""
     u, s = split(model, y)
     n, m = model.dofs, _SCALARS[mode]
     buffer = banded.Buffers(model.workspace)
@@ -253,7 +253,7 @@ def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multipli
     b[fixed] = 0.0
     c[:, fixed] = 0.0
     banded.constrain(matrices, 2 * model.order, fixed)
-    return np.concatenate([full, border]), banded.system(matrices, model.order, b, c, corner, model.workspace)
+    return np.concatenate([full, border]), condensed.system(matrices, model.order, b, c, corner, model.workspace)
 
 
 def _tied_column(model: Model, matrices: np.ndarray, out: np.ndarray) -> np.ndarray:

@@ -10,7 +10,7 @@ Also: the bordered banded solver equals a dense solve of the same matrix.
 
 import numpy as np
 import pytest
-from pocket.fem import banded, kernel
+from pocket.fem import banded, condensed, kernel
 from pocket.fem.geometry import place
 from pocket.fem.material import MooneyRivlin
 from pocket.fem.reference import reference
@@ -155,7 +155,7 @@ def test_condensed_solve_equals_the_full_band():
     volume = inflation.volume(m, y_i)
     y, _ = fitted.first_contact(m, y_i, volume, 0.1, Tolerances())
     r, system = model.linearize(m, y, model.FITTED, model.Control(volume=volume, force=0.5, scale=0.5))
-    assert isinstance(system, banded.Condensed)
+    assert isinstance(system, condensed.Condensed)
     full = banded.Bordered(banded.band(system.matrices, 4, 5), 5, system.B, system.C, system.D)
     rhs = np.random.default_rng(5).standard_normal(r.size)
     n = m.dofs
@@ -176,7 +176,7 @@ def test_a_slack_element_sends_the_solve_to_the_full_band():
     matrices = matrices + matrices.transpose(0, 2, 1) + 12 * np.eye(size)
     matrices[2, 2:4, 2:4] = 0.0
     b, c, corner = rng.standard_normal((4 * n + 2, 1)), rng.standard_normal((1, 4 * n + 2)), np.eye(1)
-    system = banded.system(matrices, 2, b, c, corner)
+    system = condensed.system(matrices, 2, b, c, corner)
     assert isinstance(system, banded.Bordered)
     dense = np.zeros((4 * n + 2, 4 * n + 2))
     for e in range(n):
