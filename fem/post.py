@@ -24,8 +24,11 @@ with equilibrium inside, at r = 1 (rho = 1, lambda_2 = 1, w_1 = T1):
 so T1 = |(R_rho, R_eta - pi P)| / (2 pi), and lambda_1 solves
 T1(lambda_1, 1) = (lambda_1 - lambda_1^-3) / 3 = T1 (monotonic).
 
-Nodal stretches elsewhere: lambda_1 the mean of the one-sided derivatives of
-the adjacent elements, lambda_2 = rho/r.
+The profile samples every node (vertices and P2 midpoints), so that a line
+through its points follows the quadratic meridian to O(h^3/8) rather than
+O(h^2/8). Nodal stretches elsewhere: lambda_1 at a vertex the mean of the
+one-sided derivatives of the adjacent elements, at a midpoint the element's
+own, lambda_2 = rho/r.
 """
 
 from __future__ import annotations
@@ -35,6 +38,7 @@ from scipy.optimize import brentq
 
 from pocket.core.states import Profile
 
+from .geometry import node_radii
 from .model import Model, forms, placement, split
 
 __all__ = ["vertices", "reaction", "pole_stretch", "clamp_stretch", "volume", "profile", "R_FIT"]
@@ -79,10 +83,12 @@ def volume(model: Model, y: np.ndarray, mode: str) -> float:
 
 def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float,
             contact_radius: float = 0.0) -> Profile:
-    """Nodal profile: stretches, tensions (units E T) and contact flag; ``pole``, ``clamp``: the
-    stretch at r = 0 (equibiaxial) and the meridional one at r = 1."""
-    r, rho, eta = vertices(model, y, mode)
-    l1 = _vertex_slope(model, y, mode)
+    """The profile at every node (vertices and, for P2, midpoints): stretches, tensions (units E T) and
+    contact flag; ``pole``, ``clamp``: the stretch at r = 0 (equibiaxial) and the meridional one at r = 1."""
+    u, _ = split(model, y)
+    r = node_radii(placement(model, y, mode), model.ref)
+    rho, eta = u[0::2].copy(), u[1::2].copy()
+    l1 = _node_slope(model, y, mode)
     l2 = np.empty_like(r)
     l2[1:] = rho[1:] / r[1:]
     l1[0] = l2[0] = pole
@@ -94,19 +100,23 @@ def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float
     return Profile(r, rho, eta, l1, l2, t1, t2, r <= contact_radius if contact_radius > 0 else r < 0)
 
 
-def _vertex_slope(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
-    """|x'| at the vertices, the mean of the two adjacent elements' one-sided values."""
+def _node_slope(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
+    """|x'| at the nodes: at a vertex the mean of the two adjacent elements' one-sided values, at a P2
+    midpoint the element's own (the secant slope of its quadratic)."""
     u, _ = split(model, y)
     p, n = model.order, model.elements
     nodal = u.reshape(-1, 2)[p * np.arange(n)[:, None] + np.arange(p + 1)]  # (n, p + 1, 2)
     lengths = placement(model, y, mode).lengths[:, None]
+    secant = np.hypot(*((nodal[:, -1] - nodal[:, 0]) / lengths).T)
     if p == 1:
-        left = right = (nodal[:, 1] - nodal[:, 0]) / lengths
+        left = right = secant
     else:
         v0, vm, v1 = nodal[:, 0], nodal[:, 1], nodal[:, 2]
-        left, right = (-3 * v0 - v1 + 4 * vm) / lengths, (v0 + 3 * v1 - 4 * vm) / lengths
-    left, right = np.hypot(left[:, 0], left[:, 1]), np.hypot(right[:, 0], right[:, 1])
-    slope = np.empty(n + 1)
+        left = np.hypot(*((-3 * v0 - v1 + 4 * vm) / lengths).T)
+        right = np.hypot(*((v0 + 3 * v1 - 4 * vm) / lengths).T)
+    slope = np.empty(p * n + 1)
     slope[0], slope[-1] = left[0], right[-1]
-    slope[1:-1] = 0.5 * (right[:-1] + left[1:])
+    slope[p: -1: p] = 0.5 * (right[:-1] + left[1:])
+    if p == 2:
+        slope[1::2] = secant
     return slope

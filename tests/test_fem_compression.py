@@ -82,7 +82,7 @@ def test_contact_zone_is_flat_and_equibiaxial(default_curve):
     for state in default_curve:
         prof = state.profile
         inside = prof.r <= state.contact_radius
-        assert prof.contact.tolist() == inside.tolist() and inside.sum() == 2  # the pole and the edge vertex
+        assert prof.contact.tolist() == inside.tolist() and inside.sum() == 3  # pole, midpoint, edge vertex
         assert np.all(prof.eta[inside] == state.height)
         np.testing.assert_allclose(prof.rho[inside], state.stretch_contact * prof.r[inside], rtol=1e-13)
         assert prof.eta[~inside].max() < state.height and state.extra["penetration"] == 0.0
