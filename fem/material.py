@@ -55,6 +55,20 @@ class MooneyRivlin:
         mixed = self._scale * (4.0 / (a * b) ** 3 + al * 4.0 * a * b)
         return self._second(a, b), mixed, self._second(b, a)
 
+    def derivatives(self, a, b):
+        """(w_1, w_2, w_11, w_12, w_22) at once, sharing the powers (what an assembly needs)."""
+        al, s = self.alpha, self._scale
+        ia, ib = 1.0 / a, 1.0 / b
+        ia2, ib2 = ia * ia, ib * ib
+        both = ia2 * ib2  # (a b)^-2
+        a2, b2 = a * a, b * b
+        w1 = 2.0 * s * (a - ia * both + al * (a * b2 - ia * ia2))
+        w2 = 2.0 * s * (b - ib * both + al * (b * a2 - ib * ib2))
+        w11 = s * (2.0 + 6.0 * ia2 * both + al * (6.0 * ia2 * ia2 + 2.0 * b2))
+        w22 = s * (2.0 + 6.0 * ib2 * both + al * (6.0 * ib2 * ib2 + 2.0 * a2))
+        w12 = 4.0 * s * (ia * ib * both + al * a * b)
+        return w1, w2, w11, w12, w22
+
     def tensions(self, a, b):
         """(T1, T2) = ((1/b) dw/da, (1/a) dw/db), in units of E T."""
         wa, wb = self.gradient(a, b)
