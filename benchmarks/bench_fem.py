@@ -53,8 +53,8 @@ def _pressed_state():
     tol = Tolerances()
     y_i, _ = inflation.to_pressure(m, PHAT, tol)
     volume = inflation.volume(m, y_i)
-    y, _ = fitted.first_contact(m, y_i, volume, 0.05, tol)
-    y, _ = fitted.force_path(m, y, volume, FHAT * np.pi * PHAT, tol)
+    y, _ = fitted.first_contact(m, y_i, model.Control(volume=volume), 0.05, tol)
+    y, _ = fitted.force_path(m, y, model.Control(volume=volume), FHAT * np.pi * PHAT, tol)
     return m, y, volume
 
 

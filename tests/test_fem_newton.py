@@ -25,10 +25,10 @@ def path():
     tol = Tolerances(1e-13, 1e-13)
     y_i, _ = inflation.to_pressure(m, PHAT, tol)
     volume = inflation.volume(m, y_i)
-    y, _ = fitted.first_contact(m, y_i, volume, 0.05, tol)
+    y, _ = fitted.first_contact(m, y_i, model.Control(volume=volume), 0.05, tol)
     out = []
     for force in (0.2, 0.3, 0.4):
-        y, _ = fitted.force_path(m, y, volume, force, tol)
+        y, _ = fitted.force_path(m, y, model.Control(volume=volume), force, tol)
         out.append((np.sqrt(force), y))
     return m, volume, out
 
