@@ -125,3 +125,49 @@ def test_a_target_outside_the_model_is_reported():
 
     with pytest.raises(OutOfRangeError, match="outside"):
         list(follow(solve, np.zeros(2), 0.0, 1.0))
+
+
+class _Dense:
+    """A dense Newton system with one 'scalar' unknown, in the interface Newton uses."""
+
+    def __init__(self, jacobian):
+        self.jacobian, self.B = jacobian, np.zeros((jacobian.shape[0] - 1, 1))
+
+    def solve(self, r, s):
+        z = np.linalg.solve(self.jacobian, np.concatenate([r, s]))
+        return z[:-1], z[-1:]
+
+
+_STIFF = np.array([[2.0, 1.0, 0.0], [1.0, 3.0, 1.0], [0.0, 1.0, 4.0]])
+_ROOT = np.array([0.3, 0.7, 1.1])
+
+
+def _join(y, x, s):
+    return np.concatenate([x, s])
+
+
+def test_a_stiff_residual_converges_at_its_round_off_floor():
+    """R(y) = k (S y + y^3 - b) with k = 1e12 and b = S y* + y*^3: the terms of R are ~1e12, so no stored y
+    gets |R| below about k eps ~ 1e-4, far above the absolute tolerance 1e-10 and its 1e3 floor; once the
+    increment has converged, the residual is at the change that a few units in the last place of y make,
+    and Newton accepts it: y* to 1e-15."""
+    k = 1e12
+    b = _STIFF @ _ROOT + _ROOT**3
+
+    def linearize(y):
+        return k * (_STIFF @ y + y**3 - b), _Dense(k * (_STIFF + np.diag(3 * y**2)))
+
+    result = newton(linearize, np.array([0.5, 0.5, 0.5]), Tolerances(), _join)
+    np.testing.assert_allclose(result.y, _ROOT, rtol=1e-15)
+    assert result.residuals[-1] > 1e3 * Tolerances().residual, result.residuals
+
+
+def test_a_small_increment_with_a_large_residual_is_not_convergence():
+    """A jacobian 1e8 times too stiff makes tiny increments (1e-11) from a residual of 1e-3 that no
+    round-off explains: Newton does not stop there, and fails (ConvergenceError) rather than return it."""
+
+    def linearize(y):
+        return _STIFF @ (y - _ROOT), _Dense(1e8 * _STIFF)
+
+    with pytest.raises(ConvergenceError):
+        newton(linearize, _ROOT + 1e-3, Tolerances(), _join)
