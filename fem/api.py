@@ -8,8 +8,9 @@ The rubber comes first: a float is a Mooney-Rivlin alpha = C2/C1 (as it always
 was), a ``pocket.core.materials.Material`` any law in any stress unit
 (``material``). The fluid of a compression is a keyword: None (a liquid) or a
 ``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
-units, Phat_atm = P_atm R / (E T) (``gas``). Pressures and forces are in the
-units of E = 3 mu_0 as for Mooney-Rivlin.
+units, Phat_atm = P_atm R / (E T) (``gas``). Every law's pressures are
+Phat = P R / (E T) with E = 3 mu_0 its small-strain Young's modulus (for
+Mooney-Rivlin 6 (C1 + C2), as in the paper); forces are Fhat = F / (P_I pi R^2).
 
 The default mesh (``default_mesh``) is ``meshes.polar(DEFAULT_ELEMENTS,
 power=POLAR_POWER)``: graded towards the axis, where the pole stretch needs
