@@ -14,6 +14,9 @@ state, a compression curve's time against the shooting solver's, and the default
 3. How the default mesh was chosen: the worst relative error against shooting (rtol 1e-12) in any
    reported scalar over the validation cases at Fhat = 0, 0.05, 0.19, 1 and 0.95 of each range end,
    for 64 .. 384 P2 elements of the default family (skipped with --quick).
+4. Rubber laws and fluids: one assembly (residual and tangent) at 1e4 P2 elements for each law, and the
+   40-point curve of section 2 for each law and for a gas, with their ratios to Mooney-Rivlin's (the
+   law is a branch inside the compiled loop; Ogden's powers cost more than the invariants' products).
 
 The machine is shared: medians of repeats, with the least time beside them as the estimate of the
 undisturbed cost.
@@ -33,8 +36,18 @@ from pocket.fem.newton import Tolerances
 from timing import median_time
 
 from pocket import fem, shooting
+from pocket.core.fluids import gas
+from pocket.core.materials import check
 
 ALPHA, PHAT, FHAT = 47 / 160, 0.31, 0.19
+#: one rubber of each law for section 4 (the first is the paper's)
+RUBBERS = {
+    "mooney-rivlin": ALPHA,
+    "neo-hookean": check("neo-hookean", {"mu": 1.0}),
+    "yeoh": check("yeoh", {"c10": 0.5, "c20": -0.02, "c30": 0.003}),
+    "gent": check("gent", {"mu": 1.0, "jm": 6.0}),
+    "ogden (3 terms)": check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}),
+}
 
 
 def _times(fun, repeat):
@@ -53,8 +66,8 @@ def _pressed_state():
     tol = Tolerances()
     y_i, _ = inflation.to_pressure(m, PHAT, tol)
     volume = inflation.volume(m, y_i)
-    y, _ = fitted.first_contact(m, y_i, volume, 0.05, tol)
-    y, _ = fitted.force_path(m, y, volume, FHAT * np.pi * PHAT, tol)
+    y, _ = fitted.first_contact(m, y_i, model.Control(volume=volume), 0.05, tol)
+    y, _ = fitted.force_path(m, y, model.Control(volume=volume), FHAT * np.pi * PHAT, tol)
     return m, y, volume
 
 
@@ -122,7 +135,7 @@ def default_mesh_accuracy(sizes):
     pockets, _ = load()
     worst = {n: (0.0, "") for n in sizes}
     for case in pockets:
-        end = range_end(case.alpha, case.pressure_initial)
+        end = range_end(case)
         forces = sorted(f for f in (0.0, 0.05, 0.19, 1.0, 0.95 * end) if f <= 0.95 * end)
         refs = shooting.compression_curve(case.alpha, case.pressure_initial, forces, rtol=1e-12)
         for n in sizes:
@@ -140,12 +153,40 @@ def default_mesh_accuracy(sizes):
         print(f"  {n:4d} elements: {worst[n][0]:.2e} ({worst[n][1]}){mark}")
 
 
+def laws_and_fluids(repeat):
+    """Section 4."""
+    coarse, y0, volume = _pressed_state()
+    control = model.Control(volume=volume, force=FHAT * np.pi * PHAT, scale=FHAT * np.pi * PHAT)
+    forces = np.linspace(0.02, 0.8, 40)
+    print("\nRubber laws, P2: one assembly at 1e4 elements and the 40-point curve (default mesh), median (least);"
+          " ratios of the least times (the undisturbed cost) to Mooney-Rivlin's")
+    print(f"{'law':16s} | assembly [ms] | ratio | curve [s]      | ratio")
+    base = None
+    for name, rubber in RUBBERS.items():
+        m, y = _on(coarse, y0, 10**4)
+        m = model.discretize(rubber, m.xi, 2, 1e5)
+        model.linearize(m, y, model.FITTED, control)
+        assembly = _times(lambda m=m, y=y: model.linearize(m, y, model.FITTED, control), 3 * repeat)
+        fem.compression_curve(rubber, PHAT, forces[:2])
+        curve_time = _times(lambda rubber=rubber: fem.compression_curve(rubber, PHAT, forces), repeat)
+        base = base or (assembly[1], curve_time[1])
+        print(f"{name:16s} | {1e3 * assembly[0]:5.2f} ({1e3 * assembly[1]:5.2f}) | {assembly[1] / base[0]:5.2f} |"
+              f" {curve_time[0]:.3f} ({curve_time[1]:.3f}) | {curve_time[1] / base[1]:5.2f}")
+    for fluid in (gas(0.5, 1.0), gas(0.5, 1.4)):
+        fem.compression_curve(ALPHA, PHAT, forces[:2], fluid=fluid)
+        curve_time = _times(lambda fluid=fluid: fem.compression_curve(ALPHA, PHAT, forces, fluid=fluid), repeat)
+        label = f"MR, gas {fluid.gamma:g}"
+        print(f"{label:16s} |               |       | {curve_time[0]:.3f} ({curve_time[1]:.3f}) |"
+              f" {curve_time[1] / base[1]:5.2f}")
+
+
 def main(argv=None):
     quick = "--quick" in (sys.argv[1:] if argv is None else argv)
     per_iteration([100, 1000, 10000] if quick else [100, 1000, 10000, 100000, 1000000])
     curve(40, 3 if quick else 7)
     if not quick:
         default_mesh_accuracy([64, 128, 192, 256, 384])
+    laws_and_fluids(3 if quick else 7)
 
 
 if __name__ == "__main__":

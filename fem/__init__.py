@@ -1,4 +1,4 @@
-"""Finite-element solver of the axisymmetric Mooney-Rivlin membrane.
+"""Finite-element solver of the axisymmetric membrane of any incompressible rubber.
 
 Unknowns rho(r), eta(r) on P1 or P2 Lagrange elements (scikit-fem's element
 definitions and quadrature) of the Lagrangian radius r in [0, 1], the
@@ -6,17 +6,22 @@ pressure as the multiplier of the volume. The frictionless flat plate either
 on an edge-fitted mesh (the default: the Lagrangian contact radius is a
 Newton unknown, closed by tangent contact, and a mesh vertex follows it, so
 that every element is smooth and the contact is exact) or on a fixed mesh by
-penalty with augmented-Lagrangian updates.
+penalty with augmented-Lagrangian updates. The rubber is any law of
+``pocket.core.materials`` (a float is a Mooney-Rivlin alpha); the pocket holds
+a liquid (fixed volume) or a gas sealed at the initial pressure (the
+polytropic law ties the pressure to the volume).
 
-Modules: ``material`` (the energy), ``reference`` (element tables),
-``geometry`` (the mesh and its map to the contact edge), ``kernel`` (residual
-and tangent, derived in its docstring) and ``loops`` (their compiled element
-loop), ``model`` (unknowns, equations and the bordered tangent), ``banded``
-and ``condensed`` (its O(N) solution), ``newton``, ``continuation``,
-``steps``, ``inflation``, ``fitted`` and ``penalty`` (the two contact
-methods), ``curves``, ``post``, ``results`` (the states and their checks)
-and ``api`` (the entry points below). ``SOLVER`` is its record (entry points
-and options, ``pocket.core.solver``).
+Modules: ``laws`` (each law's membrane energy derivatives, compiled) and
+``material`` (a rubber as the kernel's law), ``gas`` (the fluid's volume
+row), ``reference`` (element tables), ``geometry`` (the mesh and its map to
+the contact edge), ``kernel`` (residual and tangent, derived in its
+docstring) and ``loops`` (their compiled element loop), ``model`` (unknowns,
+equations and the bordered tangent), ``banded`` and ``condensed`` (its O(N)
+solution), ``newton``, ``continuation``, ``steps``, ``inflation``,
+``fitted`` and ``penalty`` (the two contact methods), ``curves``, ``post``,
+``results`` (the states and their checks) and ``api`` (the entry points
+below). ``SOLVER`` is its record (entry points and options,
+``pocket.core.solver``).
 
 The entry points are imported on first use (scikit-fem's import is not free),
 so that reading ``SOLVER`` costs nothing.

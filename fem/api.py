@@ -4,6 +4,14 @@ Inputs are checked before any work (``pocket.core.inputs``; a mesh the solver
 cannot use is an ``InputError`` saying why). The states are built and
 checked by ``results``; the curves are driven by ``curves``.
 
+The rubber comes first: a float is a Mooney-Rivlin alpha = C2/C1 (as it always
+was), a ``pocket.core.materials.Material`` any law in any stress unit
+(``material``). The fluid of a compression is a keyword: None (a liquid) or a
+``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
+units, Phat_atm = P_atm R / (E T) (``gas``). Every law's pressures are
+Phat = P R / (E T) with E = 3 mu_0 its small-strain Young's modulus (for
+Mooney-Rivlin 6 (C1 + C2), as in the paper); forces are Fhat = F / (P_I pi R^2).
+
 The default mesh (``default_mesh``) is ``meshes.polar(DEFAULT_ELEMENTS,
 power=POLAR_POWER)``: graded towards the axis, where the pole stretch needs
 it (``post``), and mapped onto the free part by the edge-fitted contact. Its
@@ -25,10 +33,11 @@ import numpy as np
 
 from pocket import meshes
 from pocket.core.errors import InputError
-from pocket.core.inputs import check_alpha, check_force, check_positive, quote
+from pocket.core.inputs import check_force, check_positive, quote
 
 from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results
-from .model import FITTED, Model, discretize
+from .gas import fluid_of, sealed
+from .model import FITTED, Control, Model, discretize
 from .newton import Tolerances
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh",
@@ -85,10 +94,9 @@ def _nodes(mesh, elements, order) -> np.ndarray:
     return _usable(nodes, "mesh" if not isinstance(mesh, (str, pathlib.PurePath)) else str(mesh))
 
 
-def _model(alpha, mesh, elements, order, penalty) -> Model:
-    alpha = check_alpha(alpha)
+def _model(material, mesh, elements, order, penalty) -> Model:
     order = SOLVER.option("order").checked(order)
-    return discretize(alpha, _nodes(mesh, elements, order), order, penalty)
+    return discretize(material, _nodes(mesh, elements, order), order, penalty)
 
 
 def _tolerances(tol) -> Tolerances:
@@ -109,42 +117,46 @@ def _contact(contact, penalty, augmented) -> tuple[str, float, bool]:
     return contact, penalty, augmented
 
 
-def inflate(alpha, pressure, *, mesh=None, elements=None, order=2, tol=1e-10):
+def inflate(material, pressure, *, mesh=None, elements=None, order=2, tol=1e-10):
     """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
 
-    mesh: nodes of [0, 1] (array, shape (n+1,)) or a mesh file; else the default mesh
-    family of ``elements`` (default: DEFAULT_ELEMENTS with P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or
-    2. tol: Newton tolerance.
+    material: the rubber (a Mooney-Rivlin alpha, or a Material). mesh: nodes of [0, 1] (array, shape
+    (n+1,)) or a mesh file; else the default mesh family of ``elements`` (default: DEFAULT_ELEMENTS with
+    P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or 2. tol: Newton tolerance.
     """
-    model = _model(alpha, mesh, elements, order, DEFAULT_PENALTY)
+    model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
     pressure = check_positive("pressure", pressure)
     y, iterations = inflation.to_pressure(model, pressure, _tolerances(tol))
     return results.inflated(model, y, iterations, pressure=pressure)
 
 
-def inflate_volume(alpha, volume, *, mesh=None, elements=None, order=2, tol=1e-10):
+def inflate_volume(material, volume, *, mesh=None, elements=None, order=2, tol=1e-10):
     """Inflated state of volume V/R^3 = ``volume``, by volume control (options as ``inflate``)."""
-    model = _model(alpha, mesh, elements, order, DEFAULT_PENALTY)
+    model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
     volume = check_positive("volume", volume)
     y, iterations = inflation.to_volume(model, volume, _tolerances(tol))
     return results.inflated(model, y, iterations, volume=volume)
 
 
-def _setup(alpha, pressure_initial, mesh, elements, order, contact, penalty, augmented, tol):
-    """Checked inputs, the model and the inflated state to compress."""
+def _setup(material, pressure_initial, fluid, mesh, elements, order, contact, penalty, augmented, tol):
+    """Checked inputs, the model, the inflated state to compress and the fluid sealed in it (the volume
+    row's ``Control``)."""
     contact, penalty, augmented = _contact(contact, penalty, augmented)
-    model = _model(alpha, mesh, elements, order, penalty)
+    model = _model(material, mesh, elements, order, penalty)
     p_i = check_positive("pressure_initial", pressure_initial)
+    fluid = fluid_of(fluid)
     tol = _tolerances(tol)
     y_i, iterations = inflation.to_pressure(model, p_i, tol)
-    return model, contact, augmented, tol, y_i, results.inflated(model, y_i, iterations, pressure=p_i)
+    state = results.inflated(model, y_i, iterations, pressure=p_i)
+    return model, contact, augmented, tol, y_i, state, Control(volume=state.volume, gas=sealed(fluid, p_i))
 
 
-def compression_curve(alpha, pressure_initial, forces, *, progress=None, mesh=None, elements=None, order=2,
-                      contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+def compression_curve(material, pressure_initial, forces, *, fluid=None, progress=None, mesh=None, elements=None,
+                      order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
     """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the states before it.
 
-    Options as ``inflate``, and ``contact``: "fitted" (default; the mesh follows the contact
+    fluid: None (a liquid: fixed volume) or a Fluid (a gas sealed at Phat_I). Options as ``inflate``,
+    and ``contact``: "fitted" (default; the mesh follows the contact
     edge, contact exact) or "penalty" (fixed mesh, contact ``penalty`` in units E T / R^2,
     default 1e5, with ``augmented`` Lagrangian updates, default true). ``progress(done, total)``
     is called after each force.
@@ -152,28 +164,28 @@ def compression_curve(alpha, pressure_initial, forces, *, progress=None, mesh=No
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    model, contact, augmented, tol, y_i, inflated = _setup(alpha, pressure_initial, mesh, elements, order,
-                                                           contact, penalty, augmented, tol)
+    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, mesh, elements,
+                                                                 order, contact, penalty, augmented, tol)
     if contact == FITTED:
-        return curves.fitted_curve(model, y_i, inflated, forces, tol, progress)
-    return curves.penalty_curve(model, y_i, inflated, forces, tol, augmented, progress)
+        return curves.fitted_curve(model, y_i, inflated, fill, forces, tol, progress)
+    return curves.penalty_curve(model, y_i, inflated, fill, forces, tol, augmented, progress)
 
 
-def compress(alpha, pressure_initial, force, **options):
-    """Compressed state at the force Fhat = F/(P_I pi R^2); options as ``compression_curve``."""
-    return compression_curve(alpha, pressure_initial, [force], **options)[0]
+def compress(material, pressure_initial, force, *, fluid=None, **options):
+    """Compressed state at the force Fhat = F/(P_I pi R^2); fluid and options as ``compression_curve``."""
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, **options)[0]
 
 
-def compress_height(alpha, pressure_initial, height, *, mesh=None, elements=None, order=2, contact=FITTED,
-                    penalty=None, augmented=None, tol=1e-10):
-    """Compressed state with the plate at height H/R = ``height`` (options as ``compression_curve``)."""
+def compress_height(material, pressure_initial, height, *, fluid=None, mesh=None, elements=None, order=2,
+                    contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+    """Compressed state with the plate at height H/R = ``height`` (fluid and options as ``compression_curve``)."""
     height = check_positive("height", height)
-    model, contact, augmented, tol, y_i, inflated = _setup(alpha, pressure_initial, mesh, elements, order,
-                                                           contact, penalty, augmented, tol)
+    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, mesh, elements,
+                                                                 order, contact, penalty, augmented, tol)
     if height >= inflated.height:
-        return results.uncompressed(inflated, contact)
+        return results.uncompressed(inflated, fill, contact)
     if contact == FITTED:
-        return curves.fitted_height(model, y_i, inflated, height, tol)
-    return curves.penalty_height(model, y_i, inflated, height, tol, augmented)
+        return curves.fitted_height(model, y_i, inflated, fill, height, tol)
+    return curves.penalty_height(model, y_i, inflated, fill, height, tol, augmented)
 
 

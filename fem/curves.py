@@ -15,10 +15,14 @@ Penalty contact. The plate is lowered to the first force under height
 control, then each force follows under force control, with
 augmented-Lagrangian updates after each (``penalty``).
 
+The fluid enters as ``fill``, the volume row's ``model.Control`` (V_I, and a
+gas sealed at P_I, or none for a liquid), which every control of step 2 extends.
 ``progress(done, total)``, if given, is called after each force.
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
@@ -49,21 +53,22 @@ def _first_radius(model: Model, inflated, fhat: float) -> float:
     return min(fitted.A_FIRST, 0.5 * np.sqrt(fhat) / inflated.stretch_pole)
 
 
-def _next_fitted(model, history, volume, force, tol, unit):
+def _next_fitted(model, history, fill, force, tol, unit):
     sigma = np.sqrt(force)
     try:
-        return solve(model, FITTED, Control(volume=volume, force=force), predict(history, sigma), tol)
+        return solve(model, FITTED, replace(fill, force=force), predict(history, sigma), tol)
     except (ConvergenceError, OutOfRangeError) as err:
-        y, iterations = fitted.force_path(model, history[-1][1], volume, force, tol, unit)
+        y, iterations = fitted.force_path(model, history[-1][1], fill, force, tol, unit)
         return y, iterations + err.iterations if isinstance(err, ConvergenceError) else iterations
 
 
-def fitted_curve(model: Model, y_i: np.ndarray, inflated, forces, tol: Tolerances, progress=None) -> list:
+def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: Tolerances,
+                 progress=None) -> list:
     """Compressed states (edge-fitted contact) at the forces Fhat, from the inflated unknowns y_i."""
     p_i, states, history = inflated.pressure, [], []
     for k, fhat in enumerate(forces):
         if fhat == 0.0:
-            states.append(results.uncompressed(inflated, FITTED))
+            states.append(results.uncompressed(inflated, fill, FITTED))
         else:
             if fhat < fitted.SMALLEST_FORCE:
                 raise ConvergenceError(
@@ -73,24 +78,24 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, forces, tol: Tolerance
             force = fhat * np.pi * p_i
             if not history:
                 a0 = _first_radius(model, inflated, fhat)
-                y, iterations = fitted.first_contact(model, y_i, inflated.volume, a0, tol)
-                y, more = fitted.force_path(model, y, inflated.volume, force, tol, np.pi * p_i)
+                y, iterations = fitted.first_contact(model, y_i, fill, a0, tol)
+                y, more = fitted.force_path(model, y, fill, force, tol, np.pi * p_i)
                 iterations += more
             else:
-                y, iterations = _next_fitted(model, history, inflated.volume, force, tol, np.pi * p_i)
+                y, iterations = _next_fitted(model, history, fill, force, tol, np.pi * p_i)
             history.append((np.sqrt(force), y))
-            states.append(results.fitted_state(model, y, iterations, inflated, fhat))
+            states.append(results.fitted_state(model, y, iterations, inflated, fill, fhat))
         if progress is not None:
             progress(k + 1, len(forces))
     return states
 
 
-def fitted_height(model: Model, y_i: np.ndarray, inflated, height: float, tol: Tolerances):
+def fitted_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height: float, tol: Tolerances):
     """The compressed state (edge-fitted contact) with the plate at ``height``."""
-    y, iterations = fitted.first_contact(model, y_i, inflated.volume, fitted.A_FIRST / 4, tol)
-    y, more = fitted.height_path(model, y, inflated.volume, height, tol)
+    y, iterations = fitted.first_contact(model, y_i, fill, fitted.A_FIRST / 4, tol)
+    y, more = fitted.height_path(model, y, fill, height, tol)
     fhat = fitted.plate_force_of(model, y) / (np.pi * inflated.pressure)
-    return results.fitted_state(model, y, iterations + more, inflated, fhat)
+    return results.fitted_state(model, y, iterations + more, inflated, fill, fhat)
 
 
 def _touching(model: Model, y_i: np.ndarray, inflated) -> np.ndarray:
@@ -98,38 +103,39 @@ def _touching(model: Model, y_i: np.ndarray, inflated) -> np.ndarray:
     return np.concatenate([y_i, [inflated.height]])
 
 
-def penalty_curve(model: Model, y_i: np.ndarray, inflated, forces, tol: Tolerances, augmented: bool,
+def penalty_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: Tolerances, augmented: bool,
                   progress=None) -> list:
     """Compressed states (penalty contact) at the forces Fhat."""
-    p_i, volume = inflated.pressure, inflated.volume
+    p_i = inflated.pressure
     lam = np.zeros((model.elements, model.ref.t.size))
     states, y, in_contact = [], _touching(model, y_i, inflated), False
     for k, fhat in enumerate(forces):
         if fhat == 0.0:
-            states.append(results.uncompressed(inflated, PENALTY))
+            states.append(results.uncompressed(inflated, fill, PENALTY))
         else:
             force = fhat * np.pi * p_i
             if in_contact:
-                y, iterations = penalty.force_path(model, y, volume, force, lam, tol)
+                y, iterations = penalty.force_path(model, y, fill, force, lam, tol)
             else:
-                y, iterations = penalty.press_to_force(model, _touching(model, y_i, inflated), volume, force,
+                y, iterations = penalty.press_to_force(model, _touching(model, y_i, inflated), fill, force,
                                                        lam, tol)
             if augmented:
-                y, lam, more = penalty.augment(model, y, Control(volume=volume, force=force), lam, tol)
+                y, lam, more = penalty.augment(model, y, replace(fill, force=force), lam, tol)
                 iterations += more
-            states.append(results.penalty_state(model, y, lam, iterations, inflated, fhat))
+            states.append(results.penalty_state(model, y, lam, iterations, inflated, fill, fhat))
             in_contact = True
         if progress is not None:
             progress(k + 1, len(forces))
     return states
 
 
-def penalty_height(model: Model, y_i: np.ndarray, inflated, height: float, tol: Tolerances, augmented: bool):
+def penalty_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height: float, tol: Tolerances,
+                   augmented: bool):
     """The compressed state (penalty contact) with the plate at ``height``."""
     lam = np.zeros((model.elements, model.ref.t.size))
-    y, iterations = penalty.press_to_height(model, _touching(model, y_i, inflated), inflated.volume, height,
+    y, iterations = penalty.press_to_height(model, _touching(model, y_i, inflated), fill, height,
                                             lam, tol)
     if augmented:
-        y, lam, more = penalty.augment(model, y, Control(volume=inflated.volume, height=height), lam, tol)
+        y, lam, more = penalty.augment(model, y, replace(fill, height=height), lam, tol)
         iterations += more
-    return results.penalty_state(model, y, lam, iterations, inflated)
+    return results.penalty_state(model, y, lam, iterations, inflated, fill)

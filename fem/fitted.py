@@ -18,9 +18,15 @@ sigma = sqrt(F), in which the contact radius grows about linearly (F = P pi
 rho(a)^2), or under height control in h; each step starts from the secant
 extrapolation of the last two states, which the fitted mesh makes accurate
 (the edge node moves with the edge, so the nodal values are smooth in the load).
+
+The fluid is ``fill``: the volume row's ``model.Control`` (V_I and, for a gas,
+its polytropic law), which each control here extends with its own target. A
+path that gives up close to the rubber's locking says so (``steps.near_locking``).
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
@@ -30,7 +36,7 @@ from .continuation import follow
 from .geometry import evaluate, node_radii, place
 from .model import FITTED, Control, Model
 from .newton import Tolerances
-from .steps import solve
+from .steps import near_locking, solve
 
 __all__ = ["touch", "first_contact", "force_path", "height_path", "plate_force_of", "A_FIRST", "SMALLEST_FORCE"]
 
@@ -57,13 +63,13 @@ def plate_force_of(model: Model, y: np.ndarray) -> float:
     return float(np.pi * y[model.dofs] * y[2 * model.order] ** 2)
 
 
-def first_contact(model: Model, inflated: np.ndarray, volume: float, a: float,
+def first_contact(model: Model, inflated: np.ndarray, fill: Control, a: float,
                   tol: Tolerances) -> tuple[np.ndarray, int]:
     """The contact state at radius ``a`` (or a halved one) from the inflated state; (y, iterations)."""
     total, first = 0, a
     for _ in range(_HALVINGS + 1):
         try:
-            y, iterations = solve(model, FITTED, Control(volume=volume, radius=a), touch(model, inflated, a), tol)
+            y, iterations = solve(model, FITTED, replace(fill, radius=a), touch(model, inflated, a), tol)
             return y, total + iterations
         except ConvergenceError as err:
             total += err.iterations
@@ -73,7 +79,7 @@ def first_contact(model: Model, inflated: np.ndarray, volume: float, a: float,
                            f"{2 * a:.3g}: {last}", load=a, iterations=total, residual=last.residual)
 
 
-def force_path(model: Model, y0: np.ndarray, volume: float, force: float, tol: Tolerances, unit: float = 1.0):
+def force_path(model: Model, y0: np.ndarray, fill: Control, force: float, tol: Tolerances, unit: float = 1.0):
     """From a FITTED state y0 to the plate force ``force`` (units E T R), stepping in sqrt(F); (y, iterations).
 
     ``unit``: the force in messages is F / unit (pi Phat_I gives Fhat). If the stepping stalls at a
@@ -82,7 +88,7 @@ def force_path(model: Model, y0: np.ndarray, volume: float, force: float, tol: T
     """
 
     def along(sigma, guess):
-        return solve(model, FITTED, Control(volume=volume, force=sigma**2), guess, tol)
+        return solve(model, FITTED, replace(fill, force=sigma**2), guess, tol)
 
     name = "force" if unit != 1.0 else "plate force F/(E T R)"
     total, y = 0, y0
@@ -91,7 +97,8 @@ def force_path(model: Model, y0: np.ndarray, volume: float, force: float, tol: T
                                        show=lambda sigma: sigma**2 / unit):
             total += iterations
     except ConvergenceError as err:
-        peak = _force_peak(model, y, volume, tol)
+        near_locking(model, y, FITTED, err, f"{name} = {force / unit:.6g}", bounded=False)
+        peak = _force_peak(model, y, fill, tol)
         if peak is None:
             raise
         raise OutOfRangeError(f"the plate force has a maximum, {name} = {peak / unit:.6g}, before the target "
@@ -99,13 +106,13 @@ def force_path(model: Model, y0: np.ndarray, volume: float, force: float, tol: T
     return y, total
 
 
-def _force_peak(model: Model, y: np.ndarray, volume: float, tol: Tolerances, steps: int = 4) -> float | None:
+def _force_peak(model: Model, y: np.ndarray, fill: Control, tol: Tolerances, steps: int = 4) -> float | None:
     """The plate force's maximum if plate-height control, stepping down from y by 1e-3 of its height,
     finds the force falling within ``steps`` steps; None if it keeps rising or a step fails."""
     height, best = float(y[model.dofs + 1]), plate_force_of(model, y)
     for k in range(1, steps + 1):
         try:
-            y, _ = solve(model, FITTED, Control(volume=volume, height=height * (1.0 - 1e-3 * k)), y, tol)
+            y, _ = solve(model, FITTED, replace(fill, height=height * (1.0 - 1e-3 * k)), y, tol)
         except (ConvergenceError, OutOfRangeError):
             return None
         force = plate_force_of(model, y)
@@ -115,13 +122,17 @@ def _force_peak(model: Model, y: np.ndarray, volume: float, tol: Tolerances, ste
     return None
 
 
-def height_path(model: Model, y0: np.ndarray, volume: float, height: float, tol: Tolerances):
+def height_path(model: Model, y0: np.ndarray, fill: Control, height: float, tol: Tolerances):
     """From a FITTED state y0 to the plate height ``height`` (units R); (y, iterations)."""
 
     def along(h, guess):
-        return solve(model, FITTED, Control(volume=volume, height=h), guess, tol)
+        return solve(model, FITTED, replace(fill, height=h), guess, tol)
 
     total, y = 0, y0
-    for _, y, iterations in follow(along, y0, float(y0[model.dofs + 1]), height, name="plate height h/R"):
-        total += iterations
+    try:
+        for _, y, iterations in follow(along, y0, float(y0[model.dofs + 1]), height, name="plate height h/R"):
+            total += iterations
+    except ConvergenceError as err:
+        near_locking(model, y, FITTED, err, f"plate height h/R = {height:.6g}", bounded=True)
+        raise
     return y, total

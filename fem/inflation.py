@@ -13,6 +13,9 @@ states. If P falls before reaching it, the path has passed a pressure maximum
 (neo-Hookean-like alpha): a golden-section search in V locates it; a target
 above it has no state on the first branch (``OutOfRangeError``), one below it
 is landed on the rising side.
+
+A rubber that locks (Gent) stops the volume path at its locking stretch
+(``steps.near_locking``): a volume target past it is ``OutOfRangeError``.
 """
 
 from __future__ import annotations
@@ -24,7 +27,7 @@ from pocket.core.errors import ConvergenceError, OutOfRangeError
 from .continuation import follow
 from .model import FREE, Control, Model, forms
 from .newton import Tolerances
-from .steps import dome, land, solve
+from .steps import dome, land, near_locking, solve
 
 __all__ = ["to_pressure", "to_volume", "volume"]
 
@@ -52,8 +55,12 @@ def to_volume(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray,
     def along(log_v, guess):
         return solve(model, FREE, Control(volume=np.exp(log_v)), guess, tol)
 
-    for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target), name="log(V/R^3)"):
-        total += iterations
+    try:
+        for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target), name="log(V/R^3)"):
+            total += iterations
+    except ConvergenceError as err:
+        near_locking(model, y, FREE, err, f"volume = {target!r}", bounded=True)
+        raise
     return y, total
 
 
@@ -71,22 +78,26 @@ def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
 
     log_v0 = np.log(volume(model, y))
     path = [(log_v0, y)]
-    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
-        total += iterations
-        if y[-1] >= target:
-            y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
-            return y, total + iterations
-        if y[-1] < path[-1][1][-1] and len(path) >= 2:
-            peak, iterations = _pressure_peak(along, path[-2], path[-1], (log_v, y))
+    try:
+        for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
             total += iterations
-            if peak[1][-1] < target:
-                raise OutOfRangeError(
-                    f"Phat = {target:.6g} exceeds the pressure maximum Phat = {peak[1][-1]:.6g} of"
-                    f" the first inflation branch (alpha = {model.material.alpha:.6g})"
-                )
-            y, iterations = land(along, at_target, path[-2], peak, _pressure, target)
-            return y, total + iterations
-        path.append((log_v, y))
+            if y[-1] >= target:
+                y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
+                return y, total + iterations
+            if y[-1] < path[-1][1][-1] and len(path) >= 2:
+                peak, iterations = _pressure_peak(along, path[-2], path[-1], (log_v, y))
+                total += iterations
+                if peak[1][-1] < target:
+                    raise OutOfRangeError(
+                        f"Phat = {target:.6g} exceeds the pressure maximum Phat = {peak[1][-1]:.6g} of"
+                        f" the first inflation branch ({model.law.label})"
+                    )
+                y, iterations = land(along, at_target, path[-2], peak, _pressure, target)
+                return y, total + iterations
+            path.append((log_v, y))
+    except ConvergenceError as err:
+        near_locking(model, path[-1][1], FREE, err, f"Phat = {target:.6g}", bounded=False)
+        raise
     raise OutOfRangeError(
         f"Phat = {target:.6g} not reached up to V/R^3 = {np.exp(log_v):.4g} on the first branch"
     )

@@ -11,7 +11,7 @@ penalty contact a plate at height h with penalty kappa and multiplier field l:
 
 With t = x'/l1 the unit tangent, d l1 = t . dx', d l2 = d rho / r and
 d t = (I - t t) dx'/l1; w_1 = dw/dl1, w_2 = dw/dl2 and the second
-derivatives w_ij come from ``material``.
+derivatives w_ij come from the rubber's law (``laws``).
 
 Residual (first variation, direction v = (v_0, v_1) = (v_rho, v_eta)):
 
@@ -67,7 +67,7 @@ import numpy as np
 
 from . import loops
 from .geometry import Placement
-from .material import MooneyRivlin
+from .material import Law
 from .reference import Reference
 
 __all__ = ["Fields", "Contact", "Linear", "element_dofs", "fields", "evaluate"]
@@ -101,7 +101,8 @@ class Fields:
 @dataclasses.dataclass(frozen=True, eq=False)
 class Linear:
     """The forms at one state: R, dR/dP, dR/da and the penalty's dF/dx (each (N,)), dF/dh, the plate
-    force F (penalty) and the volume V, and the element matrices (n, 2 (p + 1), 2 (p + 1)) of K."""
+    force F (penalty) and the volume V, the least tensions T_1 = w_1 / l2 and T_2 = w_2 / l1 at the
+    quadrature points, and the element matrices (n, 2 (p + 1), 2 (p + 1)) of K."""
 
     residual: np.ndarray
     pressure: np.ndarray
@@ -110,6 +111,7 @@ class Linear:
     force_stiffness: float
     plate_force: float
     volume: float
+    tension_min: tuple[float, float]
     matrices: np.ndarray
 
 
@@ -132,7 +134,7 @@ def fields(ref: Reference, placement: Placement, u: np.ndarray, pressure: float)
     return Fields(placement.r, rho, eta, drho, deta, l1, rho / placement.r, lengths, pressure)
 
 
-def evaluate(material: MooneyRivlin, ref: Reference, placement: Placement, u: np.ndarray, pressure: float,
+def evaluate(law: Law, ref: Reference, placement: Placement, u: np.ndarray, pressure: float,
              contact: Contact | None = None, tangent: bool = True, out: tuple | None = None) -> Linear:
     """The forms of the module docstring at the state (``u``, P), with the element matrices if ``tangent``.
 
@@ -147,9 +149,9 @@ def evaluate(material: MooneyRivlin, ref: Reference, placement: Placement, u: np
     vectors, matrices = out if out is not None else (np.empty((4, u.size)), None)
     if matrices is None:
         matrices = np.empty((n if tangent else 0, ref.local, ref.local))
-    force_h, force, volume = loops.element_loop(
+    force_h, force, volume, t1, t2 = loops.element_loop(
         np.ascontiguousarray(u, dtype=float), placement.vertices, ref.t, ref.weights, ref.phi, ref.dphi,
-        float(pressure), float(material.alpha), float(height), float(penalty), np.ascontiguousarray(multiplier),
+        float(pressure), law.code, law.params, float(height), float(penalty), np.ascontiguousarray(multiplier),
         float(placement.a or 0.0), vectors, matrices)
     return Linear(vectors[0], vectors[1], vectors[2], vectors[3], float(force_h), float(force), float(volume),
-                  matrices)
+                  (float(t1), float(t2)), matrices)

@@ -1,8 +1,8 @@
 """The element loops, compiled (numba): the forms of ``kernel``, point by point, and the condensation.
 
 ``element_loop`` evaluates, in one pass over the elements and their Gauss
-points, the state and the material law (``material``'s formulas, repeated
-here in scalar form for the compiler), and adds up the residual, its
+points, the state and the material law (``laws.derivatives``, compiled with the loop: the law's code is a
+branch taken the same way at every point), and adds up the residual, its
 derivatives with respect to P and to the contact radius a, the penalty
 plate's force terms, the volume, and (if asked) every element's tangent
 matrix. The formulas are those of ``kernel``'s docstring, in the same
@@ -24,39 +24,26 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from . import laws
+
 __all__ = ["element_loop", "condense", "condense_rhs", "expand"]
 
 TWO_PI = 2.0 * np.pi
 
 
 @njit(cache=True, error_model="numpy")
-def _material(alpha, a, b):
-    """(w_1, w_2, w_11, w_12, w_22) of the Mooney-Rivlin membrane (``material.MooneyRivlin.derivatives``)."""
-    s = 1.0 / (6.0 * (1.0 + alpha))
-    ia, ib = 1.0 / a, 1.0 / b
-    ia2, ib2 = ia * ia, ib * ib
-    both = ia2 * ib2
-    w1 = 2.0 * s * (a - ia * both + alpha * (a * b * b - ia * ia2))
-    w2 = 2.0 * s * (b - ib * both + alpha * (b * a * a - ib * ib2))
-    w11 = s * (2.0 + 6.0 * ia2 * both + alpha * (6.0 * ia2 * ia2 + 2.0 * b * b))
-    w22 = s * (2.0 + 6.0 * ib2 * both + alpha * (6.0 * ib2 * ib2 + 2.0 * a * a))
-    w12 = 4.0 * s * (ia * ib * both + alpha * a * b)
-    return w1, w2, w11, w12, w22
-
-
-@njit(cache=True, error_model="numpy")
-def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty, multiplier, radius, vectors,
+def element_loop(u, vertices, t, wq, phi, dphi, pressure, code, params, height, penalty, multiplier, radius, vectors,
                  matrices):
     """One pass over the elements.
 
     u: nodal dofs (N,); vertices: physical vertices (n + 1,); t, wq: Gauss points and weights on
     [0, 1] (Q,); phi, dphi: shape functions and t-derivatives there (Q, p + 1); pressure: P;
-    alpha: C2/C1; height, penalty, multiplier (n, Q): the penalty plate (penalty 0: none);
+    code, params: the rubber law (``laws``); height, penalty, multiplier (n, Q): the penalty plate (penalty 0: none);
     radius: the contact radius of the ALE map (0: none, dR/da is then zero). Written over:
     ``vectors`` (4, N) gets R, dR/dP, dR/da, dF/dx; ``matrices`` (n, 2 (p + 1), 2 (p + 1)) the
     element tangents [test dof, trial dof], or has no rows when the tangent is not wanted.
 
-    Returns (dF/dh, F, V).
+    Returns (dF/dh, F, V, min T_1, min T_2), the tensions T_1 = w_1 / l2, T_2 = w_2 / l1 over the points.
     """
     n = vertices.size - 1
     k = phi.shape[1]
@@ -66,7 +53,7 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty
     vectors[:] = 0.0
     matrices[:] = 0.0
     res, res_p, res_a, force_x = vectors[0], vectors[1], vectors[2], vectors[3]
-    scalars = np.zeros(3)
+    scalars = np.array([0.0, 0.0, 0.0, np.inf, np.inf])
     for e in range(n):
         r0, length = vertices[e], vertices[e + 1] - vertices[e]
         first = 2 * p * e
@@ -85,8 +72,10 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, alpha, height, penalty
             deta /= length
             l1 = np.sqrt(drho * drho + deta * deta)
             l2 = rho / r
-            w1, w2, w11, w12, w22 = _material(alpha, l1, l2)
+            w1, w2, w11, w12, w22 = laws.derivatives(code, params, l1, l2)
             t0, t1 = drho / l1, deta / l1
+            scalars[3] = min(scalars[3], w1 / l2)
+            scalars[4] = min(scalars[4], w2 / l1)
             weight = wq[q]
             trial = multiplier[e, q] + penalty * (eta - height)
             chi = 1.0 if (penalty > 0.0 and trial > 0.0) else 0.0

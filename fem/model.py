@@ -8,6 +8,10 @@ identity in the tangent and zero in the residual.
 ``FREE`` (no plate, inflation), s = [P]: the membrane rows R(U; P) = 0 and one
 control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
 
+With a plate the volume row is the fluid's: V / V_I - 1 for a liquid, and
+V / V_I - q(P) for a gas sealed at P_I (``gas``: the polytropic law solved for
+the volume; its tangent has the corner entry -q'(P) in the column of P).
+
 ``PENALTY`` (fixed mesh, penalty plate at height h), s = [P, h]: R includes
 the plate pressure (``kernel``); control rows V / V_I - 1 and h - h* (plate
 height) or (F(U, h) - F*) / F* (plate force F = 2 pi int p_N r dr).
@@ -36,12 +40,12 @@ Tangent (``kernel`` for K, dR/dP, dR/da; k_C = K 1_C the column of h, before
 the tied rows and columns are removed):
 
     [ K       dR/dP             k_C               dR/da   ] [dU]
-    [ dV      0                 dV . 1_C          0       ] [dP]
+    [ dV      -q'(P) V_I        dV . 1_C          0       ] [dP]
     [ k_C^T + 2 pi P U_E e_E    1_C.dR/dP + pi U_E^2   1_C.k_C   1_C.dR/da ] [dh]
     [ control row                                         ] [da]
 
 (dV does not depend on a: the volume is a property of the curve; the rows
-carry the scalings above.) The increment of the tied dofs is dh. The prescribed
+carry the scalings above; q' = 0 for a liquid.) The increment of the tied dofs is dh. The prescribed
 and tied dofs' rows and columns are cleared in the element matrices, which
 ``condensed.system`` condenses (P2) and factors.
 """
@@ -53,8 +57,9 @@ import dataclasses
 import numpy as np
 
 from . import banded, condensed, kernel
+from .gas import Gas
 from .geometry import Placement, place
-from .material import MooneyRivlin
+from .material import Law, law_of
 from .reference import Reference, reference
 
 __all__ = ["FREE", "PENALTY", "FITTED", "Control", "Model", "discretize", "placement", "fields", "forms", "split",
@@ -72,7 +77,8 @@ class Control:
     ``scale`` (units E T R) divides the rows that balance forces on the plate (the tangency
     row and the force-control row), so that the absolute Newton tolerance on them is
     relative to the plate force, however small it is (``steps.solve`` sets it). The
-    pressure and volume rows are relative too: P / P* - 1, V / V* - 1.
+    pressure and volume rows are relative too: P / P* - 1, V / V* - 1 (V / V* - q(P) with a ``gas``
+    sealed at V* = V_I).
     """
 
     pressure: float | None = None
@@ -81,17 +87,18 @@ class Control:
     radius: float | None = None
     force: float | None = None
     scale: float = 1.0
+    gas: Gas | None = None
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Model:
-    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, material and penalty.
+    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty.
 
     ``workspace`` holds the large arrays of ``linearize`` from one call to the next (a system it
     returns is valid until the next call, which is how Newton uses it).
     """
 
-    material: MooneyRivlin
+    law: Law
     xi: np.ndarray
     ref: Reference
     penalty: float
@@ -126,9 +133,10 @@ class Model:
         return 2 * np.arange(self.order + 1) + 1
 
 
-def discretize(alpha: float, nodes: np.ndarray, order: int, penalty: float) -> Model:
-    """The model on the reference vertices ``nodes`` (checked by the caller)."""
-    return Model(MooneyRivlin(alpha), np.asarray(nodes, dtype=float), reference(order), penalty)
+def discretize(material, nodes: np.ndarray, order: int, penalty: float) -> Model:
+    """The model of the rubber ``material`` (a Mooney-Rivlin alpha or a Material: ``material.law_of``) on
+    the reference vertices ``nodes`` (checked by the caller)."""
+    return Model(law_of(material), np.asarray(nodes, dtype=float), reference(order), penalty)
 
 
 def edge(model: Model) -> int:
@@ -169,7 +177,7 @@ def fields(model: Model, y: np.ndarray, mode: str) -> kernel.Fields:
 def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False, out=None) -> kernel.Linear:
     """The forms at the state y (``kernel.evaluate``): R and its derivatives, the volume, the plate force."""
     u, s = split(model, y)
-    return kernel.evaluate(model.material, model.ref, placement(model, y, mode), u, s[0],
+    return kernel.evaluate(model.law, model.ref, placement(model, y, mode), u, s[0],
                            _contact(model, y, mode, multiplier), tangent, out)
 
 
@@ -190,7 +198,8 @@ def residual(model: Model, y: np.ndarray, mode: str, control: Control, multiplie
 
 def _border_residual(model, y, mode, control, linear) -> np.ndarray:
     u, s = split(model, y)
-    rows = [s[0] / control.pressure - 1.0 if control.pressure is not None else linear.volume / control.volume - 1.0]
+    rows = [s[0] / control.pressure - 1.0 if control.pressure is not None
+            else linear.volume / control.volume - _ratio(control, s[0])[0]]
     if mode == PENALTY:
         rows.append(s[1] - control.height if control.height is not None
                     else (linear.plate_force - control.force) / control.scale)
@@ -225,7 +234,7 @@ def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multipli
     else:
         c[0] = 0.0
     corner = np.zeros((m, m))
-    corner[0, 0] = 1.0 / control.pressure if control.pressure is not None else 0.0
+    corner[0, 0] = 1.0 / control.pressure if control.pressure is not None else -_ratio(control, s[0])[1]
     if mode == PENALTY:
         b[:, 1] = -linear.force
         if control.height is not None:
@@ -254,6 +263,11 @@ def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multipli
     c[:, fixed] = 0.0
     banded.constrain(matrices, 2 * model.order, fixed)
     return np.concatenate([full, border]), condensed.system(matrices, model.order, b, c, corner, model.workspace)
+
+
+def _ratio(control: Control, pressure: float) -> tuple[float, float]:
+    """(q, dq/dP): the volume ratio V / V_I of the fluid at P and its slope (1, 0 for a liquid)."""
+    return (1.0, 0.0) if control.gas is None else control.gas.ratio(pressure)
 
 
 def _tied_column(model: Model, matrices: np.ndarray, out: np.ndarray) -> np.ndarray:

@@ -9,7 +9,8 @@ First contact: force control is singular without contact (the plate height is
 then undetermined), so the plate is lowered from the pole height H0 under
 height control, monitoring the reaction F, until F passes the target; then
 ``steps.land`` solves under force control. Further forces follow under force
-control, each step seeded by the last (``continuation.follow``).
+control, each step seeded by the last (``continuation.follow``). The fluid is
+``fill``, the volume row's ``model.Control``, extended by each control.
 
 Contact: penalty kappa on the gap, with an augmented-Lagrangian (Uzawa) option.
 With multiplier field l at the quadrature points, the plate pressure is
@@ -22,6 +23,8 @@ holds the edge (``augment``); the loop then stops once P and h settle to
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
@@ -63,12 +66,12 @@ def _solve(model, control, guess, lam, tol):
     return solve(model, PENALTY, control, _onto_plate(model, guess), tol, lam)
 
 
-def press_to_height(model: Model, y0, volume, height, lam, tol: Tolerances):
+def press_to_height(model: Model, y0, fill: Control, height, lam, tol: Tolerances):
     """From a state y0 (plate at y0's h) lower the plate to ``height``; (y, iterations)."""
     total = 0
 
     def along(h, guess):
-        return _solve(model, Control(volume=volume, height=h), _at(model, guess, h), lam, tol)
+        return _solve(model, replace(fill, height=h), _at(model, guess, h), lam, tol)
 
     y = y0
     for _, y, iterations in follow(along, y0, y0[model.dofs + 1], height, first_step=0.05,
@@ -77,15 +80,15 @@ def press_to_height(model: Model, y0, volume, height, lam, tol: Tolerances):
     return y, total
 
 
-def press_to_force(model: Model, y0, volume, force, lam, tol: Tolerances):
+def press_to_force(model: Model, y0, fill: Control, force, lam, tol: Tolerances):
     """From the inflated state y0 (plate touching the pole) lower the plate until the reaction is ``force``."""
     h0 = float(y0[model.dofs + 1])
 
     def along(h, guess):
-        return _solve(model, Control(volume=volume, height=h), _at(model, guess, h), lam, tol)
+        return _solve(model, replace(fill, height=h), _at(model, guess, h), lam, tol)
 
     def at_target(guess):
-        return _solve(model, Control(volume=volume, force=force), guess, lam, tol)
+        return _solve(model, replace(fill, force=force), guess, lam, tol)
 
     def f(y):
         return plate_force(model, y, PENALTY, lam)
@@ -102,11 +105,11 @@ def press_to_force(model: Model, y0, volume, force, lam, tol: Tolerances):
     )
 
 
-def force_path(model: Model, y0, volume, force, lam, tol: Tolerances):
+def force_path(model: Model, y0, fill: Control, force, lam, tol: Tolerances):
     """From a contact state y0 at its force, follow force control to ``force``."""
 
     def along(f, guess):
-        return _solve(model, Control(volume=volume, force=f), guess, lam, tol)
+        return _solve(model, replace(fill, force=f), guess, lam, tol)
 
     total, y = 0, y0
     start = plate_force(model, y0, PENALTY, lam)

@@ -21,8 +21,12 @@ with equilibrium inside, at r = 1 (rho = 1, lambda_2 = 1, w_1 = T1):
 
     R_rho(clamp) = 2 pi T1 t_rho,    R_eta(clamp) = 2 pi T1 t_eta + pi P,
 
-so T1 = |(R_rho, R_eta - pi P)| / (2 pi), and lambda_1 solves
-T1(lambda_1, 1) = (lambda_1 - lambda_1^-3) / 3 = T1 (monotonic).
+so T1 = +-|(R_rho, R_eta - pi P)| / (2 pi), its sign that of the vector's
+component along the discrete tangent at the clamp (negative: a compressed
+clamp, which the state then reports), and lambda_1 solves
+T1(lambda_1, 1) = w_1(lambda_1, 1) = T1 (``material.Law.planar_stretch``,
+from the element's own slope at the clamp; for Mooney-Rivlin
+w_1(l, 1) = (l - l^-3) / 3, monotonic).
 
 The profile samples every node (vertices and P2 midpoints), so that a line
 through its points follows the quadratic meridian to O(h^3/8) rather than
@@ -34,14 +38,13 @@ own, lambda_2 = rho/r.
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import brentq
 
 from pocket.core.states import Profile
 
 from .geometry import node_radii
 from .model import Model, forms, placement, split
 
-__all__ = ["vertices", "reaction", "pole_stretch", "clamp_stretch", "volume", "profile", "R_FIT"]
+__all__ = ["vertices", "reaction", "pole_stretch", "clamp_stretch", "profile", "R_FIT"]
 
 R_FIT = 1e-4  # smallest radius (units R) of the vertices the pole stretch is fitted to
 
@@ -69,16 +72,16 @@ def pole_stretch(model: Model, y: np.ndarray, mode: str) -> float:
                  + s[2] * x[0] * x[1] / ((x[2] - x[0]) * (x[2] - x[1])))
 
 
-def clamp_stretch(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> float:
-    """Meridional stretch at the clamp from the reaction (module docstring)."""
-    rows = reaction(model, y, mode, multiplier)
-    tension = np.hypot(rows[-2], rows[-1] - np.pi * y[model.dofs]) / (2 * np.pi)
-    return float(brentq(lambda a: (a - a**-3) / 3.0 - tension, 0.5, 1e3, xtol=1e-15, rtol=1e-15))
-
-
-def volume(model: Model, y: np.ndarray, mode: str) -> float:
-    """V(x)."""
-    return forms(model, y, mode).volume
+def clamp_stretch(model: Model, y: np.ndarray, mode: str, rows: np.ndarray) -> float:
+    """Meridional stretch at the clamp from the reaction ``rows`` (``reaction``; module docstring)."""
+    flux = np.array([rows[-2], rows[-1] - np.pi * y[model.dofs]])
+    u, _ = split(model, y)
+    p, length = model.order, placement(model, y, mode).lengths[-1]
+    nodal = u.reshape(-1, 2)[-(p + 1):]  # the last element's nodes, along r
+    slope = (nodal[-1] - nodal[-2]) / length if p == 1 else (nodal[0] + 3 * nodal[2] - 4 * nodal[1]) / length
+    sign = 1.0 if flux @ slope >= 0.0 else -1.0
+    tension = sign * float(np.hypot(*flux)) / (2 * np.pi)
+    return model.law.planar_stretch(tension, float(np.hypot(*slope)))
 
 
 def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float,
@@ -96,7 +99,7 @@ def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float
     if mode == "fitted":  # the flat zone is equibiaxial, lambda_c = pole, up to the edge vertex
         inside = r <= contact_radius
         l1[inside] = l2[inside] = pole
-    t1, t2 = model.material.tensions(l1, l2)
+    t1, t2 = model.law.tensions(l1, l2)
     return Profile(r, rho, eta, l1, l2, t1, t2, r <= contact_radius if contact_radius > 0 else r < 0)
 
 

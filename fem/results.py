@@ -1,7 +1,13 @@
 """The states the solver returns, built from converged unknowns and checked before they leave.
 
-Reported quantities (``pocket.core.states``): the inputs (alpha, pressure or
-pressure_initial, force) are echoed exactly as given.
+Reported quantities (``pocket.core.states``): the inputs (alpha or the
+material, pressure or pressure_initial, force, the fluid) are echoed exactly as
+given (``material.law_of``, ``gas.fluid_of``).
+
+Smallest tensions: T_1 = w_1 / lambda_2 and T_2 = w_2 / lambda_1 at the
+quadrature points and at the profile's nodes; the state reports the least of
+each, so that a compressive tension anywhere the solver evaluates it flags
+the state as wrinkled.
 
 Inflated: ``height`` = eta(0), ``stretch_pole`` and ``stretch_clamp`` from
 ``post``, ``volume`` V(x).
@@ -27,7 +33,8 @@ penalty), ``force_pressure_area`` from the active quadrature points (O(h)),
 
 Checks (``check``): every number finite, every stretch positive (at the
 quadrature points too), rho(1) = 1 (lambda_2(1) = 1), the volume at its
-target, and for the fitted contact F = P A_c and the plate reaction equal to
+target (V_I, or V_I q(P) for a gas: ``gas``) and for a gas the polytropic law
+itself, and for the fitted contact F = P A_c and the plate reaction equal to
 the force. A state that fails one is a solver failure (``ConvergenceError``
 naming the check), never returned.
 """
@@ -39,10 +46,11 @@ import dataclasses
 import numpy as np
 
 from pocket.core.errors import ConvergenceError
+from pocket.core.fluids import LIQUID
 from pocket.core.states import CompressedState, InflatedState
 
 from . import post
-from .model import FITTED, FREE, PENALTY, Model, fields, plate_force
+from .model import FITTED, FREE, PENALTY, Control, Model, fields, forms, plate_force
 from .penalty import contact_area_active, penetration
 
 __all__ = ["inflated", "uncompressed", "fitted_state", "penalty_state", "CONSISTENCY"]
@@ -66,6 +74,39 @@ def _fail(where: str, what: str):
     raise ConvergenceError(f"the finite-element state {where} fails its own check: {what}")
 
 
+def _echo(model: Model, fill: Control | None = None) -> dict:
+    """The inputs a state echoes as given: alpha, material and (compressed) the fluid."""
+    out = dict(alpha=model.law.alpha, material=model.law.material)
+    if fill is not None:
+        out["fluid"] = _fluid(fill)
+    return out
+
+
+def _fluid(fill: Control):
+    """The fluid as given: LIQUID, or the gas sealed in ``fill``."""
+    return LIQUID if fill.gas is None else fill.gas.fluid
+
+
+def _least_tensions(linear, profile) -> dict:
+    """The least T_1 and T_2 over the quadrature points (``linear``: the state's forms) and the profile's
+    nodes (units E T)."""
+    t1, t2 = linear.tension_min
+    return dict(tension_1_min=min(t1, float(profile.tension_1.min())),
+                tension_2_min=min(t2, float(profile.tension_2.min())))
+
+
+def _volume_target(fill: Control, pressure: float) -> float:
+    """V_I, or V_I q(P) for a gas."""
+    return fill.volume * (1.0 if fill.gas is None else fill.gas.ratio(pressure)[0])
+
+
+def _check_gas(fill: Control, state, where: str) -> None:
+    if fill.gas is not None:
+        error = fill.gas.residual(state.pressure, state.volume, fill.volume)
+        if abs(error) > CONSISTENCY:
+            _fail(where, f"the gas law (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma off by {error:.3g} (relative)")
+
+
 def _check_common(model: Model, y: np.ndarray, mode: str, state, where: str, volume_target: float) -> None:
     numbers = [v for v in state.scalars().values() if isinstance(v, float)]
     arrays = [getattr(state.profile, f.name) for f in dataclasses.fields(state.profile) if f.name != "contact"]
@@ -85,18 +126,21 @@ def _check_common(model: Model, y: np.ndarray, mode: str, state, where: str, vol
 def inflated(model: Model, y: np.ndarray, iterations: int, *, pressure: float | None = None,
              volume: float | None = None) -> InflatedState:
     """The inflated state of FREE unknowns y; ``pressure`` or ``volume``: the given input, echoed."""
-    pole, clamp = post.pole_stretch(model, y, FREE), post.clamp_stretch(model, y, FREE)
-    v = post.volume(model, y, FREE)
+    linear = forms(model, y, FREE)
+    pole, clamp = post.pole_stretch(model, y, FREE), post.clamp_stretch(model, y, FREE, linear.residual)
+    v = linear.volume
+    profile = post.profile(model, y, FREE, pole=pole, clamp=clamp)
     state = InflatedState(
-        alpha=model.material.alpha,
+        **_echo(model),
         pressure=pressure if pressure is not None else float(y[model.dofs]),
         stretch_pole=pole,
         height=float(y[1]),
         volume=volume if volume is not None else v,
         stretch_clamp=clamp,
-        profile=post.profile(model, y, FREE, pole=pole, clamp=clamp),
+        profile=profile,
         solver="fem",
         extra=_extra(model, iterations),
+        **_least_tensions(linear, profile),
     )
     where = f"at Phat = {state.pressure:.6g}"
     _check_common(model, y, FREE, state, where, v if volume is None else volume)
@@ -105,14 +149,16 @@ def inflated(model: Model, y: np.ndarray, iterations: int, *, pressure: float | 
     return state
 
 
-def uncompressed(state: InflatedState, contact: str) -> CompressedState:
-    """The state at Fhat = 0: the inflated one."""
+def uncompressed(state: InflatedState, fill: Control, contact: str) -> CompressedState:
+    """The state at Fhat = 0: the inflated one (with the fluid ``fill`` holds)."""
     return CompressedState(
-        alpha=state.alpha, pressure_initial=state.pressure, force=0.0, pressure=state.pressure, pressure_ratio=1.0,
+        alpha=state.alpha, material=state.material, fluid=_fluid(fill), pressure_initial=state.pressure, force=0.0,
+        pressure=state.pressure, pressure_ratio=1.0,
         contact_area=0.0, contact_radius=0.0, stretch_contact=state.stretch_pole, height=state.height,
         height_ratio=1.0, volume=state.volume, profile=state.profile, inflated=state, solver="fem",
         extra={**state.extra, "contact": contact, "newton_iterations": 0, "penetration": 0.0,
                "force_reaction": 0.0, "force_pressure_area": 0.0, "force_difference": 0.0},
+        tension_1_min=state.tension_1_min, tension_2_min=state.tension_2_min,
     )
 
 
@@ -128,12 +174,14 @@ def _contact_pressure_error(model: Model, y: np.ndarray, rows: np.ndarray) -> fl
     return float(np.max(np.abs(plate[:p] - load[:p])) / np.max(np.abs(load[:p])))
 
 
-def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedState, force) -> CompressedState:
-    """The compressed state of FITTED unknowns y at the given ``force`` (Fhat, echoed)."""
+def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedState, fill: Control,
+                 force) -> CompressedState:
+    """The compressed state of FITTED unknowns y at the given ``force`` (Fhat, echoed) with the fluid ``fill``."""
     n, p_i = model.dofs, state.pressure
     pressure, h, a = (float(v) for v in y[n:])
     rho_a = float(y[2 * model.order])
-    rows = post.reaction(model, y, FITTED)
+    linear = forms(model, y, FITTED)
+    rows = linear.residual
     reaction = -float(rows[model.tied()].sum()) / (np.pi * p_i)
     area = pressure * rho_a**2 / p_i
     free_eta = y[2 * model.order + 1: n: 2]
@@ -142,16 +190,17 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
                  contact_pressure_error=_contact_pressure_error(model, y, rows),
                  penetration=max(0.0, float(free_eta.max() - h)))
     stretch = rho_a / a
-    clamp = post.clamp_stretch(model, y, FITTED)
+    clamp = post.clamp_stretch(model, y, FITTED, rows)
+    profile = post.profile(model, y, FITTED, pole=stretch, clamp=clamp, contact_radius=a)
     out = CompressedState(
-        alpha=state.alpha, pressure_initial=p_i, force=force, pressure=pressure, pressure_ratio=pressure / p_i,
+        **_echo(model, fill), pressure_initial=p_i, force=force, pressure=pressure, pressure_ratio=pressure / p_i,
         contact_area=rho_a**2, contact_radius=a, stretch_contact=stretch, height=h, height_ratio=h / state.height,
-        volume=post.volume(model, y, FITTED),
-        profile=post.profile(model, y, FITTED, pole=stretch, clamp=clamp, contact_radius=a),
-        inflated=state, solver="fem", extra=extra,
+        volume=linear.volume,
+        profile=profile, inflated=state, solver="fem", extra=extra, **_least_tensions(linear, profile),
     )
     where = f"at Fhat = {force!r}"
-    _check_common(model, y, FITTED, out, where, state.volume)
+    _check_common(model, y, FITTED, out, where, _volume_target(fill, pressure))
+    _check_gas(fill, out, where)
     for name in ("force_reaction", "force_pressure_area"):
         if abs(extra[name] - force) > CONSISTENCY * force + FORCE_FLOOR * model.elements:
             _fail(where, f"{name} = {extra[name]!r} against the force {force!r} (F = P A_c)")
@@ -160,10 +209,10 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
     return out
 
 
-def penalty_state(model: Model, y: np.ndarray, lam, iterations: int, state: InflatedState,
+def penalty_state(model: Model, y: np.ndarray, lam, iterations: int, state: InflatedState, fill: Control,
                   force=None) -> CompressedState:
-    """The compressed state of PENALTY unknowns y (multiplier ``lam``); ``force``: the given Fhat
-    (None under plate-height control: the reaction is reported)."""
+    """The compressed state of PENALTY unknowns y (multiplier ``lam``) with the fluid ``fill``; ``force``: the
+    given Fhat (None under plate-height control: the reaction is reported)."""
     n, p_i = model.dofs, state.pressure
     pressure, h = float(y[n]), float(y[n + 1])
     reaction = plate_force(model, y, PENALTY, lam) / (np.pi * p_i)
@@ -175,16 +224,18 @@ def penalty_state(model: Model, y: np.ndarray, lam, iterations: int, state: Infl
     extra = _extra(model, iterations, PENALTY)
     extra.update(penetration=penetration(model, y), penetration_pole=max(0.0, float(y[1] - h)),
                  force_reaction=reaction, force_pressure_area=active, force_difference=reaction - active)
-    clamp = post.clamp_stretch(model, y, PENALTY, lam)
+    linear = forms(model, y, PENALTY, lam)
+    clamp = post.clamp_stretch(model, y, PENALTY, linear.residual)
+    profile = post.profile(model, y, PENALTY, pole=stretch, clamp=clamp, contact_radius=radius)
     out = CompressedState(
-        alpha=state.alpha, pressure_initial=p_i, force=fhat, pressure=pressure, pressure_ratio=pressure / p_i,
+        **_echo(model, fill), pressure_initial=p_i, force=fhat, pressure=pressure, pressure_ratio=pressure / p_i,
         contact_area=float(area), contact_radius=radius, stretch_contact=stretch, height=float(y[1]),
-        height_ratio=float(y[1]) / state.height, volume=post.volume(model, y, PENALTY),
-        profile=post.profile(model, y, PENALTY, pole=stretch, clamp=clamp, contact_radius=radius),
-        inflated=state, solver="fem", extra=extra,
+        height_ratio=float(y[1]) / state.height, volume=linear.volume,
+        profile=profile, inflated=state, solver="fem", extra=extra, **_least_tensions(linear, profile),
     )
     where = f"at Fhat = {fhat!r}"
-    _check_common(model, y, PENALTY, out, where, state.volume)
+    _check_common(model, y, PENALTY, out, where, _volume_target(fill, pressure))
+    _check_gas(fill, out, where)
     if force is not None and abs(reaction / force - 1.0) > CONSISTENCY:
         _fail(where, f"plate reaction {reaction!r} against the force {force!r}")
     return out

@@ -1,4 +1,4 @@
-"""Shared solving steps: one controlled solve, the starting dome, landing on a target.
+"""Shared solving steps: one controlled solve, the starting dome, landing on a target, locking.
 
 ``solve`` is Newton on the bordered system (``model``, ``newton``) followed by
 the range check: a free part below the clamp plane is outside the membrane
@@ -18,6 +18,15 @@ bisection of the bracket under the path's own control until it succeeds.
 Interpolating two distant converged states can give a slack meridian (|x'| < 1
 near the clamp: no tension, a soft mode and a wild Newton step), so a
 converged endpoint is also tried as the guess.
+
+``near_locking``: a rubber whose energy exists only below a locking stretch
+(Gent: I1 - 3 < Jm) returns NaN derivatives past it, so a load step that
+would cross it fails and is cut (``continuation``); a load path that gives up
+with its last state within LOCKING of locking (1 - (I1 - 3)/Jm at a quadrature
+point) has met the end of the rubber's domain. For a target of the geometry
+(a volume, a plate height), which locking bounds, that is OutOfRangeError;
+for a pressure or a force, which diverge at locking and so are never past it,
+a ConvergenceError that says how near locking it stopped.
 """
 
 from __future__ import annotations
@@ -31,15 +40,17 @@ from pocket.core import smallstrain
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .geometry import node_radii, place
-from .model import FITTED, FREE, Control, Model, conform, linearize, placement
+from .model import FITTED, FREE, Control, Model, conform, fields, linearize, placement
 from .newton import Tolerances, newton
 from .post import reaction
 
-__all__ = ["solve", "dome", "land", "increment"]
+__all__ = ["solve", "dome", "land", "increment", "near_locking", "LOCKING"]
 
 _ETA_FLOOR = -1e-12  # round-off below the clamp plane is not a range violation
 _SLOPE_FLOOR = 1e-12  # nor a tangent at the clamp rising by round-off
 _TINY = 1e-300  # a scale is never zero
+#: lock margin 1 - (I1 - 3)/Jm below which a load path that gave up has met the rubber's locking
+LOCKING = 1e-2
 
 
 def increment(model: Model, mode: str) -> Callable:
@@ -150,3 +161,18 @@ def land(
 
 
 
+
+
+def near_locking(model: Model, y: np.ndarray, mode: str, err: ConvergenceError, target: str, bounded: bool) -> None:
+    """Raise, from ``err``, the failure of a load path towards ``target`` whose last state ``y`` is within
+    LOCKING of the rubber's locking: OutOfRangeError if locking bounds the target (``bounded``), else a
+    ConvergenceError saying so (module docstring). Returns if the state is not near locking."""
+    w = fields(model, y, mode)
+    margin = model.law.lock_margin(w.l1, w.l2)
+    if not margin < LOCKING:
+        return
+    where = (f"the sheet is within {margin:.2g} of the rubber's locking (1 - (I1 - 3)/Jm, {model.law.label}) at "
+             f"the last state reached")
+    if bounded:
+        raise OutOfRangeError(f"{target} is not reached before the rubber locks: {where}") from err
+    raise ConvergenceError(f"{err} ({where})", load=err.load, iterations=err.iterations, residual=err.residual) from err

@@ -1,11 +1,14 @@
 """Bad input to the finite-element solver: a one-line InputError quoting the value,
-raised before any work; and a mesh the solver cannot use, rejected saying why."""
+raised before any work (the rubber, its law's parameters, the fluid, the loads, the options);
+and a mesh the solver cannot use, rejected saying why."""
 
 import numpy as np
 import pytest
 
 from pocket import fem
 from pocket.core.errors import InputError
+from pocket.core.fluids import Fluid
+from pocket.core.materials import Material
 
 CASES = [
     (lambda: fem.inflate(-1.0, 0.1), "alpha = -1.0"),
@@ -31,6 +34,16 @@ CASES = [
     (lambda: fem.inflate(0.3, 0.1, mesh=np.linspace(0, 1, 11)[::-1]), "increasing"),
     (lambda: fem.inflate(0.3, 0.1, mesh=np.zeros((3, 4))), "1-D"),
     (lambda: fem.compress(0.3, 0.31, 0.1, mesh=np.linspace(0, 1, 11), elements=10), "either mesh or elements"),
+    (lambda: fem.inflate("rubber", 0.1), "alpha = 'rubber'"),
+    (lambda: fem.inflate(Material("gent", (("mu", 1.0), ("jm", -2.0))), 0.1), "sheet.jm = -2.0"),
+    (lambda: fem.inflate(Material("ogden", (("mu", (1.0,)), ("exponents", (-2.0,)))), 0.1), "mu_p alpha_p > 0"),
+    (lambda: fem.inflate(Material("rubber", ()), 0.1), "material = 'rubber', but it must be one of"),
+    (lambda: fem.compress(0.3, 0.31, 0.1, fluid="water"), "fluid = 'water', but it must be 'liquid' or a gas"),
+    (lambda: fem.compress(0.3, 0.31, 0.1, fluid=Fluid("gas", -1.0, 1.0)), "fluid.ambient = -1.0"),
+    (lambda: fem.compress(0.3, 0.31, 0.1, fluid=Fluid("gas", 1.0, 2.0)), "fluid.gamma = 2.0"),
+    (lambda: fem.compress(0.3, 0.31, 0.1, fluid=Fluid("liquid", 1.0, 1.0)), "a liquid has no ambient pressure"),
+    (lambda: fem.compress(0.3, 0.31, 0.1, fluid=Fluid("plasma")), "fluid.kind = 'plasma'"),
+    (lambda: fem.compress_height(0.3, 0.31, 0.2, fluid="water"), "fluid = 'water'"),
 ]
 
 

@@ -2,9 +2,12 @@
 
 Exact answer: the residual and tangent of the membrane (with the penalty plate)
 written below as scikit-fem forms, assembled by scikit-fem's own machinery on
-the same mesh with the same quadrature, equal the kernel's to round-off. The
-forms here are an independent transcription of the energy's first and second
-variations (fem/kernel.py docstring); the two share only the material law.
+the same mesh with the same quadrature, equal the kernel's to round-off, for
+each rubber law. The forms here are an independent transcription of the
+energy's first and second variations (fem/kernel.py docstring); the two share
+only the law's derivatives (tested against the shared energy in
+test_fem_laws.py), evaluated here through the Python entry, there inside the
+compiled loop.
 Also: the bordered banded solver equals a dense solve of the same matrix.
 """
 
@@ -12,11 +15,21 @@ import numpy as np
 import pytest
 from pocket.fem import banded, condensed, kernel
 from pocket.fem.geometry import place
-from pocket.fem.material import MooneyRivlin
+from pocket.fem.material import law_of
 from pocket.fem.reference import reference
 from skfem import Basis, BilinearForm, ElementLineP1, ElementLineP2, ElementVector, LinearForm, MeshLine
 
+from pocket.core.materials import check
+
 ALPHA, P, H, KAPPA = 0.31, 0.27, 0.55, 40.0
+#: one rubber of each law (and a Mooney-Rivlin alpha): parameters in a stress unit of their own
+RUBBERS = {
+    "alpha": ALPHA,
+    "neo-hookean": check("neo-hookean", {"mu": 2.0}),
+    "yeoh": check("yeoh", {"c10": 0.5, "c20": -0.02, "c30": 0.003}),
+    "gent": check("gent", {"mu": 1.0, "jm": 4.0}),
+    "ogden": check("ogden", {"mu": [1.1, 0.02, -0.05], "exponents": [1.4, 4.5, -2.2]}),
+}
 
 
 def _state(r):
@@ -25,8 +38,7 @@ def _state(r):
                      0.6 * (1 - r**2) + 0.03 * np.cos(3 * r) * (1 - r)])
 
 
-def _skfem(order, nodes):
-    mat = MooneyRivlin(ALPHA)
+def _skfem(order, nodes, law):
     element = {1: ElementLineP1, 2: ElementLineP2}[order]()
     basis = Basis(MeshLine(nodes), ElementVector(element, 2), intorder=2 * order + 1)  # the kernel's rule
     u = basis.project(lambda x: _state(x[0]))
@@ -40,7 +52,7 @@ def _skfem(order, nodes):
     @LinearForm
     def residual(v, w):
         r, rho, eta, drho, deta, l1, l2 = kin(w)
-        w1, w2 = mat.gradient(l1, l2)
+        w1, w2 = law.derivatives(l1, l2)[:2]
         p_n = np.maximum(KAPPA * (eta - H), 0.0)
         return (2 * np.pi * w1 * (drho * v.grad[0, 0] + deta * v.grad[1, 0]) / l1 * r
                 + 2 * np.pi * w2 * v[0] + np.pi * P * (2 * rho * deta * v[0] + rho**2 * v.grad[1, 0])
@@ -49,8 +61,7 @@ def _skfem(order, nodes):
     @BilinearForm
     def tangent(du, v, w):
         r, rho, eta, drho, deta, l1, l2 = kin(w)
-        w1, _ = mat.gradient(l1, l2)
-        w11, w12, w22 = mat.hessian(l1, l2)
+        w1, _, w11, w12, w22 = law.derivatives(l1, l2)
         t = (drho / l1, deta / l1)
         tdu = t[0] * du.grad[0, 0] + t[1] * du.grad[1, 0]
         tv = t[0] * v.grad[0, 0] + t[1] * v.grad[1, 0]
@@ -78,18 +89,20 @@ def _reorder(order, basis):
     return out
 
 
+@pytest.mark.parametrize("rubber", RUBBERS)
 @pytest.mark.parametrize("order", [1, 2])
-def test_kernel_equals_scikit_fem(order):
-    """Residual and tangent (membrane, pressure, active penalty) equal to 1e-12 relative."""
+def test_kernel_equals_scikit_fem(order, rubber):
+    """Residual and tangent (membrane, pressure, active penalty) equal to 1e-12 relative, for each law."""
     nodes = np.linspace(0.0, 1.0, 13) ** 1.3
-    basis, u, r_sk, k_sk = _skfem(order, nodes)
+    law = law_of(RUBBERS[rubber])
+    basis, u, r_sk, k_sk = _skfem(order, nodes, law)
     perm = _reorder(order, basis)
     u_k = np.empty_like(u)
     u_k[perm] = u
     ref = reference(order)
     w = kernel.fields(ref, place(nodes, ref), u_k, P)
     assert (w.eta > H).any() and (w.eta < H).any(), "the plate must touch part of the sheet"
-    linear = kernel.evaluate(MooneyRivlin(ALPHA), ref, place(nodes, ref), u_k, P, kernel.Contact(H, KAPPA))
+    linear = kernel.evaluate(law, ref, place(nodes, ref), u_k, P, kernel.Contact(H, KAPPA))
     r = linear.residual
     kl = 2 * order + 1
     band = banded.band(linear.matrices, 2 * order, kl)
@@ -153,7 +166,7 @@ def test_condensed_solve_equals_the_full_band():
     m = model.discretize(0.3, default_mesh(16), 2, 1e5)
     y_i, _ = inflation.to_pressure(m, 0.3, Tolerances())
     volume = inflation.volume(m, y_i)
-    y, _ = fitted.first_contact(m, y_i, volume, 0.1, Tolerances())
+    y, _ = fitted.first_contact(m, y_i, model.Control(volume=volume), 0.1, Tolerances())
     r, system = model.linearize(m, y, model.FITTED, model.Control(volume=volume, force=0.5, scale=0.5))
     assert isinstance(system, condensed.Condensed)
     full = banded.Bordered(banded.band(system.matrices, 4, 5), 5, system.B, system.C, system.D)
