@@ -19,6 +19,10 @@ so a = sqrt(Fhat / q) / lambda_c. Residuals, also of order one:
     V / V_I - 1           (fixed fluid volume; V = -pi int rho^2 eta' dr over the free
                            part alone, eta' = 0 on the contact zone)
 
+or, for a gas sealed at P_I, V / V_I - ((Phat_I + Phat_atm) / (Phat + Phat_atm))^(1/gamma)
+(``pocket.core.fluids``: the polytropic law solved for V / V_I, of order one too; for a
+liquid the ratio is exactly 1, so that residual is the liquid's bit for bit)
+
 and, for the end of the range (``pocket.shooting.rangeend``), with the force as a
 third unknown, psi(1) - theta (the meridian's angle at the clamp).
 
@@ -34,9 +38,11 @@ import math
 
 import numpy as np
 
+from pocket.core.fluids import LIQUID, Fluid
 from pocket.core.states import InflatedState
 
 from .integrator import OK, STATUS
+from .laws import Law, law_of
 from .shots import Tolerance, shot_edge
 
 __all__ = ["Problem"]
@@ -44,15 +50,30 @@ __all__ = ["Problem"]
 
 @dataclasses.dataclass(frozen=True)
 class Problem:
-    """The compression of ``inflated`` (alpha, Phat_I) at ODE tolerance ``rtol``."""
+    """The compression of ``inflated`` (its rubber, Phat_I) at ODE tolerance ``rtol``, with ``fluid``
+    sealed in it (ambient pressure as Phat_atm). ``law`` defaults to the inflated state's rubber."""
 
     inflated: InflatedState
     rtol: float
+    law: Law | None = None
+    fluid: Fluid = LIQUID
     _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
+    def __post_init__(self):
+        if self.law is None:
+            given = self.inflated.alpha if self.inflated.alpha is not None else self.inflated.material
+            object.__setattr__(self, "law", law_of(given))
+
     @property
-    def alpha(self) -> float:
-        return self.inflated.alpha
+    def label(self) -> str:
+        """The pocket in messages: its rubber, Phat_I and (a gas) its fluid."""
+        fluid = "" if not self.fluid.is_gas else f", gas at ambient {self.fluid.ambient!r}, gamma {self.fluid.gamma!r}"
+        return f"{self.law.label}, pressure = {self.inflated.pressure!r}{fluid}"
+
+    @property
+    def key(self) -> tuple:
+        """What identifies the pocket's problem (a cache key): rubber, Phat_I, rtol, fluid."""
+        return (self.law.key, self.inflated.pressure, self.rtol, self.fluid)
 
     @property
     def strain(self) -> float:
@@ -85,7 +106,7 @@ class Problem:
         a = math.sqrt(force / q) / lc
         if not a < 1.0:
             return None
-        return q, lc, a, 3.0 * (1.0 + self.alpha) * self.inflated.pressure * q
+        return q, lc, a, self.law.pressure_factor * self.inflated.pressure * q
 
     def shoot(self, x, force, store=0):
         """(status, y(1), steps) of the free part for unknowns x at ``force``; None outside the domain.
@@ -100,7 +121,7 @@ class Problem:
         if not store and self._last.get("key") == key:
             return self._last["shot"]
         q, lc, a, p = g
-        shot = shot_edge(lc, a, self.alpha, p, self.tolerance, store=store)
+        shot = shot_edge(lc, a, self.law, p, self.tolerance, store=store)
         if not store:
             self._last.update(key=key, shot=shot)
         return shot
@@ -132,5 +153,7 @@ class Problem:
                 self._last["failure"] = (shot[0], float(x[0]), self.stretch(x[1]), float(force))
             return None
         y = shot[1]
-        out = [(y[0] - 1.0) / self.strain, y[4] / self.inflated.volume - 1.0]
+        pressure = self.inflated.pressure
+        out = [(y[0] - 1.0) / self.strain, y[4] / self.inflated.volume - self.fluid.volume_ratio(pressure * x[0],
+                                                                                                  pressure)]
         return np.array(out if angle is None else [*out, y[2] - angle])

@@ -31,7 +31,7 @@ the end, unless the force fell on the way: then the maximum of Fhat(theta) is
 located by golden sections on the steps around it. Shots from the contact edge
 may turn past pi (``shots.PSI_MAX_EDGE``), so the residuals are smooth at pi.
 
-Tolerance. The end is computed once per (alpha, Phat_I, rtol) and cached. Its error
+Tolerance. The end is computed once per (rubber, Phat_I, rtol, fluid) and cached. Its error
 is that of the shots (``tests/test_shooting_rangeend.py`` measures it under rtol
 refinement). A force up to and including the returned number is inside the range
 and solves; any force above it is outside, however close: the decision is the
@@ -48,9 +48,11 @@ import math
 import numpy as np
 
 from pocket.core.errors import ConvergenceError
-from pocket.core.inputs import check_alpha, check_positive
+from pocket.core.fluids import as_fluid
+from pocket.core.inputs import check_positive
 
 from . import brent, newton
+from .laws import law_of
 from .problem import Problem
 
 __all__ = ["End", "range_end", "end_of", "solve_on_branch"]
@@ -71,25 +73,27 @@ class End:
     path: tuple
 
 
-_ENDS: dict[tuple[float, float, float], End] = {}  # (alpha, Phat_I, rtol) -> End
+_ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid) -> End
 
 
-def range_end(alpha, pressure_initial, *, rtol=1e-10) -> float:
-    """The largest force Fhat for which the pocket (alpha, Phat_I) has a compressed state
-    (module docstring): forces up to and including it solve; above it, none do."""
+def range_end(material, pressure_initial, *, fluid=None, rtol=1e-10) -> float:
+    """The largest force Fhat for which the pocket (its rubber ``material``, a Mooney-Rivlin alpha or a
+    ``Material``; Phat_I; its ``fluid``, as for ``compression_curve``) has a compressed state (module
+    docstring): forces up to and including it solve; above it, none do."""
     from .inflation import inflate
 
-    alpha = check_alpha(alpha)
+    law = law_of(material)
     pressure_initial = check_positive("pressure", pressure_initial)
-    key = (alpha, pressure_initial, rtol)
+    fluid = as_fluid(fluid)
+    key = (law.key, pressure_initial, rtol, fluid)
     if key not in _ENDS:
-        end_of(Problem(inflate(alpha, pressure_initial, rtol=rtol), rtol))
+        end_of(Problem(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid))
     return _ENDS[key].force
 
 
 def end_of(problem: Problem, seed=None) -> End:
     """The ``End`` of ``problem`` (cached); ``seed``: an optional solved (force, x) on its branch."""
-    key = (problem.alpha, problem.inflated.pressure, problem.rtol)
+    key = problem.key
     if key not in _ENDS:
         _ENDS[key] = _compute(problem, seed)
     return _ENDS[key]
