@@ -144,10 +144,14 @@ def _failed(problem, sol, f_try, f0, force, more):
     q, e = sol.x
     why = sol.message if not sol.success else "the solution left the branch (past pi, a fold, or a jump)"
     last = problem.failure()
+    lc = problem.stretch(e)
+    margin = problem.law.lock_margin(lc, lc)
+    locking = (f"; the contact zone is within {margin:.1e} of the rubber's locking (1 - (I1 - 3)/Jm), where "
+               "the tensions, and so the residuals' noise, grow without bound" if margin < 1e-2 else "")
     return ConvergenceError(
         f"compression failed at force = {f_try:.10g} (continuing from force = {f0:.10g} towards {force!r}, "
         f"{problem.label}): {why}; max |residual| = "
-        f"{sol.residual:.3g} at P/P_I = {q:.10g}, lambda_c = {problem.stretch(e):.10g}" + (f"; {last}" if last else "")
+        f"{sol.residual:.3g} at P/P_I = {q:.10g}, lambda_c = {lc:.10g}" + locking + (f"; {last}" if last else "")
         + more, load=f_try, iterations=sol.evaluations, residual=sol.residual)
 
 

@@ -63,6 +63,7 @@ _P_RTOL = 1e-14  # relative accuracy of the pressure p(s) where its value matter
 _MARCH_RTOL = 1e-9  # ... and where only its trend matters (the march)
 _PEAK_RTOL = 1e-9  # relative width in s to which a pressure maximum is located (its value to ~1e-18)
 _LOCK_RTOL = 1e-9  # relative distance to a locking strain at which a march gives up
+_P_CAP = 1e6  # largest pressure p tried for one pole stretch (Phat ~ 3e5; 1e6 is already no rubber pocket)
 
 
 def _tolerance(rtol, strain):
@@ -90,6 +91,8 @@ def pressure_of_stretch(l0, law, *, rtol=1e-10, tol=None, guess=None, accuracy=_
     root of m(s, .) nearest above or below ``guess`` (default: the small-strain pressure). ``law``: a
     ``Law``, a Mooney-Rivlin alpha or a ``Material``. None if there is none: where the pole tension
     vanishes (for alpha < 0 past l0^2 = -1/alpha) or the pole is past the law's locking stretch.
+    Infinite for a locking rubber when no p up to ``_P_CAP`` closes the shot: p(s) diverges as the
+    pole approaches the locking stretch.
     """
     law = as_law(law)
     s = l0 - 1.0
@@ -109,7 +112,9 @@ def pressure_of_stretch(l0, law, *, rtol=1e-10, tol=None, guess=None, accuracy=_
         while f_hi >= 0.0:
             width *= 4.0
             lo, f_lo, hi = hi, f_hi, hi + width
-            if hi > 1e6:
+            if hi > _P_CAP:
+                if law.stretch_limit < math.inf:  # a locking rubber: p(s) diverges at its locking stretch
+                    return math.inf
                 raise ConvergenceError(f"inflation: no pressure up to 1e6 closes the shot from lambda_0 = {l0!r}",
                                        load=l0)
             f_hi = miss(hi)
@@ -264,6 +269,10 @@ def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:
         p = branch.pressure(s, precise=True)
         if p is None:
             return None
+        if p == math.inf:
+            raise OutOfRangeError(f"no inflated state: volume = {volume!r} is not reached before the rubber locks "
+                                  f"(lambda_0 = {1 + s:.10g} already needs Phat > {_P_CAP / law.pressure_factor:.3g}; "
+                                  f"the locking stretch is {law.stretch_limit:.10g})")
         status, y, _ = shot_pole(1.0 + s, law, p, tol)
         if status != OK:
             raise ConvergenceError(f"inflation ({what}): the shot from lambda_0 = {1 + s:.12g} at its pressure "

@@ -20,7 +20,7 @@ import numpy as np
 from pocket.core.materials import Material, as_material
 
 from . import brent
-from .tensions import CODES, MOONEY_RIVLIN
+from .tensions import CODES, GENT, MOONEY_RIVLIN
 
 __all__ = ["Law", "law_of", "as_law"]
 
@@ -35,6 +35,12 @@ class Law:
     key: tuple
     label: str
     stretch_limit: float = math.inf
+
+    def lock_margin(self, l1: float, l2: float) -> float:
+        """1 - (I1 - 3) / Jm at stretches (l1, l2) for a rubber that locks (0 at locking), inf for the rest."""
+        if self.code != GENT:
+            return math.inf
+        return 1.0 - (l1 * l1 + l2 * l2 + 1.0 / (l1 * l2) ** 2 - 3.0) / self.params[1]
 
     @property
     def tension_scale(self) -> float:

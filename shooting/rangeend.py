@@ -18,7 +18,14 @@ The clamp angle theta = psi(1) rises along the branch from its inflated value.
 For alpha >= 0 (every case measured) the force rises with it up to theta = pi.
 For some alpha < 0 (softening under large hoop stretch; e.g. alpha = -0.5 at
 Phat_I = 0.1) the force reaches a maximum (a fold) before theta = pi: past that
-force the branch carries no state under force control.
+force the branch carries no state under force control. A rubber that locks (Gent,
+I1 - 3 < Jm) and is inflated close to its locking stretch may have no end at all:
+as the force grows the pressure grows without bound while the stretches approach
+the locking limit and the clamp angle a limit below pi (measured: Jm = 3, Phat_I = 2,
+psi(1) -> 2.955 with Fhat -> infinity). The continuation in theta then stalls
+below that angle with the contact zone within 1 % of locking: the range has no end
+(``range_end`` is inf), and forces so large that the stretches come within the
+solver's precision of locking fail as ConvergenceErrors that say so.
 
 The end, defined and computed. Fhat_end is the largest force on the branch for
 psi(1) in [theta_inflated, pi]: the force at psi(1) = pi, or the force maximum
@@ -60,17 +67,20 @@ __all__ = ["End", "range_end", "end_of", "solve_on_branch"]
 _START_FORCE = 1e-2  # the first state of the continuation in theta (halved if it does not solve)
 _MIN_STEP = 1e-6  # smallest step in theta (rad) before the continuation gives up
 _FOLD_XTOL = 1e-7  # width in theta to which a force maximum is located (the force to ~1e-14)
+_LOCKING = 1e-2  # lock margin 1 - (I1 - 3)/Jm of the contact zone below which a stalled continuation is locking
 
 
 @dataclasses.dataclass(frozen=True)
 class End:
     """The end of one pocket's range: ``force`` (Fhat_end), the clamp angle there (pi, or less at a
-    ``fold``) and the branch up to it, ``path``: (theta, z = (q, e, Fhat)) with theta increasing."""
+    ``fold``) and the branch up to it, ``path``: (theta, z = (q, e, Fhat)) with theta increasing.
+    A rubber that ``locks`` first has no end: ``force`` is inf, ``angle`` the last clamp angle solved."""
 
     force: float
     angle: float
     fold: bool
     path: tuple
+    locks: bool = False
 
 
 _ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid) -> End
@@ -154,6 +164,9 @@ def _compute(problem, seed):
         if sol is None:
             step, jacobian = 0.5 * step, None
             if step < _MIN_STEP:
+                lc = problem.stretch(path[-1][1][1])
+                if problem.law.lock_margin(lc, lc) < _LOCKING:
+                    return End(force=math.inf, angle=theta, fold=False, path=tuple(path), locks=True)
                 raise ConvergenceError(f"range end: the continuation in the clamp angle stalled at psi(1) = "
                                        f"{theta:.10g} (Fhat = {path[-1][1][2]:.10g})", load=path[-1][1][2])
             continue
