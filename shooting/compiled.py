@@ -108,8 +108,10 @@ if FunctionCache is not None:
 
 
 def compiled(function):
-    """``numba.njit(function)``, cached on disk where possible (module docstring)."""
-    dispatcher = njit(function)
+    """``numba.njit(function)``, cached on disk where possible (module docstring), with numpy's error model:
+    a division by zero gives inf or nan (which the integrator rejects as a failed step) rather than raising
+    ZeroDivisionError from compiled code (a stage that lands exactly on Gent's locking limit)."""
+    dispatcher = njit(function, error_model="numpy")
     if FunctionCache is None:
         return dispatcher
     try:
