@@ -39,7 +39,7 @@ from .integrator import OK, STATUS
 from .laws import law_of
 from .problem import Problem
 from .rangeend import end_of, solve_on_branch
-from .shots import profile_from_steps
+from .shots import profile_from_steps, tension_minima
 
 __all__ = ["compress", "compression_curve"]
 
@@ -166,6 +166,8 @@ def _state(problem, force, x, fluid) -> tuple[CompressedState, float]:
             raise ConvergenceError(f"compression at force = {force!r}: the {what} shot {STATUS[code]}", load=force)
     inflated = problem.inflated
     height = -y[1]
+    profile = profile_from_steps(steps, problem.law, lc, contact_radius=a)
+    low = tension_minima(profile, steps, problem.law, p, problem.tolerance)
     state = CompressedState(
         alpha=inflated.alpha,
         pressure_initial=inflated.pressure,
@@ -178,11 +180,13 @@ def _state(problem, force, x, fluid) -> tuple[CompressedState, float]:
         height=height,
         height_ratio=height / inflated.height,
         volume=y[4],
-        profile=profile_from_steps(steps, problem.law, lc, contact_radius=a),
+        profile=profile,
         inflated=inflated,
         solver="shooting",
         material=inflated.material,
         fluid=fluid,
+        tension_1_min=low[0],
+        tension_2_min=low[1],
     )
     return state, y[2]
 

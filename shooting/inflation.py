@@ -51,7 +51,7 @@ from pocket.core.states import InflatedState
 from . import brent
 from .integrator import OK, STATUS, STEPS
 from .laws import as_law, law_of
-from .shots import Tolerance, profile_from_steps, shot_pole
+from .shots import Tolerance, profile_from_steps, shot_pole, tension_minima
 from .tensions import inside, tensions
 
 __all__ = ["inflate", "inflate_volume", "pressure_of_stretch"]
@@ -209,7 +209,10 @@ def _state(l0, law, p, tol, what, echo):
         raise ConvergenceError(f"inflation ({what}): the profile shot from lambda_0 = {l0:.12g} {STATUS[status]}",
                                load=l0)
     scalars = dict(pressure=p / law.pressure_factor, stretch_pole=l0, height=-y[1], volume=y[4], stretch_clamp=y[3])
-    return InflatedState(**{**scalars, **echo}, profile=profile_from_steps(steps, law, l0), solver="shooting")
+    profile = profile_from_steps(steps, law, l0)
+    low = tension_minima(profile, steps, law, p, tol)
+    return InflatedState(**{**scalars, **echo}, profile=profile, solver="shooting", tension_1_min=low[0],
+                         tension_2_min=low[1])
 
 
 def _given(material) -> dict:

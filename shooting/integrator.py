@@ -16,6 +16,23 @@ tension vanishes (t1 <= 0, wrinkling), or the stretches leave the law's domain (
 locking, I1 - 3 >= Jm); or where the integration itself fails (too many steps, a step
 below the resolution of r). The law enters as its kernel code and parameters
 (``pocket.shooting.tensions``), passed on to ``rhs``.
+
+Wrinkling, and why SLACK is a status and not a state. With T_1 = 0 normal
+equilibrium, psi' = lambda_1 (p - t2 sin(psi) / rho) / t1, has no finite solution
+under pressure, and a compressive T_1 would wrinkle the sheet radially: a tension-field
+membrane, outside this model. So a shot that goes slack is a trial outside the
+model's domain, which the root finders step back from (inflation reads it as too
+much pressure for the pole stretch; Newton halves its step), and a solve that cannot
+get past it fails with a ConvergenceError naming it (``Problem.failure``). Every
+returned state comes from a final shot that reached the clamp with t1 > 0 at each
+step. A compressive T_2 does not stop the equations (t2 is only a load in them):
+such a state would be returned, flagged ``wrinkled`` with a warning (its smallest
+tensions from ``shots.tension_minima``). None was found: over Mooney-Rivlin alpha
+in [-0.95, 5] up to the pressure maximum and the range end, a softening Yeoh, Ogden
+with negative exponents and Gent near locking, liquid and gas, T_2 stayed positive,
+smallest at the clamp, where lambda_2 = 1 and T_2 > 0 for lambda_1 > 1 for every
+stable law; for alpha < 0 Mooney-Rivlin needs 1 + alpha lambda_1^2 > 0 there, and the
+first branch ends first (alpha = -0.5: lambda_1(1) <= 1.11 < 1/sqrt(0.5)).
 """
 
 from __future__ import annotations

@@ -20,10 +20,10 @@ import numpy as np
 from pocket.core.states import Profile
 
 from .equations import pole_state
-from .integrator import integrate
+from .integrator import OK, integrate
 from .tensions import tensions
 
-__all__ = ["R_POLE", "Tolerance", "shot_pole", "shot_edge", "edge_state", "profile_from_steps"]
+__all__ = ["R_POLE", "Tolerance", "shot_pole", "shot_edge", "edge_state", "profile_from_steps", "tension_minima"]
 
 #: Start of the pole series: its error is O(R_POLE^3) in psi and O(R_POLE^4) in the
 #: stretches, below the integration tolerance (``tests/test_shooting_equations.py``). It needs no
@@ -117,3 +117,43 @@ def profile_from_steps(steps, law, stretch_centre, *, contact_radius=0.0, n_cont
         tension_1=t1 * scale, tension_2=t2 * scale, contact=contact,
     )
 
+
+
+#: refinement of an interior tension minimum: the two steps around it are integrated again this much finer
+_REFINE = 64
+
+
+def tension_minima(profile, steps, law, p, tol: Tolerance) -> tuple[float, float]:
+    """The smallest T_1 and T_2 of a solved state (units E T): the profile's minima, each refined where it
+    lies inside the integrated part (not at its first or last step): the two steps around it are
+    integrated again with steps ``_REFINE`` times shorter, and the minimum taken over those points and
+    the vertex of the parabola through the smallest of them and its neighbours.
+    ``steps`` are the integrator's (the profile's last ``len(steps)`` points), ``p`` its pressure."""
+    offset = profile.r.size - steps.shape[0]
+    out = []
+    for tension in (profile.tension_1, profile.tension_2):
+        i = int(np.argmin(tension))
+        low = float(tension[i])
+        k = i - offset
+        if 0 < k < steps.shape[0] - 1:
+            r0, r1 = steps[k - 1, 0], steps[k + 1, 0]
+            status, _, _, fine = integrate(steps[k - 1, 1:], r0, law, p, rtol=tol.rtol, atol=tol.atol,
+                                           store=4 * _REFINE, max_step=(r1 - r0) / _REFINE, r_end=r1,
+                                           psi_max=PSI_MAX_EDGE)
+            if status == OK:
+                t = tensions(fine[:, 4], fine[:, 1] / fine[:, 0], law.code, law.params)[len(out)]
+                low = min(low, _vertex(fine[:, 0], t) * law.tension_scale)
+        out.append(low)
+    return out[0], out[1]
+
+
+def _vertex(r, t) -> float:
+    """The smallest of the samples t(r), or below it the vertex of the parabola through the smallest and
+    its two neighbours (a sampled minimum is off by O(h^2), the vertex by O(h^3))."""
+    j = int(np.argmin(t))
+    low = float(t[j])
+    if 0 < j < t.size - 1:
+        a, b, c = np.polyfit(r[j - 1:j + 2] - r[j], t[j - 1:j + 2] - t[j], 2)
+        if a > 0.0:
+            low = min(low, float(low + c - b * b / (4.0 * a)))
+    return low
