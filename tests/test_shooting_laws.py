@@ -13,7 +13,7 @@ from test_shooting_inflation import hencky_constant
 
 from pocket import shooting
 from pocket.core.errors import OutOfRangeError
-from pocket.core.materials import check, energy
+from pocket.core.materials import Material, check, energy
 
 RUBBERS = {
     "mooney-rivlin": check("mooney-rivlin", {"c1": 160e3, "c2": 47e3}),
@@ -197,3 +197,18 @@ def test_a_pocket_inflated_near_locking_has_no_range_end():
         assert state.contact_area < 1.0
     assert 0 < margins[1] < 1e-3 < margins[0]  # closer to locking, still inside
     assert shooting.range_end(check("gent", {"mu": 1.0, "jm": 30.0}), 0.5) < 10.0  # a far lock: the usual end
+
+
+@pytest.mark.parametrize("bad, message", [
+    (Material("gent", (("mu", 1.0), ("jm", 0.0))), "jm = 0.0"),
+    (Material("ogden", (("mu", (1.0,)), ("exponents", (-2.0,)))), "mu_p alpha_p > 0"),
+    (-1.0, "alpha = -1.0"),
+])
+def test_a_bad_rubber_is_an_input_error_before_any_work(bad, message):
+    """Exact answer: the entry points re-check a Material (here built around the check) like an alpha."""
+    from pocket.core.errors import InputError
+
+    for call in (lambda: shooting.inflate(bad, 0.1), lambda: shooting.compress(bad, 0.1, 0.1),
+                 lambda: shooting.range_end(bad, 0.1), lambda: shooting.inflate_volume(bad, 0.5)):
+        with pytest.raises(InputError, match=message):
+            call()
