@@ -70,7 +70,8 @@ def _on_branch(problem, force):
     x = solve_on_branch(problem, force)
     if x is None:
         return None
-    sol = newton.solve(lambda v: problem.residual(v, force), x, tol=problem.residual_tol)
+    sol = newton.solve(lambda v: problem.residual(v, force), x, tol=problem.residual_tol,
+                       floor=problem.residual_floor)
     return sol if sol.success else None
 
 
@@ -115,7 +116,7 @@ def _advance(problem, branch, force):
         f_try = min(f0 + step, force)
         guess = branch.guess(f_try)
         sol = newton.solve(lambda x, f=f_try: problem.residual(x, f), guess, tol=problem.residual_tol,
-                           jacobian=branch.jacobian)
+                           floor=problem.residual_floor, jacobian=branch.jacobian)
         if sol.success and problem.close(sol.x, guess, x0) and \
                 problem.clamp_angle(sol.x, f_try) <= math.pi + _band(problem.rtol):
             sign = _orientation(problem, sol, f_try, branch)

@@ -115,7 +115,8 @@ def _first_state(problem, seed):
         return seed
     force = _START_FORCE
     for _ in range(20):
-        sol = newton.solve(lambda x, f=force: problem.residual(x, f), problem.start(), tol=problem.residual_tol)
+        sol = newton.solve(lambda x, f=force: problem.residual(x, f), problem.start(), tol=problem.residual_tol,
+                           floor=problem.residual_floor)
         if sol.success:
             return force, sol.x
         force /= 2.0
@@ -132,7 +133,7 @@ def _at_angle(problem, theta, path, jacobian=None):
         (t0, z0), (t1, z1) = near
         guess = z0 + (theta - t0) * (z1 - z0) / (t1 - t0)
     sol = newton.solve(lambda v: problem.residual(v[:2], v[2], theta), guess, tol=problem.residual_tol,
-                       jacobian=jacobian)
+                       floor=problem.residual_floor, jacobian=jacobian)
     return sol if sol.success and problem.close(sol.x, guess, near[0][1]) else None
 
 
