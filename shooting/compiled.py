@@ -107,11 +107,11 @@ if FunctionCache is not None:
                 pass
 
 
-def compiled(function):
+def compiled(function, **options):
     """``numba.njit(function)``, cached on disk where possible (module docstring), with numpy's error model:
     a division by zero gives inf or nan (which the integrator rejects as a failed step) rather than raising
     ZeroDivisionError from compiled code (a stage that lands exactly on Gent's locking limit)."""
-    dispatcher = njit(function, error_model="numpy")
+    dispatcher = njit(function, error_model="numpy", **options)
     if FunctionCache is None:
         return dispatcher
     try:

@@ -47,6 +47,8 @@ isotropy gives (t2(l1, l2) = t1(l2, l1)): the series holds for every law here
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from .compiled import compiled
@@ -55,7 +57,7 @@ from .tensions import tensions, tensions_compiled
 __all__ = ["rhs", "pole_state"]
 
 
-@compiled
+@functools.partial(compiled, inline="always")
 def rhs(r, y, code, params, p, out):
     """Write dy/dr into ``out`` (shape (5,)) for y = [rho, eta, psi, lambda_1, v], the law ``code``
     with ``params`` (``pocket.shooting.tensions``) at pressure ``p`` (units tau T / R)."""

@@ -37,6 +37,8 @@ first branch ends first (alpha = -0.5: lambda_1(1) <= 1.11 < 1/sqrt(0.5)).
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from . import tableau
@@ -64,7 +66,7 @@ _NS = tableau.N_STAGES
 _EXPONENT = -1.0 / 8.0
 
 
-@compiled
+@functools.partial(compiled, inline="always")
 def _status(y, code, params, r, psi_max):
     if not (y[0] > 0.0):
         return AXIS

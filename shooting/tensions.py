@@ -74,16 +74,25 @@ CODES = {"mooney-rivlin": MOONEY_RIVLIN, "neo-hookean": NEO_HOOKEAN, "yeoh": YEO
 def tensions(l1, l2, code, params):
     """(t1, t2, dt1/dl1, dt1/dl2) at stretches (l1, l2), in units of tau T (module docstring)."""
     if code == MOONEY_RIVLIN:
-        alpha = params[0]
-        inv = 1.0 / (l1**3 * l2**3)
-        g1 = l1 / l2 - inv
-        t1 = g1 * (1.0 + alpha * l2 * l2)
-        t2 = (l2 / l1 - inv) * (1.0 + alpha * l1 * l1)
-        dt1_dl1 = (1.0 / l2 + 3.0 * inv / l1) * (1.0 + alpha * l2 * l2)
-        dt1_dl2 = (-l1 / (l2 * l2) + 3.0 * inv / l2) * (1.0 + alpha * l2 * l2) + 2.0 * alpha * l2 * g1
-        return t1, t2, dt1_dl1, dt1_dl2
+        return _mooney_rivlin(l1, l2, params[0])
     if code == OGDEN:
         return _ogden(l1, l2, params)
+    return _first_invariant(l1, l2, code, params)
+
+
+@register_jitable
+def _mooney_rivlin(l1, l2, alpha):
+    inv = 1.0 / (l1**3 * l2**3)
+    g1 = l1 / l2 - inv
+    t1 = g1 * (1.0 + alpha * l2 * l2)
+    t2 = (l2 / l1 - inv) * (1.0 + alpha * l1 * l1)
+    dt1_dl1 = (1.0 / l2 + 3.0 * inv / l1) * (1.0 + alpha * l2 * l2)
+    dt1_dl2 = (-l1 / (l2 * l2) + 3.0 * inv / l2) * (1.0 + alpha * l2 * l2) + 2.0 * alpha * l2 * g1
+    return t1, t2, dt1_dl1, dt1_dl2
+
+
+@register_jitable
+def _first_invariant(l1, l2, code, params):
     inv = 1.0 / (l1**3 * l2**3)
     l3sq = inv * l1 * l2  # l3^2
     x = l1 * l1 + l2 * l2 + l3sq - 3.0
@@ -136,5 +145,5 @@ def inside(l1, l2, code, params):
     return l1 * l1 + l2 * l2 + 1.0 / (l1 * l1 * l2 * l2) - 3.0 < params[1]
 
 
-tensions_compiled = compiled(tensions)
-inside_compiled = compiled(inside)
+tensions_compiled = compiled(tensions, inline="always")
+inside_compiled = compiled(inside, inline="always")
