@@ -23,6 +23,11 @@ compile time, never a result.
 Loading an entry initialises only numba's runtime, not its whole compiler (see
 ``_Cache.load_overload``): that halves the start-up of a command.
 
+numba's cache index checks only the source file of the cached function, not of the
+compiled functions it calls (the integrator inlines ``equations.rhs`` and the tensions of
+``tensions.py``): after editing one of those alone, delete the ``__pycache__`` folders
+(an installed release changes every file, so users never meet a stale entry).
+
 This uses numba's cache classes (``numba.core.caching``), as custom cache locators
 do; ``tests/test_shooting_cache.py`` runs the failures in subprocesses. Those
 classes are numba internals: should a numba release rename them, ``compiled``
