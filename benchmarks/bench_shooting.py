@@ -4,8 +4,10 @@
 
 Prints medians of repeated runs (machines here are noisy; the load average is
 printed with them) of one inflation, one compressed state, a 40-point compression
-curve and a range end; ``solve_bvp`` on the same inflation problem at matched
-accuracy, with the ratio; and a whole ``pocket compress`` process with 100 forces
+curve and a range end; the same inflation and curve for each other rubber law and for
+a gas-filled pocket, with their ratios to the Mooney-Rivlin alpha path; ``solve_bvp`` on
+the same inflation problem at matched accuracy, with the ratio; and a whole
+``pocket compress`` process with 100 forces
 (the first run, which may compile, excluded), with its start-up split into imports
 (``python -X importtime``), the first call (numba's runtime and the cached machine
 code) and solving.
@@ -20,12 +22,16 @@ import sys
 
 import numpy as np
 from pocket.shooting import rangeend
-from pocket.shooting.equations import pole_state, tensions
+from pocket.shooting.equations import pole_state
+from pocket.shooting.laws import law_of
 from pocket.shooting.shots import R_POLE
+from pocket.shooting.tensions import tensions
 from scipy.integrate import solve_bvp
 from timing import median_time
 
 from pocket import shooting
+from pocket.core.fluids import gas
+from pocket.core.materials import check
 
 ALPHA, PHAT = 47 / 160, 0.31
 FORCES_100 = [f"{f:.4f}" for f in np.linspace(0.01, 1.0, 100)]
@@ -34,27 +40,38 @@ import time
 import numpy as np
 from pocket.shooting.integrator import integrate
 from pocket.shooting.equations import pole_state
+from pocket.shooting.laws import law_of
+law = law_of(0.3)
 t = time.perf_counter()
-integrate(pole_state(1.1, 0.3, 1.0, 1e-5), 1e-5, 0.3, 1.0, rtol=1e-10)
+integrate(pole_state(1.1, law, 1.0, 1e-5), 1e-5, law, 1.0, rtol=1e-10)
 print(time.perf_counter() - t)
 """
+#: the other laws, in Pa, with the Mooney-Rivlin sample's peers
+OTHERS = {
+    "mooney-rivlin (c1, c2)": check("mooney-rivlin", {"c1": 160e3, "c2": 47e3}),
+    "neo-hookean": check("neo-hookean", {"mu": 0.4e6}),
+    "yeoh": check("yeoh", {"c10": 85e3, "c20": -2e3, "c30": 0.2e3}),
+    "gent": check("gent", {"mu": 0.3e6, "jm": 10.0}),
+    "ogden (3 terms)": check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}),
+}
 
 
 def bvp_inflate(tol):
     """Step 1 as a boundary-value problem: unknown lambda_0, y(r0) on the pole series, rho(1) = 1."""
-    p = 3 * (1 + ALPHA) * PHAT
+    law = law_of(ALPHA)
+    p = law.pressure_factor * PHAT
 
     def f(r, y, par):
         rho, _, psi, l1, _ = y
         l2 = rho / r
-        t1, t2, a11, a12 = tensions(l1, l2, ALPHA)
+        t1, t2, a11, a12 = tensions(l1, l2, law.code, law.params)
         drho = l1 * np.cos(psi)
         dl2 = (drho - l2) / r
         return np.vstack([drho, -l1 * np.sin(psi), l1 * (p - t2 * np.sin(psi) / rho) / t1,
                           ((t2 - t1) * drho / rho - a12 * dl2) / a11, np.pi * rho**2 * l1 * np.sin(psi)])
 
     def bc(ya, yb, par):
-        return np.append(ya - pole_state(par[0], ALPHA, p, R_POLE), yb[0] - 1.0)
+        return np.append(ya - pole_state(par[0], law, p, R_POLE), yb[0] - 1.0)
 
     r = np.linspace(R_POLE, 1, 50)
     s = (PHAT / (4 * np.sqrt(6))) ** (2 / 3)
@@ -100,6 +117,14 @@ def main():
     print(f"  one compressed state     {t_one * 1e3:8.2f} ms   (includes its inflation)")
     print(f"  40-point curve           {t_curve * 1e3:8.2f} ms")
     print(f"  range end (uncached)     {t_end * 1e3:8.2f} ms   Fhat_end = {shooting.range_end(ALPHA, PHAT):.10g}")
+    rows = [(name, rubber, None) for name, rubber in OTHERS.items()] + [("gas (alpha, ambient 1, gamma 1.4)", ALPHA,
+                                                                          gas(1.0, 1.4))]
+    for name, rubber, fluid in rows:
+        shooting.compression_curve(rubber, PHAT, [0.1], fluid=fluid)  # compile/load once
+        t_i = median_time(lambda r=rubber: shooting.inflate(r, PHAT), 11)
+        t_c = median_time(lambda r=rubber, f=fluid: shooting.compression_curve(r, PHAT, forces, fluid=f), 5)
+        print(f"  {name:<34s} inflation {t_i * 1e3:6.2f} ms ({t_i / t_inf:4.2f}x), 40-point curve "
+              f"{t_c * 1e3:7.2f} ms ({t_c / t_curve:4.2f}x)")
 
     # The peer at matched accuracy: tighten tol until its lambda_0 error is no worse than ours.
     for tol in (1e-6, 1e-8, 1e-10):

@@ -3,10 +3,13 @@
 ``inflate`` / ``inflate_volume`` solve step 1 (pressure or volume control),
 ``compress`` / ``compression_curve`` step 2 (fixed volume, flat frictionless
 plate, force given), ``range_end`` the force at which step 2 leaves the model (the
-free sheet reaches the clamp plane). The states are ``pocket.core.states`` containers;
-the equations and their derivation are in ``pocket.shooting.equations``, the range end
-in ``pocket.shooting.rangeend``. ``SOLVER`` is its record (entry points and options,
-``pocket.core.solver``).
+free sheet reaches the clamp plane). The rubber is a Mooney-Rivlin alpha or any law of
+``pocket.core.materials`` (its tensions derived from its strain energy in
+``pocket.shooting.tensions``); a compression's fluid is a liquid or a gas sealed at the
+initial pressure (``pocket.core.fluids``; ``pocket.shooting.problem``). The states are
+``pocket.core.states`` containers; the equations and their derivation are in
+``pocket.shooting.equations``, the range end in ``pocket.shooting.rangeend``. ``SOLVER`` is
+its record (entry points and options, ``pocket.core.solver``).
 
 The entry points are imported on first use, so that reading ``SOLVER`` (the
 command line does, to build its flags) costs nothing.

@@ -23,6 +23,11 @@ compile time, never a result.
 Loading an entry initialises only numba's runtime, not its whole compiler (see
 ``_Cache.load_overload``): that halves the start-up of a command.
 
+numba's cache index checks only the source file of the cached function, not of the
+compiled functions it calls (the integrator inlines ``equations.rhs`` and the tensions of
+``tensions.py``): after editing one of those alone, delete the ``__pycache__`` folders
+(an installed release changes every file, so users never meet a stale entry).
+
 This uses numba's cache classes (``numba.core.caching``), as custom cache locators
 do; ``tests/test_shooting_cache.py`` runs the failures in subprocesses. Those
 classes are numba internals: should a numba release rename them, ``compiled``
@@ -107,9 +112,11 @@ if FunctionCache is not None:
                 pass
 
 
-def compiled(function):
-    """``numba.njit(function)``, cached on disk where possible (module docstring)."""
-    dispatcher = njit(function)
+def compiled(function, **options):
+    """``numba.njit(function)``, cached on disk where possible (module docstring), with numpy's error model:
+    a division by zero gives inf or nan (which the integrator rejects as a failed step) rather than raising
+    ZeroDivisionError from compiled code (a stage that lands exactly on Gent's locking limit)."""
+    dispatcher = njit(function, error_model="numpy", **options)
     if FunctionCache is None:
         return dispatcher
     try:

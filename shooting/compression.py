@@ -1,6 +1,8 @@
 """Step 2, compression at fixed volume by a flat frictionless plate, force given.
 
-The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.problem``.
+The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.problem``; the
+fluid sealed in the pocket (a liquid: fixed volume; a gas: the polytropic law) enters only its
+volume residual.
 Each force is solved by the damped Newton-Broyden method of
 ``pocket.shooting.newton``, by continuation in the force from the inflated state:
 forces are taken in increasing order, each seeded by secant extrapolation from
@@ -27,15 +29,17 @@ import math
 import numpy as np
 
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
-from pocket.core.inputs import check_alpha, check_force, check_positive
+from pocket.core.fluids import as_fluid
+from pocket.core.inputs import check_force, check_positive
 from pocket.core.states import CompressedState, InflatedState
 
 from . import newton
 from .inflation import inflate
 from .integrator import OK, STATUS
+from .laws import law_of
 from .problem import Problem
 from .rangeend import end_of, solve_on_branch
-from .shots import profile_from_steps
+from .shots import profile_from_steps, tension_minima
 
 __all__ = ["compress", "compression_curve"]
 
@@ -56,7 +60,7 @@ def _beyond(force, problem, seed):
                  f"the force has a maximum, with the sheet's angle at the clamp at {end.angle:.6g} rad")
         raise OutOfRangeError(
             f"force = {force!r} is beyond the model's range, which ends at force = {end.force:.10g} "
-            f"(alpha = {problem.alpha!r}, pressure = {problem.inflated.pressure!r}): there {where}"
+            f"({problem.label}): there {where}"
         )
     return end
 
@@ -66,7 +70,8 @@ def _on_branch(problem, force):
     x = solve_on_branch(problem, force)
     if x is None:
         return None
-    sol = newton.solve(lambda v: problem.residual(v, force), x, tol=problem.residual_tol)
+    sol = newton.solve(lambda v: problem.residual(v, force), x, tol=problem.residual_tol,
+                       floor=problem.residual_floor)
     return sol if sol.success else None
 
 
@@ -111,7 +116,7 @@ def _advance(problem, branch, force):
         f_try = min(f0 + step, force)
         guess = branch.guess(f_try)
         sol = newton.solve(lambda x, f=f_try: problem.residual(x, f), guess, tol=problem.residual_tol,
-                           jacobian=branch.jacobian)
+                           floor=problem.residual_floor, jacobian=branch.jacobian)
         if sol.success and problem.close(sol.x, guess, x0) and \
                 problem.clamp_angle(sol.x, f_try) <= math.pi + _band(problem.rtol):
             sign = _orientation(problem, sol, f_try, branch)
@@ -140,15 +145,20 @@ def _failed(problem, sol, f_try, f0, force, more):
     q, e = sol.x
     why = sol.message if not sol.success else "the solution left the branch (past pi, a fold, or a jump)"
     last = problem.failure()
+    lc = problem.stretch(e)
+    margin = problem.law.lock_margin(lc, lc)
+    locking = (f"; the contact zone is within {margin:.1e} of the rubber's locking (1 - (I1 - 3)/Jm), where "
+               "the tensions, and so the residuals' noise, grow without bound" if margin < 1e-2 else "")
     return ConvergenceError(
         f"compression failed at force = {f_try:.10g} (continuing from force = {f0:.10g} towards {force!r}, "
-        f"alpha = {problem.alpha!r}, pressure = {problem.inflated.pressure!r}): {why}; max |residual| = "
-        f"{sol.residual:.3g} at P/P_I = {q:.10g}, lambda_c = {problem.stretch(e):.10g}" + (f"; {last}" if last else "")
+        f"{problem.label}): {why}; max |residual| = "
+        f"{sol.residual:.3g} at P/P_I = {q:.10g}, lambda_c = {lc:.10g}" + locking + (f"; {last}" if last else "")
         + more, load=f_try, iterations=sol.evaluations, residual=sol.residual)
 
 
-def _state(problem, force, x) -> tuple[CompressedState, float]:
-    """The compressed state at ``force`` (as given) for the solved unknowns x, and its clamp angle psi(1)."""
+def _state(problem, force, x, fluid) -> tuple[CompressedState, float]:
+    """The compressed state at ``force`` (as given, ``fluid`` too) for the solved unknowns x, and its clamp
+    angle psi(1)."""
     q, lc, a, p = problem.geometry(x, force)
     status, y, _ = problem.shoot(x, force)
     profile_status, _, steps = problem.shoot(x, force, store=20000)
@@ -157,8 +167,10 @@ def _state(problem, force, x) -> tuple[CompressedState, float]:
             raise ConvergenceError(f"compression at force = {force!r}: the {what} shot {STATUS[code]}", load=force)
     inflated = problem.inflated
     height = -y[1]
+    profile = profile_from_steps(steps, problem.law, lc, contact_radius=a)
+    low = tension_minima(profile, steps, problem.law, p, problem.tolerance)
     state = CompressedState(
-        alpha=problem.alpha,
+        alpha=inflated.alpha,
         pressure_initial=inflated.pressure,
         force=force,
         pressure=inflated.pressure * q,
@@ -169,46 +181,56 @@ def _state(problem, force, x) -> tuple[CompressedState, float]:
         height=height,
         height_ratio=height / inflated.height,
         volume=y[4],
-        profile=profile_from_steps(steps, problem.alpha, lc, contact_radius=a),
+        profile=profile,
         inflated=inflated,
         solver="shooting",
+        material=inflated.material,
+        fluid=fluid,
+        tension_1_min=low[0],
+        tension_2_min=low[1],
     )
     return state, y[2]
 
 
-def _uncompressed(inflated: InflatedState, force: float) -> CompressedState:
+def _uncompressed(inflated: InflatedState, force: float, fluid) -> CompressedState:
     """Fhat = 0: the inflated state itself, seen as a compressed state with no contact."""
     return CompressedState(
         alpha=inflated.alpha, pressure_initial=inflated.pressure, force=force,
         pressure=inflated.pressure, pressure_ratio=1.0, contact_area=0.0, contact_radius=0.0,
         stretch_contact=inflated.stretch_pole, height=inflated.height, height_ratio=1.0,
         volume=inflated.volume, profile=inflated.profile, inflated=inflated, solver="shooting",
+        material=inflated.material, fluid=fluid, tension_1_min=inflated.tension_1_min,
+        tension_2_min=inflated.tension_2_min,
     )
 
 
-def compression_curve(alpha, pressure_initial, forces, *, rtol=1e-10, progress=None) -> list[CompressedState]:
+def compression_curve(material, pressure_initial, forces, *, fluid=None, rtol=1e-10,
+                      progress=None) -> list[CompressedState]:
     """Compress at each force Fhat = F/(P_I pi R^2) of ``forces`` (any order), by continuation.
 
-    Returns the states in the order of ``forces``, each echoing its inputs exactly.
-    ``progress(done, total)``, if given, is called after each force (``total`` = len(forces)).
-    Raises OutOfRangeError for a force past the end of the model's range (``range_end``),
-    ConvergenceError if a solve fails, InputError for invalid input.
+    material: the rubber, a Mooney-Rivlin alpha or a ``pocket.core.materials.Material``. fluid: None
+    or "liquid" (fixed volume), or a gas (``pocket.core.fluids.gas``, its ambient pressure as
+    Phat_atm = P_atm R / (E T)), sealed at Phat_I. Returns the states in the order of ``forces``,
+    each echoing its inputs exactly. ``progress(done, total)``, if given, is called after each force
+    (``total`` = len(forces)). Raises OutOfRangeError for a force past the end of the model's range
+    (``range_end``), ConvergenceError if a solve fails, InputError for invalid input.
     """
-    alpha = check_alpha(alpha)
+    law = law_of(material)
     pressure_initial = check_positive("pressure", pressure_initial)
+    fluid = as_fluid(fluid)
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    problem = Problem(inflate(alpha, pressure_initial, rtol=rtol), rtol)
+    problem = Problem(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid)
     counts = {f: forces.count(f) for f in forces}
     states, done = {}, 0
     branch = _Branch(points=((0.0, problem.start()),))
     for f in sorted(counts):
         if f == 0.0:
-            states[f] = _uncompressed(problem.inflated, f)
+            states[f] = _uncompressed(problem.inflated, f, fluid)
         else:
             branch = _advance(problem, branch, f)
-            states[f], clamp_angle = _state(problem, f, branch.points[-1][1])
+            states[f], clamp_angle = _state(problem, f, branch.points[-1][1], fluid)
             if clamp_angle >= math.pi - _band(rtol):
                 _beyond(f, problem, branch.points[-1])
         done += counts[f]
@@ -217,6 +239,6 @@ def compression_curve(alpha, pressure_initial, forces, *, rtol=1e-10, progress=N
     return [states[f] for f in forces]
 
 
-def compress(alpha, pressure_initial, force, *, rtol=1e-10) -> CompressedState:
+def compress(material, pressure_initial, force, *, fluid=None, rtol=1e-10) -> CompressedState:
     """Compress the pocket inflated at Phat_I = ``pressure_initial`` by force Fhat (``compression_curve``)."""
-    return compression_curve(alpha, pressure_initial, [force], rtol=rtol)[0]
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, rtol=rtol)[0]

@@ -7,17 +7,18 @@ psi measured below the horizontal, so that with ' = d/dr
 
     rho' = lambda_1 cos(psi),    eta' = -lambda_1 sin(psi),    lambda_2 = rho / r.
 
-Stress resultants of eq (6) in units of 2 C1 T (``t = T / (2 C1 T)``):
-
-    t1 = (l1/l2 - 1/(l1^3 l2^3)) (1 + alpha l2^2),
-    t2 = (l2/l1 - 1/(l1^3 l2^3)) (1 + alpha l1^2)  =  t1 with l1 <-> l2.
+Stress resultants: t1 = T_1 / (tau T) and t2 from the rubber's strain energy, with their
+derivatives (``pocket.shooting.tensions``: tau = 2 C1 for Mooney-Rivlin, the paper's eq (6),
+where t1 = (l1/l2 - 1/(l1^3 l2^3)) (1 + alpha l2^2); mu_0 for the other laws). Every law is
+isotropic: t2(l1, l2) = t1(l2, l1).
 
 Normal equilibrium, eq (4a), with kappa_1 = d psi/ds = psi'/lambda_1 and
 kappa_2 = sin(psi)/rho (these are eq (5) written with the angle), gives
 
-    psi' = lambda_1 (p - t2 sin(psi) / rho) / t1,    p = P R / (2 C1 T) = 3 (1 + alpha) Phat,
+    psi' = lambda_1 (p - t2 sin(psi) / rho) / t1,    p = P R / (tau T) = (3 mu_0 / tau) Phat,
 
-since E = 6 (1 + alpha) C1. Tangential equilibrium, eq (4b), is d(rho T1)/d rho = T2,
+since E = 3 mu_0 (for Mooney-Rivlin p = P R / (2 C1 T) = 3 (1 + alpha) Phat, E = 6 (1 + alpha) C1).
+Tangential equilibrium, eq (4b), is d(rho T1)/d rho = T2,
 i.e. (rho t1)' = t2 rho', i.e. t1' = (t2 - t1) rho'/rho. With the chain rule and
 lambda_2' = (rho' - lambda_2)/r:
 
@@ -39,43 +40,31 @@ lambda_2 = l0 + b r^2, psi = k r + O(r^3): normal equilibrium at the pole gives
 2 kappa t0 = p with kappa = k / l0, so k = l0 p / (2 t0); rho' = lambda_1 cos(psi)
 at O(r^2) gives a = 3 b + l0 k^2 / 2; tangential equilibrium at O(r) gives
 a (3A - B) + b (3B - A) = 0 with A = dt1/dl1, B = dt1/dl2 at (l0, l0), hence
-b = -l0 k^2 (3A - B) / (16 A).
+b = -l0 k^2 (3A - B) / (16 A). That step uses dt2/dl2 = A and dt2/dl1 = B at (l0, l0), which
+isotropy gives (t2(l1, l2) = t1(l2, l1)): the series holds for every law here
+(``tests/test_shooting_laws.py`` measures its order for each).
 """
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from .compiled import compiled
+from .tensions import tensions, tensions_compiled
 
-__all__ = ["tensions", "tensions_compiled", "rhs", "pole_state", "tension_scale"]
-
-
-def tensions(l1, l2, alpha):
-    """Return (t1, t2, dt1/dl1, dt1/dl2), tensions in units of 2 C1 T.
-
-    Plain numpy (floats or arrays of one shape); ``tensions_compiled`` is the same
-    function compiled, for the integrator.
-    """
-    inv = 1.0 / (l1**3 * l2**3)
-    g1 = l1 / l2 - inv
-    t1 = g1 * (1.0 + alpha * l2 * l2)
-    t2 = (l2 / l1 - inv) * (1.0 + alpha * l1 * l1)
-    dt1_dl1 = (1.0 / l2 + 3.0 * inv / l1) * (1.0 + alpha * l2 * l2)
-    dt1_dl2 = (-l1 / (l2 * l2) + 3.0 * inv / l2) * (1.0 + alpha * l2 * l2) + 2.0 * alpha * l2 * g1
-    return t1, t2, dt1_dl1, dt1_dl2
+__all__ = ["rhs", "pole_state"]
 
 
-tensions_compiled = compiled(tensions)
-
-
-@compiled
-def rhs(r, y, alpha, p, out):
-    """Write dy/dr into ``out`` (shape (5,)) for y = [rho, eta, psi, lambda_1, v]."""
+@functools.partial(compiled, inline="always")
+def rhs(r, y, code, params, p, out):
+    """Write dy/dr into ``out`` (shape (5,)) for y = [rho, eta, psi, lambda_1, v], the law ``code``
+    with ``params`` (``pocket.shooting.tensions``) at pressure ``p`` (units tau T / R)."""
     rho, psi, l1 = y[0], y[2], y[3]
     l2 = rho / r
     s, c = np.sin(psi), np.cos(psi)
-    t1, t2, a11, a12 = tensions_compiled(l1, l2, alpha)
+    t1, t2, a11, a12 = tensions_compiled(l1, l2, code, params)
     drho = l1 * c
     dl2 = (drho - l2) / r
     out[0] = drho
@@ -85,13 +74,14 @@ def rhs(r, y, alpha, p, out):
     out[4] = np.pi * rho * rho * l1 * s
 
 
-def pole_state(l0: float, alpha: float, p: float, r0: float) -> np.ndarray:
-    """State y at r = r0 from the pole series (error O(r0^4) in the stretches).
+def pole_state(l0: float, law, p: float, r0: float) -> np.ndarray:
+    """State y at r = r0 from the pole series (error O(r0^4) in the stretches, O(r0^3) in psi).
 
-    ``l0`` is the pole stretch lambda_0, ``p`` the pressure in units of 2 C1 T / R.
+    ``l0`` is the pole stretch lambda_0, ``law`` a ``pocket.shooting.laws.Law``, ``p`` the pressure
+    in units of tau T / R.
     Returns y = [rho, eta, psi, lambda_1, v], shape (5,); eta is measured from the pole.
     """
-    t0, _, a, b = tensions(l0, l0, alpha)
+    t0, _, a, b = tensions(l0, l0, law.code, law.params)
     k = l0 * p / (2.0 * t0)
     cb = -l0 * k * k * (3.0 * a - b) / (16.0 * a)
     ca = 3.0 * cb + 0.5 * l0 * k * k
@@ -100,8 +90,3 @@ def pole_state(l0: float, alpha: float, p: float, r0: float) -> np.ndarray:
     eta = -0.5 * l0 * k * r0 * r0
     v = 0.25 * np.pi * l0**4 * k * r0**4
     return np.array([rho, eta, k * r0, l0 + ca * r0 * r0, v])
-
-
-def tension_scale(alpha: float) -> float:
-    """Factor converting tensions in units of 2 C1 T to units of E T: 1 / (3 (1 + alpha))."""
-    return 1.0 / (3.0 * (1.0 + alpha))

@@ -4,9 +4,10 @@ The first branch. A shot from the pole with strain s at pressure p lands at
 rho(1) = 1 + m(s, p). At fixed s, m falls as p rises from m(s, 0) = s > 0 (the
 flat sheet); p(s), the pressure with m = 0, is the pressure that holds the dome
 of pole strain s. The first branch is the curve p(s) followed continuously from
-s = 0, where the small-strain (Hencky) regime gives p ~ 3 (1 + alpha) 4 sqrt(6) s^1.5
-(``pocket.core.smallstrain``). Following it matters: a root of m found by marching s at
-the target pressure can skip over a maximum of p(s), or land on another branch.
+s = 0, where the small-strain (Hencky) regime gives Phat ~ 4 sqrt(6) s^1.5 for every law
+(``pocket.core.smallstrain``; p = ``Law.pressure_factor`` Phat, 3 (1 + alpha) Phat for
+Mooney-Rivlin). Following it matters: a root of m found by marching s at the target pressure
+can skip over a maximum of p(s), or land on another branch.
 
 Pressure control (the paper's step 1). s is marched up by a factor 1.4 from
 below the small-strain estimate, computing p(s) at each step from a power-law
@@ -21,7 +22,9 @@ golden sections locate it, and above it no first-branch state exists
 (``OutOfRangeError`` naming the maximum). For alpha < 0 the pole tension
 (1 - l^-6)(1 + alpha l^2) vanishes at l^2 = -1/alpha: p(s) exists only below, and
 the maximum lies there. A march that starts past a maximum (a target far above
-it) is restarted lower.
+it) is restarted lower. A rubber that locks (Gent: I1 - 3 < Jm) has a largest pole
+stretch: the march halves its way to it instead of stepping past it, and a pressure or
+volume not reached before it is an OutOfRangeError naming that stretch.
 
 Volume control (``inflate_volume``) marches V(s) on the first branch the same way;
 the volume grows through pressure maxima, so it reaches states pressure control
@@ -41,12 +44,15 @@ import math
 
 from pocket.core import smallstrain
 from pocket.core.errors import ConvergenceError, OutOfRangeError
-from pocket.core.inputs import check_alpha, check_positive
+from pocket.core.inputs import check_positive
+from pocket.core.materials import Material, given_alpha
 from pocket.core.states import InflatedState
 
 from . import brent
 from .integrator import OK, STATUS, STEPS
-from .shots import Tolerance, profile_from_steps, shot_pole
+from .laws import as_law, law_of
+from .shots import Tolerance, profile_from_steps, shot_pole, tension_minima
+from .tensions import inside, tensions
 
 __all__ = ["inflate", "inflate_volume", "pressure_of_stretch"]
 
@@ -56,6 +62,8 @@ _S_RTOL = 1e-13  # relative accuracy of the root in s
 _P_RTOL = 1e-14  # relative accuracy of the pressure p(s) where its value matters
 _MARCH_RTOL = 1e-9  # ... and where only its trend matters (the march)
 _PEAK_RTOL = 1e-9  # relative width in s to which a pressure maximum is located (its value to ~1e-18)
+_LOCK_RTOL = 1e-9  # relative distance to a locking strain at which a march gives up
+_P_CAP = 1e6  # largest pressure p tried for one pole stretch (Phat ~ 3e5; 1e6 is already no rubber pocket)
 
 
 def _tolerance(rtol, strain):
@@ -63,9 +71,9 @@ def _tolerance(rtol, strain):
     return Tolerance.scaled(rtol, math.sqrt(1.5 * strain), 0.25 * math.pi * math.sqrt(6.0 * strain))
 
 
-def _landing(s, alpha, p, tol, what):
+def _landing(s, law, p, tol, what):
     """rho(1) - 1 of the shot from pole strain s at pressure p, or None if it stops before the clamp."""
-    status, y, _ = shot_pole(1.0 + s, alpha, p, tol)
+    status, y, _ = shot_pole(1.0 + s, law, p, tol)
     if status == STEPS:
         raise ConvergenceError(f"inflation ({what}): the shot from lambda_0 = {1 + s:.12g} took too many steps",
                                load=1.0 + s)
@@ -77,22 +85,26 @@ def _signed(value):
     return -1.0 if value is None else value
 
 
-def pressure_of_stretch(l0, alpha, *, rtol=1e-10, tol=None, guess=None, accuracy=_P_RTOL) -> float | None:
-    """The pressure p (units 2 C1 T / R) at which the shot from pole stretch ``l0`` lands on rho(1) = 1,
-    to relative ``accuracy``: the root of m(s, .) nearest above or below ``guess`` (default: the
-    small-strain pressure). None if there is none: for alpha < 0 past l0^2 = -1/alpha the pole
-    tension vanishes.
+def pressure_of_stretch(l0, law, *, rtol=1e-10, tol=None, guess=None, accuracy=_P_RTOL) -> float | None:
+    """The pressure p (units tau T / R, ``pocket.shooting.tensions``; 2 C1 T / R for a Mooney-Rivlin
+    alpha) at which the shot from pole stretch ``l0`` lands on rho(1) = 1, to relative ``accuracy``: the
+    root of m(s, .) nearest above or below ``guess`` (default: the small-strain pressure). ``law``: a
+    ``Law``, a Mooney-Rivlin alpha or a ``Material``. None if there is none: where the pole tension
+    vanishes (for alpha < 0 past l0^2 = -1/alpha) or the pole is past the law's locking stretch.
+    Infinite for a locking rubber when no p up to ``_P_CAP`` closes the shot: p(s) diverges as the
+    pole approaches the locking stretch.
     """
+    law = as_law(law)
     s = l0 - 1.0
     tol = _tolerance(rtol, s) if tol is None else tol
-    if not (s > 0.0 and (1.0 - l0**-6) * (1.0 + alpha * l0 * l0) > 0.0):
+    if not (s > 0.0 and inside(l0, l0, law.code, law.params) and tensions(l0, l0, law.code, law.params)[0] > 0.0):
         return None
     what = f"p(lambda_0 = {l0:.12g})"
 
     def miss(p):
-        return _signed(_landing(s, alpha, p, tol, what))
+        return _signed(_landing(s, law, p, tol, what))
 
-    p = 3.0 * (1.0 + alpha) * 4.0 * math.sqrt(6.0) * s**1.5 if guess is None else guess
+    p = law.pressure_factor * 4.0 * math.sqrt(6.0) * s**1.5 if guess is None else guess
     f, width = miss(p), 0.02 * p
     if f >= 0.0:  # grow a bracket upward from the guess
         lo, f_lo = p, f
@@ -100,7 +112,9 @@ def pressure_of_stretch(l0, alpha, *, rtol=1e-10, tol=None, guess=None, accuracy
         while f_hi >= 0.0:
             width *= 4.0
             lo, f_lo, hi = hi, f_hi, hi + width
-            if hi > 1e6:
+            if hi > _P_CAP:
+                if law.stretch_limit < math.inf:  # a locking rubber: p(s) diverges at its locking stretch
+                    return math.inf
                 raise ConvergenceError(f"inflation: no pressure up to 1e6 closes the shot from lambda_0 = {l0!r}",
                                        load=l0)
             f_hi = miss(hi)
@@ -119,8 +133,8 @@ class _Branch:
     """The first branch p(s) of one pocket, computed point by point; each pressure is predicted by
     the power law through the two points computed nearest to it (p ~ s^1.5 at first)."""
 
-    def __init__(self, alpha, tol):
-        self.alpha, self.tol, self.points = alpha, tol, []
+    def __init__(self, law, tol):
+        self.law, self.tol, self.points = law, tol, []
 
     def pressure(self, s, precise=False):
         near = sorted(self.points, key=lambda point: abs(math.log(point[0] / s)))[:2]
@@ -130,7 +144,7 @@ class _Branch:
             guess = p0 * (s / s0) ** (math.log(p1 / p0) / math.log(s1 / s0))
         elif near:
             guess = near[0][1] * (s / near[0][0]) ** 1.5
-        p = pressure_of_stretch(1.0 + s, self.alpha, tol=self.tol, guess=guess,
+        p = pressure_of_stretch(1.0 + s, self.law, tol=self.tol, guess=guess,
                                 accuracy=_P_RTOL if precise else _MARCH_RTOL)
         if p is not None:
             self.points.append((s, p))
@@ -138,13 +152,14 @@ class _Branch:
 
     def phat(self, s, precise=False):
         p = self.pressure(s, precise)
-        return None if p is None else p / (3.0 * (1.0 + self.alpha))
+        return None if p is None else p / self.law.pressure_factor
 
 
-def _first_branch(value, target, s, what):
+def _first_branch(value, target, s, what, limit=math.inf):
     """s_lo < s_hi with value(s_lo) < target <= value(s_hi) on the first branch, and whether s_hi is
     a maximum of ``value`` (a pressure or a volume, None where there is none; ``value(s, True)``
-    to full accuracy). Raises OutOfRangeError when value has a maximum below ``target``."""
+    to full accuracy). Raises OutOfRangeError when value has a maximum below ``target``, or when the
+    march reaches the law's locking strain ``limit`` (halving the way to it) without reaching it."""
     while True:
         start = value(s)
         while start is None or start >= target:
@@ -154,7 +169,10 @@ def _first_branch(value, target, s, what):
         while True:
             if s >= _S_MAX:
                 raise OutOfRangeError(f"{what} = {target:.6g} is not reached for lambda_0 up to {1 + _S_MAX:g}")
-            s = min(s * _GROWTH, _S_MAX)
+            if s >= limit * (1.0 - _LOCK_RTOL):
+                raise OutOfRangeError(f"{what} = {target:.6g} is not reached below the rubber's locking stretch "
+                                      f"(lambda_0 = {1 + limit:.10g}, where I1 - 3 = Jm)")
+            s = min(s * _GROWTH, _S_MAX, 0.5 * (s + limit))
             current = value(s)
             if current is not None and current >= target:
                 return history[-1][0], s, False
@@ -178,40 +196,49 @@ def _minus_inf(value):
     return -math.inf if value is None else value
 
 
-def _state(l0, alpha, p, tol, what, **echo):
+def _state(l0, law, p, tol, what, echo):
     """The state at the root: scalars from the same shot as the root finder, the profile from a
-    finer-stepped shot of the same problem; ``echo`` the inputs as given (pressure or volume)."""
-    status, y, _ = shot_pole(l0, alpha, p, tol)
+    finer-stepped shot of the same problem; ``echo`` the inputs as given (rubber, and pressure or volume)."""
+    status, y, _ = shot_pole(l0, law, p, tol)
     miss = y[0] - 1.0
     if status != OK or abs(miss) > 1e-8 * (l0 - 1.0) + 1e-13:
         raise ConvergenceError(f"inflation ({what}): the final shot from lambda_0 = {l0:.12g} "
                                f"{STATUS[status]}, rho(1) - 1 = {miss:.3g}", load=l0, residual=miss)
-    status, _, steps = shot_pole(l0, alpha, p, tol, store=20000)
+    status, _, steps = shot_pole(l0, law, p, tol, store=20000)
     if status != OK:
         raise ConvergenceError(f"inflation ({what}): the profile shot from lambda_0 = {l0:.12g} {STATUS[status]}",
                                load=l0)
-    scalars = dict(alpha=alpha, pressure=p / (3.0 * (1.0 + alpha)), stretch_pole=l0, height=-y[1], volume=y[4],
-                   stretch_clamp=y[3])
-    return InflatedState(**{**scalars, **echo}, profile=profile_from_steps(steps, alpha, l0), solver="shooting")
+    scalars = dict(pressure=p / law.pressure_factor, stretch_pole=l0, height=-y[1], volume=y[4], stretch_clamp=y[3])
+    profile = profile_from_steps(steps, law, l0)
+    low = tension_minima(profile, steps, law, p, tol)
+    return InflatedState(**{**scalars, **echo}, profile=profile, solver="shooting", tension_1_min=low[0],
+                         tension_2_min=low[1])
 
 
-def inflate(alpha, pressure, *, rtol=1e-10) -> InflatedState:
+def _given(material) -> dict:
+    """The rubber as a state echoes it: ``alpha`` (the float, or None) and ``material`` (None for a float)."""
+    return dict(alpha=given_alpha(material), material=material if isinstance(material, Material) else None)
+
+
+def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     """Inflate at pressure Phat = P R / (E T) (pressure control, first branch).
 
-    alpha: C2/C1 (> -1). pressure: Phat (> 0). rtol: ODE tolerance.
+    material: the rubber, a Mooney-Rivlin alpha = C2/C1 (> -1) or a ``pocket.core.materials.Material``
+    (any stress unit). pressure: Phat (> 0). rtol: ODE tolerance.
     Raises OutOfRangeError if Phat exceeds the first-branch maximum of Phat(V).
     """
-    alpha = check_alpha(alpha)
+    law = law_of(material)
+    echo = _given(material)
     pressure = check_positive("pressure", pressure)
-    p = 3.0 * (1.0 + alpha) * pressure
+    p = law.pressure_factor * pressure
     s_est = smallstrain.pole_strain(pressure)
     tol = _tolerance(rtol, s_est)
     what = f"Phat = {pressure!r}"
-    branch = _Branch(alpha, tol)
-    lo, hi, peak = _first_branch(branch.phat, pressure, s_est, "pressure")
+    branch = _Branch(law, tol)
+    lo, hi, peak = _first_branch(branch.phat, pressure, s_est, "pressure", law.stretch_limit - 1.0)
 
     def miss(s):
-        return _signed(_landing(s, alpha, p, tol, what))
+        return _signed(_landing(s, law, p, tol, what))
 
     # p(lo) < target <= p(hi) to the march's accuracy: the sign of m can still be the other one there
     f_lo, f_hi = miss(lo), miss(hi)
@@ -227,28 +254,34 @@ def inflate(alpha, pressure, *, rtol=1e-10) -> InflatedState:
     s = brent.root(miss, lo, hi, fa=f_lo, fb=f_hi, rtol=_S_RTOL)
     if abs(branch.phat(s) / pressure - 1.0) > 1e-7:  # a root of m on another branch: follow p(s) itself
         s = brent.root(lambda x: branch.phat(x, True) - pressure, lo, hi, rtol=_S_RTOL)
-    return _state(1.0 + s, alpha, p, tol, what, pressure=pressure)
+    return _state(1.0 + s, law, p, tol, what, dict(echo, pressure=pressure))
 
 
-def inflate_volume(alpha, volume, *, rtol=1e-10) -> InflatedState:
-    """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima)."""
-    alpha = check_alpha(alpha)
+def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:
+    """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima).
+    ``material`` as for ``inflate``."""
+    law = law_of(material)
+    echo = _given(material)
     volume = check_positive("volume", volume)
     s_est = smallstrain.strain_of_volume(volume)
     tol = _tolerance(rtol, s_est)
     what = f"V = {volume!r}"
-    branch = _Branch(alpha, tol)
+    branch = _Branch(law, tol)
 
     def volume_of(s, precise=True):
         p = branch.pressure(s, precise=True)
         if p is None:
             return None
-        status, y, _ = shot_pole(1.0 + s, alpha, p, tol)
+        if p == math.inf:
+            raise OutOfRangeError(f"no inflated state: volume = {volume!r} is not reached before the rubber locks "
+                                  f"(lambda_0 = {1 + s:.10g} already needs Phat > {_P_CAP / law.pressure_factor:.3g}; "
+                                  f"the locking stretch is {law.stretch_limit:.10g})")
+        status, y, _ = shot_pole(1.0 + s, law, p, tol)
         if status != OK:
             raise ConvergenceError(f"inflation ({what}): the shot from lambda_0 = {1 + s:.12g} at its pressure "
                                    f"{STATUS[status]}", load=1.0 + s)
         return y[4]
 
-    lo, hi, _ = _first_branch(volume_of, volume, s_est, "volume")
+    lo, hi, _ = _first_branch(volume_of, volume, s_est, "volume", law.stretch_limit - 1.0)
     s = brent.root(lambda x: volume_of(x) - volume, lo, hi, rtol=_S_RTOL)
-    return _state(1.0 + s, alpha, branch.pressure(s, precise=True), tol, what, volume=volume)
+    return _state(1.0 + s, law, branch.pressure(s, precise=True), tol, what, dict(echo, volume=volume))

@@ -12,21 +12,43 @@ volume) are resolved relative to their own size.
 Integration stops early, with a status, where the membrane model stops making
 sense: the meridian reaches the axis (rho <= 0), its angle leaves (-pi/2, psi_max)
 (curled back past the horizontal, or turned up into the sheet), or the meridional
-tension vanishes (t1 <= 0, wrinkling); or where the integration itself fails (too
-many steps, a step below the resolution of r).
+tension vanishes (t1 <= 0, wrinkling), or the stretches leave the law's domain (Gent's
+locking, I1 - 3 >= Jm); or where the integration itself fails (too many steps, a step
+below the resolution of r). The law enters as its kernel code and parameters
+(``pocket.shooting.tensions``), passed on to ``rhs``.
+
+Wrinkling, and why SLACK is a status and not a state. With T_1 = 0 normal
+equilibrium, psi' = lambda_1 (p - t2 sin(psi) / rho) / t1, has no finite solution
+under pressure, and a compressive T_1 would wrinkle the sheet radially: a tension-field
+membrane, outside this model. So a shot that goes slack is a trial outside the
+model's domain, which the root finders step back from (inflation reads it as too
+much pressure for the pole stretch; Newton halves its step), and a solve that cannot
+get past it fails with a ConvergenceError naming it (``Problem.failure``). Every
+returned state comes from a final shot that reached the clamp with t1 > 0 at each
+step. A compressive T_2 does not stop the equations (t2 is only a load in them):
+such a state would be returned, flagged ``wrinkled`` with a warning (its smallest
+tensions from ``shots.tension_minima``). None was found: over Mooney-Rivlin alpha
+in [-0.95, 5] up to the pressure maximum and the range end, a softening Yeoh, Ogden
+with negative exponents and Gent near locking, liquid and gas, T_2 stayed positive,
+smallest at the clamp, where lambda_2 = 1 and T_2 > 0 for lambda_1 > 1 for every
+stable law; for alpha < 0 Mooney-Rivlin needs 1 + alpha lambda_1^2 > 0 there, and the
+first branch ends first (alpha = -0.5: lambda_1(1) <= 1.11 < 1/sqrt(0.5)).
 """
 
 from __future__ import annotations
+
+import functools
 
 import numpy as np
 
 from . import tableau
 from .compiled import compiled
-from .equations import rhs, tensions_compiled
+from .equations import rhs
+from .tensions import inside_compiled, tensions_compiled
 
-__all__ = ["integrate", "OK", "AXIS", "FOLD", "SLACK", "STEPS", "SMALL_STEP", "STATUS", "NUMERICAL"]
+__all__ = ["integrate", "OK", "AXIS", "FOLD", "SLACK", "STEPS", "SMALL_STEP", "LOCKED", "STATUS", "NUMERICAL"]
 
-OK, AXIS, FOLD, SLACK, STEPS, SMALL_STEP = 0, 1, 2, 3, 4, 5
+OK, AXIS, FOLD, SLACK, STEPS, SMALL_STEP, LOCKED = 0, 1, 2, 3, 4, 5, 6
 STATUS = {
     OK: "reached the clamp",
     AXIS: "the meridian reached the axis (rho <= 0)",
@@ -34,6 +56,7 @@ STATUS = {
     SLACK: "the meridional tension vanished (t1 <= 0)",
     STEPS: "too many steps",
     SMALL_STEP: "step size underflow",
+    LOCKED: "the stretches reached the law's locking limit (I1 - 3 >= Jm)",
 }
 
 #: the failures of the integration itself, as opposed to a meridian outside the model
@@ -43,26 +66,30 @@ _NS = tableau.N_STAGES
 _EXPONENT = -1.0 / 8.0
 
 
-@compiled
-def _status(y, alpha, r, psi_max):
+@functools.partial(compiled, inline="always")
+def _status(y, code, params, r, psi_max):
     if not (y[0] > 0.0):
         return AXIS
     if not (-0.5 * np.pi < y[2] < psi_max):
         return FOLD
-    if not (y[3] > 0.0) or not (tensions_compiled(y[3], y[0] / r, alpha)[0] > 0.0):
+    if not (y[3] > 0.0):
+        return SLACK
+    if not inside_compiled(y[3], y[0] / r, code, params):
+        return LOCKED
+    if not (tensions_compiled(y[3], y[0] / r, code, params)[0] > 0.0):
         return SLACK
     return OK
 
 
 @compiled
-def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, psi_max, store, A, B, C, E3, E5):
+def _integrate(y0, r0, r1, code, params, p, rtol, atol, h0, hmax, psi_max, store, A, B, C, E3, E5):
     n = y0.size
     K = np.empty((_NS + 1, n))
     y = y0.copy()
     ynew = np.empty(n)
     ytmp = np.empty(n)
     f = np.empty(n)
-    rhs(r0, y, alpha, p, f)
+    rhs(r0, y, code, params, p, f)
     r = r0
     h = h0
     nstore = 0
@@ -89,13 +116,13 @@ def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, psi_max, store, A, B,
                     for j in range(s):
                         acc += A[s, j] * K[j, i]
                     ytmp[i] = y[i] + hh * acc
-                rhs(r + C[s] * hh, ytmp, alpha, p, K[s])
+                rhs(r + C[s] * hh, ytmp, code, params, p, K[s])
             for i in range(n):
                 acc = 0.0
                 for j in range(_NS):
                     acc += B[j] * K[j, i]
                 ynew[i] = y[i] + hh * acc
-            rhs(rnew, ynew, alpha, p, K[_NS])
+            rhs(rnew, ynew, code, params, p, K[_NS])
             e5 = 0.0
             e3 = 0.0
             for i in range(n):
@@ -127,17 +154,17 @@ def _integrate(y0, r0, r1, alpha, p, rtol, atol, h0, hmax, psi_max, store, A, B,
             store[nstore, 0] = r
             store[nstore, 1:] = y
             nstore += 1
-        status = _status(y, alpha, r, psi_max)
+        status = _status(y, code, params, r, psi_max)
         if status != OK:
             return status, r, y, nstore
     return STEPS, r, y, nstore
 
 
-def integrate(y0, r0, alpha, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi):
-    """Integrate the membrane equations from r0 to the clamp r = 1.
+def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi, r_end=1.0):
+    """Integrate the membrane equations from r0 to ``r_end`` (the clamp r = 1 unless given).
 
-    y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). alpha: C2/C1.
-    p: pressure in units of 2 C1 T / R. rtol: DOP853 relative tolerance; atol: absolute
+    y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). law: a ``pocket.shooting.laws.Law``.
+    p: pressure in units of tau T / R (``Law.pressure_factor`` Phat). rtol: DOP853 relative tolerance; atol: absolute
     tolerance, a float or one per component, shape (5,) (default rtol / 100). store: if > 0,
     keep every accepted step, up to ``store`` points. h0: first step (default: a hundredth
     of r0, or 1e-6). max_step: largest step in r (a finer profile; accuracy is set by rtol).
@@ -150,7 +177,7 @@ def integrate(y0, r0, alpha, p, *, rtol, atol=None, store=0, h0=None, max_step=n
     h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
     buf = np.empty((store, 6)) if store else np.empty((0, 6))
     status, r_end, y_end, m = _integrate(
-        np.asarray(y0, dtype=float), float(r0), 1.0, float(alpha), float(p), float(rtol), atol,
+        np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(rtol), atol,
         float(h0), float(max_step), float(psi_max), buf, tableau.A, tableau.B, tableau.C, tableau.E3, tableau.E5,
     )
     return int(status), float(r_end), y_end, buf[:m]

@@ -13,8 +13,10 @@ Nonlinear Equations, 1983, ch. 6 and 8):
   recomputed by differences after a slower step or when a step with an updated J
   fails to decrease the residual;
 - it stops when max |f| <= ``tol`` (the caller scales f so that this is a relative
-  accuracy), and reports failure (never an exception) with what it reached, so the
-  caller can cut its load step or say where it failed.
+  accuracy), or, given a ``floor`` above ``tol``, when no step along a freshly differenced
+  Newton direction decreases a residual already below ``floor`` (the residual's noise,
+  which no step can reduce), and reports failure (never an exception) with what it
+  reached, so the caller can cut its load step or say where it failed.
 
 ``tests/test_shooting_newton.py`` checks it against scipy's ``root(method="hybr")``
 on standard hard problems (Rosenbrock, Powell's badly scaled function, Freudenstein
@@ -76,8 +78,9 @@ def differences(fun, x, f, step=_STEP):
 
 
 def solve(fun: Callable[[np.ndarray], np.ndarray | None], x0, *, tol: float, jacobian=None,
-          max_iterations=30) -> Solution:
-    """Solve fun(x) = 0 from ``x0`` (shape (n,)) to max |fun(x)| <= ``tol`` (module docstring)."""
+          max_iterations=30, floor=None) -> Solution:
+    """Solve fun(x) = 0 from ``x0`` (shape (n,)) to max |fun(x)| <= ``tol``, or to a stall below
+    ``floor`` (module docstring)."""
     count = [0]
 
     def call(x):
@@ -107,6 +110,8 @@ def solve(fun: Callable[[np.ndarray], np.ndarray | None], x0, *, tol: float, jac
             dx = None
         step = _line_search(call, x, dx, norm) if dx is not None and np.all(np.isfinite(dx)) else None
         if step is None:
+            if fresh and floor is not None and norm <= floor:
+                return result(x, f, jac, True, f"at the residual's noise (max |f| = {norm:.3g})")
             if fresh:
                 return result(x, f, jac, False, "no step decreases the residual (max |f| "
                                                 f"= {norm:.3g}) along the Newton direction")

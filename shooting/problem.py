@@ -19,12 +19,22 @@ so a = sqrt(Fhat / q) / lambda_c. Residuals, also of order one:
     V / V_I - 1           (fixed fluid volume; V = -pi int rho^2 eta' dr over the free
                            part alone, eta' = 0 on the contact zone)
 
+or, for a gas sealed at P_I, V / V_I - ((Phat_I + Phat_atm) / (Phat + Phat_atm))^(1/gamma)
+(``pocket.core.fluids``: the polytropic law solved for V / V_I, of order one too; for a
+liquid the ratio is exactly 1, so that residual is the liquid's bit for bit)
+
 and, for the end of the range (``pocket.shooting.rangeend``), with the force as a
 third unknown, psi(1) - theta (the meridian's angle at the clamp).
 
 Residual noise. rho(1) - 1 is a difference of numbers near 1: a few ulps of 1,
 divided by s_0, are its floor. The root finders stop at ``residual_tol``: rtol/100,
-or 100 ulps / s_0 if that is larger (1e-9 at Phat_I = 1e-6).
+or 100 ulps / s_0 if that is larger (1e-9 at Phat_I = 1e-6). Shots whose integrator
+steps change between nearby unknowns add noise of their own: a contact radius far
+below the pole series' start (Fhat ~ 1e-20 and below) gives residuals of 1e-12 to 4e-11
+at the inflated state's unknowns (measured at rtol 1e-10), which Newton cannot reduce.
+A Newton iteration that stalls below ``residual_floor`` = 10 ``residual_tol`` along a
+freshly differenced direction has reached that noise and is accepted (``newton.solve``'s
+``floor``): its state is still far within the integration's own error (rtol).
 """
 
 from __future__ import annotations
@@ -34,9 +44,11 @@ import math
 
 import numpy as np
 
+from pocket.core.fluids import LIQUID, Fluid
 from pocket.core.states import InflatedState
 
 from .integrator import OK, STATUS
+from .laws import Law, law_of
 from .shots import Tolerance, shot_edge
 
 __all__ = ["Problem"]
@@ -44,15 +56,30 @@ __all__ = ["Problem"]
 
 @dataclasses.dataclass(frozen=True)
 class Problem:
-    """The compression of ``inflated`` (alpha, Phat_I) at ODE tolerance ``rtol``."""
+    """The compression of ``inflated`` (its rubber, Phat_I) at ODE tolerance ``rtol``, with ``fluid``
+    sealed in it (ambient pressure as Phat_atm). ``law`` defaults to the inflated state's rubber."""
 
     inflated: InflatedState
     rtol: float
+    law: Law | None = None
+    fluid: Fluid = LIQUID
     _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
+    def __post_init__(self):
+        if self.law is None:
+            given = self.inflated.alpha if self.inflated.alpha is not None else self.inflated.material
+            object.__setattr__(self, "law", law_of(given))
+
     @property
-    def alpha(self) -> float:
-        return self.inflated.alpha
+    def label(self) -> str:
+        """The pocket in messages: its rubber, Phat_I and (a gas) its fluid."""
+        fluid = "" if not self.fluid.is_gas else f", gas at ambient {self.fluid.ambient!r}, gamma {self.fluid.gamma!r}"
+        return f"{self.law.label}, pressure = {self.inflated.pressure!r}{fluid}"
+
+    @property
+    def key(self) -> tuple:
+        """What identifies the pocket's problem (a cache key): rubber, Phat_I, rtol, fluid."""
+        return (self.law.key, self.inflated.pressure, self.rtol, self.fluid)
 
     @property
     def strain(self) -> float:
@@ -67,6 +94,11 @@ class Problem:
     def residual_tol(self) -> float:
         """Accepted max |residual| (module docstring)."""
         return max(1e-2 * self.rtol, 100.0 * np.finfo(float).eps / self.strain)
+
+    @property
+    def residual_floor(self) -> float:
+        """The residual below which a stalled Newton iteration has reached the noise (module docstring)."""
+        return 10.0 * self.residual_tol
 
     def start(self) -> np.ndarray:
         """Unknowns (q, e) of the inflated state (Fhat -> 0): the guess for the first force."""
@@ -85,7 +117,7 @@ class Problem:
         a = math.sqrt(force / q) / lc
         if not a < 1.0:
             return None
-        return q, lc, a, 3.0 * (1.0 + self.alpha) * self.inflated.pressure * q
+        return q, lc, a, self.law.pressure_factor * self.inflated.pressure * q
 
     def shoot(self, x, force, store=0):
         """(status, y(1), steps) of the free part for unknowns x at ``force``; None outside the domain.
@@ -100,7 +132,7 @@ class Problem:
         if not store and self._last.get("key") == key:
             return self._last["shot"]
         q, lc, a, p = g
-        shot = shot_edge(lc, a, self.alpha, p, self.tolerance, store=store)
+        shot = shot_edge(lc, a, self.law, p, self.tolerance, store=store)
         if not store:
             self._last.update(key=key, shot=shot)
         return shot
@@ -132,5 +164,7 @@ class Problem:
                 self._last["failure"] = (shot[0], float(x[0]), self.stretch(x[1]), float(force))
             return None
         y = shot[1]
-        out = [(y[0] - 1.0) / self.strain, y[4] / self.inflated.volume - 1.0]
+        pressure = self.inflated.pressure
+        out = [(y[0] - 1.0) / self.strain, y[4] / self.inflated.volume - self.fluid.volume_ratio(pressure * x[0],
+                                                                                                  pressure)]
         return np.array(out if angle is None else [*out, y[2] - angle])

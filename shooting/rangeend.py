@@ -18,7 +18,14 @@ The clamp angle theta = psi(1) rises along the branch from its inflated value.
 For alpha >= 0 (every case measured) the force rises with it up to theta = pi.
 For some alpha < 0 (softening under large hoop stretch; e.g. alpha = -0.5 at
 Phat_I = 0.1) the force reaches a maximum (a fold) before theta = pi: past that
-force the branch carries no state under force control.
+force the branch carries no state under force control. A rubber that locks (Gent,
+I1 - 3 < Jm) and is inflated close to its locking stretch may have no end at all:
+as the force grows the pressure grows without bound while the stretches approach
+the locking limit and the clamp angle a limit below pi (measured: Jm = 3, Phat_I = 2,
+psi(1) -> 2.955 with Fhat -> infinity). The continuation in theta then stalls
+below that angle with the contact zone within 1 % of locking: the range has no end
+(``range_end`` is inf), and forces so large that the stretches come within the
+solver's precision of locking fail as ConvergenceErrors that say so.
 
 The end, defined and computed. Fhat_end is the largest force on the branch for
 psi(1) in [theta_inflated, pi]: the force at psi(1) = pi, or the force maximum
@@ -31,7 +38,7 @@ the end, unless the force fell on the way: then the maximum of Fhat(theta) is
 located by golden sections on the steps around it. Shots from the contact edge
 may turn past pi (``shots.PSI_MAX_EDGE``), so the residuals are smooth at pi.
 
-Tolerance. The end is computed once per (alpha, Phat_I, rtol) and cached. Its error
+Tolerance. The end is computed once per (rubber, Phat_I, rtol, fluid) and cached. Its error
 is that of the shots (``tests/test_shooting_rangeend.py`` measures it under rtol
 refinement). A force up to and including the returned number is inside the range
 and solves; any force above it is outside, however close: the decision is the
@@ -48,9 +55,11 @@ import math
 import numpy as np
 
 from pocket.core.errors import ConvergenceError
-from pocket.core.inputs import check_alpha, check_positive
+from pocket.core.fluids import as_fluid
+from pocket.core.inputs import check_positive
 
 from . import brent, newton
+from .laws import law_of
 from .problem import Problem
 
 __all__ = ["End", "range_end", "end_of", "solve_on_branch"]
@@ -58,38 +67,43 @@ __all__ = ["End", "range_end", "end_of", "solve_on_branch"]
 _START_FORCE = 1e-2  # the first state of the continuation in theta (halved if it does not solve)
 _MIN_STEP = 1e-6  # smallest step in theta (rad) before the continuation gives up
 _FOLD_XTOL = 1e-7  # width in theta to which a force maximum is located (the force to ~1e-14)
+_LOCKING = 1e-2  # lock margin 1 - (I1 - 3)/Jm of the contact zone below which a stalled continuation is locking
 
 
 @dataclasses.dataclass(frozen=True)
 class End:
     """The end of one pocket's range: ``force`` (Fhat_end), the clamp angle there (pi, or less at a
-    ``fold``) and the branch up to it, ``path``: (theta, z = (q, e, Fhat)) with theta increasing."""
+    ``fold``) and the branch up to it, ``path``: (theta, z = (q, e, Fhat)) with theta increasing.
+    A rubber that ``locks`` first has no end: ``force`` is inf, ``angle`` the last clamp angle solved."""
 
     force: float
     angle: float
     fold: bool
     path: tuple
+    locks: bool = False
 
 
-_ENDS: dict[tuple[float, float, float], End] = {}  # (alpha, Phat_I, rtol) -> End
+_ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid) -> End
 
 
-def range_end(alpha, pressure_initial, *, rtol=1e-10) -> float:
-    """The largest force Fhat for which the pocket (alpha, Phat_I) has a compressed state
-    (module docstring): forces up to and including it solve; above it, none do."""
+def range_end(material, pressure_initial, *, fluid=None, rtol=1e-10) -> float:
+    """The largest force Fhat for which the pocket (its rubber ``material``, a Mooney-Rivlin alpha or a
+    ``Material``; Phat_I; its ``fluid``, as for ``compression_curve``) has a compressed state (module
+    docstring): forces up to and including it solve; above it, none do."""
     from .inflation import inflate
 
-    alpha = check_alpha(alpha)
+    law = law_of(material)
     pressure_initial = check_positive("pressure", pressure_initial)
-    key = (alpha, pressure_initial, rtol)
+    fluid = as_fluid(fluid)
+    key = (law.key, pressure_initial, rtol, fluid)
     if key not in _ENDS:
-        end_of(Problem(inflate(alpha, pressure_initial, rtol=rtol), rtol))
+        end_of(Problem(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid))
     return _ENDS[key].force
 
 
 def end_of(problem: Problem, seed=None) -> End:
     """The ``End`` of ``problem`` (cached); ``seed``: an optional solved (force, x) on its branch."""
-    key = (problem.alpha, problem.inflated.pressure, problem.rtol)
+    key = problem.key
     if key not in _ENDS:
         _ENDS[key] = _compute(problem, seed)
     return _ENDS[key]
@@ -101,7 +115,8 @@ def _first_state(problem, seed):
         return seed
     force = _START_FORCE
     for _ in range(20):
-        sol = newton.solve(lambda x, f=force: problem.residual(x, f), problem.start(), tol=problem.residual_tol)
+        sol = newton.solve(lambda x, f=force: problem.residual(x, f), problem.start(), tol=problem.residual_tol,
+                           floor=problem.residual_floor)
         if sol.success:
             return force, sol.x
         force /= 2.0
@@ -118,7 +133,7 @@ def _at_angle(problem, theta, path, jacobian=None):
         (t0, z0), (t1, z1) = near
         guess = z0 + (theta - t0) * (z1 - z0) / (t1 - t0)
     sol = newton.solve(lambda v: problem.residual(v[:2], v[2], theta), guess, tol=problem.residual_tol,
-                       jacobian=jacobian)
+                       floor=problem.residual_floor, jacobian=jacobian)
     return sol if sol.success and problem.close(sol.x, guess, near[0][1]) else None
 
 
@@ -150,6 +165,9 @@ def _compute(problem, seed):
         if sol is None:
             step, jacobian = 0.5 * step, None
             if step < _MIN_STEP:
+                lc = problem.stretch(path[-1][1][1])
+                if problem.law.lock_margin(lc, lc) < _LOCKING:
+                    return End(force=math.inf, angle=theta, fold=False, path=tuple(path), locks=True)
                 raise ConvergenceError(f"range end: the continuation in the clamp angle stalled at psi(1) = "
                                        f"{theta:.10g} (Fhat = {path[-1][1][2]:.10g})", load=path[-1][1][2])
             continue

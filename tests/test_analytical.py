@@ -119,3 +119,46 @@ def test_range_end_is_where_the_contact_reaches_the_clamp():
     assert analytical.compress(SAMPLE, 0.31, end).contact_area == pytest.approx(1.0, rel=1e-9)
     with pytest.raises(OutOfRangeError, match=f"{end:.6g}"):
         analytical.compress(SAMPLE, 0.31, end * (1 + 1e-9))
+
+
+def test_any_rubber_gives_the_same_small_strain_numbers():
+    """Exact answer: linearised, every law is E = 3 mu_0 and nothing else (module docstring): the same
+    scalars as for a Mooney-Rivlin alpha, bit for bit, with the material echoed and no alpha."""
+    from pocket.core.materials import check
+
+    reference = analytical.compression_curve(SAMPLE, 0.31, [0.0, 0.1, 1.0])
+    for material in (check("neo-hookean", {"mu": 0.4e6}), check("gent", {"mu": 1.0, "jm": 5.0}),
+                     check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]})):
+        states = analytical.compression_curve(material, 0.31, [0.0, 0.1, 1.0])
+        for s, ref in zip(states, reference, strict=True):
+            assert [getattr(s, k) for k in s.KEYS[1:]] == [getattr(ref, k) for k in ref.KEYS[1:]]
+            assert s.alpha is None and s.material is material and s.inflated.material is material
+
+
+@pytest.mark.parametrize("ambient, gamma", [(1.0, 1.0), (0.2, 1.4), (50.0, 1.2)])
+def test_gas_law_holds_on_its_states(ambient, gamma):
+    """Exact answer: (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma on every compressed state (the root
+    solved to ~1e-15 in ln u), F = P A_c, and a gas state is softer than the liquid's (lower P/P_I)."""
+    from pocket.core.fluids import gas
+
+    fluid = gas(ambient, gamma)
+    forces = [0.01, 0.1, 1.0]
+    for s, liquid in zip(analytical.compression_curve(SAMPLE, 0.1, forces, fluid=fluid),
+                         analytical.compression_curve(SAMPLE, 0.1, forces), strict=True):
+        ratio = s.volume / s.inflated.volume
+        assert (s.pressure + ambient) * ratio**gamma == pytest.approx(s.pressure_initial + ambient, rel=1e-13)
+        assert s.pressure_ratio * s.contact_area == pytest.approx(s.force, rel=1e-12)
+        assert s.pressure_ratio < liquid.pressure_ratio and s.fluid is fluid
+
+
+def test_gas_tends_to_the_liquid():
+    """Exact answer: u = u_L ratio(P) with ratio - 1 = O(1/P_atm): the states' differences from the liquid's
+    shrink tenfold per tenfold P_atm (within 1 %: the next term is O((P - P_I)/P_atm) relative)."""
+    from pocket.core.fluids import gas
+
+    liquid = analytical.compress(SAMPLE, 0.1, 0.5)
+    gaps = [analytical.compress(SAMPLE, 0.1, 0.5, fluid=gas(a)).pressure_ratio - liquid.pressure_ratio
+            for a in (1e2, 1e3, 1e4)]
+    assert gaps[0] / gaps[1] == pytest.approx(10, rel=0.01) and gaps[1] / gaps[2] == pytest.approx(10, rel=0.01)
+    assert analytical.range_end(SAMPLE, 0.1, fluid=gas(1e8)) == pytest.approx(analytical.range_end(SAMPLE, 0.1),
+                                                                              rel=1e-6)

@@ -135,3 +135,34 @@ def test_bad_gas(ambient, gamma, message):
     with pytest.raises(InputError) as err:
         gas(ambient, gamma)
     assert message in str(err.value)
+
+
+def test_as_material_takes_an_alpha_or_a_checked_material():
+    """Exact answer: a number is the Mooney-Rivlin alpha in units of mu_0; a Material comes back as the same
+    object after its check; a Material built around the check, or a bad alpha, is a one-line InputError."""
+    from pocket.core.materials import as_material, given_alpha
+
+    assert as_material(0.3) == mooney_rivlin(0.3) and given_alpha(0.3) == 0.3
+    gent = law("gent", mu=0.3e6, jm=10.0)
+    assert as_material(gent) is gent and given_alpha(gent) is None
+    for bad, message in ((Material("gent", (("mu", 1.0), ("jm", -2.0))), "sheet.jm = -2.0"),
+                         (Material("rubber", ()), "must be one of"), (-1.5, "alpha = -1.5"),
+                         ("soft", "alpha = 'soft' is not a number")):
+        with pytest.raises(InputError, match=message) as err:
+            as_material(bad)
+        assert "\n" not in str(err.value)
+
+
+def test_as_fluid_takes_none_liquid_or_a_checked_gas():
+    """Exact answer: None and "liquid" are LIQUID; a gas comes back as the same object after its check;
+    anything else, or a gas built around the check, is a one-line InputError."""
+    from pocket.core.fluids import LIQUID, Fluid, as_fluid, gas
+
+    assert as_fluid(None) is LIQUID and as_fluid("liquid") is LIQUID and as_fluid(LIQUID) is LIQUID
+    air = gas(0.5, 1.4)
+    assert as_fluid(air) is air
+    for bad, message in (("air", "fluid = 'air'"), (Fluid("gas", -1.0, 1.0), "fluid.ambient = -1.0"),
+                         (Fluid("gas", 1.0, 2.0), "fluid.gamma = 2.0"), (Fluid("plasma"), "fluid.kind = 'plasma'"),
+                         (Fluid("liquid", 1.0), "a liquid has no ambient pressure")):
+        with pytest.raises(InputError, match=message):
+            as_fluid(bad)

@@ -23,7 +23,9 @@ SOURCE = pathlib.Path(pocket.shooting.__file__).parent
 CHILD = """
 import {package}.integrator as integrator
 from {package}.equations import pole_state
-status, r, y, _ = integrator.integrate(pole_state(1.1, 0.3, 1.0, 1e-5), 1e-5, 0.3, 1.0, rtol=1e-10)
+from {package}.laws import law_of
+law = law_of(0.3)
+status, r, y, _ = integrator.integrate(pole_state(1.1, law, 1.0, 1e-5), 1e-5, law, 1.0, rtol=1e-10)
 stats = integrator._integrate.stats
 print(status, r, stats.cache_path, sum(stats.cache_hits.values()), sum(stats.cache_misses.values()),
       ",".join(map(repr, y)))

@@ -14,6 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from pocket.shooting.equations import pole_state, rhs
 from pocket.shooting.integrator import OK, integrate
+from pocket.shooting.laws import law_of
 
 L1, L2, AL = sp.symbols("lambda_1 lambda_2 alpha", positive=True)
 # Eq (6), in units of 2 C1 T, typed from the paper.
@@ -24,7 +25,8 @@ _T = sp.lambdify((L1, L2, AL), [T1, T2, sp.diff(T1, L1), sp.diff(T1, L2)])
 
 def _derivatives(r, y, alpha, p):
     out = np.empty(5)
-    rhs(r, y, alpha, p, out)
+    law = law_of(alpha)
+    rhs(r, y, law.code, law.params, p, out)
     return out
 
 
@@ -100,7 +102,8 @@ def test_pole_series_is_on_the_regular_solution(alpha, phat, l0):
     p = 3 * (1 + alpha) * phat
     ends = []
     for r0 in (1e-5, 1e-4):
-        status, _, y, _ = integrate(pole_state(l0, alpha, p, r0), r0, alpha, p, rtol=1e-12)
+        law = law_of(alpha)
+        status, _, y, _ = integrate(pole_state(l0, law, p, r0), r0, law, p, rtol=1e-12)
         assert status == OK
         ends.append(y)
     # (1e-4)^3 = 1e-12 series error, 1e-11 allows for the ODE error at rtol 1e-12

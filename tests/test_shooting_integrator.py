@@ -4,13 +4,16 @@ import numpy as np
 import pytest
 from pocket.shooting.equations import pole_state, rhs
 from pocket.shooting.integrator import AXIS, FOLD, OK, integrate
+from pocket.shooting.laws import law_of
 from scipy.integrate import solve_ivp
 
 
 def _scipy(y0, r0, alpha, p, rtol):
+    law = law_of(alpha)
+
     def f(r, y):
         out = np.empty(5)
-        rhs(r, y, alpha, p, out)
+        rhs(r, y, law.code, law.params, p, out)
         return out
 
     # the same first step as ours, so that both take the same steps
@@ -24,8 +27,8 @@ def test_matches_solve_ivp(alpha, p, l0):
     Same tableau and step control, so the step counts agree too (to a step or two:
     rounding can flip one accept/reject decision).
     """
-    y0 = pole_state(l0, alpha, p, 1e-5)
-    status, r, y, steps = integrate(y0, 1e-5, alpha, p, rtol=1e-10, store=5000)
+    y0 = pole_state(l0, law_of(alpha), p, 1e-5)
+    status, r, y, steps = integrate(y0, 1e-5, law_of(alpha), p, rtol=1e-10, store=5000)
     peer = _scipy(y0, 1e-5, alpha, p, 1e-10)
     exact = _scipy(y0, 1e-5, alpha, p, 1e-13).y[:, -1]
     assert status == OK and r == 1.0
@@ -37,8 +40,8 @@ def test_matches_solve_ivp(alpha, p, l0):
 
 def test_stops_when_the_meridian_curls_back():
     """Exact answer: far too much pressure for the pole stretch curls the meridian (status, not NaN)."""
-    alpha, l0 = 0.3, 1.01
-    status, r, y, _ = integrate(pole_state(l0, alpha, 50.0, 1e-5), 1e-5, alpha, 50.0, rtol=1e-10)
+    law, l0 = law_of(0.3), 1.01
+    status, r, y, _ = integrate(pole_state(l0, law, 50.0, 1e-5), 1e-5, law, 50.0, rtol=1e-10)
     assert status in (AXIS, FOLD) and r < 1.0 and np.all(np.isfinite(y))
 
 
@@ -57,9 +60,10 @@ def test_per_component_absolute_tolerance():
     """Exact answer: an absolute tolerance per component equal to the scalar one changes nothing
     (the same steps, bit for bit); a tighter one on the volume alone reaches the clamp with the
     same volume to the relative tolerance."""
-    y0 = pole_state(1.16, 47 / 160, 1.2, 1e-5)
-    scalar = integrate(y0, 1e-5, 47 / 160, 1.2, rtol=1e-10, atol=1e-12, store=5000)
-    vector = integrate(y0, 1e-5, 47 / 160, 1.2, rtol=1e-10, atol=np.full(5, 1e-12), store=5000)
+    law = law_of(47 / 160)
+    y0 = pole_state(1.16, law, 1.2, 1e-5)
+    scalar = integrate(y0, 1e-5, law, 1.2, rtol=1e-10, atol=1e-12, store=5000)
+    vector = integrate(y0, 1e-5, law, 1.2, rtol=1e-10, atol=np.full(5, 1e-12), store=5000)
     assert np.array_equal(scalar[3], vector[3])
-    tight = integrate(y0, 1e-5, 47 / 160, 1.2, rtol=1e-10, atol=[1e-12] * 4 + [1e-15], store=5000)
+    tight = integrate(y0, 1e-5, law, 1.2, rtol=1e-10, atol=[1e-12] * 4 + [1e-15], store=5000)
     assert tight[0] == OK and tight[2][4] == pytest.approx(scalar[2][4], rel=1e-9)

@@ -50,3 +50,45 @@ def test_progress_is_called_after_each_force():
     assert calls[-1] == (5, 5)
     assert [d for d, _ in calls] == sorted(d for d, _ in calls) and {t for _, t in calls} == {5}
     assert len(calls) == 4  # one call per distinct force
+
+
+@pytest.mark.parametrize("rubber", [0.3, 5.0])
+def test_smallest_tensions_are_refined_between_steps(rubber):
+    """Exact answer: at a large force T_1 has an interior minimum (near r = 0.93); the state's tension_1_min
+    equals the minimum over the same free part integrated with steps of at most 1e-5 (independent
+    sampling: 1e-9 relative), and lies at or below the profile's sampled minimum."""
+    from pocket.shooting.laws import law_of
+    from pocket.shooting.problem import Problem
+    from pocket.shooting.tensions import tensions
+
+    state = shooting.compress(rubber, 0.31, 3.0)
+    problem = Problem(state.inflated, 1e-10)
+    law = law_of(rubber)
+    x = [state.pressure_ratio, (state.stretch_contact - 1) / problem.strain]
+    _, lc, a, p = problem.geometry(x, state.force)
+    from pocket.shooting.integrator import OK, integrate
+    from pocket.shooting.shots import edge_state
+
+    status, _, _, steps = integrate(edge_state(lc, a), a, law, p, rtol=1e-10, store=200000, max_step=1e-5,
+                                    psi_max=4.0)
+    assert status == OK
+    fine = tensions(steps[:, 4], steps[:, 1] / steps[:, 0], law.code, law.params)[0] * law.tension_scale
+    assert state.tension_1_min == pytest.approx(np.min(fine), rel=1e-9)
+    assert state.tension_1_min <= np.min(state.profile.tension_1)
+    assert 0.05 < state.profile.r[np.argmin(state.profile.tension_1)] < 0.999  # interior, as stated
+
+
+def test_a_slack_shot_is_a_status_not_a_state():
+    """Exact answer: for alpha = -0.5 the equibiaxial tension (1 - l^-6)(1 + alpha l^2) vanishes at
+    l^2 = 2; a shot from a contact edge at lambda_c = 1.5 stops with SLACK (finite numbers, no NaN) and
+    the compression residual there is undefined (None: outside the model's domain)."""
+    from pocket.shooting.integrator import SLACK, integrate
+    from pocket.shooting.laws import law_of
+    from pocket.shooting.problem import Problem
+    from pocket.shooting.shots import edge_state
+
+    status, r, y, _ = integrate(edge_state(1.5, 0.3), 0.3, law_of(-0.5), 0.3, rtol=1e-10)
+    assert status == SLACK and r < 1.0 and np.all(np.isfinite(y))
+    problem = Problem(shooting.inflate(-0.5, 0.1), 1e-10)
+    assert problem.residual(np.array([1.0, (1.5 - 1) / problem.strain]), 0.01) is None
+    assert "tension vanished" in problem.failure()

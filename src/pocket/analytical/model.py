@@ -30,6 +30,26 @@ Fhat(a) grows without bound as a -> 1, but past the force at which the deformed
 contact radius lambda_c a reaches the clamp radius the model no longer describes
 a pocket: that force is its range. Tensions in the profiles are the plane-stress linear law with
 Poisson ratio 1/2: T1 / (E T) = (4/3) (e1 + e2 / 2), e = lambda - 1.
+
+Any rubber. Linearised about the flat sheet every incompressible law is the linear law above
+with E = 3 mu_0 (mu_0 its small-strain shear modulus; for Mooney-Rivlin E = 6 (C1 + C2)), and in
+the units Phat = P R / (E T) nothing else of the law is left: the model accepts any material
+(``pocket.core.materials``) and gives every law the same numbers. How soon the full model departs
+from it does depend on the law (a rubber that stiffens or locks departs sooner); the warnings
+above still mark stretches past 1.1, and the shooting solver is the measure.
+
+A gas sealed at P_I (``pocket.core.fluids``). The volume constraint V = V_I becomes
+V = V_I ((Phat_I + Phat_atm) / (Phat + Phat_atm))^(1/gamma). With u = sqrt(s_c / s) and
+eq (16b), V / V_I = 2 pi sqrt(s) u M(a) / ((pi / 4) sqrt(6 s)) = u / u_L(a), where
+M(a) = int_0^1 r G dr and u_L = sqrt(6) / (8 M(a)) is the liquid's u (eq (24)); and the contact
+pressure is Phat(u) = 10 s^(3/2) u^3 / sqrt(1 - a^2). So u solves
+
+    ln u - ln u_L(a) + (1/gamma) ln((Phat(u) + Phat_atm) / (Phat_I + Phat_atm)) = 0,
+
+whose left side rises monotonically from -inf (u -> 0) and is >= 0 at
+u = u_L ((Phat_I + Phat_atm) / Phat_atm)^(1/gamma) (Phat >= 0): one root, found by Brent's
+method. Then s_c = s u^2, and the force and the range follow as for a liquid. As Phat_atm grows
+the logarithm vanishes and u -> u_L: the liquid.
 """
 
 from __future__ import annotations
@@ -40,7 +60,9 @@ from scipy.optimize import brentq
 
 from pocket.core import smallstrain
 from pocket.core.errors import InputError, OutOfRangeError
-from pocket.core.inputs import check_alpha, check_force, check_positive
+from pocket.core.fluids import LIQUID, as_fluid
+from pocket.core.inputs import check_force, check_positive
+from pocket.core.materials import Material, as_material, given_alpha
 from pocket.core.states import CompressedState, InflatedState, Profile
 
 __all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT"]
@@ -91,9 +113,13 @@ def _profile(r, rho, eta, l1, l2, contact):
                    tension_1=t1, tension_2=t2, contact=contact)
 
 
-def inflate(alpha, pressure) -> InflatedState:
-    """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``."""
-    alpha = check_alpha(alpha)
+def inflate(material, pressure) -> InflatedState:
+    """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``.
+
+    ``material``: the rubber, a Mooney-Rivlin alpha or any ``pocket.core.materials.Material`` (only
+    mu_0 enters, through Phat: module docstring); echoed by the state."""
+    checked = as_material(material)
+    alpha = given_alpha(material)
     pressure = check_positive("pressure", pressure)
     s = smallstrain.pole_strain(pressure)
     r = np.linspace(0.0, 1.0, _N)
@@ -102,23 +128,40 @@ def inflate(alpha, pressure) -> InflatedState:
                        np.zeros(r.size, bool))
     return InflatedState(alpha=alpha, pressure=pressure, stretch_pole=1.0 + s, height=np.sqrt(1.5 * s),
                          volume=0.25 * np.pi * np.sqrt(6.0 * s), stretch_clamp=1.0 + s,
-                         profile=profile, solver="analytical", warnings=_warnings(lambda_0=1.0 + s))
+                         profile=profile, solver="analytical", warnings=_warnings(lambda_0=1.0 + s),
+                         material=checked if isinstance(material, Material) else None)
 
 
-def _contact_strain(a, s0):
-    """lambda_c - 1 at contact radius a, from the volume constraint (eq (24))."""
-    return s0 * (np.sqrt(6.0) / (8.0 * _volume_moment(a))) ** 2
+def _contact_strain(a, s0, pressure_initial=None, fluid=LIQUID):
+    """lambda_c - 1 at contact radius a, from the volume constraint: eq (24) for a liquid, the gas law
+    for a gas (module docstring)."""
+    liquid = s0 * (np.sqrt(6.0) / (8.0 * _volume_moment(a))) ** 2
+    if not fluid.is_gas:
+        return liquid
+    u_liquid = np.sqrt(liquid / s0)
+    sealed = pressure_initial + fluid.ambient
+    shape = 10.0 * s0**1.5 / np.sqrt(1.0 - a * a)
+
+    def miss(log_u):
+        u = np.exp(log_u)
+        return log_u - np.log(u_liquid) + np.log((shape * u**3 + fluid.ambient) / sealed) / fluid.gamma
+
+    hi = np.log(u_liquid) + np.log(sealed / fluid.ambient) / fluid.gamma
+    lo = hi - 1.0
+    while miss(lo) > 0.0:
+        lo -= 2.0 * (hi - lo)
+    return s0 * np.exp(2.0 * brentq(miss, lo, hi, xtol=1e-15, rtol=1e-15))
 
 
-def _force(a, s0, pressure_initial):
-    sc = _contact_strain(a, s0)
+def _force(a, s0, pressure_initial, fluid=LIQUID):
+    sc = _contact_strain(a, s0, pressure_initial, fluid)
     phat = 10.0 * sc**1.5 / np.sqrt(1.0 - a * a)
     return phat / pressure_initial * (1.0 + sc) ** 2 * a * a
 
 
-def _compressed(inflated, force, a):
+def _compressed(inflated, force, a, fluid):
     s0 = inflated.stretch_pole - 1.0
-    sc = _contact_strain(a, s0) if a > 0.0 else s0
+    sc = _contact_strain(a, s0, inflated.pressure, fluid) if a > 0.0 else s0
     phat = 10.0 * sc**1.5 / np.sqrt(1.0 - a * a) if a > 0.0 else inflated.pressure
     r = np.union1d(np.linspace(0.0, a, 33), np.linspace(a, 1.0, _N))
     l2 = np.where(r <= a, 1.0 + sc, 1.0 + sc - sc * (r * r - a * a) / (1.0 - a * a))
@@ -133,57 +176,62 @@ def _compressed(inflated, force, a):
         volume=2.0 * np.pi * np.sqrt(sc) * _volume_moment(a), profile=profile,
         inflated=inflated, solver="analytical",
         warnings=_warnings(lambda_0=inflated.stretch_pole, lambda_c=1.0 + sc),
+        material=inflated.material, fluid=fluid,
     )
 
 
-def _contact_limit(s0, pressure_initial):
+def _contact_limit(s0, pressure_initial, fluid=LIQUID):
     """(a, Fhat) where the deformed contact radius (1 + s_c) a reaches the clamp: the model's range."""
-    a_max = brentq(lambda a: (1.0 + _contact_strain(a, s0)) * a - 1.0, 0.0, 1.0 - 1e-12)
-    return a_max, _force(a_max, s0, pressure_initial)
+    a_max = brentq(lambda a: (1.0 + _contact_strain(a, s0, pressure_initial, fluid)) * a - 1.0, 0.0, 1.0 - 1e-12)
+    return a_max, _force(a_max, s0, pressure_initial, fluid)
 
 
-def _contact_radius(force, s0, pressure_initial, a_max):
+def _contact_radius(force, s0, pressure_initial, a_max, fluid=LIQUID):
     """a with Fhat(a) = ``force`` (0 < force <= Fhat(a_max)), to 1e-14 relative in the force: solved
     for b = a / sqrt(force), of order one however small the force (Fhat ~ a^2 as a -> 0)."""
     scale = np.sqrt(force)
 
     def miss(b):
-        return _force(b * scale, s0, pressure_initial) / force - 1.0
+        return _force(b * scale, s0, pressure_initial, fluid) / force - 1.0
 
     hi = min(a_max / scale, 10.0)  # for small forces b ~ 1 / lambda_0: the bracket stays of order one
     hi = hi if miss(hi) >= 0.0 else a_max / scale
     return min(brentq(miss, 0.0, hi, xtol=1e-300, rtol=1e-14) * scale, a_max)
 
 
-def range_end(alpha, pressure_initial) -> float:
+def range_end(material, pressure_initial, *, fluid=None) -> float:
     """The force Fhat at which the model's contact reaches the clamp (A_c = pi R^2): its range."""
-    inflated = inflate(alpha, pressure_initial)
-    return float(_contact_limit(inflated.stretch_pole - 1.0, inflated.pressure)[1])
+    inflated = inflate(material, pressure_initial)
+    fluid = as_fluid(fluid)
+    return float(_contact_limit(inflated.stretch_pole - 1.0, inflated.pressure, fluid)[1])
 
 
-def compression_curve(alpha, pressure_initial, forces, *, progress=None) -> list[CompressedState]:
+def compression_curve(material, pressure_initial, forces, *, fluid=None, progress=None) -> list[CompressedState]:
     """Compressed states at each Fhat of ``forces``; OutOfRangeError past the model's maximum force.
 
-    ``progress(done, total)``, if given, is called after each force (``total`` = len(forces)).
+    ``material`` as for ``inflate``; ``fluid``: None or "liquid", or a gas (``pocket.core.fluids.gas``,
+    ambient pressure as Phat_atm), echoed by the states. ``progress(done, total)``, if given, is called
+    after each force (``total`` = len(forces)).
     """
-    inflated = inflate(alpha, pressure_initial)
+    inflated = inflate(material, pressure_initial)
+    fluid = as_fluid(fluid)
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
     s0 = inflated.stretch_pole - 1.0
-    a_max, f_max = _contact_limit(s0, inflated.pressure)
+    a_max, f_max = _contact_limit(s0, inflated.pressure, fluid)
     states = []
     for f in forces:
         if f > f_max:
             raise OutOfRangeError(f"force = {f:.6g} is beyond the analytical model's range: the contact "
                                   f"would reach the clamp (at force = {f_max:.6g})")
-        a = 0.0 if f == 0.0 else _contact_radius(f, s0, inflated.pressure, a_max)
-        states.append(_compressed(inflated, f, a))
+        a = 0.0 if f == 0.0 else _contact_radius(f, s0, inflated.pressure, a_max, fluid)
+        states.append(_compressed(inflated, f, a, fluid))
         if progress is not None:
             progress(len(states), len(forces))
     return states
 
 
-def compress(alpha, pressure_initial, force) -> CompressedState:
-    """Compression by eqs (19)-(26) (corrected) at Fhat = ``force``."""
-    return compression_curve(alpha, pressure_initial, [force])[0]
+def compress(material, pressure_initial, force, *, fluid=None) -> CompressedState:
+    """Compression by eqs (19)-(26) (corrected) at Fhat = ``force`` (``compression_curve``)."""
+    return compression_curve(material, pressure_initial, [force], fluid=fluid)[0]

@@ -25,7 +25,7 @@ import math
 from .errors import InputError
 from .inputs import check_finite, quote
 
-__all__ = ["Fluid", "LIQUID", "gas", "GAMMA_RANGE", "AMBIENT"]
+__all__ = ["Fluid", "LIQUID", "gas", "as_fluid", "GAMMA_RANGE", "AMBIENT"]
 
 #: polytropic exponents accepted: isothermal to monatomic adiabatic
 GAMMA_RANGE = (1.0, 5.0 / 3.0)
@@ -75,3 +75,19 @@ def gas(ambient, gamma=1.0, where: str = "fluid") -> Fluid:
         raise InputError(f"{where}.gamma = {quote(gamma)}, but it must lie in [1, 5/3] (1 isothermal, 1.4 air "
                          "compressed adiabatically, 5/3 a monatomic gas)")
     return Fluid("gas", ambient_value, gamma_value)
+
+
+def as_fluid(value) -> Fluid:
+    """The fluid of ``value``: None or "liquid" is ``LIQUID``; a ``Fluid`` is re-checked and returned as given."""
+    if value is None or (isinstance(value, str) and value == "liquid"):
+        return LIQUID
+    if not isinstance(value, Fluid):
+        raise InputError(f"fluid = {quote(value)}, but it must be 'liquid' or a gas (pocket.core.fluids.gas)")
+    if value.kind == "liquid":
+        if value != LIQUID:
+            raise InputError(f"fluid = {quote(value)}: a liquid has no ambient pressure or gamma")
+        return value
+    if value.kind != "gas":
+        raise InputError(f"fluid.kind = {quote(value.kind)}, but it must be 'liquid' or 'gas'")
+    gas(value.ambient, value.gamma)
+    return value

@@ -45,9 +45,9 @@ import math
 import numpy as np
 
 from .errors import InputError
-from .inputs import check_finite, quote
+from .inputs import check_alpha, check_finite, quote
 
-__all__ = ["LAWS", "Material", "mooney_rivlin", "energy", "check"]
+__all__ = ["LAWS", "Material", "mooney_rivlin", "energy", "check", "as_material", "given_alpha"]
 
 #: law -> its parameters (names as in case files), in order
 LAWS = {
@@ -116,6 +116,21 @@ def mooney_rivlin(alpha: float) -> Material:
     """The Mooney-Rivlin rubber with C2/C1 = ``alpha``, in units of mu_0: C1 = 1 / (2 (1 + alpha))."""
     c1 = 0.5 / (1.0 + alpha)
     return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)))
+
+
+def as_material(value) -> Material:
+    """The rubber of ``value``: a ``Material``, re-checked and returned as given (in its own stress unit), or a
+    number, the Mooney-Rivlin alpha = C2/C1 (checked: alpha > -1), as ``mooney_rivlin(alpha)`` in units of mu_0."""
+    if isinstance(value, Material):
+        check(value.law, dict(value.params))
+        return value
+    return mooney_rivlin(check_alpha(value))
+
+
+def given_alpha(value) -> float | None:
+    """The alpha a state echoes for the rubber ``value`` as given: the checked float for a number, None for a
+    ``Material`` (whatever its law: a state then reports the material itself)."""
+    return None if isinstance(value, Material) else check_alpha(value)
 
 
 def _invariants(l1, l2):

@@ -15,15 +15,26 @@ which steps take it: a contact penalty means nothing to an inflation.
 Entry points (functions of the module ``Solver.module``), all in the
 dimensionless units of ``pocket.core.states``:
 
-- ``inflate(alpha, pressure, **options) -> InflatedState``
-- ``inflate_volume(alpha, volume, **options) -> InflatedState``
-- ``compress(alpha, pressure_initial, force, **options) -> CompressedState``
-- ``compression_curve(alpha, pressure_initial, forces, *, progress=None, **options) -> list[CompressedState]``
+- ``inflate(material, pressure, **options) -> InflatedState``
+- ``inflate_volume(material, volume, **options) -> InflatedState``
+- ``compress(material, pressure_initial, force, *, fluid=None, **options) -> CompressedState``
+- ``compression_curve(material, pressure_initial, forces, *, fluid=None, progress=None, **options)
+  -> list[CompressedState]``
+
+``material`` is the rubber: a number is a Mooney-Rivlin alpha = C2/C1 (today's path, results
+unchanged), a ``pocket.core.materials.Material`` any law in any stress unit (the solver scales it to
+mu_0 itself; ``pocket.core.materials.as_material`` checks either). ``fluid`` is the fluid sealed in
+the pocket at the initial pressure: None or "liquid" (fixed volume), or a gas
+(``pocket.core.fluids.gas``) whose ambient pressure is dimensionless like every pressure,
+Phat_atm = P_atm R / (E T) (``pocket.core.fluids.as_fluid`` checks it). Inflation takes no fluid: the
+gas is sealed once the pocket is inflated. States echo ``material`` as given (and ``alpha``, the number
+when a number was given, else None) and ``fluid`` as given (``LIQUID`` for None).
 
 ``progress``, if given, is called as ``progress(done, total)`` after each force of a
 curve (a command line shows a bar with it); it is not an option of the record.
-A solver may also have ``range_end(alpha, pressure_initial, **options) -> float``,
-the force Fhat at which its model's range ends (listed in ``entry_points``).
+A solver may also have ``range_end(material, pressure_initial, *, fluid=None, **options) -> float``,
+the force Fhat at which its model's range ends (listed in ``entry_points``; inf where the range has
+no end, as for a rubber that locks before the sheet reaches the clamp plane).
 """
 
 from __future__ import annotations
