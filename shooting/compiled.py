@@ -23,10 +23,11 @@ compile time, never a result.
 Loading an entry initialises only numba's runtime, not its whole compiler (see
 ``_Cache.load_overload``): that halves the start-up of a command.
 
-numba's cache index checks only the source file of the cached function, not of the
+numba's own cache index checks only the source file of the cached function, not of the
 compiled functions it calls (the integrator inlines ``equations.rhs`` and the tensions of
-``tensions.py``): after editing one of those alone, delete the ``__pycache__`` folders
-(an installed release changes every file, so users never meet a stale entry).
+``tensions.py``). Here an entry's stamp is that of every source file of this package
+(name, modification time, size), so editing any of them, or installing another release,
+makes every entry stale: it is then compiled afresh.
 
 This uses numba's cache classes (``numba.core.caching``), as custom cache locators
 do; ``tests/test_shooting_cache.py`` runs the failures in subprocesses. Those
@@ -47,6 +48,7 @@ try:
     from numba.core.caching import (
         CompileResultCacheImpl,
         FunctionCache,
+        IndexDataCacheFile,
         _CacheLocator,
         _SourceFileBackedLocatorMixin,
     )
@@ -55,6 +57,17 @@ except ImportError:  # a numba without these internals: no on-disk cache (module
     FunctionCache = None
 
 __all__ = ["compiled", "private_cache_root"]
+
+
+def _package_stamp() -> tuple:
+    """(name, mtime, size) of every source file of this package: what a cache entry depends on."""
+    folder = os.path.dirname(os.path.abspath(__file__))
+    out = []
+    for name in sorted(os.listdir(folder)):
+        if name.endswith(".py"):
+            info = os.stat(os.path.join(folder, name))
+            out.append((name, info.st_mtime, info.st_size))
+    return tuple(out)
 
 
 def private_cache_root() -> str:
@@ -92,6 +105,12 @@ if FunctionCache is not None:
         """numba's function cache, where an entry that cannot be loaded or saved is a cache miss."""
 
         _impl_class = _Impl
+
+        def __init__(self, py_func):
+            super().__init__(py_func)
+            own = self._cache_file._source_stamp  # the function's own file, as numba stamps it
+            self._cache_file = IndexDataCacheFile(cache_path=self._cache_path, filename_base=self._impl.filename_base,
+                                                  source_stamp=(own, _package_stamp()))
 
         def load_overload(self, sig, target_context):
             try:

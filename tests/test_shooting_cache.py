@@ -122,3 +122,20 @@ def test_a_cached_solve_loads_no_compiler_and_no_scipy_solvers(tmp_path):
         done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600)
         assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == ""
+
+
+def test_editing_a_compiled_callee_makes_the_cache_stale(tmp_path):
+    """Exact answer: the second run of the same package loads the cached integrator (1 hit, 0 misses);
+    after tensions.py, which the integrator inlines, is edited (a comment: same code, another size and
+    time), the entry is stale and the integrator is compiled afresh (0 hits, 1 miss), where numba's own
+    stamp (the integrator's file alone) would have loaded the old machine code."""
+    site, home, tmp = tmp_path / "site", _homeless(tmp_path), tmp_path / "tmp"
+    tmp.mkdir()
+    package = _copy(site, "shooting_edited")
+    _run(site, "shooting_edited", home, tmp)
+    warm = _run(site, "shooting_edited", home, tmp)
+    assert (warm[3], warm[4]) == (1, 0)
+    with (package / "tensions.py").open("a") as handle:
+        handle.write("\n# an edit\n")
+    edited = _run(site, "shooting_edited", home, tmp)
+    assert (edited[3], edited[4]) == (0, 1) and edited[5] == warm[5]
