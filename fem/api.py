@@ -33,10 +33,11 @@ import numpy as np
 
 from pocket import meshes
 from pocket.core.errors import InputError
+from pocket.core.fluids import as_fluid
 from pocket.core.inputs import check_force, check_positive, quote
 
 from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results
-from .gas import fluid_of, sealed
+from .gas import sealed
 from .model import FITTED, Control, Model, discretize
 from .newton import Tolerances
 
@@ -144,7 +145,7 @@ def _setup(material, pressure_initial, fluid, mesh, elements, order, contact, pe
     contact, penalty, augmented = _contact(contact, penalty, augmented)
     model = _model(material, mesh, elements, order, penalty)
     p_i = check_positive("pressure_initial", pressure_initial)
-    fluid = fluid_of(fluid)
+    fluid = as_fluid(fluid)
     tol = _tolerances(tol)
     y_i, iterations = inflation.to_pressure(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)

@@ -30,9 +30,9 @@ digits when Pa is large against P and P_I (as (P_I + Pa) / (P + Pa) would not).
 As Pa -> infinity, q = 1 - (P - P_I) / (gamma Pa) + O(Pa^-2): the gas states
 approach the liquid ones at rate 1/Pa.
 
-``fluid_of`` takes what a caller gives (None, "liquid" or a
-``pocket.core.fluids.Fluid``, re-checked: the semantics of
-``pocket.core.fluids.as_fluid``); ``sealed`` turns a gas into this row's ``Gas``.
+What a caller gives (None, "liquid" or a ``pocket.core.fluids.Fluid``) is
+checked by ``pocket.core.fluids.as_fluid``; ``sealed`` turns a gas into this
+row's ``Gas``.
 """
 
 from __future__ import annotations
@@ -40,11 +40,9 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from pocket.core.errors import InputError
-from pocket.core.fluids import LIQUID, Fluid, gas
-from pocket.core.inputs import quote
+from pocket.core.fluids import Fluid
 
-__all__ = ["Gas", "fluid_of", "sealed"]
+__all__ = ["Gas", "sealed"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -73,22 +71,6 @@ class Gas:
         """The polytropic law's relative residual (P + Pa) V^gamma / ((P_I + Pa) V_I^gamma) - 1."""
         return (pressure + self.ambient) / (self.pressure_initial + self.ambient) * (
             volume / volume_initial) ** self.gamma - 1.0
-
-
-def fluid_of(value) -> Fluid:
-    """The fluid of ``value``: None or "liquid" is LIQUID; a Fluid is re-checked and returned as given."""
-    if value is None or (isinstance(value, str) and value == "liquid"):
-        return LIQUID
-    if not isinstance(value, Fluid):
-        raise InputError(f"fluid = {quote(value)}, but it must be 'liquid' or a gas (pocket.core.fluids.gas)")
-    if value.kind == "liquid":
-        if value != LIQUID:
-            raise InputError(f"fluid = {quote(value)}: a liquid has no ambient pressure or gamma")
-        return value
-    if value.kind != "gas":
-        raise InputError(f"fluid.kind = {quote(value.kind)}, but it must be 'liquid' or 'gas'")
-    gas(value.ambient, value.gamma)
-    return value
 
 
 def sealed(fluid: Fluid, pressure_initial: float) -> Gas | None:

@@ -31,7 +31,7 @@ from scipy.optimize import brentq
 
 from pocket.core.errors import ConvergenceError
 from pocket.core.inputs import check_alpha, quote
-from pocket.core.materials import Material, check
+from pocket.core.materials import Material, as_material
 
 from . import laws
 
@@ -109,16 +109,10 @@ def _scaled_params(material: Material) -> tuple[int, np.ndarray, float]:
     return laws.OGDEN, np.array([m / 3.0 for m in p["mu"]] + list(p["exponents"])), math.inf
 
 
-def _checked(value) -> Material:
-    """``value`` re-checked as a Material (the semantics of ``pocket.core.materials.as_material``)."""
-    check(value.law, dict(value.params))
-    return value
-
-
 def law_of(value) -> Law:
     """The Law of ``value``: a float (Mooney-Rivlin alpha, checked) or a Material (checked)."""
     if isinstance(value, Material):
-        material = _checked(value)
+        material = as_material(value)
         code, params, jm = _scaled_params(material)
         label = f"{material.law} rubber " + ", ".join(f"{k} = {quote(v)}" for k, v in material.params)
         return Law(code, params, None, material, label, jm)

@@ -2,7 +2,7 @@
 
 Reported quantities (``pocket.core.states``): the inputs (alpha or the
 material, pressure or pressure_initial, force, the fluid) are echoed exactly as
-given (``material.law_of``, ``gas.fluid_of``).
+given (``material.law_of``, ``pocket.core.fluids.as_fluid``).
 
 Smallest tensions: T_1 = w_1 / lambda_2 and T_2 = w_2 / lambda_1 at the
 quadrature points and at the profile's nodes; the state reports the least of

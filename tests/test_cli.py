@@ -365,14 +365,16 @@ def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads the process's CPU time in /proc")
 def test_sigint_to_a_long_fe_solve(tmp_path):
-    """A real SIGINT to a long FE solve (20000 elements, about a minute), once it has run 3 s of CPU:
-    status 130 within seconds, stderr exactly `pocket: interrupted`, no --vtk folder."""
+    """A real SIGINT to a long FE curve (1e5 elements, 12 forces: tens of seconds), once it has run 3 s of
+    CPU, which lands inside numba's compiled code most of the time: status 130 within seconds, stderr
+    exactly `pocket: interrupted`, no --vtk folder."""
     import os
     import signal
     import time
 
     proc = subprocess.Popen([sys.executable, "-m", "pocket.cli", "compress", "--alpha", "0.3", "--pressure", "0.3",
-                             "--force", "0.5", "--solver", "fem", "--elements", "20000", "--vtk", str(tmp_path / "v")],
+                             "--force", *[str(0.5 * k) for k in range(1, 13)], "--solver", "fem", "--elements",
+                             "100000", "--vtk", str(tmp_path / "v")],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     def cpu_seconds():  # user + system time of the process (the imports take well under a second)
         with open(f"/proc/{proc.pid}/stat") as stat:

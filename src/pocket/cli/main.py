@@ -39,6 +39,18 @@ def _parser() -> Parser:
     return parser
 
 
+def _interrupted(err: BaseException) -> bool:
+    """Whether ``err`` wraps a KeyboardInterrupt: a signal that arrives while numba's compiled code runs
+    surfaces as "SystemError: ... returned a result with an exception set", caused by the interrupt."""
+    seen = set()
+    while err is not None and id(err) not in seen:
+        if isinstance(err, KeyboardInterrupt):
+            return True
+        seen.add(id(err))
+        err = err.__cause__ or err.__context__
+    return False
+
+
 def main(argv=None) -> int:
     """Run the command line; returns the exit status (also for ``--help``, ``--version`` and usage
     errors, which argparse ends with SystemExit).
@@ -60,6 +72,8 @@ def main(argv=None) -> int:
         except (BrokenPipeError, KeyboardInterrupt):
             raise
         except Exception as err:  # a bug: one line, unless its traceback is asked for
+            if _interrupted(err):  # Ctrl-C inside compiled code comes back wrapped in a SystemError
+                raise KeyboardInterrupt from err
             if os.environ.get("POCKET_TRACEBACK"):
                 raise
             print(f"pocket: internal error: {type(err).__name__}: {' '.join(str(err).split())} (a bug in pocket: "
