@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from pocket.apps.provenance import environment
+from pocket.core.materials import STRESSES
 
 from .convergence import EXPECTED, REFINED_P2_FINEST, RICHARDSON_FACTOR, richardson
 from .figures import pocket_label
@@ -64,18 +65,34 @@ def glance(results) -> tuple[list, list]:
     return header, rows
 
 
+def rubber_text(material) -> str:
+    """A rubber in a table cell: its law and parameters, stresses in kPa ("yeoh: c10 85, c20 2, c30 0.1 kPa")."""
+    parts = []
+    for name, value in material.params:
+        scale = 1e-3 if name in STRESSES else 1.0
+        values = value if isinstance(value, tuple) else (value,)
+        parts.append(f"{name} {' '.join(_g(v * scale) for v in values)}{' kPa' if scale != 1.0 else ''}")
+    return f"{material.law}: {', '.join(parts)}"
+
+
+def fluid_text(fluid) -> str:
+    """A fluid in a table cell: "liquid", or "gas, 101.3 kPa, gamma 1.4" (ambient pressure in kPa)."""
+    return fluid.kind if not fluid.is_gas else f"gas, {_g(fluid.ambient / 1e3)} kPa, gamma {_g(fluid.gamma)}"
+
+
 def case_table(results):
     """(header, rows): each pocket in SI and dimensionless, with the end of its range."""
-    header = ["case", "label", "T (mm)", "C1 (kPa)", "C2 (kPa)", "R (mm)", "P_I (kPa)", "alpha", "E (MPa)",
-              "Phat_I", "lambda_0", "H0/R", "range end Fhat"]
+    header = ["case", "label", "T (mm)", "rubber", "fluid", "R (mm)", "P_I (kPa)", "alpha", "E (MPa)",
+              "Phat_I", "Phat_atm", "lambda_0", "H0/R", "range end Fhat"]
     ends = {c.pocket: c for c in results.curves}
     rows = []
     for pocket in results.pockets:
         case, curves = pocket.case, ends.get(pocket)
         inflated = curves.reference[0].inflated if curves else None
-        rows.append([case.name, case.label, _g(case.thickness * 1e3), _g(case.c1 / 1e3), _g(case.c2 / 1e3),
-                     _g(case.radius * 1e3), _g(pocket.pressure_initial_Pa / 1e3, 6), _g(case.alpha),
-                     _g(case.modulus / 1e6), _g(pocket.pressure_initial),
+        rows.append([case.name, case.label, _g(case.thickness * 1e3), rubber_text(case.material),
+                     fluid_text(case.fluid), _g(case.radius * 1e3), _g(pocket.pressure_initial_Pa / 1e3, 6),
+                     _g(case.alpha), _g(case.modulus / 1e6), _g(pocket.pressure_initial),
+                     _g(pocket.fluid.ambient) if case.fluid.is_gas else "",
                      _g(inflated.stretch_pole, 6) if inflated else "", _g(inflated.height) if inflated else "",
                      _g(curves.force_end) if curves else ""])
     return header, rows

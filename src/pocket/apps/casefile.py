@@ -34,7 +34,7 @@ def solve(case: Case, progress=None) -> dict:
     pocket = resolve(case)
     loads = forces(pocket)
     extra = {} if progress is None else {"progress": progress}
-    states = pocket.solver().compression_curve(pocket.alpha, pocket.pressure_initial, loads,
+    states = pocket.solver().compression_curve(pocket.material, pocket.pressure_initial, loads,
                                                **pocket.options(), **extra)
     return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
             "states": [compressed_row(pocket, s, i) for i, s in enumerate(states)], "provenance": environment()}
@@ -48,7 +48,7 @@ def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Pat
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, fields, restval="")
     writer.writeheader()
-    writer.writerows({k: "; ".join(v) if isinstance(v, list) else v for k, v in row.items()}
+    writer.writerows({k: "; ".join(map(str, v)) if isinstance(v, list) else v for k, v in row.items()}
                      for row in result["states"])
     write_files({json_path: json.dumps(result, indent=2) + "\n", csv_path: text.getvalue()})
     return json_path, csv_path

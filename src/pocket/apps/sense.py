@@ -15,6 +15,14 @@ The contact area is A_c = F / P (frictionless flat plate).
 
 Pressures are gauge pressures, as P_I is: the pressure in the pocket above
 the ambient pressure.
+
+A gas-filled pocket (a case's ``[fluid]``) is the barometric touch sensor: its gas
+is compressed as well, (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma, and the
+forward solver holds that law, so the same inversion applies. Its pressure rise
+also grows monotonically with the force (checked over the whole range in the
+tests, isothermal and adiabatic); it is smaller than a liquid's at moderate
+forces and, near the end of the range, larger (the liquid stretches the contact
+zone more).
 """
 
 from __future__ import annotations
@@ -55,7 +63,7 @@ class Reading:
 
 
 def _readings(pocket: Pocket, fhats) -> list[Reading]:
-    states, slopes = curve_with_slopes(pocket.solver(), pocket.alpha, pocket.pressure_initial, fhats,
+    states, slopes = curve_with_slopes(pocket.solver(), pocket.material, pocket.pressure_initial, fhats,
                                        ["pressure_ratio"], **pocket.options())
     area = math.pi * pocket.case.radius**2
     return [Reading(force_N=s.force * pocket.force_scale_N, pressure_Pa=s.pressure_ratio * pocket.pressure_initial_Pa,
@@ -70,8 +78,8 @@ def _beyond(pocket: Pocket, what: str, given) -> OutOfRangeError:
     top = ""
     try:
         solver, options = pocket.solver(), pocket.options()
-        end = range_end(solver, pocket.alpha, pocket.pressure_initial, **options)
-        q = solver.compress(pocket.alpha, pocket.pressure_initial, end, **options).pressure_ratio
+        end = range_end(solver, pocket.material, pocket.pressure_initial, **options)
+        q = solver.compress(pocket.material, pocket.pressure_initial, end, **options).pressure_ratio
         top = f" (it reaches {written_like(q * pocket.pressure_initial_Pa, given, 'pressure')}, P/P_I = {q:.6g})"
     except PocketError:  # the reason stands without the number
         pass
@@ -97,7 +105,7 @@ def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
                               f"{written_like(pocket.pressure_initial_Pa, pressure, 'pressure')}, ratio 1): "
                               "a plate can only push")
     try:
-        fhat = force_where(pocket.solver(), pocket.alpha, pocket.pressure_initial, "pressure_ratio", q,
+        fhat = force_where(pocket.solver(), pocket.material, pocket.pressure_initial, "pressure_ratio", q,
                            increasing=True, **pocket.options())
     except OutOfRangeError:
         raise _beyond(pocket, what, pressure) from None

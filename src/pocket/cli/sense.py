@@ -53,7 +53,9 @@ def register(subparsers) -> None:
     text = "force sensing: force, contact area and dF/dP from a measured pressure"
     p = subparsers.add_parser("sense", help=text, description=f"{text} (gauge, like P_I), by inverting the "
                               "full model (no extrapolation: a pressure below P_I or past the model's range is "
-                              "an error); --table writes a calibration table over the force range.",
+                              "an error); --table writes a calibration table over the force range. The case's "
+                              "rubber and fluid are used: with a gas ([fluid] kind = \"gas\") it is the "
+                              "barometric touch sensor, the gas compressed by (P + P_atm) V^gamma fixed.",
                               epilog=EXIT_CODES)
     add_case_arguments(p)
     p.add_argument("--pressure", help="measured gauge pressure P ('5.2 kPa', SI if plain)")
