@@ -1,109 +1,192 @@
-"""Benchmark of the finite-element solver: cost against element count, and where it goes.
+"""Benchmark of the finite-element solver: cost per Newton iteration against N, Newton iterations per
+state, a compression curve's time against the shooting solver's, and the default mesh's accuracy.
 
     python benchmarks/bench_fem.py [--quick]
 
-Prints, for P2 meshes of 1e2 .. 1e5 elements, medians of repeated runs of one
-Newton iteration split into residual assembly, tangent assembly and the sparse
-solve, and the time of one converged inflated state (Phat = 0.31 from the small
-dome); then the time of a 40-point compression curve at the default mesh with
-the share of assembly and solve in it. Cost per iteration should grow about
-linearly with the element count (the ratio column).
+1. One P2 Newton iteration at a pressed state on the edge-fitted mesh (Fhat 0.19, alpha 47/160,
+   Phat_I 0.31; the state of a 256-element solve interpolated onto the mesh): the residual and
+   tangent assembly, and the bordered solve (static condensation, banded LU, three border
+   unknowns), for 1e2 .. 1e6 elements (--quick: to 1e4). Medians of repeats, the cost per element,
+   and its ratio to the one at 1e3 (linear in N: about 1).
+2. The 40-point compression curve at the default mesh (Fhat 0.02 .. 0.8, the same case): median time
+   of repeats, Newton iterations per compressed state (and with the inflation), and the shooting
+   solver's curve time with the ratio.
+3. How the default mesh was chosen: the worst relative error against shooting (rtol 1e-12) in any
+   reported scalar over the validation cases at Fhat = 0, 0.05, 0.19, 1 and 0.95 of each range end,
+   for 64 .. 384 P2 elements of the default family (skipped with --quick).
+4. Rubber laws and fluids: one assembly (residual and tangent) at 1e4 P2 elements for each law, and the
+   40-point curve of section 2 for each law and for a gas, with their ratios to Mooney-Rivlin's (the
+   law is a branch inside the compiled loop; Ogden's powers cost more than the invariants' products).
+
+The machine is shared: medians of repeats, with the least time beside them as the estimate of the
+undisturbed cost.
 """
 
 from __future__ import annotations
 
+import statistics
 import sys
 import time
 
 import numpy as np
-import scipy.sparse.linalg as spla
-from pocket.fem import inflation, model
+from pocket.fem import fitted, inflation, model
+from pocket.fem.api import default_mesh
+from pocket.fem.geometry import evaluate, node_radii, place
 from pocket.fem.newton import Tolerances
 from timing import median_time
 
-from pocket import fem, meshes
+from pocket import fem, shooting
+from pocket.core.fluids import gas
+from pocket.core.materials import check
 
-ALPHA, PHAT = 47 / 160, 0.31
-
-
-def per_iteration(n, repeat):
-    """(residual, tangent, solve) medians at the inflated state on n P2 elements."""
-    m = model.discretize(ALPHA, meshes.uniform(n), 2, 1e5)
-    lam = m.zero_multiplier()
-    y, _ = inflation.to_pressure(m, PHAT, lam, Tolerances())
-    control = model.Control(pressure=PHAT)
-    r, jac = model.residual(m, y, control, lam), model.jacobian(m, y, control, lam)
-    return (
-        median_time(lambda: model.residual(m, y, control, lam), repeat),
-        median_time(lambda: model.jacobian(m, y, control, lam), repeat),
-        median_time(lambda: spla.spsolve(jac, -r), repeat),
-    )
+ALPHA, PHAT, FHAT = 47 / 160, 0.31, 0.19
+#: one rubber of each law for section 4 (the first is the paper's)
+RUBBERS = {
+    "mooney-rivlin": ALPHA,
+    "neo-hookean": check("neo-hookean", {"mu": 1.0}),
+    "yeoh": check("yeoh", {"c10": 0.5, "c20": -0.02, "c30": 0.003}),
+    "gent": check("gent", {"mu": 1.0, "jm": 6.0}),
+    "ogden (3 terms)": check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}),
+}
 
 
-def converged_state(n, repeat):
-    """(seconds, Newton iterations) of one inflation to Phat from the small dome."""
-    state = fem.inflate(ALPHA, PHAT, mesh=meshes.uniform(n))
-    return median_time(lambda: fem.inflate(ALPHA, PHAT, mesh=meshes.uniform(n)), repeat), state
-
-
-class _Timer:
-    """Wraps a function and accumulates its wall time."""
-
-    def __init__(self, fun):
-        self.fun, self.seconds, self.calls = fun, 0.0, 0
-
-    def __call__(self, *args, **kwargs):
+def _times(fun, repeat):
+    """(median, least) wall time of ``fun()`` over ``repeat`` calls, in seconds."""
+    times = []
+    for _ in range(repeat):
         t = time.perf_counter()
-        try:
-            return self.fun(*args, **kwargs)
-        finally:
-            self.seconds += time.perf_counter() - t
-            self.calls += 1
+        fun()
+        times.append(time.perf_counter() - t)
+    return statistics.median(times), min(times)
 
 
-def curve_breakdown(points):
-    """Time a compression curve at the default mesh, split into assembly and solve."""
-    from pocket.fem import newton, steps
+def _pressed_state():
+    """A converged pressed state on 256 P2 elements: (model, y, volume)."""
+    m = model.discretize(ALPHA, default_mesh(256), 2, 1e5)
+    tol = Tolerances()
+    y_i, _ = inflation.to_pressure(m, PHAT, tol)
+    volume = inflation.volume(m, y_i)
+    y, _ = fitted.first_contact(m, y_i, model.Control(volume=volume), 0.05, tol)
+    y, _ = fitted.force_path(m, y, model.Control(volume=volume), FHAT * np.pi * PHAT, tol)
+    return m, y, volume
 
-    timers = {"residual": _Timer(model.residual), "tangent": _Timer(model.jacobian),
-              "solve": _Timer(spla.spsolve)}
-    originals = steps.residual, steps.jacobian, newton.spla
-    steps.residual, steps.jacobian = timers["residual"], timers["tangent"]
-    newton.spla = type("spla", (), {"spsolve": staticmethod(timers["solve"])})
+
+def _on(coarse, y, n):
+    """The state y of the model ``coarse`` interpolated onto n elements: (model, y)."""
+    m = model.discretize(ALPHA, default_mesh(n), 2, 1e5)
+    a = float(y[coarse.dofs + 2])
+    u = evaluate(place(coarse.xi, coarse.ref, a), coarse.ref, y[: coarse.dofs],
+                 node_radii(place(m.xi, m.ref, a), m.ref)).ravel()
+    return m, model.conform(m, np.concatenate([u, y[coarse.dofs:]]), model.FITTED)
+
+
+def per_iteration(sizes):
+    """Section 1."""
+    coarse, y0, volume = _pressed_state()
+    control = model.Control(volume=volume, force=FHAT * np.pi * PHAT, scale=FHAT * np.pi * PHAT)
+    print("P2 elements | assembly [ms] (least) | solve [ms] (least) | iteration [ms] (least) |"
+          " per element [us] | ratio to 1e3")
+    base = None
+    for n in sizes:
+        m, y = _on(coarse, y0, n)
+        repeat = 9 if n <= 10**4 else 5 if n <= 10**5 else 3
+        model.linearize(m, y, model.FITTED, control)
+        assembly = _times(lambda m=m, y=y: model.linearize(m, y, model.FITTED, control), repeat)
+
+        def iteration(m=m, y=y):
+            r, system = model.linearize(m, y, model.FITTED, control)
+            system.solve(-r[: m.dofs], -r[m.dofs:])
+
+        total = _times(iteration, repeat)
+        solve = (total[0] - assembly[0], total[1] - assembly[1])
+        per_element = 1e6 * total[0] / n
+        if n == 1000:
+            base = per_element
+        ratio = f"{per_element / base:12.2f}" if base else " " * 12
+        print(f"{n:11d} | {1e3 * assembly[0]:8.2f} ({1e3 * assembly[1]:8.2f}) | {1e3 * solve[0]:7.2f}"
+              f" ({1e3 * solve[1]:7.2f}) | {1e3 * total[0]:9.2f} ({1e3 * total[1]:9.2f}) | {per_element:16.3f} |"
+              f" {ratio}")
+
+
+def curve(points, repeat):
+    """Section 2."""
     forces = np.linspace(0.02, 0.8, points)
-    try:
-        t = time.perf_counter()
-        states = fem.compression_curve(ALPHA, PHAT, forces)
-        total = time.perf_counter() - t
-    finally:
-        steps.residual, steps.jacobian, newton.spla = originals
-    return total, states, timers
+    fem.compression_curve(ALPHA, PHAT, forces[:2])  # compile and import once
+    states = fem.compression_curve(ALPHA, PHAT, forces)
+    fem_time = _times(lambda: fem.compression_curve(ALPHA, PHAT, forces), repeat)
+    shooting.compression_curve(ALPHA, PHAT, forces[:2])
+    shot_time = median_time(lambda: shooting.compression_curve(ALPHA, PHAT, forces), repeat)
+    its = [s.extra["newton_iterations"] for s in states]
+    inflation_its = states[0].inflated.extra["newton_iterations"]
+    elements = states[0].extra["elements"]
+    print(f"\n{points}-point compression curve, default mesh ({elements} P2 elements, Fhat 0.02..0.8):"
+          f" {fem_time[0]:.3f} s (least {fem_time[1]:.3f} s); shooting {shot_time:.3f} s; ratio"
+          f" {fem_time[0] / shot_time:.1f}")
+    print(f"  Newton iterations per compressed state: mean {np.mean(its):.2f}, max {max(its)} (the first, with"
+          f" the first contact: {its[0]}); with the inflation's {inflation_its}:"
+          f" {(sum(its) + inflation_its) / points:.2f} per state")
+
+
+def default_mesh_accuracy(sizes):
+    """Section 3."""
+    from pocket.validation.compute import range_end
+    from pocket.validation.suite import load
+
+    pockets, _ = load()
+    worst = {n: (0.0, "") for n in sizes}
+    for case in pockets:
+        end = range_end(case)
+        forces = sorted(f for f in (0.0, 0.05, 0.19, 1.0, 0.95 * end) if f <= 0.95 * end)
+        refs = shooting.compression_curve(case.alpha, case.pressure_initial, forces, rtol=1e-12)
+        for n in sizes:
+            states = fem.compression_curve(case.alpha, case.pressure_initial, forces, elements=n)
+            for state, ref in zip(states, refs, strict=True):
+                a, b = (state.inflated, ref.inflated) if state.force == 0.0 else (state, ref)
+                keys = ("stretch_pole", "height", "volume", "stretch_clamp") if state.force == 0.0 else a.KEYS[3:]
+                for key in keys:
+                    error = abs(getattr(a, key) / getattr(b, key) - 1.0)
+                    if error > worst[n][0]:
+                        worst[n] = (error, f"{case.case.name}, Fhat = {state.force:.4g}, {key}")
+    print(f"\nDefault mesh family (P2), worst relative error against shooting over {len(pockets)} cases:")
+    for n in sizes:
+        mark = "  <- DEFAULT_ELEMENTS" if n == fem.DEFAULT_ELEMENTS else ""
+        print(f"  {n:4d} elements: {worst[n][0]:.2e} ({worst[n][1]}){mark}")
+
+
+def laws_and_fluids(repeat):
+    """Section 4."""
+    coarse, y0, volume = _pressed_state()
+    control = model.Control(volume=volume, force=FHAT * np.pi * PHAT, scale=FHAT * np.pi * PHAT)
+    forces = np.linspace(0.02, 0.8, 40)
+    print("\nRubber laws, P2: one assembly at 1e4 elements and the 40-point curve (default mesh), median (least);"
+          " ratios of the least times (the undisturbed cost) to Mooney-Rivlin's")
+    print(f"{'law':16s} | assembly [ms] | ratio | curve [s]      | ratio")
+    base = None
+    for name, rubber in RUBBERS.items():
+        m, y = _on(coarse, y0, 10**4)
+        m = model.discretize(rubber, m.xi, 2, 1e5)
+        model.linearize(m, y, model.FITTED, control)
+        assembly = _times(lambda m=m, y=y: model.linearize(m, y, model.FITTED, control), 3 * repeat)
+        fem.compression_curve(rubber, PHAT, forces[:2])
+        curve_time = _times(lambda rubber=rubber: fem.compression_curve(rubber, PHAT, forces), repeat)
+        base = base or (assembly[1], curve_time[1])
+        print(f"{name:16s} | {1e3 * assembly[0]:5.2f} ({1e3 * assembly[1]:5.2f}) | {assembly[1] / base[0]:5.2f} |"
+              f" {curve_time[0]:.3f} ({curve_time[1]:.3f}) | {curve_time[1] / base[1]:5.2f}")
+    for fluid in (gas(0.5, 1.0), gas(0.5, 1.4)):
+        fem.compression_curve(ALPHA, PHAT, forces[:2], fluid=fluid)
+        curve_time = _times(lambda fluid=fluid: fem.compression_curve(ALPHA, PHAT, forces, fluid=fluid), repeat)
+        label = f"MR, gas {fluid.gamma:g}"
+        print(f"{label:16s} |               |       | {curve_time[0]:.3f} ({curve_time[1]:.3f}) |"
+              f" {curve_time[1] / base[1]:5.2f}")
 
 
 def main(argv=None):
     quick = "--quick" in (sys.argv[1:] if argv is None else argv)
-    sizes = [100, 1000, 10000] if quick else [100, 1000, 10000, 100000]
-    print("P2 elements | residual [ms] | tangent [ms] | solve [ms] | iteration [ms] | ratio"
-          " | inflation [s] | Newton its | per it [ms]")
-    base = None
-    for n in sizes:
-        repeat = 7 if n <= 10000 else 3
-        r, j, s = per_iteration(n, repeat)
-        it = r + j + s
-        base = base or it / n
-        seconds, state = converged_state(n, 3 if n <= 10000 else 1)
-        iterations = state.extra["newton_iterations"]
-        print(f"{n:11d} | {1e3 * r:13.2f} | {1e3 * j:12.2f} | {1e3 * s:10.2f} | {1e3 * it:14.2f} |"
-              f" {it / n / base:5.2f} | {seconds:13.3f} | {iterations:10d} | {1e3 * seconds / iterations:11.2f}")
-    points = 10 if quick else 40
-    total, states, timers = curve_breakdown(points)
-    iterations = sum(s.extra["newton_iterations"] for s in states) + states[0].inflated.extra["newton_iterations"]
-    print(f"\n{points}-point compression curve, default mesh ({states[0].extra['elements']} P2 elements,"
-          f" Fhat 0.02..0.8): {total:.2f} s, {iterations} Newton iterations, {total / points:.3f} s per state")
-    for name, timer in timers.items():
-        print(f"  {name:8s}: {timer.seconds:7.2f} s ({100 * timer.seconds / total:4.1f} %), {timer.calls} calls")
-    rest = total - sum(t.seconds for t in timers.values())
-    print(f"  other   : {rest:7.2f} s ({100 * rest / total:4.1f} %) (post-processing, predictors, checks)")
+    per_iteration([100, 1000, 10000] if quick else [100, 1000, 10000, 100000, 1000000])
+    curve(40, 3 if quick else 7)
+    if not quick:
+        default_mesh_accuracy([64, 128, 192, 256, 384])
+    laws_and_fluids(3 if quick else 7)
 
 
 if __name__ == "__main__":

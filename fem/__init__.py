@@ -1,12 +1,27 @@
-"""Finite-element solver of the axisymmetric Mooney-Rivlin membrane (scikit-fem).
+"""Finite-element solver of the axisymmetric membrane of any incompressible rubber.
 
-Unknowns rho(r), eta(r) on P1 or P2 Lagrange elements of the Lagrangian radius
-r in [0, 1], the pressure as the multiplier of the volume, a frictionless flat
-plate by penalty (optionally augmented Lagrangian). Modules: ``material`` (the
-energy), ``forms`` (residual and tangent, derived in its docstring), ``model``
-(the bordered system), ``newton``, ``continuation``, ``inflation``,
-``compression``, ``post`` and ``api`` (the entry points below). ``SOLVER`` is
-its record (entry points and options, ``pocket.core.solver``).
+Unknowns rho(r), eta(r) on P1 or P2 Lagrange elements (scikit-fem's element
+definitions and quadrature) of the Lagrangian radius r in [0, 1], the
+pressure as the multiplier of the volume. The frictionless flat plate either
+on an edge-fitted mesh (the default: the Lagrangian contact radius is a
+Newton unknown, closed by tangent contact, and a mesh vertex follows it, so
+that every element is smooth and the contact is exact) or on a fixed mesh by
+penalty with augmented-Lagrangian updates. The rubber is any law of
+``pocket.core.materials`` (a float is a Mooney-Rivlin alpha); the pocket holds
+a liquid (fixed volume) or a gas sealed at the initial pressure (the
+polytropic law ties the pressure to the volume).
+
+Modules: ``laws`` (each law's membrane energy derivatives, compiled) and
+``material`` (a rubber as the kernel's law), ``gas`` (the fluid's volume
+row), ``reference`` (element tables), ``geometry`` (the mesh and its map to
+the contact edge), ``kernel`` (residual and tangent, derived in its
+docstring) and ``loops`` (their compiled element loop), ``model`` (unknowns,
+equations and the bordered tangent), ``banded`` and ``condensed`` (its O(N)
+solution), ``newton``, ``continuation``, ``steps``, ``inflation``,
+``fitted`` and ``penalty`` (the two contact methods), ``curves``, ``post``,
+``results`` (the states and their checks) and ``api`` (the entry points
+below). ``SOLVER`` is its record (entry points and options,
+``pocket.core.solver``).
 
 The entry points are imported on first use (scikit-fem's import is not free),
 so that reading ``SOLVER`` costs nothing.
@@ -18,15 +33,22 @@ from pocket.core.inputs import check_choice, check_count, check_flag, check_posi
 from pocket.core.solver import Option, Solver
 
 __all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height",
-           "default_mesh", "DEFAULT_ELEMENTS", "MAX_ELEMENTS"]
+           "default_mesh", "DEFAULT_ELEMENTS", "DEFAULT_ELEMENTS_P1", "MAX_ELEMENTS", "MIN_ELEMENTS",
+           "CONTACT_METHODS"]
 
-#: elements of the default uniform mesh
-DEFAULT_ELEMENTS = 1000
-#: most elements a solve may ask for: bounds the memory and time a case file can ask for (measured on
-#: 2 cores: a P2 inflation takes 0.55 GB and 45 s at 1e5 elements, 0.9 GB at 2e5; 1e6 would need ~5 GB)
+#: elements of the default mesh with P2 elements (``api.default_mesh`` says how the number was chosen)
+DEFAULT_ELEMENTS = 256
+#: elements of the default mesh with P1 elements: P1's error falls as h^2, not h^4, and 4 times the
+#: elements keep it near 1e-6 (the cost of 1024 P1 elements is that of 512 P2 ones)
+DEFAULT_ELEMENTS_P1 = 1024
+#: most elements a solve may ask for: bounds the memory and the time a case file or a command can ask for
+#: (measured on this 2-core machine with /usr/bin/time: a two-force curve at 1e5 elements in 10 s and
+#: 0.38 GB; at 1e6, 90 s and 3.9 GB for one state). The benchmark goes to 1e6 through the internals.
 MAX_ELEMENTS = 100_000
-#: fewest elements: the pole stretch uses the first two vertices off the axis
+#: fewest elements: the pole stretch is fitted to three vertices off the axis
 MIN_ELEMENTS = 4
+#: the contact methods: the edge-fitted mesh (exact contact) and the fixed-mesh penalty
+CONTACT_METHODS = ("fitted", "penalty")
 
 
 def _mesh(name, value):
@@ -36,19 +58,24 @@ def _mesh(name, value):
 
 SOLVER = Solver(
     name="fem",
-    summary="finite elements (scikit-fem): P1/P2 membrane, volume multiplier, penalty plate",
+    summary="finite elements: P1/P2 membrane, volume multiplier, plate contact on an edge-fitted mesh",
     module=__name__,
     entry_points=("inflate", "inflate_volume", "compress", "compression_curve"),
     options=(
         Option("elements", "int", DEFAULT_ELEMENTS,
-               f"elements of a uniform mesh ({MIN_ELEMENTS} to {MAX_ELEMENTS}; default {DEFAULT_ELEMENTS})",
+               f"elements of the default mesh, graded towards the axis ({MIN_ELEMENTS} to {MAX_ELEMENTS}; "
+               f"default {DEFAULT_ELEMENTS} with P2, {DEFAULT_ELEMENTS_P1} with P1)",
                lambda name, value: check_count(name, value, MIN_ELEMENTS, MAX_ELEMENTS)),
         Option("mesh", "path", None, "mesh file of [0, 1] (any meshio format), instead of elements", _mesh),
         Option("order", "int", 2, "element order: 1 (P1) or 2 (P2, default)",
                lambda name, value: int(check_choice(name, value, (1, 2)))),
-        Option("penalty", "float", 1e5, "contact penalty stiffness (units E T / R^2; default 1e5)",
-               check_positive, steps=("compress",)),
-        Option("augmented", "bool", True, "augmented-Lagrangian contact updates (default true)",
+        Option("contact", "choice", "fitted",
+               "contact method: fitted (default; a mesh node follows the contact edge, contact exact) or "
+               "penalty (fixed mesh, penalty plate)",
+               lambda name, value: check_choice(name, value, CONTACT_METHODS), steps=("compress",)),
+        Option("penalty", "float", 1e5, "contact penalty stiffness of contact = penalty (units E T / R^2; "
+               "default 1e5)", check_positive, steps=("compress",)),
+        Option("augmented", "bool", True, "augmented-Lagrangian updates of contact = penalty (default true)",
                check_flag, steps=("compress",)),
         Option("tol", "float", 1e-10, "Newton tolerance on residual and increment (default 1e-10, at most 1e-4)",
                lambda name, value: check_tolerance(name, value, 1e-4)),

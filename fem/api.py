@@ -1,24 +1,28 @@
-"""Public entry points: inflate, compress, and the states they return.
+"""Public entry points: inflate, compress, and the checks of what they are given.
 
-Reported quantities (the keys of ``pocket.core.states``) from a converged state:
+Inputs are checked before any work (``pocket.core.inputs``; a mesh the solver
+cannot use is an ``InputError`` saying why). The states are built and
+checked by ``results``; the curves are driven by ``curves``.
 
-- ``height``: eta at the pole, the sheet's own height (with a pure penalty the
-  sheet sits about p_N/kappa above the plate; the sheet is what is measured).
-- ``stretch_pole`` / ``stretch_contact``: ``post.pole_stretch`` (in the contact
-  zone the stretch is uniform and equibiaxial, so its value at the pole is
-  lambda_c). ``stretch_clamp``: from the clamp reaction (``post``).
-- ``contact_area`` = A_c / (pi R^2) with A_c = F/P, from the plate force and the
-  pressure: both global, both converge like the energy, whereas the edge of the
-  contact zone, where the gap closes quadratically, is ill-conditioned.
-  ``contact_radius`` = sqrt(A_c/pi) / lambda_c (Lagrangian: the zone is a disc
-  of reference radius a_c stretched uniformly by lambda_c).
-- ``extra``: ``elements``, ``order``, ``newton_iterations`` (all iterations
-  spent to reach this state from the previous one), ``penetration`` (max of
-  eta - h over the quadrature points, in R), and for compression
-  ``penetration_pole`` (eta(0) - h, what the penalty adds to the height),
-  ``force_reaction`` (the plate reaction as Fhat),
-  ``force_pressure_area`` (P times the deformed area of the active contact
-  set, an independent O(h) estimate, as Fhat) and ``force_difference``.
+The rubber comes first: a float is a Mooney-Rivlin alpha = C2/C1 (as it always
+was), a ``pocket.core.materials.Material`` any law in any stress unit
+(``material``). The fluid of a compression is a keyword: None (a liquid) or a
+``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
+units, Phat_atm = P_atm R / (E T) (``gas``). Every law's pressures are
+Phat = P R / (E T) with E = 3 mu_0 its small-strain Young's modulus (for
+Mooney-Rivlin 6 (C1 + C2), as in the paper); forces are Fhat = F / (P_I pi R^2).
+
+The default mesh (``default_mesh``) is ``meshes.polar(DEFAULT_ELEMENTS,
+power=POLAR_POWER)``: graded towards the axis, where the pole stretch needs
+it (``post``), and mapped onto the free part by the edge-fitted contact. Its
+size was chosen by measurement against the shooting solver (rtol 1e-12) on
+the validation cases at Fhat = 0, 0.05, 0.19, 1 and 0.95 of the end of each
+range (``python benchmarks/bench_fem.py`` prints the table): with P2 the worst
+relative error in any reported scalar is 3e-8 at 64 elements, 2e-9 at 128,
+4e-10 at 192 and 1.3e-10 at 256 (the pole stretch; 8e-11 in compression);
+256 is the smallest of these with a margin of about 8 below the 1e-9 bar.
+The P2 error falls as h^4, so 10 times the elements buys 1e-4 of the error.
+P1 (error O(h^2)) gets 1024 elements by default: within 1e-6 of shooting.
 """
 
 from __future__ import annotations
@@ -29,226 +33,159 @@ import numpy as np
 
 from pocket import meshes
 from pocket.core.errors import InputError
-from pocket.core.inputs import check_alpha, check_non_negative, check_positive
-from pocket.core.states import CompressedState, InflatedState
+from pocket.core.inputs import check_force, check_positive, quote
 
-from . import DEFAULT_ELEMENTS, SOLVER, inflation, post
-from .compression import augment, force_path, press_to_force, press_to_height
-from .model import Control, Model, discretize, penetration
+from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results
+from .gas import fluid_of, sealed
+from .model import FITTED, Control, Model, discretize
 from .newton import Tolerances
 
-__all__ = [
-    "inflate",
-    "inflate_volume",
-    "compress",
-    "compression_curve",
-    "compress_height",
-    "default_mesh",
-]
+__all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh",
+           "DEFAULT_PENALTY", "POLAR_POWER"]
 
 DEFAULT_PENALTY = 1e5
+#: grading exponent of the default mesh family towards the axis (``meshes.polar``)
+POLAR_POWER = 2.5
+#: adjacent elements may differ in length by at most this factor
+MAX_RATIO = 1e3
+#: shortest usable element (units R): nodal values carry round-off of ~1e-16 R, so a shorter
+#: element's slope (the stretch) would carry a relative error above 1e-6
+MIN_LENGTH = 1e-10
 
 
-def default_mesh() -> np.ndarray:
-    """The default mesh: ``meshes.uniform(DEFAULT_ELEMENTS)``.
+def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
+    """The default mesh family, ``meshes.polar(elements, power)``; without ``elements`` the default
+    mesh of P``order``: DEFAULT_ELEMENTS (P2) or DEFAULT_ELEMENTS_P1 (P1) elements.
 
-    Uniform because the contact edge moves along a compression curve; with P2,
-    1000 elements put inflation within ~1e-9 and compression within ~2e-7 of the
-    shooting reference (the contact edge limits the latter; tests/test_fem_*).
+    The power is POLAR_POWER up to 1585 elements; beyond, 8 / log10(elements), so that the first
+    element, about power / elements^power long, stays above 1e-8 R (the pole stretch on so fine a
+    mesh is accurate to 1e-12 with any grading, and a shorter first element would only carry
+    round-off: a nodal value's 1e-16 R over its radius).
     """
-    return meshes.uniform(DEFAULT_ELEMENTS)
+    if elements is None:
+        elements = DEFAULT_ELEMENTS if order == 2 else DEFAULT_ELEMENTS_P1
+    return meshes.polar(elements, power=min(POLAR_POWER, 8.0 / np.log10(elements)))
 
 
-def _nodes(mesh, elements) -> np.ndarray:
-    """The mesh nodes: ``mesh`` (an array of nodes or a mesh file), or a uniform mesh of ``elements``."""
-    if mesh is not None and elements is not None:
-        raise InputError("give either mesh or elements, not both")
-    if mesh is None:
-        count = DEFAULT_ELEMENTS if elements is None else SOLVER.option("elements").checked(elements)
-        return meshes.uniform(count)
-    nodes = meshes.read(mesh) if isinstance(mesh, (str, pathlib.PurePath)) else meshes.check(mesh, "mesh")
-    SOLVER.option("elements").checked(nodes.size - 1, lambda _: "mesh elements")
+def _usable(nodes: np.ndarray, where: str) -> np.ndarray:
+    """The nodes, if the solver can use them: elements not too short, neighbours of similar size."""
+    lengths = np.diff(nodes)
+    k = int(np.argmin(lengths))
+    if lengths[k] < MIN_LENGTH:
+        raise InputError(f"{where}: element {k + 1} (r from {quote(nodes[k])} to {quote(nodes[k + 1])}) is "
+                         f"{lengths[k]:.3g} R long; elements must be at least {MIN_LENGTH:g} R long")
+    ratio = np.maximum(lengths[1:] / lengths[:-1], lengths[:-1] / lengths[1:])
+    if ratio.size and ratio.max() > MAX_RATIO:
+        k = int(np.argmax(ratio))
+        raise InputError(f"{where}: elements {k + 1} and {k + 2} (around r = {quote(nodes[k + 1])}) differ in length "
+                         f"by a factor {ratio[k]:.3g}; neighbours may differ by at most {MAX_RATIO:g}")
     return nodes
 
 
-def _model(alpha, mesh, elements, order, penalty) -> Model:
-    alpha = check_alpha(alpha)
+def _nodes(mesh, elements, order) -> np.ndarray:
+    """The mesh nodes: ``mesh`` (an array of nodes or a mesh file), or the default family of ``elements``."""
+    if mesh is not None and elements is not None:
+        raise InputError("give either mesh or elements, not both")
+    if mesh is None:
+        nodes = default_mesh(None if elements is None else SOLVER.option("elements").checked(elements), order)
+        return _usable(nodes, "default mesh")
+    nodes = meshes.read(mesh) if isinstance(mesh, (str, pathlib.PurePath)) else meshes.check(mesh, "mesh")
+    SOLVER.option("elements").checked(nodes.size - 1, lambda _: "mesh elements")
+    return _usable(nodes, "mesh" if not isinstance(mesh, (str, pathlib.PurePath)) else str(mesh))
+
+
+def _model(material, mesh, elements, order, penalty) -> Model:
     order = SOLVER.option("order").checked(order)
-    penalty = check_positive("penalty", penalty)
-    return discretize(alpha, _nodes(mesh, elements), order, penalty)
+    return discretize(material, _nodes(mesh, elements, order), order, penalty)
 
 
-def _extra(model, y, iterations) -> dict:
-    return dict(
-        elements=model.elements,
-        order=model.order,
-        newton_iterations=int(iterations),
-        penetration=penetration(model, y),
-    )
+def _tolerances(tol) -> Tolerances:
+    tol = SOLVER.option("tol").checked(tol)
+    return Tolerances(tol, tol)
 
 
-def _inflated(model, y, iterations) -> InflatedState:
-    lam = model.zero_multiplier()
-    _, _, eta = post.nodal(model, y)
-    return InflatedState(
-        alpha=model.material.alpha,
-        pressure=float(y[-2]),
-        stretch_pole=post.pole_stretch(model, y),
-        height=float(eta[0]),
-        volume=post.volume(model, y),
-        stretch_clamp=post.clamp_stretch(model, y, lam),
-        profile=post.profile(model, y, lam),
-        solver="fem",
-        extra=_extra(model, y, iterations),
-    )
+def _contact(contact, penalty, augmented) -> tuple[str, float, bool]:
+    """The contact method and, for the penalty method, its penalty and augmentation (checked)."""
+    contact = SOLVER.option("contact").checked(contact)
+    if contact == FITTED:
+        for name, value in (("penalty", penalty), ("augmented", augmented)):
+            if value is not None:
+                raise InputError(f"{name} = {value!r} applies only to contact = 'penalty', not to contact = 'fitted'")
+        return contact, DEFAULT_PENALTY, False
+    penalty = DEFAULT_PENALTY if penalty is None else SOLVER.option("penalty").checked(penalty)
+    augmented = True if augmented is None else SOLVER.option("augmented").checked(augmented)
+    return contact, penalty, augmented
 
 
-def _compressed(model, y, lam, iterations, inflated: InflatedState, force=None) -> CompressedState:
-    p_i, p = inflated.pressure, float(y[-2])
-    reaction = post.plate_force(model, y, lam) / (np.pi * p_i)
-    force = reaction if force is None else force
-    area = force * p_i / p
-    stretch = post.pole_stretch(model, y)
-    radius = np.sqrt(area) / stretch
-    active = p * post.contact_area_active(model, y, lam) / (np.pi * p_i)
-    _, _, eta = post.nodal(model, y)
-    extra = _extra(model, y, iterations)
-    extra.update(
-        penetration_pole=max(0.0, float(eta[0] - y[-1])),
-        force_reaction=reaction,
-        force_pressure_area=active,
-        force_difference=reaction - active,
-    )
-    return CompressedState(
-        alpha=model.material.alpha,
-        pressure_initial=p_i,
-        force=float(force),
-        pressure=p,
-        pressure_ratio=p / p_i,
-        contact_area=float(area),
-        contact_radius=float(radius),
-        stretch_contact=stretch,
-        height=float(eta[0]),
-        height_ratio=float(eta[0]) / inflated.height,
-        volume=post.volume(model, y),
-        profile=post.profile(model, y, lam, radius),
-        inflated=inflated,
-        solver="fem",
-        extra=extra,
-    )
-
-
-def _uncompressed(inflated: InflatedState) -> CompressedState:
-    return CompressedState(
-        alpha=inflated.alpha,
-        pressure_initial=inflated.pressure,
-        force=0.0,
-        pressure=inflated.pressure,
-        pressure_ratio=1.0,
-        contact_area=0.0,
-        contact_radius=0.0,
-        stretch_contact=inflated.stretch_pole,
-        height=inflated.height,
-        height_ratio=1.0,
-        volume=inflated.volume,
-        profile=inflated.profile,
-        inflated=inflated,
-        solver="fem",
-        extra={
-            **inflated.extra,
-            "newton_iterations": 0,
-            "penetration_pole": 0.0,
-            "force_reaction": 0.0,
-            "force_pressure_area": 0.0,
-            "force_difference": 0.0,
-        },
-    )
-
-
-def inflate(alpha, pressure, *, mesh=None, elements=None, order=2, tol=1e-10) -> InflatedState:
+def inflate(material, pressure, *, mesh=None, elements=None, order=2, tol=1e-10):
     """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
 
-    mesh: nodes of [0, 1] (array, shape (n+1,)) or a mesh file; else a uniform mesh of
-    ``elements`` (default ``DEFAULT_ELEMENTS``). order: 1 or 2. tol: Newton tolerance.
+    material: the rubber (a Mooney-Rivlin alpha, or a Material). mesh: nodes of [0, 1] (array, shape
+    (n+1,)) or a mesh file; else the default mesh family of ``elements`` (default: DEFAULT_ELEMENTS with
+    P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or 2. tol: Newton tolerance.
     """
-    model = _model(alpha, mesh, elements, order, DEFAULT_PENALTY)
+    model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
     pressure = check_positive("pressure", pressure)
-    tol = SOLVER.option("tol").checked(tol)
-    y, iterations = inflation.to_pressure(model, pressure, model.zero_multiplier(), Tolerances(tol, tol))
-    return _inflated(model, y, iterations)
+    y, iterations = inflation.to_pressure(model, pressure, _tolerances(tol))
+    return results.inflated(model, y, iterations, pressure=pressure)
 
 
-def inflate_volume(alpha, volume, *, mesh=None, elements=None, order=2, tol=1e-10) -> InflatedState:
+def inflate_volume(material, volume, *, mesh=None, elements=None, order=2, tol=1e-10):
     """Inflated state of volume V/R^3 = ``volume``, by volume control (options as ``inflate``)."""
-    model = _model(alpha, mesh, elements, order, DEFAULT_PENALTY)
+    model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
     volume = check_positive("volume", volume)
-    tol = SOLVER.option("tol").checked(tol)
-    y, iterations = inflation.to_volume(model, volume, model.zero_multiplier(), Tolerances(tol, tol))
-    return _inflated(model, y, iterations)
+    y, iterations = inflation.to_volume(model, volume, _tolerances(tol))
+    return results.inflated(model, y, iterations, volume=volume)
 
 
-def compression_curve(
-    alpha, pressure_initial, forces, *, mesh=None, elements=None, order=2, penalty=DEFAULT_PENALTY, augmented=True,
-    tol=1e-10
-) -> list[CompressedState]:
-    """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the last.
-
-    Options as ``inflate``, and the contact ``penalty`` (units E T / R^2) with ``augmented``
-    Lagrangian updates.
-    """
-    model = _model(alpha, mesh, elements, order, penalty)
+def _setup(material, pressure_initial, fluid, mesh, elements, order, contact, penalty, augmented, tol):
+    """Checked inputs, the model, the inflated state to compress and the fluid sealed in it (the volume
+    row's ``Control``)."""
+    contact, penalty, augmented = _contact(contact, penalty, augmented)
+    model = _model(material, mesh, elements, order, penalty)
     p_i = check_positive("pressure_initial", pressure_initial)
-    tol = SOLVER.option("tol").checked(tol)
-    augmented = SOLVER.option("augmented").checked(augmented)
-    forces = [check_non_negative("force", f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
+    fluid = fluid_of(fluid)
+    tol = _tolerances(tol)
+    y_i, iterations = inflation.to_pressure(model, p_i, tol)
+    state = results.inflated(model, y_i, iterations, pressure=p_i)
+    return model, contact, augmented, tol, y_i, state, Control(volume=state.volume, gas=sealed(fluid, p_i))
+
+
+def compression_curve(material, pressure_initial, forces, *, fluid=None, progress=None, mesh=None, elements=None,
+                      order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+    """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the states before it.
+
+    fluid: None (a liquid: fixed volume) or a Fluid (a gas sealed at Phat_I). Options as ``inflate``,
+    and ``contact``: "fitted" (default; the mesh follows the contact
+    edge, contact exact) or "penalty" (fixed mesh, contact ``penalty`` in units E T / R^2,
+    default 1e5, with ``augmented`` Lagrangian updates, default true). ``progress(done, total)``
+    is called after each force.
+    """
+    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    tol = Tolerances(tol, tol)
-    lam = model.zero_multiplier()
-    y_i, iterations = inflation.to_pressure(model, p_i, lam, tol)
-    inflated = _inflated(model, y_i, iterations)
-    touching = np.concatenate([y_i[:-1], [inflated.height]])
-    states, y, in_contact = [], touching, False
-    for fhat in forces:
-        if fhat == 0.0:
-            states.append(_uncompressed(inflated))
-            continue
-        force = fhat * np.pi * p_i
-        step = force_path if in_contact else press_to_force
-        y, iterations = step(model, y if in_contact else touching, inflated.volume, force, lam, tol)
-        if augmented:
-            control = Control(volume=inflated.volume, height=None, force=force)
-            y, lam, more = augment(model, y, control, lam, tol)
-            iterations += more
-        states.append(_compressed(model, y, lam, iterations, inflated, fhat))
-        in_contact = True
-    return states
+    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, mesh, elements,
+                                                                 order, contact, penalty, augmented, tol)
+    if contact == FITTED:
+        return curves.fitted_curve(model, y_i, inflated, fill, forces, tol, progress)
+    return curves.penalty_curve(model, y_i, inflated, fill, forces, tol, augmented, progress)
 
 
-def compress(alpha, pressure_initial, force, **options) -> CompressedState:
-    """Compressed state at the force Fhat = F/(P_I pi R^2); options as ``compression_curve``."""
-    return compression_curve(alpha, pressure_initial, [force], **options)[0]
+def compress(material, pressure_initial, force, *, fluid=None, **options):
+    """Compressed state at the force Fhat = F/(P_I pi R^2); fluid and options as ``compression_curve``."""
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, **options)[0]
 
 
-def compress_height(
-    alpha, pressure_initial, height, *, mesh=None, elements=None, order=2, penalty=DEFAULT_PENALTY, augmented=True,
-    tol=1e-10
-) -> CompressedState:
-    """Compressed state with the plate at height H/R = ``height`` (plate-height control)."""
-    model = _model(alpha, mesh, elements, order, penalty)
-    p_i = check_positive("pressure_initial", pressure_initial)
+def compress_height(material, pressure_initial, height, *, fluid=None, mesh=None, elements=None, order=2,
+                    contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+    """Compressed state with the plate at height H/R = ``height`` (fluid and options as ``compression_curve``)."""
     height = check_positive("height", height)
-    tol = SOLVER.option("tol").checked(tol)
-    tol = Tolerances(tol, tol)
-    lam = model.zero_multiplier()
-    y_i, iterations = inflation.to_pressure(model, p_i, lam, tol)
-    inflated = _inflated(model, y_i, iterations)
+    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, mesh, elements,
+                                                                 order, contact, penalty, augmented, tol)
     if height >= inflated.height:
-        return _uncompressed(inflated)
-    touching = np.concatenate([y_i[:-1], [inflated.height]])
-    y, iterations = press_to_height(model, touching, inflated.volume, height, lam, tol)
-    if augmented:
-        y, lam, more = augment(model, y, Control(volume=inflated.volume, height=height), lam, tol)
-        iterations += more
-    return _compressed(model, y, lam, iterations, inflated)
+        return results.uncompressed(inflated, fill, contact)
+    if contact == FITTED:
+        return curves.fitted_height(model, y_i, inflated, fill, height, tol)
+    return curves.penalty_height(model, y_i, inflated, fill, height, tol, augmented)
+
 

@@ -5,6 +5,13 @@ Each step solves at the new load from the secant extrapolation of the last
 two converged states. A step that fails is halved; a step that converges in
 few iterations is doubled. Below ``min_step`` the stepping gives up with a
 ``ConvergenceError`` naming the load it reached.
+
+A step that lands outside the model (``OutOfRangeError``: the free part below
+the clamp plane) is cut like a failed one: a long step's Newton iterates can
+wander out of the model although the load itself is inside it. Only a step
+shorter than ``min_step`` beyond the last converged load that still lands
+outside is reported as outside the model (the range then ends within
+``min_step`` of that load).
 """
 
 from __future__ import annotations
@@ -13,7 +20,7 @@ from collections.abc import Callable, Iterator
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError
+from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 __all__ = ["follow"]
 
@@ -30,11 +37,12 @@ def follow(
     min_step: float = 1e-5,
     max_step: float = 1.0,
     name: str = "load",
+    show: Callable[[float], float] = float,
 ) -> Iterator[tuple[float, np.ndarray, int]]:
     """Yield (load, y, iterations) for each converged step; the last is at ``stop``.
 
-    ``solve(load, guess)`` returns (y, iterations) or raises ``ConvergenceError``;
-    ``name`` says what the load is in that error's message.
+    ``solve(load, guess)`` returns (y, iterations) or raises ``ConvergenceError``
+    or ``OutOfRangeError``; the error messages give a load as ``name = show(load)``.
     """
     s, ds = 0.0, min(first_step, max_step)
     y, s_prev, y_prev = np.asarray(y0, dtype=float), None, None
@@ -45,17 +53,19 @@ def follow(
         load = stop if s_new == 1.0 else start + s_new * (stop - start)
         try:
             y_new, iterations = solve(load, guess)
-        except ConvergenceError as err:
+        except (ConvergenceError, OutOfRangeError) as err:
+            reached = start + s * (stop - start)
             ds *= 0.5
-            if ds < min_step:
-                reached = start + s * (stop - start)
-                raise ConvergenceError(
-                    f"load stepping gave up at {name} = {reached:.6g} on the way to {stop:.6g}: {err}",
-                    load=reached,
-                    iterations=err.iterations,
-                    residual=err.residual,
-                ) from err
-            continue
+            if ds >= min_step:
+                continue
+            if isinstance(err, OutOfRangeError):
+                raise OutOfRangeError(f"{err} (just beyond {name} = {show(reached):.6g})") from err
+            raise ConvergenceError(
+                f"load stepping gave up at {name} = {show(reached):.6g} on the way to {show(stop):.6g}: {err}",
+                load=reached,
+                iterations=err.iterations,
+                residual=err.residual,
+            ) from err
         s_prev, y_prev, s, y = s, y, s_new, y_new
         yield load, y, iterations
         if iterations <= _EASY:

@@ -13,6 +13,9 @@ states. If P falls before reaching it, the path has passed a pressure maximum
 (neo-Hookean-like alpha): a golden-section search in V locates it; a target
 above it has no state on the first branch (``OutOfRangeError``), one below it
 is landed on the rising side.
+
+A rubber that locks (Gent) stops the volume path at its locking stretch
+(``steps.near_locking``): a volume target past it is ``OutOfRangeError``.
 """
 
 from __future__ import annotations
@@ -22,12 +25,11 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .continuation import follow
-from .model import Control, Model
+from .model import FREE, Control, Model, forms
 from .newton import Tolerances
-from .post import volume
-from .steps import dome, land, solve
+from .steps import dome, land, near_locking, solve
 
-__all__ = ["to_pressure", "to_volume"]
+__all__ = ["to_pressure", "to_volume", "volume"]
 
 P_START = 1e-3
 LOG_V_RANGE = np.log(1e3)  # how far past the start volume a pressure target is sought
@@ -35,66 +37,91 @@ _STEPS = dict(first_step=0.05, max_step=0.1)  # log V steps of 0.35 to 0.7
 _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
-def _start(model: Model, pressure: float, lam, tol: Tolerances):
+def _start(model: Model, pressure: float, tol: Tolerances):
     """The first state, at a small pressure from the small-strain dome; (y, iterations)."""
     p0 = min(pressure, P_START)
     try:
-        return solve(model, Control(pressure=p0), dome(model, p0), lam, tol)
+        return solve(model, FREE, Control(pressure=p0), dome(model, p0), tol)
     except ConvergenceError as err:
         raise ConvergenceError(f"the first state, from the small-strain dome at Phat = {p0:.6g}, did not "
                                f"converge: {err}", load=p0, iterations=err.iterations,
                                residual=err.residual) from err
 
 
-def to_volume(model: Model, target: float, lam, tol: Tolerances) -> tuple[np.ndarray, int]:
+def to_volume(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray, int]:
     """Inflated state of volume ``target``; (y, Newton iterations)."""
-    y, total = _start(model, P_START, lam, tol)
+    y, total = _start(model, P_START, tol)
 
     def along(log_v, guess):
-        return solve(model, Control(volume=np.exp(log_v)), guess, lam, tol)
+        return solve(model, FREE, Control(volume=np.exp(log_v)), guess, tol)
 
-    for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target), name="log(V/R^3)"):
-        total += iterations
+    try:
+        for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target), name="log(V/R^3)"):
+            total += iterations
+    except ConvergenceError as err:
+        near_locking(model, y, FREE, err, f"volume = {target!r}", bounded=True)
+        raise
     return y, total
 
 
-def to_pressure(model: Model, target: float, lam, tol: Tolerances) -> tuple[np.ndarray, int]:
+def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray, int]:
     """Inflated state at pressure ``target`` on the first branch; (y, Newton iterations)."""
-    y, total = _start(model, target, lam, tol)
+    y, total = _start(model, target, tol)
     if target <= P_START:
         return y, total
 
     def along(log_v, guess):
-        return solve(model, Control(volume=np.exp(log_v)), guess, lam, tol)
+        return solve(model, FREE, Control(volume=np.exp(log_v)), guess, tol)
 
     def at_target(guess):
-        return solve(model, Control(pressure=target), guess, lam, tol)
+        return solve(model, FREE, Control(pressure=target), guess, tol)
 
     log_v0 = np.log(volume(model, y))
     path = [(log_v0, y)]
-    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
-        total += iterations
-        if y[-2] >= target:
-            y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
-            return y, total + iterations
-        if y[-2] < path[-1][1][-2] and len(path) >= 2:
-            peak, iterations = _pressure_peak(along, path[-2], path[-1], (log_v, y))
+    try:
+        for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
             total += iterations
-            if peak[1][-2] < target:
-                raise OutOfRangeError(
-                    f"Phat = {target:.6g} exceeds the pressure maximum Phat = {peak[1][-2]:.6g} of"
-                    f" the first inflation branch (alpha = {model.material.alpha:.6g})"
-                )
-            y, iterations = land(along, at_target, path[-2], peak, _pressure, target)
-            return y, total + iterations
-        path.append((log_v, y))
+            if y[-1] >= target:
+                y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
+                return y, total + iterations
+            if y[-1] < path[-1][1][-1] and len(path) >= 2:
+                peak, iterations = _pressure_peak(along, path[-2], path[-1], (log_v, y))
+                total += iterations
+                if peak[1][-1] < target:
+                    raise OutOfRangeError(
+                        f"Phat = {target:.6g} exceeds the pressure maximum Phat = {peak[1][-1]:.6g} of"
+                        f" the first inflation branch ({model.law.label})"
+                    )
+                y, iterations = land(along, at_target, path[-2], peak, _pressure, target)
+                return y, total + iterations
+            path.append((log_v, y))
+    except ConvergenceError as err:
+        near_locking(model, path[-1][1], FREE, err, f"Phat = {target:.6g}", bounded=False)
+        raise
     raise OutOfRangeError(
         f"Phat = {target:.6g} not reached up to V/R^3 = {np.exp(log_v):.4g} on the first branch"
     )
 
 
 def _pressure(y: np.ndarray) -> float:
-    return float(y[-2])
+    return float(y[-1])
+
+
+def volume(model: Model, y: np.ndarray) -> float:
+    """V(x) of the FREE state y."""
+    return forms(model, y, FREE).volume
+
+
+def _reach(along, known, s):
+    """The state at log V = s: Newton from the nearest known state, else stepping from it; (y, iterations)."""
+    s_near, y_near = min(known, key=lambda item: abs(item[0] - s))
+    try:
+        return along(s, y_near)
+    except ConvergenceError:
+        total, y = 0, y_near
+        for _, y, iterations in follow(along, y_near, s_near, s, name="log(V/R^3)"):
+            total += iterations
+        return y, total
 
 
 def _pressure_peak(along, a, m, b, rtol: float = 1e-7):
@@ -103,15 +130,16 @@ def _pressure_peak(along, a, m, b, rtol: float = 1e-7):
     Returns ((log V, y) at the peak, iterations).
     """
     (lo, _), best, (hi, _) = a, m, b
-    total = 0
+    known, total = [a, m, b], 0
     while hi - lo > rtol:
         s1, s2 = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
-        y1, k1 = along(s1, best[1])
-        y2, k2 = along(s2, best[1])
+        y1, k1 = _reach(along, known, s1)
+        y2, k2 = _reach(along, known, s2)
+        known += [(s1, y1), (s2, y2)]
         total += k1 + k2
-        if y1[-2] >= y2[-2]:
+        if y1[-1] >= y2[-1]:
             hi, cand = s2, (s1, y1)
         else:
             lo, cand = s1, (s2, y2)
-        best = cand if cand[1][-2] >= best[1][-2] else best
+        best = cand if cand[1][-1] >= best[1][-1] else best
     return best, total

@@ -1,69 +1,127 @@
-"""Mooney-Rivlin membrane energy and its derivatives, in units of E T.
+r"""The rubber as the solver sees it: a law's code and parameters, and what the states echo.
 
-Per unit reference area, with lambda_3 = 1 / (lambda_1 lambda_2),
+``law_of`` takes what a caller gives: a float is a Mooney-Rivlin rubber by its
+alpha = C2/C1 (as it always was), a ``pocket.core.materials.Material`` any law in
+any stress unit. It keeps that value to echo in the states (``alpha`` the float,
+else None; ``material`` the Material, else None: the state then fills in
+``mooney_rivlin(alpha)``) and turns the law into the kernel's code and
+parameters (``laws``), its stresses divided by E = 3 mu_0 (``Material.scaled``
+gives them in units of mu_0; a third of that is units of E). A Mooney-Rivlin
+Material is held by its alpha = C2/C1 and s = 1 / (6 (1 + alpha)), exactly as
+the float alpha is, so that the two give the same numbers.
 
-    W = C1 T [(I1 - 3) + alpha (I2 - 3)],
-    I1 = a^2 + b^2 + a^-2 b^-2,    I2 = a^-2 + b^-2 + a^2 b^2,
+Planar stretch at the clamp (``planar_stretch``): with lambda_2 = 1 the
+meridional tension is T_1 = w_1(l, 1); ``post`` measures T_1 there and needs
+the l that carries it. It is found by bracketing from a guess (the element's
+own slope) and Brent's method to 1e-15. A Gent rubber's planar stretch is
+confined to I1 - 3 = (l - 1/l)^2 < Jm, that is
+(sqrt(Jm + 4) - sqrt(Jm)) / 2 < l < (sqrt(Jm + 4) + sqrt(Jm)) / 2.
 
-where a = lambda_1 (meridional) and b = lambda_2 (hoop). Dividing by
-E T = 6 (1 + alpha) C1 T gives the dimensionless density
-
-    w(a, b) = [(I1 - 3) + alpha (I2 - 3)] / (6 (1 + alpha)).
-
-Its derivatives (the hessian is what the consistent tangent needs):
-
-    dI1/da = 2a - 2 a^-3 b^-2          dI2/da = -2 a^-3 + 2 a b^2
-    d2I1/da2 = 2 + 6 a^-4 b^-2         d2I2/da2 = 6 a^-4 + 2 b^2
-    d2I1/dadb = 4 a^-3 b^-3            d2I2/dadb = 4 a b
-
-and the same with a and b swapped. The stress resultants are
-T1 = (1/b) dw/da and T2 = (1/a) dw/db, which expand to the paper's eq (6)
-divided by E T: T1 = (a/b - a^-3 b^-3)(1 + alpha b^2) / (3 (1 + alpha)).
+``lock_margin`` is 1 - (I1 - 3) / Jm (Gent; 0 at locking, +inf for the laws
+that do not lock): how close a state is to the end of the law's domain.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import math
 
-__all__ = ["MooneyRivlin"]
+import numpy as np
+from scipy.optimize import brentq
+
+from pocket.core.errors import ConvergenceError
+from pocket.core.inputs import check_alpha, quote
+from pocket.core.materials import Material, check
+
+from . import laws
+
+__all__ = ["Law", "law_of"]
+
+_CODES = {"mooney-rivlin": laws.MOONEY_RIVLIN, "neo-hookean": laws.YEOH, "yeoh": laws.YEOH, "gent": laws.GENT,
+          "ogden": laws.OGDEN}
 
 
-@dataclasses.dataclass(frozen=True)
-class MooneyRivlin:
-    """Dimensionless Mooney-Rivlin membrane with ratio ``alpha`` = C2/C1."""
+@dataclasses.dataclass(frozen=True, eq=False)
+class Law:
+    """The kernel's ``code`` and ``params`` (``laws``), the values states echo (``alpha``, ``material``),
+    a ``label`` for messages and Gent's ``jm`` (inf: no locking)."""
 
-    alpha: float
+    code: int
+    params: np.ndarray
+    alpha: float | None
+    material: Material | None
+    label: str
+    jm: float = math.inf
 
-    @property
-    def _scale(self) -> float:
-        return 1.0 / (6.0 * (1.0 + self.alpha))
+    def derivatives(self, a, b) -> np.ndarray:
+        """(w_1, w_2, w_11, w_12, w_22) at stretches a, b (arrays of one shape): shape (5, *a.shape)."""
+        a, b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
+        out = laws.evaluate(self.code, self.params, np.ascontiguousarray(a).ravel(), np.ascontiguousarray(b).ravel())
+        return out.reshape((5, *a.shape))
 
-    def energy(self, a, b):
-        """w(a, b), energy per unit reference area in units of E T."""
-        al = self.alpha
-        i1 = a**2 + b**2 + 1.0 / (a * b) ** 2
-        i2 = 1.0 / a**2 + 1.0 / b**2 + (a * b) ** 2
-        return self._scale * ((i1 - 3.0) + al * (i2 - 3.0))
+    def tensions(self, a, b) -> tuple[np.ndarray, np.ndarray]:
+        """(T_1, T_2) = (w_1 / b, w_2 / a), units E T."""
+        d = self.derivatives(a, b)
+        return d[0] / b, d[1] / a
 
-    def gradient(self, a, b):
-        """(dw/da, dw/db)."""
-        return self._first(a, b), self._first(b, a)
+    def lock_margin(self, a, b) -> float:
+        """min of 1 - (I1 - 3) / Jm over the stretches (+inf for a law that does not lock)."""
+        if math.isinf(self.jm):
+            return math.inf
+        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        return float(np.min(1.0 - (a * a + b * b + (a * b) ** -2 - 3.0) / self.jm))
 
-    def hessian(self, a, b):
-        """(d2w/da2, d2w/dadb, d2w/db2)."""
-        al = self.alpha
-        mixed = self._scale * (4.0 / (a * b) ** 3 + al * 4.0 * a * b)
-        return self._second(a, b), mixed, self._second(b, a)
+    def planar_stretch(self, tension: float, guess: float) -> float:
+        """The stretch l with T_1(l, 1) = ``tension`` nearest ``guess`` (module docstring)."""
+        low, high = 0.0, math.inf
+        if not math.isinf(self.jm):
+            root, wide = math.sqrt(self.jm), math.sqrt(self.jm + 4.0)
+            low, high = 0.5 * (wide - root), 0.5 * (wide + root)
 
-    def tensions(self, a, b):
-        """(T1, T2) = ((1/b) dw/da, (1/a) dw/db), in units of E T."""
-        wa, wb = self.gradient(a, b)
-        return wa / b, wb / a
+        def gap(s):
+            return laws.derivatives(self.code, self.params, s, 1.0)[0] - tension
 
-    def _first(self, a, b):
-        al = self.alpha
-        return self._scale * (2.0 * a - 2.0 / (a**3 * b**2) + al * (-2.0 / a**3 + 2.0 * a * b**2))
+        if not low < guess < high:
+            guess = 1.0
+        for k in range(60):
+            factor = 1.01 * 2.0**k  # the bracket widens from 1 % around the guess towards the domain's ends
+            left = low + (guess - low) / factor
+            right = guess * factor if math.isinf(high) else high - (high - guess) / factor
+            if gap(left) * gap(right) <= 0.0:
+                return float(brentq(gap, left, right, xtol=1e-15, rtol=1e-15))
+        raise ConvergenceError(f"no meridional stretch carries the clamp tension {tension:.6g} E T ({self.label})")
 
-    def _second(self, a, b):
-        al = self.alpha
-        return self._scale * (2.0 + 6.0 / (a**4 * b**2) + al * (6.0 / a**4 + 2.0 * b**2))
+
+def _scaled_params(material: Material) -> tuple[int, np.ndarray, float]:
+    """(code, parameters in units of E, Jm) of a checked Material."""
+    unit = material.scaled()  # stresses in units of mu_0; a third of that is units of E = 3 mu_0
+    p = dict(unit.params)
+    law = material.law
+    if law == "mooney-rivlin":
+        alpha = p["c2"] / p["c1"]
+        return laws.MOONEY_RIVLIN, np.array([1.0 / (6.0 * (1.0 + alpha)), alpha]), math.inf
+    if law == "neo-hookean":
+        return laws.YEOH, np.array([p["mu"] / 6.0, 0.0, 0.0]), math.inf
+    if law == "yeoh":
+        return laws.YEOH, np.array([p["c10"], p["c20"], p["c30"]]) / 3.0, math.inf
+    if law == "gent":
+        return laws.GENT, np.array([p["mu"] / 3.0, p["jm"]]), p["jm"]
+    return laws.OGDEN, np.array([m / 3.0 for m in p["mu"]] + list(p["exponents"])), math.inf
+
+
+def _checked(value) -> Material:
+    """``value`` re-checked as a Material (the semantics of ``pocket.core.materials.as_material``)."""
+    check(value.law, dict(value.params))
+    return value
+
+
+def law_of(value) -> Law:
+    """The Law of ``value``: a float (Mooney-Rivlin alpha, checked) or a Material (checked)."""
+    if isinstance(value, Material):
+        material = _checked(value)
+        code, params, jm = _scaled_params(material)
+        label = f"{material.law} rubber " + ", ".join(f"{k} = {quote(v)}" for k, v in material.params)
+        return Law(code, params, None, material, label, jm)
+    alpha = check_alpha(value)
+    return Law(laws.MOONEY_RIVLIN, np.array([1.0 / (6.0 * (1.0 + alpha)), alpha]), alpha, None,
+               f"alpha = {alpha!r}")

@@ -1,172 +1,283 @@
-"""The discrete model: basis, boundary conditions and the bordered Newton system.
+r"""The discrete model: unknowns, equations and their bordered tangent, for the three kinds of state.
 
-Unknowns y = [x_free, P, h]: the free nodal values of x = (rho, eta), the
-pressure Phat (volume multiplier) and the plate height h. Boundary conditions
-rho(0) = 0, rho(1) = 1, eta(1) = 0 are eliminated (eta(0) stays free).
+Unknowns y = [U, s]: U all 2 (p n + 1) nodal values of x = (rho, eta) (node j
+holds U[2j] = rho, U[2j + 1] = eta), s the scalar unknowns. Prescribed dofs
+keep their values (rho(0) = 0, rho(1) = 1, eta(1) = 0); their rows are the
+identity in the tangent and zero in the residual.
 
-Equations (forms in ``forms``):
+``FREE`` (no plate, inflation), s = [P]: the membrane rows R(U; P) = 0 and one
+control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
 
-    R(x; P, h)            = 0     (membrane + pressure + plate, free rows)
-    P - P*   or  V(x) - V* = 0     (pressure or volume control)
-    h - h*   or  F(x, h) - F* = 0  (plate-height or plate-force control)
+With a plate the volume row is the fluid's: V / V_I - 1 for a liquid, and
+V / V_I - q(P) for a gas sealed at P_I (``gas``: the polytropic law solved for
+the volume; its tangent has the corner entry -q'(P) in the column of P).
 
-and the jacobian is bordered by two columns and rows:
+``PENALTY`` (fixed mesh, penalty plate at height h), s = [P, h]: R includes
+the plate pressure (``kernel``); control rows V / V_I - 1 and h - h* (plate
+height) or (F(U, h) - F*) / F* (plate force F = 2 pi int p_N r dr).
 
-    [ K       -dV      dR/dh ] [dx]
-    [ C_P              .     ] [dP]   C_P = [0, 1, 0] or [dV, 0, 0]
-    [ C_h              .     ] [dh]   C_h = [0, 0, 1] or [dF/dx, 0, dF/dh]
+``FITTED`` (edge-fitted mesh, exact contact), s = [P, h, a]. The first element
+is the contact zone [0, a] (``geometry``): its eta dofs (the set C) are tied to
+the plate, U_j = h, and its rows leave the system. The plate is a rigid body:
+with the force potential F h, stationarity in h is sum_C R_j + F = 0, so the
+plate force is the reaction F_plate = -sum_C R_j (R without the plate; it is
+the variationally consistent flux through the first free element and
+converges like the energy). The contact radius is closed by tangent contact,
+no line force at the edge: vertical equilibrium of the flat disc of deformed
+radius rho(a) gives F_plate = P pi rho(a)^2 + 2 pi a T_1 lambda_2 sin(psi)(a+),
+so the line force vanishes iff
 
-Without a plate, h sits at ``NO_PLATE`` (far above the sheet) under height
-control, so that every term of the contact form vanishes.
+    T(y) = sum_C R_j + pi P U_E^2 = 0,      U_E = rho(a) (the dof of vertex 1).
+
+Unlike the energy's derivative in a, which vanishes quadratically there (a
+configurational force ~ (line force)^2), T has a simple root. Rows:
+V / V_I - 1, T / F_s, and one control: h - h* (plate height), a - a* (contact
+radius) or (pi P U_E^2 - F*) / F_s (plate force: with T = 0 it is
+F_plate = F*); F_s is the plate force the rows are measured against
+(``Control.scale``), so that the Newton tolerance is relative to it.
+
+Tangent (``kernel`` for K, dR/dP, dR/da; k_C = K 1_C the column of h, before
+the tied rows and columns are removed):
+
+    [ K       dR/dP             k_C               dR/da   ] [dU]
+    [ dV      -q'(P) V_I        dV . 1_C          0       ] [dP]
+    [ k_C^T + 2 pi P U_E e_E    1_C.dR/dP + pi U_E^2   1_C.k_C   1_C.dR/da ] [dh]
+    [ control row                                         ] [da]
+
+(dV does not depend on a: the volume is a property of the curve; the rows
+carry the scalings above; q' = 0 for a liquid.) The increment of the tied dofs is dh. The prescribed
+and tied dofs' rows and columns are cleared in the element matrices, which
+``condensed.system`` condenses (P2) and factors.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import types
 
 import numpy as np
-import scipy.sparse as sp
-from skfem import Basis, ElementLineP1, ElementLineP2, ElementVector, MeshLine
 
-from . import forms
-from .material import MooneyRivlin
+from . import banded, condensed, kernel
+from .gas import Gas
+from .geometry import Placement, place
+from .material import Law, law_of
+from .reference import Reference, reference
 
-__all__ = [
-    "Model",
-    "Control",
-    "NO_PLATE",
-    "discretize",
-    "full",
-    "parameters",
-    "residual",
-    "jacobian",
-    "penetration",
-    "plate_pressure",
-    "multiplier_update",
-]
+__all__ = ["FREE", "PENALTY", "FITTED", "Control", "Model", "discretize", "placement", "fields", "forms", "split",
+           "conform", "residual", "linearize", "plate_force", "edge"]
 
-NO_PLATE = 1.0e3
-_ELEMENTS = {1: ElementLineP1, 2: ElementLineP2}
+FREE, PENALTY, FITTED = "free", "penalty", "fitted"
+_SCALARS = {FREE: 1, PENALTY: 2, FITTED: 3}
 
 
 @dataclasses.dataclass(frozen=True)
 class Control:
-    """What is prescribed: ``pressure`` or ``volume``; ``height`` or ``force``.
+    """What is prescribed: ``pressure`` or ``volume``; and with a plate one of ``height``,
+    ``radius`` (the Lagrangian contact radius a, fitted only) or ``force`` (units E T R).
 
-    ``force`` is the plate force in units of E T R (= Fhat pi Phat_I).
+    ``scale`` (units E T R) divides the rows that balance forces on the plate (the tangency
+    row and the force-control row), so that the absolute Newton tolerance on them is
+    relative to the plate force, however small it is (``steps.solve`` sets it). The
+    pressure and volume rows are relative too: P / P* - 1, V / V* - 1 (V / V* - q(P) with a ``gas``
+    sealed at V* = V_I).
     """
 
     pressure: float | None = None
     volume: float | None = None
-    height: float | None = NO_PLATE
+    height: float | None = None
+    radius: float | None = None
     force: float | None = None
+    scale: float = 1.0
+    gas: Gas | None = None
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Model:
-    """A mesh, element order, material and penalty, with the dof bookkeeping."""
+    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty.
 
-    material: MooneyRivlin
-    basis: Basis
-    order: int
+    ``workspace`` holds the large arrays of ``linearize`` from one call to the next (a system it
+    returns is valid until the next call, which is how Newton uses it).
+    """
+
+    law: Law
+    xi: np.ndarray
+    ref: Reference
     penalty: float
-    free: np.ndarray
-    fixed: np.ndarray
-    fixed_values: np.ndarray
+    workspace: dict = dataclasses.field(default_factory=dict, repr=False)
 
     @property
-    def size(self) -> int:
-        """Length of y: free dofs plus P and h."""
-        return self.free.size + 2
+    def order(self) -> int:
+        return self.ref.order
 
     @property
     def elements(self) -> int:
-        return self.basis.mesh.nelements
+        return self.xi.size - 1
 
-    def zero_multiplier(self) -> np.ndarray:
-        """Contact multiplier field at the quadrature points, all zero."""
-        return np.zeros((self.elements, self.basis.X.shape[1]))
+    @property
+    def dofs(self) -> int:
+        """Nodal dofs N = 2 (p n + 1)."""
+        return 2 * (self.order * self.elements + 1)
 
+    @property
+    def kl(self) -> int:
+        """Half-bandwidth of the tangent: 2 p + 1."""
+        return 2 * self.order + 1
 
-def discretize(alpha: float, nodes: np.ndarray, order: int, penalty: float) -> Model:
-    """Build the model on the sorted ``nodes`` of [0, 1] (inputs already checked)."""
-    mesh = MeshLine(np.asarray(nodes, dtype=float))
-    basis = Basis(mesh, ElementVector(_ELEMENTS[order](), 2), intorder=2 * order + 2)
-    pole = basis.get_dofs(lambda x: x[0] == 0.0).nodal
-    clamp = basis.get_dofs(lambda x: x[0] == 1.0).nodal
-    fixed = np.concatenate([pole["u^1"], clamp["u^1"], clamp["u^2"]])
-    free = np.setdiff1d(np.arange(basis.N), fixed)
-    return Model(MooneyRivlin(alpha), basis, order, penalty, free, fixed, np.array([0.0, 1.0, 0.0]))
+    def fixed(self, mode: str) -> np.ndarray:
+        """Dofs held fixed in ``mode``: rho(0), rho(1), eta(1), and with FITTED the tied set C."""
+        n = self.dofs
+        bc = np.array([0, n - 2, n - 1])
+        return np.concatenate([bc, self.tied()]) if mode == FITTED else bc
 
-
-def full(model: Model, y: np.ndarray) -> np.ndarray:
-    """All nodal values of x = (rho, eta) from the unknown vector y."""
-    u = np.empty(model.basis.N)
-    u[model.free] = y[:-2]
-    u[model.fixed] = model.fixed_values
-    return u
+    def tied(self) -> np.ndarray:
+        """C: the eta dofs of the contact element's nodes (FITTED)."""
+        return 2 * np.arange(self.order + 1) + 1
 
 
-def _fields(w: dict):
-    """The keyword arguments as the forms see them (attribute access)."""
-    return types.SimpleNamespace(**w)
+def discretize(material, nodes: np.ndarray, order: int, penalty: float) -> Model:
+    """The model of the rubber ``material`` (a Mooney-Rivlin alpha or a Material: ``material.law_of``) on
+    the reference vertices ``nodes`` (checked by the caller)."""
+    return Model(law_of(material), np.asarray(nodes, dtype=float), reference(order), penalty)
 
 
-def parameters(model: Model, y: np.ndarray, lam: np.ndarray) -> dict:
-    """Keyword arguments of the forms at the state y."""
-    u = model.basis.interpolate(full(model, y))
-    r = model.basis.global_coordinates()[0]
-    return dict(u=u, r=r, P=y[-2], h=y[-1], kappa=model.penalty, lam=lam)
+def edge(model: Model) -> int:
+    """Index of rho(a), the rho dof of vertex 1 (FITTED)."""
+    return 2 * model.order
 
 
-def residual(model: Model, y: np.ndarray, control: Control, lam: np.ndarray) -> np.ndarray:
-    """The residual vector of the module docstring, length ``model.size``."""
-    w = parameters(model, y, lam)
-    r_x = forms.residual.assemble(model.basis, **forms.residual_coefficients(model.material, _fields(w)))
-    r_x = r_x[model.free]
-    if control.pressure is not None:
-        r_p = y[-2] - control.pressure
+def conform(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
+    """A copy of y with the prescribed dofs at their values and (FITTED) the tied dofs at h."""
+    out = np.array(y, dtype=float)
+    n = model.dofs
+    out[[0, n - 2, n - 1]] = 0.0, 1.0, 0.0
+    if mode == FITTED:
+        out[model.tied()] = out[n + 1]
+    return out
+
+
+def split(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(U, scalars) of the unknown vector y."""
+    return y[: model.dofs], y[model.dofs:]
+
+
+def placement(model: Model, y: np.ndarray, mode: str) -> Placement:
+    """The physical elements of the state y."""
+    return place(model.xi, model.ref, y[model.dofs + 2] if mode == FITTED else None)
+
+
+def _contact(model: Model, y: np.ndarray, mode: str, multiplier):
+    return kernel.Contact(y[model.dofs + 1], model.penalty, multiplier) if mode == PENALTY else None
+
+
+def fields(model: Model, y: np.ndarray, mode: str) -> kernel.Fields:
+    """The state y at the quadrature points."""
+    u, s = split(model, y)
+    return kernel.fields(model.ref, placement(model, y, mode), u, s[0])
+
+
+def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False, out=None) -> kernel.Linear:
+    """The forms at the state y (``kernel.evaluate``): R and its derivatives, the volume, the plate force."""
+    u, s = split(model, y)
+    return kernel.evaluate(model.law, model.ref, placement(model, y, mode), u, s[0],
+                           _contact(model, y, mode, multiplier), tangent, out)
+
+
+def plate_force(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> float:
+    """Plate force F (units E T R): the penalty integral, or the reaction -sum_C R_j (FITTED)."""
+    linear = forms(model, y, mode, multiplier)
+    return linear.plate_force if mode == PENALTY else -float(linear.residual[model.tied()].sum())
+
+
+def residual(model: Model, y: np.ndarray, mode: str, control: Control, multiplier=0.0) -> np.ndarray:
+    """The residual [R with fixed rows zeroed, control rows], length ``len(y)``."""
+    linear = forms(model, y, mode, multiplier)
+    full = linear.residual.copy()
+    border = _border_residual(model, y, mode, control, linear)
+    full[model.fixed(mode)] = 0.0
+    return np.concatenate([full, border])
+
+
+def _border_residual(model, y, mode, control, linear) -> np.ndarray:
+    u, s = split(model, y)
+    rows = [s[0] / control.pressure - 1.0 if control.pressure is not None
+            else linear.volume / control.volume - _ratio(control, s[0])[0]]
+    if mode == PENALTY:
+        rows.append(s[1] - control.height if control.height is not None
+                    else (linear.plate_force - control.force) / control.scale)
+    elif mode == FITTED:
+        pa = np.pi * s[0] * u[edge(model)] ** 2
+        rows.append((linear.residual[model.tied()].sum() + pa) / control.scale)
+        if control.height is not None:
+            rows.append(s[1] - control.height)
+        elif control.radius is not None:
+            rows.append(s[2] - control.radius)
+        else:
+            rows.append((pa - control.force) / control.scale)
+    return np.array(rows)
+
+
+def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multiplier=0.0):
+    """(residual, the bordered tangent: ``condensed.system``) at y."""
+    u, s = split(model, y)
+    n, m = model.dofs, _SCALARS[mode]
+    buffer = banded.Buffers(model.workspace)
+    out = buffer("vectors", (4, n)), buffer("matrices", (model.elements, model.ref.local, model.ref.local))
+    linear = forms(model, y, mode, multiplier, tangent=True, out=out)
+    border = _border_residual(model, y, mode, control, linear)
+    fixed = model.fixed(mode)
+    full = linear.residual.copy()
+    full[fixed] = 0.0
+    matrices, rp = linear.matrices, linear.pressure  # dR/dP = -dV
+    b, c = buffer("columns", (n, m)), buffer("rows", (m, n))  # B and C of the bordered system
+    b[:, 0] = rp
+    if control.pressure is None:
+        np.divide(rp, -control.volume, out=c[0])
     else:
-        r_p = forms.volume.assemble(model.basis, **w) - control.volume
-    if control.height is not None:
-        r_h = y[-1] - control.height
-    else:
-        r_h = forms.contact_force.assemble(model.basis, **w) - control.force
-    return np.concatenate([r_x, [r_p, r_h]])
+        c[0] = 0.0
+    corner = np.zeros((m, m))
+    corner[0, 0] = 1.0 / control.pressure if control.pressure is not None else -_ratio(control, s[0])[1]
+    if mode == PENALTY:
+        b[:, 1] = -linear.force
+        if control.height is not None:
+            c[1] = 0.0
+            corner[1, 1] = 1.0
+        else:
+            np.divide(linear.force, control.scale, out=c[1])
+            corner[1, 1] = linear.force_stiffness / control.scale
+    elif mode == FITTED:
+        tied, e = model.tied(), edge(model)
+        k_c, r_a = _tied_column(model, matrices, buffer("tied", (n,))), linear.radius
+        b[:, 1], b[:, 2] = k_c, r_a
+        np.divide(k_c, control.scale, out=c[1])
+        c[1, e] += 2.0 * np.pi * s[0] * u[e] / control.scale
+        c[2] = 0.0
+        corner[0, 1] = -rp[tied].sum() / control.volume if control.pressure is None else 0.0
+        corner[1] = np.array([rp[tied].sum() + np.pi * u[e] ** 2, k_c[tied].sum(), r_a[tied].sum()]) / control.scale
+        if control.height is not None:
+            corner[2, 1] = 1.0
+        elif control.radius is not None:
+            corner[2, 2] = 1.0
+        else:
+            c[2, e] = 2.0 * np.pi * s[0] * u[e] / control.scale
+            corner[2, 0] = np.pi * u[e] ** 2 / control.scale
+    b[fixed] = 0.0
+    c[:, fixed] = 0.0
+    banded.constrain(matrices, 2 * model.order, fixed)
+    return np.concatenate([full, border]), condensed.system(matrices, model.order, b, c, corner, model.workspace)
 
 
-def jacobian(model: Model, y: np.ndarray, control: Control, lam: np.ndarray) -> sp.csc_matrix:
-    """The bordered tangent of the module docstring, sparse, square."""
-    w = parameters(model, y, lam)
-    free = model.free
-    coefficients = forms.tangent_coefficients(model.material, _fields(w))
-    k = forms.tangent.assemble(model.basis, **coefficients).tocsr()[free][:, free]
-    dv = sp.csc_matrix(forms.volume_gradient.assemble(model.basis, **w)[free][:, None])
-    df = sp.csc_matrix(forms.contact_force_gradient.assemble(model.basis, **w)[free][:, None])
-    if control.pressure is not None:
-        row_p = [None, sp.csc_matrix([[1.0]]), None]
-    else:
-        row_p = [dv.T, None, None]
-    if control.height is not None:
-        row_h = [None, None, sp.csc_matrix([[1.0]])]
-    else:
-        dfdh = forms.contact_force_stiffness.assemble(model.basis, **w)
-        row_h = [df.T, None, sp.csc_matrix([[dfdh]])]
-    return sp.bmat([[k, -dv, -df], row_p, row_h], format="csc")
+def _ratio(control: Control, pressure: float) -> tuple[float, float]:
+    """(q, dq/dP): the volume ratio V / V_I of the fluid at P and its slope (1, 0 for a liquid)."""
+    return (1.0, 0.0) if control.gas is None else control.gas.ratio(pressure)
 
 
-def penetration(model: Model, y: np.ndarray) -> float:
-    """Largest eta - h at the quadrature points, where contact is imposed (0 if none)."""
-    eta = model.basis.interpolate(full(model, y))[1]
-    return max(0.0, float(eta.max() - y[-1]))
-
-
-def plate_pressure(model: Model, y: np.ndarray, lam) -> tuple[np.ndarray, np.ndarray]:
-    """(p_N, chi) at the quadrature points: plate pressure per reference area, active set."""
-    return forms.contact_pressure(_fields(parameters(model, y, lam)))
-
-
-def multiplier_update(model: Model, y: np.ndarray, lam: np.ndarray) -> np.ndarray:
-    """Augmented-Lagrangian (Uzawa) update: lam <- <lam + kappa (eta - h)>_+."""
-    return np.asarray(plate_pressure(model, y, lam)[0])
+def _tied_column(model: Model, matrices: np.ndarray, out: np.ndarray) -> np.ndarray:
+    """k_C = K 1_C, written into ``out``, from the two elements that hold the tied dofs (the contact
+    element and the next)."""
+    local = np.zeros((2, model.ref.local))
+    local[0, 1::2] = 1.0  # every eta dof of the contact element
+    local[1, 1] = 1.0  # the edge vertex's eta dof, first in the next element
+    out[:] = 0.0
+    for e in range(2):
+        start = 2 * model.order * e
+        out[start: start + model.ref.local] += matrices[e] @ local[e]
+    return out

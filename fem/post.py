@@ -1,9 +1,18 @@
 """From a converged unknown vector to the reported numbers and the nodal profile.
 
-Pole stretch. Near the axis rho is odd in r, rho = lambda_0 r + c r^3 + ..., so
-rho/r = lambda_0 + c r^2 + O(r^4): the values at the first two mesh vertices,
-extrapolated in r^2 to r = 0, give lambda_0 (or lambda_c in contact) to
-O(h^4) plus the (superconvergent) nodal error divided by h.
+Pole stretch (inflation). Near the axis rho is odd in r, so
+rho/r = lambda_0 + b r^2 + c r^4 + ...; the quadratic in r^2 through rho/r at
+three consecutive vertices, evaluated at r = 0, gives lambda_0 to O(r^6) plus
+the nodal errors divided by r. The three are the first vertices at or beyond
+``R_FIT`` from the axis (a nodal value carries round-off of about 1e-16 R,
+which rho/r would magnify near the axis). The pole stretch is a point
+derivative at the axis, where the axisymmetric forms are singular: its
+influence function grows like 1/r, and on uniform meshes the discrete rho/r
+near the axis is only O(h^2) accurate (measured), whatever the element order.
+Meshes graded towards the axis (``meshes.polar``) restore O(h^2p).
+
+Contact stretch (edge-fitted contact): lambda_c = rho(a)/a, a nodal value at
+the edge vertex (the contact zone holds rho = lambda_c r exactly).
 
 Clamp stretch. The derivative of x at the clamp converges only as O(h^p); the
 reaction, the residual row of the fixed dofs, is a variationally consistent
@@ -12,105 +21,105 @@ with equilibrium inside, at r = 1 (rho = 1, lambda_2 = 1, w_1 = T1):
 
     R_rho(clamp) = 2 pi T1 t_rho,    R_eta(clamp) = 2 pi T1 t_eta + pi P,
 
-so T1 = |(R_rho, R_eta - pi P)| / (2 pi), and lambda_1 solves
-T1(lambda_1, 1) = (lambda_1 - lambda_1^-3) / 3 = T1 (monotonic).
+so T1 = +-|(R_rho, R_eta - pi P)| / (2 pi), its sign that of the vector's
+component along the discrete tangent at the clamp (negative: a compressed
+clamp, which the state then reports), and lambda_1 solves
+T1(lambda_1, 1) = w_1(lambda_1, 1) = T1 (``material.Law.planar_stretch``,
+from the element's own slope at the clamp; for Mooney-Rivlin
+w_1(l, 1) = (l - l^-3) / 3, monotonic).
 
-Nodal stretches elsewhere: lambda_1 the mean of the one-sided derivatives of
-the adjacent elements, lambda_2 = rho/r.
+The profile samples every node (vertices and P2 midpoints), so that a line
+through its points follows the quadratic meridian to O(h^3/8) rather than
+O(h^2/8). Nodal stretches elsewhere: lambda_1 at a vertex the mean of the
+one-sided derivatives of the adjacent elements, at a midpoint the element's
+own, lambda_2 = rho/r.
 """
 
 from __future__ import annotations
 
-from types import SimpleNamespace
-
 import numpy as np
-from scipy.optimize import brentq
 
 from pocket.core.states import Profile
 
-from . import forms
-from .model import Model, full, parameters, plate_pressure
+from .geometry import node_radii
+from .model import Model, forms, placement, split
 
-__all__ = [
-    "nodal",
-    "pole_stretch",
-    "clamp_stretch",
-    "volume",
-    "plate_force",
-    "contact_area_active",
-    "profile",
-]
+__all__ = ["vertices", "reaction", "pole_stretch", "clamp_stretch", "profile", "R_FIT"]
+
+R_FIT = 1e-4  # smallest radius (units R) of the vertices the pole stretch is fitted to
 
 
-def nodal(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def vertices(model: Model, y: np.ndarray, mode: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(r, rho, eta) at the mesh vertices."""
-    u = full(model, y)
-    dofs = model.basis.nodal_dofs
-    return model.basis.mesh.p[0], u[dofs[0]], u[dofs[1]]
+    u, _ = split(model, y)
+    step = 2 * model.order
+    return placement(model, y, mode).vertices, u[0::step], u[1::step]
 
 
-def pole_stretch(model: Model, y: np.ndarray) -> float:
-    """lambda at the pole from rho/r at the first two vertices, extrapolated in r^2."""
-    r, rho, _ = nodal(model, y)
-    (r1, r2), (l1, l2) = r[1:3], rho[1:3] / r[1:3]
-    return float((r2**2 * l1 - r1**2 * l2) / (r2**2 - r1**2))
+def reaction(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> np.ndarray:
+    """The residual R at every nodal dof, fixed ones included (their reactions)."""
+    return forms(model, y, mode, multiplier).residual
 
 
-def clamp_stretch(model: Model, y: np.ndarray, lam) -> float:
-    """Meridional stretch at the clamp from the reaction (module docstring)."""
-    w = parameters(model, y, lam)
-    rows = forms.residual.assemble(model.basis, **forms.residual_coefficients(model.material, SimpleNamespace(**w)))
-    clamp = model.basis.get_dofs(lambda x: x[0] == 1.0).nodal
-    tension = np.hypot(rows[clamp["u^1"][0]], rows[clamp["u^2"][0]] - np.pi * y[-2]) / (2 * np.pi)
-    return float(brentq(lambda a: (a - a**-3) / 3.0 - tension, 0.5, 1e3, xtol=1e-15, rtol=1e-15))
+def pole_stretch(model: Model, y: np.ndarray, mode: str) -> float:
+    """lambda_0 from rho/r at three vertices near the axis, extrapolated in r^2 (module docstring)."""
+    r, rho, _ = vertices(model, y, mode)
+    k = max(int(np.searchsorted(r, R_FIT)), 1)
+    k = min(k, r.size - 3)
+    x, s = r[k: k + 3] ** 2, rho[k: k + 3] / r[k: k + 3]
+    return float(s[0] * x[1] * x[2] / ((x[0] - x[1]) * (x[0] - x[2]))
+                 + s[1] * x[0] * x[2] / ((x[1] - x[0]) * (x[1] - x[2]))
+                 + s[2] * x[0] * x[1] / ((x[2] - x[0]) * (x[2] - x[1])))
 
 
-def volume(model: Model, y: np.ndarray) -> float:
-    """V(x)."""
-    return float(forms.volume.assemble(model.basis, **parameters(model, y, 0.0)))
+def clamp_stretch(model: Model, y: np.ndarray, mode: str, rows: np.ndarray) -> float:
+    """Meridional stretch at the clamp from the reaction ``rows`` (``reaction``; module docstring)."""
+    flux = np.array([rows[-2], rows[-1] - np.pi * y[model.dofs]])
+    u, _ = split(model, y)
+    p, length = model.order, placement(model, y, mode).lengths[-1]
+    nodal = u.reshape(-1, 2)[-(p + 1):]  # the last element's nodes, along r
+    slope = (nodal[-1] - nodal[-2]) / length if p == 1 else (nodal[0] + 3 * nodal[2] - 4 * nodal[1]) / length
+    sign = 1.0 if flux @ slope >= 0.0 else -1.0
+    tension = sign * float(np.hypot(*flux)) / (2 * np.pi)
+    return model.law.planar_stretch(tension, float(np.hypot(*slope)))
 
 
-def plate_force(model: Model, y: np.ndarray, lam) -> float:
-    """Plate reaction F = 2 pi int p_N r dr (units E T R)."""
-    return float(forms.contact_force.assemble(model.basis, **parameters(model, y, lam)))
-
-
-def contact_area_active(model: Model, y: np.ndarray, lam) -> float:
-    """Deformed area of the active set, 2 pi int chi rho rho' dr (edge resolved to O(h))."""
-    u = model.basis.interpolate(full(model, y))
-    _, chi = plate_pressure(model, y, lam)
-    return float(np.sum(2 * np.pi * chi * u[0] * u.grad[0, 0] * model.basis.dx))
-
-
-def profile(model: Model, y: np.ndarray, lam, contact_radius: float = 0.0) -> Profile:
-    """Nodal profile: stretches, tensions (units E T) and contact flag."""
-    r, rho, eta = nodal(model, y)
-    l1 = _vertex_slope(model, y)
+def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float,
+            contact_radius: float = 0.0) -> Profile:
+    """The profile at every node (vertices and, for P2, midpoints): stretches, tensions (units E T) and
+    contact flag; ``pole``, ``clamp``: the stretch at r = 0 (equibiaxial) and the meridional one at r = 1."""
+    u, _ = split(model, y)
+    r = node_radii(placement(model, y, mode), model.ref)
+    rho, eta = u[0::2].copy(), u[1::2].copy()
+    l1 = _node_slope(model, y, mode)
     l2 = np.empty_like(r)
     l2[1:] = rho[1:] / r[1:]
-    l1[0] = l2[0] = pole_stretch(model, y)
-    l1[-1] = clamp_stretch(model, y, lam)
-    t1, t2 = model.material.tensions(l1, l2)
+    l1[0] = l2[0] = pole
+    l1[-1] = clamp
+    if mode == "fitted":  # the flat zone is equibiaxial, lambda_c = pole, up to the edge vertex
+        inside = r <= contact_radius
+        l1[inside] = l2[inside] = pole
+    t1, t2 = model.law.tensions(l1, l2)
     return Profile(r, rho, eta, l1, l2, t1, t2, r <= contact_radius if contact_radius > 0 else r < 0)
 
 
-def _vertex_slope(model: Model, y: np.ndarray) -> np.ndarray:
-    """|x'| at the vertices, the mean of the two adjacent elements' one-sided values."""
-    u = full(model, y)
-    t = model.basis.mesh.t
-    h = np.diff(model.basis.mesh.p[0])[None, :]
-    ends = []
-    for c in range(2):
-        v0, v1 = u[model.basis.nodal_dofs[c][t[0]]], u[model.basis.nodal_dofs[c][t[1]]]
-        if model.order == 1:
-            left = right = (v1 - v0) / h[0]
-        else:
-            vm = u[model.basis.interior_dofs[c]]
-            left, right = (-3 * v0 - v1 + 4 * vm) / h[0], (v0 + 3 * v1 - 4 * vm) / h[0]
-        ends.append((left, right))
-    left = np.hypot(ends[0][0], ends[1][0])
-    right = np.hypot(ends[0][1], ends[1][1])
-    slope = np.empty(model.basis.mesh.p.shape[1])
+def _node_slope(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
+    """|x'| at the nodes: at a vertex the mean of the two adjacent elements' one-sided values, at a P2
+    midpoint the element's own (the secant slope of its quadratic)."""
+    u, _ = split(model, y)
+    p, n = model.order, model.elements
+    nodal = u.reshape(-1, 2)[p * np.arange(n)[:, None] + np.arange(p + 1)]  # (n, p + 1, 2)
+    lengths = placement(model, y, mode).lengths[:, None]
+    secant = np.hypot(*((nodal[:, -1] - nodal[:, 0]) / lengths).T)
+    if p == 1:
+        left = right = secant
+    else:
+        v0, vm, v1 = nodal[:, 0], nodal[:, 1], nodal[:, 2]
+        left = np.hypot(*((-3 * v0 - v1 + 4 * vm) / lengths).T)
+        right = np.hypot(*((v0 + 3 * v1 - 4 * vm) / lengths).T)
+    slope = np.empty(p * n + 1)
     slope[0], slope[-1] = left[0], right[-1]
-    slope[1:-1] = 0.5 * (right[:-1] + left[1:])
+    slope[p: -1: p] = 0.5 * (right[:-1] + left[1:])
+    if p == 2:
+        slope[1::2] = secant
     return slope

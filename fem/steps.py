@@ -1,19 +1,37 @@
-"""Shared solving steps: one controlled solve, the starting dome, landing on a target.
+"""Shared solving steps: one controlled solve, the starting dome, landing on a target, locking.
 
-``solve`` is Newton on the bordered system followed by the range check of
-a free part below the clamp plane (eta < 0) is outside the membrane model.
+``solve`` is Newton on the bordered system (``model``, ``newton``) followed by
+the range check: a free part below the clamp plane is outside the membrane
+model (``OutOfRangeError``). Under pressure the free meridian is convex, so
+as the plate comes down it first reaches the clamp plane at the clamp itself,
+where its tangent turns horizontal (the force where that happens ends the
+model's range); past it the meridian dips below the plane and comes up to the
+clamp. The check is therefore the sign of the tangent's vertical component at
+the clamp, t_eta(1) = (R_eta - pi P) / |(R_rho, R_eta - pi P)| from the clamp
+reaction (``post``: a flux, accurate like the energy), positive meaning
+outside; and, for safety, eta < 0 at any node other than the clamp.
 
 ``land`` finds the state where a monitored quantity f(y) (the pressure along a
-volume path, the plate force along a height path) equals a target, given two
-converged states bracketing it: Newton under target control from the linear
-interpolation, and if that fails, bisection of the bracket under the path's
-own control until it succeeds. Interpolating two distant converged states can
-give a slack meridian (|x'| < 1 near the clamp: no tension, a soft mode and a
-wild Newton step), so a converged endpoint is also tried as the guess.
+volume path) equals a target, given two converged states bracketing it: Newton
+under target control from the linear interpolation, and if that fails,
+bisection of the bracket under the path's own control until it succeeds.
+Interpolating two distant converged states can give a slack meridian (|x'| < 1
+near the clamp: no tension, a soft mode and a wild Newton step), so a
+converged endpoint is also tried as the guess.
+
+``near_locking``: a rubber whose energy exists only below a locking stretch
+(Gent: I1 - 3 < Jm) returns NaN derivatives past it, so a load step that
+would cross it fails and is cut (``continuation``); a load path that gives up
+with its last state within LOCKING of locking (1 - (I1 - 3)/Jm at a quadrature
+point) has met the end of the rubber's domain. For a target of the geometry
+(a volume, a plate height), which locking bounds, that is OutOfRangeError;
+for a pressure or a force, which diverge at locking and so are never past it,
+a ConvergenceError that says how near locking it stopped.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 
 import numpy as np
@@ -21,43 +39,88 @@ import numpy as np
 from pocket.core import smallstrain
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 
-from .model import NO_PLATE, Control, Model, full, jacobian, residual
+from .geometry import node_radii, place
+from .model import FITTED, FREE, Control, Model, conform, fields, linearize, placement
 from .newton import Tolerances, newton
+from .post import reaction
 
-__all__ = ["solve", "dome", "land"]
+__all__ = ["solve", "dome", "land", "increment", "near_locking", "LOCKING"]
 
 _ETA_FLOOR = -1e-12  # round-off below the clamp plane is not a range violation
+_SLOPE_FLOOR = 1e-12  # nor a tangent at the clamp rising by round-off
+_TINY = 1e-300  # a scale is never zero
+#: lock margin 1 - (I1 - 3)/Jm below which a load path that gave up has met the rubber's locking
+LOCKING = 1e-2
 
 
-def solve(
-    model: Model, control: Control, guess: np.ndarray, lam, tol: Tolerances
-) -> tuple[np.ndarray, int]:
-    """Newton under ``control`` from ``guess``; (y, iterations)."""
-    y, iterations = newton(
-        lambda z: residual(model, z, control, lam),
-        lambda z: jacobian(model, z, control, lam),
-        guess,
-        tol,
-    )
-    eta = full(model, y)[model.basis.nodal_dofs[1][:-1]]
-    if eta.min() < _ETA_FLOOR:
+def increment(model: Model, mode: str) -> Callable:
+    """dy from the linear solve's (nodal, scalar) parts: the tied dofs move with the plate (FITTED)."""
+    tied = model.tied() if mode == FITTED else None
+
+    def join(y, x, s):
+        if tied is not None:
+            x = x.copy()
+            x[tied] = s[1]
+        return np.concatenate([x, s])
+
+    return join
+
+
+def solve(model: Model, mode: str, control: Control, guess: np.ndarray, tol: Tolerances,
+          multiplier=0.0) -> tuple[np.ndarray, int]:
+    """Newton under ``control`` from ``guess`` (its prescribed dofs reset: ``model.conform``); (y, iterations).
+
+    OutOfRangeError if the free part comes below the clamp plane."""
+    guess = conform(model, guess, mode)
+    if mode == FITTED or control.force is not None:
+        control = dataclasses.replace(control, scale=_plate_scale(model, guess, mode, control))
+    result = newton(lambda z: linearize(model, z, mode, control, multiplier), guess, tol, increment(model, mode),
+                    _scales(model, guess, mode))
+    y = result.y
+    rows = reaction(model, y, mode, multiplier)
+    rise = rows[-1] - np.pi * y[model.dofs]  # 2 pi T1 t_eta at the clamp
+    slope = rise / np.hypot(rows[-2], rise)
+    eta = y[1: model.dofs - 2: 2]
+    if slope > _SLOPE_FLOOR or eta.min() < _ETA_FLOOR:
         raise OutOfRangeError(
-            f"the free part of the sheet comes down to the clamp plane (min eta/R = {eta.min():.3g}"
-            f" at Phat = {y[-2]:.6g}): outside the membrane model"
+            f"the free part of the sheet comes down to the clamp plane (its tangent at the clamp rises at "
+            f"{slope:.3g}, min eta/R = {eta.min():.3g}, at Phat = {y[model.dofs]:.6g}): outside the membrane model"
         )
-    return y, iterations
+    return y, result.iterations
+
+
+def _scales(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
+    """What each unknown's increment is measured against: eta and h the sheet's height, rho its
+    largest radial displacement, P itself, a one (Newton's tolerance is relative to these)."""
+    n = model.dofs
+    radii = node_radii(placement(model, y, mode), model.ref)
+    rho, eta = y[0:n:2], y[1:n:2]
+    out = np.ones_like(y)
+    out[0:n:2] = max(float(np.abs(rho - radii).max()), _TINY)
+    out[1:n:2] = max(float(np.abs(eta).max()), _TINY)
+    out[n] = max(abs(float(y[n])), _TINY)
+    if mode != FREE:
+        out[n + 1] = out[1]
+    return out
+
+
+def _plate_scale(model: Model, y: np.ndarray, mode: str, control: Control) -> float:
+    """The plate force the plate rows are measured against: the target, or pi P rho(a)^2 of the guess."""
+    if control.force is not None:
+        return control.force
+    return float(np.pi * y[model.dofs] * y[2 * model.order] ** 2)
 
 
 def dome(model: Model, pressure: float) -> np.ndarray:
-    """The small-strain dome of the paper's eqs (14)-(15), (18) at ``pressure``.
+    """The small-strain dome of the paper's eqs (14)-(15), (18) at ``pressure`` (FREE unknowns).
 
     lambda_0 - 1 = (Phat / (4 sqrt 6))^(2/3), rho = r (lambda_0 - (lambda_0 - 1) r^2),
     eta = sqrt(3 (lambda_0 - 1) / 2) (1 - r^2).
     """
     e = smallstrain.pole_strain(pressure)
-    r = model.basis.doflocs[0]
-    u = np.where(np.arange(model.basis.N) % 2 == 0, r * (1 + e - e * r**2), np.sqrt(1.5 * e) * (1 - r**2))
-    return np.concatenate([u[model.free], [pressure, NO_PLATE]])
+    r = node_radii(place(model.xi, model.ref), model.ref)
+    u = np.column_stack([r * (1 + e - e * r**2), np.sqrt(1.5 * e) * (1 - r**2)]).ravel()
+    return np.concatenate([u, [pressure]])
 
 
 def land(
@@ -95,3 +158,21 @@ def land(
         iterations=last.iterations,
         residual=last.residual,
     )
+
+
+
+
+
+def near_locking(model: Model, y: np.ndarray, mode: str, err: ConvergenceError, target: str, bounded: bool) -> None:
+    """Raise, from ``err``, the failure of a load path towards ``target`` whose last state ``y`` is within
+    LOCKING of the rubber's locking: OutOfRangeError if locking bounds the target (``bounded``), else a
+    ConvergenceError saying so (module docstring). Returns if the state is not near locking."""
+    w = fields(model, y, mode)
+    margin = model.law.lock_margin(w.l1, w.l2)
+    if not margin < LOCKING:
+        return
+    where = (f"the sheet is within {margin:.2g} of the rubber's locking (1 - (I1 - 3)/Jm, {model.law.label}) at "
+             f"the last state reached")
+    if bounded:
+        raise OutOfRangeError(f"{target} is not reached before the rubber locks: {where}") from err
+    raise ConvergenceError(f"{err} ({where})", load=err.load, iterations=err.iterations, residual=err.residual) from err

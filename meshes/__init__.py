@@ -4,14 +4,14 @@ A mesh is just its nodes: a strictly increasing float array from exactly 0.0
 to exactly 1.0 (elements join consecutive nodes).
 
 - ``uniform(n)``, ``graded(n, towards=, ratio=)``, ``refined(n, at=, width=,
-  factor=)`` make meshes (``meshes/generate.py`` documents each);
+  factor=)``, ``polar(n, power=)`` make meshes (``meshes/generate.py`` documents each);
 - ``read(path)`` / ``write(path, nodes)`` move them through any meshio format,
   with checks that a file really holds a 1-D mesh of [0, 1];
 - ``named(name)`` loads one of ``NAMES``, meshes stored in this folder.
 """
 
 from .files import check, read, write
-from .generate import graded, refined, uniform
+from .generate import graded, polar, refined, uniform
 from .named import NAMES, named
 
-__all__ = ["NAMES", "check", "graded", "named", "read", "refined", "uniform", "write"]
+__all__ = ["NAMES", "check", "graded", "named", "polar", "read", "refined", "uniform", "write"]

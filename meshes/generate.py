@@ -25,6 +25,15 @@ increasing, with the first node exactly 0.0 and the last exactly 1.0.
     and the error is governed by the largest element, so no transition zone
     is added. A coarse piece shorter than one fine element is merged into the
     band, so that no sliver element appears next to r = 0 or r = 1.
+``polar(n, power=p)``
+    n elements graded algebraically towards the axis r = 0: the nodes are
+    r_k = s^p (1 + (p - 1)(1 - s)) at s = k/n. Near the axis r ~ p s^p, so the
+    elements shrink like (r)^(1 - 1/p) / n towards it; at the clamp dr/ds = 1,
+    so the last elements are 1/n long as on the uniform mesh, and the largest is
+    max_s dr/ds / n (1.33/n for p = 2, 1.51/n for p = 2.5, 1.69/n for p = 3).
+    The axis is a coordinate singularity of the axisymmetric weak form: the
+    pole stretch (a derivative there) converges at O(h^2) on uniform meshes
+    and regains the order of the energy on these.
 """
 
 from __future__ import annotations
@@ -37,7 +46,7 @@ import numpy as np
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_finite
 
-__all__ = ["uniform", "graded", "refined"]
+__all__ = ["uniform", "graded", "refined", "polar"]
 
 
 def _count(n, name="n") -> int:
@@ -130,3 +139,15 @@ def refined(n, *, at, width=0.05, factor=8.0) -> np.ndarray:
             piece[-1] = stop
             pieces.append(piece[1:])
     return np.concatenate(pieces)
+
+
+def polar(n, *, power=2.5) -> np.ndarray:
+    """Nodes of ``n`` elements graded algebraically towards the axis with exponent ``power`` (>= 1)."""
+    n = _count(n)
+    power = check_finite("power", power)
+    if power < 1.0:
+        raise InputError(f"power = {power!r}, but the grading exponent must be >= 1")
+    s = _split(1.0, n)
+    nodes = s**power * (1.0 + (power - 1.0) * (1.0 - s))
+    nodes[0], nodes[-1] = 0.0, 1.0
+    return nodes

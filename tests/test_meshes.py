@@ -83,6 +83,23 @@ def test_refined(n, at, width, factor):
     assert len(h) <= n * (1 + 2 * width * (factor - 1)) + 4
 
 
+@given(st.integers(min_value=1, max_value=400), st.floats(min_value=1.0, max_value=4.0))
+def test_polar(n, power):
+    """Nodes (k/n)^p (1 + (p - 1)(1 - k/n)): element sizes grow from the axis up to s = p/(p + 1),
+    where dr/ds = s^(p-1) (p^2 - (p^2 - 1) s) peaks; the last is 1/n to first order (dr/ds = 1 at
+    s = 1), and the largest is max_s dr/ds / n within 2 p^2 / n^2."""
+    x = meshes.polar(n, power=power)
+    assert_valid(x)
+    assert len(x) == n + 1
+    h = np.diff(x)
+    rising = h[: max(int(n * power / (power + 1)) - 1, 0)]
+    assert np.all(np.diff(rising) >= -1e-15)
+    s = np.linspace(0.0, 1.0, 100001)
+    slope = s ** (power - 1) * (power**2 - (power**2 - 1) * s)  # dr/ds
+    assert h.max() == pytest.approx(slope.max() / n, abs=2.0 * power**2 / n**2)
+    assert h[-1] == pytest.approx(1.0 / n, abs=2.0 * power**2 / n**2)
+
+
 @pytest.mark.parametrize(
     ("call", "quoted"),
     [
@@ -98,6 +115,8 @@ def test_refined(n, at, width, factor):
         (lambda: meshes.refined(8, at=0.5, width=0.0), "width = 0.0"),
         (lambda: meshes.refined(8, at=0.5, factor=0.5), "factor = 0.5"),
         (lambda: meshes.refined(8, at="x"), "at = 'x'"),
+        (lambda: meshes.polar(8, power=0.5), "power = 0.5"),
+        (lambda: meshes.polar(0), "n = 0"),
     ],
 )
 def test_bad_arguments(call, quoted):

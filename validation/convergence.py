@@ -1,18 +1,38 @@
 """Mesh convergence of the FE model against the shooting reference (``pocket converge``).
 
-Theory (Lagrange elements of order p, smooth solution): the energy-norm error is
-O(h^p) and smooth functionals (volume, pressure, pole height) converge at
-O(h^(2p)): 2 for P1, 4 for P2. Inflation is smooth. In contact the meridian
-curvature jumps at the contact edge (0 inside, P/T1 outside), which caps the
-P2 rate on uniform meshes (measured 2-3) and scatters the errors as the edge
-moves inside its element from mesh to mesh; ``meshes.refined`` (8x finer
-within 0.05 of the edge) gives the accuracy back.
+Two mesh families, both element orders, inflation and compression (at Fhat = ``FORCE``):
 
-``h`` is the largest element size. ``observed_order`` fits log(error) against
-log(h) with np.polyfit. ``richardson`` extrapolates the three finest meshes:
-with q = (f_2h - f_4h) / (f_h - f_2h) and mesh ratio k = h_2h / h_h, the observed order
-is p = log(q) / log(k) and the limit f_h + (f_h - f_2h) / (k^p - 1), its error
-estimated by |f_h - f_2h| / (k^p - 1); it needs q > 1 (errors of one sign, shrinking).
+- ``fitted``: the FE model's default meshes (``meshes.polar``: graded towards the
+  axis) and, in compression, its edge-fitted contact (a vertex follows the contact
+  edge, the contact radius is a Newton unknown);
+- ``uniform``: uniform meshes and, in compression, the fixed-mesh penalty plate
+  (with augmented-Lagrangian updates): the edge falls inside an element.
+
+Theory (Lagrange elements of order p). Where the solution is smooth inside every
+element, the energy-norm error is O(h^p) and the error of smooth functionals is
+O(h^2p), 2 for P1 and 4 for P2: the volume, the pressure, the heights, and the
+contact radius (fixed by a variationally consistent flux). Two things break the
+smoothness:
+
+- the axis: the pole stretch is a derivative at r = 0, where the axisymmetric
+  forms are singular; its influence function grows like 1/r and on uniform
+  meshes it converges at O(h^2) whatever p. Meshes graded towards the axis
+  restore O(h^2p) (measured).
+- the contact edge, where the meridian's curvature jumps from 0 to P/T1. On a
+  fixed mesh it sits inside an element, eta is only H^(5/2 - eps) there, and the
+  energy-norm error is O(h^(3/2)): functionals converge at O(h^3) at best, and
+  the errors scatter as the edge moves inside its element from mesh to mesh (the
+  penalty's contact set is resolved to a quadrature point, its Uzawa loop stops
+  at a floor): orders fitted to a few meshes range from 1 to 3.5 and are
+  reported, not checked. The edge-fitted mesh keeps the full order.
+
+``h`` is the largest element size (in compression on the fitted mesh, the largest
+of the free part: the contact element holds the exact flat solution).
+``observed_order`` fits log(error) against log(h) with np.polyfit. ``richardson``
+extrapolates the three finest meshes: with q = (f_2h - f_4h) / (f_h - f_2h) and
+mesh ratio k = h_2h / h_h, the observed order is p = log(q) / log(k) and the limit
+f_h + (f_h - f_2h) / (k^p - 1), its error estimated by |f_h - f_2h| / (k^p - 1);
+it needs q > 1 (errors of one sign, shrinking).
 """
 
 from __future__ import annotations
@@ -25,11 +45,16 @@ import numpy as np
 
 from pocket.apps.physical import Pocket
 
-__all__ = ["Sequence", "FORCE", "QUANTITIES", "sequence", "observed_order", "richardson"]
+__all__ = ["Sequence", "FORCE", "QUANTITIES", "MESHES", "EXPECTED", "FITTED_P2_FINEST", "RICHARDSON_FACTOR",
+           "tasks", "sequence", "observed_order", "richardson", "checks"]
 
 #: the compressed state of the study: the paper's fig. 2b force
 FORCE = 0.19
-QUANTITIES = {"inflation": ("height", "volume"), "compression": ("height", "pressure", "contact_radius")}
+QUANTITIES = {"inflation": ("height", "volume", "stretch_pole"),
+              "compression": ("height", "pressure", "contact_area", "contact_radius")}
+#: mesh family -> what it means in each study
+MESHES = {"fitted": "default meshes graded towards the axis; in compression the edge-fitted contact",
+          "uniform": "uniform meshes; in compression the fixed-mesh penalty plate"}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -38,7 +63,7 @@ class Sequence:
 
     study: str  # "inflation" | "compression"
     order: int
-    mesh: str  # "uniform" | "refined"
+    mesh: str  # a key of MESHES
     elements: tuple[int, ...]
     sizes: np.ndarray  # largest element size of each mesh
     values: dict  # quantity -> FEM values, shape (n,)
@@ -50,25 +75,35 @@ class Sequence:
         return np.abs(self.values[quantity] / self.reference[quantity] - 1.0)
 
 
+def tasks(case: Pocket, plan) -> list[tuple]:
+    """Arguments of ``sequence`` for the study of ``plan`` (both studies, orders and mesh families)."""
+    return [(case, study, order, mesh, plan.convergence_sizes[order])
+            for study in QUANTITIES for order in (1, 2) for mesh in MESHES]
+
+
+def _largest_element(state, study: str, mesh: str) -> float:
+    lengths = np.diff(state.profile.r[:: state.extra["order"]])  # the profile holds every node: the vertices
+    return float(lengths[1:].max() if (study, mesh) == ("compression", "fitted") else lengths.max())
+
+
 def sequence(case: Pocket, study: str, order: int, mesh: str, counts) -> Sequence:
-    """Solve ``study`` of ``case`` with FEM order ``order`` on ``mesh`` meshes of ``counts`` base elements."""
+    """Solve ``study`` of ``case`` (a ``pocket.apps.physical.Pocket``) with FEM order ``order`` on ``mesh``
+    meshes of ``counts`` elements."""
     from pocket import fem, meshes, shooting
 
     start = time.perf_counter()
     alpha, pressure = case.alpha, case.pressure_initial
-    if study == "inflation":
-        ref = shooting.inflate(alpha, pressure)
-    else:
-        ref = shooting.compress(alpha, pressure, FORCE)
+    ref = shooting.inflate(alpha, pressure) if study == "inflation" else shooting.compress(alpha, pressure, FORCE)
     names = QUANTITIES[study]
     values, sizes = {name: [] for name in names}, []
     for n in counts:
-        nodes = meshes.refined(n, at=ref.contact_radius) if mesh == "refined" else meshes.uniform(n)
+        grid = fem.default_mesh(n) if mesh == "fitted" else meshes.uniform(n)
         if study == "inflation":
-            state = fem.inflate(alpha, pressure, mesh=nodes, order=order)
+            state = fem.inflate(alpha, pressure, mesh=grid, order=order)
         else:
-            state = fem.compress(alpha, pressure, FORCE, mesh=nodes, order=order)
-        sizes.append(float(np.diff(nodes).max()))
+            contact = "fitted" if mesh == "fitted" else "penalty"
+            state = fem.compress(alpha, pressure, FORCE, mesh=grid, order=order, contact=contact)
+        sizes.append(_largest_element(state, study, mesh))
         for name in names:
             values[name].append(float(getattr(state, name)))
     return Sequence(study=study, order=order, mesh=mesh, elements=tuple(counts), sizes=np.array(sizes),
@@ -94,43 +129,52 @@ def richardson(sizes, values) -> tuple[float, float, float] | None:
     return f1 + correction, abs(correction), p
 
 
-#: (study, order, mesh) -> {quantity: (expected order, tolerance on it, reason)}
-EXPECTED = {
-    ("inflation", 1, "uniform"): {q: (2.0, 0.3, "smooth: O(h^2p)") for q in ("height", "volume")},
-    ("inflation", 2, "uniform"): {q: (4.0, 0.3, "smooth: O(h^2p)") for q in ("height", "volume")},
-    ("compression", 1, "uniform"): {"contact_radius": (2.0, 0.4, "P1 keeps order 2; edge scatter")},
-    ("compression", 1, "refined"): {"contact_radius": (2.0, 0.4, "P1 keeps order 2; edge scatter")},
-    ("compression", 2, "uniform"): {"contact_radius": (2.5, 0.7, "curvature jump at the edge: 2-3, not 4")},
-}
-#: P2 refined at the edge: the finest contact-radius error below this (issue 3's refined-mesh bar)
-REFINED_P2_FINEST = 1e-6
+def _expected():
+    smooth = "smooth in every element: O(h^2p)"
+    out = {}
+    for order in (1, 2):
+        full = (2.0 * order, 0.2 if order == 1 else 0.3, smooth)
+        out[("inflation", order, "fitted")] = {q: full for q in QUANTITIES["inflation"]}
+        near_axis = (2.0 * order, 0.3, smooth + "; the axis pollutes the coarse uniform meshes")
+        out[("inflation", order, "uniform")] = {"height": near_axis, "volume": full,
+                                                "stretch_pole": (2.0, 0.3, "a derivative at the axis: O(h^2)")}
+        out[("compression", order, "fitted")] = {q: full for q in QUANTITIES["compression"]}
+    scatter = "the edge inside an element: errors scattered, not a function of h; reported, not checked"
+    out[("compression", 1, "uniform")] = {q: (2.0, None, f"P1's own order, at best; {scatter}")
+                                          for q in QUANTITIES["compression"]}
+    out[("compression", 2, "uniform")] = {q: (3.0, None, f"H^(5/2) at the edge: O(h^3) at best; {scatter}")
+                                          for q in QUANTITIES["compression"]}
+    return out
+
+
+#: (study, order, mesh) -> {quantity: (theory's order, tolerance on the observed one or None: reported
+#: only, reason)}
+EXPECTED = _expected()
+#: P2 on fitted meshes in compression: the finest error below this
+FITTED_P2_FINEST = 1e-8
 #: Richardson: the shooting value must lie within this many error estimates of the extrapolation
 RICHARDSON_FACTOR = 3.0
 
 
 def checks(sequences) -> list:
-    """Observed orders against theory, and Richardson extrapolation against shooting, as checks."""
+    """Observed orders against theory, the finest fitted error, and Richardson against shooting, as checks."""
     from .verdicts import Check
 
     rows = []
     for seq in sequences:
         label = f"FEM P{seq.order} {seq.mesh} meshes"
         where = f"{seq.study}, {len(seq.elements)} meshes"
-        expected = EXPECTED.get((seq.study, seq.order, seq.mesh), {})
+        expected = EXPECTED[(seq.study, seq.order, seq.mesh)]
         for quantity in seq.values:
             errors = seq.errors(quantity)
             order = observed_order(seq.sizes, errors)
-            if quantity in expected:
-                p, tol, _ = expected[quantity]
-                rows.append(Check("convergence", label, "order", quantity, where, order, p, abs(order - p), tol,
-                                  "pass" if abs(order - p) <= tol else "fail"))
-            else:
-                rows.append(Check("convergence", label, "order", quantity, where, order, float("nan"),
-                                  float("nan"), None, "info"))
-            if (seq.study, seq.order, seq.mesh, quantity) == ("compression", 2, "refined", "contact_radius"):
-                ok = errors[-1] < REFINED_P2_FINEST
+            p, tol, _ = expected[quantity]
+            verdict = "info" if tol is None else "pass" if abs(order - p) <= tol else "fail"
+            rows.append(Check("convergence", label, "order", quantity, where, order, p, abs(order - p), tol, verdict))
+            if (seq.study, seq.order, seq.mesh) == ("compression", 2, "fitted"):
+                ok = errors[-1] < FITTED_P2_FINEST
                 rows.append(Check("convergence", label, "finest error", quantity, where, errors[-1], 0.0,
-                                  errors[-1], REFINED_P2_FINEST, "pass" if ok else "fail"))
+                                  errors[-1], FITTED_P2_FINEST, "pass" if ok else "fail"))
             rows.append(_richardson_row(seq, quantity, label, where))
     return rows
 
@@ -140,7 +184,7 @@ def _richardson_row(seq, quantity, label, where):
 
     ref = seq.reference[quantity]
     result = richardson(seq.sizes, seq.values[quantity])
-    checked = seq.study == "inflation" or seq.mesh == "refined"
+    checked = seq.mesh == "fitted" or seq.study == "inflation"  # uniform meshes in contact: scattered errors
     if result is None:
         return Check("convergence", label, "Richardson", quantity, where + ": not monotone, no extrapolation",
                      float("nan"), ref, float("nan"), None, "info")

@@ -29,6 +29,7 @@ STYLES = {
     "FEM P1": dict(linestyle="none", marker="o", markerfacecolor="none", markersize=7),
     "FEM P2": dict(linestyle="none", marker="x", markersize=6),
     "analytical": dict(linestyle="--", marker="", linewidth=1.3),
+    "theory": dict(linestyle="--", marker="", linewidth=0.9),
 }
 _PROFILE_MARKERS = 21  # FE nodes shown per profile
 _NEAR = 1.0  # Fhat range of the paper's figures 3 and 5
@@ -118,21 +119,34 @@ def _profiles(results, head, force):
 
 
 def convergence_figure(results) -> Figure:
-    """Error against element size, one panel per quantity, observed orders in the legend."""
+    """Error against element size, one panel per quantity, observed and theoretical orders in the legend,
+    and the theory's slopes 2 and 4 drawn a third below the finest point of the fitted P1 and P2 series."""
+    from .convergence import EXPECTED
+
     panels = []
-    for study, quantity, title in (("inflation", "height", "inflation: pole height H_0"),
+    for study, quantity, title in (("inflation", "stretch_pole", "inflation: pole stretch lambda_0"),
                                    ("compression", "height", f"compression, Fhat = {CONVERGENCE_FORCE}: height H"),
                                    ("compression", "contact_radius", f"compression, Fhat = {CONVERGENCE_FORCE}: a_c")):
-        series = []
+        series, slopes = [], []
         for seq in results.sequences:
             if seq.study == study:
                 errors = seq.errors(quantity)
                 p = observed_order(seq.sizes, errors)
-                series.append(Series(f"P{seq.order} {seq.mesh}: order {p:.2f}", "convergence", seq.sizes, errors,
-                                     2 * (seq.order - 1) + (seq.mesh == "refined")))
-        panels.append(Panel(title, "largest element size h", "|FEM / shooting - 1|", tuple(series), log="xy"))
-    return Figure("convergence", "Mesh convergence of the FE model against the shooting reference (headline case); "
-                  "observed orders fitted by least squares (np.polyfit) on log(error) vs log(h).", tuple(panels))
+                theory = EXPECTED[(study, seq.order, seq.mesh)][quantity][0]
+                color = 2 * (seq.order - 1) + (seq.mesh == "uniform")
+                series.append(Series(f"P{seq.order} {seq.mesh}: order {p:.2f} (theory {theory:g})", "convergence",
+                                     seq.sizes, errors, color))
+                if seq.mesh == "fitted":
+                    h = np.array([seq.sizes[0], seq.sizes[-1]])
+                    slope = 2 * seq.order
+                    slopes.append(Series(f"slope {slope} (theory, P{seq.order} fitted)", "theory", h,
+                                         errors[-1] / 3 * (h / h[-1]) ** slope, color))
+        panels.append(Panel(title, "largest element size h", "|FEM / shooting - 1|", tuple(series + slopes),
+                            log="xy"))
+    return Figure("convergence", "Mesh convergence of the FE model against the shooting reference (headline case): "
+                  "fitted = the default meshes graded towards the axis and, in compression, the edge-fitted contact; "
+                  "uniform = uniform meshes and, in compression, the penalty plate. Observed orders fitted by least "
+                  "squares (np.polyfit) on log(error) vs log(h); dashed: the theory's slopes.", tuple(panels))
 
 
 def figures(results) -> list[Figure]:

@@ -81,12 +81,12 @@ DEFAULT = Plan(
     name="default",
     curve_points=40,
     fem={"headline": (0.0, 0.05, 0.19, 0.5, 1.0, 2.0, 4.0, None), "fem": (0.0, 0.19, 1.0), "*": (0.0,)},
-    convergence_sizes={1: (20, 40, 80, 160, 320), 2: (10, 20, 40, 80, 160)},
+    convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
 )
 
 QUICK = Plan(
     name="quick",
     curve_points=20,
     fem={"headline": (0.0, 0.19, 1.0)},
-    convergence_sizes={1: (40, 80, 160), 2: (20, 40, 80)},
+    convergence_sizes={1: (32, 64, 128), 2: (16, 32, 64)},
 )

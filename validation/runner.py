@@ -66,10 +66,7 @@ class Results:
 
 def convergence_tasks(pocket, plan: Plan) -> list[tuple]:
     """Arguments of ``convergence.sequence`` for the study of ``plan``."""
-    sizes = plan.convergence_sizes
-    tasks = [(pocket, "inflation", order, "uniform", sizes[order]) for order in (1, 2)]
-    tasks += [(pocket, "compression", order, mesh, sizes[order]) for order in (1, 2) for mesh in ("uniform", "refined")]
-    return tasks
+    return convergence.tasks(pocket, plan)
 
 
 def progress_bar(enabled: bool, stream=None) -> tqdm:

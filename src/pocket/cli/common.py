@@ -68,7 +68,7 @@ def flag(name: str) -> str:
     return f"--{name}"
 
 
-_TYPES = {"float": number, "int": int, "path": str}
+_TYPES = {"float": number, "int": int, "path": str, "choice": str}
 
 
 def _shown(value) -> str:

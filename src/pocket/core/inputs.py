@@ -135,11 +135,13 @@ def check_count(name, value, low: int, high: int) -> int:
 
 
 def check_tolerance(name, value, high: float) -> float:
-    """A relative tolerance in [TOLERANCE_FLOOR, high]: below the floor no double can meet it."""
+    """A relative tolerance in [TOLERANCE_FLOOR, high]: below the floor no double can meet it, above
+    ``high`` the solver's answer would not resolve what it reports."""
     number = check_finite(name, value)
     if not TOLERANCE_FLOOR <= number <= high:
-        raise InputError(f"{name} = {quote(value)}, but it must lie in [{TOLERANCE_FLOOR:g}, {high:g}] "
-                         "(below that no double-precision solve can meet it)")
+        why = ("no double-precision solve can meet it" if number < TOLERANCE_FLOOR else
+               "a looser tolerance would not resolve the reported numbers")
+        raise InputError(f"{name} = {quote(value)}, but it must lie in [{TOLERANCE_FLOOR:g}, {high:g}] ({why})")
     return number
 
 

@@ -58,8 +58,9 @@ ENTRY_POINTS = {"inflate": "inflate", "inflate_volume": "inflate", "compress": "
 class Option:
     """One keyword option of a solver (see the module docstring).
 
-    ``kind`` is how a user writes it: ``"float"``, ``"int"``, ``"bool"`` or
-    ``"path"`` (a file name); ``default`` is what the solver uses when it is
+    ``kind`` is how a user writes it: ``"float"``, ``"int"``, ``"bool"``,
+    ``"path"`` (a file name) or ``"choice"`` (one word of a list its check
+    knows); ``default`` is what the solver uses when it is
     not given (documentation: the solver's signature holds the same value).
     """
 

@@ -106,8 +106,20 @@ def _scalars(state, keys, extra, described) -> dict:
     return out
 
 
+class _Membrane:
+    """What both states share: defaults filled in on creation, and the wrinkling flag."""
+
+    def __post_init__(self):
+        _complete(self)
+
+    @property
+    def wrinkled(self) -> bool:
+        """A tension is not positive somewhere: outside membrane theory."""
+        return min(self.tension_1_min, self.tension_2_min) <= 0.0
+
+
 @dataclasses.dataclass(frozen=True)
-class InflatedState:
+class InflatedState(_Membrane):
     """Step 1: the sheet inflated at pressure ``pressure`` (Phat).
 
     ``extra`` holds solver-specific diagnostics (mesh size, iterations, ...);
@@ -135,14 +147,6 @@ class InflatedState:
 
     KEYS = ("alpha", "pressure", "stretch_pole", "height", "volume", "stretch_clamp")
 
-    def __post_init__(self):
-        _complete(self)
-
-    @property
-    def wrinkled(self) -> bool:
-        """A tension is not positive somewhere: outside membrane theory."""
-        return min(self.tension_1_min, self.tension_2_min) <= 0.0
-
     def scalars(self) -> dict:
         """The reported quantities as a flat dict (JSON-ready): KEYS (``alpha`` only for Mooney-Rivlin),
         CHECKS, the material's law and parameters, then ``extra`` and the solver."""
@@ -150,7 +154,7 @@ class InflatedState:
 
 
 @dataclasses.dataclass(frozen=True)
-class CompressedState:
+class CompressedState(_Membrane):
     """Step 2: the inflated pocket pressed by a flat plate at fixed volume.
 
     ``contact_area`` is the deformed area A_c/(pi R^2) = pi (lambda_c a_c)^2 /
@@ -194,14 +198,6 @@ class CompressedState:
         "height_ratio",
         "volume",
     )
-
-    def __post_init__(self):
-        _complete(self)
-
-    @property
-    def wrinkled(self) -> bool:
-        """A tension is not positive somewhere: outside membrane theory."""
-        return min(self.tension_1_min, self.tension_2_min) <= 0.0
 
     def scalars(self) -> dict:
         """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars``, and the fluid."""

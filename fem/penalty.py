@@ -1,0 +1,164 @@
+"""Step 2 on a fixed mesh with a penalty plate: plate-height and plate-force control.
+
+The unknowns and equations are ``model``'s PENALTY ones (y = [U, P, h]). This
+is the unfitted method, kept to compare with the edge-fitted one (``fitted``):
+the contact edge falls inside an element, where a polynomial cannot be both
+flat and curved.
+
+First contact: force control is singular without contact (the plate height is
+then undetermined), so the plate is lowered from the pole height H0 under
+height control, monitoring the reaction F, until F passes the target; then
+``steps.land`` solves under force control. Further forces follow under force
+control, each step seeded by the last (``continuation.follow``). The fluid is
+``fill``, the volume row's ``model.Control``, extended by each control.
+
+Contact: penalty kappa on the gap, with an augmented-Lagrangian (Uzawa) option.
+With multiplier field l at the quadrature points, the plate pressure is
+p_N = <l + kappa (eta - h)>_+; after a converged Newton solve, l <- p_N and the
+solve is repeated until the penetration max(eta - h) is below ``PENETRATION``.
+At a fixed point eta = h wherever p_N > 0: the penetration of the pure
+penalty, about Phat lambda_c^2 / kappa, is removed, except in the element that
+holds the edge (``augment``); the loop then stops once P and h settle to
+``SETTLED``, the floor of this method.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from pocket.core.errors import OutOfRangeError
+
+from .continuation import follow
+from .model import PENALTY, Control, Model, fields, plate_force
+from .newton import Tolerances
+from .steps import land, solve
+
+__all__ = ["press_to_force", "press_to_height", "force_path", "augment", "penetration", "multiplier_update",
+           "contact_area_active"]
+
+PENETRATION = 1e-9  # target of the Uzawa loop, in units of R
+MAX_UPDATES = 30
+SETTLED = 1e-7
+LOWEST = 0.02  # the height path stops at this fraction of H0
+
+
+def _at(model: Model, y: np.ndarray, h: float) -> np.ndarray:
+    out = y.copy()
+    out[model.dofs + 1] = h
+    return out
+
+
+def _onto_plate(model: Model, y: np.ndarray) -> np.ndarray:
+    """The guess y with eta clipped to the plate (plus the penalty's P/kappa).
+
+    A predictor that crosses the plate starts Newton on the wrong active set,
+    which then grows a few quadrature points per iteration.
+    """
+    out = y.copy()
+    n = model.dofs
+    out[1:n:2] = np.minimum(out[1:n:2], y[n + 1] + y[n] / model.penalty)
+    return out
+
+
+def _solve(model, control, guess, lam, tol):
+    return solve(model, PENALTY, control, _onto_plate(model, guess), tol, lam)
+
+
+def press_to_height(model: Model, y0, fill: Control, height, lam, tol: Tolerances):
+    """From a state y0 (plate at y0's h) lower the plate to ``height``; (y, iterations)."""
+    total = 0
+
+    def along(h, guess):
+        return _solve(model, replace(fill, height=h), _at(model, guess, h), lam, tol)
+
+    y = y0
+    for _, y, iterations in follow(along, y0, y0[model.dofs + 1], height, first_step=0.05,
+                                   name="plate height h/R"):
+        total += iterations
+    return y, total
+
+
+def press_to_force(model: Model, y0, fill: Control, force, lam, tol: Tolerances):
+    """From the inflated state y0 (plate touching the pole) lower the plate until the reaction is ``force``."""
+    h0 = float(y0[model.dofs + 1])
+
+    def along(h, guess):
+        return _solve(model, replace(fill, height=h), _at(model, guess, h), lam, tol)
+
+    def at_target(guess):
+        return _solve(model, replace(fill, force=force), guess, lam, tol)
+
+    def f(y):
+        return plate_force(model, y, PENALTY, lam)
+
+    total, previous = 0, (h0, y0)
+    for h, y, iterations in follow(along, y0, h0, LOWEST * h0, first_step=0.05, name="plate height h/R"):
+        total += iterations
+        if f(y) >= force:
+            y, iterations = land(along, at_target, previous, (h, y), f, force)
+            return y, total + iterations
+        previous = (h, y)
+    raise OutOfRangeError(
+        f"plate force {force:.6g} (units E T R) not reached with the plate down to {LOWEST} H0"
+    )
+
+
+def force_path(model: Model, y0, fill: Control, force, lam, tol: Tolerances):
+    """From a contact state y0 at its force, follow force control to ``force``."""
+
+    def along(f, guess):
+        return _solve(model, replace(fill, force=f), guess, lam, tol)
+
+    total, y = 0, y0
+    start = plate_force(model, y0, PENALTY, lam)
+    for _, y, iterations in follow(along, y0, start, force, name="plate force F/(E T R)"):
+        total += iterations
+    return y, total
+
+
+def _gap(model: Model, y: np.ndarray) -> np.ndarray:
+    """eta - h at the quadrature points."""
+    return fields(model, y, PENALTY).eta - y[model.dofs + 1]
+
+
+def penetration(model: Model, y: np.ndarray) -> float:
+    """Largest eta - h at the quadrature points, where contact is imposed (0 if none)."""
+    return max(0.0, float(_gap(model, y).max()))
+
+
+def multiplier_update(model: Model, y: np.ndarray, lam) -> np.ndarray:
+    """Augmented-Lagrangian (Uzawa) update: lam <- <lam + kappa (eta - h)>_+ at the quadrature points."""
+    return np.maximum(lam + model.penalty * _gap(model, y), 0.0)
+
+
+def contact_area_active(model: Model, y: np.ndarray, lam) -> float:
+    """Deformed area of the active set, 2 pi int chi rho rho' dr (edge resolved to O(h))."""
+    w = fields(model, y, PENALTY)
+    chi = lam + model.penalty * (w.eta - y[model.dofs + 1]) > 0.0
+    return float(np.sum(2 * np.pi * chi * w.rho * w.drho * w.lengths[:, None] * model.ref.weights))
+
+
+def augment(model: Model, y, control: Control, lam, tol: Tolerances):
+    """Uzawa updates of the multiplier until the penetration is gone; (y, lam, iterations).
+
+    Stops when the penetration at every quadrature point is below PENETRATION, or
+    when an update changes P and h by less than SETTLED (relative), or after
+    MAX_UPDATES. What then remains sits in the element that holds the contact
+    edge, where a polynomial cannot be both flat and curved: there the discrete
+    constraint has no exact solution and Uzawa creeps (the multiplier of a point
+    that cannot close its gap grows by kappa times the gap per update). It is
+    reported as ``penetration`` and ``penetration_pole``, never hidden.
+    """
+    total, n = 0, model.dofs
+    for _ in range(MAX_UPDATES):
+        if penetration(model, y) <= PENETRATION:
+            break
+        lam = multiplier_update(model, y, lam)
+        before = y[n:].copy()
+        y, iterations = _solve(model, control, y, lam, tol)
+        total += iterations
+        if np.all(np.abs(y[n:] / before - 1.0) <= SETTLED):
+            break
+    return y, lam, total

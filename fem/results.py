@@ -1,0 +1,241 @@
+"""The states the solver returns, built from converged unknowns and checked before they leave.
+
+Reported quantities (``pocket.core.states``): the inputs (alpha or the
+material, pressure or pressure_initial, force, the fluid) are echoed exactly as
+given (``material.law_of``, ``gas.fluid_of``).
+
+Smallest tensions: T_1 = w_1 / lambda_2 and T_2 = w_2 / lambda_1 at the
+quadrature points and at the profile's nodes; the state reports the least of
+each, so that a compressive tension anywhere the solver evaluates it flags
+the state as wrinkled.
+
+Inflated: ``height`` = eta(0), ``stretch_pole`` and ``stretch_clamp`` from
+``post``, ``volume`` V(x).
+
+Compressed, edge-fitted contact (``fitted``): ``contact_radius`` = a (an
+unknown), ``stretch_contact`` = rho(a)/a, ``contact_area`` = rho(a)^2 (the
+deformed disc pi rho(a)^2 over pi R^2), ``height`` = h, ``pressure`` = P.
+Diagnostics in ``extra``: ``force_reaction`` (the plate reaction -sum_C R_j),
+``force_pressure_area`` (P times the deformed contact area), both as Fhat,
+``force_difference`` (their difference), ``contact_pressure_error`` (the
+plate's nodal reactions at the contact zone's nodes off the edge against the
+consistent nodal loads of the fluid pressure P, max |difference| / max |load|:
+a frictionless flat plate carries exactly the fluid pressure) and
+``penetration`` (max(eta - h) over the free part's nodes: the free part must
+stay below the plate).
+
+Compressed, penalty contact (``penalty``): ``contact_area`` = Fhat P_I/P from
+the plate force and the pressure, ``contact_radius`` = sqrt(A_c)/lambda_c,
+``height`` = eta(0) (the sheet, about p_N/kappa above the plate with a pure
+penalty), ``force_pressure_area`` from the active quadrature points (O(h)),
+``penetration`` (max(eta - h) at the quadrature points) and
+``penetration_pole``.
+
+Checks (``check``): every number finite, every stretch positive (at the
+quadrature points too), rho(1) = 1 (lambda_2(1) = 1), the volume at its
+target (V_I, or V_I q(P) for a gas: ``gas``) and for a gas the polytropic law
+itself, and for the fitted contact F = P A_c and the plate reaction equal to
+the force. A state that fails one is a solver failure (``ConvergenceError``
+naming the check), never returned.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from pocket.core.errors import ConvergenceError
+from pocket.core.fluids import LIQUID
+from pocket.core.states import CompressedState, InflatedState
+
+from . import post
+from .model import FITTED, FREE, PENALTY, Control, Model, fields, forms, plate_force
+from .penalty import contact_area_active, penetration
+
+__all__ = ["inflated", "uncompressed", "fitted_state", "penalty_state", "CONSISTENCY"]
+
+#: relative tolerance of the state's own identities (volume, F = P A_c): Newton leaves ~1e-12
+CONSISTENCY = 1e-9
+#: absolute floor of the force identities per element, in Fhat: the plate reaction is a sum of nodal
+#: forces whose round-off grows with the mesh (measured |reaction - F| at Fhat = 0.1: 5e-10 on 2000
+#: elements, 7e-10 on 2e4, 1.5e-9 on 1e5; about 1e-12 per element bounds them all)
+FORCE_FLOOR = 1e-12
+
+
+def _extra(model: Model, iterations: int, contact: str | None = None) -> dict:
+    out = dict(elements=model.elements, order=model.order, newton_iterations=int(iterations))
+    if contact is not None:
+        out["contact"] = contact
+    return out
+
+
+def _fail(where: str, what: str):
+    raise ConvergenceError(f"the finite-element state {where} fails its own check: {what}")
+
+
+def _echo(model: Model, fill: Control | None = None) -> dict:
+    """The inputs a state echoes as given: alpha, material and (compressed) the fluid."""
+    out = dict(alpha=model.law.alpha, material=model.law.material)
+    if fill is not None:
+        out["fluid"] = _fluid(fill)
+    return out
+
+
+def _fluid(fill: Control):
+    """The fluid as given: LIQUID, or the gas sealed in ``fill``."""
+    return LIQUID if fill.gas is None else fill.gas.fluid
+
+
+def _least_tensions(linear, profile) -> dict:
+    """The least T_1 and T_2 over the quadrature points (``linear``: the state's forms) and the profile's
+    nodes (units E T)."""
+    t1, t2 = linear.tension_min
+    return dict(tension_1_min=min(t1, float(profile.tension_1.min())),
+                tension_2_min=min(t2, float(profile.tension_2.min())))
+
+
+def _volume_target(fill: Control, pressure: float) -> float:
+    """V_I, or V_I q(P) for a gas."""
+    return fill.volume * (1.0 if fill.gas is None else fill.gas.ratio(pressure)[0])
+
+
+def _check_gas(fill: Control, state, where: str) -> None:
+    if fill.gas is not None:
+        error = fill.gas.residual(state.pressure, state.volume, fill.volume)
+        if abs(error) > CONSISTENCY:
+            _fail(where, f"the gas law (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma off by {error:.3g} (relative)")
+
+
+def _check_common(model: Model, y: np.ndarray, mode: str, state, where: str, volume_target: float) -> None:
+    numbers = [v for v in state.scalars().values() if isinstance(v, float)]
+    arrays = [getattr(state.profile, f.name) for f in dataclasses.fields(state.profile) if f.name != "contact"]
+    if not (np.all(np.isfinite(numbers)) and all(np.all(np.isfinite(a)) for a in arrays)):
+        _fail(where, "a number that is not finite")
+    w = fields(model, y, mode)
+    smallest = min(float(w.l1.min()), float(w.l2.min()), float(state.profile.stretch_1.min()),
+                   float(state.profile.stretch_2.min()))
+    if smallest <= 0.0:
+        _fail(where, f"a stretch {smallest:.3g} <= 0 (the meridian degenerate or through the axis)")
+    if abs(state.profile.rho[-1] - 1.0) > 1e-14:
+        _fail(where, f"rho(1) = {state.profile.rho[-1]!r}, not 1 (lambda_2(1) = 1)")
+    if abs(state.volume / volume_target - 1.0) > CONSISTENCY:
+        _fail(where, f"volume {state.volume!r} against its target {volume_target!r}")
+
+
+def inflated(model: Model, y: np.ndarray, iterations: int, *, pressure: float | None = None,
+             volume: float | None = None) -> InflatedState:
+    """The inflated state of FREE unknowns y; ``pressure`` or ``volume``: the given input, echoed."""
+    linear = forms(model, y, FREE)
+    pole, clamp = post.pole_stretch(model, y, FREE), post.clamp_stretch(model, y, FREE, linear.residual)
+    v = linear.volume
+    profile = post.profile(model, y, FREE, pole=pole, clamp=clamp)
+    state = InflatedState(
+        **_echo(model),
+        pressure=pressure if pressure is not None else float(y[model.dofs]),
+        stretch_pole=pole,
+        height=float(y[1]),
+        volume=volume if volume is not None else v,
+        stretch_clamp=clamp,
+        profile=profile,
+        solver="fem",
+        extra=_extra(model, iterations),
+        **_least_tensions(linear, profile),
+    )
+    where = f"at Phat = {state.pressure:.6g}"
+    _check_common(model, y, FREE, state, where, v if volume is None else volume)
+    if pressure is not None and abs(y[model.dofs] / pressure - 1.0) > CONSISTENCY:
+        _fail(where, f"pressure {y[model.dofs]!r} against the given {pressure!r}")
+    return state
+
+
+def uncompressed(state: InflatedState, fill: Control, contact: str) -> CompressedState:
+    """The state at Fhat = 0: the inflated one (with the fluid ``fill`` holds)."""
+    return CompressedState(
+        alpha=state.alpha, material=state.material, fluid=_fluid(fill), pressure_initial=state.pressure, force=0.0,
+        pressure=state.pressure, pressure_ratio=1.0,
+        contact_area=0.0, contact_radius=0.0, stretch_contact=state.stretch_pole, height=state.height,
+        height_ratio=1.0, volume=state.volume, profile=state.profile, inflated=state, solver="fem",
+        extra={**state.extra, "contact": contact, "newton_iterations": 0, "penetration": 0.0,
+               "force_reaction": 0.0, "force_pressure_area": 0.0, "force_difference": 0.0},
+        tension_1_min=state.tension_1_min, tension_2_min=state.tension_2_min,
+    )
+
+
+def _contact_pressure_error(model: Model, y: np.ndarray, rows: np.ndarray) -> float:
+    """Plate reactions against the consistent loads of P at the contact element's nodes off the edge."""
+    n, p = model.dofs, model.order
+    pressure, a = y[n], y[n + 2]
+    stretch = y[2 * p] / a
+    ref = model.ref
+    r = a * ref.t  # the contact element's quadrature points
+    load = pressure * stretch**2 * 2.0 * np.pi * (a * ref.weights * r) @ ref.phi  # consistent nodal loads
+    plate = -rows[model.tied()]
+    return float(np.max(np.abs(plate[:p] - load[:p])) / np.max(np.abs(load[:p])))
+
+
+def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedState, fill: Control,
+                 force) -> CompressedState:
+    """The compressed state of FITTED unknowns y at the given ``force`` (Fhat, echoed) with the fluid ``fill``."""
+    n, p_i = model.dofs, state.pressure
+    pressure, h, a = (float(v) for v in y[n:])
+    rho_a = float(y[2 * model.order])
+    linear = forms(model, y, FITTED)
+    rows = linear.residual
+    reaction = -float(rows[model.tied()].sum()) / (np.pi * p_i)
+    area = pressure * rho_a**2 / p_i
+    free_eta = y[2 * model.order + 1: n: 2]
+    extra = _extra(model, iterations, FITTED)
+    extra.update(force_reaction=reaction, force_pressure_area=area, force_difference=reaction - area,
+                 contact_pressure_error=_contact_pressure_error(model, y, rows),
+                 penetration=max(0.0, float(free_eta.max() - h)))
+    stretch = rho_a / a
+    clamp = post.clamp_stretch(model, y, FITTED, rows)
+    profile = post.profile(model, y, FITTED, pole=stretch, clamp=clamp, contact_radius=a)
+    out = CompressedState(
+        **_echo(model, fill), pressure_initial=p_i, force=force, pressure=pressure, pressure_ratio=pressure / p_i,
+        contact_area=rho_a**2, contact_radius=a, stretch_contact=stretch, height=h, height_ratio=h / state.height,
+        volume=linear.volume,
+        profile=profile, inflated=state, solver="fem", extra=extra, **_least_tensions(linear, profile),
+    )
+    where = f"at Fhat = {force!r}"
+    _check_common(model, y, FITTED, out, where, _volume_target(fill, pressure))
+    _check_gas(fill, out, where)
+    for name in ("force_reaction", "force_pressure_area"):
+        if abs(extra[name] - force) > CONSISTENCY * force + FORCE_FLOOR * model.elements:
+            _fail(where, f"{name} = {extra[name]!r} against the force {force!r} (F = P A_c)")
+    if not 0.0 < a < 1.0:
+        _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
+    return out
+
+
+def penalty_state(model: Model, y: np.ndarray, lam, iterations: int, state: InflatedState, fill: Control,
+                  force=None) -> CompressedState:
+    """The compressed state of PENALTY unknowns y (multiplier ``lam``) with the fluid ``fill``; ``force``: the
+    given Fhat (None under plate-height control: the reaction is reported)."""
+    n, p_i = model.dofs, state.pressure
+    pressure, h = float(y[n]), float(y[n + 1])
+    reaction = plate_force(model, y, PENALTY, lam) / (np.pi * p_i)
+    fhat = reaction if force is None else force
+    area = fhat * p_i / pressure
+    stretch = post.pole_stretch(model, y, PENALTY)
+    radius = float(np.sqrt(area) / stretch)
+    active = pressure * contact_area_active(model, y, lam) / (np.pi * p_i)
+    extra = _extra(model, iterations, PENALTY)
+    extra.update(penetration=penetration(model, y), penetration_pole=max(0.0, float(y[1] - h)),
+                 force_reaction=reaction, force_pressure_area=active, force_difference=reaction - active)
+    linear = forms(model, y, PENALTY, lam)
+    clamp = post.clamp_stretch(model, y, PENALTY, linear.residual)
+    profile = post.profile(model, y, PENALTY, pole=stretch, clamp=clamp, contact_radius=radius)
+    out = CompressedState(
+        **_echo(model, fill), pressure_initial=p_i, force=fhat, pressure=pressure, pressure_ratio=pressure / p_i,
+        contact_area=float(area), contact_radius=radius, stretch_contact=stretch, height=float(y[1]),
+        height_ratio=float(y[1]) / state.height, volume=linear.volume,
+        profile=profile, inflated=state, solver="fem", extra=extra, **_least_tensions(linear, profile),
+    )
+    where = f"at Fhat = {fhat!r}"
+    _check_common(model, y, PENALTY, out, where, _volume_target(fill, pressure))
+    _check_gas(fill, out, where)
+    if force is not None and abs(reaction / force - 1.0) > CONSISTENCY:
+        _fail(where, f"plate reaction {reaction!r} against the force {force!r}")
+    return out
