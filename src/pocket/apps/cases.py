@@ -102,7 +102,7 @@ class Case:
     options: tuple[tuple[str, object], ...] = ()
     label: str = ""
     tags: tuple[str, ...] = ()
-    given: tuple[tuple[str, object], ...] = ()
+    given: tuple[tuple[str, object], ...] = dataclasses.field(default=(), hash=False)  # values may be lists
     fluid: Fluid = LIQUID
 
     @property
