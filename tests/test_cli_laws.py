@@ -154,3 +154,21 @@ def test_help_says_how_parameters_are_scaled(capsys):
         assert main([name, "--help"]) == 0
         text = " ".join(capsys.readouterr().out.split())
         assert "rescaled to units of mu_0" in text and "--law" in text and "mooney-rivlin" in text
+
+
+def test_a_compressive_tension_reaches_the_user(capsys, monkeypatch):
+    """A state with a compressive tension (patched in: no case tried gives one) is printed with exit 0, one
+    'pocket: warning: compressive tension' line on stderr, and wrinkled: true in the JSON with its warning."""
+    import dataclasses
+
+    real = shooting.compression_curve
+
+    def slack(*args, **kwargs):
+        return [dataclasses.replace(s, tension_1_min=-0.02, warnings=()) for s in real(*args, **kwargs)]
+
+    monkeypatch.setattr(shooting, "compression_curve", slack)
+    status, out, err = run(capsys, "compress", "--law", "neo-hookean", "--mu", "1", "--pressure", "0.3",
+                           "--force", "0.5", "--json")
+    assert status == 0 and err.count("pocket: warning: compressive tension: T_1 = -0.02 E T") == 1, err
+    row = json.loads(out)
+    assert row["wrinkled"] is True and row["tension_1_min"] == -0.02 and "compressive tension" in row["warnings"][0]

@@ -9,8 +9,12 @@ per load), both or neither. Each row holds the load as written (``load``: ``"0.2
 the SI values (``force_N``, for a force load the force as parsed; ``pressure_Pa``,
 ``pressure_rise_Pa``, ``contact_area_m2``, ``contact_radius_m``, ``height_m``,
 ``travel_m`` = H0 - H, ``volume_m3``), the dimensionless keys of
-``CompressedState.KEYS`` (the inputs as asked, not a solver's echo) and the state's
-``warnings`` (a list in JSON, joined by "; " in CSV).
+``CompressedState.KEYS`` (the inputs as asked, not a solver's echo; ``alpha`` only for a
+Mooney-Rivlin rubber), the smallest tensions ``tension_1_min``, ``tension_2_min`` (units
+E T) and ``wrinkled``, the rubber (``material`` and its law's parameters in units of mu_0),
+the fluid (``fluid``, and a gas's ``ambient`` as Phat_atm and ``gamma``), the solver and
+the state's ``warnings`` (a list in JSON, joined by "; " in CSV, as are Ogden's lists). The
+JSON's case holds the rubber and the fluid in SI (``c10_Pa``, ``ambient_Pa``, ...).
 """
 
 from __future__ import annotations
