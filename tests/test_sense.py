@@ -141,9 +141,12 @@ def test_gas_pressure_rise_is_monotone(barometer):
 
 def test_gas_round_trip(barometer):
     """Exact: the force read off the pressure the forward solver gives (with the gas) is that force, to
-    1e-8, and F = P A_c holds."""
+    1e-8, and F = P A_c holds; the reading says which rubber and gas (Phat_atm) it was read with."""
     for fhat in (0.05, 0.5, 3.0):
         state = shooting.compress(barometer.material, barometer.pressure_initial, fhat, **barometer.options())
         reading = sense(barometer, ratio=state.pressure_ratio)
         assert reading.force == pytest.approx(fhat, rel=1e-8)
         assert reading.contact_area_m2 * reading.pressure_Pa == pytest.approx(reading.force_N, rel=1e-8)
+        row = reading.row()
+        assert (row["material"], row["fluid"], row["ambient"]) == ("mooney-rivlin", "gas", barometer.fluid.ambient)
+        assert row["gamma"] == barometer.case.fluid.gamma

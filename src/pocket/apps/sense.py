@@ -56,10 +56,13 @@ class Reading:
     contact_area_m2: float
     sensitivity_N_per_Pa: float  # dF/dP
     force: float
+    rubber: tuple = ()  # the state's rubber and fluid as (key, value) pairs: material, its parameters
+    # (units of mu_0), fluid, a gas's ambient (Phat_atm) and gamma
 
     def row(self) -> dict:
-        """The reading as a flat dict (JSON- and CSV-ready)."""
-        return dataclasses.asdict(self)
+        """The reading as a flat dict (JSON- and CSV-ready): its numbers, then the rubber and the fluid."""
+        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name != "rubber"}
+        return {**out, **dict(self.rubber)}
 
 
 def _readings(pocket: Pocket, fhats) -> list[Reading]:
@@ -68,7 +71,8 @@ def _readings(pocket: Pocket, fhats) -> list[Reading]:
     area = math.pi * pocket.case.radius**2
     return [Reading(force_N=s.force * pocket.force_scale_N, pressure_Pa=s.pressure_ratio * pocket.pressure_initial_Pa,
                     pressure_ratio=s.pressure_ratio, contact_area_m2=s.contact_area * area,
-                    sensitivity_N_per_Pa=area / slope, force=s.force)
+                    sensitivity_N_per_Pa=area / slope, force=s.force,
+                    rubber=tuple({**s.material.describe(), **s.fluid.describe()}.items()))
             for s, slope in zip(states, slopes["pressure_ratio"], strict=True)]
 
 

@@ -37,7 +37,8 @@ def _main(args) -> int:
         text = io.StringIO(newline="")
         writer = csv.DictWriter(text, list(rows[0]))
         writer.writeheader()
-        writer.writerows(rows)
+        writer.writerows({k: "; ".join(map(str, v)) if isinstance(v, list) else v for k, v in row.items()}
+                         for row in rows)
         write_whole(table, text.getvalue())
         out["table"] = args.table
     if args.json:
