@@ -39,7 +39,7 @@ The solver options and their checks come from the solver's record
 Values carry units (``pocket.core.units``); plain numbers are SI. Every problem
 (unknown, missing or misplaced keys, wrong dimensions, impossible or absurd
 values, a file that is not UTF-8 TOML, more than ``MAX_LOADS`` loads or a file
-over ``MAX_BYTES``) is a one-line ``InputError`` naming the key, raised before
+over ``tomlfiles.MAX_BYTES``) is a one-line ``InputError`` naming the key, raised before
 any solver runs: the work a case can ask for is bounded.
 
 A ``Case`` keeps the values as the user wrote them (``given``), so that results
@@ -56,7 +56,6 @@ from __future__ import annotations
 
 import dataclasses
 import pathlib
-import tomllib
 
 from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
@@ -66,12 +65,12 @@ from pocket.core.units import positive, quantity
 
 from .rubbers import PARAMETERS, fluid, sheet
 from .solvers import SOLVERS, record
+from .tomlfiles import read_toml
 
-__all__ = ["Case", "SAMPLES", "MAX_LOADS", "MAX_BYTES", "load", "parse", "sample"]
+__all__ = ["Case", "SAMPLES", "MAX_LOADS", "load", "parse", "sample"]
 
-#: most loads a case may list, and largest case file read: bounds on the work a case can ask for
+#: most loads a case may list: a bound on the work a case can ask for (the file's size: ``tomlfiles``)
 MAX_LOADS = 10_000
-MAX_BYTES = 1_000_000
 
 _SECTIONS = {"name": None, "label": None, "tags": None,
              "sheet": ("thickness", "material", *PARAMETERS, "modulus", "alpha"), "clamp": ("radius",),
@@ -254,30 +253,6 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
                 label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()))
-
-
-def read_toml(path) -> dict:
-    """The TOML file ``path`` as a dict; a missing, huge, non-UTF-8 or malformed file is an InputError."""
-    path = pathlib.Path(path)
-    try:
-        size = path.stat().st_size
-        if path.is_dir():
-            raise InputError(f"{path}: is a directory, not a case file")
-        if size > MAX_BYTES:
-            raise InputError(f"{path}: {size} bytes, but a case file has at most {MAX_BYTES}")
-        raw = path.read_bytes()
-    except OSError as err:
-        raise InputError(f"{path}: cannot read the file ({err.strerror})") from None
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as err:
-        raise InputError(f"{path}: not a UTF-8 text file (byte {err.start}), so not a TOML case file") from None
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
-        raise InputError(f"{path}: not valid TOML ({err})") from None
-    except RecursionError:
-        raise InputError(f"{path}: values nested too deeply to be a case file") from None
 
 
 def load(path, *, require_loads: bool = True) -> Case:
