@@ -38,6 +38,22 @@ _OPTIONS = {
     "--vtk": st.sampled_from(["{tmp}/vtk", "{tmp}/FILE", "{tmp}/FILE/sub", "/dev/null"]),
 }
 _SWITCHES = ["--json", "--overwrite", "--augmented", "--no-augmented", "--help", "--bogus"]
+#: a rubber other than the default (Mooney-Rivlin, --alpha): whole and broken parameter sets
+_RUBBERS = st.sampled_from([
+    ["--law", "neo-hookean", "--mu", "1"], ["--law", "yeoh", "--c10", "85", "--c20", "2", "--c30", "0.1"],
+    ["--law", "gent", "--mu", "1", "--jm", "1"], ["--law", "gent", "--mu", "1", "--jm", "1e-9"],
+    ["--law", "ogden", "--mu", "630", "1.2", "-10", "--exponents", "1.3", "5", "-2"],
+    ["--law", "ogden", "--mu", "1", "--exponents", "-2"], ["--law", "ogden", "--mu", "1", "2", "--exponents", "2"],
+    ["--law", "yeoh", "--c10", "1"], ["--law", "gent", "--mu", "1", "2", "--jm", "1"], ["--law", "nope"],
+    ["--law", "neo-hookean", "--mu", "1e300"], ["--law", "neo-hookean", "--mu", "nan"], ["--mu", "1"],
+    ["--law", "yeoh", "--c10", "1e-300", "--c20", "0", "--c30", "0"]])
+#: a fluid for compress: a gas with plausible and extreme ambient pressures and exponents, stray gas flags
+_FLUIDS = st.one_of(
+    st.tuples(st.sampled_from(["6.5", "0.1", "1e4", "0", "-1", "nan", "1e300", "x"]),
+              st.sampled_from(["1", "1.4", "5/3", "0.9", "2", "x"])).map(
+        lambda ag: ["--fluid", "gas", "--ambient", ag[0], "--gamma", ag[1]]),
+    st.sampled_from([["--fluid", "gas"], ["--ambient", "6"], ["--gamma", "1.4"], ["--fluid", "water"],
+                     ["--fluid", "liquid"]]))
 
 
 @st.composite
@@ -50,6 +66,14 @@ def _solve_argv(draw):
             argv += [flag, *(draw(_number(flag)) for _ in range(count))]
     for flag in draw(st.lists(st.sampled_from(sorted(_OPTIONS)), max_size=2, unique=True)):
         argv += [flag, draw(_OPTIONS[flag])]
+    if draw(st.integers(0, 2)) == 0:  # another law, mostly without --alpha
+        rubber = draw(_RUBBERS)
+        if "--alpha" in argv and draw(st.integers(0, 4)):
+            k = argv.index("--alpha")
+            del argv[k:k + 2]
+        argv += rubber
+    if command == "compress" and draw(st.integers(0, 2)) == 0:
+        argv += draw(_FLUIDS)
     if "fem" in argv and "--elements" not in argv:
         argv += ["--elements", "12"]
     argv += draw(st.lists(st.sampled_from(_SWITCHES), max_size=1))
@@ -59,8 +83,8 @@ def _solve_argv(draw):
 _CASE = """
 [sheet]
 thickness = {thickness}
-modulus = "1 MPa"
-alpha = {alpha}
+{rubber}
+{fluid}
 [clamp]
 radius = "20 mm"
 [initial]
@@ -75,8 +99,20 @@ radius = "20 mm"
 def _case_text(draw):
     value = st.one_of(st.sampled_from(['"0.25 mm"', '"-1 mm"', '"1e300 m"', '"4 kPa"', "0.00025", '["x"]', "true",
                                        '"nan m"', '"1 parsec"']), _TEXT.map(repr))
+    alpha = draw(st.sampled_from(["0.3", "-1", "1e300", '"0.3"', "0", "nan"]))
+    rubber = draw(st.sampled_from([f'modulus = "1 MPa"\nalpha = {alpha}'] * 3 + [
+        'material = "yeoh"\nc10 = "85 kPa"\nc20 = "2 kPa"\nc30 = "0.1 kPa"',
+        'material = "gent"\nmu = "0.4 MPa"\njm = 1',
+        'material = "ogden"\nmu = ["630 kPa", "1.2 kPa", "-10 kPa"]\nexponents = [1.3, 5.0, -2.0]',
+        'material = "ogden"\nmu = ["630 kPa"]\nexponents = ["2"]', 'material = "gent"\nmu = "0.4 MPa"\njm = "1 kPa"',
+        'material = "yeoh"\nc10 = "85 mm"\nc20 = 0\nc30 = 0', 'material = "neo-hookean"\nmu = "1e-300 Pa"',
+        'material = "neo-hookean"\nmu = "0.4 MPa"\nalpha = 0.3', 'material = "rubber"']))
+    fluid = draw(st.sampled_from(["", "[fluid]\nkind = \"gas\"", "[fluid]\nkind = \"gas\"\ngamma = 1.4",
+                                  "[fluid]\nkind = \"gas\"\nambient = \"1e-15 Pa\"",
+                                  "[fluid]\nkind = \"gas\"\nambient = \"0 Pa\"", "[fluid]\ngamma = 1.4",
+                                  "[fluid]\nkind = \"gas\"\ngamma = 9", "fluid = \"gas\""]))
     return _CASE.format(
-        thickness=draw(value), alpha=draw(st.sampled_from(["0.3", "-1", "1e300", '"0.3"', "0", "nan"])),
+        thickness=draw(value), rubber=rubber, fluid=fluid,
         initial=draw(st.sampled_from(['height = "10 mm"', 'pressure = "4 kPa"', 'volume = "2 mL"', 'height = "1 m"',
                                       'pressure = "0 Pa"', "", 'height = "10 mm"\nvolume = "1 mL"'])),
         loads=draw(st.sampled_from(['forces = ["0.2 N", "0.5 N"]', 'heights = ["9 mm"]', 'heights = ["20 mm"]',

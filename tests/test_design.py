@@ -128,3 +128,79 @@ def test_paper_design_outside_the_model_is_said_not_fatal():
     assert d.paper_model_height_m is None and d.paper_model_height_ratio is None
     state = shooting.compress(0.0, d.pressure_initial, d.force)
     assert state.inflated.height == pytest.approx(0.8, rel=1e-6) and state.height_ratio == pytest.approx(0.8, rel=1e-6)
+
+
+@pytest.fixture(scope="module")
+def gas_designs(example):
+    """The section 6 button filled with air at 101325 Pa, slow (isothermal) and fast (adiabatic)."""
+    from pocket.core.fluids import gas
+
+    return {gamma: design(R, H0, E, ALPHA, F, RATIO, fluid=gas(101325.0, gamma)) for gamma in (1.0, 1.4)}
+
+
+@pytest.mark.parametrize("gamma", [1.0, 1.4])
+def test_gas_button_fed_back(gas_designs, gamma):
+    """Exact: the forward solver at the designed (P_I, T), with the gas at Phat_atm = P_atm R / (E T),
+    gives H0 and H/H0 = 0.8 at F (1e-6, the bar above); the report carries that Phat_atm."""
+    from pocket.core.fluids import gas
+
+    d = gas_designs[gamma]
+    phat_atm = 101325.0 * R / (E * d.thickness_m)
+    state = shooting.compress(ALPHA, d.pressure_initial_Pa * R / (E * d.thickness_m),
+                              F / (d.pressure_initial_Pa * math.pi * R**2), fluid=gas(phat_atm, gamma))
+    assert state.inflated.height * R == pytest.approx(H0, rel=1e-6)
+    assert state.height_ratio == pytest.approx(RATIO, rel=1e-6)
+    report = d.report()
+    assert report["ambient"] == pytest.approx(phat_atm, rel=1e-12)
+    assert (report["fluid"], report["ambient_Pa"], report["gamma"]) == ("gas", 101325.0, gamma)
+    assert report["material"] == "mooney-rivlin"
+
+
+def test_gas_button_is_softer_and_its_root_unique(example, gas_designs):
+    """A gas is softer than the liquid, and softer when isothermal than adiabatic, so the same H/H0 at F
+    needs a smaller Fhat (a higher P_I): Fhat iso < adiabatic < liquid. Along the design's path
+    (Phat_atm = P_atm Phat_I pi R^2 Fhat / F) H/H0 falls strictly at 25 forces up to the liquid's
+    Fhat: one root (the module docstring's claim, checked)."""
+    from pocket.core.fluids import gas
+
+    assert gas_designs[1.0].force < gas_designs[1.4].force < example.force
+    assert gas_designs[1.0].pressure_initial_Pa > gas_designs[1.4].pressure_initial_Pa > example.pressure_initial_Pa
+    phat_i = example.pressure_initial
+    for gamma in (1.0, 1.4):
+        ratios = [shooting.compress(ALPHA, phat_i, f, fluid=gas(101325.0 * phat_i * math.pi * R**2 * f / F, gamma))
+                  .height_ratio for f in np.linspace(0.02, 1.0, 25) * example.force]
+        assert np.all(np.diff(ratios) < 0), ratios
+
+
+def test_another_law_and_cli(capsys):
+    """Exact: a Yeoh button (parameters in any unit, E = --modulus) by the command line, fed back to the
+    forward solver with the rubber in units of mu_0 and the gas's Phat_atm: H0 and H/H0 = 0.8 at F."""
+    from pocket.core.fluids import gas
+    from pocket.core.materials import check
+
+    argv = ["design", "--radius", "20 mm", "--height", "10 mm", "--modulus", "1 MPa", "--law", "yeoh", "--c10", "85",
+            "--c20", "2", "--c30", "0.1", "--force", "0.67 N", "--fluid", "gas", "--gamma", "1.4", "--json"]
+    assert main(argv) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert (out["material"], out["c10"], out["fluid"], out["ambient_Pa"]) == ("yeoh", 0.5, "gas", 101325.0)
+    p_i, t = out["pressure_initial_Pa"], out["thickness_m"]
+    rubber = check("yeoh", {"c10": 85.0, "c20": 2.0, "c30": 0.1}).scaled()
+    state = shooting.compress(rubber, p_i * R / (E * t), F / (p_i * math.pi * R**2),
+                              fluid=gas(101325.0 * R / (E * t), 1.4))
+    assert state.inflated.height * R == pytest.approx(H0, rel=1e-6)
+    assert state.height_ratio == pytest.approx(RATIO, rel=1e-6)
+
+
+@pytest.mark.parametrize("extra, message", [
+    (["--gamma", "1.4"], "--gamma applies to a gas: give --fluid gas"),
+    (["--fluid", "gas", "--ambient", "0 kPa"], "--ambient = '0 kPa', but the ambient (absolute) pressure must be > 0"),
+    (["--fluid", "gas", "--ambient", "1 m"], "--ambient = '1 m' has dimension [length], but a pressure"),
+    (["--fluid", "gas", "--gamma", "2"], "--gamma = 2.0, but it must lie in [1, 5/3]"),
+    (["--law", "neo-hookean", "--mu", "1"], "--alpha is not a parameter of the neo-hookean law"),
+])
+def test_cli_bad_fluid_or_law(extra, message, capsys):
+    argv = ["design", "--radius", "20 mm", "--height", "10 mm", "--modulus", "1 MPa", "--alpha", "0.3",
+            "--force", "0.67 N", *extra]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and message in err, err

@@ -105,3 +105,48 @@ def test_pressure_past_the_range_names_the_highest(pocket, capsys):
     err = capsys.readouterr().err
     assert f"pressure = '60 kPa' is beyond the model's range (it reaches {q * 4.81275:.6g} kPa, " \
            f"P/P_I = {q:.6g})" in err, err
+
+
+@pytest.fixture(scope="module", params=[1.0, 1.4], ids=["isothermal", "adiabatic"])
+def barometer(request, tmp_path_factory):
+    """Sample 1 filled with air at 101.325 kPa: the barometric touch sensor."""
+    from pocket.apps.cases import load
+
+    path = tmp_path_factory.mktemp("gas") / "gas.toml"
+    path.write_text(f'[sheet]\nthickness = "0.25 mm"\nc1 = "160 kPa"\nc2 = "47 kPa"\n[fluid]\nkind = "gas"\n'
+                    f'gamma = {request.param}\n[clamp]\nradius = "20 mm"\n[initial]\npressure = "4.81275 kPa"\n'
+                    '[loads]\nforces = ["0 N", "6 N"]\n')
+    return resolve(load(path))
+
+
+def test_gas_pressure_rise_is_monotone(barometer):
+    """The inversion needs P/P_I to grow with the force: checked at 60 forces from 0 to 0.999 of the end of
+    the range (where the free part reaches the clamp plane) for an isothermal and an adiabatic gas. And the
+    gas, being compressed too, rises less than the liquid at every force up to Fhat = 5 (the paper's range and
+    well beyond). Not at every force: near the end of the range (Fhat > 6.4 isothermal, 6.6 adiabatic,
+    measured) the liquid's fixed volume stretches the contact zone more (lambda_c 1.34 against 1.23 at
+    Fhat = 9), so its deformed contact area is larger and its pressure F / A_c lower than the gas's."""
+    from pocket.apps.inverse import range_end
+
+    end = range_end(shooting, barometer.material, barometer.pressure_initial, **barometer.options())
+    forces = np.linspace(0.0, 0.999 * end, 60)
+    gas_rise = [s.pressure_ratio for s in shooting.compression_curve(barometer.material, barometer.pressure_initial,
+                                                                     forces, **barometer.options())]
+    assert np.all(np.diff(gas_rise) > 0), gas_rise
+    low = (forces > 0) & (forces <= 5.0)
+    liquid = [s.pressure_ratio for s in shooting.compression_curve(barometer.material, barometer.pressure_initial,
+                                                                   forces[low])]
+    assert np.all(np.array(gas_rise)[low] < liquid)
+
+
+def test_gas_round_trip(barometer):
+    """Exact: the force read off the pressure the forward solver gives (with the gas) is that force, to
+    1e-8, and F = P A_c holds; the reading says which rubber and gas (Phat_atm) it was read with."""
+    for fhat in (0.05, 0.5, 3.0):
+        state = shooting.compress(barometer.material, barometer.pressure_initial, fhat, **barometer.options())
+        reading = sense(barometer, ratio=state.pressure_ratio)
+        assert reading.force == pytest.approx(fhat, rel=1e-8)
+        assert reading.contact_area_m2 * reading.pressure_Pa == pytest.approx(reading.force_N, rel=1e-8)
+        row = reading.row()
+        assert (row["material"], row["fluid"], row["ambient"]) == ("mooney-rivlin", "gas", barometer.fluid.ambient)
+        assert row["gamma"] == barometer.case.fluid.gamma

@@ -18,10 +18,10 @@ def test_cases_cover_the_paper():
     cases = [p.case for p in pockets]
     for number in (1, 2, 3, 4):
         table1 = sample(number)
-        same = [c for c in cases if (c.thickness, c.c1, c.c2, c.radius) ==
-                (table1.thickness, table1.c1, table1.c2, table1.radius)]
+        same = [c for c in cases if (c.thickness, c.material, c.radius) ==
+                (table1.thickness, table1.material, table1.radius)]
         assert same, f"no case with the sheet of sample {number}"
-    silicone = [p for p in pockets if p.case.c2 / p.case.c1 == 47 / 160]
+    silicone = [p for p in pockets if p.case.alpha == 47 / 160]
     assert min(p.pressure_initial_Pa for p in silicone) == pytest.approx(2e3, rel=1e-12)
     assert max(p.pressure_initial_Pa for p in silicone) == pytest.approx(5e3, rel=1e-12)
     assert {c.alpha for c in cases} >= {0.0, 1.0, 47 / 160}
@@ -33,9 +33,22 @@ def test_cases_cover_the_paper():
     assert button.radius == 20e-3 and button.force == 0.67 and button.height_ratio == 0.8
 
 
+def _modulus(sheet, si) -> float:
+    """E = 3 mu_0 of a [case.sheet] table, by hand per law from the TOML's text."""
+    law = sheet.get("material", "mooney-rivlin")
+    if law == "mooney-rivlin":
+        return 6 * (si(sheet["c1"]) + si(sheet["c2"]))  # 6 (1 + alpha) C1
+    if law == "yeoh":
+        return 6 * si(sheet["c10"])
+    if law == "ogden":
+        return 1.5 * sum(si(m) * a for m, a in zip(sheet["mu"], sheet["exponents"], strict=True))
+    return 3 * si(sheet["mu"])  # neo-Hookean and Gent
+
+
 def test_dimensionless_numbers():
     """Exact answer: the paper's definitions recomputed from the TOML's own text, units read by hand:
-    alpha = C2/C1, E = 6 (1 + alpha) C1, Phat_I = P_I R / (E T)."""
+    alpha = C2/C1, E = 3 mu_0 (6 (1 + alpha) C1 for Mooney-Rivlin, 6 C10 for Yeoh, (3/2) sum mu_p alpha_p
+    for Ogden, 3 mu for Gent), Phat_I = P_I R / (E T), and a gas's Phat_atm = P_atm R / (E T)."""
 
     def si(text):  # the file's two units, by hand: an independent reading of pocket.core.units'
         number, unit = text.split()
@@ -45,17 +58,49 @@ def test_dimensionless_numbers():
     pockets = load()[0]
     for pocket in pockets:
         t = raw[pocket.case.name]
-        c1, c2, thickness = (si(t["sheet"][k]) for k in ("c1", "c2", "thickness"))
+        thickness, modulus = si(t["sheet"]["thickness"]), _modulus(t["sheet"], si)
         radius, pressure = si(t["clamp"]["radius"]), si(t["initial"]["pressure"])
-        alpha = c2 / c1
-        modulus = 6 * (1 + alpha) * c1
-        assert pocket.alpha == pytest.approx(alpha, rel=1e-15)
+        if "c1" in t["sheet"]:
+            assert pocket.alpha == pytest.approx(si(t["sheet"]["c2"]) / si(t["sheet"]["c1"]), rel=1e-15)
+        else:
+            assert pocket.alpha is None and pocket.case.material.law == t["sheet"]["material"]
         assert pocket.case.modulus == pytest.approx(modulus, rel=1e-15)
         assert pocket.pressure_initial == pytest.approx(pressure * radius / (modulus * thickness), rel=1e-14)
+        if "fluid" in t:
+            ambient = si(t["fluid"]["ambient"])
+            assert pocket.fluid.ambient == pytest.approx(ambient * radius / (modulus * thickness), rel=1e-14)
+            assert pocket.fluid.gamma == t["fluid"]["gamma"]
     head = next(p for p in pockets if "headline" in p.case.tags)
     # the paper's fig. 2 case: sample 1 at Phat_I = 0.31, E = 1.242 MPa (Table 1)
     assert head.pressure_initial == pytest.approx(0.31, rel=1e-12)
     assert head.case.modulus == pytest.approx(1.242e6, rel=1e-12)
+
+
+def test_cases_cover_every_law_and_fluid():
+    """The suite holds a pocket of each other law (Yeoh, Ogden, Gent) and gas-filled pockets, isothermal and
+    adiabatic, each with FE columns to near the end of its range in both plans; the Gent pocket gets near its
+    lock (I1 - 3 above 0.8 Jm at 0.95 of its range end, from its shooting profile); the "fluids" pockets are one
+    sheet at one P_I with a liquid and both gases (the liquid-vs-gas figure)."""
+    import numpy as np
+
+    from pocket import shooting
+
+    pockets = load()[0]
+    laws = {p.case.material.law for p in pockets if "fem-range" in p.case.tags}
+    assert laws >= {"yeoh", "ogden", "gent"}
+    gases = {p.case.fluid.gamma for p in pockets if p.case.fluid.is_gas and "fem-range" in p.case.tags}
+    assert gases == {1.0, 1.4}
+    for plan in (DEFAULT, QUICK):
+        assert None in plan.fem["fem-range"] and 0.0 in plan.fem["fem-range"]
+    fluids = [p for p in pockets if "fluids" in p.case.tags]
+    assert len({(p.case.thickness, p.case.material, p.case.radius, p.pressure_initial_Pa) for p in fluids}) == 1
+    assert sorted((p.case.fluid.kind, p.case.fluid.gamma) for p in fluids) == [("gas", 1.0), ("gas", 1.4),
+                                                                               ("liquid", 1.0)]
+    gent = next(p for p in pockets if p.case.material.law == "gent")
+    state = shooting.compress(gent.material, gent.pressure_initial,
+                              0.95 * shooting.range_end(gent.material, gent.pressure_initial))
+    l1, l2 = state.profile.stretch_1, state.profile.stretch_2
+    assert np.max(l1**2 + l2**2 + (l1 * l2) ** -2 - 3) > 0.8 * gent.case.material["jm"]
 
 
 def test_button_rules():

@@ -55,7 +55,7 @@ def test_every_check_has_a_verdict_that_matches_its_numbers(report):
 def test_figure_csvs_hold_the_plotted_numbers(report):
     """Exact answer: each PNG has its CSV, with finite numbers; fig2's shooting profile ends at the clamp (1, 0)."""
     out = report[1]
-    for name in ("fig2", "fig3a", "fig3b", "fig4", "fig5", "convergence"):
+    for name in ("fig2", "fig3a", "fig3b", "fig4", "fig5", "fluids", "laws", "convergence"):
         png = out / f"{name}.png"
         assert png.stat().st_size > 10_000 and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
         rows = _rows(out / f"{name}.csv")
@@ -179,13 +179,13 @@ def test_legends_name_pockets_and_solvers_once(report):
     solver; the headline pocket comes first, broad and beneath the others (lower zorder), so that a curve
     lying on it shows inside it."""
     from pocket.validation.draw import _style
-    from pocket.validation.figures import figures
+    from pocket.validation.figures import figures, paper_pockets
 
     results = report[2]
     fig = next(f for f in figures(results) if f.name == "fig3a")
     series = [s for panel in fig.panels for s in panel.series]
     groups = {s.group for s in series}
-    assert len(groups) == len(results.pockets) and len({s.solver for s in series}) == 4
+    assert len(groups) == len(paper_pockets(results.pockets)) and len({s.solver for s in series}) == 4
     assert not groups & {p.case.name for p in results.pockets}
     head = [s for s in series if s.emphasis]
     assert {s.group for s in head} == {next(s.group for s in series)}  # the headline, first
@@ -339,3 +339,52 @@ def test_converge_prints_orders_and_richardson(tmp_path, capsys):
     orders = [r for r in _rows(tmp_path / "conv" / "checks.csv")
               if r["step"] == "order" and r["where"].startswith("inflation")]
     assert {float(r["reference"]) for r in orders} == {2.0, 4.0} and all(r["verdict"] == "pass" for r in orders)
+
+
+def test_every_law_and_fluid_is_cross_checked(report):
+    """Exact answer: in the quick plan too, each pocket of another law and each gas-filled pocket has FE P1 and
+    P2 columns compared with shooting on every reported scalar, at the inflated state, Fhat = 1 and near the
+    end of its range, within the stated tolerances (P2 1e-9, P1 1e-6); its fluid's own law holds at each FE
+    state; and every pocket has its wrinkling verdict for each solver."""
+    from pocket.validation.verdicts import MEMBRANE, TOLERANCES
+
+    results = report[2]
+    others = [p for p in results.pockets if p.case.material.law != "mooney-rivlin" or p.case.fluid.is_gas]
+    assert len(others) == 5
+    for pocket in others:
+        name = pocket.case.name
+        for label, key in (("FEM P1", "fem_p1"), ("FEM P2", "fem_p2")):
+            rows = [c for c in results.checks if c.case == name and c.comparison == f"{label} vs shooting"]
+            scalars = [c for c in rows if c.quantity in ("pressure", "height", "volume", "contact_radius")]
+            assert {c.where for c in scalars} >= {"Fhat = 1"} and len({c.where for c in rows}) == 3
+            assert all(c.tolerance == TOLERANCES[key][0] and c.verdict == "pass" for c in scalars)
+            fluid = [c for c in results.checks if c.case == name and c.comparison == label
+                     and c.step == "consistency" and "V_I" in c.quantity]
+            assert len(fluid) == 2 and all(c.verdict == "pass" for c in fluid)
+            assert ("gas law" in fluid[0].quantity) == pocket.case.fluid.is_gas
+    for pocket in results.pockets:
+        verdicts = [c for c in results.checks if c.case == pocket.case.name and c.comparison == MEMBRANE]
+        assert verdicts and all(c.verdict == "pass" and c.value > 0 for c in verdicts)
+
+
+def test_fluids_figure_compares_gas_and_liquid_at_one_force(report):
+    """Exact answer: panel (c) of the fluids figure is (P/P_I)_gas / (P/P_I)_liquid - 1 at the gas's forces;
+    at three of them the liquid solved there by shooting gives the same number to 1e-6 (the spline through
+    the liquid's states is that close); the gas rises less at moderate force (negative near Fhat = 1) and the
+    curves cross before the end of the liquid's range."""
+    from pocket.validation.figures import figures, pocket_label
+
+    from pocket import shooting
+
+    results = report[2]
+    fig = next(f for f in figures(results) if f.name == "fluids")
+    liquid = next(p for p in results.pockets if "fluids" in p.case.tags and not p.case.fluid.is_gas)
+    for series in fig.panels[2].series:
+        gas = next(p for p in results.pockets if pocket_label(p) == series.group)
+        for k in (len(series.x) // 4, len(series.x) // 2, -1):
+            f = float(series.x[k])
+            q_gas = shooting.compress(gas.material, gas.pressure_initial, f, **gas.fluid_options()).pressure_ratio
+            q_liquid = shooting.compress(liquid.material, liquid.pressure_initial, f).pressure_ratio
+            assert series.y[k] == pytest.approx(q_gas / q_liquid - 1.0, abs=1e-6)
+        near_one = int(np.argmin(np.abs(series.x - 1.0)))
+        assert series.y[near_one] < 0.0 < series.y[-1]

@@ -15,9 +15,10 @@ import meshio
 import numpy as np
 import pytest
 
+from pocket import shooting
 from pocket.apps import resampling, vtkfiles
 from pocket.core.errors import InputError
-from pocket.core.states import CompressedState, InflatedState, Profile
+from pocket.core.states import CHECKS, CompressedState, InflatedState, Profile
 
 NAMES = {"lambda_1", "lambda_2", "lambda_3", "T_1", "T_2", "contact", "displacement", "r"}
 
@@ -421,17 +422,30 @@ def test_series_has_one_point_set(tmp_path):
         assert profile.points[edge, 0] == pytest.approx(1.2 * state.contact_radius, abs=1e-15)
 
 
+def _numbers(state) -> dict:
+    """What the field data must hold: the state's numeric attributes and those of its material and fluid."""
+    out = {k: [float(getattr(state, k))] for k in (*state.KEYS, *CHECKS) if getattr(state, k) is not None}
+    params = dict(state.material.params)
+    if hasattr(state, "fluid") and state.fluid.is_gas:
+        params.update(ambient=state.fluid.ambient, gamma=state.fluid.gamma)
+    out.update({k: list(v) if isinstance(v, tuple) else [v] for k, v in params.items()})
+    return out
+
+
 def test_field_data_round_trip(tmp_path):
     """Exact answer: each step carries its state's scalars (force, pressure, P/P_I, height, volume,
-    contact radius, ...) as field data; meshio and pyvista's PVD reader give them back exactly."""
+    contact radius, ..., the smallest tensions, the wrinkling flag as 0 or 1, the rubber's
+    parameters c1 and c2 in units of mu_0) as field data; meshio and pyvista's PVD reader give them
+    back exactly."""
     states, forces = series()
     out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=6)
     for k, state in enumerate(states):
         for part in ("profile", "surface"):
             back = meshio.read(out / f"step_{k:04d}_{part}.vtu")
-            assert set(back.field_data) == set(CompressedState.KEYS)
-            for key in CompressedState.KEYS:
-                assert back.field_data[key].tolist() == [float(getattr(state, key))], key
+            expected = _numbers(state)
+            assert set(expected) == {*CompressedState.KEYS, *CHECKS, "c1", "c2"}
+            assert {key: values.tolist() for key, values in back.field_data.items()} == expected
+            assert back.field_data["wrinkled"].tolist() == [0.0]
     pv = pytest.importorskip("pyvista")
     reader = pv.get_reader(out / "surface.pvd")
     for state, force in zip(states, forces, strict=True):
@@ -445,5 +459,21 @@ def test_inflated_state_field_data():
     """Exact answer: an inflated state carries its own keys (pressure, stretch_pole, height, ...)."""
     state = cap(0.5)
     mesh = vtkfiles.profile_mesh(state)
-    assert {k: v.tolist() for k, v in mesh.field_data.items()} == {k: [float(getattr(state, k))]
-                                                                   for k in InflatedState.KEYS}
+    assert {k: v.tolist() for k, v in mesh.field_data.items()} == _numbers(state)
+    assert set(_numbers(state)) == {*InflatedState.KEYS, *CHECKS, "c1", "c2"}
+
+
+def test_other_law_and_gas_field_data(tmp_path):
+    """Exact answer: an Ogden rubber in a gas-filled pocket carries no alpha, its mu and exponents one
+    value per term (units of mu_0 and numbers), and the gas's Phat_atm and gamma; written and read
+    back exactly."""
+    from pocket.core.fluids import gas
+    from pocket.core.materials import check
+
+    ogden = check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}).scaled()
+    state = shooting.compress(ogden, 0.3, 0.2, fluid=gas(6.5, 1.4))
+    paths = vtkfiles.write_state(tmp_path, state, segments=6)
+    back = meshio.read(paths[0])
+    expected = _numbers(state)
+    assert "alpha" not in expected and expected["exponents"] == [1.3, 5.0, -2.0] and expected["ambient"] == [6.5]
+    assert {key: values.tolist() for key, values in back.field_data.items()} == expected

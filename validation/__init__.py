@@ -12,7 +12,8 @@ Modules: ``suite`` (the pockets of cases.toml, read as case files, and the
 button of the paper's section 6), ``plan`` (what a run computes, the solver
 columns), ``compute`` / ``convergence`` / ``evidence`` (the solves),
 ``verdicts`` and ``findings`` (tolerances, verdicts, the paper's statements),
-``runner`` (the parallel run), ``figures`` / ``draw`` / ``render`` (plots, 3-D picture),
+``runner`` (the parallel run), ``figures`` / ``others`` / ``draw`` / ``render`` (the
+paper's figures, the gas and other-law figures, plots, 3-D picture), ``pockets`` /
 ``sections`` / ``document`` / ``report`` (the report folder).
 """
 

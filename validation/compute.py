@@ -7,13 +7,15 @@ largest Fhat with a compressed state (past it the free part of the sheet
 reaches the clamp plane).
 ``column_curve(pocket, column, forces)``: a solver column's curve (the FE columns).
 Each solver is reached through its record (``pocket.apps.solvers.get_solver``)
-with the column's options. Every function returns frozen dataclasses
+with the column's options, the pocket's rubber (``Pocket.material``) and its fluid
+(``Pocket.fluid_options``: a gas's Phat_atm). Every function returns frozen dataclasses
 (picklable) and draws nothing.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import numpy as np
 
@@ -61,8 +63,13 @@ class ColumnCurve:
 
 def range_end(pocket: Pocket, column: Column = REFERENCE, *, rtol: float = RANGE_RTOL) -> float:
     """The end of ``column``'s compression range in Fhat, to relative ``rtol`` (a lower bound)."""
-    return model_range_end(get_solver(column.solver), pocket.alpha, pocket.pressure_initial, rtol=rtol,
-                           **column.kwargs())
+    end = model_range_end(get_solver(column.solver), pocket.material, pocket.pressure_initial, rtol=rtol,
+                          **column.kwargs(), **pocket.fluid_options())
+    if not math.isfinite(end):  # a Gent rubber that locks before the sheet reaches the clamp plane
+        raise OutOfRangeError(f"{pocket.case.name}: its compression range has no end (the rubber locks first), "
+                              "and the suite runs each curve to a fraction of that end: choose a pocket whose "
+                              "range ends")
+    return end
 
 
 def force_grid(force_end: float, points: int, extra=()) -> np.ndarray:
@@ -75,17 +82,19 @@ def force_grid(force_end: float, points: int, extra=()) -> np.ndarray:
 
 
 def fem_forces(plan_forces, force_end: float) -> list[float]:
-    """A plan's FE forces with None replaced by RANGE_FRACTION * force_end."""
-    return [RANGE_FRACTION * force_end if f is None else float(f) for f in plan_forces]
+    """A plan's FE forces with None replaced by RANGE_FRACTION * force_end, and those past it left out
+    (a pocket whose range ends early)."""
+    top = RANGE_FRACTION * force_end
+    return [top if f is None else float(f) for f in plan_forces if f is None or f <= top]
 
 
 def _pointwise(pocket, column, forces):
     """``column``'s state at each force, None past its own range."""
-    solver, options = get_solver(column.solver), column.kwargs()
+    solver, options = get_solver(column.solver), {**column.kwargs(), **pocket.fluid_options()}
     out = []
     for force in forces:
         try:
-            out.append(solver.compress(pocket.alpha, pocket.pressure_initial, float(force), **options))
+            out.append(solver.compress(pocket.material, pocket.pressure_initial, float(force), **options))
         except OutOfRangeError:
             out.append(None)
     return tuple(out)
@@ -103,6 +112,6 @@ def reference(pocket: Pocket, plan: Plan) -> Curves:
 def column_curve(pocket: Pocket, column: Column, forces) -> ColumnCurve:
     """The compression curve of ``pocket`` at ``forces`` by the solver of ``column``."""
     solver = get_solver(column.solver)
-    states = solver.compression_curve(pocket.alpha, pocket.pressure_initial, [float(f) for f in forces],
-                                      **column.kwargs())
+    states = solver.compression_curve(pocket.material, pocket.pressure_initial, [float(f) for f in forces],
+                                      **column.kwargs(), **pocket.fluid_options())
     return ColumnCurve(pocket=pocket, column=column, states=tuple(states))

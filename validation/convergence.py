@@ -92,17 +92,18 @@ def sequence(case: Pocket, study: str, order: int, mesh: str, counts) -> Sequenc
     from pocket import fem, meshes, shooting
 
     start = time.perf_counter()
-    alpha, pressure = case.alpha, case.pressure_initial
-    ref = shooting.inflate(alpha, pressure) if study == "inflation" else shooting.compress(alpha, pressure, FORCE)
+    rubber, pressure, sealed = case.material, case.pressure_initial, case.fluid_options()
+    ref = shooting.inflate(rubber, pressure) if study == "inflation" else \
+        shooting.compress(rubber, pressure, FORCE, **sealed)
     names = QUANTITIES[study]
     values, sizes = {name: [] for name in names}, []
     for n in counts:
         grid = fem.default_mesh(n) if mesh == "fitted" else meshes.uniform(n)
         if study == "inflation":
-            state = fem.inflate(alpha, pressure, mesh=grid, order=order)
+            state = fem.inflate(rubber, pressure, mesh=grid, order=order)
         else:
             contact = "fitted" if mesh == "fitted" else "penalty"
-            state = fem.compress(alpha, pressure, FORCE, mesh=grid, order=order, contact=contact)
+            state = fem.compress(rubber, pressure, FORCE, mesh=grid, order=order, contact=contact, **sealed)
         sizes.append(_largest_element(state, study, mesh))
         for name in names:
             values[name].append(float(getattr(state, name)))

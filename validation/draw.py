@@ -88,11 +88,13 @@ def draw(figure, directory) -> pathlib.Path:
         for s in panel.series:
             ax.plot(s.x, s.y, label=math_text(s.label), **_style(s, colors))
         for x, y, text in panel.marks:
-            ax.axvline(x, color="0.4", linewidth=0.8, linestyle=":")
-            ax.axhline(y, color="0.4", linewidth=0.8, linestyle=":")
-            # in the empty top-right corner, not over the curves
-            ax.text(0.98, 0.97, math_text(text) + " (dotted)", transform=ax.transAxes, ha="right", va="top",
-                    fontsize=8, color="0.3")
+            if x is not None:
+                ax.axvline(x, color="0.4", linewidth=0.8, linestyle=":")
+            if y is not None:
+                ax.axhline(y, color="0.4", linewidth=0.8, linestyle=":")
+            if text:  # in the empty top-right corner, not over the curves
+                ax.text(0.98, 0.97, math_text(text) + " (dotted)", transform=ax.transAxes, ha="right", va="top",
+                        fontsize=8, color="0.3")
         if "x" in panel.log:
             ax.set_xscale("log")
         if "y" in panel.log:

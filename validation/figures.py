@@ -21,7 +21,8 @@ from .convergence import observed_order
 from .plan import RANGE_FRACTION
 from .suite import headline
 
-__all__ = ["Series", "Panel", "Figure", "figures", "convergence_figure", "STYLES", "pocket_label"]
+__all__ = ["Series", "Panel", "Figure", "figures", "convergence_figure", "curve_series", "paper_pockets", "STYLES",
+           "pocket_label"]
 
 #: solver column label -> matplotlib style: line style, marker, marker face
 STYLES = {
@@ -57,7 +58,7 @@ class Panel:
     series: tuple
     log: str = ""  # axes on a log scale: "", "x" or "xy"
     equal: bool = False
-    marks: tuple = ()  # (x, y, text) annotations: a vertical line at x, a horizontal at y
+    marks: tuple = ()  # (x, y, text) annotations: a vertical line at x, a horizontal at y (None: none), the text
     limits: tuple | None = None  # ((x0, x1), (y0, y1))
     legend: bool = True
 
@@ -78,7 +79,7 @@ def _values(states, key):
     return np.array([getattr(s, key) for s in states])
 
 
-def _curve_series(results, key, pockets, approximate, xkey="force", top=None):
+def curve_series(results, key, pockets, approximate, xkey="force", top=None):
     """The reference for ``pockets``, solver columns (markers) where computed, the approximate model
     for the pockets in ``approximate``; the headline pocket first, emphasised."""
     head = headline(results.pockets)
@@ -150,7 +151,10 @@ def convergence_figure(results) -> Figure:
 
 
 def figures(results) -> list[Figure]:
-    """The paper's figs 2-5 and the convergence study, from a run's results."""
+    """The paper's figs 2-5, the other rubbers' and the gases' figures (``others``) and the convergence
+    study, from a run's results."""
+    from .others import other_figures
+
     head = headline(results.pockets)
     curves = results.curves_of(head)
     out = []
@@ -162,7 +166,7 @@ def figures(results) -> list[Figure]:
                             limits=limits))
     out.append(Figure("fig2", f"Fig. 2: profiles of {pocket_label(head)}, inflated (a) and compressed (b); FE "
                       f"nodes subsampled to {_PROFILE_MARKERS} markers.", tuple(panels)))
-    ordered = [head] + [p for p in results.pockets if p != head]
+    ordered = [head] + [p for p in paper_pockets(results.pockets) if p != head]
     fhat = "F / (P_I pi R^2)"
     h = results.button.height_ratio
     design = (1.0 / PAPER_FORCE_FACTOR, h, f"section 6: F/(P_I pi R^2) = 1/{PAPER_FORCE_FACTOR:g}, H / H_0 = {h:g}")
@@ -171,20 +175,27 @@ def figures(results) -> list[Figure]:
             ("fig3b", "height_ratio", "H / H_0", "Fig. 3b: normalised height", (design,), "x"),
             ("fig5", "pressure_ratio", "P / P_I", "Fig. 5: pressure rise", (), "xy")):
         near = Panel(f"(a) F/(P_I pi R^2) <= {_NEAR:g}", fhat, ylabel,
-                     _curve_series(results, key, ordered, (head,), top=_NEAR), marks=marks)
+                     curve_series(results, key, ordered, (head,), top=_NEAR), marks=marks)
         full = Panel(f"(b) each pocket to {RANGE_FRACTION:g} of the end of its range", fhat, ylabel,
-                     _curve_series(results, key, ordered, (head,)), log=log, marks=marks)
-        out.append(Figure(name, f"{caption} against the force: the shooting solver for every pocket, the FE "
+                     curve_series(results, key, ordered, (head,)), log=log, marks=marks)
+        out.append(Figure(name, f"{caption} against the force: the shooting solver for every pocket of the paper's "
+                          "rubber and fluid (Mooney-Rivlin, a liquid), the FE "
                           "model (markers) where computed, the analytical model for the headline pocket (the "
                           f"broad dark line); (a) the paper's range, (b) each pocket to {RANGE_FRACTION:g} of the "
                           "end of its range (where the free part of the sheet would reach the clamp plane; the "
                           f"headline's ends at F/(P_I pi R^2) = {curves.force_end:.3g}).", (near, full)))
     four = [p for p in results.pockets if "fig4" in p.case.tags]
-    series = _curve_series(results, "height", four, four, xkey="pressure_ratio")
+    series = curve_series(results, "height", four, four, xkey="pressure_ratio")
     out.append(Figure("fig4", "Fig. 4: height H/R against the pressure rise P/P_I for the four samples of Table 1 "
                       f"at the same P_I, each to {RANGE_FRACTION:g} of the end of its range (log scale in P/P_I); "
                       "solid: shooting, dashed: the analytical model.",
                       (Panel("", "P / P_I", "H / R", series, log="x"),)))
+    out += other_figures(results)
     if results.sequences:
         out.append(convergence_figure(results))
     return out
+
+
+def paper_pockets(pockets) -> list:
+    """The pockets of the paper's model: a Mooney-Rivlin rubber filled with a liquid."""
+    return [p for p in pockets if p.case.material.law == "mooney-rivlin" and not p.case.fluid.is_gas]

@@ -5,8 +5,12 @@ shooting and analytical columns are cheap (a compression curve in well under a
 second), so every case gets them in both plans. Finite-element curves cost the
 most, so the plan says per case tag at which forces the FE columns run: the
 headline case to the end of the range, the cases tagged "fem" (the alpha
-extremes, the lowest pressure) at a few forces, the others at their inflated
-state; ``--quick`` keeps the headline case's FE columns at three forces. The
+extremes, the lowest pressure) at a few forces, those tagged "fem-range" (the
+other rubber laws and the gas-filled pockets) from the inflated state to near
+the end of the range, the others at their inflated state; ``--quick`` keeps the
+headline case's FE columns at three forces and the "fem-range" cases' at the
+inflated state, Fhat = 1 and near the end of the range: every law and fluid is
+cross-checked in both plans. The
 report's timing table gives each task's seconds, to re-tune these numbers.
 
 A column is a solver of ``pocket.apps.solvers`` with options, checked by its
@@ -80,13 +84,14 @@ class Plan:
 DEFAULT = Plan(
     name="default",
     curve_points=40,
-    fem={"headline": (0.0, 0.05, 0.19, 0.5, 1.0, 2.0, 4.0, None), "fem": (0.0, 0.19, 1.0), "*": (0.0,)},
+    fem={"headline": (0.0, 0.05, 0.19, 0.5, 1.0, 2.0, 4.0, None), "fem": (0.0, 0.19, 1.0),
+         "fem-range": (0.0, 0.19, 1.0, 4.0, None), "*": (0.0,)},
     convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
 )
 
 QUICK = Plan(
     name="quick",
     curve_points=20,
-    fem={"headline": (0.0, 0.19, 1.0)},
+    fem={"headline": (0.0, 0.19, 1.0), "fem-range": (0.0, 1.0, None)},
     convergence_sizes={1: (32, 64, 128), 2: (16, 32, 64)},
 )

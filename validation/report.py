@@ -18,8 +18,9 @@ import pathlib
 
 from pocket.apps.folders import check_output_dir, staged
 from pocket.core.errors import InputError
+from pocket.core.states import CHECKS, CompressedState
 
-from . import document, draw, figures, render, sections
+from . import document, draw, figures, pockets, render, sections
 from . import verdicts as checks_module
 from .suite import headline
 
@@ -43,17 +44,19 @@ def _write_rows(path: pathlib.Path, header, rows) -> None:
 
 
 def _states_rows(results):
-    keys = None
+    """(header, rows): every compressed state of every solver, its keys (alpha empty for another law), its
+    smallest tensions and wrinkling flag."""
+    keys = (*CompressedState.KEYS, *CHECKS)
     rows = []
     for curves in results.curves:
         runs = [("shooting", curves.reference), ("analytical", [a for a in curves.approximate if a is not None])]
         runs += [(c.column.label, c.states) for c in results.columns if c.pocket == curves.pocket]
         for solver, states in runs:
             for state in states:
-                values = {k: getattr(state, k) for k in state.KEYS}
-                keys = keys or list(values)
-                rows.append([curves.pocket.case.name, solver] + [repr(float(values[k])) for k in keys])
-    return ["case", "solver"] + (keys or []), rows
+                values = [getattr(state, k) for k in keys]
+                rows.append([curves.pocket.case.name, solver, state.material.law, state.fluid.kind]
+                            + ["" if v is None else v if isinstance(v, bool) else repr(float(v)) for v in values])
+    return ["case", "solver", "material", "fluid", *keys], rows
 
 
 def _write_tables(results, directory: pathlib.Path) -> list[str]:
@@ -63,7 +66,7 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
     summary = checks_module.summary(results.checks)
     _write_rows(directory / "summary.csv", list(summary[0]) if summary else [],
                 [list(row.values()) for row in summary])
-    _write_rows(directory / "cases.csv", *sections.case_table(results))
+    _write_rows(directory / "cases.csv", *pockets.case_table(results))
     _write_rows(directory / "convergence_study.csv", *sections.sequence_rows(results))
     _write_rows(directory / "timing.csv", *sections.task_rows(results))
     names = ["checks.csv: every check (value, reference, error, tolerance, verdict)",

@@ -151,8 +151,10 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     rows = []
     for curve in curves:
         rows += verdicts.reference_checks(curve) + verdicts.analytical_checks(curve)
+        rows += verdicts.membrane_checks(curve.pocket.case.name, "shooting", curve.reference)
     for column in columns:
         rows += verdicts.fem_checks(by_pocket[column.pocket], column)
+        rows += verdicts.membrane_checks(column.pocket.case.name, column.column.label, column.states)
     rows += convergence.checks(sequences)
     found = ()
     proof = done["evidence"].get(None)

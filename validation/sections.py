@@ -8,29 +8,20 @@ tolerances and the provenance.
 
 from __future__ import annotations
 
-import math
-
 from pocket.apps.provenance import environment
 
 from .convergence import EXPECTED, FITTED_P2_FINEST, MESHES, RICHARDSON_FACTOR, richardson
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .figures import pocket_label
+from .pockets import case_table, cell
 from .runner import WORKERS
 from .suite import headline
-from .verdicts import TOLERANCES, summary
+from .verdicts import MEMBRANE, TOLERANCES, summary
 
-__all__ = ["blocks", "case_table", "sequence_rows", "counts", "glance", "task_rows"]
+__all__ = ["blocks", "sequence_rows", "counts", "glance", "task_rows"]
 
 #: the paper, cited where the report refers to it
 PAPER = "Bouremel et al., \"Compression of pressurised elastic pockets\""
-
-
-def _g(x, digits=4) -> str:
-    if x is None:
-        return ""
-    if isinstance(x, str):
-        return x
-    return "" if isinstance(x, float) and math.isnan(x) else f"{x:.{digits}g}"
 
 
 def _tolerance(tol) -> str:
@@ -58,27 +49,10 @@ def glance(results) -> tuple[list, list]:
         worst = max(scored, key=lambda c: c.error / c.tolerance) if scored else None
         where = f"{worst.case}: {worst.quantity} ({worst.where})" if worst else ""
         rows.append([comparison, len({c.case for c in group}), len(group), n["pass"], n["fail"], n["info"],
-                     _g(worst.error / worst.tolerance, 2) if worst else "", where,
+                     cell(worst.error / worst.tolerance, 2) if worst else "", where,
                      "fail" if n["fail"] else "pass" if n["pass"] else "info"])
     header = ["comparison", "pockets", "checks", "pass", "fail", "info", "largest error / tolerance",
               "where", "verdict"]
-    return header, rows
-
-
-def case_table(results):
-    """(header, rows): each pocket in SI and dimensionless, with the end of its range."""
-    header = ["case", "label", "T (mm)", "C1 (kPa)", "C2 (kPa)", "R (mm)", "P_I (kPa)", "alpha", "E (MPa)",
-              "Phat_I", "lambda_0", "H0/R", "range end Fhat"]
-    ends = {c.pocket: c for c in results.curves}
-    rows = []
-    for pocket in results.pockets:
-        case, curves = pocket.case, ends.get(pocket)
-        inflated = curves.reference[0].inflated if curves else None
-        rows.append([case.name, case.label, _g(case.thickness * 1e3), _g(case.c1 / 1e3), _g(case.c2 / 1e3),
-                     _g(case.radius * 1e3), _g(pocket.pressure_initial_Pa / 1e3, 6), _g(case.alpha),
-                     _g(case.modulus / 1e6), _g(pocket.pressure_initial),
-                     _g(inflated.stretch_pole, 6) if inflated else "", _g(inflated.height) if inflated else "",
-                     _g(curves.force_end) if curves else ""])
     return header, rows
 
 
@@ -103,8 +77,8 @@ def task_rows(results):
 
 
 def _summary_table(results):
-    rows = [[r["case"], r["comparison"], r["step"], r["checks"], r["worst"], _g(r["error"], 3),
-             _g(r["tolerance"], 3), r["verdict"]] for r in summary(results.checks)]
+    rows = [[r["case"], r["comparison"], r["step"], r["checks"], r["worst"], cell(r["error"], 3),
+             cell(r["tolerance"], 3), r["verdict"]] for r in summary(results.checks)]
     return ("table", ["case", "comparison", "step", "checks", "worst (quantity, where)", "error", "tolerance",
                       "verdict"], rows)
 
@@ -139,9 +113,10 @@ def _convergence_blocks(results):
             extrapolated = richardson(seq.sizes, values)
             value, estimate = (extrapolated[:2] if extrapolated else (None, None))
             rows.append([seq.study, f"P{seq.order}", seq.mesh, " ".join(map(str, seq.elements)), quantity,
-                         _g(order[0].value, 3) if order else "", _g(theory), _g(float(seq.errors(quantity)[-1]), 2),
-                         _g(value, 12), _g(estimate, 2), _g(seq.reference[quantity], 12),
-                         _g(abs(value - seq.reference[quantity]), 2) if value is not None else "not monotone"])
+                         cell(order[0].value, 3) if order else "", cell(theory),
+                         cell(float(seq.errors(quantity)[-1]), 2),
+                         cell(value, 12), cell(estimate, 2), cell(seq.reference[quantity], 12),
+                         cell(abs(value - seq.reference[quantity]), 2) if value is not None else "not monotone"])
     out.append(("table", ["study", "element", "meshes", "elements", "quantity", "observed order", "theory",
                           "finest error", "Richardson", "its error estimate", "shooting", "|Richardson - shooting|"],
                 rows))
@@ -167,8 +142,10 @@ def _findings_blocks(results):
 
 def _figure_blocks(results, figs, picture: bool, why: str) -> list:
     out = [("h", 2, "Figures"),
-           ("p", f"The paper's figures 2-5 ({PAPER}) recomputed: colours are pockets, line styles and markers "
-                 "are solvers; the headline pocket is the broad dark line, drawn beneath the others.")]
+           ("p", f"The paper's figures 2-5 ({PAPER}) recomputed for its rubber (Mooney-Rivlin) filled with a "
+                 "liquid, then the figures beyond the paper: one pocket filled with a liquid and with a gas, and "
+                 "other rubber laws. Colours are pockets, line styles and markers are solvers; the headline pocket "
+                 "is the broad dark line, drawn beneath the others.")]
     for fig in figs:
         if fig.name != "convergence":
             out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
@@ -185,9 +162,11 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
 def _pockets_blocks(results) -> list:
     header, rows = case_table(results)
     return [("h", 2, "Pockets"),
-            ("p", "From the cases file (the suite's own cases.toml unless --cases names another), in SI units; "
-                  "alpha = C2/C1, E = 6 (1 + alpha) C1, Phat_I = P_I R / (E T). The range ends where the free "
-                  "part of the sheet reaches the clamp plane (shooting, bisection)."),
+            ("p", "From the cases file (the suite's own cases.toml unless --cases names another), in SI units: "
+                  "the rubber's law and parameters (stresses in kPa), E = 3 mu_0 its small-strain Young's modulus "
+                  "(6 (1 + alpha) C1 for Mooney-Rivlin, alpha = C2/C1), Phat_I = P_I R / (E T), and for a gas "
+                  "(ambient pressure P_atm, exponent gamma) Phat_atm = P_atm R / (E T). The range ends where the "
+                  "free part of the sheet reaches the clamp plane (shooting, bisection)."),
             ("table", header, rows)]
 
 
@@ -216,6 +195,9 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
            ("h", 2, "Verdicts"),
            ("p", "One line per comparison over all pockets: a comparison fails if any of its checks fails; "
                  "'info' checks have no tolerance that should hold (the analytical model outside its range). "
+                 f"'{MEMBRANE}' is the wrinkling verdict: per pocket and solver it covers every state of the curve "
+                 "(each state's smallest tensions and wrinkled flag are in states.csv), and fails if any state has "
+                 "a tension <= 0 anywhere. "
                  "The largest error / tolerance is the closest call (1 is the limit). Per pocket: 'Verdicts "
                  "per pocket' below; every check: 'All checks' and checks.csv."),
            ("table", header, rows)]
@@ -246,6 +228,6 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
             ("h", 2, "All checks"),
             ("table", ["case", "comparison", "step", "quantity", "where", "value", "reference", "error",
                        "tolerance", "verdict"],
-             [[c.case, c.comparison, c.step, c.quantity, c.where, _g(c.value, 8), _g(c.reference, 8),
-               _g(c.error, 3), _g(c.tolerance, 3), c.verdict] for c in results.checks])]
+             [[c.case, c.comparison, c.step, c.quantity, c.where, cell(c.value, 8), cell(c.reference, 8),
+               cell(c.error, 3), cell(c.tolerance, 3), c.verdict] for c in results.checks])]
     return out

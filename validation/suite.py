@@ -21,9 +21,10 @@ from __future__ import annotations
 import dataclasses
 import pathlib
 
-from pocket.apps.cases import parse, read_toml
+from pocket.apps.cases import parse
 from pocket.apps.design import paper_rules
 from pocket.apps.physical import Pocket, resolve
+from pocket.apps.tomlfiles import read_toml
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_alpha, check_finite, quote
 from pocket.core.units import positive

@@ -12,21 +12,36 @@ import dataclasses
 
 import numpy as np
 
+from pocket.core.states import CHECKS
+
 from .plan import APPROXIMATE, REFERENCE
 
-__all__ = ["Check", "TOLERANCES", "fem_checks", "analytical_checks", "reference_checks", "summary"]
+__all__ = ["Check", "TOLERANCES", "MEMBRANE", "fem_checks", "analytical_checks", "reference_checks", "membrane_checks",
+           "summary"]
 
 #: name -> (tolerance, reason)
 TOLERANCES = {
-    "fem": (1e-5, "every scalar of the FE model within 1e-5 of the shooting solver at its default mesh: "
-                  "two independent discretisations of one model agree to their discretisation error "
-                  "(measured <= 3e-6 for P1, <= 5e-7 for P2 at 1000 elements)"),
+    "fem_p2": (1e-9, "every reported scalar of the P2 FE model at its default mesh (256 elements graded towards "
+                     "the axis, the contact edge fitted) within 1e-9 of the shooting solver, the design's quality "
+                     "bar: two independent discretisations of one model agree to their discretisation error "
+                     "(measured <= 6e-10 over every law and fluid of the suite, the largest for Gent near its lock "
+                     "at 0.95 of its range)"),
+    "fem_p1": (1e-6, "every reported scalar of the P1 FE model at its default mesh (1024 elements; error O(h^2)) "
+                     "within 1e-6 of the shooting solver (measured <= 7e-7 over every law and fluid)"),
+    "fem_tension": (3e-3, "the smallest tensions T_1, T_2 are minima over each solver's own points (shooting: its "
+                          "adaptive ODE steps; FE: nodes and quadrature points, P1's tensions constant per "
+                          "element, O(h) = 1e-3), so the two agree to that sampling, not to the discretisation "
+                          "(measured <= 1.4e-3 for P1 and 2.3e-4 for P2, the largest near the end of Gent's range)"),
     "fem_profile": (1e-5, "largest distance between the FE and shooting meridians at the shooting's "
-                          "radii, in R; interpolating the FE nodes (h = 1e-3) adds ~ h^2 kappa / 8 < 1e-6"),
-    "fem_force": (1e-8, "augmented-Lagrangian contact: the plate reaction equals the applied force to the "
-                        "Newton tolerance (relative to the force)"),
-    "volume": (1e-9, "fixed fluid volume, |V / V_I - 1|: shooting root residual 1e-12, ODE rtol 1e-10; "
-                     "FE Lagrange multiplier to Newton tolerance 1e-10"),
+                          "radii, in R; interpolating the FE nodes linearly (h <= 4e-3) adds ~ h^2 kappa / 8"),
+    "fem_force": (1e-8, "the plate reaction equals the applied force to the Newton tolerance (relative to the "
+                        "force)"),
+    "fluid": (1e-9, "the fluid's own law at every force, |V / V_law - 1|: a liquid keeps V_law = V_I, a gas "
+                    "V_law = V_I ((P_I + P_atm) / (P + P_atm))^(1/gamma); shooting root residual 1e-12, ODE rtol "
+                    "1e-10; FE Lagrange multiplier to Newton tolerance 1e-10"),
+    "membrane": (0.0, "membrane theory holds only while both tensions are positive: a state with T_1 or T_2 <= 0 "
+                      "anywhere (a sheet that would wrinkle) fails, whichever solver gives it; the verdict covers "
+                      "every state of the curve (each state's smallest tensions and flag: states.csv)"),
     "analytical_inflation": ({"height": 0.10, "volume": 0.15, "stretch_pole": 0.20},
                              "small-strain model, checked where lambda_0 - 1 <= 0.04 (measured: its assumed "
                              "shape, lambda_1 uniform, leaves H0 4 %, V 7 % and lambda_0 - 1 5 % low even as "
@@ -34,13 +49,19 @@ TOLERANCES = {
     "analytical_height": (0.06, "H/H0 is the robust output of the model (paper, fig. 3b): within 6 % for "
                                 "Fhat <= 2, a bound on a known approximation, not a convergence bar (measured "
                                 "5.3-5.9 %: near Fhat = 0.12, and for sample 4 at 2 kPa near Fhat = 1.6; "
-                                "each pocket's worst is in its verdicts)"),
+                                "each pocket's worst is in its verdicts). Checked for the paper's rubber "
+                                "(Mooney-Rivlin) and fluid (a liquid), where it was measured; for another law or "
+                                "a gas it is reported: the model sees the rubber only through mu_0, and its gas "
+                                "law at small strain (measured 7.7 % for Ogden's natural rubber near Fhat = 2, "
+                                "6.6 % for the isothermal gas near Fhat = 0.17)"),
     "analytical_small_force": (0.08, "P/P_I and A_c/(pi R^2) within 8 % for Fhat <= 0.05 (paper: good for "
                                      "Fhat < 0.1; eq (26) is singular as a_c -> 0, so P/P_I -> 1.02 there)"),
 }
 _SMALL_STRAIN = 0.04  # lambda_0 - 1 up to which the analytical inflation is checked
 _HEIGHT_FORCE = 2.0  # Fhat up to which the analytical H/H0 is checked
 _SMALL_FORCE = 0.05  # Fhat up to which the analytical P/P_I and A_c are checked
+#: the comparison name of the wrinkling verdicts
+MEMBRANE = "membrane theory (T_1, T_2 > 0)"
 _INFLATION_KEYS = ("stretch_pole", "height", "volume", "stretch_clamp")
 _COMPRESSION_KEYS = ("pressure", "contact_area", "contact_radius", "stretch_contact", "height", "volume")
 
@@ -51,7 +72,7 @@ class Check:
 
     case: str
     comparison: str  # e.g. "FEM P2 vs shooting"
-    step: str  # "inflation" | "compression" | "convergence" | "consistency"
+    step: str  # "inflation" | "compression" | "consistency" | "membrane" | "order" | ...
     quantity: str
     where: str
     value: float
@@ -84,13 +105,27 @@ def profile_distance(state, reference) -> float:
     return float(np.max(np.hypot(rho - q.rho, eta - q.eta)))
 
 
+def _fem_tolerance(column) -> float:
+    """The scalar tolerance of an FE column: by its element order (P2 unless it says P1)."""
+    return TOLERANCES["fem_p1" if dict(column.options).get("order", 2) == 1 else "fem_p2"][0]
+
+
+def _fluid_row(name, label, where, state) -> Check:
+    """The fluid's law at ``state``: V against V_I (a liquid) or the polytropic gas law at its pressure."""
+    expected = state.inflated.volume * state.fluid.volume_ratio(state.pressure, state.pressure_initial)
+    quantity = "gas law: V = V_I ((P_I + P_atm)/(P + P_atm))^(1/gamma)" if state.fluid.is_gas else "volume = V_I"
+    return _row(name, label, "consistency", quantity, where, state.volume, expected, _rel(state.volume, expected),
+                TOLERANCES["fluid"][0])
+
+
 def fem_checks(curves, fem) -> list[Check]:
     """A solver column (``compute.ColumnCurve``) against the reference at each of its forces, and its
-    own consistency (plate reaction = F, volume = V_I)."""
+    own consistency (plate reaction = F, the fluid's law)."""
     name, own = curves.pocket.case.name, fem.column.label
     label = f"{own} vs {REFERENCE.label}"
     by_force = dict(zip(curves.forces.tolist(), curves.reference, strict=True))
-    tol, tol_profile = TOLERANCES["fem"][0], TOLERANCES["fem_profile"][0]
+    tol, tol_profile, tol_tension = _fem_tolerance(fem.column), TOLERANCES["fem_profile"][0], \
+        TOLERANCES["fem_tension"][0]
     rows = []
     for state in fem.states:
         ref = by_force[state.force]
@@ -101,25 +136,38 @@ def fem_checks(curves, fem) -> list[Check]:
         for key in keys:
             value, reference = getattr(a, key), getattr(b, key)
             rows.append(_row(name, label, step, key, where, value, reference, _rel(value, reference), tol))
+        for key in CHECKS[:2]:
+            value, reference = getattr(a, key), getattr(b, key)
+            rows.append(_row(name, label, step, key, where, value, reference, _rel(value, reference), tol_tension))
         distance = profile_distance(a, b)
         rows.append(_row(name, label, step, "profile (distance / R)", where, distance, 0.0, distance, tol_profile))
         if state.force > 0.0:
             reaction = state.extra["force_reaction"]
             rows.append(_row(name, own, "consistency", "plate reaction = F", where,
                              reaction, state.force, _rel(reaction, state.force), TOLERANCES["fem_force"][0]))
-            rows.append(_row(name, own, "consistency", "volume = V_I", where, state.volume,
-                             state.inflated.volume, _rel(state.volume, state.inflated.volume),
-                             TOLERANCES["volume"][0]))
+            rows.append(_fluid_row(name, own, where, state))
     return rows
 
 
 def reference_checks(curves) -> list[Check]:
-    """The reference curve's own consistency: fixed volume at every force."""
-    worst = max(curves.reference, key=lambda s: _rel(s.volume, s.inflated.volume))
-    err = _rel(worst.volume, worst.inflated.volume)
-    return [_row(curves.pocket.case.name, REFERENCE.label, "consistency", "volume = V_I",
-                 f"worst of {len(curves.forces)} forces", worst.volume, worst.inflated.volume, err,
-                 TOLERANCES["volume"][0])]
+    """The reference curve's own consistency: the fluid's law at every force (the worst)."""
+    rows = [_fluid_row(curves.pocket.case.name, REFERENCE.label, "", state) for state in curves.reference]
+    worst = max(rows, key=lambda c: c.error)
+    return [dataclasses.replace(worst, where=f"worst of {len(curves.forces)} forces")]
+
+
+def membrane_checks(name: str, label: str, states) -> list[Check]:
+    """One verdict over a curve's ``states`` (and the inflated state they start from): fail if any has a
+    tension <= 0 (``wrinkled``); the value is the smallest tension of all, in units of E T."""
+    states = [states[0].inflated, *states]
+    worst = min(states, key=lambda s: min(s.tension_1_min, s.tension_2_min))
+    low = min(worst.tension_1_min, worst.tension_2_min)
+    which = "T_1" if worst.tension_1_min <= worst.tension_2_min else "T_2"
+    wrinkled = sum(s.wrinkled for s in states)
+    count = f"{wrinkled} of {len(states)} states wrinkled" if wrinkled else f"{len(states)} states"
+    where = f"{label}, {count}; smallest: {which} at Fhat = {getattr(worst, 'force', 0.0):.4g}"
+    return [Check(name, MEMBRANE, "membrane", f"smallest tension ({label})", where, float(low), 0.0,
+                  max(0.0, -float(low)), TOLERANCES["membrane"][0], "fail" if wrinkled else "pass")]
 
 
 def analytical_checks(curves) -> list[Check]:
@@ -137,7 +185,9 @@ def analytical_checks(curves) -> list[Check]:
         rows.append(_row(name, label, "inflation", key if not shift else "lambda_0 - 1", where, value, reference,
                          _rel(value, reference), tol))
     pairs = [(a, s) for a, s in zip(curves.approximate[1:], curves.reference[1:], strict=True) if a is not None]
-    ranges = {"height_ratio": (_HEIGHT_FORCE, TOLERANCES["analytical_height"][0]),
+    case = curves.pocket.case
+    paper = case.material.law == "mooney-rivlin" and not case.fluid.is_gas  # where the H/H0 bound was measured
+    ranges = {"height_ratio": (_HEIGHT_FORCE, TOLERANCES["analytical_height"][0] if paper else None),
               "pressure_ratio": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0]),
               "contact_area": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0])}
     for key, (limit, tol) in ranges.items():

@@ -1,6 +1,7 @@
 """Applications on top of the solvers, in physical units and for users' tasks.
 
-``cases`` (case files), ``physical`` (a case resolved to the dimensionless
+``cases`` (case files, read by ``tomlfiles``), ``rubbers`` (the rubber law and the fluid as case files
+and command lines give them, checked), ``physical`` (a case resolved to the dimensionless
 model and back to SI), ``inverse`` (the load that gives a target value),
 ``casefile`` (``pocket run``), ``design`` (soft buttons), ``sense`` (force from
 pressure), ``sweep`` (parameter grids on any executor) with ``sweepfile`` (its

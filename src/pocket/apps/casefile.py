@@ -9,8 +9,12 @@ per load), both or neither. Each row holds the load as written (``load``: ``"0.2
 the SI values (``force_N``, for a force load the force as parsed; ``pressure_Pa``,
 ``pressure_rise_Pa``, ``contact_area_m2``, ``contact_radius_m``, ``height_m``,
 ``travel_m`` = H0 - H, ``volume_m3``), the dimensionless keys of
-``CompressedState.KEYS`` (the inputs as asked, not a solver's echo) and the state's
-``warnings`` (a list in JSON, joined by "; " in CSV).
+``CompressedState.KEYS`` (the inputs as asked, not a solver's echo; ``alpha`` only for a
+Mooney-Rivlin rubber), the smallest tensions ``tension_1_min``, ``tension_2_min`` (units
+E T) and ``wrinkled``, the rubber (``material`` and its law's parameters in units of mu_0),
+the fluid (``fluid``, and a gas's ``ambient`` as Phat_atm and ``gamma``), the solver and
+the state's ``warnings`` (a list in JSON, joined by "; " in CSV, as are Ogden's lists). The
+JSON's case holds the rubber and the fluid in SI (``c10_Pa``, ``ambient_Pa``, ...).
 """
 
 from __future__ import annotations
@@ -34,7 +38,7 @@ def solve(case: Case, progress=None) -> dict:
     pocket = resolve(case)
     loads = forces(pocket)
     extra = {} if progress is None else {"progress": progress}
-    states = pocket.solver().compression_curve(pocket.alpha, pocket.pressure_initial, loads,
+    states = pocket.solver().compression_curve(pocket.material, pocket.pressure_initial, loads,
                                                **pocket.options(), **extra)
     return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
             "states": [compressed_row(pocket, s, i) for i, s in enumerate(states)], "provenance": environment()}
@@ -48,7 +52,7 @@ def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Pat
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, fields, restval="")
     writer.writeheader()
-    writer.writerows({k: "; ".join(v) if isinstance(v, list) else v for k, v in row.items()}
+    writer.writerows({k: "; ".join(map(str, v)) if isinstance(v, list) else v for k, v in row.items()}
                      for row in result["states"])
     write_files({json_path: json.dumps(result, indent=2) + "\n", csv_path: text.getvalue()})
     return json_path, csv_path

@@ -5,10 +5,18 @@
     tags = ["headline"]                  # optional labels (the validation suite uses them)
     [sheet]
     thickness = "0.25 mm"
+    material = "mooney-rivlin"           # optional: the default; or neo-hookean, yeoh, gent, ogden
     c1 = "160 kPa"                       # either c1 and c2 ...
     c2 = "47 kPa"
     # modulus = "1.242 MPa"              # ... or modulus E = 6 (1 + alpha) C1 and alpha = C2/C1
     # alpha = 0.29375
+    # another law takes its own parameters, stresses with units (pocket.core.materials):
+    # neo-hookean: mu;  yeoh: c10, c20, c30;  gent: mu and jm (a number);
+    # ogden: mu = ["630 kPa", "1.2 kPa", "-10 kPa"] and exponents = [1.3, 5.0, -2.0]
+    [fluid]                              # optional, default a liquid
+    kind = "gas"                         # "liquid" or "gas"
+    ambient = "101.325 kPa"              # gas only: ambient (absolute) pressure, default 101.325 kPa
+    gamma = 1.0                          # gas only: polytropic exponent in [1, 5/3], default 1
     [clamp]
     radius = "20 mm"
     [initial]                            # exactly one of
@@ -20,13 +28,18 @@
                                          # rtol (shooting); elements, mesh, order, penalty, augmented, tol (fem);
                                          # a mesh file name is relative to the case file's folder
 
+The rubber and the fluid are read by ``pocket.apps.rubbers``. E = 3 mu_0 (mu_0 the
+small-strain shear modulus; 6 (C1 + C2) for Mooney-Rivlin) makes pressures
+dimensionless as Phat = P R / (E T), and a gas's ambient pressure as
+Phat_atm = P_atm R / (E T).
+
 The solver options and their checks come from the solver's record
 (``pocket.core.solver``), the same that the command line's flags come from.
 
 Values carry units (``pocket.core.units``); plain numbers are SI. Every problem
 (unknown, missing or misplaced keys, wrong dimensions, impossible or absurd
 values, a file that is not UTF-8 TOML, more than ``MAX_LOADS`` loads or a file
-over ``MAX_BYTES``) is a one-line ``InputError`` naming the key, raised before
+over ``tomlfiles.MAX_BYTES``) is a one-line ``InputError`` naming the key, raised before
 any solver runs: the work a case can ask for is bounded.
 
 A ``Case`` keeps the values as the user wrote them (``given``), so that results
@@ -43,22 +56,25 @@ from __future__ import annotations
 
 import dataclasses
 import pathlib
-import tomllib
 
 from pocket.core.errors import InputError
-from pocket.core.inputs import check_alpha, quote
+from pocket.core.fluids import LIQUID, Fluid
+from pocket.core.inputs import quote
+from pocket.core.materials import STRESSES, Material
 from pocket.core.units import positive, quantity
 
+from .rubbers import PARAMETERS, fluid, sheet
 from .solvers import SOLVERS, record
+from .tomlfiles import read_toml
 
-__all__ = ["Case", "SAMPLES", "MAX_LOADS", "MAX_BYTES", "load", "parse", "sample"]
+__all__ = ["Case", "SAMPLES", "MAX_LOADS", "load", "parse", "sample"]
 
-#: most loads a case may list, and largest case file read: bounds on the work a case can ask for
+#: most loads a case may list: a bound on the work a case can ask for (the file's size: ``tomlfiles``)
 MAX_LOADS = 10_000
-MAX_BYTES = 1_000_000
 
 _SECTIONS = {"name": None, "label": None, "tags": None,
-             "sheet": ("thickness", "c1", "c2", "modulus", "alpha"), "clamp": ("radius",),
+             "sheet": ("thickness", "material", *PARAMETERS, "modulus", "alpha"), "clamp": ("radius",),
+             "fluid": ("kind", "ambient", "gamma"),
              "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"),
              "solver": ("name", *dict.fromkeys(o.name for s in SOLVERS.values() for o in s.options))}
 
@@ -67,7 +83,8 @@ _SECTIONS = {"name": None, "label": None, "tags": None,
 class Case:
     """A pocket in SI units: sheet, clamp, initial state and loads, with the solver to use.
 
-    ``initial`` is ``("pressure", P_I)``, ``("height", H0)`` or ``("volume", V)``;
+    ``material`` is the rubber with its stresses in Pa, ``fluid`` the fluid (a gas's ambient
+    pressure in Pa). ``initial`` is ``("pressure", P_I)``, ``("height", H0)`` or ``("volume", V)``;
     ``load_kind`` is ``"forces"`` (F in N) or ``"heights"`` (plate height H in m), or ``""``
     for a case without loads (the validation suite chooses its own). ``given`` maps each
     physical key (``"sheet.thickness"``, ``"loads.forces[0]"``) to the value as written.
@@ -75,8 +92,7 @@ class Case:
 
     name: str
     thickness: float
-    c1: float
-    c2: float
+    material: Material
     radius: float
     initial: tuple[str, float]
     load_kind: str = ""
@@ -85,26 +101,44 @@ class Case:
     options: tuple[tuple[str, object], ...] = ()
     label: str = ""
     tags: tuple[str, ...] = ()
-    given: tuple[tuple[str, object], ...] = ()
+    given: tuple[tuple[str, object], ...] = dataclasses.field(default=(), hash=False)  # values may be lists
+    fluid: Fluid = LIQUID
 
     @property
-    def alpha(self) -> float:
-        """C2 / C1."""
-        return self.c2 / self.c1
+    def alpha(self) -> float | None:
+        """C2 / C1 of a Mooney-Rivlin rubber (None for another law)."""
+        return self.material["c2"] / self.material["c1"] if self.material.law == "mooney-rivlin" else None
 
     @property
     def modulus(self) -> float:
-        """E = 6 (1 + alpha) C1 = 6 (C1 + C2), Pa."""
-        return 6.0 * (self.c1 + self.c2)
+        """E = 3 mu_0, Pa (6 (C1 + C2) = 6 (1 + alpha) C1 for Mooney-Rivlin)."""
+        if self.material.law == "mooney-rivlin":  # as it always was computed, to the last bit
+            return 6.0 * (self.material["c1"] + self.material["c2"])
+        return self.material.modulus
 
     def as_given(self, key: str):
         """The value of the physical ``key`` as the user wrote it (else None)."""
         return dict(self.given).get(key)
 
     def fields(self) -> dict:
-        """The case as a flat JSON-ready dict: SI values, then the inputs as given."""
-        return {"name": self.name, "thickness_m": self.thickness, "c1_Pa": self.c1, "c2_Pa": self.c2,
-                "modulus_Pa": self.modulus, "alpha": self.alpha, "radius_m": self.radius,
+        """The case as a flat JSON-ready dict: SI values, then the inputs as given.
+
+        The rubber is ``material`` and its parameters, stresses in Pa (``c1_Pa``, ``c10_Pa``,
+        Ogden's ``mu_Pa`` a list), numbers as they are (``jm``, ``exponents``), with ``modulus_Pa``
+        (E = 3 mu_0) and, for Mooney-Rivlin, ``alpha``; the fluid is ``fluid`` and, for a gas,
+        ``ambient_Pa`` and ``gamma``.
+        """
+        rubber = {"material": self.material.law}
+        for name, value in self.material.describe().items():
+            if name != "material":
+                rubber[f"{name}_Pa" if name in STRESSES else name] = value
+        rubber["modulus_Pa"] = self.modulus
+        if self.alpha is not None:
+            rubber["alpha"] = self.alpha
+        fluid = {"fluid": self.fluid.kind}
+        if self.fluid.is_gas:
+            fluid.update(ambient_Pa=self.fluid.ambient, gamma=self.fluid.gamma)
+        return {"name": self.name, "thickness_m": self.thickness, **rubber, "radius_m": self.radius, **fluid,
                 f"initial_{self.initial[0]}": self.initial[1], "load_kind": self.load_kind,
                 "loads": list(self.loads), "solver": self.solver, **dict(self.options),
                 "given": dict(self.given)}
@@ -132,33 +166,6 @@ def _need(table, key, section, where):
     if key not in table:
         raise InputError(f"{where}: missing key '{section}.{key}'")
     return table[key]
-
-
-def _sheet(table, where, given) -> tuple[float, float, float]:
-    thickness = positive("sheet.thickness", _need(table, "thickness", "sheet", where), "length")
-    given["sheet.thickness"] = table["thickness"]
-    if "c1" in table or "c2" in table:
-        if "modulus" in table or "alpha" in table:
-            raise InputError(f"{where}: give either sheet.c1 and sheet.c2 or sheet.modulus and sheet.alpha")
-        c1 = positive("sheet.c1", _need(table, "c1", "sheet", where), "pressure")
-        c2 = quantity("sheet.c2", _need(table, "c2", "sheet", where), "pressure")
-        given.update({"sheet.c1": table["c1"], "sheet.c2": table["c2"]})
-        if not c2 / c1 > -1.0:
-            raise InputError(f"sheet.c2 = {quote(table['c2'])}, but C2/C1 must be > -1")
-        return thickness, c1, c2
-    if "modulus" not in table and "alpha" not in table:
-        raise InputError(f"{where}: missing key 'sheet.c1' (with 'sheet.c2') or 'sheet.modulus' (with 'sheet.alpha')")
-    modulus = positive("sheet.modulus", _need(table, "modulus", "sheet", where), "pressure")
-    alpha = _need(table, "alpha", "sheet", where)
-    given.update({"sheet.modulus": table["modulus"], "sheet.alpha": alpha})
-    if isinstance(alpha, str):
-        raise InputError(f"sheet.alpha = {quote(alpha)} is not a number (C2/C1 has no unit)")
-    try:
-        alpha = check_alpha(alpha)
-    except InputError as err:
-        raise InputError(f"sheet.{err}") from None
-    c1 = modulus / (6.0 * (1.0 + alpha))
-    return thickness, c1, alpha * c1
 
 
 def _loads(table, where, given) -> tuple[str, tuple[float, ...]]:
@@ -230,7 +237,8 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
                     raise InputError(f"{where}: unknown key '{section}.{key}' (known: {', '.join(keys)})")
     name = _text(data, "name", where) or where
     given: dict = {}
-    thickness, c1, c2 = _sheet(_table(data, "sheet", where), where, given)
+    thickness, material = sheet(_table(data, "sheet", where), where, given)
+    liquid_or_gas = fluid(_table(data, "fluid", where), given) if "fluid" in data else LIQUID
     clamp = _table(data, "clamp", where)
     radius = positive("clamp.radius", _need(clamp, "radius", "clamp", where), "length")
     given["clamp.radius"] = clamp["radius"]
@@ -242,33 +250,9 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
-    return Case(name=name, thickness=thickness, c1=c1, c2=c2, radius=radius, initial=(kind, value),
-                load_kind=load_kind, loads=loads, solver=solver, options=options, label=_text(data, "label", where),
-                tags=_tags(data, where), given=tuple(given.items()))
-
-
-def read_toml(path) -> dict:
-    """The TOML file ``path`` as a dict; a missing, huge, non-UTF-8 or malformed file is an InputError."""
-    path = pathlib.Path(path)
-    try:
-        size = path.stat().st_size
-        if path.is_dir():
-            raise InputError(f"{path}: is a directory, not a case file")
-        if size > MAX_BYTES:
-            raise InputError(f"{path}: {size} bytes, but a case file has at most {MAX_BYTES}")
-        raw = path.read_bytes()
-    except OSError as err:
-        raise InputError(f"{path}: cannot read the file ({err.strerror})") from None
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as err:
-        raise InputError(f"{path}: not a UTF-8 text file (byte {err.start}), so not a TOML case file") from None
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
-        raise InputError(f"{path}: not valid TOML ({err})") from None
-    except RecursionError:
-        raise InputError(f"{path}: values nested too deeply to be a case file") from None
+    return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
+                initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
+                label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()))
 
 
 def load(path, *, require_loads: bool = True) -> Case:

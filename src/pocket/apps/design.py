@@ -1,21 +1,22 @@
 r"""Designing a soft button (the paper's section 6, Table 2): P_I and T from R, H0, E, F, H/H0.
 
-Given the clamp radius R, the inflated height H0, the modulus E (and alpha),
-the finger force F and the target height ratio H/H0 = h at that force, find
-the initial pressure P_I and the thickness T.
+Given the clamp radius R, the inflated height H0, the modulus E = 3 mu_0 (and the
+rubber: a Mooney-Rivlin alpha, or another law with its parameters in any unit,
+only their ratios matter), the fluid, the finger force F and the target height
+ratio H/H0 = h at that force, find the initial pressure P_I and the thickness T.
 
 The paper's rules (Table 2): P_I = 5.7 F / (pi R^2), T = 0.216 P_I R^4 / (E H0^3).
 
 The full model. In the model's dimensionless variables the unknowns enter only as
 Phat_I = P_I R / (E T) and Fhat = F / (P_I pi R^2), and
 
-    H0 / R = h0(alpha, Phat_I)                (inflation)
-    H / H0 = g(alpha, Phat_I, Fhat)           (compression at fixed volume)
+    H0 / R = h0(Phat_I)                       (inflation)
+    H / H0 = g(Phat_I, Fhat)                  (compression of a liquid at fixed volume)
 
 The inflated height depends on Phat_I alone, so the problem decouples:
 
-    1. Phat_I* solves h0(alpha, Phat_I) = H0 / R     (pocket.apps.inverse.pressure_for_height)
-    2. Fhat*   solves g(alpha, Phat_I*, Fhat) = h    (pocket.apps.inverse.force_where)
+    1. Phat_I* solves h0(Phat_I) = H0 / R            (pocket.apps.inverse.pressure_for_height)
+    2. Fhat*   solves g(Phat_I*, Fhat) = h           (pocket.apps.inverse.force_where)
     3. P_I = F / (pi R^2 Fhat*)                      (definition of Fhat)
     4. T   = P_I R / (E Phat_I*)                     (definition of Phat)
 
@@ -27,10 +28,23 @@ analytical model has c = 0.5726, ``pocket.core.smallstrain.height_constant``).
 The paper's (P_I, T) are also fed to the full model, which shows the H0 and
 H/H0 they really give.
 
+A gas-filled button (ambient pressure P_atm, exponent gamma) is softer: its gas is
+compressed too. Its compression depends also on Phat_atm = P_atm R / (E T), which
+holds the unknown T; with steps 3 and 4, Phat_atm = P_atm Phat_I* / P_I =
+P_atm Phat_I* pi R^2 Fhat / F. So step 2 becomes
+
+    2'. Fhat* solves g(Phat_I*, Fhat, Phat_atm = P_atm Phat_I* pi R^2 Fhat / F) = h,
+
+one scalar root again. It lies in (0, Fhat*_liquid]: at Fhat = 0, H/H0 = 1 > h, and a
+gas at any ambient pressure is softer than the liquid, so g is at most the liquid's
+value h at Fhat*_liquid (Brent's method on that bracket). Along this path both Fhat
+and Phat_atm grow (a larger Fhat is a lower P_I and a thinner sheet); the tests
+check that H/H0 still falls monotonically on it, so the root is unique.
+
 Feel: the force-travel curve F(H0 - H) at forces up to twice F (or to just
 inside the end of the model's range, if that comes first), and its
 stiffness dF/d(travel) = -(P_I pi R^2 / H0) / (d(H/H0)/dFhat), the slope from
-``pocket.apps.slopes`` (central differences).
+``pocket.apps.slopes`` (central differences), with the designed fluid.
 """
 
 from __future__ import annotations
@@ -41,7 +55,9 @@ import math
 import numpy as np
 
 from pocket.core.errors import InputError, OutOfRangeError
+from pocket.core.fluids import Fluid, as_fluid
 from pocket.core.inputs import check_alpha, quote
+from pocket.core.materials import Material, as_material, mooney_rivlin
 from pocket.core.units import positive
 
 from .inverse import force_where, pressure_for_height, range_end
@@ -72,10 +88,20 @@ class Design:
     curve_travel_m: np.ndarray  # H0 - H, shape (n,)
     curve_stiffness_N_per_m: np.ndarray  # dF/d(travel), shape (n,)
     curve_limited: bool  # the curve stops short of 2 F, at the end of the model's range
+    material: Material  # the rubber, in units of mu_0
+    fluid: Fluid  # the fluid, a gas's ambient pressure in Pa
+    ambient: float | None = None  # a gas's Phat_atm = P_atm R / (E T) at the designed T
 
     def report(self) -> dict:
-        """JSON-ready: the full model's answer, the paper's, their ratios, the curve."""
-        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if not f.name.startswith("curve_")}
+        """JSON-ready: the full model's answer, the paper's, their ratios, the rubber (units of mu_0) and
+        the fluid (``ambient_Pa``, and ``ambient`` as Phat_atm of the design), the curve."""
+        skip = ("material", "fluid", "ambient")
+        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)
+               if not f.name.startswith("curve_") and f.name not in skip}
+        out.update(self.material.describe())
+        out["fluid"] = self.fluid.kind
+        if self.fluid.is_gas:
+            out.update(ambient_Pa=self.fluid.ambient, gamma=self.fluid.gamma, ambient=self.ambient)
         out["pressure_initial_ratio_paper_to_model"] = self.paper_pressure_initial_Pa / self.pressure_initial_Pa
         out["thickness_ratio_paper_to_model"] = self.paper_thickness_m / self.thickness_m
         out["curve_limited"] = self.curve_limited
@@ -91,7 +117,7 @@ def paper_rules(radius, height, modulus, force) -> tuple[float, float]:
     return p_i, PAPER_THICKNESS_FACTOR * p_i * radius**4 / (modulus * height**3)
 
 
-def _check(radius, height, modulus, alpha, force, height_ratio):
+def _check(radius, height, modulus, material, force, height_ratio, fluid):
     values = [positive(k, v, kind) for k, v, kind in (("radius", radius, "length"), ("height", height, "length"),
                                                       ("modulus", modulus, "pressure"), ("force", force, "force"))]
     try:
@@ -100,35 +126,65 @@ def _check(radius, height, modulus, alpha, force, height_ratio):
         raise InputError(f"height_ratio = {height_ratio!r} is not a number") from None
     if not 0.0 < ratio < 1.0:
         raise InputError(f"height_ratio = {height_ratio!r}, but a pressed button needs 0 < H/H0 < 1")
-    return (*values, check_alpha(alpha), ratio)
+    rubber = as_material(material).scaled() if isinstance(material, Material) else check_alpha(material)
+    return (*values, rubber, ratio, as_fluid(fluid))
 
 
-def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="shooting", points=20,
+def _sealed(fluid: Fluid, scale: float) -> dict:
+    """The ``fluid`` keyword of a pocket of pressure scale E T / R (Pa): a gas's Phat_atm; nothing for a liquid."""
+    return {"fluid": fluid.scaled(scale)} if fluid.is_gas else {}
+
+
+def _gas_force(model, rubber, phat_i, ratio, fluid, per_fhat, liquid, options) -> float:
+    """Step 2' of the module docstring: Fhat* of a gas, Phat_atm = ``per_fhat`` Fhat, in (0, ``liquid``]."""
+    from scipy.optimize import brentq
+
+    def miss(f):
+        if f == 0.0:
+            return 1.0 - ratio
+        sealed = {"fluid": dataclasses.replace(fluid, ambient=per_fhat * f)}
+        return model.compress(rubber, phat_i, f, **sealed, **options).height_ratio - ratio
+
+    return brentq(miss, 0.0, liquid, xtol=1e-15, rtol=1e-13)
+
+
+def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=None, solver="shooting", points=20,
            **options) -> Design:
-    """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units."""
+    """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units.
+
+    ``material``: a Mooney-Rivlin alpha = C2/C1, or a ``pocket.core.materials.Material`` (any stress unit:
+    ``modulus`` sets E = 3 mu_0). ``fluid``: None (a liquid) or a gas (``pocket.core.fluids.gas``) with its
+    ambient pressure in Pa.
+    """
     given_height = height
-    radius, height, modulus, force, alpha, ratio = _check(radius, height, modulus, alpha, force, height_ratio)
+    radius, height, modulus, force, rubber, ratio, fluid = _check(radius, height, modulus, material, force,
+                                                                  height_ratio, fluid)
     model = get_solver(solver)
     try:
-        phat_i = pressure_for_height(model, alpha, height / radius, **options)
+        phat_i = pressure_for_height(model, rubber, height / radius, **options)
     except OutOfRangeError as err:
         raise OutOfRangeError(f"height = {quote(given_height)}: no inflated state of the model's first branch is "
                               f"that high ({err})") from None
-    fhat = force_where(model, alpha, phat_i, "height_ratio", ratio, increasing=False, **options)
+    fhat = force_where(model, rubber, phat_i, "height_ratio", ratio, increasing=False, **options)
+    if fluid.is_gas:
+        fhat = _gas_force(model, rubber, phat_i, ratio, fluid, fluid.ambient * phat_i * math.pi * radius**2 / force,
+                          fhat, options)
     p_i = force / (math.pi * radius**2 * fhat)
     thickness = p_i * radius / (modulus * phat_i)
+    sealed = _sealed(fluid, modulus * thickness / radius)
     paper_p, paper_t = paper_rules(radius, height, modulus, force)
     paper_phat = paper_p * radius / (modulus * paper_t)
     try:
-        paper_state = model.compress(alpha, paper_phat, force / (paper_p * math.pi * radius**2), **options)
+        paper_state = model.compress(rubber, paper_phat, force / (paper_p * math.pi * radius**2),
+                                     **_sealed(fluid, modulus * paper_t / radius), **options)
         paper_model = paper_state.inflated.height * radius, paper_state.height_ratio
     except OutOfRangeError:  # the paper's rules can ask for a state the model does not have
         paper_model = None, None
-    top = range_end(model, alpha, phat_i, below=2.0 * fhat, **options)
+    top = range_end(model, rubber, phat_i, below=2.0 * fhat, **sealed, **options)
     limited = top < 2.0 * fhat
     top *= 1.0 - 1e-3 if limited else 1.0  # room for the slope's stencil (pocket/slopes.py, 1e-4 f)
     forces = top * np.arange(1, points + 1) / points
-    states, slopes = curve_with_slopes(model, alpha, phat_i, [fhat, *forces], ["height_ratio"], **options)
+    states, slopes = curve_with_slopes(model, rubber, phat_i, [fhat, *forces], ["height_ratio"], **sealed, **options)
     scale = p_i * math.pi * radius**2
     stiffness = -scale / (height * slopes["height_ratio"])
     return Design(pressure_initial_Pa=p_i, thickness_m=thickness, paper_pressure_initial_Pa=paper_p,
@@ -136,4 +192,6 @@ def design(radius, height, modulus, alpha, force, height_ratio=0.8, *, solver="s
                   paper_model_height_ratio=paper_model[1], pressure_initial=phat_i, force=fhat,
                   stiffness_N_per_m=float(stiffness[0]), curve_force_N=forces * scale,
                   curve_travel_m=np.array([height * (1.0 - s.height_ratio) for s in states[1:]]),
-                  curve_stiffness_N_per_m=stiffness[1:], curve_limited=limited)
+                  curve_stiffness_N_per_m=stiffness[1:], curve_limited=limited,
+                  material=rubber if isinstance(rubber, Material) else mooney_rivlin(rubber), fluid=fluid,
+                  ambient=sealed["fluid"].ambient if sealed else None)

@@ -6,8 +6,8 @@ the pressure ratio P/P_I grows with Fhat while the height H/R and H/H0 fall.
 So each inverse problem is one scalar root, bracketed and then solved by
 Brent's method on the forward solver:
 
-- ``pressure_for_height``: Phat_I with inflate(alpha, Phat_I).height = H0/R;
-- ``force_where``: Fhat with compress(alpha, Phat_I, Fhat).<key> = target.
+- ``pressure_for_height``: Phat_I with inflate(material, Phat_I).height = H0/R;
+- ``force_where``: Fhat with compress(material, Phat_I, Fhat).<key> = target.
 
 The bracket starts at load 0, where the value is known (height 0; the
 uncompressed state). For a force, a solver that knows the end of its range
@@ -55,7 +55,7 @@ def _bracket(fun, start, what, reached):
     raise OutOfRangeError(f"{what} is beyond the model's range (it reaches {reached(lo):.10g} at its edge)")
 
 
-def pressure_for_height(solver, alpha, height, **options) -> float:
+def pressure_for_height(solver, material, height, **options) -> float:
     """Phat_I at which the inflated height H0/R is ``height`` (first branch)."""
 
     from scipy.optimize import brentq
@@ -63,15 +63,15 @@ def pressure_for_height(solver, alpha, height, **options) -> float:
     from pocket.core.smallstrain import height_constant
 
     def miss(p):
-        return solver.inflate(alpha, p, **options).height - height if p > 0.0 else -height
+        return solver.inflate(material, p, **options).height - height if p > 0.0 else -height
 
     guess = (height / height_constant()) ** 3  # the small-strain model's Phat_I
     lo, hi = _bracket(miss, guess, f"initial height H0/R = {height:.10g}",
-                      lambda p: solver.inflate(alpha, p, **options).height)
+                      lambda p: solver.inflate(material, p, **options).height)
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
 
 
-def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **options) -> float:
+def force_where(solver, material, pressure_initial, key, target, *, increasing, **options) -> float:
     """Fhat at which the compressed state's ``key`` equals ``target``.
 
     ``increasing``: whether ``key`` grows with the force (``pressure_ratio``) or
@@ -83,7 +83,7 @@ def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **o
     sign = 1.0 if increasing else -1.0
 
     def value(f):
-        return getattr(solver.compress(alpha, pressure_initial, f, **options), key)
+        return getattr(solver.compress(material, pressure_initial, f, **options), key)
 
     start = value(0.0)
     if target == start:
@@ -95,7 +95,7 @@ def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **o
     def miss(f):
         return sign * (value(f) - target) if f > 0.0 else sign * (start - target)
 
-    end = _own_end(solver, alpha, pressure_initial, options)
+    end = _own_end(solver, material, pressure_initial, options)
     if end is None:
         lo, hi = _bracket(miss, 0.1, f"{key} = {target:.10g}", value)
     elif miss(end) < 0.0:
@@ -106,13 +106,13 @@ def force_where(solver, alpha, pressure_initial, key, target, *, increasing, **o
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
 
 
-def _own_end(solver, alpha, pressure_initial, options):
+def _own_end(solver, material, pressure_initial, options):
     """The solver's own ``range_end`` (its entry point), or None if it has none."""
     own = getattr(solver, "range_end", None)
-    return None if own is None else own(alpha, pressure_initial, **options)
+    return None if own is None else own(material, pressure_initial, **options)
 
 
-def range_end(solver, alpha, pressure_initial, *, below=None, rtol=_EDGE, **options) -> float:
+def range_end(solver, material, pressure_initial, *, below=None, rtol=_EDGE, **options) -> float:
     """The end of the model's compression range in Fhat (where the free part reaches the
     clamp plane); the value is inside the range.
 
@@ -121,13 +121,13 @@ def range_end(solver, alpha, pressure_initial, *, below=None, rtol=_EDGE, **opti
     first bracketed by doubling from Fhat = 1 (up to 1e4). With ``below``: ``below`` itself if
     the model has a compressed state there, else the end below it.
     """
-    end = _own_end(solver, alpha, pressure_initial, options)
+    end = _own_end(solver, material, pressure_initial, options)
     if end is not None:
         return end if below is None else min(below, end)
 
     def inside(f):
         try:
-            solver.compress(alpha, pressure_initial, f, **options)
+            solver.compress(material, pressure_initial, f, **options)
         except OutOfRangeError:
             return False
         return True

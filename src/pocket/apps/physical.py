@@ -1,9 +1,12 @@
 """A case resolved to the dimensionless model, and its states back in SI units.
 
-With E = 6 (C1 + C2) the modulus, T the thickness and R the clamp radius
+With E = 3 mu_0 the modulus (6 (C1 + C2) for Mooney-Rivlin), T the thickness and R the clamp radius
 (``pocket.core.states``): P = Phat E T / R, F = Fhat P_I pi R^2, lengths = (x/R) R, areas =
-(A/(pi R^2)) pi R^2, volumes = (V/R^3) R^3. An initial height H0 becomes Phat_I
-by ``pocket.apps.inverse.pressure_for_height``; an initial volume by the solver's
+(A/(pi R^2)) pi R^2, volumes = (V/R^3) R^3; a gas's ambient pressure enters the solvers as
+Phat_atm = P_atm R / (E T). The solvers get the rubber as ``Pocket.material``: the float
+alpha = C2/C1 for Mooney-Rivlin (the path it always took), the law's ``Material`` scaled to
+units of mu_0 otherwise, so that a state's parameters are dimensionless like its other keys.
+An initial height H0 becomes Phat_I by ``pocket.apps.inverse.pressure_for_height``; an initial volume by the solver's
 volume-controlled inflation, checked to lie on the pressure-controlled first
 branch (compression starts from there). Plate heights become forces by
 ``pocket.apps.inverse.force_where``.
@@ -15,6 +18,7 @@ import dataclasses
 import math
 
 from pocket.core.errors import InputError, OutOfRangeError, PocketError
+from pocket.core.fluids import Fluid
 from pocket.core.inputs import MAGNITUDES, quote
 from pocket.core.units import written_like
 
@@ -36,8 +40,19 @@ class Pocket:
     pressure_initial: float
 
     @property
-    def alpha(self) -> float:
+    def alpha(self) -> float | None:
+        """C2/C1 of a Mooney-Rivlin rubber, else None."""
         return self.case.alpha
+
+    @property
+    def material(self):
+        """The rubber as the solvers take it: alpha (Mooney-Rivlin), else the law in units of mu_0."""
+        return self.case.alpha if self.case.alpha is not None else self.case.material.scaled()
+
+    @property
+    def fluid(self) -> Fluid:
+        """The fluid as the solvers take it: a gas's ambient pressure as Phat_atm = P_atm R / (E T)."""
+        return self.case.fluid.scaled(self.pressure_scale_Pa)
 
     @property
     def pressure_scale_Pa(self) -> float:
@@ -59,9 +74,15 @@ class Pocket:
         return get_solver(self.case.solver)
 
     def options(self, step: str = "compress") -> dict:
-        """The case's solver options that ``step`` ("inflate" or "compress") takes, as keyword arguments."""
+        """The keyword arguments of ``step``'s entry points ("inflate" or "compress"): the case's solver
+        options that the step takes, and for a compression the fluid if it is a gas (``fluid_options``)."""
         solver = record(self.case.solver)
-        return {k: v for k, v in self.case.options if step in solver.option(k).steps}
+        return {**{k: v for k, v in self.case.options if step in solver.option(k).steps}, **self.fluid_options(step)}
+
+    def fluid_options(self, step: str = "compress") -> dict:
+        """``{"fluid": self.fluid}`` for a gas-filled pocket's compression, else nothing (a liquid is every
+        solver's default)."""
+        return {"fluid": self.fluid} if step == "compress" and self.case.fluid.is_gas else {}
 
 
 def _inside(key: str, given: str, name: str, value: float) -> float:
@@ -89,13 +110,13 @@ def resolve(case: Case) -> Pocket:
                                     value / unit.pressure_scale_Pa))
     if kind == "height":
         try:
-            return Pocket(case, pressure_for_height(solver, case.alpha, value / case.radius, **options))
+            return Pocket(case, pressure_for_height(solver, unit.material, value / case.radius, **options))
         except OutOfRangeError as err:
             raise OutOfRangeError(f"initial.height = {given}: no inflated state of the model's first branch is "
                                   f"that high ({err})") from None
     volume = value / case.radius**3
-    phat = solver.inflate_volume(case.alpha, volume, **options).pressure
-    reached = solver.inflate(case.alpha, phat, **options).volume
+    phat = solver.inflate_volume(unit.material, volume, **options).pressure
+    reached = solver.inflate(unit.material, phat, **options).volume
     if abs(reached - volume) > 1e-6 * volume:  # the two solves agree to ~1e-10 on the first branch
         raise OutOfRangeError(f"initial.volume = {given} lies past the pressure maximum of the first branch, "
                               "where the pocket cannot be held at fixed pressure")
@@ -109,8 +130,8 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
     given = case.as_given(f"loads.heights[{index}]")
     lowest = ""
     try:
-        end = range_end(pocket.solver(), pocket.alpha, pocket.pressure_initial, **pocket.options())
-        low = pocket.solver().compress(pocket.alpha, pocket.pressure_initial, end, **pocket.options()).height
+        end = range_end(pocket.solver(), pocket.material, pocket.pressure_initial, **pocket.options())
+        low = pocket.solver().compress(pocket.material, pocket.pressure_initial, end, **pocket.options()).height
         lowest = f" ({written_like(low * case.radius, given, 'length')}; the inflated height is " \
                  f"{written_like(top, given, 'length')})"
     except PocketError:  # the reason stands without the number
@@ -130,7 +151,7 @@ def forces(pocket: Pocket) -> list[float]:
         return [_inside(f"loads.forces[{i}]", quote(case.as_given(f"loads.forces[{i}]")), "Fhat = F / (P_I pi R^2)",
                         f / pocket.force_scale_N) for i, f in enumerate(case.loads)]
     solver, options = pocket.solver(), pocket.options()
-    top = solver.inflate(pocket.alpha, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
+    top = solver.inflate(pocket.material, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
     out = []
     for index, height in enumerate(case.loads):
         if height > top:
@@ -138,7 +159,7 @@ def forces(pocket: Pocket) -> list[float]:
             raise OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket "
                                   f"(H0 = {written_like(top, given, 'length')}): the plate would not touch it")
         try:
-            out.append(force_where(solver, pocket.alpha, pocket.pressure_initial, "height", height / case.radius,
+            out.append(force_where(solver, pocket.material, pocket.pressure_initial, "height", height / case.radius,
                                    increasing=False, **options))
         except OutOfRangeError:
             raise _height_error(pocket, index, top) from None
@@ -163,7 +184,9 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     (``forces``), not values recomputed from the state.
     """
     case, r, scale = pocket.case, pocket.case.radius, pocket.pressure_scale_Pa
-    asked = {"alpha": pocket.alpha, "pressure_initial": pocket.pressure_initial}
+    asked = {"pressure_initial": pocket.pressure_initial}
+    if pocket.alpha is not None:
+        asked["alpha"] = pocket.alpha
     row = {"force_N": state.force * pocket.force_scale_N}
     if load is not None:
         row = {"load": case.as_given(f"loads.{case.load_kind}[{load}]"), **row}

@@ -15,6 +15,14 @@ The contact area is A_c = F / P (frictionless flat plate).
 
 Pressures are gauge pressures, as P_I is: the pressure in the pocket above
 the ambient pressure.
+
+A gas-filled pocket (a case's ``[fluid]``) is the barometric touch sensor: its gas
+is compressed as well, (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma, and the
+forward solver holds that law, so the same inversion applies. Its pressure rise
+also grows monotonically with the force (checked over the whole range in the
+tests, isothermal and adiabatic); it is smaller than a liquid's at moderate
+forces and, near the end of the range, larger (the liquid stretches the contact
+zone more).
 """
 
 from __future__ import annotations
@@ -48,19 +56,23 @@ class Reading:
     contact_area_m2: float
     sensitivity_N_per_Pa: float  # dF/dP
     force: float
+    rubber: tuple = ()  # the state's rubber and fluid as (key, value) pairs: material, its parameters
+    # (units of mu_0), fluid, a gas's ambient (Phat_atm) and gamma
 
     def row(self) -> dict:
-        """The reading as a flat dict (JSON- and CSV-ready)."""
-        return dataclasses.asdict(self)
+        """The reading as a flat dict (JSON- and CSV-ready): its numbers, then the rubber and the fluid."""
+        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name != "rubber"}
+        return {**out, **dict(self.rubber)}
 
 
 def _readings(pocket: Pocket, fhats) -> list[Reading]:
-    states, slopes = curve_with_slopes(pocket.solver(), pocket.alpha, pocket.pressure_initial, fhats,
+    states, slopes = curve_with_slopes(pocket.solver(), pocket.material, pocket.pressure_initial, fhats,
                                        ["pressure_ratio"], **pocket.options())
     area = math.pi * pocket.case.radius**2
     return [Reading(force_N=s.force * pocket.force_scale_N, pressure_Pa=s.pressure_ratio * pocket.pressure_initial_Pa,
                     pressure_ratio=s.pressure_ratio, contact_area_m2=s.contact_area * area,
-                    sensitivity_N_per_Pa=area / slope, force=s.force)
+                    sensitivity_N_per_Pa=area / slope, force=s.force,
+                    rubber=tuple({**s.material.describe(), **s.fluid.describe()}.items()))
             for s, slope in zip(states, slopes["pressure_ratio"], strict=True)]
 
 
@@ -70,8 +82,8 @@ def _beyond(pocket: Pocket, what: str, given) -> OutOfRangeError:
     top = ""
     try:
         solver, options = pocket.solver(), pocket.options()
-        end = range_end(solver, pocket.alpha, pocket.pressure_initial, **options)
-        q = solver.compress(pocket.alpha, pocket.pressure_initial, end, **options).pressure_ratio
+        end = range_end(solver, pocket.material, pocket.pressure_initial, **options)
+        q = solver.compress(pocket.material, pocket.pressure_initial, end, **options).pressure_ratio
         top = f" (it reaches {written_like(q * pocket.pressure_initial_Pa, given, 'pressure')}, P/P_I = {q:.6g})"
     except PocketError:  # the reason stands without the number
         pass
@@ -97,7 +109,7 @@ def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
                               f"{written_like(pocket.pressure_initial_Pa, pressure, 'pressure')}, ratio 1): "
                               "a plate can only push")
     try:
-        fhat = force_where(pocket.solver(), pocket.alpha, pocket.pressure_initial, "pressure_ratio", q,
+        fhat = force_where(pocket.solver(), pocket.material, pocket.pressure_initial, "pressure_ratio", q,
                            increasing=True, **pocket.options())
     except OutOfRangeError:
         raise _beyond(pocket, what, pressure) from None

@@ -25,12 +25,12 @@ def _stencil(f):
     return h, (f + h, f + 2.0 * h), (2.0, -0.5)  # plus -1.5 v(f)
 
 
-def curve_with_slopes(solver, alpha, pressure_initial, forces, keys, **options):
+def curve_with_slopes(solver, material, pressure_initial, forces, keys, **options):
     """States at ``forces`` (Fhat) and {key: array of d key / d Fhat} for each of ``keys``."""
     forces = [float(f) for f in forces]
     stencils = [_stencil(f) for f in forces]
     points = sorted(set(forces) | {x for _, xs, _ in stencils for x in xs})
-    states = dict(zip(points, solver.compression_curve(alpha, pressure_initial, points, **options), strict=True))
+    states = dict(zip(points, solver.compression_curve(material, pressure_initial, points, **options), strict=True))
     slopes = {}
     for key in keys:
         out = []

@@ -1,5 +1,9 @@
 """Parameter sweeps over (alpha, Phat_I, Fhat) on any ``concurrent.futures.Executor`` (``pocket sweep``).
 
+The rubber is a Mooney-Rivlin alpha per grid point (the alpha axis), or one rubber of
+another law for the whole sweep (``pocket.core.materials.Material``); the fluid is a
+liquid or one gas for the whole sweep.
+
 Each grid point is one compressed state, solved in a task of its own by
 ``solve_point`` (a top-level function, so that it pickles to other processes
 and machines). ``run_sweep`` takes the executor as an argument: local
@@ -10,8 +14,10 @@ or a dask.distributed cluster (``Client(address).get_executor()``, with
 The results are one tidy CSV, one row per point: the keys of a compressed
 state (``CompressedState.KEYS``), the solver, a ``status`` (``ok``;
 ``out_of_range`` past the model's range; ``failed`` when the solver did not
-converge) and a one-line ``message`` (the reason, or the state's warnings).
-A row's ``alpha``, ``pressure_initial`` and ``force`` are the grid point as
+converge), a one-line ``message`` (the reason, or the state's warnings), the
+rubber, the fluid and the smallest tensions with the wrinkling flag
+(``pocket.apps.sweepfile``). A row's ``alpha`` (or the parameters of another
+law), ``pressure_initial``, ``force`` and fluid are the grid point as
 asked, never the values a solver hands back, and every float is written
 exactly (``repr``), so a point reads back equal to the number asked: that is
 the key on which a rerun recognises the points already done.
@@ -47,12 +53,14 @@ from collections.abc import Callable
 from concurrent.futures import as_completed
 
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.fluids import Fluid, as_fluid
 from pocket.core.inputs import check_alpha, check_force, check_positive
-from pocket.core.states import CompressedState
+from pocket.core.materials import Material, as_material
+from pocket.core.states import CHECKS, CompressedState
 
 from .folders import write_whole
 from .solvers import get_solver, record
-from .sweepfile import COLUMNS, STATUSES, Journal, line, rows_csv
+from .sweepfile import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
 
 __all__ = ["COLUMNS", "STATUSES", "MAX_POINTS", "solve_point", "run_sweep"]
 
@@ -60,39 +68,47 @@ __all__ = ["COLUMNS", "STATUSES", "MAX_POINTS", "solve_point", "run_sweep"]
 MAX_POINTS = 100_000
 
 
-def solve_point(solver: str, alpha: float, pressure_initial: float, force: float, options: dict) -> dict:
-    """One grid point as a CSV row (dict of COLUMNS); model failures become a status, not an error."""
+def solve_point(solver: str, material, pressure_initial: float, force: float, options: dict) -> dict:
+    """One grid point as a CSV row (dict of COLUMNS); model failures become a status, not an error.
+
+    ``material`` is a Mooney-Rivlin alpha or a ``Material``; ``options`` the solver's, with the
+    ``fluid`` (a ``Fluid``) if it is a gas."""
     row = dict.fromkeys(COLUMNS, "")
     try:
-        state = get_solver(solver).compress(alpha, pressure_initial, force, **options)
+        state = get_solver(solver).compress(material, pressure_initial, force, **options)
     except OutOfRangeError as err:
         row.update(status="out_of_range", message=line(err))
     except ConvergenceError as err:
         row.update(status="failed", message=line(err))
     else:
-        row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS})
+        row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS if key != "alpha"})
+        row.update({key: float(getattr(state, key)) for key in CHECKS[:2]}, wrinkled=state.wrinkled)
         row.update(status="ok", message=line("; ".join(state.warnings)))
-    row.update(alpha=alpha, pressure_initial=pressure_initial, force=force, solver=solver)  # the point as asked
+    row.update(identity(material, as_fluid(options.get("fluid"))))  # the point as asked
+    row.update(alpha="" if isinstance(material, Material) else material, pressure_initial=pressure_initial,
+               force=force, solver=solver)
     return row
 
 
-def _grid(alphas, pressures, forces) -> list[tuple[float, float, float]]:
-    alphas = [check_alpha(a) for a in alphas]
+def _grid(materials, pressures, forces) -> list[tuple]:
     pressures = [check_positive("pressure", p) for p in pressures]
     forces = [check_force(f) for f in forces]
-    if not (alphas and pressures and forces):
-        raise InputError("a sweep needs at least one alpha, one pressure and one force")
-    size = math.prod(map(len, (alphas, pressures, forces)))
+    if not (materials and pressures and forces):
+        raise InputError("a sweep needs at least one alpha (or a rubber), one pressure and one force")
+    size = math.prod(map(len, (materials, pressures, forces)))
     if size > MAX_POINTS:
         raise InputError(f"the grid has {size} points, but a sweep takes at most {MAX_POINTS}")
-    return list(dict.fromkeys(itertools.product(alphas, pressures, forces)))
+    return list(dict.fromkeys(itertools.product(materials, pressures, forces)))
 
 
 def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", options=None,
-              progress: Callable[[int, int], None] | None = None) -> tuple[int, int]:
+              progress: Callable[[int, int], None] | None = None, material: Material | None = None,
+              fluid: Fluid | None = None) -> tuple[int, int]:
     """Solve every (alpha, Phat_I, Fhat) of the grid not already in the CSV ``path``.
 
-    Returns (computed, reused). ``options`` are the solver's (checked against its
+    Returns (computed, reused). The rubber is Mooney-Rivlin with each of ``alphas``, or ``material``
+    (another law, for every point: ``alphas`` then empty or None). ``fluid``: None (a liquid) or a gas,
+    its ambient pressure as Phat_atm. ``options`` are the solver's (checked against its
     record); ``progress(done, total)`` is called after each point. The file's life,
     when the sweep finishes and when it stops early, is in the module docstring.
     A sweep that stops early leaves the points not yet solved in ``executor``: its
@@ -100,21 +116,35 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     futures were cancelled cannot be stopped by killing its workers before Python
     3.12, its manager thread then fails on the cancelled futures).
     """
-    grid = _grid(alphas, pressures, forces)
+    if material is not None and alphas:
+        raise InputError("give either alphas (a Mooney-Rivlin rubber) or another law's material, not both")
+    materials = [check_alpha(a) for a in alphas or ()] if material is None else [as_material(material)]
+    grid = _grid(materials, pressures, forces)
     options = record(solver).checked(dict(options or {}), "compress")
+    fluid = as_fluid(fluid)
+    if fluid.is_gas:
+        options["fluid"] = fluid
+    cells = identity(materials[0], fluid) if material is not None else None
+    keys = [key({**(cells or identity(m, fluid)), "alpha": "" if cells else m, "pressure_initial": p, "force": f})
+            for m, p, f in grid]
     journal = Journal(pathlib.Path(path))
     failed = True
     try:
-        todo = [point for point in grid if point not in journal.rows]
+        todo = [point for point, k in zip(grid, keys, strict=True) if k not in journal.rows]
         futures = [executor.submit(solve_point, solver, *point, options) for point in todo]
         for done, future in enumerate(as_completed(futures), start=1):
             journal.append(future.result())
             if progress is not None:
                 progress(done, len(todo))
         rows = journal.rows
-        ordered = [rows[point] for point in grid] + [rows[k] for k in sorted(set(rows) - set(grid))]
+        ordered = [rows[k] for k in keys] + [rows[k] for k in sorted(set(rows) - set(keys), key=_order)]
         write_whole(journal.path, rows_csv(ordered, header=True).decode("utf-8"))
         failed = False
     finally:
         journal.close(failed=failed)
     return len(todo), len(grid) - len(todo)
+
+
+def _order(point: tuple) -> tuple:
+    """A sort key for the points of other sweeps in one file: text first, None (no alpha) before numbers."""
+    return tuple((0, "") if v is None else (1, v) if isinstance(v, str) else (2, "", v) for v in point)

@@ -1,8 +1,16 @@
 """The sweep file: one CSV row per grid point, appended while a sweep runs (``pocket.apps.sweep``).
 
 Columns (``COLUMNS``): the keys of a compressed state (``CompressedState.KEYS``),
-the solver, a ``status`` (``STATUSES``) and a one-line ``message``. Floats are
-written exactly (``repr``), so a point reads back equal to the number asked.
+the solver, a ``status`` (``STATUSES``) and a one-line ``message``; then the rubber
+(``material``, the law's name, and a column per parameter of every law, empty where
+the law has no such parameter: Mooney-Rivlin's is ``alpha``, so its rows leave
+``c1`` and ``c2`` empty; Ogden's lists are numbers separated by spaces), the fluid
+(``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), and the membrane's
+checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``). Floats are written
+exactly (``repr``), so a point reads back equal to the number asked.
+
+A point is its rubber, fluid, Phat_I and Fhat (``key``): a file may hold points of
+several sweeps, and a rerun recognises its own.
 
 ``Journal`` opens a sweep file for a sweep: it refuses, untouched, a file that
 is not a sweep file (``InputError``), takes an advisory POSIX lock so that one
@@ -24,20 +32,25 @@ import pathlib
 import stat
 
 from pocket.core.errors import InputError, OutputError
-from pocket.core.states import CompressedState
+from pocket.core.fluids import Fluid
+from pocket.core.materials import Material
+from pocket.core.states import CHECKS, CompressedState
 
 from .folders import created_parents, remove_created
+from .rubbers import PARAMETERS
 
 try:
     import fcntl
 except ImportError:  # not a POSIX system: no lock
     fcntl = None
 
-__all__ = ["COLUMNS", "STATUSES", "Journal", "key", "line", "rows_csv"]
+__all__ = ["COLUMNS", "IDENTITY", "STATUSES", "Journal", "identity", "key", "line", "rows_csv"]
 
-COLUMNS = (*CompressedState.KEYS, "solver", "status", "message")
+#: what identifies a point besides alpha, Phat_I and Fhat: its rubber and its fluid
+IDENTITY = ("material", *PARAMETERS, "fluid", "ambient", "gamma")
+COLUMNS = (*CompressedState.KEYS, "solver", "status", "message", *IDENTITY, *CHECKS)
 STATUSES = ("ok", "out_of_range", "failed")
-_PARAMETERS = ("alpha", "pressure_initial", "force")
+_NUMBERS = ("alpha", "pressure_initial", "force")
 
 
 def line(text) -> str:
@@ -45,9 +58,28 @@ def line(text) -> str:
     return " ".join(str(text).split())
 
 
-def key(row) -> tuple[float, float, float]:
-    """The grid point (alpha, Phat_I, Fhat) of a row."""
-    return tuple(float(row[k]) for k in _PARAMETERS)
+def _cell(value) -> str:
+    """A number exactly (``repr``), a list of numbers separated by spaces."""
+    return " ".join(map(repr, value)) if isinstance(value, tuple) else repr(float(value))
+
+
+def identity(material, fluid: Fluid) -> dict:
+    """The IDENTITY cells (text) of a point: ``material`` a Mooney-Rivlin alpha (its own column) or a
+    ``Material``, ``fluid`` a ``Fluid``."""
+    cells = dict.fromkeys(IDENTITY, "")
+    if isinstance(material, Material):
+        cells.update({name: _cell(value) for name, value in material.params}, material=material.law)
+    else:
+        cells["material"] = "mooney-rivlin"
+    cells.update({k: v if isinstance(v, str) else repr(v) for k, v in fluid.describe().items()})
+    return cells
+
+
+def key(row) -> tuple:
+    """The point of a row: its IDENTITY cells, then alpha (None for another law), Phat_I and Fhat."""
+    alpha, pressure, force = (row[k] for k in _NUMBERS)
+    return (*(row[k] for k in IDENTITY), None if alpha in ("", None) else float(alpha), float(pressure),
+            float(force))
 
 
 def rows_csv(rows, *, header=False) -> bytes:
@@ -61,6 +93,7 @@ def rows_csv(rows, *, header=False) -> bytes:
 
 
 _HEADER = rows_csv([], header=True)
+_EARLIER = ",".join((*CompressedState.KEYS, "solver", "status", "message")).encode() + b"\n"  # before IDENTITY
 
 
 def _not_a_sweep(path, why) -> InputError:
@@ -124,6 +157,9 @@ class Journal:
         """The file's bytes, once its start is known to be (a prefix of) the header."""
         start = self.file.read(len(_HEADER))
         if not (_HEADER.startswith(start) if len(start) < len(_HEADER) else start == _HEADER):
+            if start.startswith(_EARLIER):
+                raise InputError(f"{self.path} is a sweep file of an earlier pocket, without the rubber and fluid "
+                                 "columns, so this sweep cannot resume it; give another --out file")
             first = start.split(b"\n", 1)[0][:80].decode("utf-8", errors="replace")
             raise _not_a_sweep(self.path, f"its first line starts {line(first)!r}")
         return start + self.file.readall()

@@ -52,9 +52,14 @@ pocket: ``pocket.core.states``): for a compressed state ``alpha``,
 (A_c / (pi R^2)), ``contact_radius`` (Lagrangian a_c / R), ``stretch_contact``,
 ``height`` (H / R), ``height_ratio`` (H / H0), ``volume`` (V / R^3); for an
 inflated state ``alpha``, ``pressure``, ``stretch_pole``, ``height``, ``volume``,
-``stretch_clamp``. meshio writes no field data, so it is added to each file
-as a ``<FieldData>`` block of ASCII values written with 17 significant digits
-(they read back exactly).
+``stretch_clamp`` (``alpha`` only for a Mooney-Rivlin rubber given by it); then
+for both the smallest tensions ``tension_1_min`` and ``tension_2_min`` (units E T)
+and ``wrinkled`` (1 where one is not positive, else 0), the numeric parameters of
+the rubber's law (units of mu_0; Ogden's ``mu`` and ``exponents`` one value per
+term) and, for a gas-filled pocket, ``ambient`` (Phat_atm) and ``gamma``. Names
+(the law's, the fluid's) are not numbers and are left out. meshio writes no field
+data, so it is added to each file as a ``<FieldData>`` block of ASCII values
+written with 17 significant digits (they read back exactly).
 
 One point set along a series. A solver samples each state's profile at its own
 Lagrangian radii (the shooting solver's adaptive steps: a different count at
@@ -87,6 +92,7 @@ import numpy as np
 
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_count
+from pocket.core.states import CHECKS
 
 from .folders import staged
 from .resampling import resample, series_radii
@@ -108,8 +114,15 @@ def _profile(state):
 
 
 def field_data(state) -> dict[str, np.ndarray]:
-    """The state's scalars (its ``KEYS``), one float64 value each."""
-    return {key: np.array([float(getattr(state, key))]) for key in state.KEYS}
+    """The state's numeric scalars (module docstring): float64 arrays of one value each (an Ogden
+    parameter: one per term)."""
+    out = {key: np.array([float(getattr(state, key))]) for key in state.KEYS if getattr(state, key) is not None}
+    out.update({key: np.array([float(getattr(state, key))]) for key in CHECKS})  # wrinkled: 1.0 or 0.0
+    described = {**state.material.describe(), **(state.fluid.describe() if hasattr(state, "fluid") else {})}
+    for key, value in described.items():
+        if not isinstance(value, str):
+            out[key] = np.array(value, dtype=float).reshape(-1)
+    return out
 
 
 def _point_data(profile) -> dict[str, np.ndarray]:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import sys
+import textwrap
 from fractions import Fraction
 
 from pocket.apps.solvers import all_options, solver_options
@@ -25,7 +26,15 @@ EXIT_CODES = ("exit status: 0 success; 1 a solver failed (the message says where
 
 
 class HelpFormatter(argparse.HelpFormatter):
-    """Each option's help ends with its default, unless it names it already or has none to name."""
+    """Each option's help ends with its default, unless it names it already or has none to name; lines
+    break at spaces only (never inside mooney-rivlin or neo-hookean)."""
+
+    def _split_lines(self, text, width):
+        return textwrap.wrap(" ".join(text.split()), width, break_on_hyphens=False)
+
+    def _fill_text(self, text, width, indent):
+        return textwrap.fill(" ".join(text.split()), width, initial_indent=indent, subsequent_indent=indent,
+                             break_on_hyphens=False)
 
     def _get_help_string(self, action):
         text = action.help or ""

@@ -7,16 +7,20 @@ import json
 from pocket.apps.design import design
 
 from .common import EXIT_CODES, number
+from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
 
 
 def _main(args) -> int:
-    result = design(args.radius, args.height, args.modulus, args.alpha, args.force, args.height_ratio,
-                    solver=args.solver)
+    result = design(args.radius, args.height, args.modulus, material_of(args), args.force, args.height_ratio,
+                    fluid=fluid_of(args, physical=True), solver=args.solver)
     if args.json:
         print(json.dumps(result.report()))
         return 0
+    fluid = "a liquid" if not result.fluid.is_gas else \
+        f"a gas (ambient {result.fluid.ambient:.6g} Pa, gamma {result.fluid.gamma:g}; Phat_atm = {result.ambient:.6g})"
+    print(f"# a {result.material.law} rubber, {fluid}")
     print(f"{'':24}{'full model':>14}{'paper rules':>14}{'paper/model':>14}")
     for label, a, b in (("initial pressure P_I, Pa", result.pressure_initial_Pa, result.paper_pressure_initial_Pa),
                         ("thickness T, m", result.thickness_m, result.paper_thickness_m)):
@@ -47,11 +51,14 @@ def register(subparsers) -> None:
                               "plain numbers are SI.", epilog=EXIT_CODES)
     p.add_argument("--radius", required=True, help="clamp radius R (SI or with unit: '20 mm')")
     p.add_argument("--height", required=True, help="inflated height H0 ('10 mm')")
-    p.add_argument("--modulus", required=True, help="Young's modulus E = 6 (1 + alpha) C1 ('1 MPa')")
-    p.add_argument("--alpha", type=number, required=True, help="C2/C1 (fractions allowed: 47/160)")
+    p.add_argument("--modulus", required=True, help="small-strain Young's modulus E = 3 mu_0 ('1 MPa'; "
+                   "E = 6 (1 + alpha) C1 for Mooney-Rivlin); it scales the law's parameters, which count only by "
+                   "their ratios")
     p.add_argument("--force", required=True, help="finger force F ('0.67 N')")
     p.add_argument("--height-ratio", type=number, default=0.8, help="target H/H0 at F (default 0.8)")
     p.add_argument("--solver", choices=("shooting", "fem"), default="shooting",
                    help="solver of the full model (default shooting)")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
+    add_rubber_flags(p)
+    add_fluid_flags(p, physical=True)
     p.set_defaults(handler=_main)

@@ -45,8 +45,10 @@ def _main(args) -> int:
     for text in dict.fromkeys(w for row in (result["inflated"], *result["states"]) for w in row["warnings"]):
         print(f"pocket: warning: {text}", file=sys.stderr)
     rows = result["states"]
-    print(f"# {case.name}: solver {case.solver}, Phat_I = {rows[0]['pressure_initial']:.10g}, "
-          f"H0 = {result['inflated']['height_m']:.6g} m")
+    fluid = case.fluid.kind if not case.fluid.is_gas else \
+        f"gas (ambient {case.fluid.ambient:.6g} Pa, gamma {case.fluid.gamma:g})"
+    print(f"# {case.name}: solver {case.solver}, {case.material.law} rubber (E = {case.modulus:.6g} Pa), {fluid}, "
+          f"Phat_I = {rows[0]['pressure_initial']:.10g}, H0 = {result['inflated']['height_m']:.6g} m")
     print("  ".join(f"{k:>15}" for k in _SHOWN))
     for row in rows:
         print("  ".join(f"{row[k]:>15.8g}" if isinstance(row[k], float) else f"{row[k]!s:>15}" for k in _SHOWN))

@@ -37,7 +37,8 @@ def _main(args) -> int:
         text = io.StringIO(newline="")
         writer = csv.DictWriter(text, list(rows[0]))
         writer.writeheader()
-        writer.writerows(rows)
+        writer.writerows({k: "; ".join(map(str, v)) if isinstance(v, list) else v for k, v in row.items()}
+                         for row in rows)
         write_whole(table, text.getvalue())
         out["table"] = args.table
     if args.json:
@@ -53,7 +54,9 @@ def register(subparsers) -> None:
     text = "force sensing: force, contact area and dF/dP from a measured pressure"
     p = subparsers.add_parser("sense", help=text, description=f"{text} (gauge, like P_I), by inverting the "
                               "full model (no extrapolation: a pressure below P_I or past the model's range is "
-                              "an error); --table writes a calibration table over the force range.",
+                              "an error); --table writes a calibration table over the force range. The case's "
+                              "rubber and fluid are used: with a gas ([fluid] kind = \"gas\") it is the "
+                              "barometric touch sensor, the gas compressed by (P + P_atm) V^gamma fixed.",
                               epilog=EXIT_CODES)
     add_case_arguments(p)
     p.add_argument("--pressure", help="measured gauge pressure P ('5.2 kPa', SI if plain)")

@@ -18,11 +18,14 @@ from pocket.apps.solvers import SOLVERS, get_solver
 from pocket.core.errors import ConvergenceError
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
+from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
 
-_UNITS = ("units: Phat = P R / (E T) with E = 6 (C1 + C2) and T the thickness, Fhat = F / (P_I pi R^2), "
-          "lengths in units of the clamp radius R")
+_UNITS = ("units: Phat = P R / (E T) with E = 3 mu_0 the small-strain Young's modulus (6 (C1 + C2) for "
+          "Mooney-Rivlin) and T the thickness, Fhat = F / (P_I pi R^2), lengths in units of the clamp radius R; a "
+          "state reports its law and parameters (units of mu_0), its fluid, and its smallest tensions (units E T) with "
+          "'wrinkled' true where one is not positive (outside membrane theory, also a warning)")
 
 
 def register(subparsers) -> None:
@@ -30,8 +33,6 @@ def register(subparsers) -> None:
     for name, text in (("inflate", "step 1: inflate the pocket at pressure Phat"),
                        ("compress", "step 2: press the inflated pocket with a flat plate at fixed fluid volume")):
         p = subparsers.add_parser(name, help=text, description=f"{text}. {_UNITS}.", epilog=EXIT_CODES)
-        p.add_argument("--alpha", type=number, required=True, help="C2/C1 of the Mooney-Rivlin rubber, > -1 "
-                       "(fractions allowed: 47/160)")
         if name == "inflate":
             p.add_argument("--pressure", type=number, required=True, help="Phat = P R / (E T)")
         else:
@@ -43,6 +44,9 @@ def register(subparsers) -> None:
         p.add_argument("--json", action="store_true", help="print JSON (a list for several forces)")
         p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView")
         p.add_argument("--overwrite", action="store_true", help="replace an existing --vtk DIR")
+        add_rubber_flags(p)
+        if name == "compress":
+            add_fluid_flags(p, physical=False)
         add_solver_flags(p, "inflate" if name == "inflate" else "compress")
         p.set_defaults(handler=_main)
 
@@ -62,21 +66,25 @@ def _fmt(value) -> str:
     return f"{value:.10g}" if isinstance(value, float) else str(value)
 
 
-def _solve(args, step: str, options: dict) -> list:
+def _solve(args, step: str, material, options: dict) -> list:
     solver = get_solver(args.solver)
     if step == "inflate":
-        return [solver.inflate(args.alpha, args.pressure, **options)]
+        return [solver.inflate(material, args.pressure, **options)]
     with progress_bar(f"compress ({args.solver})", " forces") as progress:
         extra = {} if progress is None or len(args.force) == 1 else {"progress": progress}
-        return solver.compression_curve(args.alpha, args.pressure, args.force, **options, **extra)
+        return solver.compression_curve(material, args.pressure, args.force, **options, **extra)
 
 
 def _main(args) -> int:
     step = "inflate" if args.command == "inflate" else "compress"
     options = solver_flags(args, args.solver, step)
+    material = material_of(args)
+    if step == "compress":
+        fluid = fluid_of(args, physical=False)
+        options.update({} if fluid is None else {"fluid": fluid})
     if args.vtk:
         check_output_dir(args.vtk, "--vtk", overwrite=args.overwrite)
-    states = _solve(args, step, options)
+    states = _solve(args, step, material, options)
     rows = [report(s) for s in states]
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
         raise ConvergenceError(f"solver {args.solver} returned a non-finite value")

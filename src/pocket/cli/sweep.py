@@ -1,4 +1,5 @@
-"""``pocket sweep``: a grid over alpha, Phat_I and Fhat on local processes or a dask cluster, resumable."""
+"""``pocket sweep``: a grid over alpha (or one rubber of another law), Phat_I and Fhat, with a liquid or a
+gas, on local processes or a dask cluster, resumable."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from pocket.apps.workers import local_executor, max_workers, stop
 from pocket.core.errors import InputError
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, solver_flags
+from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
 
@@ -33,11 +35,14 @@ def _executor(args):
 def _main(args) -> int:
     check_output_file(args.out, "--out")
     options = solver_flags(args, args.solver, "compress")
+    rubber = material_of(args)
+    alphas, material = (rubber, None) if isinstance(rubber, list) else (None, rubber)
+    fluid = fluid_of(args, physical=False)
     executor, client = _executor(args)
     try:
         with progress_bar("sweep", " points") as progress:
-            computed, reused = run_sweep(args.out, args.alpha, args.pressure, args.force, executor,
-                                         solver=args.solver, options=options, progress=progress)
+            computed, reused = run_sweep(args.out, alphas, args.pressure, args.force, executor, solver=args.solver,
+                                         options=options, progress=progress, material=material, fluid=fluid)
         executor.shutdown()
     except BaseException:
         stop(executor)
@@ -51,14 +56,13 @@ def _main(args) -> int:
 
 def register(subparsers) -> None:
     """Add ``pocket sweep``."""
-    text = "parameter sweep over alpha, Phat_I and Fhat (parallel, resumable)"
+    text = "parameter sweep over alpha (or one rubber of another law), Phat_I and Fhat (parallel, resumable)"
     p = subparsers.add_parser(
         "sweep", help=text, epilog=EXIT_CODES,
         description=f"{text}: one compressed state per grid point (at most {MAX_POINTS}), one CSV row each, "
         "with a status (ok, out_of_range, failed) and a message; rerun the same command to compute only the "
         "missing points. While it runs the file collects finished points; at the end it is rewritten in grid "
         "order. Stopped early (interrupt, error), the file keeps its complete rows only.")
-    p.add_argument("--alpha", type=number, nargs="+", required=True, help="values of C2/C1")
     p.add_argument("--pressure", type=number, nargs="+", required=True, help="values of Phat_I = P_I R/(E T)")
     p.add_argument("--force", type=number, nargs="+", required=True, help="values of Fhat = F/(P_I pi R^2)")
     p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
@@ -66,5 +70,7 @@ def register(subparsers) -> None:
     p.add_argument("--workers", type=int, help=f"local worker processes (default: one per usable CPU; at most "
                    f"{max_workers()}, 4 per CPU)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
+    add_rubber_flags(p, alphas=True)
+    add_fluid_flags(p, physical=False)
     add_solver_flags(p, "compress")
     p.set_defaults(handler=_main)

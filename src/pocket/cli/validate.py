@@ -28,12 +28,16 @@ _VALIDATE = """\
 Run the validation suite and write its report: the shooting solver (the
 reference), the finite-element model (P1 and P2) and the paper's analytical
 model compared on the pockets of the cases file (the paper's Table 1 samples,
-alpha = 0 and 1), each comparison with a tolerance and a pass/fail verdict; the
-paper's figures 2-5 recomputed; a mesh-convergence study of the FE model; the
-paper's statements checked against the full model; a 3-D picture (with the
-'render' extra) and the headline pocket's compression path as VTK files for
-ParaView. The report folder holds index.html and report.md (the same content),
-the PNGs and a CSV of every number. Progress shows on a terminal."""
+alpha = 0 and 1, a Yeoh silicone, an Ogden natural rubber, a Gent rubber near
+its lock, and the headline pocket filled with air, isothermal and adiabatic),
+each comparison with a tolerance and a pass/fail verdict, and a wrinkling
+verdict (both tensions positive) for every state; the paper's figures 2-5
+recomputed, a liquid against a gas in one pocket, the other rubbers; a
+mesh-convergence study of the FE model; the paper's statements checked against
+the full model; a 3-D picture (with the 'render' extra) and the headline
+pocket's compression path as VTK files for ParaView. The report folder holds
+index.html and report.md (the same content), the PNGs and a CSV of every
+number. Progress shows on a terminal."""
 
 _CONVERGE = """\
 Run the mesh-convergence study alone: the FE model (P1 and P2, uniform meshes

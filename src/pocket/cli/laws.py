@@ -1,0 +1,116 @@
+"""The rubber and fluid flags shared by ``inflate``, ``compress``, ``sweep`` and ``design``.
+
+``--law NAME`` (default mooney-rivlin, which takes ``--alpha`` = C2/C1, as it always
+did) and the law's parameters as flags: ``--mu`` (neo-hookean, gent: one value;
+ogden: one per term), ``--c10 --c20 --c30`` (yeoh), ``--jm`` (gent, a number),
+``--exponents`` (ogden, one per term). The stresses may be given in any one unit:
+they are rescaled to units of mu_0 (so that mu_0 = 1), the unit of the model and
+of every output, since only their ratios enter the dimensionless model
+(``pocket.apps.rubbers.rubber``).
+
+``--fluid {liquid,gas}`` with, for a gas, ``--ambient`` and ``--gamma`` (default 1,
+isothermal; at most 5/3). The dimensionless commands take the ambient pressure as
+Phat_atm = P_atm R / (E T) (required with a gas: it depends on the pocket);
+``design`` takes it as a pressure (default 101.325 kPa). A parameter that is not the
+law's, a missing one, or a gas option without ``--fluid gas`` is a one-line error.
+"""
+
+from __future__ import annotations
+
+from pocket.apps.rubbers import DEFAULT_LAW, FLUIDS, PARAMETERS, gas_of, rubber
+from pocket.core.errors import InputError
+from pocket.core.fluids import AMBIENT
+from pocket.core.inputs import check_positive
+from pocket.core.materials import LAWS
+from pocket.core.units import quantity
+
+from .common import number
+
+__all__ = ["add_rubber_flags", "add_fluid_flags", "material_of", "fluid_of", "LAW_FLAGS"]
+
+#: parameter flags of the laws other than Mooney-Rivlin (which takes --alpha)
+LAW_FLAGS = tuple(name for name in PARAMETERS if name not in LAWS[DEFAULT_LAW])
+_LISTS = ("mu", "exponents")  # several values for Ogden (one per term)
+_HELP = {"mu": "shear modulus mu (neo-hookean, gent), or Ogden's mu_p, one per term",
+         "c10": "Yeoh's C10", "c20": "Yeoh's C20", "c30": "Yeoh's C30",
+         "jm": "Gent's locking parameter Jm (a number)", "exponents": "Ogden's exponents alpha_p, one per term"}
+_UNITS = ("stresses in any one unit, rescaled to units of mu_0 (mu_0 = 1: the unit of the model and of the "
+          "output; only their ratios matter)")
+
+
+def _flag(name: str) -> str:
+    return f"--{name}"
+
+
+def add_rubber_flags(parser, *, alphas: bool = False) -> None:
+    """``--law``, ``--alpha`` (several values if ``alphas``: a sweep's axis) and the other laws' parameter
+    flags, in one group."""
+    group = parser.add_argument_group("rubber", f"the strain-energy law and its parameters ({_UNITS})")
+    group.add_argument("--law", choices=tuple(LAWS), default=DEFAULT_LAW,
+                       help="strain-energy law of the rubber (default mooney-rivlin)")
+    several = "; several values" if alphas else ""
+    group.add_argument("--alpha", type=number, nargs="+" if alphas else None,
+                       help=f"C2/C1 of the Mooney-Rivlin rubber, > -1 (fractions allowed: 47/160){several}; "
+                       "required with --law mooney-rivlin, refused with another law")
+    for name in LAW_FLAGS:
+        group.add_argument(_flag(name), type=number, nargs="+" if name in _LISTS else None,
+                           metavar=name.upper(), help=_HELP[name])
+
+
+def material_of(args):
+    """The rubber of the command line: the float alpha (or the list of ``--alpha`` values of a sweep) for
+    Mooney-Rivlin, else the law's ``Material`` in units of mu_0."""
+    given = {name: getattr(args, name) for name in LAW_FLAGS if getattr(args, name) is not None}
+    if args.law == DEFAULT_LAW:
+        if given:
+            first = next(iter(given))
+            raise InputError(f"--{first} is not a parameter of the mooney-rivlin law (it takes --alpha; choose "
+                             "another law with --law)")
+        if args.alpha is None:
+            raise InputError("--alpha is missing: the mooney-rivlin law (the default --law) needs it")
+        return args.alpha
+    if args.alpha is not None:
+        raise InputError(f"--alpha is not a parameter of the {args.law} law (its parameters: "
+                         f"{', '.join(map(_flag, LAWS[args.law]))})")
+    params = {}
+    for name, values in given.items():
+        if name in _LISTS and args.law != "ogden":
+            if len(values) != 1:
+                raise InputError(f"--{name} takes one value for the {args.law} law, got {len(values)}")
+            values = values[0]
+        params[name] = values
+    return rubber(args.law, params, _flag)
+
+
+def add_fluid_flags(parser, *, physical: bool) -> None:
+    """``--fluid``, ``--ambient`` and ``--gamma``; ``physical``: the ambient is a pressure with a unit
+    (default 101.325 kPa), else Phat_atm (required for a gas)."""
+    group = parser.add_argument_group("fluid", "the fluid sealed in the pocket once it is inflated")
+    group.add_argument("--fluid", choices=FLUIDS, default="liquid",
+                       help="liquid (fixed volume) or an ideal gas, (P + P_atm) V^gamma fixed (default liquid)")
+    if physical:
+        group.add_argument("--ambient", help="gas only: ambient (absolute) pressure P_atm ('101.325 kPa', SI if "
+                           "plain; default 101.325 kPa)")
+    else:
+        group.add_argument("--ambient", type=number, metavar="PHAT_ATM", help="gas only, required: ambient "
+                           "(absolute) pressure as Phat_atm = P_atm R / (E T), E = 3 mu_0 (for air at 101.325 kPa "
+                           "and the paper's sample 1, 6.53)")
+    group.add_argument("--gamma", type=number, help="gas only: polytropic exponent in [1, 5/3]: 1 isothermal (slow), "
+                       "1.4 air compressed adiabatically (fast) (default 1)")
+
+
+def fluid_of(args, *, physical: bool):
+    """The fluid of the command line: None for a liquid, else the gas (its ambient in Pa if ``physical``,
+    else Phat_atm)."""
+    if args.fluid == "liquid":
+        extra = [name for name in ("ambient", "gamma") if getattr(args, name) is not None]
+        if extra:
+            raise InputError(f"--{extra[0]} applies to a gas: give --fluid gas")
+        return None
+    gamma = 1.0 if args.gamma is None else args.gamma
+    if physical:
+        ambient = AMBIENT if args.ambient is None else args.ambient
+        return gas_of(quantity("--ambient", ambient, "pressure"), ambient, gamma, _flag)
+    if args.ambient is None:
+        raise InputError("--fluid gas needs --ambient PHAT_ATM, the ambient pressure P_atm R / (E T)")
+    return gas_of(check_positive("--ambient", args.ambient), args.ambient, gamma, _flag)
