@@ -61,9 +61,10 @@ class ColumnCurve:
     states: tuple[CompressedState, ...]
 
 
-def range_end(pocket: Pocket, column: Column = REFERENCE, *, rtol: float = RANGE_RTOL) -> float:
-    """The end of ``column``'s compression range in Fhat, to relative ``rtol`` (a lower bound)."""
-    end = model_range_end(get_solver(column.solver), pocket.material, pocket.pressure_initial, rtol=rtol,
+def range_end(pocket: Pocket, column: Column = REFERENCE, *, width: float = RANGE_RTOL) -> float:
+    """The end of ``column``'s compression range in Fhat (a lower bound): the solver's own, or bisected to
+    the relative ``width`` for a solver without one."""
+    end = model_range_end(get_solver(column.solver), pocket.material, pocket.pressure_initial, width=width,
                           **column.kwargs(), **pocket.fluid_options())
     if not math.isfinite(end):  # a Gent rubber that locks before the sheet reaches the clamp plane
         raise OutOfRangeError(f"{pocket.case.name}: its compression range has no end (the rubber locks first), "

@@ -112,12 +112,13 @@ def _own_end(solver, material, pressure_initial, options):
     return None if own is None else own(material, pressure_initial, **options)
 
 
-def range_end(solver, material, pressure_initial, *, below=None, rtol=_EDGE, **options) -> float:
+def range_end(solver, material, pressure_initial, *, below=None, width=_EDGE, **options) -> float:
     """The end of the model's compression range in Fhat (where the free part reaches the
     clamp plane); the value is inside the range.
 
-    A solver with its own ``range_end`` gives it (``rtol`` is then not used: the solver states
-    its own tolerance). Otherwise the end is located by bisection to relative width ``rtol``,
+    ``options`` go to the solver (a shooting ``rtol`` among them). A solver with its own
+    ``range_end`` gives it (``width`` is then not used: the solver states its own tolerance).
+    Otherwise the end is located by bisection to the relative width ``width``,
     first bracketed by doubling from Fhat = 1 (up to 1e4). With ``below``: ``below`` itself if
     the model has a compressed state there, else the end below it.
     """
@@ -142,7 +143,7 @@ def range_end(solver, material, pressure_initial, *, below=None, rtol=_EDGE, **o
             lo, hi = hi, 2.0 * hi
             if hi > 1e4:
                 raise OutOfRangeError(f"no end of the compression range found below Fhat = {hi:g}")
-    while hi - lo > rtol * hi:
+    while hi - lo > width * hi:
         mid = 0.5 * (lo + hi)
         lo, hi = (mid, hi) if inside(mid) else (lo, mid)
     return lo
