@@ -72,7 +72,8 @@ SOLVER = Solver(
         Option("contact", "choice", "fitted",
                "contact method: fitted (default; a mesh node follows the contact edge, contact exact) or "
                "penalty (fixed mesh, penalty plate)",
-               lambda name, value: check_choice(name, value, CONTACT_METHODS), steps=("compress",)),
+               lambda name, value: check_choice(name, value, CONTACT_METHODS), steps=("compress",),
+               choices=CONTACT_METHODS),
         Option("penalty", "float", 1e5, "contact penalty stiffness of contact = penalty (units E T / R^2; "
                "default 1e5)", check_positive, steps=("compress",)),
         Option("augmented", "bool", True, "augmented-Lagrangian updates of contact = penalty (default true)",

@@ -68,7 +68,7 @@ def flag(name: str) -> str:
     return f"--{name}"
 
 
-_TYPES = {"float": number, "int": int, "path": str, "choice": str}
+_TYPES = {"float": number, "int": int, "path": str}
 
 
 def _shown(value) -> str:
@@ -94,6 +94,8 @@ def add_solver_flags(parser, step: str) -> None:
         if option.kind == "bool":
             groups[solver].add_argument(flag(name), action=argparse.BooleanOptionalAction, default=None,
                                         help=text)
+        elif option.kind == "choice":
+            groups[solver].add_argument(flag(name), choices=option.choices, default=None, help=text)
         else:
             groups[solver].add_argument(flag(name), type=_TYPES[option.kind], default=None, help=text,
                                         metavar=option.kind.upper())

@@ -59,9 +59,9 @@ class Option:
     """One keyword option of a solver (see the module docstring).
 
     ``kind`` is how a user writes it: ``"float"``, ``"int"``, ``"bool"``,
-    ``"path"`` (a file name) or ``"choice"`` (one word of a list its check
-    knows); ``default`` is what the solver uses when it is
-    not given (documentation: the solver's signature holds the same value).
+    ``"path"`` (a file name) or ``"choice"`` (one word of ``choices``);
+    ``default`` is what the solver uses when it is not given (documentation:
+    the solver's signature holds the same value).
     """
 
     name: str
@@ -70,6 +70,7 @@ class Option:
     help: str
     check: Callable[[str, object], object]
     steps: tuple[str, ...] = STEPS
+    choices: tuple[str, ...] = ()
 
     def checked(self, value, spell: Callable[[str], str] = str):
         """``value`` checked, with errors naming the option as ``spell(name)`` would; a ``"path"``
