@@ -137,9 +137,10 @@ def default_mesh_accuracy(sizes):
     for case in pockets:
         end = range_end(case)
         forces = sorted(f for f in (0.0, 0.05, 0.19, 1.0, 0.95 * end) if f <= 0.95 * end)
-        refs = shooting.compression_curve(case.alpha, case.pressure_initial, forces, rtol=1e-12)
+        fluid = case.fluid_options()
+        refs = shooting.compression_curve(case.material, case.pressure_initial, forces, rtol=1e-12, **fluid)
         for n in sizes:
-            states = fem.compression_curve(case.alpha, case.pressure_initial, forces, elements=n)
+            states = fem.compression_curve(case.material, case.pressure_initial, forces, elements=n, **fluid)
             for state, ref in zip(states, refs, strict=True):
                 a, b = (state.inflated, ref.inflated) if state.force == 0.0 else (state, ref)
                 keys = ("stretch_pole", "height", "volume", "stretch_clamp") if state.force == 0.0 else a.KEYS[3:]
