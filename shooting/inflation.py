@@ -68,7 +68,7 @@ _P_CAP = 1e6  # largest pressure p tried for one pole stretch (Phat ~ 3e5; 1e6 i
 
 def _tolerance(rtol, strain):
     """Integration tolerances for a dome of pole strain ~ ``strain`` (``Tolerance.scaled``)."""
-    return Tolerance.scaled(rtol, math.sqrt(1.5 * strain), 0.25 * math.pi * math.sqrt(6.0 * strain))
+    return Tolerance.scaled(rtol, smallstrain.height_of_strain(strain), smallstrain.volume_of_strain(strain))
 
 
 def _landing(s, law, p, tol, what):
@@ -104,7 +104,7 @@ def pressure_of_stretch(l0, law, *, rtol=1e-10, tol=None, guess=None, accuracy=_
     def miss(p):
         return _signed(_landing(s, law, p, tol, what))
 
-    p = law.pressure_factor * 4.0 * math.sqrt(6.0) * s**1.5 if guess is None else guess
+    p = law.pressure_factor * smallstrain.pressure_of_strain(s) if guess is None else guess
     f, width = miss(p), 0.02 * p
     if f >= 0.0:  # grow a bracket upward from the guess
         lo, f_lo = p, f

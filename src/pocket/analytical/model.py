@@ -124,10 +124,10 @@ def inflate(material, pressure) -> InflatedState:
     s = smallstrain.pole_strain(pressure)
     r = np.linspace(0.0, 1.0, _N)
     l2 = 1.0 + s - s * r * r
-    profile = _profile(r, l2 * r, np.sqrt(1.5 * s) * (1.0 - r * r), np.full_like(r, 1.0 + s), l2,
-                       np.zeros(r.size, bool))
-    return InflatedState(alpha=alpha, pressure=pressure, stretch_pole=1.0 + s, height=np.sqrt(1.5 * s),
-                         volume=0.25 * np.pi * np.sqrt(6.0 * s), stretch_clamp=1.0 + s,
+    height = smallstrain.height_of_strain(s)
+    profile = _profile(r, l2 * r, height * (1.0 - r * r), np.full_like(r, 1.0 + s), l2, np.zeros(r.size, bool))
+    return InflatedState(alpha=alpha, pressure=pressure, stretch_pole=1.0 + s, height=height,
+                         volume=smallstrain.volume_of_strain(s), stretch_clamp=1.0 + s,
                          profile=profile, solver="analytical", warnings=_warnings(lambda_0=1.0 + s),
                          material=checked if isinstance(material, Material) else None)
 

@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["pole_strain", "height", "volume", "height_constant", "strain_of_volume"]
+__all__ = ["pole_strain", "pressure_of_strain", "height_of_strain", "volume_of_strain", "height", "volume",
+           "height_constant", "strain_of_volume"]
 
 
 def pole_strain(pressure: float) -> float:
@@ -24,14 +25,29 @@ def pole_strain(pressure: float) -> float:
     return (pressure / (4.0 * math.sqrt(6.0))) ** (2.0 / 3.0)
 
 
+def pressure_of_strain(strain: float) -> float:
+    """Phat of the dome of pole strain s = lambda_0 - 1: 4 sqrt(6) s^(3/2) (``pole_strain`` inverted)."""
+    return 4.0 * math.sqrt(6.0) * strain**1.5
+
+
+def height_of_strain(strain: float) -> float:
+    """H0 / R of the dome of pole strain s: sqrt(3 s / 2)."""
+    return math.sqrt(1.5 * strain)
+
+
+def volume_of_strain(strain: float) -> float:
+    """V / R^3 of the dome of pole strain s: (pi / 4) sqrt(6 s)."""
+    return 0.25 * math.pi * math.sqrt(6.0 * strain)
+
+
 def height(pressure: float) -> float:
-    """H0 / R at Phat = ``pressure``: sqrt(3 s / 2), s = lambda_0 - 1."""
-    return math.sqrt(1.5 * pole_strain(pressure))
+    """H0 / R at Phat = ``pressure``."""
+    return height_of_strain(pole_strain(pressure))
 
 
 def volume(pressure: float) -> float:
-    """V / R^3 at Phat = ``pressure``: (pi / 4) sqrt(6 s)."""
-    return 0.25 * math.pi * math.sqrt(6.0 * pole_strain(pressure))
+    """V / R^3 at Phat = ``pressure``."""
+    return volume_of_strain(pole_strain(pressure))
 
 
 def height_constant() -> float:
