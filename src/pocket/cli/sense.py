@@ -14,13 +14,14 @@ from pocket.core.inputs import check_count
 from pocket.core.units import positive, quantity
 
 from .common import EXIT_CODES, number
-from .run import add_case_arguments, case_from_args
+from .run import add_case_arguments, case_from_args, warn_case
 
 __all__ = ["register"]
 
 
 def _main(args) -> int:
     case, _ = case_from_args(args)
+    warn_case(case)
     if args.pressure is None and args.ratio is None and args.table is None:
         raise InputError("give a measured --pressure or --ratio, or --table FILE.csv")
     table = None if args.table is None else check_output_file(args.table, "--table")
