@@ -24,6 +24,7 @@ from pocket.core.units import written_like
 
 from .cases import Case
 from .inverse import force_where, pressure_for_height, range_end
+from .rangeend import check_force
 from .solvers import get_solver, record
 
 __all__ = ["Pocket", "resolve", "forces", "inflated_row", "compressed_row"]
@@ -157,13 +158,15 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
 def forces(pocket: Pocket) -> list[float]:
     """The case's loads as forces Fhat (plate heights solved for their force).
 
-    A plate height above the inflated pocket, or below the lowest the model reaches, is an
-    ``OutOfRangeError`` quoting the height as the case gives it, with the bound in its unit.
+    A plate height above the inflated pocket, or below the lowest the model reaches, or a force past the
+    end of the model's range (``pocket.apps.rangeend``), is an ``OutOfRangeError`` quoting the load as the
+    case gives it, with the bound in its unit.
     """
     case = pocket.case
     if case.load_kind == "forces":
-        return [_inside(f"loads.forces[{i}]", quote(case.as_given(f"loads.forces[{i}]")), "Fhat = F / (P_I pi R^2)",
-                        f / pocket.force_scale_N) for i, f in enumerate(case.loads)]
+        keys = [(f"loads.forces[{i}]", case.as_given(f"loads.forces[{i}]"), f) for i, f in enumerate(case.loads)]
+        return [check_force(pocket, key, given, _inside(key, quote(given), "Fhat = F / (P_I pi R^2)",
+                                                        f / pocket.force_scale_N)) for key, given, f in keys]
     solver, options = pocket.solver(), pocket.options()
     top = solver.inflate(pocket.material, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
     out = []
