@@ -10,8 +10,9 @@ A step that lands outside the model (``OutOfRangeError``: the free part below
 the clamp plane) is cut like a failed one: a long step's Newton iterates can
 wander out of the model although the load itself is inside it. Only a step
 shorter than ``min_step`` beyond the last converged load that still lands
-outside is reported as outside the model (the range then ends within
-``min_step`` of that load).
+outside is reported as outside the model, in the words of
+``pocket.core.errors.beyond_range``: the range then ends between that load and
+the one tried beyond it, and both are quoted.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ from collections.abc import Callable, Iterator
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, OutOfRangeError, beyond_range
 
 __all__ = ["follow"]
 
@@ -59,7 +60,9 @@ def follow(
             if ds >= min_step:
                 continue
             if isinstance(err, OutOfRangeError):
-                raise OutOfRangeError(f"{err} (just beyond {name} = {show(reached):.6g})") from err
+                end = f"{name} = {show(reached):.10g} to {show(load):.10g} (the last load converged and the " \
+                    "nearest beyond it tried)"
+                raise beyond_range(f"{name} = {show(stop):.10g}", end, str(err)) from err
             raise ConvergenceError(
                 f"load stepping gave up at {name} = {show(reached):.6g} on the way to {show(stop):.6g}: {err}",
                 load=reached,

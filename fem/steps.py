@@ -37,7 +37,7 @@ from collections.abc import Callable
 import numpy as np
 
 from pocket.core import smallstrain
-from pocket.core.errors import ConvergenceError, OutOfRangeError
+from pocket.core.errors import CLAMP_PLANE, ConvergenceError, OutOfRangeError
 
 from .geometry import node_radii, place
 from .model import FITTED, FREE, Control, Model, conform, fields, linearize, placement
@@ -83,8 +83,8 @@ def solve(model: Model, mode: str, control: Control, guess: np.ndarray, tol: Tol
     eta = y[1: model.dofs - 2: 2]
     if slope > _SLOPE_FLOOR or eta.min() < _ETA_FLOOR:
         raise OutOfRangeError(
-            f"the free part of the sheet comes down to the clamp plane (its tangent at the clamp rises at "
-            f"{slope:.3g}, min eta/R = {eta.min():.3g}, at Phat = {y[model.dofs]:.6g}): outside the membrane model"
+            f"{CLAMP_PLANE} (its tangent at the clamp rises at {slope:.3g}, min eta/R = {eta.min():.3g}, "
+            f"at Phat = {y[model.dofs]:.6g}), outside the membrane model"
         )
     return y, result.iterations
 

@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.errors import CLAMP_PLANE, ConvergenceError, InputError, beyond_range
 from pocket.core.fluids import as_fluid
 from pocket.core.inputs import check_force, check_positive
 from pocket.core.states import CompressedState, InflatedState
@@ -56,12 +56,9 @@ def _beyond(force, problem, seed):
     """The range end of ``problem`` (``rangeend.End``); OutOfRangeError if ``force`` is past it."""
     end = end_of(problem, seed)
     if force > end.force:
-        where = ("the free part of the sheet reaches the clamp plane" if not end.fold else
+        where = (CLAMP_PLANE if not end.fold else
                  f"the force has a maximum, with the sheet's angle at the clamp at {end.angle:.6g} rad")
-        raise OutOfRangeError(
-            f"force = {force!r} is beyond the model's range, which ends at force = {end.force:.10g} "
-            f"({problem.label}): there {where}"
-        )
+        raise beyond_range(f"force = {force!r}", f"force = {end.force:.10g} ({problem.label})", where)
     return end
 
 

@@ -151,7 +151,8 @@ def _with(key_line: str, section: str = "[clamp]") -> str:
         (BUTTON.replace('radius = "20 mm"', "radius = 1e300"), "clamp.radius = 1e+300 is outside the magnitudes"),
         (BUTTON.replace('radius = "20 mm"', 'radius = "1e-300 mm"'), "outside the magnitudes"),
         (BUTTON.replace('height = "10 mm"', 'pressure = "1e-15 Pa"'),  # Phat_I = 1e-15 0.02 / (1e6 2.5e-4)
-         "initial.pressure = '1e-15 Pa' gives Phat_I = P_I R / (E T) = 8e-20, outside the magnitudes"),
+         "initial.pressure = '1e-15 Pa' with sheet.thickness = '0.25 mm', clamp.radius = '20 mm' (E = 1e+06 Pa) "
+         "gives Phat_I = P_I R / (E T) = 8e-20, outside the magnitudes"),
         (BUTTON.replace('height = "10 mm"', 'pressure = "4 kPa"').replace('heights = ["9 mm", "8 mm"]',
                                                                           'forces = ["1 N", "1e-15 N"]'),
          # Fhat = 1e-15 / (4e3 pi 0.02^2)

@@ -99,16 +99,20 @@ def test_single_force_near_the_range_end():
 
 def test_beyond_the_range_end_is_out_of_range():
     """Fhat = 12 is past the end of the range (alpha = Phat_I = 0.3): the free part comes down to the
-    clamp plane, OutOfRangeError saying so and where the range ends, which agrees with the shooting
-    solver's end (bisected to 1e-5) to 1e-4 even on 16 elements (the end is where the tangent at the
-    clamp turns horizontal, read from the clamp reaction)."""
+    clamp plane, OutOfRangeError saying so in the shooting's words and where the range ends: between the
+    last load converged and the one tried beyond it, both of which agree with the shooting solver's end
+    to 1e-4 even on 16 elements (the end is where the tangent at the clamp turns horizontal, read from
+    the clamp reaction)."""
     from pocket.apps.inverse import range_end
 
     end = range_end(shooting, 0.3, 0.3)
     with pytest.raises(OutOfRangeError, match="clamp plane") as info:
         fem.compress(0.3, 0.3, 12.0, elements=16)
-    reached = float(re.search(r"just beyond force = ([0-9.e+-]+)", str(info.value)).group(1))
-    assert reached == pytest.approx(end, rel=1e-4), (reached, end)
+    found = re.match(r"force = 12 is beyond the model's range, which ends at force = ([0-9.e+-]+) to ([0-9.e+-]+) "
+                     r"\(.*\): there the free part of the sheet reaches the clamp plane", str(info.value))
+    assert found, str(info.value)
+    low, high = map(float, found.groups())
+    assert low < high and low == pytest.approx(end, rel=1e-4) and high == pytest.approx(end, rel=1e-4), (low, high, end)
 
 
 def test_height_control_reaches_the_force_state():

@@ -40,7 +40,10 @@ Values carry units (``pocket.core.units``); plain numbers are SI. Every problem
 (unknown, missing or misplaced keys, wrong dimensions, impossible or absurd
 values, a file that is not UTF-8 TOML, more than ``MAX_LOADS`` loads or a file
 over ``tomlfiles.MAX_BYTES``) is a one-line ``InputError`` naming the key, raised before
-any solver runs: the work a case can ask for is bounded.
+any solver runs: the work a case can ask for is bounded. Lengths outside the sizes of a
+pocket, or a sheet too thick for a membrane (T/R >= 0.5), are refused too; a plain length
+above 1 m (probably meant in mm) or T/R above 0.1 is a warning the case carries
+(``Case.warnings``, ``pocket.core.sizes``), and so does every row of its results.
 
 A ``Case`` keeps the values as the user wrote them (``given``), so that results
 quote ``"0.2 N"``, not 0.19999999999999998, and errors quote the user's value
@@ -61,6 +64,7 @@ from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
 from pocket.core.inputs import quote
 from pocket.core.materials import STRESSES, Material
+from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import positive, quantity
 
 from .rubbers import PARAMETERS, fluid, sheet
@@ -88,6 +92,7 @@ class Case:
     ``load_kind`` is ``"forces"`` (F in N) or ``"heights"`` (plate height H in m), or ``""``
     for a case without loads (the validation suite chooses its own). ``given`` maps each
     physical key (``"sheet.thickness"``, ``"loads.forces[0]"``) to the value as written.
+    ``warnings`` are about the inputs (``pocket.core.sizes``), one line each.
     """
 
     name: str
@@ -103,6 +108,7 @@ class Case:
     tags: tuple[str, ...] = ()
     given: tuple[tuple[str, object], ...] = dataclasses.field(default=(), hash=False)  # values may be lists
     fluid: Fluid = LIQUID
+    warnings: tuple[str, ...] = ()  # about the inputs: a plain length that looks like millimetres, a thick sheet
 
     @property
     def alpha(self) -> float | None:
@@ -141,7 +147,7 @@ class Case:
         return {"name": self.name, "thickness_m": self.thickness, **rubber, "radius_m": self.radius, **fluid,
                 f"initial_{self.initial[0]}": self.initial[1], "load_kind": self.load_kind,
                 "loads": list(self.loads), "solver": self.solver, **dict(self.options),
-                "given": dict(self.given)}
+                "given": dict(self.given), "warnings": list(self.warnings)}
 
 
 def _table(data, section, where) -> dict:
@@ -218,6 +224,19 @@ def _tags(data, where) -> tuple[str, ...]:
     return tuple(value)
 
 
+def _sizes(given, thickness, radius, initial, loads) -> list[str]:
+    """The warnings on the case's lengths and on its sheet's thinness (``pocket.core.sizes``); an
+    ``InputError`` naming the key for a length no pocket has or a sheet too thick for a membrane."""
+    lengths = [("sheet.thickness", thickness), ("clamp.radius", radius)]
+    if initial[0] == "height":
+        lengths.append(("initial.height", initial[1]))
+    if loads[0] == "heights":
+        lengths += [(f"loads.heights[{i}]", h) for i, h in enumerate(loads[1])]
+    warnings = [w for key, si in lengths for w in length_warnings(key, given[key], si)]
+    why = f"sheet.thickness = {quote(given['sheet.thickness'])} on clamp.radius = {quote(given['clamp.radius'])}"
+    return warnings + thin_sheet(thickness, radius, why)
+
+
 def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=None) -> Case:
     """A ``Case`` from the TOML table ``data``; ``where`` names it in error messages.
 
@@ -250,9 +269,11 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
+    warnings = _sizes(given, thickness, radius, initial=(kind, value), loads=(load_kind, loads))
     return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
-                label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()))
+                label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()),
+                warnings=tuple(warnings))
 
 
 def load(path, *, require_loads: bool = True) -> Case:

@@ -58,6 +58,7 @@ from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
 from pocket.core.inputs import check_alpha, quote
 from pocket.core.materials import Material, as_material, mooney_rivlin
+from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import positive
 
 from .inverse import force_where, pressure_for_height, range_end
@@ -91,11 +92,12 @@ class Design:
     material: Material  # the rubber, in units of mu_0
     fluid: Fluid  # the fluid, a gas's ambient pressure in Pa
     ambient: float | None = None  # a gas's Phat_atm = P_atm R / (E T) at the designed T
+    warnings: tuple[str, ...] = ()  # on the inputs and the design: a plain length in m, a thick sheet
 
     def report(self) -> dict:
         """JSON-ready: the full model's answer, the paper's, their ratios, the rubber (units of mu_0) and
-        the fluid (``ambient_Pa``, and ``ambient`` as Phat_atm of the design), the curve."""
-        skip = ("material", "fluid", "ambient")
+        the fluid (``ambient_Pa``, and ``ambient`` as Phat_atm of the design), the warnings (a list), the curve."""
+        skip = ("material", "fluid", "ambient", "warnings")
         out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)
                if not f.name.startswith("curve_") and f.name not in skip}
         out.update(self.material.describe())
@@ -105,6 +107,7 @@ class Design:
         out["pressure_initial_ratio_paper_to_model"] = self.paper_pressure_initial_Pa / self.pressure_initial_Pa
         out["thickness_ratio_paper_to_model"] = self.paper_thickness_m / self.thickness_m
         out["curve_limited"] = self.curve_limited
+        out["warnings"] = list(self.warnings)
         out["curve"] = [{"force_N": f, "travel_m": t, "stiffness_N_per_m": k} for f, t, k in
                         zip(self.curve_force_N.tolist(), self.curve_travel_m.tolist(),
                             self.curve_stiffness_N_per_m.tolist(), strict=True)]
@@ -128,6 +131,12 @@ def _check(radius, height, modulus, material, force, height_ratio, fluid):
         raise InputError(f"height_ratio = {height_ratio!r}, but a pressed button needs 0 < H/H0 < 1")
     rubber = as_material(material).scaled() if isinstance(material, Material) else check_alpha(material)
     return (*values, rubber, ratio, as_fluid(fluid))
+
+
+def _thin(thickness, radius, given: dict) -> list[str]:
+    """``pocket.core.sizes.thin_sheet`` of the designed ``thickness`` (m), naming the inputs it comes from."""
+    inputs = ", ".join(f"{key} = {quote(value)}" for key, value in given.items())
+    return thin_sheet(thickness, radius, f"{inputs} give T = {thickness:.6g} m")
 
 
 def _sealed(fluid: Fluid, scale: float) -> dict:
@@ -155,15 +164,20 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
     ``material``: a Mooney-Rivlin alpha = C2/C1, or a ``pocket.core.materials.Material`` (any stress unit:
     ``modulus`` sets E = 3 mu_0). ``fluid``: None (a liquid) or a gas (``pocket.core.fluids.gas``) with its
     ambient pressure in Pa.
+
+    A length outside the sizes of a pocket, or a designed sheet too thick for a membrane, is an ``InputError``;
+    a plain length above 1 m (probably meant in mm) or T/R above 0.1 is one of the design's ``warnings``
+    (``pocket.core.sizes``).
     """
-    given_height = height
+    given = {"radius": radius, "height": height, "modulus": modulus, "force": force}
     radius, height, modulus, force, rubber, ratio, fluid = _check(radius, height, modulus, material, force,
                                                                   height_ratio, fluid)
+    warnings = [w for key, si in (("radius", radius), ("height", height)) for w in length_warnings(key, given[key], si)]
     model = get_solver(solver)
     try:
         phat_i = pressure_for_height(model, rubber, height / radius, **options)
     except OutOfRangeError as err:
-        raise OutOfRangeError(f"height = {quote(given_height)}: no inflated state of the model's first branch is "
+        raise OutOfRangeError(f"height = {quote(given['height'])}: no inflated state of the model's first branch is "
                               f"that high ({err})") from None
     fhat = force_where(model, rubber, phat_i, "height_ratio", ratio, increasing=False, **options)
     if fluid.is_gas:
@@ -171,6 +185,7 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
                           fhat, options)
     p_i = force / (math.pi * radius**2 * fhat)
     thickness = p_i * radius / (modulus * phat_i)
+    warnings += _thin(thickness, radius, given)
     sealed = _sealed(fluid, modulus * thickness / radius)
     paper_p, paper_t = paper_rules(radius, height, modulus, force)
     paper_phat = paper_p * radius / (modulus * paper_t)
@@ -194,4 +209,4 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
                   curve_travel_m=np.array([height * (1.0 - s.height_ratio) for s in states[1:]]),
                   curve_stiffness_N_per_m=stiffness[1:], curve_limited=limited,
                   material=rubber if isinstance(rubber, Material) else mooney_rivlin(rubber), fluid=fluid,
-                  ambient=sealed["fluid"].ambient if sealed else None)
+                  ambient=sealed["fluid"].ambient if sealed else None, warnings=tuple(warnings))

@@ -24,6 +24,7 @@ from pocket.core.units import written_like
 
 from .cases import Case
 from .inverse import force_where, pressure_for_height, range_end
+from .rangeend import check_force
 from .solvers import get_solver, record
 
 __all__ = ["Pocket", "resolve", "forces", "inflated_row", "compressed_row"]
@@ -95,19 +96,33 @@ def _inside(key: str, given: str, name: str, value: float) -> float:
     return value
 
 
+def _scales(case: Case) -> str:
+    """The inputs that make the case's pressures dimensionless (Phat = P R / (E T)), as the case gives them."""
+    return (f"sheet.thickness = {quote(case.as_given('sheet.thickness'))}, clamp.radius = "
+            f"{quote(case.as_given('clamp.radius'))} (E = {case.modulus:.6g} Pa)")
+
+
 def resolve(case: Case) -> Pocket:
     """Solve for Phat_I from the case's initial state (pressure, height or volume).
 
-    A height or volume the model's first branch does not reach is an ``OutOfRangeError``
-    quoting the value as the case gives it (``Case.as_given``).
+    A pressure, height or volume the model's first branch does not reach is an ``OutOfRangeError``
+    quoting the value as the case gives it (``Case.as_given``), a pressure with the thickness and
+    radius that scale it.
     """
     kind, value = case.initial
     unit = Pocket(case, 1.0)  # Phat_I = 1: its pressure_initial_Pa is E T / R
     solver, options = unit.solver(), unit.options("inflate")
     given = quote(case.as_given(f"initial.{kind}"))
     if kind == "pressure":
-        return Pocket(case, _inside("initial.pressure", given, "Phat_I = P_I R / (E T)",
-                                    value / unit.pressure_scale_Pa))
+        scales = f"{given} with {_scales(case)}"
+        pocket = Pocket(case, _inside("initial.pressure", scales, "Phat_I = P_I R / (E T)",
+                                      value / unit.pressure_scale_Pa))
+        try:
+            solver.inflate(pocket.material, pocket.pressure_initial, **options)  # solvers cache it for later
+        except OutOfRangeError as err:
+            raise OutOfRangeError(f"initial.pressure = {scales} gives Phat_I = P_I R / (E T) = "
+                                  f"{pocket.pressure_initial:.6g}: {err}") from None
+        return pocket
     if kind == "height":
         try:
             return Pocket(case, pressure_for_height(solver, unit.material, value / case.radius, **options))
@@ -143,13 +158,15 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
 def forces(pocket: Pocket) -> list[float]:
     """The case's loads as forces Fhat (plate heights solved for their force).
 
-    A plate height above the inflated pocket, or below the lowest the model reaches, is an
-    ``OutOfRangeError`` quoting the height as the case gives it, with the bound in its unit.
+    A plate height above the inflated pocket, or below the lowest the model reaches, or a force past the
+    end of the model's range (``pocket.apps.rangeend``), is an ``OutOfRangeError`` quoting the load as the
+    case gives it, with the bound in its unit.
     """
     case = pocket.case
     if case.load_kind == "forces":
-        return [_inside(f"loads.forces[{i}]", quote(case.as_given(f"loads.forces[{i}]")), "Fhat = F / (P_I pi R^2)",
-                        f / pocket.force_scale_N) for i, f in enumerate(case.loads)]
+        keys = [(f"loads.forces[{i}]", case.as_given(f"loads.forces[{i}]"), f) for i, f in enumerate(case.loads)]
+        return [check_force(pocket, key, given, _inside(key, quote(given), "Fhat = F / (P_I pi R^2)",
+                                                        f / pocket.force_scale_N)) for key, given, f in keys]
     solver, options = pocket.solver(), pocket.options()
     top = solver.inflate(pocket.material, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
     out = []
@@ -167,15 +184,17 @@ def forces(pocket: Pocket) -> list[float]:
 
 
 def inflated_row(pocket: Pocket, state) -> dict:
-    """The inflated state in SI units, then its dimensionless keys and its ``warnings`` (a list)."""
+    """The inflated state in SI units, then its dimensionless keys and its ``warnings`` (a list: the case's,
+    then the state's)."""
     r = pocket.case.radius
     return {"pressure_Pa": state.pressure * pocket.pressure_scale_Pa, "height_m": state.height * r,
-            "volume_m3": state.volume * r**3, **state.scalars(), "warnings": list(state.warnings)}
+            "volume_m3": state.volume * r**3, **state.scalars(),
+            "warnings": [*pocket.case.warnings, *state.warnings]}
 
 
 def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     """A compressed state in SI units, then its dimensionless keys (``CompressedState.KEYS``) and its
-    ``warnings`` (a list).
+    ``warnings`` (a list: the case's, then the state's).
 
     The inputs are the ones asked, never a solver's echo of them: ``alpha`` and
     ``pressure_initial`` are the pocket's. With ``load``, the state of the case's load of that
@@ -197,5 +216,5 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
                 "contact_area_m2": state.contact_area * math.pi * r**2,
                 "contact_radius_m": state.contact_radius * r, "height_m": state.height * r,
                 "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
-                **state.scalars(), **asked, "warnings": list(state.warnings)})
+                **state.scalars(), **asked, "warnings": [*case.warnings, *state.warnings]})
     return row

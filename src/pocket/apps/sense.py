@@ -38,6 +38,7 @@ from pocket.core.units import quantity, written_like
 
 from .inverse import force_where, range_end
 from .physical import Pocket
+from .rangeend import check_force
 from .slopes import curve_with_slopes
 
 __all__ = ["Reading", "sense", "calibration", "MAX_POINTS"]
@@ -116,9 +117,14 @@ def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
     return _readings(pocket, [fhat])[0]
 
 
-def calibration(pocket: Pocket, max_force: float, points: int = 21) -> list[Reading]:
-    """Readings at ``points`` forces evenly spaced from 0 to ``max_force`` (N)."""
+def calibration(pocket: Pocket, max_force, points: int = 21, *, key: str = "max_force") -> list[Reading]:
+    """Readings at ``points`` forces evenly spaced from 0 to ``max_force`` (N, or a string with unit).
+
+    A ``max_force`` past the end of the model's range is an ``OutOfRangeError`` naming ``key`` and quoting
+    the end in the unit of ``max_force`` (``pocket.apps.rangeend``).
+    """
     points = check_count("points", points, 2, MAX_POINTS)
-    if not (math.isfinite(max_force) and max_force > 0.0):
-        raise InputError(f"max_force = {max_force!r}, but it must be > 0")
-    return _readings(pocket, np.linspace(0.0, max_force / pocket.force_scale_N, points))
+    top = quantity(key, max_force, "force")
+    if not top > 0.0:
+        raise InputError(f"{key} = {quote(max_force)}, but it must be > 0")
+    return _readings(pocket, np.linspace(0.0, check_force(pocket, key, max_force, top / pocket.force_scale_N), points))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 
 from pocket.apps.design import design
 
@@ -15,6 +16,8 @@ __all__ = ["register"]
 def _main(args) -> int:
     result = design(args.radius, args.height, args.modulus, material_of(args), args.force, args.height_ratio,
                     fluid=fluid_of(args, physical=True), solver=args.solver)
+    for text in result.warnings:
+        print(f"pocket: warning: {text}", file=sys.stderr)
     if args.json:
         print(json.dumps(result.report()))
         return 0

@@ -12,7 +12,7 @@ from pocket.core.errors import InputError
 
 from .common import EXIT_CODES, progress_bar
 
-__all__ = ["register", "add_case_arguments", "case_from_args"]
+__all__ = ["register", "add_case_arguments", "case_from_args", "warn_case"]
 
 _SHOWN = ("load", "force_N", "pressure_Pa", "contact_area_m2", "height_m", "force", "pressure_ratio",
           "height_ratio")
@@ -34,15 +34,23 @@ def case_from_args(args) -> tuple[Case, str]:
     return load(args.case), pathlib.Path(args.case).stem
 
 
+def warn_case(case: Case) -> None:
+    """Print the case's warnings on its inputs on stderr, before any solve: they may explain why one fails."""
+    for text in case.warnings:
+        print(f"pocket: warning: {text}", file=sys.stderr)
+
+
 def _main(args) -> int:
     case, stem = case_from_args(args)
+    warn_case(case)
     check_output_dir(args.out, "--out")
     for suffix in (".json", ".csv"):
         check_output_file(pathlib.Path(args.out) / f"{stem}{suffix}", "--out")
     with progress_bar(case.name, " loads") as progress:
         result = solve(case, progress)
     paths = write(result, args.out, stem)
-    for text in dict.fromkeys(w for row in (result["inflated"], *result["states"]) for w in row["warnings"]):
+    for text in dict.fromkeys(w for row in (result["inflated"], *result["states"]) for w in row["warnings"]
+                              if w not in case.warnings):
         print(f"pocket: warning: {text}", file=sys.stderr)
     rows = result["states"]
     fluid = case.fluid.kind if not case.fluid.is_gas else \

@@ -14,17 +14,19 @@ from pocket.core.inputs import check_count
 from pocket.core.units import positive, quantity
 
 from .common import EXIT_CODES, number
-from .run import add_case_arguments, case_from_args
+from .run import add_case_arguments, case_from_args, warn_case
 
 __all__ = ["register"]
 
 
 def _main(args) -> int:
     case, _ = case_from_args(args)
+    warn_case(case)
     if args.pressure is None and args.ratio is None and args.table is None:
         raise InputError("give a measured --pressure or --ratio, or --table FILE.csv")
     table = None if args.table is None else check_output_file(args.table, "--table")
-    top = None if args.max_force is None else positive("--max-force", args.max_force, "force")
+    if args.max_force is not None:
+        positive("--max-force", args.max_force, "force")
     points = check_count("--points", args.points, 2, MAX_POINTS)
     if args.pressure is not None:
         quantity("--pressure", args.pressure, "pressure")
@@ -33,7 +35,10 @@ def _main(args) -> int:
     if args.pressure is not None or args.ratio is not None:
         out = sense(pocket, pressure=args.pressure, ratio=args.ratio).row()
     if table is not None:
-        rows = [r.row() for r in calibration(pocket, top or max(forces(pocket)) * pocket.force_scale_N, points)]
+        if args.max_force is None:
+            rows = [r.row() for r in calibration(pocket, max(forces(pocket)) * pocket.force_scale_N, points)]
+        else:
+            rows = [r.row() for r in calibration(pocket, args.max_force, points, key="--max-force")]
         text = io.StringIO(newline="")
         writer = csv.DictWriter(text, list(rows[0]))
         writer.writeheader()

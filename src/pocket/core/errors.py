@@ -12,7 +12,11 @@ Both exit with status 1.
 
 from __future__ import annotations
 
-__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "exit_status"]
+__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "exit_status",
+           "beyond_range", "CLAMP_PLANE"]
+
+#: what happens at the end of the compression range (unless the force has a maximum first)
+CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
 
 
 class PocketError(Exception):
@@ -48,3 +52,10 @@ def exit_status(err: PocketError) -> int:
     """The command line's exit status for ``err``: 1 for a solver failure or an output that could not
     be written, 2 for bad input or a state outside the model."""
     return 1 if isinstance(err, (ConvergenceError, OutputError)) else 2
+
+
+def beyond_range(asked: str, end: str, reason: str = CLAMP_PLANE) -> OutOfRangeError:
+    """The one wording, for every solver and unit, of a load past the end of the model's compression range:
+    ``"<asked> is beyond the model's range, which ends at <end>: there <reason>"`` (``asked`` and ``end``
+    as ``"force = 10.1"``, ``"loads.forces[0] = '61 N'"``, ``"60.1 N (Fhat = 9.94)"``)."""
+    return OutOfRangeError(f"{asked} is beyond the model's range, which ends at {end}: there {reason}")

@@ -21,7 +21,7 @@ import math
 from .errors import InputError
 from .inputs import quote
 
-__all__ = ["KINDS", "MAGNITUDES", "quantity", "positive", "written_like"]
+__all__ = ["KINDS", "MAGNITUDES", "quantity", "positive", "written_like", "is_plain"]
 
 #: kind -> (pint dimensionality, SI unit)
 KINDS = {
@@ -85,6 +85,16 @@ def positive(key: str, value, kind: str) -> float:
     if magnitude <= 0.0:
         raise InputError(f"{key} = {quote(value)}, but it must be > 0")
     return magnitude
+
+
+def is_plain(value) -> bool:
+    """Whether ``value``, a valid ``quantity``, was written without a unit (a number, or text like ``"20"``)."""
+    if not isinstance(value, str):
+        return True
+    try:
+        return bool(_registry().Quantity(value).dimensionless)
+    except Exception:  # pint's parser raises many types; such text is refused by quantity first
+        return False
 
 
 def written_like(value: float, given, kind: str) -> str:

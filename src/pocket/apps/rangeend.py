@@ -1,0 +1,51 @@
+"""The end of a pocket's compression range, said in the units the user gave a force in.
+
+A force past the end is refused before any solve, in the one wording of
+``pocket.core.errors.beyond_range``, whatever the solver: ``loads.forces[0] = '61 N'
+(Fhat = 10.09) is beyond the model's range, which ends at 60.14 N (Fhat = 9.941): there
+the free part of the sheet reaches the clamp plane``. The end is the solver's own
+``range_end`` where it has one (shooting, analytical); the FE, which approximates
+the same membrane model as the shooting (to ~1e-9 at its default mesh), is given the
+shooting's, so that both quote the same end. At the clamp-plane end the plate carries
+all of P pi R^2, so the deformed contact area is pi R^2 (``shooting.rangeend``); an end
+with less is a force maximum of the branch.
+"""
+
+from __future__ import annotations
+
+from pocket.core.errors import CLAMP_PLANE, beyond_range
+from pocket.core.inputs import quote
+from pocket.core.units import written_like
+
+__all__ = ["range_end_of", "check_force"]
+
+_FULL_CONTACT = 1e-6  # contact area / (pi R^2) within this of 1: the end is the clamp plane, not a force maximum
+
+
+def _model(pocket):
+    """The solver that locates the end, with its options: the pocket's if it has ``range_end``, else the shooting."""
+    solver = pocket.solver()
+    if getattr(solver, "range_end", None) is not None:
+        return solver, pocket.options()
+    from pocket import shooting
+
+    return shooting, pocket.fluid_options()
+
+
+def range_end_of(pocket) -> float:
+    """Fhat_end of ``pocket`` (a ``pocket.apps.physical.Pocket``): the largest force with a compressed state."""
+    solver, options = _model(pocket)
+    return solver.range_end(pocket.material, pocket.pressure_initial, **options)
+
+
+def check_force(pocket, key: str, given, force: float) -> float:
+    """``force`` (Fhat) if the pocket has a state there; else the ``OutOfRangeError`` of the module docstring,
+    quoting ``key`` = ``given`` (the force as the user wrote it) and the end in ``given``'s unit."""
+    solver, options = _model(pocket)
+    end = solver.range_end(pocket.material, pocket.pressure_initial, **options)
+    if force <= end:
+        return force
+    at_end = solver.compress(pocket.material, pocket.pressure_initial, end, **options)
+    reason = CLAMP_PLANE if abs(at_end.contact_area - 1.0) < _FULL_CONTACT else "the force has a maximum"
+    raise beyond_range(f"{key} = {quote(given)} (Fhat = {force:.10g})",
+                       f"{written_like(end * pocket.force_scale_N, given, 'force')} (Fhat = {end:.10g})", reason)
