@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from pocket import shooting
-from pocket.apps import resampling, vtkfiles
+from pocket.apps import folders, resampling, vtkfiles
 from pocket.core.errors import InputError
 from pocket.core.states import CHECKS, CompressedState, InflatedState, Profile
 
@@ -248,7 +248,7 @@ def test_write_series(tmp_path):
     out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=8)
     names = sorted(p.name for p in out.iterdir())
     steps = [f"step_{k:04d}_{part}.vtu" for k in range(3) for part in ("profile", "surface")]
-    assert names == sorted(steps + ["profile.pvd", "surface.pvd"])
+    assert names == sorted(steps + ["profile.pvd", "surface.pvd", folders.MARKER])
     for part in ("profile", "surface"):
         root = ET.parse(out / f"{part}.pvd").getroot()
         assert root.get("type") == "Collection"
@@ -312,15 +312,21 @@ def test_series_is_atomic(tmp_path, monkeypatch):
 
 
 def test_series_refuses_non_empty(tmp_path):
-    """An existing non-empty directory is refused, then replaced as a whole with overwrite=True."""
+    """A directory pocket did not write is refused even with overwrite=True; a series it wrote is
+    refused without overwrite, then replaced as a whole with it."""
     states, _ = series()
     target = tmp_path / "path"
     target.mkdir()
     (target / "stale.txt").write_text("old")
-    with pytest.raises(InputError, match="not empty"):
+    for overwrite in (False, True):
+        with pytest.raises(InputError, match="holds stale.txt, which pocket did not write"):
+            vtkfiles.write_series(target, states, overwrite=overwrite)
+    (target / "stale.txt").unlink()
+    vtkfiles.write_series(target, states[:1])
+    with pytest.raises(InputError, match="previous VTK series"):
         vtkfiles.write_series(target, states)
     vtkfiles.write_series(target, states, overwrite=True)
-    assert not (target / "stale.txt").exists() and (target / "surface.pvd").exists()
+    assert (target / "step_0002_surface.vtu").exists()
     assert [p.name for p in tmp_path.iterdir()] == ["path"]
     empty = tmp_path / "empty"
     empty.mkdir()

@@ -94,10 +94,13 @@ from pocket.core.errors import InputError
 from pocket.core.inputs import check_count
 from pocket.core.states import CHECKS
 
-from .folders import staged
+from .folders import check_replaceable, staged
 from .resampling import resample, series_radii
 
-__all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS"]
+__all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS", "KIND"]
+
+#: the kind of folder ``write_series`` writes (``pocket.apps.folders.check_replaceable``)
+KIND = "VTK series"
 
 #: equally spaced Lagrangian radii of a series (the contact edges are added)
 SERIES_POINTS = 201
@@ -249,8 +252,9 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
 
     ``times`` (default: the step index) label the steps. Every step has the same
     points: the profiles are resampled on ``series_radii(states, points)``. An
-    existing non-empty ``directory`` is refused unless ``overwrite``; then it is
-    replaced as a whole. Returns the directory (as an absolute path).
+    existing non-empty ``directory`` is replaced as a whole only if it is a series
+    pocket wrote and ``overwrite`` (``pocket.apps.folders.check_replaceable``);
+    anything else is refused. Returns the directory (as an absolute path).
     """
     states = list(states)
     if not states:
@@ -259,12 +263,8 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
     segments = _segments(segments)
     points = check_count("points", points, 2, 100_000)
     radii = series_radii([_profile(s) for s in states], points)
-    target = pathlib.Path(directory).resolve()  # "." and "out/" need a name for the sibling
-    if target.exists() and not target.is_dir():
-        raise InputError(f"{target} exists and is not a directory")
-    if target.is_dir() and any(target.iterdir()) and not overwrite:
-        raise InputError(f"{target} exists and is not empty; replace it with overwrite=True (--overwrite)")
-    with staged(target) as partial:
+    target = check_replaceable(directory, KIND, "VTK folder", overwrite=overwrite)
+    with staged(target, KIND) as partial:
         width = max(4, len(str(len(states) - 1)))
         files = {"profile": [], "surface": []}
         for k, state in enumerate(states):

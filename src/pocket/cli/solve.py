@@ -13,7 +13,7 @@ import itertools
 import json
 import math
 
-from pocket.apps.folders import check_output_dir
+from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, get_solver
 from pocket.core.errors import ConvergenceError
 
@@ -43,7 +43,8 @@ def register(subparsers) -> None:
                        help="shooting (the reference, default), fem or analytical")
         p.add_argument("--json", action="store_true", help="print JSON (a list for several forces)")
         p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView")
-        p.add_argument("--overwrite", action="store_true", help="replace an existing --vtk DIR")
+        p.add_argument("--overwrite", action="store_true",
+                       help="replace a VTK series pocket wrote in --vtk DIR (any other non-empty folder is refused)")
         add_rubber_flags(p)
         if name == "compress":
             add_fluid_flags(p, physical=False)
@@ -83,7 +84,9 @@ def _main(args) -> int:
         fluid = fluid_of(args, physical=False)
         options.update({} if fluid is None else {"fluid": fluid})
     if args.vtk:
-        check_output_dir(args.vtk, "--vtk", overwrite=args.overwrite)
+        from pocket.apps.vtkfiles import KIND
+
+        check_replaceable(args.vtk, KIND, "--vtk", overwrite=args.overwrite)
     states = _solve(args, step, material, options)
     rows = [report(s) for s in states]
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
