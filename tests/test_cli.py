@@ -97,6 +97,44 @@ def test_vtk_series(capsys, tmp_path):
     assert status == 2 and "--overwrite" in err
 
 
+def test_vtk_times_are_the_forces_in_any_order(capsys, tmp_path):
+    """Exact answer: forces given decreasing are written in increasing order, each step's time its own
+    force (the .pvd) and equal to the force in its field data; a force given twice is refused (exit 2,
+    one line, no folder), as the time would repeat."""
+    import xml.etree.ElementTree as ET
+
+    import meshio
+
+    out = tmp_path / "series"
+    argv = ["compress", "--alpha", "0.3", "--pressure", "0.31", "--vtk", str(out), "--force"]
+    assert run(capsys, *argv, "0.2", "0.05", "0.1")[0] == 0
+    sets = list(ET.parse(out / "surface.pvd").getroot().iter("DataSet"))
+    assert [float(d.get("timestep")) for d in sets] == [0.05, 0.1, 0.2]
+    assert [meshio.read(out / d.get("file")).field_data["force"].tolist() for d in sets] == [[0.05], [0.1], [0.2]]
+    status, _, err = run(capsys, *argv, "0.1", "0.2", "0.1", "--overwrite")
+    assert status == 2 and err.count("\n") == 1 and "--force gives 0.1 more than once" in err, err
+
+
+@pytest.mark.parametrize("flags, solver, extra", [
+    ([], "shooting", {}),
+    (["--solver", "analytical"], "analytical", {}),
+    (["--solver", "fem", "--elements", "40", "--order", "1"], "fem", {"elements": [40.0], "order": [1.0]}),
+])
+def test_vtk_field_data_name_the_solver_and_mesh(flags, solver, extra, capsys, tmp_path):
+    """Exact answer: the solver, the law and the fluid read back (meshio) as the codes of the README's
+    table (solver: shooting 0, fem 1, analytical 2; mooney-rivlin 0; liquid 0); the FE mesh as its
+    element count and order."""
+    import meshio
+
+    out = tmp_path / "series"
+    assert run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.1", "--vtk", str(out),
+               *flags)[0] == 0
+    data = {k: v.tolist() for k, v in meshio.read(out / "step_0000_surface.vtu").field_data.items()}
+    assert data["solver_code"] == [float(("shooting", "fem", "analytical").index(solver))]
+    assert data["material_code"] == [0.0] and data["fluid_code"] == [0.0]
+    assert {k: data[k] for k in extra} == extra
+
+
 def test_fem_solver_same_keys_as_shooting_plus_its_own(capsys, tmp_path):
     """The FE answer through the CLI: the shooting keys, agreeing with shooting's to 1e-5
     (a loose bar: 200 P2 elements give about 1e-9, tests/test_solvers_agree.py checks 1e-8), plus

@@ -61,7 +61,7 @@ def _one_line(capsys) -> str:
         ([*SENSE, "--table", "/dev/null"], "--table /dev/null: is not a regular file"),
         ([*SWEEP, "--out", "/dev/null"], "--out /dev/null: is not a regular file"),
         (["run", "--sample", "1", "--out", "results"], "--out results/sample1.json: is a folder, not a file"),
-        ([*COMPRESS, "--vtk", "full"], "--vtk full: the folder exists and is not empty (--overwrite replaces it)"),
+        ([*COMPRESS, "--vtk", "full"], "--vtk full: holds old.vtu, which pocket did not write"),
         ([*SWEEP, "--out", "dangling.csv"], "--out dangling.csv: is a broken link"),
     ],
 )
@@ -233,7 +233,7 @@ def test_write_files_is_all_or_nothing(tmp_path, monkeypatch):
 def test_staged_folder_failure_leaves_nothing(tmp_path):
     """An error while a staged folder is filled removes it and the folders made for it."""
     target = tmp_path / "new" / "report"
-    with pytest.raises(RuntimeError), staged(target) as partial:
+    with pytest.raises(RuntimeError), staged(target, "validation report") as partial:
         (partial / "index.html").write_text("half")
         raise RuntimeError("stop")
     assert list(tmp_path.iterdir()) == []

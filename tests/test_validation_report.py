@@ -4,6 +4,7 @@ import csv
 import errno
 import html.parser
 import pathlib
+import shutil
 import subprocess
 
 import meshio
@@ -251,7 +252,7 @@ def test_refuses_a_folder_that_is_not_a_report(tmp_path, capsys, monkeypatch):
     (tmp_path / "mine.txt").write_text("keep")
     assert main(["validate", "--quick", "--out", str(tmp_path)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "not empty" in err
+    assert err.count("\n") == 1 and "holds mine.txt, which pocket did not write" in err
     assert [p.name for p in tmp_path.iterdir()] == ["mine.txt"]
 
 
@@ -388,3 +389,22 @@ def test_fluids_figure_compares_gas_and_liquid_at_one_force(report):
             assert series.y[k] == pytest.approx(q_gas / q_liquid - 1.0, abs=1e-6)
         near_one = int(np.argmin(np.abs(series.x - 1.0)))
         assert series.y[near_one] < 0.0 < series.y[-1]
+
+
+def test_a_rerun_replaces_the_report_pocket_wrote(report, tmp_path, capsys, monkeypatch):
+    """A copy of the quick run's report (its marker says: validation report) is replaced whole by a
+    rerun of ``validate`` (the results reused, nothing solved), and refused by ``converge``, whose
+    report is another kind: exit 2, one line, the folder unchanged."""
+    out = tmp_path / "report"
+    shutil.copytree(report[1], out)
+    (out / "report.md").write_text("stale")
+    monkeypatch.setattr(runner, "run", lambda *a, **k: report[2])
+    assert main(["validate", "--quick", "--out", str(out)]) == 0
+    assert (out / "report.md").read_text().startswith("# pocket validation report\n")  # not "stale"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]  # no temporary or old copy left
+    before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
+    capsys.readouterr()
+    assert main(["converge", "--quick", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "holds a pocket validation report, not a convergence report" in err, err
+    assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before

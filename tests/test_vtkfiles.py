@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from pocket import shooting
-from pocket.apps import resampling, vtkfiles
+from pocket.apps import folders, resampling, vtkfiles
 from pocket.core.errors import InputError
 from pocket.core.states import CHECKS, CompressedState, InflatedState, Profile
 
@@ -248,7 +248,7 @@ def test_write_series(tmp_path):
     out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=8)
     names = sorted(p.name for p in out.iterdir())
     steps = [f"step_{k:04d}_{part}.vtu" for k in range(3) for part in ("profile", "surface")]
-    assert names == sorted(steps + ["profile.pvd", "surface.pvd"])
+    assert names == sorted(steps + ["profile.pvd", "surface.pvd", folders.MARKER])
     for part in ("profile", "surface"):
         root = ET.parse(out / f"{part}.pvd").getroot()
         assert root.get("type") == "Collection"
@@ -312,15 +312,21 @@ def test_series_is_atomic(tmp_path, monkeypatch):
 
 
 def test_series_refuses_non_empty(tmp_path):
-    """An existing non-empty directory is refused, then replaced as a whole with overwrite=True."""
+    """A directory pocket did not write is refused even with overwrite=True; a series it wrote is
+    refused without overwrite, then replaced as a whole with it."""
     states, _ = series()
     target = tmp_path / "path"
     target.mkdir()
     (target / "stale.txt").write_text("old")
-    with pytest.raises(InputError, match="not empty"):
+    for overwrite in (False, True):
+        with pytest.raises(InputError, match="holds stale.txt, which pocket did not write"):
+            vtkfiles.write_series(target, states, overwrite=overwrite)
+    (target / "stale.txt").unlink()
+    vtkfiles.write_series(target, states[:1])
+    with pytest.raises(InputError, match="previous VTK series"):
         vtkfiles.write_series(target, states)
     vtkfiles.write_series(target, states, overwrite=True)
-    assert not (target / "stale.txt").exists() and (target / "surface.pvd").exists()
+    assert (target / "step_0002_surface.vtu").exists()
     assert [p.name for p in tmp_path.iterdir()] == ["path"]
     empty = tmp_path / "empty"
     empty.mkdir()
@@ -422,13 +428,36 @@ def test_series_has_one_point_set(tmp_path):
         assert profile.points[edge, 0] == pytest.approx(1.2 * state.contact_radius, abs=1e-15)
 
 
+#: the codes of the file format as the README's VTK table lists them: field -> the names, in code order
+CODES = {"solver_code": ("shooting", "fem", "analytical"),
+         "material_code": ("mooney-rivlin", "neo-hookean", "yeoh", "gent", "ogden"),
+         "fluid_code": ("liquid", "gas"), "contact_code": ("fitted", "penalty")}
+
+
 def _numbers(state) -> dict:
-    """What the field data must hold: the state's numeric attributes and those of its material and fluid."""
+    """What the field data must hold: the state's numeric attributes and those of its material and fluid,
+    its solver, law and fluid by name (None for a solver outside pocket), the solver's numeric
+    diagnostics and its contact method by name."""
     out = {k: [float(getattr(state, k))] for k in (*state.KEYS, *CHECKS) if getattr(state, k) is not None}
     params = dict(state.material.params)
     if hasattr(state, "fluid") and state.fluid.is_gas:
         params.update(ambient=state.fluid.ambient, gamma=state.fluid.gamma)
     out.update({k: list(v) if isinstance(v, tuple) else [v] for k, v in params.items()})
+    out.update(solver_code=state.solver if state.solver in CODES["solver_code"] else None,
+               material_code=state.material.law, fluid_code=state.fluid.kind if hasattr(state, "fluid") else "liquid")
+    for key, value in state.extra.items():
+        out[f"{key}_code" if isinstance(value, str) else key] = value if isinstance(value, str) else [float(value)]
+    return out
+
+
+def _read(field_data) -> dict:
+    """Field data read back (lists), each code replaced by the name it stands for (None for -1)."""
+    out = {key: values.tolist() for key, values in field_data.items()}
+    for key, names in CODES.items():
+        if key in out:
+            (code,) = out[key]
+            assert code == int(code) and -1 <= code < len(names), (key, code)
+            out[key] = None if code == -1 else names[int(code)]
     return out
 
 
@@ -443,8 +472,8 @@ def test_field_data_round_trip(tmp_path):
         for part in ("profile", "surface"):
             back = meshio.read(out / f"step_{k:04d}_{part}.vtu")
             expected = _numbers(state)
-            assert set(expected) == {*CompressedState.KEYS, *CHECKS, "c1", "c2"}
-            assert {key: values.tolist() for key, values in back.field_data.items()} == expected
+            assert set(expected) == {*CompressedState.KEYS, *CHECKS, "c1", "c2", *CODES} - {"contact_code"}
+            assert _read(back.field_data) == expected
             assert back.field_data["wrinkled"].tolist() == [0.0]
     pv = pytest.importorskip("pyvista")
     reader = pv.get_reader(out / "surface.pvd")
@@ -459,8 +488,8 @@ def test_inflated_state_field_data():
     """Exact answer: an inflated state carries its own keys (pressure, stretch_pole, height, ...)."""
     state = cap(0.5)
     mesh = vtkfiles.profile_mesh(state)
-    assert {k: v.tolist() for k, v in mesh.field_data.items()} == _numbers(state)
-    assert set(_numbers(state)) == {*InflatedState.KEYS, *CHECKS, "c1", "c2"}
+    assert _read(mesh.field_data) == _numbers(state)
+    assert set(_numbers(state)) == {*InflatedState.KEYS, *CHECKS, "c1", "c2", *CODES} - {"contact_code"}
 
 
 def test_other_law_and_gas_field_data(tmp_path):
@@ -476,4 +505,5 @@ def test_other_law_and_gas_field_data(tmp_path):
     back = meshio.read(paths[0])
     expected = _numbers(state)
     assert "alpha" not in expected and expected["exponents"] == [1.3, 5.0, -2.0] and expected["ambient"] == [6.5]
-    assert {key: values.tolist() for key, values in back.field_data.items()} == expected
+    assert expected["material_code"] == "ogden" and expected["fluid_code"] == "gas"
+    assert _read(back.field_data) == expected

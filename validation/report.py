@@ -1,13 +1,14 @@
 """Write a validation run as one folder: index.html, report.md, PNGs, CSVs, the VTK series.
 
-``check_target`` runs before any solve (``pocket validate`` calls it first): the
-folder must be one this process may create or fill
-(``pocket.apps.folders.check_output_dir``), and an existing non-empty folder
-is replaced only if it holds a previous report (its ``report.md``); else an
-``InputError``. The report is then built in a temporary sibling folder and
-renamed into place at the end (``pocket.apps.folders.staged``), so a failed
-run leaves no complete-looking report; an error while writing is an
-``OutputError`` and leaves nothing behind.
+``check_target`` runs before any solve (``pocket validate`` and ``pocket
+converge`` call it first): the folder must be one this process may create or
+fill, and an existing non-empty folder is replaced only if it holds a previous
+report of the same kind (``KINDS``) that pocket wrote and nothing else
+(``pocket.apps.folders.check_replaceable``); else an ``InputError``. The
+report is then built in a temporary sibling folder and renamed into place at
+the end (``pocket.apps.folders.staged``), so a failed run leaves no
+complete-looking report; an error while writing is an ``OutputError`` and
+leaves nothing behind.
 """
 
 from __future__ import annotations
@@ -16,24 +17,23 @@ import csv
 import dataclasses
 import pathlib
 
-from pocket.apps.folders import check_output_dir, staged
-from pocket.core.errors import InputError
+from pocket.apps.folders import check_replaceable, staged
 from pocket.core.states import CHECKS, CompressedState
 
 from . import document, draw, figures, pockets, render, sections
 from . import verdicts as checks_module
 from .suite import headline
 
-__all__ = ["write_report", "check_target"]
+__all__ = ["write_report", "check_target", "KINDS"]
+
+#: the kinds of report folder: the whole suite's and the convergence study's alone
+KINDS = ("validation report", "convergence report")
 
 
-def check_target(out) -> pathlib.Path:
-    """The report folder as an absolute path; InputError if it may not be written (before any work)."""
-    target = check_output_dir(pathlib.Path(out).resolve(), "report folder")
-    if target.is_dir() and any(target.iterdir()) and not (target / "report.md").is_file():
-        raise InputError(f"report folder {out}: exists, is not empty and holds no previous report (report.md): "
-                         "choose another --out")
-    return target
+def check_target(out, kind: str = KINDS[0]) -> pathlib.Path:
+    """The report folder as an absolute path; InputError if a ``kind`` may not be written there (before any
+    work)."""
+    return check_replaceable(out, kind, "--out")
 
 
 def _write_rows(path: pathlib.Path, header, rows) -> None:
@@ -91,14 +91,16 @@ def _picture(curves, directory):
     return render.render_pocket(curves.reference[0].inflated, curves.reference[k], directory / "pocket3d.png")
 
 
-def write_report(results, out, *, executor=None, title="pocket validation report") -> pathlib.Path:
+def write_report(results, out, *, kind=KINDS[0], executor=None) -> pathlib.Path:
     """Write the report of ``results`` (a ``run.Results``) to the folder ``out``; returns its path.
+
+    ``kind`` (one of ``KINDS``) marks the folder and titles the report.
 
     The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
     else here.
     """
-    target = check_target(out)
-    with staged(target) as partial:
+    target = check_target(out, kind)
+    with staged(target, kind) as partial:
         if results.curves:
             figs = figures.figures(results)
         else:
@@ -115,7 +117,8 @@ def write_report(results, out, *, executor=None, title="pocket validation report
             job.result()
         picture, why = extra[-1].result() if extra else (None, "")
         vtk = "vtk" if extra else None
-        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk)
+        title = f"pocket {kind}"
+        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk, title)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))
     return target

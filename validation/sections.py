@@ -181,12 +181,12 @@ def _files_block(figs, tables, vtk) -> tuple:
     return ("list", items)
 
 
-def blocks(results, figs, picture: bool, why: str, tables, vtk) -> list:
-    """All blocks of the report."""
+def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str) -> list:
+    """All blocks of the report, under the heading ``title``."""
     n = counts(results)
     verdict = "FAIL" if n["fail"] else "PASS"
     header, rows = glance(results)
-    out = [("h", 1, "pocket validation report"),
+    out = [("h", 1, title),
            ("p", f"Overall: {verdict}. {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational. "
                  f"Plan '{results.plan.name}', {len(results.curves) or 'the headline'} pocket"
                  f"{'s' if len(results.curves) > 1 else ''}, {results.seconds:.1f} s "

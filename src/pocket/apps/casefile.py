@@ -15,6 +15,10 @@ E T) and ``wrinkled``, the rubber (``material`` and its law's parameters in unit
 the fluid (``fluid``, and a gas's ``ambient`` as Phat_atm and ``gamma``), the solver and
 the state's ``warnings`` (a list in JSON, joined by "; " in CSV, as are Ogden's lists). The
 JSON's case holds the rubber and the fluid in SI (``c10_Pa``, ``ambient_Pa``, ...).
+
+``results_paths`` names both files and says which existing ones a rerun may replace:
+a JSON file only if it is pocket's results (its keys and its provenance naming pocket),
+a CSV file only beside such a JSON file (the two are written together).
 """
 
 from __future__ import annotations
@@ -29,7 +33,26 @@ from .folders import write_files
 from .physical import compressed_row, forces, inflated_row, resolve
 from .provenance import environment
 
-__all__ = ["solve", "write"]
+__all__ = ["solve", "write", "results_paths"]
+
+_KEYS = {"case", "inflated", "states", "provenance"}
+
+
+def _is_results(path: pathlib.Path) -> bool:
+    """``path`` is a results JSON file that pocket wrote."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return isinstance(data, dict) and set(data) == _KEYS and "pocket" in data["provenance"]
+
+
+def results_paths(directory, stem: str) -> dict:
+    """{path: ours} for ``stem.json`` and ``stem.csv`` in ``directory``: ``ours(path)`` is true if
+    ``path`` holds results that pocket wrote (for ``pocket.apps.folders.check_output_file``)."""
+    directory = pathlib.Path(directory)
+    json_path = directory / f"{stem}.json"
+    return {json_path: _is_results, directory / f"{stem}.csv": lambda path: _is_results(json_path)}
 
 
 def solve(case: Case, progress=None) -> dict:
@@ -46,8 +69,7 @@ def solve(case: Case, progress=None) -> dict:
 
 def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
     """Write ``stem.json`` and ``stem.csv`` into ``directory``, both or neither; returns their paths."""
-    directory = pathlib.Path(directory)
-    json_path, csv_path = directory / f"{stem}.json", directory / f"{stem}.csv"
+    json_path, csv_path = results_paths(directory, stem)
     fields = list(dict.fromkeys(k for row in result["states"] for k in row))
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, fields, restval="")

@@ -6,6 +6,16 @@ result can go where the user asked: not onto a folder (for a file) or a file
 Each failure is a one-line ``InputError`` (exit status 2) raised before any
 work.
 
+What pocket did not write it never deletes or overwrites. Every folder it writes
+whole (a VTK series, a validation or convergence report) holds a marker file,
+``.pocket-output.json``, naming its kind, pocket's version and every entry
+written. ``check_replaceable`` lets a result replace an existing folder only if
+that marker names the same kind and the folder holds nothing else; anything
+else is refused, naming what was found. The current folder, pocket's own
+install and every folder above them are never replaced. A file is replaced
+only if it is not there yet or ``check_output_file``'s ``ours`` recognises it
+as pocket's.
+
 A result (a file, a VTK series, a report folder) is then written into a hidden
 sibling ``.NAME.XXXXXXXXXXXX.partial`` (a random name, so that two writers of one
 target never share a temporary) and renamed onto its target only once
@@ -18,6 +28,7 @@ folder made read-only meanwhile) removes the partial result and becomes an
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import pathlib
 import secrets
@@ -26,8 +37,13 @@ from collections.abc import Iterator
 
 from pocket.core.errors import InputError, OutputError
 
-__all__ = ["check_output_file", "check_output_dir", "staged", "write_whole", "write_files", "created_parents",
-           "remove_created"]
+from .provenance import version
+
+__all__ = ["MARKER", "check_output_file", "check_output_dir", "check_replaceable", "staged", "write_whole",
+           "write_files", "created_parents", "remove_created"]
+
+#: the file pocket writes into every folder it writes whole: {"written by", "kind", "version", "entries"}
+MARKER = ".pocket-output.json"
 
 
 def _writable_parent(target: pathlib.Path, what: str, path) -> None:
@@ -44,11 +60,13 @@ def _writable_parent(target: pathlib.Path, what: str, path) -> None:
             raise InputError(f"{what} {path}: {parent} is a broken link")
 
 
-def check_output_file(path, what: str = "output") -> pathlib.Path:
+def check_output_file(path, what: str = "output", *, ours=None) -> pathlib.Path:
     """The absolute path of a file that may be created or replaced; InputError (before any work) if not.
 
     An existing link is followed: the path returned is its target's, which is written (the
-    link stays). Only a regular file is replaced: not a device, a pipe or ``/dev/stdout``.
+    link stays). Only a regular file is replaced: not a device, a pipe or ``/dev/stdout``;
+    and, given ``ours`` (a function of the path, true for a file pocket wrote), only one it
+    recognises.
     """
     target = pathlib.Path(path).absolute()
     if target.is_symlink():
@@ -61,23 +79,77 @@ def check_output_file(path, what: str = "output") -> pathlib.Path:
         raise InputError(f"{what} {path}: is not a regular file (a device or a pipe), so it cannot be replaced")
     if target.exists() and not os.access(target, os.W_OK):
         raise InputError(f"{what} {path}: the file is not writable")
+    if ours is not None and target.exists() and not ours(target):
+        raise InputError(f"{what} {path}: the file exists and pocket did not write it; choose another name")
     _writable_parent(target, what, path)
     return target
 
 
-def check_output_dir(path, what: str = "output", *, overwrite: bool = True) -> pathlib.Path:
-    """The absolute path of a folder that may be created or filled; InputError (before any work) if not.
-
-    Without ``overwrite`` an existing folder must be empty (a result would replace it whole).
-    """
+def check_output_dir(path, what: str = "output") -> pathlib.Path:
+    """The absolute path of a folder that may be created or filled; InputError (before any work) if not."""
     target = pathlib.Path(path).absolute()
     if target.exists() and not target.is_dir():
         raise InputError(f"{what} {path}: is a file, not a folder")
     if target.is_dir() and not os.access(target, os.W_OK | os.X_OK):
         raise InputError(f"{what} {path}: the folder is not writable")
-    if not overwrite and target.is_dir() and any(target.iterdir()):
-        raise InputError(f"{what} {path}: the folder exists and is not empty (--overwrite replaces it)")
     _writable_parent(target, what, path)
+    return target
+
+
+def _protected() -> set[pathlib.Path]:
+    """The current folder, the folder of pocket's own package and every folder above either."""
+    here, install = pathlib.Path.cwd().resolve(), pathlib.Path(__file__).resolve().parents[1]
+    return {here, *here.parents, install, *install.parents}
+
+
+def _entries(folder: pathlib.Path) -> set[str]:
+    """Every file and folder below ``folder``, as paths relative to it (``/`` separated)."""
+    return {entry.relative_to(folder).as_posix() for entry in folder.rglob("*")}
+
+
+def _marker(folder: pathlib.Path) -> dict | None:
+    """The marker of ``folder`` if pocket wrote one there (a dict with a kind and a list of entries)."""
+    try:
+        data = json.loads((folder / MARKER).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if isinstance(data, dict) and data.get("written by") == "pocket" and isinstance(data.get("entries"), list):
+        return data
+    return None
+
+
+def _listed(names: set[str]) -> str:
+    """Up to three of ``names``, sorted, and how many more."""
+    shown = sorted(names)[:3]
+    return ", ".join(shown) + (f" and {len(names) - len(shown)} more" if len(names) > len(shown) else "")
+
+
+def check_replaceable(path, kind: str, what: str = "output", *, overwrite: bool = True) -> pathlib.Path:
+    """The absolute, resolved path of a folder that a result of ``kind`` (``"VTK series"``,
+    ``"validation report"``, ...) may be written to whole (``staged``); InputError (before any work) if not.
+
+    A new or empty folder may be written; an existing one only if pocket wrote it as a ``kind``
+    (its ``MARKER`` says so), it holds nothing the marker does not list, and ``overwrite``. Never
+    the current folder, pocket's install or a folder above them.
+    """
+    target = check_output_dir(path, what).resolve()
+    if target in _protected():
+        raise InputError(f"{what} {path}: is the current folder, pocket's install or a folder above them, "
+                         "which pocket never replaces; choose a new folder")
+    if not target.is_dir() or not any(target.iterdir()):
+        return target
+    marker = _marker(target)
+    if marker is None:
+        raise InputError(f"{what} {path}: holds {_listed({p.name for p in target.iterdir()})}, which pocket did "
+                         f"not write (it replaces only a {kind} of its own); choose another folder")
+    if marker.get("kind") != kind:
+        raise InputError(f"{what} {path}: holds a pocket {marker.get('kind')}, not a {kind}; choose another folder")
+    others = _entries(target) - set(marker["entries"]) - {MARKER}
+    if others:
+        raise InputError(f"{what} {path}: holds {_listed(others)}, which pocket did not write, besides its {kind}; "
+                         "choose another folder")
+    if not overwrite:
+        raise InputError(f"{what} {path}: holds a previous {kind} (--overwrite replaces it)")
     return target
 
 
@@ -86,13 +158,14 @@ def _partial(target: pathlib.Path) -> pathlib.Path:
 
 
 @contextlib.contextmanager
-def staged(target: pathlib.Path) -> Iterator[pathlib.Path]:
+def staged(target: pathlib.Path, kind: str) -> Iterator[pathlib.Path]:
     """Yield an empty sibling folder of ``target`` to fill; on leaving it replaces ``target``.
 
-    ``target`` must be an absolute path (``.`` has no name for a sibling). A
-    previous ``target`` is removed only after the new one is in place; on any
-    exception the sibling and the folders made for it are deleted and ``target``
-    is left as it was.
+    ``target`` must be an absolute path (``.`` has no name for a sibling), checked by
+    ``check_replaceable`` for the same ``kind``. Once filled the folder gets its ``MARKER``
+    (``kind``, pocket's version, the entries written). A previous ``target`` is removed only
+    after the new one is in place; on any exception the sibling and the folders made for it
+    are deleted and ``target`` is left as it was.
     """
     partial, made = _partial(target), created_parents(target)
     try:
@@ -104,6 +177,8 @@ def staged(target: pathlib.Path) -> Iterator[pathlib.Path]:
         raise OutputError(f"cannot write {target}: {err.strerror or err}") from None
     try:
         yield partial
+        marker = {"written by": "pocket", "kind": kind, "version": version(), "entries": sorted(_entries(partial))}
+        (partial / MARKER).write_text(json.dumps(marker, indent=1) + "\n", encoding="utf-8")
         _replace(partial, target)
     except BaseException as err:
         shutil.rmtree(partial, ignore_errors=True)

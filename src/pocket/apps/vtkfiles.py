@@ -56,10 +56,15 @@ inflated state ``alpha``, ``pressure``, ``stretch_pole``, ``height``, ``volume``
 for both the smallest tensions ``tension_1_min`` and ``tension_2_min`` (units E T)
 and ``wrinkled`` (1 where one is not positive, else 0), the numeric parameters of
 the rubber's law (units of mu_0; Ogden's ``mu`` and ``exponents`` one value per
-term) and, for a gas-filled pocket, ``ambient`` (Phat_atm) and ``gamma``. Names
-(the law's, the fluid's) are not numbers and are left out. meshio writes no field
-data, so it is added to each file as a ``<FieldData>`` block of ASCII values
-written with 17 significant digits (they read back exactly).
+term) and, for a gas-filled pocket, ``ambient`` (Phat_atm) and ``gamma``. Then what
+tells two series apart: the names, as codes (``CODES``: ``solver_code``,
+``material_code``, ``fluid_code``, the position of the name in its list, and for a
+solver option given by name, such as the finite elements' ``contact``, ``contact_code``,
+its position among the option's choices; -1 for a name not in the list), and the solver's numeric diagnostics
+(the finite elements' mesh: ``elements``, ``order``; ``newton_iterations``, ...).
+meshio writes no field data, so it is added to each file as a ``<FieldData>`` block
+of ASCII values written with 17 significant digits (they read back exactly; a
+string array would be lost to meshio, which reads numbers only).
 
 One point set along a series. A solver samples each state's profile at its own
 Lagrangian radii (the shooting solver's adaptive steps: a different count at
@@ -91,13 +96,23 @@ import meshio
 import numpy as np
 
 from pocket.core.errors import InputError
+from pocket.core.fluids import Fluid
 from pocket.core.inputs import check_count
+from pocket.core.materials import LAWS
 from pocket.core.states import CHECKS
 
-from .folders import staged
+from .folders import check_replaceable, staged
 from .resampling import resample, series_radii
+from .solvers import SOLVERS
 
-__all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS"]
+__all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS", "KIND",
+           "CODES"]
+
+#: the kind of folder ``write_series`` writes (``pocket.apps.folders.check_replaceable``)
+KIND = "VTK series"
+
+#: field -> the names its code counts (the code is a name's position): the solver, the rubber's law, the fluid
+CODES = {"solver_code": tuple(SOLVERS), "material_code": tuple(LAWS), "fluid_code": ("liquid", "gas")}
 
 #: equally spaced Lagrangian radii of a series (the contact edges are added)
 SERIES_POINTS = 201
@@ -122,7 +137,22 @@ def field_data(state) -> dict[str, np.ndarray]:
     for key, value in described.items():
         if not isinstance(value, str):
             out[key] = np.array(value, dtype=float).reshape(-1)
+    fluid = getattr(state, "fluid", Fluid())
+    for field, name in zip(CODES, (state.solver, state.material.law, fluid.kind), strict=True):
+        out[field] = _code(name, CODES[field])
+    solver = SOLVERS.get(state.solver)
+    for key, value in state.extra.items():
+        option = None if solver is None else solver.option(key)
+        if isinstance(value, str) and option is not None and option.choices:
+            out[f"{key}_code"] = _code(value, option.choices)
+        elif isinstance(value, int | float):  # a bool too: 1.0 or 0.0
+            out[key] = np.array([float(value)])
     return out
+
+
+def _code(name: str, names: tuple) -> np.ndarray:
+    """The position of ``name`` in ``names`` (-1 if absent: a state made outside pocket's solvers)."""
+    return np.array([float(names.index(name) if name in names else -1)])
 
 
 def _point_data(profile) -> dict[str, np.ndarray]:
@@ -249,8 +279,9 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
 
     ``times`` (default: the step index) label the steps. Every step has the same
     points: the profiles are resampled on ``series_radii(states, points)``. An
-    existing non-empty ``directory`` is refused unless ``overwrite``; then it is
-    replaced as a whole. Returns the directory (as an absolute path).
+    existing non-empty ``directory`` is replaced as a whole only if it is a series
+    pocket wrote and ``overwrite`` (``pocket.apps.folders.check_replaceable``);
+    anything else is refused. Returns the directory (as an absolute path).
     """
     states = list(states)
     if not states:
@@ -259,12 +290,8 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
     segments = _segments(segments)
     points = check_count("points", points, 2, 100_000)
     radii = series_radii([_profile(s) for s in states], points)
-    target = pathlib.Path(directory).resolve()  # "." and "out/" need a name for the sibling
-    if target.exists() and not target.is_dir():
-        raise InputError(f"{target} exists and is not a directory")
-    if target.is_dir() and any(target.iterdir()) and not overwrite:
-        raise InputError(f"{target} exists and is not empty; replace it with overwrite=True (--overwrite)")
-    with staged(target) as partial:
+    target = check_replaceable(directory, KIND, "VTK folder", overwrite=overwrite)
+    with staged(target, KIND) as partial:
         width = max(4, len(str(len(states) - 1)))
         files = {"profile": [], "surface": []}
         for k, state in enumerate(states):

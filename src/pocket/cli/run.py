@@ -5,7 +5,7 @@ from __future__ import annotations
 import pathlib
 import sys
 
-from pocket.apps.casefile import solve, write
+from pocket.apps.casefile import results_paths, solve, write
 from pocket.apps.cases import Case, load, sample
 from pocket.apps.folders import check_output_dir, check_output_file
 from pocket.core.errors import InputError
@@ -44,8 +44,8 @@ def _main(args) -> int:
     case, stem = case_from_args(args)
     warn_case(case)
     check_output_dir(args.out, "--out")
-    for suffix in (".json", ".csv"):
-        check_output_file(pathlib.Path(args.out) / f"{stem}{suffix}", "--out")
+    for path, ours in results_paths(args.out, stem).items():
+        check_output_file(path, "--out", ours=ours)
     with progress_bar(case.name, " loads") as progress:
         result = solve(case, progress)
     paths = write(result, args.out, stem)

@@ -8,7 +8,7 @@ import json
 
 from pocket.apps.folders import check_output_file, write_whole
 from pocket.apps.physical import forces, resolve
-from pocket.apps.sense import MAX_POINTS, calibration, sense
+from pocket.apps.sense import MAX_POINTS, calibration, is_table, sense
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_count
 from pocket.core.units import positive, quantity
@@ -24,7 +24,7 @@ def _main(args) -> int:
     warn_case(case)
     if args.pressure is None and args.ratio is None and args.table is None:
         raise InputError("give a measured --pressure or --ratio, or --table FILE.csv")
-    table = None if args.table is None else check_output_file(args.table, "--table")
+    table = None if args.table is None else check_output_file(args.table, "--table", ours=is_table)
     if args.max_force is not None:
         positive("--max-force", args.max_force, "force")
     points = check_count("--points", args.points, 2, MAX_POINTS)

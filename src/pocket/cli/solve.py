@@ -9,13 +9,12 @@ curve shows a progress bar on a terminal (``progress`` of ``compression_curve``)
 
 from __future__ import annotations
 
-import itertools
 import json
 import math
 
-from pocket.apps.folders import check_output_dir
+from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, get_solver
-from pocket.core.errors import ConvergenceError
+from pocket.core.errors import ConvergenceError, InputError
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
@@ -42,8 +41,10 @@ def register(subparsers) -> None:
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                        help="shooting (the reference, default), fem or analytical")
         p.add_argument("--json", action="store_true", help="print JSON (a list for several forces)")
-        p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView")
-        p.add_argument("--overwrite", action="store_true", help="replace an existing --vtk DIR")
+        p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView (the steps "
+                       "in order of force, the time of each its force)")
+        p.add_argument("--overwrite", action="store_true",
+                       help="replace a VTK series pocket wrote in --vtk DIR (any other non-empty folder is refused)")
         add_rubber_flags(p)
         if name == "compress":
             add_fluid_flags(p, physical=False)
@@ -83,7 +84,13 @@ def _main(args) -> int:
         fluid = fluid_of(args, physical=False)
         options.update({} if fluid is None else {"fluid": fluid})
     if args.vtk:
-        check_output_dir(args.vtk, "--vtk", overwrite=args.overwrite)
+        from pocket.apps.vtkfiles import KIND
+
+        check_replaceable(args.vtk, KIND, "--vtk", overwrite=args.overwrite)
+        repeated = sorted({f for f in getattr(args, "force", ()) if args.force.count(f) > 1})
+        if repeated:
+            raise InputError(f"--force gives {', '.join(map(repr, repeated))} more than once, but the time of a "
+                             "--vtk step is its force: give each force once")
     states = _solve(args, step, material, options)
     rows = [report(s) for s in states]
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
@@ -91,9 +98,8 @@ def _main(args) -> int:
     if args.vtk:
         from pocket.apps.vtkfiles import write_series
 
-        forces = [getattr(s, "force", 0.0) for s in states]
-        increasing = all(a < b for a, b in itertools.pairwise(forces))
-        write_series(args.vtk, states, times=forces if increasing else None, overwrite=args.overwrite)
+        steps = sorted(states, key=lambda s: getattr(s, "force", 0.0))  # the time is the force, increasing
+        write_series(args.vtk, steps, times=[getattr(s, "force", 0.0) for s in steps], overwrite=args.overwrite)
     warn(states)
     if args.json:
         print(json.dumps(rows if step == "compress" and len(args.force) > 1 else rows[0]))

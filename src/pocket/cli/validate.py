@@ -21,8 +21,8 @@ __all__ = ["register", "EXIT_CODES_VALIDATE"]
 
 EXIT_CODES_VALIDATE = ("exit status: 0 every verdict passes; 1 a verdict fails, a solver failed or the report "
                        "could not be written (nothing is left behind); 2 bad input: an --out folder that cannot "
-                       "be written or holds something other than a previous report, a bad cases file (one line "
-                       "on stderr, checked before any solve, nothing written)")
+                       "be written or holds something other than a previous report of its kind that pocket wrote, "
+                       "a bad cases file (one line on stderr, checked before any solve, nothing written)")
 
 _VALIDATE = """\
 Run the validation suite and write its report: the shooting solver (the
@@ -59,8 +59,8 @@ def register(subparsers) -> None:
                                   epilog=textwrap.fill(EXIT_CODES_VALIDATE, 79),
                                   formatter_class=argparse.RawDescriptionHelpFormatter)
         p.add_argument("--out", default=out, metavar="DIR",
-                       help=f"report folder (default: {out}); a previous report there is replaced, any other "
-                            "non-empty folder is refused")
+                       help=f"report folder (default: {out}); a previous report of this command that pocket wrote "
+                            "there is replaced, any other non-empty folder is refused")
         p.add_argument("--quick", action="store_true",
                        help="the quick plan: fewer forces, FE columns and meshes (for CI; default: the full plan)")
         p.add_argument("--cases", metavar="FILE",
@@ -69,21 +69,28 @@ def register(subparsers) -> None:
         p.set_defaults(handler=handler)
 
 
+def _kind(args) -> str:
+    """The kind of report folder the command writes."""
+    from pocket.validation.report import KINDS
+
+    return KINDS[args.command == "converge"]
+
+
 def _setup(args):
     from pocket.validation.plan import DEFAULT, QUICK
     from pocket.validation.report import check_target
     from pocket.validation.suite import CASES_FILE, load
 
-    check_target(args.out)
+    check_target(args.out, _kind(args))
     pockets, button = load(args.cases or CASES_FILE)
     return pockets, button, QUICK if args.quick else DEFAULT
 
 
-def _finish(results, out, start, pool) -> int:
+def _finish(results, args, start, pool) -> int:
     from pocket.validation.report import write_report
     from pocket.validation.sections import counts
 
-    path = write_report(results, out, executor=pool)
+    path = write_report(results, args.out, kind=_kind(args), executor=pool)
     n = counts(results)
     print(f"{'FAIL' if n['fail'] else 'PASS'}: {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational "
           f"({time.perf_counter() - start:.1f} s, plan {results.plan.name})")
@@ -103,7 +110,7 @@ def _validate(args) -> int:
     pockets, button, plan = _setup(args)
     with ProcessPoolExecutor(max_workers=WORKERS) as pool:
         results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty())
-        return _finish(results, args.out, start, pool)
+        return _finish(results, args, start, pool)
 
 
 def _converge(args) -> int:
@@ -114,7 +121,7 @@ def _converge(args) -> int:
     with ProcessPoolExecutor(max_workers=WORKERS) as pool:
         results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty(), convergence_only=True)
         _print_orders(results)
-        return _finish(results, args.out, start, pool)
+        return _finish(results, args, start, pool)
 
 
 def _print_orders(results) -> None:
