@@ -17,7 +17,8 @@ augmented-Lagrangian updates after each (``penalty``).
 
 The fluid enters as ``fill``, the volume row's ``model.Control`` (V_I, and a
 gas sealed at P_I, or none for a liquid), which every control of step 2 extends.
-``progress(done, total)``, if given, is called after each force.
+``progress(done, total)``, if given, is called after each force. A force
+whose solve fails is named in the ``ConvergenceError`` (``_at_force``).
 """
 
 from __future__ import annotations
@@ -49,6 +50,12 @@ def predict(history: list[tuple[float, np.ndarray]], sigma: float) -> np.ndarray
     return out
 
 
+def _at_force(fhat: float, err: ConvergenceError) -> ConvergenceError:
+    """``err`` saying the force Fhat it was solving for."""
+    return ConvergenceError(f"compression at Fhat = {fhat!r}: {err}", load=err.load, iterations=err.iterations,
+                            residual=err.residual)
+
+
 def _first_radius(model: Model, inflated, fhat: float) -> float:
     return min(fitted.A_FIRST, 0.5 * np.sqrt(fhat) / inflated.stretch_pole)
 
@@ -76,13 +83,16 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces,
                     f"({fitted.SMALLEST_FORCE:g}): the plate's balance is lost in round-off (the shooting solver "
                     "resolves it)")
             force = fhat * np.pi * p_i
-            if not history:
-                a0 = _first_radius(model, inflated, fhat)
-                y, iterations = fitted.first_contact(model, y_i, fill, a0, tol)
-                y, more = fitted.force_path(model, y, fill, force, tol, np.pi * p_i)
-                iterations += more
-            else:
-                y, iterations = _next_fitted(model, history, fill, force, tol, np.pi * p_i)
+            try:
+                if not history:
+                    a0 = _first_radius(model, inflated, fhat)
+                    y, iterations = fitted.first_contact(model, y_i, fill, a0, tol)
+                    y, more = fitted.force_path(model, y, fill, force, tol, np.pi * p_i)
+                    iterations += more
+                else:
+                    y, iterations = _next_fitted(model, history, fill, force, tol, np.pi * p_i)
+            except ConvergenceError as err:
+                raise _at_force(fhat, err) from err
             history.append((np.sqrt(force), y))
             states.append(results.fitted_state(model, y, iterations, inflated, fill, fhat))
         if progress is not None:
@@ -114,14 +124,17 @@ def penalty_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces
             states.append(results.uncompressed(inflated, fill, PENALTY))
         else:
             force = fhat * np.pi * p_i
-            if in_contact:
-                y, iterations = penalty.force_path(model, y, fill, force, lam, tol)
-            else:
-                y, iterations = penalty.press_to_force(model, _touching(model, y_i, inflated), fill, force,
-                                                       lam, tol)
-            if augmented:
-                y, lam, more = penalty.augment(model, y, replace(fill, force=force), lam, tol)
-                iterations += more
+            try:
+                if in_contact:
+                    y, iterations = penalty.force_path(model, y, fill, force, lam, tol)
+                else:
+                    y, iterations = penalty.press_to_force(model, _touching(model, y_i, inflated), fill, force,
+                                                           lam, tol)
+                if augmented:
+                    y, lam, more = penalty.augment(model, y, replace(fill, force=force), lam, tol)
+                    iterations += more
+            except ConvergenceError as err:
+                raise _at_force(fhat, err) from err
             states.append(results.penalty_state(model, y, lam, iterations, inflated, fill, fhat))
             in_contact = True
         if progress is not None:

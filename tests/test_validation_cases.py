@@ -166,3 +166,21 @@ def test_plans_columns_take_their_options():
     for plan in (DEFAULT, QUICK):
         assert [(c.solver, dict(c.options)) for c in plan.fem_columns] == [("fem", {"order": 1}), ("fem", {"order": 2})]
         assert [c.kwargs("inflate") for c in plan.fem_columns] == [{"order": 1}, {"order": 2}]
+
+
+@pytest.mark.parametrize("command", ["validate", "converge"])
+def test_help_and_readme_say_what_a_cases_file_needs(command, capsys):
+    """Exact answer: the suite's own cases file, which ``load`` accepts: the help of ``--cases`` and the
+    README name every key of its [design] table and the case tables it needs."""
+    import pathlib
+
+    from pocket.cli import main
+
+    design = tomllib.loads(CASES_FILE.read_text())["design"]
+    assert main([command, "--help"]) == 0
+    help_text = " ".join(capsys.readouterr().out.split())
+    readme = " ".join((pathlib.Path(__file__).parents[1] / "README.md").read_text().split())
+    for text in (help_text, readme.replace("`", "")):
+        assert "[design]" in text and "[[case]]" in text and "label" in text
+        missing = [key for key in design if key not in text]
+        assert not missing, missing

@@ -25,6 +25,7 @@ from pocket.apps.solvers import get_solver
 from pocket.core.errors import OutOfRangeError
 from pocket.core.states import CompressedState
 
+from .failures import located
 from .plan import APPROXIMATE, RANGE_FRACTION, REFERENCE, Column, Plan
 
 __all__ = ["Curves", "ColumnCurve", "reference", "column_curve", "fem_forces", "range_end", "force_grid",
@@ -103,16 +104,35 @@ def _pointwise(pocket, column, forces):
 
 def reference(pocket: Pocket, plan: Plan) -> Curves:
     """Reference and approximate curves of ``pocket`` on the plan's grid (plus its FE forces)."""
-    end = range_end(pocket)
+    with located(pocket.case.name, "end of the compression range (shooting)", _mesh(REFERENCE),
+                 "Fhat bisected to the end of the range"):
+        end = range_end(pocket)
     forces = force_grid(end, plan.curve_points, fem_forces(plan.fem_forces_of(pocket), end))
     states = column_curve(pocket, REFERENCE, forces).states
-    return Curves(pocket=pocket, force_end=end, forces=forces, reference=states,
-                  approximate=_pointwise(pocket, APPROXIMATE, forces))
+    with located(pocket.case.name, "analytical column", _mesh(APPROXIMATE), _forces(forces)):
+        approximate = _pointwise(pocket, APPROXIMATE, forces)
+    return Curves(pocket=pocket, force_end=end, forces=forces, reference=states, approximate=approximate)
+
+
+def _mesh(column: Column) -> str:
+    """The mesh a column solves on, in words."""
+    if column.solver != "fem":
+        return f"no mesh ({column.solver})"
+    options = column.kwargs()
+    mesh = options.get("mesh", options.get("elements", "the default"))
+    return f"{mesh} P{options.get('order', 2)} mesh, {options.get('contact', 'fitted')} contact"
+
+
+def _forces(forces) -> str:
+    forces = [float(f) for f in forces]
+    return f"Fhat = {forces[0]:.6g}" if len(forces) == 1 else \
+        f"{len(forces)} forces Fhat = {min(forces):.6g} to {max(forces):.6g}"
 
 
 def column_curve(pocket: Pocket, column: Column, forces) -> ColumnCurve:
     """The compression curve of ``pocket`` at ``forces`` by the solver of ``column``."""
     solver = get_solver(column.solver)
-    states = solver.compression_curve(pocket.material, pocket.pressure_initial, [float(f) for f in forces],
-                                      **column.kwargs(), **pocket.fluid_options())
+    with located(pocket.case.name, f"{column.label} column", _mesh(column), _forces(forces)):
+        states = solver.compression_curve(pocket.material, pocket.pressure_initial, [float(f) for f in forces],
+                                          **column.kwargs(), **pocket.fluid_options())
     return ColumnCurve(pocket=pocket, column=column, states=tuple(states))

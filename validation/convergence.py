@@ -45,6 +45,8 @@ import numpy as np
 
 from pocket.apps.physical import Pocket
 
+from .failures import located
+
 __all__ = ["Sequence", "FORCE", "QUANTITIES", "MESHES", "EXPECTED", "FITTED_P2_FINEST", "RICHARDSON_FACTOR",
            "tasks", "sequence", "observed_order", "richardson", "checks"]
 
@@ -93,17 +95,22 @@ def sequence(case: Pocket, study: str, order: int, mesh: str, counts) -> Sequenc
 
     start = time.perf_counter()
     rubber, pressure, sealed = case.material, case.pressure_initial, case.fluid_options()
-    ref = shooting.inflate(rubber, pressure) if study == "inflation" else \
-        shooting.compress(rubber, pressure, FORCE, **sealed)
+    case_name, what = case.case.name, f"convergence study ({study}, FEM P{order} on {mesh} meshes)"
+    force = "inflated state (Fhat = 0)" if study == "inflation" else f"Fhat = {FORCE}"
+    with located(case_name, what + ": its shooting reference", "no mesh (shooting)", force):
+        ref = shooting.inflate(rubber, pressure) if study == "inflation" else \
+            shooting.compress(rubber, pressure, FORCE, **sealed)
     names = QUANTITIES[study]
     values, sizes = {name: [] for name in names}, []
     for n in counts:
         grid = fem.default_mesh(n) if mesh == "fitted" else meshes.uniform(n)
-        if study == "inflation":
-            state = fem.inflate(rubber, pressure, mesh=grid, order=order)
-        else:
-            contact = "fitted" if mesh == "fitted" else "penalty"
-            state = fem.compress(rubber, pressure, FORCE, mesh=grid, order=order, contact=contact, **sealed)
+        contact = "fitted" if mesh == "fitted" else "penalty"
+        where = f"{mesh} mesh of {n} elements" + ("" if study == "inflation" else f", {contact} contact")
+        with located(case_name, what, where, force):
+            if study == "inflation":
+                state = fem.inflate(rubber, pressure, mesh=grid, order=order)
+            else:
+                state = fem.compress(rubber, pressure, FORCE, mesh=grid, order=order, contact=contact, **sealed)
         sizes.append(_largest_element(state, study, mesh))
         for name in names:
             values[name].append(float(getattr(state, name)))

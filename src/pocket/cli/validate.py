@@ -64,8 +64,12 @@ def register(subparsers) -> None:
         p.add_argument("--quick", action="store_true",
                        help="the quick plan: fewer forces, FE columns and meshes (for CI; default: the full plan)")
         p.add_argument("--cases", metavar="FILE",
-                       help="cases file in the case-file schema, [[case]] tables and a [design] table "
-                            "(default: the suite's own cases.toml)")
+                       help="cases file (default: the suite's own cases.toml): [[case]] tables, each with a label "
+                            "and a case file's [case.sheet], [case.clamp] and [case.initial]; optional name (not "
+                            "repeated), tags ('headline' picks the pocket of figure 2 and the convergence study, "
+                            "else the first) and [case.fluid]; no [case.loads] or [case.solver]; and one "
+                            "[design] table (the paper's soft button) with exactly radius, height (H0), "
+                            "modulus (E), force, alpha and height_ratio (0 < H/H0 < 1), as in cases.toml")
         p.set_defaults(handler=handler)
 
 
