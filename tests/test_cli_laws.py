@@ -141,10 +141,11 @@ def test_sweep_with_a_law_and_a_gas(tmp_path, capsys):
 def test_sweep_refuses_an_earlier_file(tmp_path, capsys):
     """A sweep file written before the rubber and fluid columns: refused untouched, saying why."""
     path = tmp_path / "old.csv"
-    old = ",".join(COLUMNS[:COLUMNS.index("message") + 1]) + "\n"
+    old = ",".join((*COLUMNS[:COLUMNS.index("solver") + 1], "status", "message")) + "\n"
     path.write_text(old)
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.5", "--out", str(path)]) == 2
-    assert "is a sweep file of an earlier pocket, without the rubber and fluid columns" in capsys.readouterr().err
+    assert "is a sweep file of an earlier pocket (0 points), whose rows do not record the solver's options, the " \
+           "rubber and the fluid" in capsys.readouterr().err
     assert path.read_text() == old
 
 

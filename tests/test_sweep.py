@@ -6,23 +6,43 @@ from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 import pytest
 
 from pocket import shooting
+from pocket.apps.solvers import get_solver
 from pocket.apps.sweep import COLUMNS, run_sweep
+from pocket.apps.sweepfile import IDENTITY
 from pocket.cli import main
+from pocket.core.states import CHECKS, CompressedState
 
 ALPHAS, PRESSURES, FORCES = [0.2, 47 / 160], [0.1, 0.31], [0.0, 0.2, 1.0, 15.0]  # 15: out of range at 0.31
 ARGV = ["--alpha", "0.2", "47/160", "--pressure", "0.1", "0.31", "--force", "0", "0.2", "1", "15"]
 
 
 class CountingExecutor(ThreadPoolExecutor):
-    """Counts the points submitted, to show which ones a resumed sweep recomputes."""
+    """Counts the tasks (curves) and the points submitted, to show which ones a resumed sweep recomputes."""
 
     def __init__(self):
         super().__init__(max_workers=2)
-        self.points = []
+        self.points, self.tasks = [], 0
 
     def submit(self, fn, *args, **kwargs):
-        self.points.append(args[1:4])
+        solver, material, pressure, forces, options = args
+        self.points += [(material, pressure, force) for force in forces]
+        self.tasks += 1
         return super().submit(fn, *args, **kwargs)
+
+
+def _solver_of(compress):
+    """A solver module whose entry points are ``compress`` and its curve, point by point."""
+    import types
+
+    def compression_curve(material, pressure_initial, forces, *, progress=None, **options):
+        states = []
+        for force in forces:
+            states.append(compress(material, pressure_initial, force, **options))
+            if progress is not None:
+                progress(len(states), len(forces))
+        return states
+
+    return types.SimpleNamespace(compress=compress, compression_curve=compression_curve)
 
 
 @pytest.fixture(scope="module")
@@ -34,17 +54,50 @@ def reference(tmp_path_factory):
 
 
 def test_rows_are_the_solver(reference):
-    """Exact: each row is the shooting solver's state at its point, written exactly (repr floats)."""
+    """Exact: each row is the shooting solver's state on its curve (``compression_curve`` through the
+    forces in range), written exactly (repr floats); past the range, the row says so."""
     rows = list(csv.DictReader(reference.open()))
     assert tuple(rows[0]) == COLUMNS and len(rows) == 16
-    for row in rows:
-        point = (float(row["alpha"]), float(row["pressure_initial"]), float(row["force"]))
-        if row["status"] == "out_of_range":
-            assert point[1:] == (0.31, 15.0) and "beyond the model's range" in row["message"]
-            continue
-        state = shooting.compress(*point)
-        assert float(row["pressure_ratio"]) == state.pressure_ratio
-        assert float(row["height"]) == state.height
+    for alpha in ALPHAS:
+        for pressure in PRESSURES:
+            curve = [r for r in rows if (float(r["alpha"]), float(r["pressure_initial"])) == (alpha, pressure)]
+            assert [float(r["force"]) for r in curve] == FORCES
+            ok = [r for r in curve if r["status"] == "ok"]
+            for row in curve[len(ok):]:
+                assert (pressure, row["force"]) == (0.31, "15.0") and "beyond the model's range" in row["message"]
+            states = shooting.compression_curve(alpha, pressure, FORCES[: len(ok)])
+            assert [float(r["pressure_ratio"]) for r in ok] == [s.pressure_ratio for s in states]
+            assert [float(r["height"]) for r in ok] == [s.height for s in states]
+
+
+#: (solver, options) of the curve-against-points test: every solver, fem with P1 on a small mesh (fast)
+CURVE_SOLVERS = [("shooting", {}), ("analytical", {}), ("fem", {"order": 1, "elements": 64})]
+
+
+@pytest.mark.parametrize("solver, options", CURVE_SOLVERS)
+def test_a_curve_task_gives_the_points(solver, options):
+    """A curve solved by continuation (one task) gives each point's row as solved alone from a fresh
+    inflation: the same statuses and messages, the numbers to the solver's tolerance. Each solve is
+    within its tolerance of the exact state (shooting: the ODE's rtol; fem: Newton's tol on a
+    residual of order 1; analytical: closed form, solved to round-off), so two solves of one
+    point differ by a few of it: 100 times it bounds that, and is far below any physical digit."""
+    from pocket.apps.solvers import record
+    from pocket.apps.sweep import solve_curve, solve_point
+
+    tolerance = {"shooting": "rtol", "fem": "tol"}
+    rel = 100 * (record(solver).option(tolerance[solver]).default if solver in tolerance else 1e-12)
+    for alpha in ALPHAS:
+        for pressure in PRESSURES:
+            curve = solve_curve(solver, alpha, pressure, FORCES, options)
+            points = [solve_point(solver, alpha, pressure, force, options) for force in FORCES]
+            assert [r["status"] for r in curve] == [r["status"] for r in points]
+            assert "out_of_range" in {r["status"] for r in curve} or pressure == 0.1
+            for row, alone in zip(curve, points, strict=True):
+                assert {k: v for k, v in row.items() if not isinstance(v, float)} == {
+                    k: v for k, v in alone.items() if not isinstance(v, float)}
+                for name, value in alone.items():
+                    if isinstance(value, float):
+                        assert row[name] == pytest.approx(value, rel=rel, abs=rel), (name, row[name], value)
 
 
 def test_dask_cluster_same_csv(reference, tmp_path):
@@ -58,8 +111,8 @@ def test_dask_cluster_same_csv(reference, tmp_path):
 
 
 def test_interrupted_sweep_resumes(reference, tmp_path):
-    """A sweep cut off mid-row keeps its finished rows, recomputes only the others, and ends with
-    the same file as an uninterrupted one."""
+    """A sweep cut off mid-row keeps its finished rows, computes only the others (on the curves they
+    belong to), and ends with the same file as an uninterrupted one."""
     lines = reference.read_text().splitlines(keepends=True)
     path = tmp_path / "resumed.csv"
     path.write_text("".join(lines[:6]) + lines[6][:20])  # header, 5 rows, and half a row
@@ -67,8 +120,7 @@ def test_interrupted_sweep_resumes(reference, tmp_path):
     with executor:
         computed, reused = run_sweep(path, ALPHAS, PRESSURES, FORCES, executor)
     assert (computed, reused) == (11, 5)
-    finished = {tuple(float(x) for x in line.split(",")[:3]) for line in lines[1:6]}
-    assert len(executor.points) == 11 and not finished & set(executor.points)
+    assert executor.tasks == 3  # the curve finished (4 rows of the first curve) is not solved again
     assert path.read_bytes() == reference.read_bytes()
     with CountingExecutor() as again:  # all done: nothing to compute
         assert run_sweep(path, ALPHAS, PRESSURES, FORCES, again) == (0, 16) and again.points == []
@@ -116,7 +168,6 @@ def test_rows_record_the_grid_as_asked(tmp_path, monkeypatch):
     the file finds every point and adds no row."""
     import dataclasses
     import math
-    import types
 
     import pocket.apps.sweep as sweep
 
@@ -125,7 +176,7 @@ def test_rows_record_the_grid_as_asked(tmp_path, monkeypatch):
         return dataclasses.replace(state, alpha=math.nextafter(alpha, 2.0), force=math.nextafter(force, 2.0),
                                    pressure_initial=math.nextafter(pressure_initial, 2.0))
 
-    monkeypatch.setattr(sweep, "get_solver", lambda name: types.SimpleNamespace(compress=compress))
+    monkeypatch.setattr(sweep, "get_solver", lambda name: _solver_of(compress))
     path = tmp_path / "echo.csv"
     grid = ([0.3, 1.2], [0.05, 0.1], [0.05, 0.1])
     with CountingExecutor() as executor:
@@ -181,21 +232,21 @@ def test_the_start_of_a_header_is_a_new_sweep(tmp_path):
 
 
 def test_interrupted_sweep_keeps_complete_rows_and_resumes(reference, tmp_path):
-    """An interrupt after 5 points: the file holds the header and exactly 5 complete rows of the
-    reference; the rerun computes the other 11 and ends with the reference's bytes."""
+    """An interrupt after the first curve (4 points): the file holds the header and exactly its 4
+    complete rows of the reference; the rerun computes the other 12 and ends with the reference's bytes."""
     path = tmp_path / "stopped.csv"
 
     def progress(done, total):
-        if done == 5:
+        if done == len(FORCES):
             raise KeyboardInterrupt
 
     with CountingExecutor() as executor, pytest.raises(KeyboardInterrupt):
         run_sweep(path, ALPHAS, PRESSURES, FORCES, executor, progress=progress)
     lines = path.read_text().splitlines(keepends=True)
-    assert len(lines) == 6 and lines[0] == reference.read_text().splitlines(keepends=True)[0]
+    assert len(lines) == 1 + len(FORCES) and lines[0] == reference.read_text().splitlines(keepends=True)[0]
     assert set(lines[1:]) <= set(reference.read_text().splitlines(keepends=True))
     with CountingExecutor() as executor:
-        assert run_sweep(path, ALPHAS, PRESSURES, FORCES, executor) == (11, 5)
+        assert run_sweep(path, ALPHAS, PRESSURES, FORCES, executor) == (16 - len(FORCES), len(FORCES))
     assert path.read_bytes() == reference.read_bytes()
 
 
@@ -344,14 +395,13 @@ def test_bad_sweep_options(tmp_path, capsys, extra, message):
 def test_warnings_go_to_the_message_column(tmp_path, monkeypatch):
     """An ok point's message is its state's warnings, joined by '; ' on one line."""
     import dataclasses
-    import types
 
     import pocket.apps.sweep as sweep
 
     def compress(*args, **options):
         return dataclasses.replace(shooting.compress(*args, **options), warnings=("first\nnote", "second"))
 
-    monkeypatch.setattr(sweep, "get_solver", lambda name: types.SimpleNamespace(compress=compress))
+    monkeypatch.setattr(sweep, "get_solver", lambda name: _solver_of(compress))
     path = tmp_path / "w.csv"
     with CountingExecutor() as executor:
         run_sweep(path, [0.3], [0.3], [0.1], executor)
@@ -368,3 +418,48 @@ def test_a_bad_scheduler_address_is_input(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--scheduler not an address: cannot connect" in err, err
     assert not path.exists()
+
+
+def test_another_solver_or_options_computes_its_own_points(tmp_path, capsys):
+    """The solver and its options are part of a point: the same grid with another solver, or other
+    options, computes its points and keeps the others' rows; each rerun reuses its own."""
+    path = tmp_path / "mix.csv"
+    argv = ["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "0.2", "--out", str(path),
+            "--workers", "1"]
+    runs = [[], ["--solver", "analytical"], ["--solver", "fem", "--order", "1", "--elements", "64"],
+            ["--solver", "fem", "--order", "2", "--elements", "64"], ["--rtol", "1e-8"]]
+    for number, extra in enumerate(runs, start=1):
+        assert main([*argv, *extra]) == 0
+        assert "2 points computed, 0 reused" in capsys.readouterr().out
+        rows = list(csv.DictReader(path.open()))
+        assert len(rows) == 2 * number
+    assert sorted((r["solver"], r["solver_options"]) for r in rows[::2]) == [
+        ("analytical", ""), ("fem", "elements=64 order=1"), ("fem", "elements=64 order=2"), ("shooting", ""),
+        ("shooting", "rtol=1e-08")]
+    analytical = [r for r in rows if r["solver"] == "analytical"]
+    assert [float(r["height"]) for r in analytical] == [
+        s.height for s in get_solver("analytical").compression_curve(0.3, 0.1, [0.1, 0.2])]
+    for extra in runs:
+        assert main([*argv, *extra]) == 0
+        assert "0 points computed, 2 reused" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("columns, lacks", [
+    ((*CompressedState.KEYS, "solver", "status", "message", *IDENTITY[2:], *CHECKS), "the solver's options"),
+    ((*CompressedState.KEYS, "solver", "status", "message"), "the solver's options, the rubber and the fluid")])
+def test_a_sweep_file_of_an_earlier_pocket_is_refused_saying_what_it_holds(tmp_path, capsys, columns, lacks):
+    """A file whose rows do not say all of what a point is: exit 2, one line saying so and how many points
+    of which solver it holds, the file untouched."""
+    path = tmp_path / "old.csv"
+    row = dict.fromkeys(columns, "")
+    lines = [",".join(columns)] + [",".join({**row, "alpha": "0.3", "pressure_initial": "0.1", "force": str(f),
+                                               "solver": "shooting", "status": "ok"}.values()) for f in (0.1, 0.2)]
+    text = "\n".join(lines) + "\n"
+    path.write_text(text)
+    assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
+                 "--solver", "analytical"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1, err
+    assert f"{path} is a sweep file of an earlier pocket (2 points: 2 of solver shooting), whose rows do not " \
+           f"record {lacks}" in err, err
+    assert path.read_text() == text

@@ -124,3 +124,130 @@ def test_ctrl_c_ends_the_sweep_at_once_with_one_line(tmp_path):
     finally:
         proc.kill()
         _kill(workers | _children(proc.pid))
+
+
+# A dask cluster that cannot run the sweep: real scheduler and worker processes on 127.0.0.1, the
+# sweep a `pocket sweep --scheduler` process. Its task waits for the test (a file the test writes)
+# before solving, so that what the test does happens while the sweep runs, whatever the machine's speed.
+
+DASK_SWEEP = [sys.executable, "-m", "pocket.cli", "sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1",
+              "0.2"]
+#: a dask --preload module: every curve task says it started (a file), then waits for the test's release file
+HOLD = """
+import os, pathlib, time
+import pocket.apps.sweep as sweep
+
+FOLDER = pathlib.Path({folder!r})
+solve = sweep.solve_curve
+
+
+def held(*args):
+    (FOLDER / "started").touch()
+    while not (FOLDER / "release").exists():
+        time.sleep(0.05)
+    return solve(*args)
+
+
+sweep.solve_curve = held
+"""
+
+
+def _scheduler(folder):
+    """A dask scheduler process on 127.0.0.1 and its address."""
+    file = folder / "scheduler.json"
+    proc = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host", "127.0.0.1",
+                             "--port", "0", "--no-dashboard", "--scheduler-file", str(file)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    import json
+
+    assert _wait(lambda: file.exists() and file.read_text().strip().endswith("}"), 60), "no scheduler"
+    return proc, json.loads(file.read_text())["address"]
+
+
+def _worker(address, folder, *, without_pocket=False):
+    """A dask worker process (no nanny: killing it kills the worker) whose tasks wait for ``folder``'s
+    release file; ``without_pocket``: started so that it cannot import pocket."""
+    preload = folder / "hold.py"
+    preload.write_text(HOLD.format(folder=str(folder)))
+    argv = ["-m", "distributed.cli.dask_worker", address, "--nthreads", "1", "--no-nanny", "--no-dashboard"]
+    env = dict(os.environ)
+    if without_pocket:  # no site: the editable install's path hook is not read, the packages are on the path
+        import sysconfig
+
+        argv, env["PYTHONPATH"] = ["-S", *argv], sysconfig.get_paths()["purelib"]
+    else:
+        argv += ["--preload", str(preload)]
+    return subprocess.Popen([sys.executable, *argv], cwd=folder, env=env, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+
+
+@pytest.fixture
+def cluster(tmp_path):
+    """(scheduler process, its address, started processes to end after the test)."""
+    pytest.importorskip("dask.distributed")
+    scheduler, address = _scheduler(tmp_path)
+    started = [scheduler]
+    yield scheduler, address, started
+    (tmp_path / "release").touch()
+    for proc in started:
+        proc.kill()
+        proc.wait()
+
+
+def _sweep(folder, address, *extra):
+    return subprocess.Popen([*DASK_SWEEP, "--out", str(folder / "s.csv"), "--scheduler", address, *extra],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def test_a_lost_scheduler_is_one_line(cluster, tmp_path):
+    """The scheduler killed while the sweep's task runs: exit 1, stderr one line saying the connection
+    was lost and that the same command resumes, no traceback, and (no point finished) no file."""
+    scheduler, address, started = cluster
+    started.append(_worker(address, tmp_path))
+    sweep = _sweep(tmp_path, address)
+    started.append(sweep)
+    assert _wait(lambda: (tmp_path / "started").exists(), 120), "the task did not start"
+    scheduler.kill()
+    out, err = sweep.communicate(timeout=120)
+    assert sweep.returncode == 1 and err.count("\n") == 1, err
+    assert f"lost the connection to the dask scheduler at {address}" in err and "resumes the sweep" in err, err
+    assert not (tmp_path / "s.csv").exists()
+
+
+def test_all_workers_gone_is_one_line(cluster, tmp_path):
+    """The only worker killed while it runs the sweep's task: with --patience 1 the sweep stops (it
+    used to wait for ever): exit 1, one line saying no worker is connected."""
+    _, address, started = cluster
+    worker = _worker(address, tmp_path)
+    started.append(worker)
+    sweep = _sweep(tmp_path, address, "--patience", "1")
+    started.append(sweep)
+    assert _wait(lambda: (tmp_path / "started").exists(), 120), "the task did not start"
+    worker.kill()
+    out, err = sweep.communicate(timeout=120)
+    assert sweep.returncode == 1 and err.count("\n") == 1, err
+    assert f"no dask worker has been connected to the scheduler at {address} for 1 s" in err, err
+
+
+def test_no_worker_at_all_is_one_line(cluster, tmp_path):
+    """A scheduler without workers: the sweep waits --patience seconds, then exit 1, one line, no file."""
+    _, address, started = cluster
+    sweep = _sweep(tmp_path, address, "--patience", "1")
+    started.append(sweep)
+    out, err = sweep.communicate(timeout=120)
+    assert sweep.returncode == 1 and err.count("\n") == 1, err
+    assert f"no dask worker joined the scheduler at {address} within 1 s" in err, err
+    assert not (tmp_path / "s.csv").exists()
+
+
+def test_a_worker_without_pocket_is_one_line(cluster, tmp_path):
+    """A worker that cannot import pocket: refused before any task, exit 1, one line naming the worker
+    and the missing module, no file."""
+    _, address, started = cluster
+    started.append(_worker(address, tmp_path, without_pocket=True))
+    sweep = _sweep(tmp_path, address)
+    started.append(sweep)
+    out, err = sweep.communicate(timeout=120)
+    assert sweep.returncode == 1 and err.count("\n") == 1, err
+    assert "cannot run pocket (ModuleNotFoundError" in err and "No module named 'pocket'" in err, err
+    assert not (tmp_path / "s.csv").exists()

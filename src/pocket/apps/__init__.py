@@ -5,7 +5,8 @@ and command lines give them, checked), ``physical`` (a case resolved to the dime
 model and back to SI), ``inverse`` (the load that gives a target value),
 ``casefile`` (``pocket run``), ``design`` (soft buttons), ``sense`` (force from
 pressure), ``sweep`` (parameter grids on any executor) with ``sweepfile`` (its
-CSV journal) and ``workers`` (local processes that die with their parent),
+CSV journal), ``workers`` (local processes that die with their parent) and ``cluster`` (a dask
+cluster that says when it cannot run the sweep),
 ``slopes``, ``vtkfiles`` (ParaView output), ``folders`` (outputs checked first,
 written whole or not at all), ``provenance`` and ``solvers`` (the solvers by name).
 """

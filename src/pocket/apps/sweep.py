@@ -4,15 +4,19 @@ The rubber is a Mooney-Rivlin alpha per grid point (the alpha axis), or one rubb
 another law for the whole sweep (``pocket.core.materials.Material``); the fluid is a
 liquid or one gas for the whole sweep.
 
-Each grid point is one compressed state, solved in a task of its own by
-``solve_point`` (a top-level function, so that it pickles to other processes
-and machines). ``run_sweep`` takes the executor as an argument: local
+Each grid point is one compressed state. The points of one curve (a rubber,
+a fluid, Phat_I, the solver and its options) are solved in one task by
+``solve_curve``, by continuation through their forces from one inflation
+(``compression_curve``), which gives the states of ``solve_point`` (a point
+from a fresh inflation) to the solver's tolerance at a fraction of the cost.
+Both are top-level functions, so that they pickle to other processes and
+machines. ``run_sweep`` takes the executor as an argument: local
 processes (``pocket.apps.workers.local_executor``, the command line's default)
 or a dask.distributed cluster (``Client(address).get_executor()``, with
 ``--scheduler ADDRESS``) run the same code.
 
 The results are one tidy CSV, one row per point: the keys of a compressed
-state (``CompressedState.KEYS``), the solver, a ``status`` (``ok``;
+state (``CompressedState.KEYS``), the solver and its options, a ``status`` (``ok``;
 ``out_of_range`` past the model's range; ``failed`` when the solver did not
 converge), a one-line ``message`` (the reason, or the state's warnings), the
 rubber, the fluid and the smallest tensions with the wrinkling flag
@@ -29,8 +33,8 @@ The file's life:
    stops with an ``InputError`` and leaves it untouched. An empty file, or one
    holding only the start of the header, counts as new. One sweep at a time
    may write a file (an advisory POSIX lock, where the system has ``fcntl``).
-2. While the sweep runs, the file is its journal: each finished point is
-   appended as one complete row and flushed.
+2. While the sweep runs, the file is its journal: the points of each finished
+   curve are appended, each as one complete row, and flushed.
 3. Once every point is in, the file is rewritten in grid order (then any other
    points it held), through a sibling renamed onto it
    (``pocket.apps.folders.write_whole``), so that the result does not depend on
@@ -62,32 +66,66 @@ from .folders import write_whole
 from .solvers import get_solver, record
 from .sweepfile import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
 
-__all__ = ["COLUMNS", "STATUSES", "MAX_POINTS", "solve_point", "run_sweep"]
+__all__ = ["COLUMNS", "STATUSES", "MAX_POINTS", "solve_point", "solve_curve", "run_sweep"]
 
 #: most points of one sweep (a bound on the work and on the memory of its bookkeeping)
 MAX_POINTS = 100_000
 
 
-def solve_point(solver: str, material, pressure_initial: float, force: float, options: dict) -> dict:
-    """One grid point as a CSV row (dict of COLUMNS); model failures become a status, not an error.
-
-    ``material`` is a Mooney-Rivlin alpha or a ``Material``; ``options`` the solver's, with the
-    ``fluid`` (a ``Fluid``) if it is a gas."""
+def _row(solver: str, material, pressure_initial: float, force: float, options: dict, state=None,
+         error: Exception | None = None) -> dict:
+    """The CSV row (dict of COLUMNS) of one point: its ``state``, or the ``error`` that stopped it."""
     row = dict.fromkeys(COLUMNS, "")
-    try:
-        state = get_solver(solver).compress(material, pressure_initial, force, **options)
-    except OutOfRangeError as err:
-        row.update(status="out_of_range", message=line(err))
-    except ConvergenceError as err:
-        row.update(status="failed", message=line(err))
+    if isinstance(error, OutOfRangeError):
+        row.update(status="out_of_range", message=line(error))
+    elif error is not None:
+        row.update(status="failed", message=line(error))
     else:
         row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS if key != "alpha"})
         row.update({key: float(getattr(state, key)) for key in CHECKS[:2]}, wrinkled=state.wrinkled)
         row.update(status="ok", message=line("; ".join(state.warnings)))
-    row.update(identity(material, as_fluid(options.get("fluid"))))  # the point as asked
+    row.update(identity(solver, options, material, as_fluid(options.get("fluid"))))  # the point as asked
     row.update(alpha="" if isinstance(material, Material) else material, pressure_initial=pressure_initial,
-               force=force, solver=solver)
+               force=force)
     return row
+
+
+def solve_point(solver: str, material, pressure_initial: float, force: float, options: dict) -> dict:
+    """One grid point, from a fresh inflation, as a CSV row (dict of COLUMNS); model failures become
+    a status, not an error.
+
+    ``material`` is a Mooney-Rivlin alpha or a ``Material``; ``options`` the solver's, with the
+    ``fluid`` (a ``Fluid``) if it is a gas."""
+    try:
+        state = get_solver(solver).compress(material, pressure_initial, force, **options)
+    except (OutOfRangeError, ConvergenceError) as err:
+        return _row(solver, material, pressure_initial, force, options, error=err)
+    return _row(solver, material, pressure_initial, force, options, state)
+
+
+def solve_curve(solver: str, material, pressure_initial: float, forces, options: dict) -> list[dict]:
+    """The points of one curve (one rubber, fluid and Phat_I; ``forces`` Fhat distinct, in increasing
+    order) as CSV rows in that order, by continuation through the forces (``compression_curve``).
+
+    The rows are those of ``solve_point`` to the solver's tolerance. Where the continuation fails at a
+    force, that point is solved from a fresh inflation (its row is ``solve_point``'s), the forces
+    before it are the curve up to it, and those after it a curve of their own; past a point out of
+    the model's range, each point is solved alone (its row says why it is out of range).
+    """
+    done = [0]
+    try:
+        states = get_solver(solver).compression_curve(material, pressure_initial, forces,
+                                                      progress=lambda count, _: done.append(count), **options)
+    except (OutOfRangeError, ConvergenceError):
+        k = done[-1]
+        rows = solve_curve(solver, material, pressure_initial, forces[:k], options) if k else []
+        rows.append(solve_point(solver, material, pressure_initial, forces[k], options))
+        rest = forces[k + 1:]
+        if rows[-1]["status"] == "out_of_range":
+            return rows + [solve_point(solver, material, pressure_initial, f, options) for f in rest]
+        return rows + (solve_curve(solver, material, pressure_initial, rest, options) if rest else [])
+    return [_row(solver, material, pressure_initial, f, options, state) for f, state in zip(forces, states,
+                                                                                             strict=True)]
 
 
 def _grid(materials, pressures, forces) -> list[tuple]:
@@ -101,17 +139,29 @@ def _grid(materials, pressures, forces) -> list[tuple]:
     return list(dict.fromkeys(itertools.product(materials, pressures, forces)))
 
 
+def _curves(points) -> dict:
+    """(material, Phat_I) -> the distinct forces of ``points`` (material, Phat_I, Fhat) there, increasing."""
+    curves: dict = {}
+    for material, pressure, force in points:
+        curves.setdefault((material, pressure), set()).add(force)
+    return {curve: sorted(forces) for curve, forces in curves.items()}
+
+
 def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", options=None,
               progress: Callable[[int, int], None] | None = None, material: Material | None = None,
               fluid: Fluid | None = None) -> tuple[int, int]:
     """Solve every (alpha, Phat_I, Fhat) of the grid not already in the CSV ``path``.
 
-    Returns (computed, reused). The rubber is Mooney-Rivlin with each of ``alphas``, or ``material``
-    (another law, for every point: ``alphas`` then empty or None). ``fluid``: None (a liquid) or a gas,
-    its ambient pressure as Phat_atm. ``options`` are the solver's (checked against its
-    record); ``progress(done, total)`` is called after each point. The file's life,
+    Returns (computed, reused) points. The rubber is Mooney-Rivlin with each of ``alphas``, or
+    ``material`` (another law, for every point: ``alphas`` then empty or None). ``fluid``: None (a
+    liquid) or a gas, its ambient pressure as Phat_atm. ``solver`` and its ``options`` (checked
+    against its record) are part of each point: a file may hold the points of several solvers.
+    Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the
+    grid's forces up to the last one missing, so that a point's row does not depend on which
+    points an earlier run on the file had finished;
+    ``progress(done, total)`` is called after each curve, ``done`` counting points. The file's life,
     when the sweep finishes and when it stops early, is in the module docstring.
-    A sweep that stops early leaves the points not yet solved in ``executor``: its
+    A sweep that stops early leaves the curves not yet solved in ``executor``: its
     owner ends them (``pocket.apps.workers.stop``; a ``ProcessPoolExecutor`` whose
     futures were cancelled cannot be stopped by killing its workers before Python
     3.12, its manager thread then fails on the cancelled futures).
@@ -124,16 +174,22 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     fluid = as_fluid(fluid)
     if fluid.is_gas:
         options["fluid"] = fluid
-    cells = identity(materials[0], fluid) if material is not None else None
-    keys = [key({**(cells or identity(m, fluid)), "alpha": "" if cells else m, "pressure_initial": p, "force": f})
+    cells = {m: identity(solver, options, m, fluid) for m in materials}
+    keys = [key({**cells[m], "alpha": "" if material is not None else m, "pressure_initial": p, "force": f})
             for m, p, f in grid]
     journal = Journal(pathlib.Path(path))
     failed = True
     try:
-        todo = [point for point, k in zip(grid, keys, strict=True) if k not in journal.rows]
-        futures = [executor.submit(solve_point, solver, *point, options) for point in todo]
-        for done, future in enumerate(as_completed(futures), start=1):
-            journal.append(future.result())
+        todo = {k: point for point, k in zip(grid, keys, strict=True) if k not in journal.rows}
+        curves = _curves(grid)
+        futures = [executor.submit(solve_curve, solver, m, p, [f for f in curves[m, p] if f <= fs[-1]], options)
+                   for (m, p), fs in _curves(todo.values()).items()]
+        done = 0
+        for future in as_completed(futures):
+            curve = [row for row in future.result() if key(row) in todo]
+            for row in curve:
+                journal.append(row)
+            done += len(curve)
             if progress is not None:
                 progress(done, len(todo))
         rows = journal.rows

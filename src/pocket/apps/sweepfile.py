@@ -1,7 +1,9 @@
 """The sweep file: one CSV row per grid point, appended while a sweep runs (``pocket.apps.sweep``).
 
 Columns (``COLUMNS``): the keys of a compressed state (``CompressedState.KEYS``),
-the solver, a ``status`` (``STATUSES``) and a one-line ``message``; then the rubber
+the solver and its options (``solver_options``: ``name=value`` separated by spaces,
+in name order, as given; empty for the solver's defaults), a ``status``
+(``STATUSES``) and a one-line ``message``; then the rubber
 (``material``, the law's name, and a column per parameter of every law, empty where
 the law has no such parameter: Mooney-Rivlin's is ``alpha``, so its rows leave
 ``c1`` and ``c2`` empty; Ogden's lists are numbers separated by spaces), the fluid
@@ -9,8 +11,10 @@ the law has no such parameter: Mooney-Rivlin's is ``alpha``, so its rows leave
 checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``). Floats are written
 exactly (``repr``), so a point reads back equal to the number asked.
 
-A point is its rubber, fluid, Phat_I and Fhat (``key``): a file may hold points of
-several sweeps, and a rerun recognises its own.
+A point is its solver and options, rubber, fluid, Phat_I and Fhat (``key``): a file may
+hold points of several sweeps, of several solvers, and a rerun recognises its own. A
+file of an earlier pocket, whose rows lack some of these columns, is refused, saying
+what it holds.
 
 ``Journal`` opens a sweep file for a sweep: it refuses, untouched, a file that
 is not a sweep file (``InputError``), takes an advisory POSIX lock so that one
@@ -24,6 +28,7 @@ a buffer that a later flush would retry. A write that fails is an
 
 from __future__ import annotations
 
+import collections
 import csv
 import errno
 import io
@@ -44,11 +49,12 @@ try:
 except ImportError:  # not a POSIX system: no lock
     fcntl = None
 
-__all__ = ["COLUMNS", "IDENTITY", "STATUSES", "Journal", "identity", "key", "line", "rows_csv"]
+__all__ = ["COLUMNS", "IDENTITY", "STATUSES", "Journal", "identity", "key", "line", "options_text", "rows_csv"]
 
-#: what identifies a point besides alpha, Phat_I and Fhat: its rubber and its fluid
-IDENTITY = ("material", *PARAMETERS, "fluid", "ambient", "gamma")
-COLUMNS = (*CompressedState.KEYS, "solver", "status", "message", *IDENTITY, *CHECKS)
+#: what identifies a point besides alpha, Phat_I and Fhat: its solver, rubber and fluid
+IDENTITY = ("solver", "solver_options", "material", *PARAMETERS, "fluid", "ambient", "gamma")
+_RUBBER_FLUID = IDENTITY[2:]
+COLUMNS = (*CompressedState.KEYS, "solver", "solver_options", "status", "message", *_RUBBER_FLUID, *CHECKS)
 STATUSES = ("ok", "out_of_range", "failed")
 _NUMBERS = ("alpha", "pressure_initial", "force")
 
@@ -63,10 +69,25 @@ def _cell(value) -> str:
     return " ".join(map(repr, value)) if isinstance(value, tuple) else repr(float(value))
 
 
-def identity(material, fluid: Fluid) -> dict:
-    """The IDENTITY cells (text) of a point: ``material`` a Mooney-Rivlin alpha (its own column) or a
-    ``Material``, ``fluid`` a ``Fluid``."""
+def _option(name: str, value) -> str:
+    if isinstance(value, bool):
+        return f"{name}={str(value).lower()}"
+    if isinstance(value, (int, float, str)):
+        return f"{name}={value!r}" if isinstance(value, float) else f"{name}={value}"
+    raise InputError(f"a sweep records its solver's options as text: give {name} as a number or a file name")
+
+
+def options_text(options: dict) -> str:
+    """The ``solver_options`` cell of a sweep's solver ``options`` (checked; the fluid is not one)."""
+    return " ".join(_option(name, options[name]) for name in sorted(options) if name != "fluid")
+
+
+def identity(solver: str, options: dict, material, fluid: Fluid) -> dict:
+    """The IDENTITY cells (text) of a point: ``solver`` its name and ``options`` its options (as
+    ``options_text``), ``material`` a Mooney-Rivlin alpha (its own column) or a ``Material``,
+    ``fluid`` a ``Fluid``."""
     cells = dict.fromkeys(IDENTITY, "")
+    cells.update(solver=solver, solver_options=options_text(options))
     if isinstance(material, Material):
         cells.update({name: _cell(value) for name, value in material.params}, material=material.law)
     else:
@@ -76,7 +97,8 @@ def identity(material, fluid: Fluid) -> dict:
 
 
 def key(row) -> tuple:
-    """The point of a row: its IDENTITY cells, then alpha (None for another law), Phat_I and Fhat."""
+    """The point of a row: its IDENTITY cells (solver, options, rubber, fluid), then alpha (None for
+    another law), Phat_I and Fhat."""
     alpha, pressure, force = (row[k] for k in _NUMBERS)
     return (*(row[k] for k in IDENTITY), None if alpha in ("", None) else float(alpha), float(pressure),
             float(force))
@@ -93,7 +115,13 @@ def rows_csv(rows, *, header=False) -> bytes:
 
 
 _HEADER = rows_csv([], header=True)
-_EARLIER = ",".join((*CompressedState.KEYS, "solver", "status", "message")).encode() + b"\n"  # before IDENTITY
+#: headers of earlier pockets, and what their rows lack
+_EARLIER = {
+    ",".join((*CompressedState.KEYS, "solver", "status", "message")).encode() + b"\n":
+        "the solver's options, the rubber and the fluid",
+    ",".join((*CompressedState.KEYS, "solver", "status", "message", *_RUBBER_FLUID, *CHECKS)).encode() + b"\n":
+        "the solver's options",
+}
 
 
 def _not_a_sweep(path, why) -> InputError:
@@ -127,6 +155,16 @@ def _parse(data: bytes, path) -> tuple[dict, int]:
     return rows, end
 
 
+def _holds(path) -> str:
+    """What the sweep file ``path`` of an earlier pocket holds: its complete rows by solver."""
+    with open(path, newline="", encoding="utf-8", errors="replace") as file:
+        data = file.read()
+    rows = list(csv.DictReader(io.StringIO(data[: data.rfind("\n") + 1], newline="")))
+    solvers = collections.Counter(row.get("solver") or "?" for row in rows)
+    points = ", ".join(f"{n} of solver {name}" for name, n in sorted(solvers.items()))
+    return f"{len(rows)} points" + (f": {points}" if points else "")
+
+
 class Journal:
     """A sweep file, locked and opened for appending rows (module docstring); ``rows`` maps each
     point to its row, ``path`` is the file."""
@@ -157,9 +195,11 @@ class Journal:
         """The file's bytes, once its start is known to be (a prefix of) the header."""
         start = self.file.read(len(_HEADER))
         if not (_HEADER.startswith(start) if len(start) < len(_HEADER) else start == _HEADER):
-            if start.startswith(_EARLIER):
-                raise InputError(f"{self.path} is a sweep file of an earlier pocket, without the rubber and fluid "
-                                 "columns, so this sweep cannot resume it; give another --out file")
+            for header, lacks in _EARLIER.items():
+                if start.startswith(header):  # each shorter than today's header
+                    raise InputError(f"{self.path} is a sweep file of an earlier pocket ({_holds(self.path)}), "
+                                     f"whose rows do not record {lacks}, so this sweep cannot resume it; give "
+                                     "another --out file")
             first = start.split(b"\n", 1)[0][:80].decode("utf-8", errors="replace")
             raise _not_a_sweep(self.path, f"its first line starts {line(first)!r}")
         return start + self.file.readall()

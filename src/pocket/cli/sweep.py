@@ -3,11 +3,13 @@ gas, on local processes or a dask cluster, resumable."""
 
 from __future__ import annotations
 
+from pocket.apps.cluster import PATIENCE, connect
 from pocket.apps.folders import check_output_file
 from pocket.apps.solvers import SOLVERS
 from pocket.apps.sweep import MAX_POINTS, run_sweep
 from pocket.apps.workers import local_executor, max_workers, stop
 from pocket.core.errors import InputError
+from pocket.core.inputs import check_positive
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, solver_flags
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
@@ -16,20 +18,15 @@ __all__ = ["register"]
 
 
 def _executor(args):
-    """(executor, client): local processes, or a dask.distributed cluster's executor and its client."""
+    """Local processes, or the executor of a dask.distributed cluster (``pocket.apps.cluster``)."""
     if args.scheduler is None:
-        return local_executor(args.workers), None
+        if args.patience is not None:
+            raise InputError("--patience applies to --scheduler, not to local processes")
+        return local_executor(args.workers)
     if args.workers is not None:
         raise InputError("--workers applies to local processes, not to --scheduler")
-    try:
-        from dask.distributed import Client
-    except ImportError:
-        raise InputError("--scheduler needs dask.distributed: pip install 'pocket-mechanics[sweep]'") from None
-    try:
-        client = Client(args.scheduler, timeout="10s")
-    except (OSError, ValueError, TypeError) as err:
-        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({' '.join(str(err).split())})") from None
-    return client.get_executor(), client
+    patience = PATIENCE if args.patience is None else check_positive("--patience", args.patience)
+    return connect(args.scheduler, patience)
 
 
 def _main(args) -> int:
@@ -38,7 +35,7 @@ def _main(args) -> int:
     rubber = material_of(args)
     alphas, material = (rubber, None) if isinstance(rubber, list) else (None, rubber)
     fluid = fluid_of(args, physical=False)
-    executor, client = _executor(args)
+    executor = _executor(args)
     try:
         with progress_bar("sweep", " points") as progress:
             computed, reused = run_sweep(args.out, alphas, args.pressure, args.force, executor, solver=args.solver,
@@ -47,9 +44,6 @@ def _main(args) -> int:
     except BaseException:
         stop(executor)
         raise
-    finally:
-        if client is not None:
-            client.close()
     print(f"sweep: {computed} points computed, {reused} reused; wrote {args.out}")
     return 0
 
@@ -69,7 +63,10 @@ def register(subparsers) -> None:
     p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting", help="solver of every point")
     p.add_argument("--workers", type=int, help=f"local worker processes (default: one per usable CPU; at most "
                    f"{max_workers()}, 4 per CPU)")
-    p.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786; its "
+                   "workers need the same pocket installed")
+    p.add_argument("--patience", type=number, metavar="SECONDS", help=f"with --scheduler: how long to wait "
+                   f"while no worker is connected before stopping (default {PATIENCE:g})")
     add_rubber_flags(p, alphas=True)
     add_fluid_flags(p, physical=False)
     add_solver_flags(p, "compress")

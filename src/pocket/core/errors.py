@@ -7,13 +7,14 @@ the clamp plane). Both exit with status 2 on the command line.
 ``ConvergenceError``: the numerics failed; it says where (load level), after
 how many iterations and with what residual. ``OutputError``: a result could
 not be written (a read-only folder, a full disk); nothing half-written is left.
-Both exit with status 1.
+``ClusterError``: the workers of a cluster cannot run the work (none, without
+pocket, the scheduler lost). These exit with status 1.
 """
 
 from __future__ import annotations
 
-__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "exit_status",
-           "beyond_range", "CLAMP_PLANE"]
+__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "ClusterError",
+           "exit_status", "beyond_range", "CLAMP_PLANE"]
 
 #: what happens at the end of the compression range (unless the force has a maximum first)
 CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
@@ -48,10 +49,14 @@ class OutputError(PocketError, OSError):
     """A result could not be written; the partial output has been removed."""
 
 
+class ClusterError(PocketError, RuntimeError):
+    """A cluster's workers cannot run the work: none, without pocket, or the scheduler lost."""
+
+
 def exit_status(err: PocketError) -> int:
-    """The command line's exit status for ``err``: 1 for a solver failure or an output that could not
-    be written, 2 for bad input or a state outside the model."""
-    return 1 if isinstance(err, (ConvergenceError, OutputError)) else 2
+    """The command line's exit status for ``err``: 1 for a solver failure, an output that could not
+    be written or a cluster that cannot run the work, 2 for bad input or a state outside the model."""
+    return 1 if isinstance(err, (ConvergenceError, OutputError, ClusterError)) else 2
 
 
 def beyond_range(asked: str, end: str, reason: str = CLAMP_PLANE) -> OutOfRangeError:
