@@ -194,6 +194,85 @@ def test_legends_name_pockets_and_solvers_once(report):
     assert broad["zorder"] < thin["zorder"] and broad["linewidth"] > thin["linewidth"]
 
 
+def test_paper_figures_come_in_the_papers_order(report, page):
+    """Exact answer: the paper's figures come 2, 3a, 3b, 4, 5, in the list and on the page."""
+    from pocket.validation.figures import figures
+
+    names = [f.name for f in figures(report[2])]
+    assert names[:5] == ["fig2", "fig3a", "fig3b", "fig4", "fig5"]
+    assert page.images[:5] == [f"{name}.png" for name in names[:5]]
+
+
+def test_one_colour_per_pocket_in_every_figure(report):
+    """Exact answer: a pocket has one colour in all the figures (fig 4 once gave sample 1 at 5 kPa another
+    colour than figs 3 and 5), two pockets never share one, and the palette has a colour for each."""
+    from pocket.validation.draw import PALETTE
+    from pocket.validation.figures import figures
+
+    colours = {}
+    for fig in figures(report[2]):
+        for s in (s for panel in fig.panels for s in panel.series if s.group and not s.emphasis):
+            colours.setdefault(s.group, set()).add(s.color)
+    assert len(colours) >= 8 and all(len(c) == 1 for c in colours.values()), colours
+    used = [next(iter(c)) for c in colours.values()]
+    assert len(set(used)) == len(used) and max(used) < len(PALETTE)
+
+
+def test_log_axes_leave_out_zero_and_say_so(report):
+    """Exact answer: no point at x <= 0 on a log-x axis (nor y <= 0 on a log-y one), where a log scale would
+    clip it to the edge and draw a false plateau; a figure that left F = 0 out says so in its caption."""
+    from pocket.validation.figures import NO_ZERO, figures
+
+    results = report[2]
+    for fig in figures(results):
+        for panel in fig.panels:
+            for s in panel.series:
+                assert "x" not in panel.log or (s.x > 0).all(), (fig.name, panel.title, s.label)
+                assert "y" not in panel.log or (s.y > 0).all(), (fig.name, panel.title, s.label)
+        if fig.name in ("fig3a", "fig3b", "fig5", "fluids", "laws"):  # log in F, whose curves start at F = 0
+            assert NO_ZERO in fig.caption, fig.name
+    assert results.curves[0].reference[0].force == 0.0  # the curves do start at 0: the test can fail
+
+
+def test_every_pocket_shows_in_fig3a(report, tmp_path):
+    """Exact answer: every pocket's curves put at least five dots' worth of pixels of its colour on fig 3a,
+    counted as the pixels it loses when its series are emptied (its legend entry stays). Sample 2 at 5 kPa
+    lies within 0.003 of the neo-Hookean pocket and was hidden under it (only its legend showed)."""
+    import dataclasses
+
+    import matplotlib.image
+    from matplotlib.colors import to_rgb
+    from pocket.validation.draw import _DOTS, PALETTE, draw
+    from pocket.validation.figures import figures
+
+    fig = next(f for f in figures(report[2]) if f.name == "fig3a")
+    dot = np.pi / 4 * (_DOTS["markersize"] * 110 / 72) ** 2  # pixels of one dot at the PNG's 110 dpi
+
+    def pixels(figure, colour, name):
+        image = matplotlib.image.imread(draw(dataclasses.replace(figure, name=name), tmp_path))[..., :3]
+        return int((np.abs(image - np.array(to_rgb(colour))).max(axis=-1) < 0.1).sum())
+
+    pockets = {s.group: s.color for panel in fig.panels for s in panel.series if s.group and not s.emphasis}
+    for k, (group, color) in enumerate(pockets.items()):
+        emptied = dataclasses.replace(fig, panels=tuple(dataclasses.replace(panel, series=tuple(
+            dataclasses.replace(s, x=s.x[:0], y=s.y[:0]) if s.group == group else s for s in panel.series))
+            for panel in fig.panels))
+        shown = pixels(fig, PALETTE[color], f"full{k}") - pixels(emptied, PALETTE[color], f"emptied{k}")
+        assert shown >= 5 * dot, (group, shown)
+
+
+def test_fig4_caption_explains_every_style_of_its_legend(report):
+    """Exact answer: fig 4's caption names each solver its legend may show (the FE columns' markers too),
+    and fig 5 is titled by what it plots, P/P_I."""
+    from pocket.validation.figures import figures
+    from pocket.validation.plan import DEFAULT
+
+    figs = {f.name: f for f in figures(report[2])}
+    for solver in ("shooting", "analytical", *(c.label for c in DEFAULT.fem_columns)):
+        assert solver in figs["fig4"].caption, solver
+    assert "P/P_I" in figs["fig5"].caption.split(" against")[0] and "rise" not in figs["fig5"].caption
+
+
 def test_log_axes_have_enough_tick_labels():
     """Exact answer: a log axis over 1-80 (fig 4's P/P_I) is labelled 1, 2, 5, 10, 20, 50 (it had two labels);
     outside 0.001-10000 labels are powers of ten (not 1e-05 beside 0.0001)."""

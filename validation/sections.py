@@ -144,8 +144,10 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
     out = [("h", 2, "Figures"),
            ("p", f"The paper's figures 2-5 ({PAPER}) recomputed for its rubber (Mooney-Rivlin) filled with a "
                  "liquid, then the figures beyond the paper: one pocket filled with a liquid and with a gas, and "
-                 "other rubber laws. Colours are pockets, line styles and markers are solvers; the headline pocket "
-                 "is the broad dark line, drawn beneath the others.")]
+                 "other rubber laws. Colours are pockets (one colour per pocket in every figure), line styles and "
+                 "markers are solvers; the headline pocket is the broad dark line, drawn beneath the others; the "
+                 "other pockets' lines carry dots of their colour, staggered so that curves lying on each other "
+                 "all show.")]
     for fig in figs:
         if fig.name != "convergence":
             out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
