@@ -15,6 +15,7 @@ from __future__ import annotations
 import csv
 import dataclasses
 import pathlib
+import time
 
 from pocket.apps.folders import check_output_dir, staged
 from pocket.core.errors import InputError
@@ -91,12 +92,15 @@ def _picture(curves, directory):
     return render.render_pocket(curves.reference[0].inflated, curves.reference[k], directory / "pocket3d.png")
 
 
-def write_report(results, out, *, executor=None, title="pocket validation report") -> pathlib.Path:
+def write_report(results, out, *, executor=None, title="pocket validation report", watch=None) -> pathlib.Path:
     """Write the report of ``results`` (a ``run.Results``) to the folder ``out``; returns its path.
 
     The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
-    else here.
+    else here. ``watch`` (a ``clock.Stopwatch``, started with the run) is stopped once all but the two
+    text files are written, and the report quotes its seconds as the run's wall time; without it the
+    time is counted from the solves' start.
     """
+    begun = time.perf_counter()
     target = check_target(out)
     with staged(target) as partial:
         if results.curves:
@@ -115,7 +119,8 @@ def write_report(results, out, *, executor=None, title="pocket validation report
             job.result()
         picture, why = extra[-1].result() if extra else (None, "")
         vtk = "vtk" if extra else None
-        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk)
+        wall = watch.stop() if watch is not None else results.seconds + (time.perf_counter() - begun)
+        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk, wall)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))
     return target
