@@ -52,11 +52,13 @@ def register(subparsers) -> None:
 
 
 def _table(rows: list[dict]) -> str:
-    keys = [k for k in rows[0] if k not in ("solver", "warnings")]
+    """The rows as aligned text: a column per key of any row (a state may lack a key another reports, as
+    the FE model's inflated state at F = 0 lacks its contact's error), "-" where a row has none."""
+    keys = [k for k in dict.fromkeys(k for r in rows for k in r) if k not in ("solver", "warnings")]
     if len(rows) == 1:
         width = max(map(len, keys))
         return "\n".join(f"{k:<{width}}  {_fmt(rows[0][k])}" for k in keys)
-    cols = [[k] + [_fmt(r[k]) for r in rows] for k in keys]
+    cols = [[k] + [_fmt(r[k]) if k in r else "-" for r in rows] for k in keys]
     widths = [max(map(len, col)) for col in cols]
     lines = ["  ".join(col[i].rjust(w) for col, w in zip(cols, widths, strict=True)) for i in range(len(rows) + 1)]
     return "\n".join(lines)
