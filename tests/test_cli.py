@@ -165,6 +165,17 @@ def _commands():
     return sub.choices
 
 
+def test_inflate_help_names_no_force_and_no_fluid(capsys):
+    """Exact answer: inflate's help says nothing of forces or fluids, which it does not take (compress's does,
+    and its parser has --force and --fluid: the words are the ones to look for)."""
+    texts = {}
+    for name in ("inflate", "compress"):
+        assert main([name, "--help"]) == 0
+        texts[name] = " ".join(capsys.readouterr().out.split()).lower()
+    for word in ("--force", "--fluid", "fhat", "forces", "fluid"):
+        assert word in texts["compress"] and word not in texts["inflate"], word
+
+
 @pytest.mark.parametrize("name", sorted(_commands()))
 def test_every_subcommand_help(name, capsys):
     """`pocket COMMAND --help`: exit 0, a description, help for every option, each option's default

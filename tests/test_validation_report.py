@@ -486,7 +486,7 @@ def test_help(capsys, command, default):
     for option in ("--out DIR", "--quick", "--cases FILE"):
         assert option in text
     assert f"(default: {default})" in text and "default: the suite's own cases.toml" in text
-    assert "exit status: 0" in text and "; 1 " in text and "; 2 bad input" in text
+    assert "exit status: 0" in text and "; 1 " in text and "; 2 bad input" in text and "; 130 interrupted" in text
     assert ("shooting solver" in text) and len(text) > 600
 
 
