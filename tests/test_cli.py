@@ -176,6 +176,27 @@ def test_inflate_help_names_no_force_and_no_fluid(capsys):
         assert word in texts["compress"] and word not in texts["inflate"], word
 
 
+def test_readme_commands_are_harmless_to_paste():
+    """Exact answer: every line of the README's sh blocks, its comment cut off and its quoted words
+    blanked, holds no shell operator a synopsis would bring ([a|b] runs as a pipeline, <x> redirects),
+    and each `pocket` line without a placeholder parses as a command (argparse: a bad one is exit 2)."""
+    import pathlib
+    import shlex
+
+    from pocket.cli.main import _parser
+
+    readme = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text()
+    blocks = re.findall(r"```sh\n(.*?)```", readme, flags=re.S)
+    lines = [line for block in blocks for line in block.splitlines() if line.strip()]
+    assert any(line.startswith("pocket inflate") for line in lines)
+    for line in lines:
+        code = re.sub(r"'[^']*'|\"[^\"]*\"", "''", line).split(" #")[0]
+        assert not set(code) & set("[]|<>"), line
+        if code.startswith("pocket ") and not {"COMMAND", "..."} & set(code.split()):  # placeholders: prose
+            args = _parser().parse_args(shlex.split(code)[1:])
+            assert args.handler, line
+
+
 @pytest.mark.parametrize("name", sorted(_commands()))
 def test_every_subcommand_help(name, capsys):
     """`pocket COMMAND --help`: exit 0, a description, help for every option, each option's default
