@@ -36,13 +36,18 @@ def test_compress_curve_is_a_json_list(capsys):
     assert all(set(CompressedState.KEYS) <= set(r) for r in rows)
 
 
-@pytest.mark.parametrize("solver", ["shooting", "analytical"])
+@pytest.mark.parametrize("solver", ["shooting", "analytical", "fem"])
 def test_table(capsys, solver):
-    status, out, _ = run(capsys, "compress", "--alpha", "47/160", "--pressure", "0.31",
-                         "--force", "0", "0.19", "--solver", solver)
+    """Exact answer: the table has a column for every key any state reports in JSON (the FE model's state at
+    F = 0 lacks one its compressed states have: the column once went missing), each line a cell per column."""
+    argv = ("compress", "--alpha", "47/160", "--pressure", "0.31", "--force", "0", "0.19", "--solver", solver)
+    status, out, _ = run(capsys, *argv)
     lines = out.splitlines()
     assert status == 0 and lines[0] == f"# solver: {solver}"
     assert lines[1].split()[:3] == ["alpha", "pressure_initial", "force"] and len(lines) == 4
+    keys = {k for row in json.loads(run(capsys, *argv, "--json")[1]) for k in row} - {"solver", "warnings"}
+    assert set(lines[1].split()) == keys
+    assert all(len(line.split()) == len(keys) for line in lines[2:])
 
 
 @pytest.mark.parametrize(
@@ -196,6 +201,38 @@ def _commands():
     parser = _parser()
     sub = next(a for a in parser._actions if isinstance(a, __import__("argparse")._SubParsersAction))
     return sub.choices
+
+
+def test_inflate_help_names_no_force_and_no_fluid(capsys):
+    """Exact answer: inflate's help says nothing of forces or fluids, which it does not take (compress's does,
+    and its parser has --force and --fluid: the words are the ones to look for)."""
+    texts = {}
+    for name in ("inflate", "compress"):
+        assert main([name, "--help"]) == 0
+        texts[name] = " ".join(capsys.readouterr().out.split()).lower()
+    for word in ("--force", "--fluid", "fhat", "forces", "fluid"):
+        assert word in texts["compress"] and word not in texts["inflate"], word
+
+
+def test_readme_commands_are_harmless_to_paste():
+    """Exact answer: every line of the README's sh blocks, its comment cut off and its quoted words
+    blanked, holds no shell operator a synopsis would bring ([a|b] runs as a pipeline, <x> redirects),
+    and each `pocket` line without a placeholder parses as a command (argparse: a bad one is exit 2)."""
+    import pathlib
+    import shlex
+
+    from pocket.cli.main import _parser
+
+    readme = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text()
+    blocks = re.findall(r"```sh\n(.*?)```", readme, flags=re.S)
+    lines = [line for block in blocks for line in block.splitlines() if line.strip()]
+    assert any(line.startswith("pocket inflate") for line in lines)
+    for line in lines:
+        code = re.sub(r"'[^']*'|\"[^\"]*\"", "''", line).split(" #")[0]
+        assert not set(code) & set("[]|<>"), line
+        if code.startswith("pocket ") and not {"COMMAND", "..."} & set(code.split()):  # placeholders: prose
+            args = _parser().parse_args(shlex.split(code)[1:])
+            assert args.handler, line
 
 
 @pytest.mark.parametrize("name", sorted(_commands()))

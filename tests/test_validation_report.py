@@ -1,9 +1,12 @@
 """``pocket validate --quick`` end to end, and the report's files parsed back as a reader meets them."""
 
+import contextlib
 import csv
 import errno
 import html.parser
+import io
 import pathlib
+import re
 import shutil
 import subprocess
 
@@ -19,13 +22,13 @@ from pocket.cli import main
 
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
-    """The quick run through the command line, and the Results it wrote (captured on the way)."""
+    """The quick run through the command line, the Results it wrote (captured on the way) and its stdout."""
     out = tmp_path_factory.mktemp("validate") / "report"
     captured, real = [], runner.run
-    with pytest.MonkeyPatch.context() as patch:
+    with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stdout(io.StringIO()) as console:
         patch.setattr(runner, "run", lambda *args, **kwargs: captured.append(real(*args, **kwargs)) or captured[-1])
         status = main(["validate", "--quick", "--out", str(out)])
-    return status, out, captured[0]
+    return status, out, captured[0], console.getvalue()
 
 
 def _rows(path):
@@ -35,7 +38,7 @@ def _rows(path):
 
 def test_quick_run_passes(report):
     """Exact answer: every verdict passes (exit status 0), and summary.csv agrees."""
-    status, out, _ = report
+    status, out, *_ = report
     assert status == 0
     rows = _rows(out / "summary.csv")
     assert rows and {r["verdict"] for r in rows} <= {"pass", "info"}
@@ -195,6 +198,173 @@ def test_legends_name_pockets_and_solvers_once(report):
     assert broad["zorder"] < thin["zorder"] and broad["linewidth"] > thin["linewidth"]
 
 
+def test_paper_figures_come_in_the_papers_order(report, page):
+    """Exact answer: the paper's figures come 2, 3a, 3b, 4, 5, in the list and on the page."""
+    from pocket.validation.figures import figures
+
+    names = [f.name for f in figures(report[2])]
+    assert names[:5] == ["fig2", "fig3a", "fig3b", "fig4", "fig5"]
+    assert page.images[:5] == [f"{name}.png" for name in names[:5]]
+
+
+def test_one_colour_per_pocket_in_every_figure(report):
+    """Exact answer: a pocket has one colour in all the figures (fig 4 once gave sample 1 at 5 kPa another
+    colour than figs 3 and 5), two pockets never share one, and the palette has a colour for each."""
+    from pocket.validation.draw import PALETTE
+    from pocket.validation.figures import figures
+
+    colours = {}
+    for fig in figures(report[2]):
+        for s in (s for panel in fig.panels for s in panel.series if s.group and not s.emphasis):
+            colours.setdefault(s.group, set()).add(s.color)
+    assert len(colours) >= 8 and all(len(c) == 1 for c in colours.values()), colours
+    used = [next(iter(c)) for c in colours.values()]
+    assert len(set(used)) == len(used) and max(used) < len(PALETTE)
+
+
+def test_log_axes_leave_out_zero_and_say_so(report):
+    """Exact answer: no point at x <= 0 on a log-x axis (nor y <= 0 on a log-y one), where a log scale would
+    clip it to the edge and draw a false plateau; a figure that left F = 0 out says so in its caption."""
+    from pocket.validation.figures import NO_ZERO, figures
+
+    results = report[2]
+    for fig in figures(results):
+        for panel in fig.panels:
+            for s in panel.series:
+                assert "x" not in panel.log or (s.x > 0).all(), (fig.name, panel.title, s.label)
+                assert "y" not in panel.log or (s.y > 0).all(), (fig.name, panel.title, s.label)
+        if fig.name in ("fig3a", "fig3b", "fig5", "fluids", "laws"):  # log in F, whose curves start at F = 0
+            assert NO_ZERO in fig.caption, fig.name
+    assert results.curves[0].reference[0].force == 0.0  # the curves do start at 0: the test can fail
+
+
+def test_every_pocket_shows_in_fig3a(report, tmp_path):
+    """Exact answer: every pocket's curves put at least five dots' worth of pixels of its colour on fig 3a,
+    counted as the pixels it loses when its series are emptied (its legend entry stays). Sample 2 at 5 kPa
+    lies within 0.003 of the neo-Hookean pocket and was hidden under it (only its legend showed)."""
+    import dataclasses
+
+    import matplotlib.image
+    from matplotlib.colors import to_rgb
+    from pocket.validation.draw import _DOTS, PALETTE, draw
+    from pocket.validation.figures import figures
+
+    fig = next(f for f in figures(report[2]) if f.name == "fig3a")
+    dot = np.pi / 4 * (_DOTS["markersize"] * 110 / 72) ** 2  # pixels of one dot at the PNG's 110 dpi
+
+    def pixels(figure, colour, name):
+        image = matplotlib.image.imread(draw(dataclasses.replace(figure, name=name), tmp_path))[..., :3]
+        return int((np.abs(image - np.array(to_rgb(colour))).max(axis=-1) < 0.1).sum())
+
+    pockets = {s.group: s.color for panel in fig.panels for s in panel.series if s.group and not s.emphasis}
+    for k, (group, color) in enumerate(pockets.items()):
+        emptied = dataclasses.replace(fig, panels=tuple(dataclasses.replace(panel, series=tuple(
+            dataclasses.replace(s, x=s.x[:0], y=s.y[:0]) if s.group == group else s for s in panel.series))
+            for panel in fig.panels))
+        shown = pixels(fig, PALETTE[color], f"full{k}") - pixels(emptied, PALETTE[color], f"emptied{k}")
+        assert shown >= 5 * dot, (group, shown)
+
+
+def test_fig4_caption_explains_every_style_of_its_legend(report):
+    """Exact answer: fig 4's caption names each solver its legend may show (the FE columns' markers too),
+    and fig 5 is titled by what it plots, P/P_I."""
+    from pocket.validation.figures import figures
+    from pocket.validation.plan import DEFAULT
+
+    figs = {f.name: f for f in figures(report[2])}
+    for solver in ("shooting", "analytical", *(c.label for c in DEFAULT.fem_columns)):
+        assert solver in figs["fig4"].caption, solver
+    assert "P/P_I" in figs["fig5"].caption.split(" against")[0] and "rise" not in figs["fig5"].caption
+
+
+class _Anchors(html.parser.HTMLParser):
+    """The page's ids, its links to '#...', its h2/h3 ids, and its table rows inside and outside <details>."""
+
+    def __init__(self):
+        super().__init__()
+        self.ids, self.links, self.sections, self.rows = [], [], [], {True: 0, False: 0}
+        self._folded = 0
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if "id" in attrs:
+            self.ids.append(attrs["id"])
+        if tag in ("h2", "h3"):
+            self.sections.append(attrs.get("id"))
+        elif tag == "a" and attrs.get("href", "").startswith("#"):
+            self.links.append(attrs["href"][1:])
+        elif tag == "details":
+            self._folded += 1
+        elif tag == "tr" and self.ids:
+            self.rows[self._folded > 0] += 1
+
+    def handle_endtag(self, tag):
+        if tag == "details":
+            self._folded -= 1
+
+
+def test_contents_link_every_section_and_the_checks_are_folded(report):
+    """Exact answer: the page has a table of contents whose every link resolves to one id, every section
+    (h2, h3) has an id and is linked; the table of all checks (one row per check, the longest part of the
+    page) is folded under <details>, and fewer rows than checks stay open."""
+    page = _Anchors()
+    page.feed((report[1] / "index.html").read_text())
+    assert len(page.ids) == len(set(page.ids))
+    assert page.links and all(link in page.ids for link in page.links)
+    assert None not in page.sections and set(page.sections) <= set(page.links)
+    checks = len(report[2].checks)
+    assert page.rows[True] >= checks > page.rows[False]
+    markdown = (report[1] / "report.md").read_text()
+    assert "- [All checks](#all-checks)" in markdown and "<details><summary>" in markdown
+
+
+def test_console_and_report_quote_one_wall_time(report):
+    """Exact answer: the summary line and the report quote the same wall time for the whole run, writing
+    included (they once said 15.1 s and 8.8 s)."""
+    console = re.search(r"\(([0-9.]+) s wall time, the report's writing included", report[3])
+    page = re.search(r"([0-9.]+) s wall time in all, the report's writing included",
+                     (report[1] / "report.md").read_text())
+    assert console and page and console.group(1) == page.group(1)
+    assert float(console.group(1)) >= report[2].seconds  # the solves are part of the run
+
+
+def test_console_keeps_findings_about_the_paper_apart_from_verdicts(report):
+    """Exact answer: a passing run's summary never says 'disagrees' (read as failures); it counts the
+    statements where the paper and the model differ, on a line of their own."""
+    findings = report[2].findings
+    differ = sum(f.verdict == "disagrees" for f in findings)
+    assert report[0] == 0 and differ > 0
+    assert "disagrees" not in report[3]
+    assert (f"findings about the paper (not verdicts): the paper and the model differ on {differ} of the "
+            f"{len(findings)} statements checked") in report[3]
+
+
+def test_a_terminal_is_told_the_report_is_being_written(report, monkeypatch, capsys):
+    """Exact answer: on a terminal a line on stderr says the report is being written, before it is;
+    on a pipe nothing is."""
+    from pocket.validation import report as report_module
+    from pocket.validation.clock import Stopwatch
+
+    from pocket.cli import validate
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    told = []
+
+    def write(results, out, **kwargs):
+        told.append(stream.getvalue())
+        kwargs["watch"].stop()
+        return report[1]
+
+    monkeypatch.setattr(report_module, "write_report", write)
+    for stream, shown in ((Terminal(), True), (io.StringIO(), False)):
+        monkeypatch.setattr("sys.stderr", stream)
+        assert validate._finish(report[2], "somewhere", Stopwatch(), None, "validate") == 0
+        assert ("validate: writing the report to somewhere" in told[-1]) == shown
+
+
 def test_log_axes_have_enough_tick_labels():
     """Exact answer: a log axis over 1-80 (fig 4's P/P_I) is labelled 1, 2, 5, 10, 20, 50 (it had two labels);
     outside 0.001-10000 labels are powers of ten (not 1e-05 beside 0.0001)."""
@@ -230,6 +400,7 @@ def test_progress_bar_only_on_a_terminal():
         bar.update(2)
         bar.refresh()
         assert ("2/3" in stream.getvalue()) == shown, stream.getvalue()
+        assert ("validate" in stream.getvalue()) == shown  # labelled
         bar.close()
     quiet = Terminal()
     runner.progress_bar(False, quiet).close()
@@ -316,7 +487,7 @@ def test_help(capsys, command, default):
     for option in ("--out DIR", "--quick", "--cases FILE"):
         assert option in text
     assert f"(default: {default})" in text and "default: the suite's own cases.toml" in text
-    assert "exit status: 0" in text and "; 1 " in text and "; 2 bad input" in text
+    assert "exit status: 0" in text and "; 1 " in text and "; 2 bad input" in text and "; 130 interrupted" in text
     assert ("shooting solver" in text) and len(text) > 600
 
 

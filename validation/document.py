@@ -2,22 +2,29 @@
 
 Blocks: ``("h", level, text)``, ``("p", text)``, ``("list", items)``,
 ``("table", header, rows)``, ``("image", file, caption)`` (a file beside the
-report, referenced relatively), ``("code", text)``. Both writers get the same
-blocks, so the two files hold the same content.
+report, referenced relatively), ``("code", text)``, ``("toc",)`` (a table of
+contents linking every heading of level 2 and 3), ``("details", summary,
+blocks)`` (blocks folded under a one-line summary, HTML ``<details>``). Both
+writers get the same blocks, so the two files hold the same content. Every
+heading gets an anchor (``anchors``): GitHub's for the Markdown, the same as
+an ``id`` in the HTML.
 """
 
 from __future__ import annotations
 
 import html
+import re
 
-__all__ = ["markdown", "html_page"]
+__all__ = ["markdown", "html_page", "anchors"]
 
 _CSS = """body{font-family:system-ui,sans-serif;max-width:78em;margin:2em auto;padding:0 1em;line-height:1.45}
 table{border-collapse:collapse;margin:1em 0;font-size:90%}td,th{border:1px solid #bbb;padding:.25em .5em;
 text-align:left}th{background:#eee}img{max-width:100%;border:1px solid #ddd}figure{margin:1.5em 0}
 figcaption{font-size:90%;color:#444}.pass{color:#186a18;font-weight:bold}.fail{color:#b00;font-weight:bold}
 .info{color:#666}.agrees{color:#186a18}.disagrees{color:#a55a00;font-weight:bold}pre{background:#f6f6f6;
-padding:.5em;overflow-x:auto}td.num{white-space:nowrap;text-align:right;font-variant-numeric:tabular-nums}"""
+padding:.5em;overflow-x:auto}td.num{white-space:nowrap;text-align:right;font-variant-numeric:tabular-nums}
+ul.toc{columns:2;list-style:none;padding-left:0}li.toc3{padding-left:1.5em;font-size:90%}
+summary{cursor:pointer;font-weight:bold;margin:.5em 0}"""
 _VERDICTS = ("pass", "fail", "info", "agrees", "disagrees")
 
 
@@ -25,13 +32,49 @@ def _cell_md(value) -> str:
     return str(value).replace("|", "\\|").replace("\n", " ")
 
 
+def _headings(blocks):
+    """Every heading block, folded ones included, in order."""
+    for block in blocks:
+        if block[0] == "h":
+            yield block
+        elif block[0] == "details":
+            yield from _headings(block[2])
+
+
+def anchors(blocks) -> dict:
+    """Heading block's position among the headings -> its anchor, as GitHub makes it: lower case, only
+    letters, digits, spaces, '-' and '_' kept, spaces as '-', a repeat suffixed -1, -2, ..."""
+    out, seen = {}, {}
+    for k, (_, _, text) in enumerate(_headings(blocks)):
+        slug = re.sub(r"[^\w\- ]", "", text.lower()).replace(" ", "-")
+        n = seen.get(slug, 0)
+        seen[slug] = n + 1
+        out[k] = f"{slug}-{n}" if n else slug
+    return out
+
+
+def _toc(blocks) -> list:
+    """(level, text, anchor) of every heading of level 2 and 3."""
+    ids = anchors(blocks)
+    return [(level, text, ids[k]) for k, (_, level, text) in enumerate(_headings(blocks)) if level in (2, 3)]
+
+
 def markdown(blocks) -> str:
     """The blocks as GitHub-flavoured Markdown."""
+    return "\n\n".join(_markdown(blocks, blocks)) + "\n"
+
+
+def _markdown(blocks, page) -> list:
     out = []
     for block in blocks:
         kind = block[0]
         if kind == "h":
             out.append(f"{'#' * block[1]} {block[2]}")
+        elif kind == "toc":
+            out.append("\n".join(f"{'  ' * (level - 2)}- [{text}](#{anchor})" for level, text, anchor in _toc(page)))
+        elif kind == "details":
+            out.append(f"<details><summary>{html.escape(block[1])}</summary>\n\n"
+                       + "\n\n".join(_markdown(block[2], page)) + "\n\n</details>")
         elif kind == "p":
             out.append(block[1])
         elif kind == "list":
@@ -47,7 +90,7 @@ def markdown(blocks) -> str:
             out.append(f"```\n{block[1]}\n```")
         else:
             raise ValueError(f"unknown block {kind!r}")
-    return "\n\n".join(out) + "\n"
+    return out
 
 
 def _is_number(text: str) -> bool:
@@ -70,10 +113,26 @@ def html_page(title: str, blocks) -> str:
     """The blocks as one HTML page (inline CSS, images by relative path: opens without a server)."""
     out = [f"<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{html.escape(title)}</title>",
            f"<style>{_CSS}</style></head><body>"]
+    out += _html(blocks, blocks, iter(anchors(blocks).values()))
+    out.append("</body></html>\n")
+    return "\n".join(out)
+
+
+def _html(blocks, page, ids) -> list:
+    """The blocks as HTML elements; ``ids`` yields the headings' anchors in order."""
+    out = []
     for block in blocks:
         kind = block[0]
         if kind == "h":
-            out.append(f"<h{block[1]}>{html.escape(block[2])}</h{block[1]}>")
+            out.append(f'<h{block[1]} id="{next(ids)}">{html.escape(block[2])}</h{block[1]}>')
+        elif kind == "toc":
+            items = "".join(f'<li class="toc{level}"><a href="#{anchor}">{html.escape(text)}</a></li>'
+                            for level, text, anchor in _toc(page))
+            out.append(f'<nav><strong>Contents</strong><ul class="toc">{items}</ul></nav>')
+        elif kind == "details":
+            out.append(f"<details><summary>{html.escape(block[1])}</summary>")
+            out += _html(block[2], page, ids)
+            out.append("</details>")
         elif kind == "p":
             out.append(f"<p>{html.escape(block[1])}</p>")
         elif kind == "list":
@@ -89,5 +148,4 @@ def html_page(title: str, blocks) -> str:
             out.append(f"<pre>{html.escape(block[1])}</pre>")
         else:
             raise ValueError(f"unknown block {kind!r}")
-    out.append("</body></html>\n")
-    return "\n".join(out)
+    return out

@@ -3,6 +3,8 @@
 Figures whose series name their pocket (``Series.group``) get two legends below
 the panels, shared by all of them: colours are pockets, line styles and markers
 are solvers. Other figures (the convergence study) keep a legend per panel.
+Thin pocket lines carry dots of their colour, staggered by ``Series.layer``, so
+that curves lying on each other all show.
 Log axes carry plain tick labels (1, 2, 5, 10, ...), not only powers of ten.
 """
 
@@ -15,12 +17,18 @@ import re
 
 from .figures import STYLES
 
-__all__ = ["draw", "write_csv", "math_text"]
+__all__ = ["draw", "write_csv", "math_text", "PALETTE"]
 
+#: the colour cycle: matplotlib's ten, then three more, enough for one colour per pocket of the suite
+PALETTE = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
+           "#17becf", "navy", "darkgoldenrod", "teal")
 _WIDTH = 6.4  # inches per panel
 _EMPHASIS = "0.15"  # the headline pocket's colour: near black
 _BROAD = 3.4  # the headline pocket's line width
 _FALLBACK = dict(linestyle="-", marker="o", markersize=4)
+_DOTS = dict(marker="o", markersize=4.0)  # on a thin pocket line
+_DOT_STEP = 0.07  # between dots, as a fraction of the axes' diagonal
+_GOLDEN = 0.618034  # layer k's first dot at frac(k * _GOLDEN) of a step: no two layers alike
 
 
 def _style(series, colors) -> dict:
@@ -30,6 +38,8 @@ def _style(series, colors) -> dict:
     style["color"] = _EMPHASIS if series.emphasis else colors[series.color % len(colors)]
     if series.emphasis and line:
         style["linewidth"] = _BROAD
+    elif series.group and style.get("linestyle") == "-":
+        style.update(_DOTS, markevery=(_DOT_STEP * (series.layer * _GOLDEN % 1.0), _DOT_STEP))
     return style
 
 
@@ -63,7 +73,7 @@ def _legends(fig, figure, colors) -> None:
             solvers.setdefault(s.solver, s)
     lines = {"linestyle": "-", "marker": "", "linewidth": 1.4}
     pockets = [Line2D([], [], **{**lines, "color": _style(s, colors)["color"],
-                                 "linewidth": _BROAD if s.emphasis else 1.4}) for s in groups.values()]
+                                 **({"linewidth": _BROAD} if s.emphasis else _DOTS)}) for s in groups.values()]
     styles = [Line2D([], [], **{**STYLES.get(name, _FALLBACK), "color": "0.3"}) for name in solvers]
     first = fig.legend(pockets, [math_text(g) for g in groups], loc="upper left", bbox_to_anchor=(0.02, 0.0),
                        ncol=2 if len(groups) > 4 else 1, fontsize=8, title="pockets (colour)", title_fontsize=8,
@@ -82,7 +92,7 @@ def draw(figure, directory) -> pathlib.Path:
 
     panels = figure.panels
     fig, axes = plt.subplots(1, len(panels), figsize=(_WIDTH * len(panels), 4.8), squeeze=False)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colors = PALETTE
     shared = any(s.group for panel in panels for s in panel.series)
     for ax, panel in zip(axes[0], panels, strict=True):
         for s in panel.series:

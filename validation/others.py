@@ -2,13 +2,13 @@
 
 - ``fluids``: the pockets tagged "fluids" (one sheet at one P_I, filled with a
   liquid, with air compressed slowly, gamma = 1, and fast, gamma = 1.4): the
-  contact area A_c/(pi R^2) and the pressure rise P/P_I against the force, each to
+  contact area A_c/(pi R^2) and the pressure ratio P/P_I against the force, each to
   0.95 of the end of its range. A gas is compressed too, so at moderate force its
   pressure rises less than the liquid's; near the end of the range the liquid's
   fixed volume stretches the contact zone more, its contact area is larger and its
   pressure F / A_c lower than the gas's (the curves cross).
 - ``laws``: the pockets of the other laws beside the headline pocket: the height
-  H/H0 and the pressure rise P/P_I against the force (log scale: their ranges end
+  H/H0 and the pressure ratio P/P_I against the force (log scale: their ranges end
   between Fhat = 4 and 52).
 
 Both draw the shooting solver as lines and the FE model as markers where computed,
@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .figures import Figure, Panel, Series, curve_series, paper_pockets, pocket_label
+from .figures import Figure, Panel, Series, curve_series, paper_pockets, pocket_colors, pocket_label
 from .plan import RANGE_FRACTION
 from .suite import headline
 
@@ -35,27 +35,29 @@ def _difference(results, liquid, pockets) -> tuple:
 
     ref = results.curves_of(liquid).reference
     spline = CubicSpline([s.force for s in ref], [s.pressure_ratio for s in ref])
-    out = []
-    for k, pocket in enumerate(p for p in pockets if p.case.fluid.is_gas):
+    out, colors = [], pocket_colors(results.pockets)
+    for pocket in (p for p in pockets if p.case.fluid.is_gas):
         states = [s for s in results.curves_of(pocket).reference if 0.0 < s.force <= ref[-1].force]
         forces = np.array([s.force for s in states])
         out.append(Series(f"{pocket.case.label}: shooting", "shooting", forces,
-                          np.array([s.pressure_ratio for s in states]) / spline(forces) - 1.0, k, pocket_label(pocket)))
+                          np.array([s.pressure_ratio for s in states]) / spline(forces) - 1.0, colors[pocket],
+                          pocket_label(pocket)))
     return tuple(out)
 
 
 def _fluids(results, pockets) -> Figure:
     panels = [Panel(f"({letter}) {title}", _FHAT, ylabel, curve_series(results, key, pockets, ()), log="x")
               for letter, key, ylabel, title in (("a", "contact_area", "A_c / (pi R^2)", "contact area"),
-                                                 ("b", "pressure_ratio", "P / P_I", "pressure rise"))]
+                                                 ("b", "pressure_ratio", "P / P_I", "pressure ratio"))]
     liquid = next((p for p in pockets if not p.case.fluid.is_gas), None)
     if liquid is not None:
         panels.append(Panel("(c) the gas against the liquid", _FHAT, "(P / P_I)_gas / (P / P_I)_liquid - 1",
                             _difference(results, liquid, pockets), log="x", marks=((None, 0.0, ""),)))
     return Figure("fluids", f"A liquid and a gas in one pocket ({pocket_label(pockets[0])}; air at the ambient "
                   "pressure of the cases, compressed slowly (gamma = 1) and fast (gamma = 1.4)): contact area (a) "
-                  f"and pressure rise (b) against the force, each to {RANGE_FRACTION:g} of the end of its range; "
-                  "lines: shooting, markers: the FE model; (c) the gas's pressure rise over the liquid's at the same "
+                  f"and pressure ratio P/P_I (b) against the force, each to {RANGE_FRACTION:g} of the end of its "
+                  "range; "
+                  "lines: shooting, markers: the FE model; (c) the gas's pressure ratio over the liquid's at the same "
                   "force, minus 1 (A_c = F / P, so the contact areas differ by the inverse ratio). The gas is "
                   "compressed as well: at moderate force its pressure rises less; near the end of the range the "
                   "liquid, held at its volume, stretches the contact zone more, so its contact area is larger and "
@@ -65,10 +67,10 @@ def _fluids(results, pockets) -> Figure:
 def _laws(results, pockets) -> Figure:
     panels = tuple(Panel(f"({letter}) {title}", _FHAT, ylabel, curve_series(results, key, pockets, ()), log=log)
                    for letter, key, ylabel, title, log in (("a", "height_ratio", "H / H_0", "height", "x"),
-                                                           ("b", "pressure_ratio", "P / P_I", "pressure rise", "xy")))
+                                                           ("b", "pressure_ratio", "P / P_I", "pressure ratio", "xy")))
     return Figure("laws", "Other rubber laws beside the headline pocket (the paper's Mooney-Rivlin silicone): "
-                  f"height (a) and pressure rise (b) against the force, each to {RANGE_FRACTION:g} of the end of "
-                  "its range (log scales); lines: shooting, markers: the FE model.", panels)
+                  f"height (a) and pressure ratio P/P_I (b) against the force, each to {RANGE_FRACTION:g} of the "
+                  "end of its range (log scales); lines: shooting, markers: the FE model.", panels)
 
 
 def other_figures(results) -> list[Figure]:

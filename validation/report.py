@@ -16,6 +16,7 @@ from __future__ import annotations
 import csv
 import dataclasses
 import pathlib
+import time
 
 from pocket.apps.folders import check_replaceable, staged
 from pocket.core.states import CHECKS, CompressedState
@@ -91,14 +92,17 @@ def _picture(curves, directory):
     return render.render_pocket(curves.reference[0].inflated, curves.reference[k], directory / "pocket3d.png")
 
 
-def write_report(results, out, *, kind=KINDS[0], executor=None) -> pathlib.Path:
+def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None) -> pathlib.Path:
     """Write the report of ``results`` (a ``run.Results``) to the folder ``out``; returns its path.
 
     ``kind`` (one of ``KINDS``) marks the folder and titles the report.
 
     The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
-    else here.
+    else here. ``watch`` (a ``clock.Stopwatch``, started with the run) is stopped once all but the two
+    text files are written, and the report quotes its seconds as the run's wall time; without it the
+    time is counted from the solves' start.
     """
+    begun = time.perf_counter()
     target = check_target(out, kind)
     with staged(target, kind) as partial:
         if results.curves:
@@ -118,7 +122,8 @@ def write_report(results, out, *, kind=KINDS[0], executor=None) -> pathlib.Path:
         picture, why = extra[-1].result() if extra else (None, "")
         vtk = "vtk" if extra else None
         title = f"pocket {kind}"
-        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk, title)
+        wall = watch.stop() if watch is not None else results.seconds + (time.perf_counter() - begun)
+        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk, title, wall)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))
     return target

@@ -8,7 +8,7 @@ reference, which finds the end of the range. The reference curves start first
 ``Executor`` works (a dask ``Client().get_executor()`` spreads a run over a
 cluster). Each task's wall time is kept (``Results.tasks``) for re-tuning the plan.
 
-Progress is a tqdm bar on stderr, shown only when stderr is a terminal.
+Progress is a tqdm bar on stderr, labelled with the command, shown only when stderr is a terminal.
 """
 
 from __future__ import annotations
@@ -69,12 +69,12 @@ def convergence_tasks(pocket, plan: Plan) -> list[tuple]:
     return convergence.tasks(pocket, plan)
 
 
-def progress_bar(enabled: bool, stream=None) -> tqdm:
-    """A tqdm bar counting solves on ``stream`` (stderr), disabled unless ``enabled`` and a terminal;
-    cleared when closed."""
+def progress_bar(enabled: bool, stream=None, label: str = "validate") -> tqdm:
+    """A tqdm bar counting solves on ``stream`` (stderr), labelled ``label``, disabled unless ``enabled``
+    and a terminal; cleared when closed."""
     stream = sys.stderr if stream is None else stream
-    return tqdm(total=0, unit=" solves", file=stream, disable=not (enabled and stream.isatty()), leave=False,
-                dynamic_ncols=True)
+    return tqdm(total=0, desc=label, unit=" solves", file=stream, disable=not (enabled and stream.isatty()),
+                leave=False, dynamic_ncols=True)
 
 
 def _timed(function, *args):
@@ -93,13 +93,15 @@ def _task(kind, key, pockets, args) -> Task:
     return Task(kind, "", "the paper's statements", 0.0)
 
 
-def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergence_only=False) -> Results:
-    """All solves and checks of ``plan`` (only the convergence study if ``convergence_only``)."""
+def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergence_only=False,
+        label="validate") -> Results:
+    """All solves and checks of ``plan`` (only the convergence study if ``convergence_only``); ``label``
+    names the progress bar."""
     start = time.perf_counter()
     pockets = tuple(pockets)
     own = executor is None
     pool = cf.ProcessPoolExecutor(max_workers=WORKERS) if own else executor
-    bar = progress_bar(progress)
+    bar = progress_bar(progress, label=label)
     main = headline(pockets)
     pending, tasks = {}, []  # future -> (kind, key, index into tasks)
     done = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}}

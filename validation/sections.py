@@ -144,8 +144,10 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
     out = [("h", 2, "Figures"),
            ("p", f"The paper's figures 2-5 ({PAPER}) recomputed for its rubber (Mooney-Rivlin) filled with a "
                  "liquid, then the figures beyond the paper: one pocket filled with a liquid and with a gas, and "
-                 "other rubber laws. Colours are pockets, line styles and markers are solvers; the headline pocket "
-                 "is the broad dark line, drawn beneath the others.")]
+                 "other rubber laws. Colours are pockets (one colour per pocket in every figure), line styles and "
+                 "markers are solvers; the headline pocket is the broad dark line, drawn beneath the others; the "
+                 "other pockets' lines carry dots of their colour, staggered so that curves lying on each other "
+                 "all show.")]
     for fig in figs:
         if fig.name != "convergence":
             out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
@@ -181,17 +183,37 @@ def _files_block(figs, tables, vtk) -> tuple:
     return ("list", items)
 
 
-def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str) -> list:
-    """All blocks of the report, under the heading ``title``."""
+def _checks_blocks(results) -> list:
+    """The section of every check: the failing ones open, all of them (failing first) folded."""
+    header = ["case", "comparison", "step", "quantity", "where", "value", "reference", "error", "tolerance",
+              "verdict"]
+    order = {"fail": 0, "pass": 1, "info": 2}
+    rows = [[c.case, c.comparison, c.step, c.quantity, c.where, cell(c.value, 8), cell(c.reference, 8),
+             cell(c.error, 3), cell(c.tolerance, 3), c.verdict]
+            for c in sorted(results.checks, key=lambda c: order[c.verdict])]
+    failing = [row for row in rows if row[-1] == "fail"]
+    out = [("h", 2, "All checks"),
+           ("p", f"{len(rows)} checks, {len(failing)} failing; every one is also in checks.csv. One line per "
+                 "comparison: 'Verdicts' above.")]
+    if failing:
+        out += [("h", 3, "Failing checks"), ("table", header, failing)]
+    return out + [("details", f"All {len(rows)} checks, failing first (click to open)", [("table", header, rows)])]
+
+
+def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall: float) -> list:
+    """All blocks of the report, under the heading ``title``; ``wall`` is the run's wall time in seconds,
+    writing included."""
     n = counts(results)
     verdict = "FAIL" if n["fail"] else "PASS"
     header, rows = glance(results)
     out = [("h", 1, title),
            ("p", f"Overall: {verdict}. {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational. "
                  f"Plan '{results.plan.name}', {len(results.curves) or 'the headline'} pocket"
-                 f"{'s' if len(results.curves) > 1 else ''}, {results.seconds:.1f} s "
-                 f"on {WORKERS} processes. The model and its solvers follow {PAPER}; "
-                 "dimensionless units throughout: lengths / R, Phat = P R / (E T), Fhat = F / (P_I pi R^2)."),
+                 f"{'s' if len(results.curves) > 1 else ''}, {wall:.1f} s wall time in all, the report's "
+                 f"writing included (the solves {results.seconds:.1f} s on {WORKERS} processes). The model and "
+                 f"its solvers follow {PAPER}; dimensionless units throughout: lengths / R, Phat = P R / (E T), "
+                 "Fhat = F / (P_I pi R^2)."),
+           ("toc",),
            ("h", 2, "Verdicts"),
            ("p", "One line per comparison over all pockets: a comparison fails if any of its checks fails; "
                  "'info' checks have no tolerance that should hold (the analytical model outside its range). "
@@ -212,22 +234,18 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str) -> l
                                                 "convergence_study.csv (every value)."))
     out += [("h", 2, "Verdicts per pocket"),
             ("p", "One row per pocket, comparison and step: the verdict is 'fail' if any of its checks fails."),
-            _summary_table(results),
+            ("details", f"Verdicts of {len(summary(results.checks))} rows of pocket, comparison and step "
+                        "(click to open)", [_summary_table(results)]),
             ("h", 2, "Tolerances"),
             ("list", [f"{name}: {_tolerance(tol)}: {why}" for name, (tol, why) in TOLERANCES.items()]),
             ("h", 2, "Timing"),
-            ("p", f"Wall time of each solve task in its worker ({WORKERS} processes; the run took "
-                  f"{results.seconds:.1f} s in all). The plan (pocket.validation.plan) sets how much each task "
-                  "computes."),
+            ("p", f"Wall time of each solve task in its worker ({WORKERS} processes; the solves took "
+                  f"{results.seconds:.1f} s, the whole run {wall:.1f} s, the report's writing included). The plan "
+                  "(pocket.validation.plan) sets how much each task computes."),
             ("table", *task_rows(results)),
             ("h", 2, "Provenance"),
             ("p", "The software and machine of this run."),
             ("table", ["", "version"], [[k, v] for k, v in environment().items()]),
             ("h", 2, "Files"),
-            _files_block(figs, tables, vtk),
-            ("h", 2, "All checks"),
-            ("table", ["case", "comparison", "step", "quantity", "where", "value", "reference", "error",
-                       "tolerance", "verdict"],
-             [[c.case, c.comparison, c.step, c.quantity, c.where, cell(c.value, 8), cell(c.reference, 8),
-               cell(c.error, 3), cell(c.tolerance, 3), c.verdict] for c in results.checks])]
-    return out
+            _files_block(figs, tables, vtk)]
+    return out + _checks_blocks(results)

@@ -21,17 +21,14 @@ from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
 
-_UNITS = ("units: Phat = P R / (E T) with E = 3 mu_0 the small-strain Young's modulus (6 (C1 + C2) for "
-          "Mooney-Rivlin) and T the thickness, Fhat = F / (P_I pi R^2), lengths in units of the clamp radius R; a "
-          "state reports its law and parameters (units of mu_0), its fluid, and its smallest tensions (units E T) with "
-          "'wrinkled' true where one is not positive (outside membrane theory, also a warning)")
 
 
 def register(subparsers) -> None:
     """Add ``inflate`` and ``compress``."""
     for name, text in (("inflate", "step 1: inflate the pocket at pressure Phat"),
-                       ("compress", "step 2: press the inflated pocket with a flat plate at fixed fluid volume")):
-        p = subparsers.add_parser(name, help=text, description=f"{text}. {_UNITS}.", epilog=EXIT_CODES)
+                       ("compress", "step 2: press the inflated pocket with a flat plate, its fluid sealed in (a "
+                                    "liquid keeps its volume, a gas is compressed)")):
+        p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}.", epilog=EXIT_CODES)
         if name == "inflate":
             p.add_argument("--pressure", type=number, required=True, help="Phat = P R / (E T)")
         else:
@@ -40,7 +37,8 @@ def register(subparsers) -> None:
                            help="Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                        help="shooting (the reference, default), fem or analytical")
-        p.add_argument("--json", action="store_true", help="print JSON (a list for several forces)")
+        p.add_argument("--json", action="store_true",
+                       help="print JSON (a list for several forces)" if name == "compress" else "print JSON")
         p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView (the steps "
                        "in order of force, the time of each its force)")
         p.add_argument("--overwrite", action="store_true",
@@ -52,12 +50,24 @@ def register(subparsers) -> None:
         p.set_defaults(handler=_main)
 
 
+def _units(step: str) -> str:
+    """The help's paragraph on units and on what a state of ``step`` ("inflate" or "compress") reports."""
+    compress = step == "compress"
+    return ("units: Phat = P R / (E T) with E = 3 mu_0 the small-strain Young's modulus (6 (C1 + C2) for "
+            "Mooney-Rivlin) and T the thickness, " + ("Fhat = F / (P_I pi R^2), " if compress else "")
+            + "lengths in units of the clamp radius R; a state reports its law and parameters (units of mu_0), "
+            + ("its fluid, " if compress else "") + "and its smallest tensions (units E T) with 'wrinkled' true "
+            "where one is not positive (outside membrane theory, also a warning)")
+
+
 def _table(rows: list[dict]) -> str:
-    keys = [k for k in rows[0] if k not in ("solver", "warnings")]
+    """The rows as aligned text: a column per key of any row (a state may lack a key another reports, as
+    the FE model's inflated state at F = 0 lacks its contact's error), "-" where a row has none."""
+    keys = [k for k in dict.fromkeys(k for r in rows for k in r) if k not in ("solver", "warnings")]
     if len(rows) == 1:
         width = max(map(len, keys))
         return "\n".join(f"{k:<{width}}  {_fmt(rows[0][k])}" for k in keys)
-    cols = [[k] + [_fmt(r[k]) for r in rows] for k in keys]
+    cols = [[k] + [_fmt(r[k]) if k in r else "-" for r in rows] for k in keys]
     widths = [max(map(len, col)) for col in cols]
     lines = ["  ".join(col[i].rjust(w) for col, w in zip(cols, widths, strict=True)) for i in range(len(rows) + 1)]
     return "\n".join(lines)

@@ -6,7 +6,12 @@
 The report folder and the cases file are checked before any solve (a bad one
 is one line on stderr, exit 2, nothing written). Both print a short summary and
 exit 1 if any verdict fails, a solver fails or the report cannot be written
-(then nothing is left behind), 0 otherwise.
+(then nothing is left behind), 130 if interrupted (Ctrl-C: no report is left),
+0 otherwise. The summary quotes the run's wall time, the same figure as the
+report, and counts the paper's statements where the paper and the model differ
+apart from the verdicts (they are findings about the paper, not failures).
+On a terminal a labelled progress bar counts the solves, then a line says the
+report is being written.
 """
 
 from __future__ import annotations
@@ -14,7 +19,6 @@ from __future__ import annotations
 import argparse
 import sys
 import textwrap
-import time
 from concurrent.futures import ProcessPoolExecutor
 
 __all__ = ["register", "EXIT_CODES_VALIDATE"]
@@ -22,7 +26,8 @@ __all__ = ["register", "EXIT_CODES_VALIDATE"]
 EXIT_CODES_VALIDATE = ("exit status: 0 every verdict passes; 1 a verdict fails, a solver failed or the report "
                        "could not be written (nothing is left behind); 2 bad input: an --out folder that cannot "
                        "be written or holds something other than a previous report of its kind that pocket wrote, "
-                       "a bad cases file (one line on stderr, checked before any solve, nothing written)")
+                       "a bad cases file (one line on stderr, checked before any solve, nothing written); "
+                       "130 interrupted (Ctrl-C: no report is left)")
 
 _VALIDATE = """\
 Run the validation suite and write its report: the shooting solver (the
@@ -90,42 +95,49 @@ def _setup(args):
     return pockets, button, QUICK if args.quick else DEFAULT
 
 
-def _finish(results, args, start, pool) -> int:
+def _finish(results, args, watch, pool, name) -> int:
+    """Write the report (saying so on a terminal), print the summary; the exit status."""
     from pocket.validation.report import write_report
     from pocket.validation.sections import counts
 
-    path = write_report(results, args.out, kind=_kind(args), executor=pool)
+    if sys.stderr.isatty():
+        print(f"{name}: writing the report to {args.out} ...", file=sys.stderr, flush=True)
+    path = write_report(results, args.out, kind=_kind(args), executor=pool, watch=watch)
     n = counts(results)
     print(f"{'FAIL' if n['fail'] else 'PASS'}: {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational "
-          f"({time.perf_counter() - start:.1f} s, plan {results.plan.name})")
+          f"({watch.seconds:.1f} s wall time, the report's writing included; plan {results.plan.name})")
     for check in results.failed[:10]:
         print(f"  fail: {check.case} {check.comparison} {check.quantity} ({check.where}): error {check.error:.3g} "
               f"> {check.tolerance:.3g}")
-    for finding in results.findings:
-        print(f"  paper: {finding.title}: {finding.verdict}")
+    if results.findings:
+        differ = sum(f.verdict != "agrees" for f in results.findings)
+        print(f"findings about the paper (not verdicts): the paper and the model differ on {differ} of the "
+              f"{len(results.findings)} statements checked; see 'Where the paper and the model disagree' in the "
+              "report")
     print(f"report: {path / 'index.html'} (also report.md)")
     return 1 if n["fail"] else 0
 
 
-def _validate(args) -> int:
+def _solve(args, name, **options):
+    """The suite's solves (``runner.run`` with ``options``) on a pool, then its report; the exit status."""
+    from pocket.validation.clock import Stopwatch
     from pocket.validation.runner import WORKERS, run
 
-    start = time.perf_counter()
+    watch = Stopwatch()
     pockets, button, plan = _setup(args)
     with ProcessPoolExecutor(max_workers=WORKERS) as pool:
-        results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty())
-        return _finish(results, args, start, pool)
+        results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty(), label=name, **options)
+        if options.get("convergence_only"):
+            _print_orders(results)
+        return _finish(results, args, watch, pool, name)
+
+
+def _validate(args) -> int:
+    return _solve(args, "validate")
 
 
 def _converge(args) -> int:
-    from pocket.validation.runner import WORKERS, run
-
-    start = time.perf_counter()
-    pockets, button, plan = _setup(args)
-    with ProcessPoolExecutor(max_workers=WORKERS) as pool:
-        results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty(), convergence_only=True)
-        _print_orders(results)
-        return _finish(results, args, start, pool)
+    return _solve(args, "converge", convergence_only=True)
 
 
 def _print_orders(results) -> None:
