@@ -1,5 +1,6 @@
 """``pocket validate --quick`` end to end, and the report's files parsed back as a reader meets them."""
 
+import argparse
 import contextlib
 import csv
 import errno
@@ -361,7 +362,8 @@ def test_a_terminal_is_told_the_report_is_being_written(report, monkeypatch, cap
     monkeypatch.setattr(report_module, "write_report", write)
     for stream, shown in ((Terminal(), True), (io.StringIO(), False)):
         monkeypatch.setattr("sys.stderr", stream)
-        assert validate._finish(report[2], "somewhere", Stopwatch(), None, "validate") == 0
+        args = argparse.Namespace(out="somewhere", command="validate")
+        assert validate._finish(report[2], args, Stopwatch(), None, "validate") == 0
         assert ("validate: writing the report to somewhere" in told[-1]) == shown
 
 
