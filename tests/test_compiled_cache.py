@@ -233,7 +233,8 @@ def test_an_editable_install_over_an_uninstalled_regular_one_runs(tmp_path):
         assert done.returncode == 0, done.stdout + done.stderr
         return done.stdout
 
-    solve = (str(venv / "bin" / "pocket"), "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.19", "--json")
+    solve = (str(venv / "bin" / "pocket"), "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.19",
+             "--json")
     run(*install, str(source))
     regular = run(*solve)
     run(*pip, "uninstall", "-y", "pocket-mechanics")
