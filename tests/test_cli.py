@@ -137,6 +137,46 @@ def test_python_dash_m_pocket_runs_the_command():
     assert done.returncode == 0 and json.loads(done.stdout)["pressure"] == 0.3, done.stderr
 
 
+@pytest.mark.parametrize("solver", ["shooting", "fem"])
+def test_inflate_by_volume_is_the_inverse_of_inflate_by_pressure(capsys, solver):
+    """Exact answer: `inflate --volume V` gives a state of volume V; inflating by pressure to its
+    pressure gives the same volume back (one first-branch state per pressure below the maximum)."""
+    status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--solver", solver, "--json")
+    by_volume = json.loads(out)
+    assert status == 0 and err == "" and by_volume["volume"] == pytest.approx(1.0, rel=1e-9)
+    status, out, _ = run(capsys, "inflate", "--alpha", "0.3", "--pressure", repr(by_volume["pressure"]),
+                         "--solver", solver, "--json")
+    assert status == 0 and json.loads(out)["volume"] == pytest.approx(1.0, rel=1e-6)
+
+
+def test_inflate_by_volume_where_a_solver_has_none_or_with_a_pressure_is_one_line_exit_2(capsys):
+    """The analytical model inflates by pressure only: one line naming --volume and the solvers that
+    have it; --volume with --pressure is a usage error."""
+    status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--solver", "analytical")
+    assert (status, out) == (2, "") and err == ("pocket: error: --volume: solver analytical has no volume-controlled "
+                                                "inflation (solvers that have it: shooting, fem)\n")
+    status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--pressure", "0.3")
+    assert (status, out) == (2, "") and "--pressure: not allowed with argument --volume" in err
+
+
+@pytest.mark.parametrize("solver", ["shooting", "fem"])
+def test_a_pressure_above_the_maximum_quotes_it_and_volume_control_passes_it(capsys, solver):
+    """Exact answer: alpha = 0 (neo-Hookean) has a first-branch pressure maximum below Phat = 0.8; the
+    refusal (status 2) quotes the maximum and its volume and points to --volume. Inflating to the quoted
+    volume gives the quoted pressure (the maximum: P(V) is flat there, so 6 digits of V give 6 of P), and
+    one 20 % further, past the maximum, a lower pressure."""
+    status, out, err = run(capsys, "inflate", "--alpha", "0", "--pressure", "0.8", "--solver", solver)
+    found = re.search(r"maximum Phat = (\S+), reached at V/R\^3 = (\S+) .*pocket inflate --volume V\)$", err)
+    assert status == 2 and out == "" and err.count("\n") == 1 and found, err
+    maximum, volume = float(found[1]), float(found[2])
+    assert maximum < 0.8
+    pressures = []
+    for v in (volume, 1.2 * volume):
+        status, out, _ = run(capsys, "inflate", "--alpha", "0", "--volume", repr(v), "--solver", solver, "--json")
+        pressures.append(json.loads(out)["pressure"])
+    assert pressures[0] == pytest.approx(maximum, rel=1e-5) and pressures[1] < pressures[0]
+
+
 @pytest.mark.parametrize("stage, where", [("inflation", "small-strain dome"),
                                           ("compression", "first contact: Newton failed at every contact radius")])
 def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, monkeypatch, stage, where):
