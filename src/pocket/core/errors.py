@@ -12,7 +12,8 @@ Both exit with status 1.
 
 from __future__ import annotations
 
-__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "exit_status"]
+__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "above_pressure_maximum",
+           "exit_status"]
 
 
 class PocketError(Exception):
@@ -42,6 +43,15 @@ class ConvergenceError(PocketError, RuntimeError):
 
 class OutputError(PocketError, OSError):
     """A result could not be written; the partial output has been removed."""
+
+
+def above_pressure_maximum(pressure: float, maximum: float, volume: float, where: str) -> OutOfRangeError:
+    """The error of an inflation by pressure asked above the first branch's pressure maximum: it quotes
+    the maximum Phat and the volume V / R^3 there (``where``: more about the maximum, e.g. the pole
+    stretch) and points to volume control, which passes the maximum."""
+    return OutOfRangeError(f"no inflated state on the first branch: Phat = {pressure:.6g} is above its pressure "
+                           f"maximum Phat = {maximum:.6g}, reached at V/R^3 = {volume:.6g} ({where}); volume "
+                           "control passes the maximum (inflate_volume; pocket inflate --volume V)")
 
 
 def exit_status(err: PocketError) -> int:
