@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, OutOfRangeError, above_pressure_maximum
 
 from .continuation import follow
 from .model import FREE, Control, Model, forms
@@ -88,10 +88,7 @@ def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
                 peak, iterations = _pressure_peak(along, path[-2], path[-1], (log_v, y))
                 total += iterations
                 if peak[1][-1] < target:
-                    raise OutOfRangeError(
-                        f"Phat = {target:.6g} exceeds the pressure maximum Phat = {peak[1][-1]:.6g} of"
-                        f" the first inflation branch ({model.law.label})"
-                    )
+                    raise above_pressure_maximum(target, peak[1][-1], float(np.exp(peak[0])), model.law.label)
                 y, iterations = land(along, at_target, path[-2], peak, _pressure, target)
                 return y, total + iterations
             path.append((log_v, y))

@@ -56,14 +56,15 @@ array (``material.Law`` builds them from a ``pocket.core.materials.Material``):
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from pocket.core.compiled import compiled
 
 __all__ = ["MOONEY_RIVLIN", "YEOH", "GENT", "OGDEN", "derivatives", "evaluate"]
 
 MOONEY_RIVLIN, YEOH, GENT, OGDEN = 0, 1, 2, 3
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def _mooney_rivlin(s, alpha, a, b):
     ia, ib = 1.0 / a, 1.0 / b
     ia2, ib2 = ia * ia, ib * ib
@@ -76,7 +77,7 @@ def _mooney_rivlin(s, alpha, a, b):
     return w1, w2, w11, w12, w22
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def _first_invariant(code, params, a, b):
     """The laws of I1 alone: (W_1, W_11) through the chain rule of the module docstring."""
     ia, ib = 1.0 / a, 1.0 / b
@@ -96,7 +97,7 @@ def _first_invariant(code, params, a, b):
             d11 * i1a * i1b + d1 * 4.0 * ia * ib * both, d11 * i1b * i1b + d1 * (2.0 + 6.0 * ib * ib * both))
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def _ogden(params, a, b):
     n = params.size // 2
     c = 1.0 / (a * b)
@@ -112,7 +113,7 @@ def _ogden(params, a, b):
     return w1 / a, w2 / b, w11 / (a * a), w12 / (a * b), w22 / (b * b)
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def derivatives(code, params, a, b):
     """(w_1, w_2, w_11, w_12, w_22) of the law ``code`` with ``params`` at the stretches (a, b)."""
     if code == MOONEY_RIVLIN:
@@ -122,7 +123,7 @@ def derivatives(code, params, a, b):
     return _first_invariant(code, params, a, b)
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def evaluate(code, params, a, b):
     """``derivatives`` at every point of the flat arrays a, b (n,): shape (5, n)."""
     out = np.empty((5, a.size))

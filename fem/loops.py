@@ -13,16 +13,17 @@ global node p e + a, dofs interleaved rho, eta).
 the vertex band (``banded``'s docstring gives the algebra); ``condense_rhs``
 and ``expand`` do the same for a right-hand side and back-substitute.
 
-Compiled once per installation (``cache=True``, in ``__pycache__``): a cold
-start costs a few seconds, later imports a fraction of one. Arithmetic
-follows numpy's rules (``error_model="numpy"``): a division by zero gives an
-infinity that the Newton iteration rejects, not an exception.
+Compiled once per installation and cached outside the package (``pocket.core.compiled``: an edit of
+``laws`` makes the cached loops stale): a cold start costs a few seconds, later imports a fraction of
+one. Arithmetic follows numpy's rules: a division by zero gives an infinity that the Newton iteration
+rejects, not an exception.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from pocket.core.compiled import compiled
 
 from . import laws
 
@@ -31,7 +32,7 @@ __all__ = ["element_loop", "condense", "condense_rhs", "expand"]
 TWO_PI = 2.0 * np.pi
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def element_loop(u, vertices, t, wq, phi, dphi, pressure, code, params, height, penalty, multiplier, radius, vectors,
                  matrices):
     """One pass over the elements.
@@ -130,7 +131,7 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, code, params, height, 
 _VERTEX = (0, 1, 4, 5)
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def condense(matrices, border_columns, border_rows, band, b_v, c_v, inv, x, y):
     """Static condensation of the P2 midpoint dofs (``banded``'s docstring).
 
@@ -185,7 +186,7 @@ def condense(matrices, border_columns, border_rows, band, b_v, c_v, inv, x, y):
     return True, d
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def condense_rhs(r, s, matrices, border_rows, inv):
     """(r_v, s', z = K_mm^-1 r_m) of the right-hand side (r (N,), s (m,)), with ``condense``'s K_mm^-1."""
     n = inv.shape[0]
@@ -205,7 +206,7 @@ def condense_rhs(r, s, matrices, border_rows, inv):
     return r_v, s_out, z
 
 
-@njit(cache=True, error_model="numpy")
+@compiled
 def expand(x_v, y, z, x, ymid):
     """The whole solution (N,) from the vertex one: x_m = z - K_mm^-1 K_mv x_v - K_mm^-1 B_m y."""
     n = z.shape[0]

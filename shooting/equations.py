@@ -51,7 +51,8 @@ import functools
 
 import numpy as np
 
-from .compiled import compiled
+from pocket.core.compiled import compiled
+
 from .tensions import tensions, tensions_compiled
 
 __all__ = ["rhs", "pole_state"]

@@ -43,7 +43,7 @@ from __future__ import annotations
 import math
 
 from pocket.core import smallstrain
-from pocket.core.errors import ConvergenceError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, OutOfRangeError, above_pressure_maximum
 from pocket.core.inputs import check_positive
 from pocket.core.materials import Material, given_alpha
 from pocket.core.states import InflatedState
@@ -155,11 +155,12 @@ class _Branch:
         return None if p is None else p / self.law.pressure_factor
 
 
-def _first_branch(value, target, s, what, limit=math.inf):
+def _first_branch(value, target, s, what, limit=math.inf, above=None):
     """s_lo < s_hi with value(s_lo) < target <= value(s_hi) on the first branch, and whether s_hi is
     a maximum of ``value`` (a pressure or a volume, None where there is none; ``value(s, True)``
-    to full accuracy). Raises OutOfRangeError when value has a maximum below ``target``, or when the
-    march reaches the law's locking strain ``limit`` (halving the way to it) without reaching it."""
+    to full accuracy). Raises OutOfRangeError when value has a maximum below ``target`` (``above(s, peak)``
+    if given, the error to raise for the maximum ``peak`` at strain s), or when the march reaches the
+    law's locking strain ``limit`` (halving the way to it) without reaching it."""
     while True:
         start = value(s)
         while start is None or start >= target:
@@ -184,6 +185,8 @@ def _first_branch(value, target, s, what, limit=math.inf):
                 break
             lo = history[-2][0]
             peak_s, peak = brent.maximum(lambda x: _minus_inf(value(x, True)), lo, s, xtol=_PEAK_RTOL * s)
+            if peak < target and above is not None:
+                raise above(peak_s, peak)
             if peak < target:
                 raise OutOfRangeError(
                     f"no inflated state on the first branch: {what} = {target:.6g} is above "
@@ -235,7 +238,12 @@ def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     tol = _tolerance(rtol, s_est)
     what = f"Phat = {pressure!r}"
     branch = _Branch(law, tol)
-    lo, hi, peak = _first_branch(branch.phat, pressure, s_est, "pressure", law.stretch_limit - 1.0)
+
+    def above(s, peak):  # the volume at the maximum, from the shot that lands there
+        _, y, _ = shot_pole(1.0 + s, law, law.pressure_factor * peak, tol)
+        return above_pressure_maximum(pressure, peak, y[4], f"lambda_0 = {1 + s:.6g}")
+
+    lo, hi, peak = _first_branch(branch.phat, pressure, s_est, "pressure", law.stretch_limit - 1.0, above)
 
     def miss(s):
         return _signed(_landing(s, law, p, tol, what))

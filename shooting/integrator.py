@@ -41,8 +41,9 @@ import functools
 
 import numpy as np
 
+from pocket.core.compiled import compiled
+
 from . import tableau
-from .compiled import compiled
 from .equations import rhs
 from .tensions import inside_compiled, tensions_compiled
 

@@ -61,7 +61,7 @@ from __future__ import annotations
 
 from numba.extending import register_jitable
 
-from .compiled import compiled
+from pocket.core.compiled import compiled
 
 __all__ = ["CODES", "MOONEY_RIVLIN", "NEO_HOOKEAN", "YEOH", "GENT", "OGDEN", "tensions", "tensions_compiled",
            "inside", "inside_compiled"]

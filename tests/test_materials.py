@@ -166,3 +166,17 @@ def test_as_fluid_takes_none_liquid_or_a_checked_gas():
                          (Fluid("liquid", 1.0), "a liquid has no ambient pressure")):
         with pytest.raises(InputError, match=message):
             as_fluid(bad)
+
+
+def test_material_takes_a_mapping_of_the_laws_parameter_names():
+    """Exact answer: the natural call with a mapping (any order, Ogden's lists) is the material of the
+    stored form, pairs in the law's order with floats and tuples; a name that is not the law's is one
+    InputError listing the law's names."""
+    yeoh = Material("yeoh", {"c30": 0.001, "c10": 1, "c20": -0.02})
+    assert yeoh == Material("yeoh", (("c10", 1.0), ("c20", -0.02), ("c30", 0.001)))
+    assert yeoh.mu0 == 2.0 and energy(yeoh, 1.2, 1.1) == energy(check("yeoh", dict(yeoh.params)), 1.2, 1.1)
+    ogden = Material("ogden", {"mu": [1.0, -0.1], "exponents": [2, -2]})
+    assert ogden.params == (("mu", (1.0, -0.1)), ("exponents", (2.0, -2.0)))
+    with pytest.raises(InputError, match=r"^material\.c40 is not a parameter of the yeoh law \(its parameters: "
+                       r"c10, c20, c30\)$"):
+        Material("yeoh", {"c10": 1, "c20": 0, "c40": 1})

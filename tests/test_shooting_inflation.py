@@ -140,9 +140,9 @@ def test_negative_alpha_above_its_maximum_names_it(alpha, pressure):
     quotes it (and the pole stretch there). Checked independently: a pressure 1e-5 below it inflates,
     1e-5 above it does not, and volume control, which passes the maximum, reaches no higher
     pressure around that stretch (a smooth maximum: within O(dV^2))."""
-    with pytest.raises(OutOfRangeError, match="above its maximum") as err:
+    with pytest.raises(OutOfRangeError, match="above its pressure maximum") as err:
         shooting.inflate(alpha, pressure)
-    found = re.search(r"maximum (\S+) \(reached at lambda_0 = (\S+)\)", str(err.value))
+    found = re.search(r"maximum Phat = (\S+), reached at V/R\^3 = \S+ \(lambda_0 = (\S+)\)", str(err.value))
     peak, stretch = float(found.group(1)), float(found.group(2))
     shooting.inflate(alpha, peak * (1 - 1e-5))
     with pytest.raises(OutOfRangeError):

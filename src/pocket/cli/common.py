@@ -20,7 +20,8 @@ from pocket.core.inputs import quote
 __all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "add_solver_flags", "solver_flags", "flag",
            "progress_bar", "warn", "report"]
 
-EXIT_CODES = ("exit status: 0 success; 1 a solver failed (the message says where), output could not be "
+EXIT_CODES = ("exit status: 0 success (also when the reader of the output stops early, as `| head` does); "
+              "1 a solver failed (the message says where), output could not be "
               "written, or an internal error (a bug); 2 bad input or a state outside the model (one line on "
               "stderr, nothing written); 130 interrupted (Ctrl-C)")
 

@@ -55,8 +55,9 @@ def main(argv=None) -> int:
     """Run the command line; returns the exit status (also for ``--help``, ``--version`` and usage
     errors, which argparse ends with SystemExit).
 
-    Output cut short by the reader (``pocket ... | head``) ends quietly with status 1
-    (Python's documented recipe for SIGPIPE), an interrupt with one line and 130.
+    Output cut short by the reader (``pocket ... | head``) ends quietly with status 0, as a command
+    whose reader has all it wanted (Python's documented recipe for SIGPIPE, without its status 1,
+    which would fail a passing run under ``set -o pipefail``); an interrupt ends with one line and 130.
     """
     try:
         try:
@@ -82,8 +83,8 @@ def main(argv=None) -> int:
         sys.stdout.flush()
         return status
     except BrokenPipeError:
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 1
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # the interpreter's last flush
+        return 0
     except KeyboardInterrupt:
         print("pocket: interrupted", file=sys.stderr)
         return 130

@@ -13,7 +13,7 @@ import json
 import math
 
 from pocket.apps.folders import check_replaceable
-from pocket.apps.solvers import SOLVERS, get_solver
+from pocket.apps.solvers import SOLVERS, get_solver, record
 from pocket.core.errors import ConvergenceError, InputError
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
@@ -30,7 +30,10 @@ def register(subparsers) -> None:
                                     "liquid keeps its volume, a gas is compressed)")):
         p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}.", epilog=EXIT_CODES)
         if name == "inflate":
-            p.add_argument("--pressure", type=number, required=True, help="Phat = P R / (E T)")
+            control = p.add_mutually_exclusive_group(required=True)
+            control.add_argument("--pressure", type=number, help="Phat = P R / (E T) (pressure control)")
+            control.add_argument("--volume", type=number, help="enclosed volume V / R^3 (volume control: passes "
+                                 "a pressure maximum; solvers shooting and fem)")
         else:
             p.add_argument("--pressure", type=number, required=True, help="initial Phat_I = P_I R / (E T)")
             p.add_argument("--force", type=number, nargs="+", required=True,
@@ -79,6 +82,12 @@ def _fmt(value) -> str:
 
 def _solve(args, step: str, material, options: dict) -> list:
     solver = get_solver(args.solver)
+    if step == "inflate" and args.volume is not None:
+        if "inflate_volume" not in record(args.solver).entry_points:
+            offer = ", ".join(n for n, s in SOLVERS.items() if "inflate_volume" in s.entry_points)
+            raise InputError(f"--volume: solver {args.solver} has no volume-controlled inflation (solvers that "
+                             f"have it: {offer})")
+        return [solver.inflate_volume(material, args.volume, **options)]
     if step == "inflate":
         return [solver.inflate(material, args.pressure, **options)]
     with progress_bar(f"compress ({args.solver})", " forces") as progress:

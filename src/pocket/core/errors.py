@@ -14,7 +14,7 @@ pocket, the scheduler lost). These exit with status 1.
 from __future__ import annotations
 
 __all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "ClusterError",
-           "exit_status", "beyond_range", "CLAMP_PLANE"]
+           "above_pressure_maximum", "exit_status", "beyond_range", "CLAMP_PLANE"]
 
 #: what happens at the end of the compression range (unless the force has a maximum first)
 CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
@@ -51,6 +51,15 @@ class OutputError(PocketError, OSError):
 
 class ClusterError(PocketError, RuntimeError):
     """A cluster's workers cannot run the work: none, without pocket, or the scheduler lost."""
+
+
+def above_pressure_maximum(pressure: float, maximum: float, volume: float, where: str) -> OutOfRangeError:
+    """The error of an inflation by pressure asked above the first branch's pressure maximum: it quotes
+    the maximum Phat and the volume V / R^3 there (``where``: more about the maximum, e.g. the pole
+    stretch) and points to volume control, which passes the maximum."""
+    return OutOfRangeError(f"no inflated state on the first branch: Phat = {pressure:.6g} is above its pressure "
+                           f"maximum Phat = {maximum:.6g}, reached at V/R^3 = {volume:.6g} ({where}); volume "
+                           "control passes the maximum (inflate_volume; pocket inflate --volume V)")
 
 
 def exit_status(err: PocketError) -> int:

@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -64,10 +65,19 @@ STRESSES = {"c1", "c2", "mu", "c10", "c20", "c30"}
 @dataclasses.dataclass(frozen=True)
 class Material:
     """A law by name with its parameters: ``params`` maps each name of ``LAWS[law]`` to a float
-    (Ogden's ``mu`` and ``exponents`` to tuples of floats)."""
+    (Ogden's ``mu`` and ``exponents`` to tuples of floats).
+
+    ``params`` is given as a mapping, ``Material("yeoh", {"c10": 1, "c20": -0.02, "c30": 0.001})``
+    (checked as ``check`` does: a name that is not the law's is an InputError listing the law's
+    names), or as (name, value) pairs in the law's order, as stored.
+    """
 
     law: str
     params: tuple[tuple[str, object], ...]
+
+    def __post_init__(self):
+        if isinstance(self.params, Mapping):
+            object.__setattr__(self, "params", check(self.law, dict(self.params), where="material").params)
 
     def __getitem__(self, name: str):
         return dict(self.params)[name]

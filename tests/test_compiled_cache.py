@@ -1,0 +1,243 @@
+"""The compiled code's on-disk cache: outside the package, fresh after an edit, never a stop (``pocket.core.compiled``).
+
+Each case runs a copy of a solver package (``shooting`` or ``fem``), under a name of its
+own, in a fresh process whose home and temporary folder are the test's: compiling there
+takes seconds, so these are slow tests. The child prints where the cache of its main
+kernel lives, that kernel's cache hits and misses, and its result. Folders are made
+unusable in a way that holds for root too (CI may run as root, for whom permission bits
+do not stop writes): the cache locators create their folder with os.makedirs, which
+fails where a file of that name is in the way.
+"""
+
+import json
+import os
+import pathlib
+import shutil
+import site
+import stat
+import subprocess
+import sys
+import sysconfig
+
+import pocket.fem
+import pocket.shooting
+import pytest
+
+pytestmark = pytest.mark.slow
+
+REPOSITORY = pathlib.Path(__file__).resolve().parents[1]
+VERSION = "0.1.0"
+SOURCES = {"shooting": pathlib.Path(pocket.shooting.__file__).parent, "fem": pathlib.Path(pocket.fem.__file__).parent}
+# each child: the kernel's cache folder, hits and misses, and a result to compare bit for bit
+CHILDREN = {
+    "shooting": """
+import json
+import {package}.integrator as integrator
+from {package}.equations import pole_state
+from {package}.laws import law_of
+law = law_of(0.3)
+status, r, y, _ = integrator.integrate(pole_state(1.1, law, 1.0, 1e-5), 1e-5, law, 1.0, rtol=1e-10)
+stats = integrator._integrate.stats
+print(json.dumps([stats.cache_path, sum(stats.cache_hits.values()), sum(stats.cache_misses.values()),
+                  [status, r, *map(float, y)]]))
+""",
+    "fem": """
+import json
+from {package} import api, loops
+state = api.inflate(0.3, 0.2, elements=8)
+stats = loops.element_loop.stats
+print(json.dumps([stats.cache_path, sum(stats.cache_hits.values()), sum(stats.cache_misses.values()),
+                  [state.height, state.volume]]))
+""",
+}
+# a source file each kernel inlines (not the kernel's own file)
+CALLEES = {"shooting": "tensions.py", "fem": "laws.py"}
+
+
+def _copy(folder: pathlib.Path, solver: str, package: str) -> pathlib.Path:
+    target = folder / package
+    shutil.copytree(SOURCES[solver], target, ignore=shutil.ignore_patterns("__pycache__"))
+    return target
+
+
+def _files(folder: pathlib.Path) -> set:
+    return {path.relative_to(folder) for path in folder.rglob("*")}
+
+
+def _blocked(path: pathlib.Path) -> None:
+    """Make ``path`` a file, so that no folder can be created there."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text("not a folder")
+
+
+def _read_only(folder: pathlib.Path) -> None:
+    for path in [folder, *folder.rglob("*")]:
+        path.chmod(path.stat().st_mode & ~(stat.S_IWUSR | stat.S_IWGRP | stat.S_IWOTH))
+
+
+def _environment(home, tmp, **extra):
+    env = {k: v for k, v in os.environ.items() if k not in ("NUMBA_CACHE_DIR", "XDG_CACHE_HOME", "POCKET_CACHE_DIR")}
+    env.update(HOME=str(home), TMPDIR=str(tmp), PYTHONDONTWRITEBYTECODE="1", **extra)
+    return env
+
+
+def _run(solver, folder, package, home, tmp, **extra):
+    """Run the solver's child in a fresh process; returns (cache path, hits, misses, result)."""
+    env = _environment(home, tmp, PYTHONPATH=str(folder), **extra)
+    done = subprocess.run([sys.executable, "-c", CHILDREN[solver].format(package=package)], env=env, cwd=folder,
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def _folders(tmp_path):
+    home, tmp = tmp_path / "home", tmp_path / "tmp"
+    home.mkdir()
+    tmp.mkdir()
+    return home, tmp
+
+
+def _homeless(tmp_path):
+    """A home folder whose cache folder (~/.cache) cannot be created, read-only besides; and a temp folder."""
+    home, tmp = _folders(tmp_path)
+    _blocked(home / ".cache")
+    _read_only(home)
+    return home, tmp
+
+
+@pytest.mark.parametrize("solver", ["shooting", "fem"])
+def test_the_cache_is_in_the_users_cache_folder_and_nothing_is_written_into_the_package(tmp_path, solver):
+    """Exact answer: the cache is ~/.cache/pocket-mechanics/<version>/..., the package's files are those
+    copied (bytecode off: nothing of numba's), and a second process loads the kernel (hits, no miss) and
+    computes the same numbers, bit for bit, as the compiled code did."""
+    package = _copy(tmp_path / "site", solver, f"{solver}_clean")
+    before = _files(package)
+    home, tmp = _folders(tmp_path)
+    first = _run(solver, package.parent, package.name, home, tmp)
+    second = _run(solver, package.parent, package.name, home, tmp)
+    assert first[0].startswith(str(home / ".cache" / "pocket-mechanics" / VERSION)) and first[2] >= 1
+    assert second[0] == first[0] and second[1] >= 1 and second[2] == 0 and second[3] == first[3]
+    assert _files(package) == before
+
+
+def test_the_cache_folder_can_be_chosen_by_environment(tmp_path):
+    """Exact answer: with POCKET_CACHE_DIR set, the cache is there, in the version's subfolder."""
+    package = _copy(tmp_path / "site", "shooting", "shooting_chosen")
+    home, tmp = _folders(tmp_path)
+    chosen = tmp_path / "chosen"
+    path = _run("shooting", package.parent, package.name, home, tmp, POCKET_CACHE_DIR=str(chosen))[0]
+    assert path.startswith(str(chosen / VERSION))
+
+
+@pytest.mark.parametrize("solver", ["shooting", "fem"])
+def test_without_a_writable_cache_folder_the_cache_is_a_private_temp_folder(tmp_path, solver):
+    """Exact answer: the package and the home are read-only, so the cache is <TMPDIR>/pocket-numba-<uid>,
+    mode 0700, and a second process loads it and computes the same numbers, bit for bit."""
+    package = _copy(tmp_path / "site", solver, f"{solver}_ro")
+    _read_only(package.parent)
+    home, tmp = _homeless(tmp_path)
+    first = _run(solver, package.parent, package.name, home, tmp)
+    private = tmp / f"pocket-numba-{os.getuid()}"
+    assert first[0].startswith(str(private)) and first[2] >= 1
+    assert stat.S_IMODE(private.stat().st_mode) == 0o700
+    second = _run(solver, package.parent, package.name, home, tmp)
+    assert second[1] >= 1 and second[2] == 0 and second[3] == first[3]
+
+
+@pytest.mark.parametrize("solver", ["shooting", "fem"])
+def test_nowhere_to_cache_compiles_without_a_cache(tmp_path, solver):
+    """Exact answer: with the home and the private temp folder unusable, the kernel still runs, uncached
+    (no cache path, no hit; numba's own njit(cache=True) raised "no locator available" at import here)."""
+    package = _copy(tmp_path / "site", solver, f"{solver}_nowhere")
+    home, tmp = _homeless(tmp_path)
+    _blocked(tmp / f"pocket-numba-{os.getuid()}")
+    path, hits, _, result = _run(solver, package.parent, package.name, home, tmp)
+    assert path is None and hits == 0 and result
+
+
+def test_a_damaged_entry_is_compiled_afresh(tmp_path):
+    """Exact answer: with every data file of the cache overwritten by junk, the next process has a miss
+    (compiles afresh) and computes the same numbers, bit for bit."""
+    package = _copy(tmp_path / "site", "shooting", "shooting_damaged")
+    home, tmp = _folders(tmp_path)
+    first = _run("shooting", package.parent, package.name, home, tmp)
+    damaged = list(pathlib.Path(first[0]).glob("*.nbc"))
+    for path in damaged:
+        path.write_bytes(b"junk")
+    second = _run("shooting", package.parent, package.name, home, tmp)
+    assert damaged and second[2] >= 1 and second[3] == first[3]
+
+
+def test_a_cached_solve_loads_no_compiler_and_no_scipy_solvers(tmp_path):
+    """Exact answer: with the cache warm, a whole compression in a fresh process imports neither
+    scipy.optimize, scipy.integrate nor scipy.linalg (numba's compiler would import the last), and
+    none of numba's typing registries (numba.np.arraymath is one)."""
+    script = ("import sys; from pocket import shooting; shooting.compression_curve(0.3, 0.31, [0.1, 0.5]); "
+              "print(' '.join(m for m in ('scipy.optimize', 'scipy.integrate', 'scipy.linalg', "
+              "'numba.np.arraymath') if m in sys.modules))")
+    env = _environment(*_folders(tmp_path))
+    for _ in range(2):  # the first run compiles (a cold cache); the second loads
+        done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600, env=env)
+        assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == ""
+
+
+@pytest.mark.parametrize("solver", ["shooting", "fem"])
+def test_editing_a_compiled_callee_makes_the_cache_stale(tmp_path, solver):
+    """Exact answer: the second run of the same package loads the cached kernel (hits, 0 misses); after a
+    file the kernel inlines (shooting: tensions.py; fem: laws.py) is edited (a comment: same code,
+    other contents), the entry is stale and the kernel is compiled afresh (0 hits, a miss), where numba's
+    own stamp (the kernel's file alone) would have loaded the old machine code."""
+    package = _copy(tmp_path / "site", solver, f"{solver}_edited")
+    home, tmp = _folders(tmp_path)
+    _run(solver, package.parent, package.name, home, tmp)
+    warm = _run(solver, package.parent, package.name, home, tmp)
+    assert warm[1] >= 1 and warm[2] == 0
+    with (package / CALLEES[solver]).open("a") as handle:
+        handle.write("\n# an edit\n")
+    edited = _run(solver, package.parent, package.name, home, tmp)
+    assert edited[1] == 0 and edited[2] >= 1 and edited[3] == warm[3]
+
+
+def _copy_repository(target: pathlib.Path) -> pathlib.Path:
+    """The files a build of pocket reads, copied to ``target`` (the build writes beside its sources)."""
+    for name in ("pyproject.toml", "README.md"):
+        shutil.copy(REPOSITORY / name, target / name)
+    for name in ("src", "shooting", "fem", "meshes", "validation"):
+        shutil.copytree(REPOSITORY / name, target / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    return target
+
+
+def test_an_editable_install_over_an_uninstalled_regular_one_runs(tmp_path):
+    """Exact answer: in a fresh virtual environment (the test's dependencies reached through a .pth file),
+    pocket installed from a copy of the sources, run once (it compiles and caches), uninstalled and installed
+    again in editable mode, answers ``pocket --version`` and prints the same compression, character for
+    character. A cache written into site-packages used to survive the uninstall and shadow the editable
+    install as a namespace package ("module 'pocket.shooting' has no attribute 'SOLVER'")."""
+    source = tmp_path / "source"
+    source.mkdir()
+    _copy_repository(source)
+    venv = tmp_path / "venv"
+    subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(venv)], check=True, timeout=600)
+    python = venv / "bin" / "python"
+    purelib = subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+                             capture_output=True, text=True, check=True).stdout.strip()
+    ours = [sysconfig.get_paths()["purelib"], *site.getsitepackages()]
+    pathlib.Path(purelib, "dependencies.pth").write_text("\n".join(dict.fromkeys(ours)) + "\n")
+    env = _environment(*_folders(tmp_path))
+    pip = [sys.executable, "-m", "pip", "--python", str(python), "-q", "--disable-pip-version-check"]
+    install = [*pip, "install", "--no-deps"]  # the build backend as a user gets it (build isolation)
+
+    def run(*args):
+        done = subprocess.run([*args], capture_output=True, text=True, env=env, cwd=tmp_path, timeout=600)
+        assert done.returncode == 0, done.stdout + done.stderr
+        return done.stdout
+
+    solve = (str(venv / "bin" / "pocket"), "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.19",
+             "--json")
+    run(*install, str(source))
+    regular = run(*solve)
+    run(*pip, "uninstall", "-y", "pocket-mechanics")
+    run(*install, "-e", str(source))
+    assert run(str(venv / "bin" / "pocket"), "--version").split() == ["pocket", VERSION]
+    assert run(*solve) == regular
