@@ -12,10 +12,12 @@ exit 1 if any verdict fails, a solver fails or the report cannot be written
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import textwrap
 import time
-from concurrent.futures import ProcessPoolExecutor
+
+from pocket.apps.workers import local_executor, stop
 
 __all__ = ["register", "EXIT_CODES_VALIDATE"]
 
@@ -96,12 +98,25 @@ def _finish(results, out, start, pool) -> int:
     return 1 if n["fail"] else 0
 
 
+@contextlib.contextmanager
+def _workers(count: int):
+    """``count`` local worker processes that ignore Ctrl-C (only this process answers it, in one line), ended
+    at once if the command stops early (an interrupt, an error), else after their last task."""
+    pool = local_executor(count)
+    try:
+        yield pool
+    except BaseException:
+        stop(pool)
+        raise
+    pool.shutdown()
+
+
 def _validate(args) -> int:
     from pocket.validation.runner import WORKERS, run
 
     start = time.perf_counter()
     pockets, button, plan = _setup(args)
-    with ProcessPoolExecutor(max_workers=WORKERS) as pool:
+    with _workers(WORKERS) as pool:
         results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty())
         return _finish(results, args.out, start, pool)
 
@@ -111,7 +126,7 @@ def _converge(args) -> int:
 
     start = time.perf_counter()
     pockets, button, plan = _setup(args)
-    with ProcessPoolExecutor(max_workers=WORKERS) as pool:
+    with _workers(WORKERS) as pool:
         results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty(), convergence_only=True)
         _print_orders(results)
         return _finish(results, args.out, start, pool)
