@@ -8,6 +8,12 @@ reference, which finds the end of the range. The reference curves start first
 ``Executor`` works (a dask ``Client().get_executor()`` spreads a run over a
 cluster). Each task's wall time is kept (``Results.tasks``) for re-tuning the plan.
 
+An interrupt (Ctrl-C) or any other exception ends the executor's workers at once
+(``pocket.apps.workers.stop``) and passes on. Local workers come from
+``pocket.apps.workers.local_executor``: they ignore SIGINT, which the terminal sends
+to them too, so that only the main process answers it (one line), not every worker
+with a traceback.
+
 Progress is a tqdm bar on stderr, labelled with the command, shown only when stderr is a terminal.
 """
 
@@ -21,6 +27,7 @@ import time
 from tqdm import tqdm
 
 from pocket.apps.provenance import cpus
+from pocket.apps.workers import local_executor, stop
 
 from . import compute, convergence, evidence, findings, verdicts
 from .plan import Plan
@@ -100,7 +107,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
     start = time.perf_counter()
     pockets = tuple(pockets)
     own = executor is None
-    pool = cf.ProcessPoolExecutor(max_workers=WORKERS) if own else executor
+    pool = local_executor(WORKERS) if own else executor
     bar = progress_bar(progress, label=label)
     main = headline(pockets)
     pending, tasks = {}, []  # future -> (kind, key, index into tasks)
@@ -135,8 +142,8 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
                         forces = compute.fem_forces(forces, done[kind][key].force_end)
                         for j, column in enumerate(plan.fem_columns):
                             submit("column", (key, j), compute.column_curve, pockets[key], column, forces)
-    except BaseException:
-        pool.shutdown(wait=False, cancel_futures=True)
+    except BaseException:  # not shutdown(cancel_futures=True): killed workers and cancelled futures break it
+        stop(pool)
         raise
     finally:
         bar.close()

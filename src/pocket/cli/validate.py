@@ -17,9 +17,11 @@ report is being written.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import textwrap
-from concurrent.futures import ProcessPoolExecutor
+
+from pocket.apps.workers import local_executor, stop
 
 __all__ = ["register", "EXIT_CODES_VALIDATE"]
 
@@ -118,6 +120,19 @@ def _finish(results, args, watch, pool, name) -> int:
     return 1 if n["fail"] else 0
 
 
+@contextlib.contextmanager
+def _workers(count: int):
+    """``count`` local worker processes that ignore Ctrl-C (only this process answers it, in one line), ended
+    at once if the command stops early (an interrupt, an error), else after their last task."""
+    pool = local_executor(count)
+    try:
+        yield pool
+    except BaseException:
+        stop(pool)
+        raise
+    pool.shutdown()
+
+
 def _solve(args, name, **options):
     """The suite's solves (``runner.run`` with ``options``) on a pool, then its report; the exit status."""
     from pocket.validation.clock import Stopwatch
@@ -125,7 +140,7 @@ def _solve(args, name, **options):
 
     watch = Stopwatch()
     pockets, button, plan = _setup(args)
-    with ProcessPoolExecutor(max_workers=WORKERS) as pool:
+    with _workers(WORKERS) as pool:
         results = run(pockets, button, plan, executor=pool, progress=sys.stderr.isatty(), label=name, **options)
         if options.get("convergence_only"):
             _print_orders(results)
