@@ -4,13 +4,13 @@ before any work, rather than solved as a flat plate."""
 
 import numpy as np
 import pytest
+from pocket.fem import api as fem_api
+from pocket.fem import inflation as fem_inflation
+from pocket.shooting import compression as shooting_compression
+from pocket.shooting import inflation as shooting_inflation
 
-import pocket.analytical.model
-import pocket.fem.api
-import pocket.fem.inflation
-import pocket.shooting.compression
-import pocket.shooting.inflation
 from pocket import analytical, fem, shooting
+from pocket.analytical import model as analytical_model
 from pocket.core.errors import InputError
 from pocket.core.indenters import FLAT, KINDS, Indenter, Kind, as_indenter, register
 
@@ -38,8 +38,8 @@ def cone(monkeypatch):
     def no_work(*args, **kwargs):
         raise AssertionError("the solver started work before refusing the indenter")
 
-    for module, name in ((pocket.shooting.compression, "inflate"), (pocket.shooting.inflation, "inflate"),
-                         (pocket.fem.inflation, "to_pressure"), (pocket.analytical.model, "inflate")):
+    for module, name in ((shooting_compression, "inflate"), (shooting_inflation, "inflate"),
+                         (fem_inflation, "to_pressure"), (analytical_model, "inflate")):
         monkeypatch.setattr(module, name, no_work)
     return Indenter(TOY.name, {"slope": 0.5})
 
@@ -54,7 +54,7 @@ def test_a_solver_refuses_an_indenter_it_does_not_pose(cone, solver, call):
 
 
 def test_the_fem_refuses_a_contact_method_that_does_not_pose_the_indenter(cone, monkeypatch):
-    monkeypatch.setitem(pocket.fem.api.CONTACTS, TOY.name, ("fitted",))
+    monkeypatch.setitem(fem_api.CONTACTS, TOY.name, ("fitted",))
     with pytest.raises(InputError, match=r"^contact = 'penalty' does not apply to the toy-cone indenter "
                                          r"\(its methods: fitted\)$"):
         fem.compress(0.1, 0.3, 0.5, indenter=cone, contact="penalty")

@@ -1,4 +1,5 @@
-"""The vocabulary every layer of pocket shares: states, errors, input checks, units, solver records.
+"""The vocabulary every layer of pocket shares: states, errors, input checks, units, rubbers, fluids,
+indenters, solver records.
 
 Nothing here imports a solver or an application; the solvers (``pocket.shooting``,
 ``pocket.fem``, ``pocket.analytical``) build on it, the applications
