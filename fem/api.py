@@ -8,7 +8,9 @@ The rubber comes first: a float is a Mooney-Rivlin alpha = C2/C1 (as it always
 was), a ``pocket.core.materials.Material`` any law in any stress unit
 (``material``). The fluid of a compression is a keyword: None (a liquid) or a
 ``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
-units, Phat_atm = P_atm R / (E T) (``gas``). Every law's pressures are
+units, Phat_atm = P_atm R / (E T) (``gas``); so is the indenter: None (the flat plate) or a
+``pocket.core.indenters.Indenter`` whose kind ``CONTACTS`` maps to the contact methods that pose it
+(an InputError for another kind, or for a method that does not pose it). Every law's pressures are
 Phat = P R / (E T) with E = 3 mu_0 its small-strain Young's modulus (for
 Mooney-Rivlin 6 (C1 + C2), as in the paper); forces are Fhat = F / (P_I pi R^2).
 
@@ -34,15 +36,16 @@ import numpy as np
 from pocket import meshes
 from pocket.core.errors import InputError
 from pocket.core.fluids import as_fluid
+from pocket.core.indenters import as_indenter, formulation
 from pocket.core.inputs import check_force, check_positive, quote
 
 from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results
 from .gas import sealed
-from .model import FITTED, Control, Model, discretize
+from .model import FITTED, PENALTY, Control, Model, discretize
 from .newton import Tolerances
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh",
-           "DEFAULT_PENALTY", "POLAR_POWER"]
+           "DEFAULT_PENALTY", "POLAR_POWER", "CONTACTS"]
 
 DEFAULT_PENALTY = 1e5
 #: grading exponent of the default mesh family towards the axis (``meshes.polar``)
@@ -52,6 +55,8 @@ MAX_RATIO = 1e3
 #: shortest usable element (units R): nodal values carry round-off of ~1e-16 R, so a shorter
 #: element's slope (the stretch) would carry a relative error above 1e-6
 MIN_LENGTH = 1e-10
+#: indenter kind -> the contact methods (the model's modes, ``model``) that pose it
+CONTACTS = {"flat": (FITTED, PENALTY)}
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
@@ -105,9 +110,14 @@ def _tolerances(tol) -> Tolerances:
     return Tolerances(tol, tol)
 
 
-def _contact(contact, penalty, augmented) -> tuple[str, float, bool]:
-    """The contact method and, for the penalty method, its penalty and augmentation (checked)."""
+def _contact(indenter, contact, penalty, augmented) -> tuple[str, float, bool]:
+    """The contact method and, for the penalty method, its penalty and augmentation (checked), for the
+    checked ``indenter``."""
+    methods = formulation(CONTACTS, "fem", indenter)
     contact = SOLVER.option("contact").checked(contact)
+    if contact not in methods:
+        raise InputError(f"contact = {contact!r} does not apply to the {indenter.kind} indenter (its methods: "
+                         f"{', '.join(methods)})")
     if contact == FITTED:
         for name, value in (("penalty", penalty), ("augmented", augmented)):
             if value is not None:
@@ -139,24 +149,27 @@ def inflate_volume(material, volume, *, mesh=None, elements=None, order=2, tol=1
     return results.inflated(model, y, iterations, volume=volume)
 
 
-def _setup(material, pressure_initial, fluid, mesh, elements, order, contact, penalty, augmented, tol):
-    """Checked inputs, the model, the inflated state to compress and the fluid sealed in it (the volume
-    row's ``Control``)."""
-    contact, penalty, augmented = _contact(contact, penalty, augmented)
+def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, contact, penalty, augmented, tol):
+    """Checked inputs, the model, the inflated state to compress and the fluid sealed in it with the
+    indenter (the volume row's ``Control``)."""
+    indenter = as_indenter(indenter)
+    contact, penalty, augmented = _contact(indenter, contact, penalty, augmented)
     model = _model(material, mesh, elements, order, penalty)
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)
     y_i, iterations = inflation.to_pressure(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
-    return model, contact, augmented, tol, y_i, state, Control(volume=state.volume, gas=sealed(fluid, p_i))
+    fill = Control(volume=state.volume, gas=sealed(fluid, p_i), indenter=indenter)
+    return model, contact, augmented, tol, y_i, state, fill
 
 
-def compression_curve(material, pressure_initial, forces, *, fluid=None, progress=None, mesh=None, elements=None,
-                      order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None, mesh=None,
+                      elements=None, order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
     """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the states before it.
 
-    fluid: None (a liquid: fixed volume) or a Fluid (a gas sealed at Phat_I). Options as ``inflate``,
+    fluid: None (a liquid: fixed volume) or a Fluid (a gas sealed at Phat_I). indenter: None (the flat
+    plate) or an Indenter (``CONTACTS``). Options as ``inflate``,
     and ``contact``: "fitted" (default; the mesh follows the contact
     edge, contact exact) or "penalty" (fixed mesh, contact ``penalty`` in units E T / R^2,
     default 1e5, with ``augmented`` Lagrangian updates, default true). ``progress(done, total)``
@@ -165,24 +178,25 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, progres
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, mesh, elements,
-                                                                 order, contact, penalty, augmented, tol)
+    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter, mesh,
+                                                                 elements, order, contact, penalty, augmented, tol)
     if contact == FITTED:
         return curves.fitted_curve(model, y_i, inflated, fill, forces, tol, progress)
     return curves.penalty_curve(model, y_i, inflated, fill, forces, tol, augmented, progress)
 
 
-def compress(material, pressure_initial, force, *, fluid=None, **options):
-    """Compressed state at the force Fhat = F/(P_I pi R^2); fluid and options as ``compression_curve``."""
-    return compression_curve(material, pressure_initial, [force], fluid=fluid, **options)[0]
+def compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options):
+    """Compressed state at the force Fhat = F/(P_I pi R^2); fluid, indenter and options as ``compression_curve``."""
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, **options)[0]
 
 
-def compress_height(material, pressure_initial, height, *, fluid=None, mesh=None, elements=None, order=2,
-                    contact=FITTED, penalty=None, augmented=None, tol=1e-10):
-    """Compressed state with the plate at height H/R = ``height`` (fluid and options as ``compression_curve``)."""
+def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, mesh=None, elements=None,
+                    order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+    """Compressed state with the indenter's lowest point at height H/R = ``height`` (fluid, indenter and options
+    as ``compression_curve``)."""
     height = check_positive("height", height)
-    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, mesh, elements,
-                                                                 order, contact, penalty, augmented, tol)
+    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter, mesh,
+                                                                 elements, order, contact, penalty, augmented, tol)
     if height >= inflated.height:
         return results.uncompressed(inflated, fill, contact)
     if contact == FITTED:

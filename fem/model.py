@@ -8,7 +8,9 @@ identity in the tangent and zero in the residual.
 ``FREE`` (no plate, inflation), s = [P]: the membrane rows R(U; P) = 0 and one
 control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
 
-With a plate the volume row is the fluid's: V / V_I - 1 for a liquid, and
+The modes with a plate, ``PENALTY`` and ``FITTED``, pose the flat plate
+(``pocket.core.indenters.FLAT``); ``api.CONTACTS`` maps each indenter kind to the
+modes that pose it. With a plate the volume row is the fluid's: V / V_I - 1 for a liquid, and
 V / V_I - q(P) for a gas sealed at P_I (``gas``: the polytropic law solved for
 the volume; its tangent has the corner entry -q'(P) in the column of P).
 
@@ -56,6 +58,8 @@ import dataclasses
 
 import numpy as np
 
+from pocket.core.indenters import FLAT, Indenter
+
 from . import banded, condensed, kernel
 from .gas import Gas
 from .geometry import Placement, place
@@ -72,7 +76,8 @@ _SCALARS = {FREE: 1, PENALTY: 2, FITTED: 3}
 @dataclasses.dataclass(frozen=True)
 class Control:
     """What is prescribed: ``pressure`` or ``volume``; and with a plate one of ``height``,
-    ``radius`` (the Lagrangian contact radius a, fitted only) or ``force`` (units E T R).
+    ``radius`` (the Lagrangian contact radius a, fitted only) or ``force`` (units E T R), and the
+    ``indenter`` (the flat plate; states echo it).
 
     ``scale`` (units E T R) divides the rows that balance forces on the plate (the tangency
     row and the force-control row), so that the absolute Newton tolerance on them is
@@ -88,6 +93,7 @@ class Control:
     force: float | None = None
     scale: float = 1.0
     gas: Gas | None = None
+    indenter: Indenter = FLAT
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

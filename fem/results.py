@@ -2,7 +2,7 @@
 
 Reported quantities (``pocket.core.states``): the inputs (alpha or the
 material, pressure or pressure_initial, force, the fluid) are echoed exactly as
-given (``material.law_of``, ``pocket.core.fluids.as_fluid``).
+given (``material.law_of``, ``pocket.core.fluids.as_fluid``), the indenter as ``Control`` holds it.
 
 Smallest tensions: T_1 = w_1 / lambda_2 and T_2 = w_2 / lambda_1 at the
 quadrature points and at the profile's nodes; the state reports the least of
@@ -21,8 +21,8 @@ Diagnostics in ``extra``: ``force_reaction`` (the plate reaction -sum_C R_j),
 plate's nodal reactions at the contact zone's nodes off the edge against the
 consistent nodal loads of the fluid pressure P, max |difference| / max |load|:
 a frictionless flat plate carries exactly the fluid pressure) and
-``penetration`` (max(eta - h) over the free part's nodes: the free part must
-stay below the plate).
+``penetration`` (max(eta - h - z(rho)) over the free part's nodes, z the
+indenter's height profile: the free part must stay below the indenter).
 
 Compressed, penalty contact (``penalty``): ``contact_area`` = Fhat P_I/P from
 the plate force and the pressure, ``contact_radius`` = sqrt(A_c)/lambda_c,
@@ -34,8 +34,9 @@ penalty), ``force_pressure_area`` from the active quadrature points (O(h)),
 Checks (``check``): every number finite, every stretch positive (at the
 quadrature points too), rho(1) = 1 (lambda_2(1) = 1), the volume at its
 target (V_I, or V_I q(P) for a gas: ``gas``) and for a gas the polytropic law
-itself, and for the fitted contact F = P A_c and the plate reaction equal to
-the force. A state that fails one is a solver failure (``ConvergenceError``
+itself, and for the fitted contact the plate reaction equal to the force and,
+where the indenter makes it an identity (``Indenter.pressure_area``: the flat
+plate), F = P A_c. A state that fails one is a solver failure (``ConvergenceError``
 naming the check), never returned.
 """
 
@@ -75,10 +76,10 @@ def _fail(where: str, what: str):
 
 
 def _echo(model: Model, fill: Control | None = None) -> dict:
-    """The inputs a state echoes as given: alpha, material and (compressed) the fluid."""
+    """The inputs a state echoes as given: alpha, material and (compressed) the fluid and the indenter."""
     out = dict(alpha=model.law.alpha, material=model.law.material)
     if fill is not None:
-        out["fluid"] = _fluid(fill)
+        out.update(fluid=_fluid(fill), indenter=fill.indenter)
     return out
 
 
@@ -158,7 +159,7 @@ def uncompressed(state: InflatedState, fill: Control, contact: str) -> Compresse
         height_ratio=1.0, volume=state.volume, profile=state.profile, inflated=state, solver="fem",
         extra={**state.extra, "contact": contact, "newton_iterations": 0, "penetration": 0.0,
                "force_reaction": 0.0, "force_pressure_area": 0.0, "force_difference": 0.0},
-        tension_1_min=state.tension_1_min, tension_2_min=state.tension_2_min,
+        tension_1_min=state.tension_1_min, tension_2_min=state.tension_2_min, indenter=fill.indenter,
     )
 
 
@@ -184,11 +185,11 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
     rows = linear.residual
     reaction = -float(rows[model.tied()].sum()) / (np.pi * p_i)
     area = pressure * rho_a**2 / p_i
-    free_eta = y[2 * model.order + 1: n: 2]
+    free_rho, free_eta = y[2 * model.order: n: 2], y[2 * model.order + 1: n: 2]
     extra = _extra(model, iterations, FITTED)
     extra.update(force_reaction=reaction, force_pressure_area=area, force_difference=reaction - area,
                  contact_pressure_error=_contact_pressure_error(model, y, rows),
-                 penetration=max(0.0, float(free_eta.max() - h)))
+                 penetration=max(0.0, float((free_eta - h - fill.indenter.height(free_rho)).max())))
     stretch = rho_a / a
     clamp = post.clamp_stretch(model, y, FITTED, rows)
     profile = post.profile(model, y, FITTED, pole=stretch, clamp=clamp, contact_radius=a)
@@ -201,7 +202,8 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
     where = f"at Fhat = {force!r}"
     _check_common(model, y, FITTED, out, where, _volume_target(fill, pressure))
     _check_gas(fill, out, where)
-    for name in ("force_reaction", "force_pressure_area"):
+    identities = ("force_reaction", "force_pressure_area") if fill.indenter.pressure_area else ("force_reaction",)
+    for name in identities:
         if abs(extra[name] - force) > CONSISTENCY * force + FORCE_FLOOR * model.elements:
             _fail(where, f"{name} = {extra[name]!r} against the force {force!r} (F = P A_c)")
     if not 0.0 < a < 1.0:

@@ -1,5 +1,8 @@
 """Step 2, compression at fixed volume by a flat frictionless plate, force given.
 
+The indenter is an argument (``pocket.core.indenters``): this solver poses the flat plate,
+its default, and refuses another kind (``pocket.shooting.problem.CONTACTS``).
+
 The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.problem``; the
 fluid sealed in the pocket (a liquid: fixed volume; a gas: the polytropic law) enters only its
 volume residual.
@@ -30,14 +33,15 @@ import numpy as np
 
 from pocket.core.errors import CLAMP_PLANE, ConvergenceError, InputError, beyond_range
 from pocket.core.fluids import as_fluid
+from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_force, check_positive
-from pocket.core.states import CompressedState, InflatedState
+from pocket.core.states import CompressedState
 
 from . import newton
 from .inflation import inflate
 from .integrator import OK, STATUS
 from .laws import law_of
-from .problem import Problem
+from .problem import Problem, contact_of
 from .rangeend import end_of, solve_on_branch
 from .shots import profile_from_steps, tension_minima
 
@@ -185,29 +189,33 @@ def _state(problem, force, x, fluid) -> tuple[CompressedState, float]:
         fluid=fluid,
         tension_1_min=low[0],
         tension_2_min=low[1],
+        indenter=problem.indenter,
     )
     return state, y[2]
 
 
-def _uncompressed(inflated: InflatedState, force: float, fluid) -> CompressedState:
+def _uncompressed(problem: Problem, force: float, fluid) -> CompressedState:
     """Fhat = 0: the inflated state itself, seen as a compressed state with no contact."""
+    inflated = problem.inflated
     return CompressedState(
         alpha=inflated.alpha, pressure_initial=inflated.pressure, force=force,
         pressure=inflated.pressure, pressure_ratio=1.0, contact_area=0.0, contact_radius=0.0,
         stretch_contact=inflated.stretch_pole, height=inflated.height, height_ratio=1.0,
         volume=inflated.volume, profile=inflated.profile, inflated=inflated, solver="shooting",
         material=inflated.material, fluid=fluid, tension_1_min=inflated.tension_1_min,
-        tension_2_min=inflated.tension_2_min,
+        tension_2_min=inflated.tension_2_min, indenter=problem.indenter,
     )
 
 
-def compression_curve(material, pressure_initial, forces, *, fluid=None, rtol=1e-10,
+def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, rtol=1e-10,
                       progress=None) -> list[CompressedState]:
     """Compress at each force Fhat = F/(P_I pi R^2) of ``forces`` (any order), by continuation.
 
     material: the rubber, a Mooney-Rivlin alpha or a ``pocket.core.materials.Material``. fluid: None
     or "liquid" (fixed volume), or a gas (``pocket.core.fluids.gas``, its ambient pressure as
-    Phat_atm = P_atm R / (E T)), sealed at Phat_I. Returns the states in the order of ``forces``,
+    Phat_atm = P_atm R / (E T)), sealed at Phat_I. indenter: None (the flat plate) or a
+    ``pocket.core.indenters.Indenter`` this solver poses (an InputError for another). Returns the states
+    in the order of ``forces``,
     each echoing its inputs exactly. ``progress(done, total)``, if given, is called after each force
     (``total`` = len(forces)). Raises OutOfRangeError for a force past the end of the model's range
     (``range_end``), ConvergenceError if a solve fails, InputError for invalid input.
@@ -215,16 +223,18 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, rtol=1e
     law = law_of(material)
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
+    indenter = as_indenter(indenter)
+    contact = contact_of(indenter)
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    problem = Problem(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid)
+    problem = contact(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid, indenter)
     counts = {f: forces.count(f) for f in forces}
     states, done = {}, 0
     branch = _Branch(points=((0.0, problem.start()),))
     for f in sorted(counts):
         if f == 0.0:
-            states[f] = _uncompressed(problem.inflated, f, fluid)
+            states[f] = _uncompressed(problem, f, fluid)
         else:
             branch = _advance(problem, branch, f)
             states[f], clamp_angle = _state(problem, f, branch.points[-1][1], fluid)
@@ -236,6 +246,6 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, rtol=1e
     return [states[f] for f in forces]
 
 
-def compress(material, pressure_initial, force, *, fluid=None, rtol=1e-10) -> CompressedState:
+def compress(material, pressure_initial, force, *, fluid=None, indenter=None, rtol=1e-10) -> CompressedState:
     """Compress the pocket inflated at Phat_I = ``pressure_initial`` by force Fhat (``compression_curve``)."""
-    return compression_curve(material, pressure_initial, [force], fluid=fluid, rtol=rtol)[0]
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, rtol=rtol)[0]

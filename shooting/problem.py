@@ -1,5 +1,7 @@
 """Step 2 of one inflated pocket as a shooting problem: unknowns, shots and residuals.
 
+The indenter is the flat plate (``pocket.core.indenters``; ``CONTACTS`` maps each
+indenter kind this solver poses to its problem, and ``contact_of`` refuses another).
 Contact zone (0 <= r <= a): the sheet lies flat on the plate; tangential
 equilibrium with no friction and regularity at the axis leave the uniform
 equibiaxial stretch rho = lambda_c r, lambda_1 = lambda_2 = lambda_c (the normal
@@ -45,24 +47,27 @@ import math
 import numpy as np
 
 from pocket.core.fluids import LIQUID, Fluid
+from pocket.core.indenters import FLAT, Indenter, formulation
 from pocket.core.states import InflatedState
 
 from .integrator import OK, STATUS
 from .laws import Law, law_of
 from .shots import Tolerance, shot_edge
 
-__all__ = ["Problem"]
+__all__ = ["Problem", "CONTACTS", "contact_of"]
 
 
 @dataclasses.dataclass(frozen=True)
 class Problem:
     """The compression of ``inflated`` (its rubber, Phat_I) at ODE tolerance ``rtol``, with ``fluid``
-    sealed in it (ambient pressure as Phat_atm). ``law`` defaults to the inflated state's rubber."""
+    sealed in it (ambient pressure as Phat_atm), by the flat plate ``indenter``. ``law`` defaults to the
+    inflated state's rubber."""
 
     inflated: InflatedState
     rtol: float
     law: Law | None = None
     fluid: Fluid = LIQUID
+    indenter: Indenter = FLAT
     _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self):
@@ -78,8 +83,8 @@ class Problem:
 
     @property
     def key(self) -> tuple:
-        """What identifies the pocket's problem (a cache key): rubber, Phat_I, rtol, fluid."""
-        return (self.law.key, self.inflated.pressure, self.rtol, self.fluid)
+        """What identifies the pocket's problem (a cache key): rubber, Phat_I, rtol, fluid, indenter."""
+        return (self.law.key, self.inflated.pressure, self.rtol, self.fluid, self.indenter)
 
     @property
     def strain(self) -> float:
@@ -168,3 +173,13 @@ class Problem:
         out = [(y[0] - 1.0) / self.strain, y[4] / self.inflated.volume - self.fluid.volume_ratio(pressure * x[0],
                                                                                                   pressure)]
         return np.array(out if angle is None else [*out, y[2] - angle])
+
+
+#: indenter kind -> the problem that poses its contact
+CONTACTS: dict[str, type[Problem]] = {"flat": Problem}
+
+
+def contact_of(indenter: Indenter) -> type[Problem]:
+    """The problem class posing the contact of ``indenter``; an InputError naming this solver and the
+    indenter for a kind it does not pose (``pocket.core.indenters.formulation``)."""
+    return formulation(CONTACTS, "shooting", indenter)

@@ -56,11 +56,12 @@ import numpy as np
 
 from pocket.core.errors import ConvergenceError
 from pocket.core.fluids import as_fluid
+from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_positive
 
 from . import brent, newton
 from .laws import law_of
-from .problem import Problem
+from .problem import Problem, contact_of
 
 __all__ = ["End", "range_end", "end_of", "solve_on_branch"]
 
@@ -83,21 +84,23 @@ class End:
     locks: bool = False
 
 
-_ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid) -> End
+_ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid, indenter) -> End
 
 
-def range_end(material, pressure_initial, *, fluid=None, rtol=1e-10) -> float:
+def range_end(material, pressure_initial, *, fluid=None, indenter=None, rtol=1e-10) -> float:
     """The largest force Fhat for which the pocket (its rubber ``material``, a Mooney-Rivlin alpha or a
-    ``Material``; Phat_I; its ``fluid``, as for ``compression_curve``) has a compressed state (module
-    docstring): forces up to and including it solve; above it, none do."""
+    ``Material``; Phat_I; its ``fluid`` and the ``indenter``, as for ``compression_curve``) has a
+    compressed state (module docstring): forces up to and including it solve; above it, none do."""
     from .inflation import inflate
 
     law = law_of(material)
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
-    key = (law.key, pressure_initial, rtol, fluid)
+    indenter = as_indenter(indenter)
+    contact = contact_of(indenter)
+    key = (law.key, pressure_initial, rtol, fluid, indenter)
     if key not in _ENDS:
-        end_of(Problem(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid))
+        end_of(contact(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid, indenter))
     return _ENDS[key].force
 
 

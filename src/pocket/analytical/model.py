@@ -61,11 +61,12 @@ from scipy.optimize import brentq
 from pocket.core import smallstrain
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import LIQUID, as_fluid
+from pocket.core.indenters import as_indenter, formulation
 from pocket.core.inputs import check_force, check_positive
 from pocket.core.materials import Material, as_material, given_alpha
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-__all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT"]
+__all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT", "CONTACTS"]
 
 _N = 201  # profile points
 
@@ -159,7 +160,8 @@ def _force(a, s0, pressure_initial, fluid=LIQUID):
     return phat / pressure_initial * (1.0 + sc) ** 2 * a * a
 
 
-def _compressed(inflated, force, a, fluid):
+def _compressed(inflated, force, a, fluid, indenter):
+    """The flat plate's compressed state at contact radius ``a`` (eqs (19)-(26), corrected)."""
     s0 = inflated.stretch_pole - 1.0
     sc = _contact_strain(a, s0, inflated.pressure, fluid) if a > 0.0 else s0
     phat = 10.0 * sc**1.5 / np.sqrt(1.0 - a * a) if a > 0.0 else inflated.pressure
@@ -176,8 +178,12 @@ def _compressed(inflated, force, a, fluid):
         volume=2.0 * np.pi * np.sqrt(sc) * _volume_moment(a), profile=profile,
         inflated=inflated, solver="analytical",
         warnings=_warnings(lambda_0=inflated.stretch_pole, lambda_c=1.0 + sc),
-        material=inflated.material, fluid=fluid,
+        material=inflated.material, fluid=fluid, indenter=indenter,
     )
+
+
+#: indenter kind -> the compressed state of its contact at a contact radius (the paper's model is the flat plate's)
+CONTACTS = {"flat": _compressed}
 
 
 def _contact_limit(s0, pressure_initial, fluid=LIQUID):
@@ -199,20 +205,26 @@ def _contact_radius(force, s0, pressure_initial, a_max, fluid=LIQUID):
     return min(brentq(miss, 0.0, hi, xtol=1e-300, rtol=1e-14) * scale, a_max)
 
 
-def range_end(material, pressure_initial, *, fluid=None) -> float:
-    """The force Fhat at which the model's contact reaches the clamp (A_c = pi R^2): its range."""
+def range_end(material, pressure_initial, *, fluid=None, indenter=None) -> float:
+    """The force Fhat at which the model's contact reaches the clamp (A_c = pi R^2): its range
+    (``indenter`` as for ``compression_curve``)."""
+    formulation(CONTACTS, "analytical", as_indenter(indenter))
     inflated = inflate(material, pressure_initial)
     fluid = as_fluid(fluid)
     return float(_contact_limit(inflated.stretch_pole - 1.0, inflated.pressure, fluid)[1])
 
 
-def compression_curve(material, pressure_initial, forces, *, fluid=None, progress=None) -> list[CompressedState]:
+def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None,
+                      progress=None) -> list[CompressedState]:
     """Compressed states at each Fhat of ``forces``; OutOfRangeError past the model's maximum force.
 
     ``material`` as for ``inflate``; ``fluid``: None or "liquid", or a gas (``pocket.core.fluids.gas``,
-    ambient pressure as Phat_atm), echoed by the states. ``progress(done, total)``, if given, is called
-    after each force (``total`` = len(forces)).
+    ambient pressure as Phat_atm), echoed by the states; ``indenter``: None (the flat plate) or an
+    ``Indenter`` this model poses (``CONTACTS``; an InputError for another). ``progress(done, total)``,
+    if given, is called after each force (``total`` = len(forces)).
     """
+    indenter = as_indenter(indenter)
+    compressed = formulation(CONTACTS, "analytical", indenter)
     inflated = inflate(material, pressure_initial)
     fluid = as_fluid(fluid)
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
@@ -226,12 +238,12 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, progres
             raise OutOfRangeError(f"force = {f:.6g} is beyond the analytical model's range: the contact "
                                   f"would reach the clamp (at force = {f_max:.6g})")
         a = 0.0 if f == 0.0 else _contact_radius(f, s0, inflated.pressure, a_max, fluid)
-        states.append(_compressed(inflated, f, a, fluid))
+        states.append(compressed(inflated, f, a, fluid, indenter))
         if progress is not None:
             progress(len(states), len(forces))
     return states
 
 
-def compress(material, pressure_initial, force, *, fluid=None) -> CompressedState:
+def compress(material, pressure_initial, force, *, fluid=None, indenter=None) -> CompressedState:
     """Compression by eqs (19)-(26) (corrected) at Fhat = ``force`` (``compression_curve``)."""
-    return compression_curve(material, pressure_initial, [force], fluid=fluid)[0]
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter)[0]

@@ -1,5 +1,5 @@
-"""The vocabulary every layer of pocket shares: states, errors, input checks, units, solver records,
-and the compiled-code cache both solvers use (``compiled``).
+"""The vocabulary every layer of pocket shares: states, errors, input checks, units, rubbers, fluids,
+indenters, solver records, and the compiled-code cache both solvers use (``compiled``).
 
 Nothing here imports a solver or an application; the solvers (``pocket.shooting``,
 ``pocket.fem``, ``pocket.analytical``) build on it, the applications

@@ -17,9 +17,9 @@ dimensionless units of ``pocket.core.states``:
 
 - ``inflate(material, pressure, **options) -> InflatedState``
 - ``inflate_volume(material, volume, **options) -> InflatedState``
-- ``compress(material, pressure_initial, force, *, fluid=None, **options) -> CompressedState``
-- ``compression_curve(material, pressure_initial, forces, *, fluid=None, progress=None, **options)
-  -> list[CompressedState]``
+- ``compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options) -> CompressedState``
+- ``compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
+  **options) -> list[CompressedState]``
 
 ``material`` is the rubber: a number is a Mooney-Rivlin alpha = C2/C1 (today's path, results
 unchanged), a ``pocket.core.materials.Material`` any law in any stress unit (the solver scales it to
@@ -27,12 +27,16 @@ mu_0 itself; ``pocket.core.materials.as_material`` checks either). ``fluid`` is 
 the pocket at the initial pressure: None or "liquid" (fixed volume), or a gas
 (``pocket.core.fluids.gas``) whose ambient pressure is dimensionless like every pressure,
 Phat_atm = P_atm R / (E T) (``pocket.core.fluids.as_fluid`` checks it). Inflation takes no fluid: the
-gas is sealed once the pocket is inflated. States echo ``material`` as given (and ``alpha``, the number
-when a number was given, else None) and ``fluid`` as given (``LIQUID`` for None).
+gas is sealed once the pocket is inflated. ``indenter`` is what presses on the pocket: None (the flat
+plate, ``pocket.core.indenters.FLAT``) or an ``Indenter``; each solver maps the kinds it poses to its
+contact formulation in a table and refuses another kind in one line (``indenters.formulation``).
+States echo ``material`` as given (and ``alpha``, the number when a number was given, else None),
+``fluid`` as given (``LIQUID`` for None) and ``indenter`` (``FLAT`` for None).
 
 ``progress``, if given, is called as ``progress(done, total)`` after each force of a
 curve (a command line shows a bar with it); it is not an option of the record.
-A solver may also have ``range_end(material, pressure_initial, *, fluid=None, **options) -> float``,
+A solver may also have ``range_end(material, pressure_initial, *, fluid=None, indenter=None, **options)
+-> float``,
 the force Fhat at which its model's range ends (listed in ``entry_points``; inf where the range has
 no end, as for a rubber that locks before the sheet reaches the clamp plane).
 """

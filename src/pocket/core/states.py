@@ -8,8 +8,8 @@ Fhat = F / (P_I pi R^2).
 
 A state echoes its inputs exactly: ``alpha`` (a Mooney-Rivlin rubber given by
 C2/C1; None for another law), ``material``, ``pressure`` of an inflation,
-``pressure_initial``, ``force`` and ``fluid`` of a compression are what the
-caller gave, never recomputed ones.
+``pressure_initial``, ``force``, ``fluid`` and ``indenter`` of a compression are
+what the caller gave, never recomputed ones.
 
 Every state also carries its smallest tensions ``tension_1_min`` and
 ``tension_2_min`` (units E T; by default the minima over its profile) and
@@ -29,6 +29,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from .fluids import LIQUID, Fluid
+from .indenters import FLAT, Indenter
 from .materials import Material, mooney_rivlin
 
 __all__ = ["Profile", "InflatedState", "CompressedState", "CHECKS"]
@@ -48,7 +49,7 @@ class Profile:
     rho, eta : deformed radial position and height, in units of R.
     stretch_1, stretch_2 : meridional and hoop stretches lambda_1, lambda_2.
     tension_1, tension_2 : stress resultants T_1, T_2 in units of E T.
-    contact : bool array, True where the sheet touches the plate.
+    contact : bool array, True where the sheet touches the indenter.
     """
 
     r: np.ndarray
@@ -155,12 +156,13 @@ class InflatedState(_Membrane):
 
 @dataclasses.dataclass(frozen=True)
 class CompressedState(_Membrane):
-    """Step 2: the inflated pocket pressed by a flat plate at fixed volume.
+    """Step 2: the inflated pocket pressed by ``indenter`` (the flat plate by default) at fixed volume.
 
     ``contact_area`` is the deformed area A_c/(pi R^2) = pi (lambda_c a_c)^2 /
     (pi R^2); ``contact_radius`` the Lagrangian a_c/R. ``inflated`` is the
     step-1 state this one was compressed from. ``fluid`` is the fluid sealed
-    in the pocket at Phat_I (its ambient pressure as Phat_atm). ``extra``,
+    in the pocket at Phat_I (its ambient pressure as Phat_atm); ``indenter`` what
+    presses on it (``pocket.core.indenters``). ``extra``,
     ``warnings``, ``material`` and the smallest tensions as for ``InflatedState``.
     """
 
@@ -184,6 +186,7 @@ class CompressedState(_Membrane):
     fluid: Fluid = LIQUID
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
+    indenter: Indenter = FLAT
 
     KEYS = (
         "alpha",

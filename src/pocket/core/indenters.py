@@ -1,0 +1,135 @@
+r"""Indenters: what presses on the inflated pocket, one registered definition per kind.
+
+An indenter is a rigid, frictionless body of revolution pushed down along the axis onto
+the dome. Its lower surface is its height profile z(rho) above its lowest point, in units
+of the clamp radius R, with z(0) = 0: the surface lies at eta = h + z(rho) when the
+indenter's lowest point is at height h.
+
+=====  ========  ==========  ====================
+kind   z(rho)    parameters  F = P A_c identity
+=====  ========  ==========  ====================
+flat   0         (none)      yes
+=====  ========  ==========  ====================
+
+On a flat plate the sheet in contact lies flat and carries the fluid pressure P straight
+to the plate, and a smooth edge exerts no line force: the force is F = P A_c exactly, an
+identity a solver's state can be checked against. On a curved indenter the contact
+pressure exceeds P (on a sphere of radius R_s, p_c = P + (T_1 + T_2) / R_s) and the force
+is the integral of p_c over the contact area, so F = P A_c is no identity there
+(``Indenter.pressure_area`` says which holds).
+
+A ``Kind`` is one entry of the registry ``KINDS``; an ``Indenter`` is a kind with its
+parameters (``FLAT`` is the flat plate, every solver's default). Each solver maps a kind
+to its own contact formulation through an explicit table and asks ``formulation`` for
+it, which refuses a kind the table lacks in one line naming the solver and the indenter:
+a new indenter is a new entry here and in the tables of the solvers that pose it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable, Mapping
+from typing import TypeVar
+
+import numpy as np
+
+from .errors import InputError
+from .inputs import check_finite, quote
+
+__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation"]
+
+T = TypeVar("T")
+
+
+@dataclasses.dataclass(frozen=True)
+class Kind:
+    """One kind of indenter: its ``name``, a one-line ``summary``, its ``parameters`` (names, in
+    order; lengths in units of R), its ``profile`` z(params, rho) (params: name -> float; rho: float
+    array of any shape; returns z of the same shape, units R) and ``pressure_area``, whether
+    F = P A_c holds as an identity (module docstring)."""
+
+    name: str
+    summary: str
+    parameters: tuple[str, ...]
+    profile: Callable[[Mapping[str, float], np.ndarray], np.ndarray]
+    pressure_area: bool
+
+
+#: kind name -> its definition
+KINDS: dict[str, Kind] = {}
+
+
+def register(kind: Kind) -> Kind:
+    """Add ``kind`` to ``KINDS`` (a name may be registered once); returns it."""
+    if kind.name in KINDS:
+        raise ValueError(f"indenter kind {kind.name!r} is registered already")
+    KINDS[kind.name] = kind
+    return kind
+
+
+@dataclasses.dataclass(frozen=True)
+class Indenter:
+    """A registered kind by name with its parameters: ``params`` maps each name of the kind's
+    ``parameters`` to a float, given as a mapping or as (name, value) pairs in the kind's order (as
+    stored). An unknown kind, a missing or foreign parameter or a value that is not a finite number
+    is an ``InputError`` naming it."""
+
+    kind: str
+    params: tuple[tuple[str, float], ...] = ()
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise InputError(f"indenter = {quote(self.kind)}, but it must be one of {', '.join(KINDS)}")
+        names = KINDS[self.kind].parameters
+        given = dict(self.params)
+        if set(given) != set(names):
+            raise InputError(f"indenter {self.kind} takes the parameters ({', '.join(names)}), "
+                             f"not ({', '.join(given)})")
+        values = tuple((n, check_finite(f"indenter.{n}", given[n])) for n in names)
+        object.__setattr__(self, "params", values)
+
+    @property
+    def definition(self) -> Kind:
+        """The registered ``Kind``."""
+        return KINDS[self.kind]
+
+    @property
+    def pressure_area(self) -> bool:
+        """F = P A_c holds as an identity (a flat plate), rather than F = the integral of the contact
+        pressure."""
+        return self.definition.pressure_area
+
+    def height(self, rho) -> np.ndarray:
+        """z(rho): the surface's height above its lowest point at the radii ``rho`` (units R, any
+        shape; the result has the same shape)."""
+        return self.definition.profile(dict(self.params), np.asarray(rho, dtype=float))
+
+
+def _flat(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+    """The flat plate: z = 0 everywhere."""
+    return np.zeros_like(rho)
+
+
+register(Kind("flat", "a flat plate, wider than the pocket", (), _flat, pressure_area=True))
+
+#: the flat plate (every solver's default)
+FLAT = Indenter("flat")
+
+
+def as_indenter(value) -> Indenter:
+    """The indenter of ``value``: None is the flat plate, an ``Indenter`` is returned as given; anything
+    else is an InputError."""
+    if value is None:
+        return FLAT
+    if not isinstance(value, Indenter):
+        raise InputError(f"indenter = {quote(value)}, but it must be an Indenter (pocket.core.indenters)")
+    return value
+
+
+def formulation(table: Mapping[str, T], solver: str, indenter: Indenter) -> T:
+    """``table[indenter.kind]``: the contact formulation with which ``solver`` poses the indenter; an
+    InputError naming the solver and the indenter if its table has no entry for that kind."""
+    if indenter.kind not in table:
+        raise InputError(f"solver {solver} does not implement the {indenter.kind} indenter "
+                         f"(its indenters: {', '.join(table)})")
+    return table[indenter.kind]
