@@ -17,6 +17,11 @@ state, a compression curve's time against the shooting solver's, and the default
 4. Rubber laws and fluids: one assembly (residual and tangent) at 1e4 P2 elements for each law, and the
    40-point curve of section 2 for each law and for a gas, with their ratios to Mooney-Rivlin's (the
    law is a branch inside the compiled loop; Ogden's powers cost more than the invariants' products).
+5. The inflation remembered (``pocket.fem.inflation.inflated_at``): a one-force compression at the
+   default mesh after the inflation (as a case file does) and a button design by the FE
+   (``pocket.apps.design``, whose inverse problems call the solver once per bracket step), each with
+   every call solving its inflation (nothing remembered: as before) and with the inflation remembered,
+   with the ratio and whether the answers are equal bit for bit (their pickles).
 
 The machine is shared: medians of repeats, with the least time beside them as the estimate of the
 undisturbed cost.
@@ -24,6 +29,7 @@ undisturbed cost.
 
 from __future__ import annotations
 
+import pickle
 import statistics
 import sys
 import time
@@ -181,6 +187,37 @@ def laws_and_fluids(repeat):
               f" {curve_time[1] / base[1]:5.2f}")
 
 
+def remembered(repeat):
+    """Section 5."""
+    from pocket.apps.design import design
+
+    def one_force():
+        inflation.forget()  # a new chain: its inflation is not yet known
+        return fem.inflate(ALPHA, PHAT), fem.compress(ALPHA, PHAT, FHAT)
+
+    def button():
+        inflation.forget()
+        return design("20 mm", "8 mm", "1 MPa", ALPHA, "0.2 N", solver="fem", points=5).report()
+
+    print("\nThe inflation remembered: median (least) wall time of a call chain, every inflation solved"
+          " against each solved once")
+    print(f"{'call chain':36s} | solved each time [s] | remembered [s]   | ratio | equal")
+    for label, chain, times in (("inflate, then compress at one force", one_force, 3 * repeat),
+                                ("button design, fem (5-point feel)", button, max(1, repeat // 3))):
+        one_force()  # compile and import once
+        kept = inflation.REMEMBERED
+        try:
+            inflation.REMEMBERED = 0
+            before = chain()
+            each = _times(chain, times)
+        finally:
+            inflation.REMEMBERED = kept
+        after = chain()
+        once = _times(chain, times)
+        print(f"{label:36s} | {each[0]:8.3f} ({each[1]:8.3f}) | {once[0]:6.3f} ({once[1]:6.3f}) |"
+              f" {each[1] / once[1]:5.2f} | {pickle.dumps(before) == pickle.dumps(after)}")
+
+
 def main(argv=None):
     quick = "--quick" in (sys.argv[1:] if argv is None else argv)
     per_iteration([100, 1000, 10000] if quick else [100, 1000, 10000, 100000, 1000000])
@@ -188,6 +225,7 @@ def main(argv=None):
     if not quick:
         default_mesh_accuracy([64, 128, 192, 256, 384])
     laws_and_fluids(3 if quick else 7)
+    remembered(3 if quick else 7)
 
 
 if __name__ == "__main__":

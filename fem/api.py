@@ -137,7 +137,7 @@ def inflate(material, pressure, *, mesh=None, elements=None, order=2, tol=1e-10)
     """
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
     pressure = check_positive("pressure", pressure)
-    y, iterations = inflation.to_pressure(model, pressure, _tolerances(tol))
+    y, iterations = inflation.inflated_at(model, pressure, _tolerances(tol))
     return results.inflated(model, y, iterations, pressure=pressure)
 
 
@@ -158,7 +158,7 @@ def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, c
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)
-    y_i, iterations = inflation.to_pressure(model, p_i, tol)
+    y_i, iterations = inflation.inflated_at(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
     fill = Control(volume=state.volume, gas=sealed(fluid, p_i), indenter=indenter)
     return model, contact, augmented, tol, y_i, state, fill

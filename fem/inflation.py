@@ -16,9 +16,18 @@ is landed on the rising side.
 
 A rubber that locks (Gent) stops the volume path at its locking stretch
 (``steps.near_locking``): a volume target past it is ``OutOfRangeError``.
+
+Remembered: ``inflated_at`` solves a pressure target once per (law, mesh, Phat, tolerances)
+among the last ``REMEMBERED`` asked in the process. Every entry point starts from the
+inflated state, and the applications call them many times on one pocket (a design's or a
+sensor's inverse problem once per bracket step, a case file's checks and curve): the
+inflation was 60 % of a one-force compression. The solve is deterministic, so a remembered
+state is the one a fresh solve gives, bit for bit.
 """
 
 from __future__ import annotations
+
+import collections
 
 import numpy as np
 
@@ -29,7 +38,11 @@ from .model import FREE, Control, Model, forms
 from .newton import Tolerances
 from .steps import dome, land, near_locking, solve
 
-__all__ = ["to_pressure", "to_volume", "volume"]
+__all__ = ["to_pressure", "to_volume", "volume", "inflated_at", "forget", "REMEMBERED"]
+
+#: inflated states ``inflated_at`` remembers (at most 8 (2 N + 3) floats each, N the nodal dofs)
+REMEMBERED = 8
+_SOLVED: collections.OrderedDict = collections.OrderedDict()
 
 P_START = 1e-3
 LOG_V_RANGE = np.log(1e3)  # how far past the start volume a pressure target is sought
@@ -98,6 +111,29 @@ def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
     raise OutOfRangeError(
         f"Phat = {target:.6g} not reached up to V/R^3 = {np.exp(log_v):.4g} on the first branch"
     )
+
+
+def inflated_at(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray, int]:
+    """``to_pressure(model, target, tol)``, solved once per (law, mesh, target, tol) among the last
+    ``REMEMBERED`` asked (module docstring); (y, Newton iterations of its solve), y a copy of its own.
+
+    A target with no state is not remembered: its error is raised again by a fresh solve.
+    """
+    law = model.law
+    key = (law.code, law.params.tobytes(), law.jm, model.xi.tobytes(), model.order, float(target), tol)
+    if key in _SOLVED:
+        _SOLVED.move_to_end(key)
+        y, iterations = _SOLVED[key]
+    else:
+        y, iterations = _SOLVED[key] = to_pressure(model, target, tol)
+        while len(_SOLVED) > REMEMBERED:
+            _SOLVED.popitem(last=False)
+    return y.copy(), iterations
+
+
+def forget() -> None:
+    """Forget every remembered inflation: the next ``inflated_at`` of any pocket solves it again."""
+    _SOLVED.clear()
 
 
 def _pressure(y: np.ndarray) -> float:

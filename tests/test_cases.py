@@ -222,7 +222,7 @@ def test_lowest_plate_height_is_the_range_end(tmp_path):
     from pocket.core.errors import OutOfRangeError
 
     pocket = resolve(load(_write(tmp_path, BUTTON.replace('"8 mm"]', '"1 mm"]'))))
-    end = range_end(shooting, pocket.alpha, pocket.pressure_initial)
+    end = range_end(shooting.SOLVER, pocket.alpha, pocket.pressure_initial)
     lowest = shooting.compress(pocket.alpha, pocket.pressure_initial, end).height * 20.0  # mm
     with pytest.raises(OutOfRangeError, match=rf"\({lowest:.6g} mm; the inflated height is 10 mm\)"):
         forces(pocket)

@@ -197,7 +197,8 @@ def test_inflate_by_volume_where_a_solver_has_none_or_with_a_pressure_is_one_lin
     have it; --volume with --pressure is a usage error."""
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--solver", "analytical")
     assert (status, out) == (2, "") and err == ("pocket: error: --volume: solver analytical has no volume-controlled "
-                                                "inflation (solvers that have it: shooting, fem)\n")
+                                                "inflation (entry point inflate_volume; solvers that have it: "
+                                                "shooting, fem)\n")
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--pressure", "0.3")
     assert (status, out) == (2, "") and "--pressure: not allowed with argument --volume" in err
 
@@ -227,10 +228,12 @@ def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, mo
     down) makes the FE solver give up and say where; the CLI prints that one line, exits 1,
     and the --vtk folder does not appear (nothing half-written is left looking complete)."""
     import pocket.fem.steps as steps
+    from pocket.fem.inflation import forget
 
     from pocket.core.errors import ConvergenceError
 
     real = steps.newton
+    forget()  # an inflation remembered from an earlier test would not meet the patched Newton
 
     def failing(linearize, guess, *args, **kwargs):
         plate = linearize(guess)[1].B.shape[1] > 1  # the pressure, and the plate's unknowns

@@ -105,7 +105,7 @@ def test_beyond_the_range_end_is_out_of_range():
     the clamp reaction)."""
     from pocket.apps.inverse import range_end
 
-    end = range_end(shooting, 0.3, 0.3)
+    end = range_end(shooting.SOLVER, 0.3, 0.3)
     with pytest.raises(OutOfRangeError, match="clamp plane") as info:
         fem.compress(0.3, 0.3, 12.0, elements=16)
     found = re.match(r"force = 12 is beyond the model's range, which ends at force = ([0-9.e+-]+) to ([0-9.e+-]+) "
@@ -207,7 +207,7 @@ def test_a_force_maximum_ends_the_range():
     from pocket.apps.inverse import range_end
 
     alpha, pressure = -0.42, 0.173
-    end = range_end(shooting, alpha, pressure)
+    end = range_end(shooting.SOLVER, alpha, pressure)
     with pytest.raises(OutOfRangeError, match="has a maximum") as info:
         fem.compress(alpha, pressure, 2 * end, elements=64)
     peak = float(re.search(r"force = ([0-9.e+-]+), before", str(info.value)).group(1))

@@ -43,7 +43,7 @@ def _order(sizes, errors):
 @pytest.fixture(scope="module")
 def forces():
     """Fhat 0.05, 0.19 (the paper's fig. 2b), 1 and 0.95 of the end of the range (shooting)."""
-    return (0.05, 0.19, 1.0, 0.95 * range_end(shooting, ALPHA, PRESSURE))
+    return (0.05, 0.19, 1.0, 0.95 * range_end(shooting.SOLVER, ALPHA, PRESSURE))
 
 
 @pytest.fixture(scope="module")

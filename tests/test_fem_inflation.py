@@ -93,3 +93,72 @@ def test_state_contents():
     assert prof.r[0] == 0.0 and prof.r[-1] == 1.0 and not prof.contact.any()
     assert prof.tension_1[0] == pytest.approx(prof.tension_2[0], rel=1e-12)
     assert prof.eta[0] == state.height and prof.stretch_2[-1] == 1.0
+
+
+@pytest.fixture
+def counted(monkeypatch):
+    """Calls of the inflation's pressure-controlled solve, from an empty memory of inflated states."""
+    import collections
+
+    from pocket.fem import inflation
+
+    calls = []
+    solve = inflation.to_pressure
+
+    def to_pressure(model, target, tol):
+        calls.append((model.elements, target))
+        return solve(model, target, tol)
+
+    monkeypatch.setattr(inflation, "to_pressure", to_pressure)
+    monkeypatch.setattr(inflation, "_SOLVED", collections.OrderedDict(), raising=False)
+    return calls
+
+
+def _same(a, b):
+    """Two states equal bit for bit: every field, arrays elementwise, the profile's arrays too."""
+    import dataclasses
+
+    for field in dataclasses.fields(a):
+        x, y = getattr(a, field.name), getattr(b, field.name)
+        if field.name == "profile":
+            assert all(np.array_equal(getattr(x, f.name), getattr(y, f.name), equal_nan=True)
+                       for f in dataclasses.fields(x)), field.name
+        elif field.name == "inflated":
+            _same(x, y)
+        else:
+            assert x == y or (x != x and y != y), field.name  # NaN where a key has no value
+
+
+def test_one_inflation_per_pocket_and_mesh_bit_for_bit(counted):
+    """Exact answer: the inflation of one (law, Phat_I, mesh) is solved once across entry-point calls
+    (an inverse problem calls them once per bracket step), and the states are those of a fresh solve, bit
+    for bit; another pressure, mesh or law is a solve of its own."""
+    fresh = fem.compress(0.3, 0.3, 0.1)
+    assert counted == [(fem.DEFAULT_ELEMENTS, 0.3)]
+    again = [fem.compress(0.3, 0.3, 0.1), fem.inflate(0.3, 0.3), fem.compression_curve(0.3, 0.3, [0.1])[0]]
+    assert len(counted) == 1
+    _same(again[0], fresh)
+    _same(again[1], fresh.inflated)
+    _same(again[2], fresh)
+    fem.inflate(0.3, 0.2)
+    fem.inflate(0.3, 0.3, elements=64)
+    fem.inflate(0.4, 0.3)
+    assert len(counted) == 4
+
+
+def test_the_memory_of_inflations_is_bounded(counted):
+    """The last REMEMBERED inflations are remembered, the oldest forgotten first; a pressure with no
+    state is never remembered (its error comes again)."""
+    from pocket.fem.inflation import REMEMBERED
+
+    pressures = [0.1 * (k + 1) for k in range(REMEMBERED + 1)]
+    for p in pressures:
+        fem.inflate(0.3, p, elements=16)
+    fem.inflate(0.3, pressures[-1], elements=16)
+    assert len(counted) == REMEMBERED + 1
+    fem.inflate(0.3, pressures[0], elements=16)
+    assert len(counted) == REMEMBERED + 2
+    for _ in range(2):
+        with pytest.raises(OutOfRangeError):
+            fem.inflate(0.0, 2.0, elements=16)
+    assert len(counted) == REMEMBERED + 4

@@ -99,7 +99,7 @@ def test_pressure_past_the_range_names_the_highest(pocket, capsys):
     end of the model's range (inverse.range_end), in the kPa the user wrote."""
     from pocket.apps.inverse import range_end
 
-    end = range_end(shooting, pocket.alpha, pocket.pressure_initial)
+    end = range_end(shooting.SOLVER, pocket.alpha, pocket.pressure_initial)
     q = shooting.compress(pocket.alpha, pocket.pressure_initial, end).pressure_ratio
     assert main(["sense", "--sample", "1", "--pressure", "60 kPa"]) == 2
     err = capsys.readouterr().err
@@ -128,7 +128,7 @@ def test_gas_pressure_rise_is_monotone(barometer):
     Fhat = 9), so its deformed contact area is larger and its pressure F / A_c lower than the gas's."""
     from pocket.apps.inverse import range_end
 
-    end = range_end(shooting, barometer.material, barometer.pressure_initial, **barometer.options())
+    end = range_end(shooting.SOLVER, barometer.material, barometer.pressure_initial, **barometer.options())
     forces = np.linspace(0.0, 0.999 * end, 60)
     gas_rise = [s.pressure_ratio for s in shooting.compression_curve(barometer.material, barometer.pressure_initial,
                                                                      forces, **barometer.options())]

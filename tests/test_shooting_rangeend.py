@@ -2,6 +2,7 @@
 
 import math
 import re
+import sys
 import types
 
 import numpy as np
@@ -13,6 +14,7 @@ from pocket import shooting
 from pocket.apps import inverse
 from pocket.cli.main import main
 from pocket.core.errors import ConvergenceError, OutOfRangeError
+from pocket.core.solver import Solver
 
 SAMPLE = 47 / 160
 POCKETS = [(SAMPLE, 0.31), (0.0, 0.1), (1.0, 1.0), (5.0, 2.0), (0.3, 1e-4)]
@@ -110,11 +112,11 @@ def test_a_fold_ends_the_range_of_a_softening_rubber():
 
 def test_inverse_uses_the_solvers_own_end():
     """Exact answer: pocket.apps.inverse.range_end returns the solver's number (no bisection)."""
-    assert inverse.range_end(shooting, SAMPLE, 0.31) == shooting.range_end(SAMPLE, 0.31)
-    assert inverse.range_end(shooting, SAMPLE, 0.31, below=1.0) == 1.0
+    assert inverse.range_end(shooting.SOLVER, SAMPLE, 0.31) == shooting.range_end(SAMPLE, 0.31)
+    assert inverse.range_end(shooting.SOLVER, SAMPLE, 0.31, below=1.0) == 1.0
 
 
-def test_inverse_bisection_treats_failures_as_failures():
+def test_inverse_bisection_treats_failures_as_failures(monkeypatch):
     """Exact answer: a solver without range_end is bisected on OutOfRangeError; its ConvergenceError
     is not a range edge and propagates."""
     def compress(alpha, pressure, force):
@@ -124,10 +126,18 @@ def test_inverse_bisection_treats_failures_as_failures():
             raise ConvergenceError("failed")
         return types.SimpleNamespace(height=1.0 - force)
 
-    fake = types.SimpleNamespace(compress=compress)
+    fake = _record(monkeypatch, "fake", compress)
     assert inverse.range_end(fake, 0.0, 0.1, below=1.5) == 1.5
     with pytest.raises(ConvergenceError):
         inverse.range_end(fake, 0.0, 0.1)
-    ok = types.SimpleNamespace(compress=lambda a, p, f: compress(a, p, min(f, 2.0) if f <= 3.0 else f))
+    ok = _record(monkeypatch, "ok", lambda a, p, f: compress(a, p, min(f, 2.0) if f <= 3.0 else f))
     assert inverse.range_end(ok, 0.0, 0.1) == pytest.approx(3.0, rel=1e-8)
     assert np.isfinite(inverse.range_end(ok, 0.0, 0.1))
+
+
+def _record(monkeypatch, name, compress) -> Solver:
+    """The record of a solver whose only entry point is ``compress``, its module registered for the test."""
+    module = types.ModuleType(f"fake_solver_{name}")
+    module.compress = compress
+    monkeypatch.setitem(sys.modules, module.__name__, module)
+    return Solver(name=name, summary="a test's", module=module.__name__, entry_points=("compress",))

@@ -5,8 +5,7 @@ from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 
 import pytest
 
-from pocket import shooting
-from pocket.apps.solvers import get_solver
+from pocket import analytical, shooting
 from pocket.apps.sweep import COLUMNS, run_sweep
 from pocket.apps.sweepfile import IDENTITY
 from pocket.cli import main
@@ -30,9 +29,9 @@ class CountingExecutor(ThreadPoolExecutor):
         return super().submit(fn, *args, **kwargs)
 
 
-def _solver_of(compress):
-    """A solver module whose entry points are ``compress`` and its curve, point by point."""
-    import types
+def _entry_of(compress):
+    """``pocket.apps.solvers.entry`` of a solver whose entry points are ``compress`` and its curve, point by
+    point."""
 
     def compression_curve(material, pressure_initial, forces, *, progress=None, **options):
         states = []
@@ -42,7 +41,7 @@ def _solver_of(compress):
                 progress(len(states), len(forces))
         return states
 
-    return types.SimpleNamespace(compress=compress, compression_curve=compression_curve)
+    return lambda solver, name, purpose: {"compress": compress, "compression_curve": compression_curve}[name]
 
 
 @pytest.fixture(scope="module")
@@ -176,7 +175,7 @@ def test_rows_record_the_grid_as_asked(tmp_path, monkeypatch):
         return dataclasses.replace(state, alpha=math.nextafter(alpha, 2.0), force=math.nextafter(force, 2.0),
                                    pressure_initial=math.nextafter(pressure_initial, 2.0))
 
-    monkeypatch.setattr(sweep, "get_solver", lambda name: _solver_of(compress))
+    monkeypatch.setattr(sweep, "entry", _entry_of(compress))
     path = tmp_path / "echo.csv"
     grid = ([0.3, 1.2], [0.05, 0.1], [0.05, 0.1])
     with CountingExecutor() as executor:
@@ -401,7 +400,7 @@ def test_warnings_go_to_the_message_column(tmp_path, monkeypatch):
     def compress(*args, **options):
         return dataclasses.replace(shooting.compress(*args, **options), warnings=("first\nnote", "second"))
 
-    monkeypatch.setattr(sweep, "get_solver", lambda name: _solver_of(compress))
+    monkeypatch.setattr(sweep, "entry", _entry_of(compress))
     path = tmp_path / "w.csv"
     with CountingExecutor() as executor:
         run_sweep(path, [0.3], [0.3], [0.1], executor)
@@ -436,9 +435,9 @@ def test_another_solver_or_options_computes_its_own_points(tmp_path, capsys):
     assert sorted((r["solver"], r["solver_options"]) for r in rows[::2]) == [
         ("analytical", ""), ("fem", "elements=64 order=1"), ("fem", "elements=64 order=2"), ("shooting", ""),
         ("shooting", "rtol=1e-08")]
-    analytical = [r for r in rows if r["solver"] == "analytical"]
-    assert [float(r["height"]) for r in analytical] == [
-        s.height for s in get_solver("analytical").compression_curve(0.3, 0.1, [0.1, 0.2])]
+    approximate = [r for r in rows if r["solver"] == "analytical"]
+    assert [float(r["height"]) for r in approximate] == [
+        s.height for s in analytical.compression_curve(0.3, 0.1, [0.1, 0.2])]
     for extra in runs:
         assert main([*argv, *extra]) == 0
         assert "0 points computed, 2 reused" in capsys.readouterr().out

@@ -6,7 +6,7 @@ reference model's range, found by ``pocket.apps.inverse.range_end``: the
 largest Fhat with a compressed state (past it the free part of the sheet
 reaches the clamp plane).
 ``column_curve(pocket, column, forces)``: a solver column's curve (the FE columns).
-Each solver is reached through its record (``pocket.apps.solvers.get_solver``)
+Each solver is reached through its record (``pocket.apps.solvers.entry``)
 with the column's options, the pocket's rubber (``Pocket.material``) and its fluid
 (``Pocket.fluid_options``: a gas's Phat_atm). Every function returns frozen dataclasses
 (picklable) and draws nothing.
@@ -21,7 +21,7 @@ import numpy as np
 
 from pocket.apps.inverse import range_end as model_range_end
 from pocket.apps.physical import Pocket
-from pocket.apps.solvers import get_solver
+from pocket.apps.solvers import entry, record
 from pocket.core.errors import OutOfRangeError
 from pocket.core.states import CompressedState
 
@@ -65,7 +65,7 @@ class ColumnCurve:
 def range_end(pocket: Pocket, column: Column = REFERENCE, *, width: float = RANGE_RTOL) -> float:
     """The end of ``column``'s compression range in Fhat (a lower bound): the solver's own, or bisected to
     the relative ``width`` for a solver without one."""
-    end = model_range_end(get_solver(column.solver), pocket.material, pocket.pressure_initial, width=width,
+    end = model_range_end(record(column.solver), pocket.material, pocket.pressure_initial, width=width,
                           **column.kwargs(), **pocket.fluid_options())
     if not math.isfinite(end):  # a Gent rubber that locks before the sheet reaches the clamp plane
         raise OutOfRangeError(f"{pocket.case.name}: its compression range has no end (the rubber locks first), "
@@ -92,11 +92,12 @@ def fem_forces(plan_forces, force_end: float) -> list[float]:
 
 def _pointwise(pocket, column, forces):
     """``column``'s state at each force, None past its own range."""
-    solver, options = get_solver(column.solver), {**column.kwargs(), **pocket.fluid_options()}
+    compress = entry(column.solver, "compress", f"the {column.label} column")
+    options = {**column.kwargs(), **pocket.fluid_options()}
     out = []
     for force in forces:
         try:
-            out.append(solver.compress(pocket.material, pocket.pressure_initial, float(force), **options))
+            out.append(compress(pocket.material, pocket.pressure_initial, float(force), **options))
         except OutOfRangeError:
             out.append(None)
     return tuple(out)
@@ -131,8 +132,8 @@ def _forces(forces) -> str:
 
 def column_curve(pocket: Pocket, column: Column, forces) -> ColumnCurve:
     """The compression curve of ``pocket`` at ``forces`` by the solver of ``column``."""
-    solver = get_solver(column.solver)
+    curve = entry(column.solver, "compression_curve", f"the {column.label} column")
     with located(pocket.case.name, f"{column.label} column", _mesh(column), _forces(forces)):
-        states = solver.compression_curve(pocket.material, pocket.pressure_initial, [float(f) for f in forces],
+        states = curve(pocket.material, pocket.pressure_initial, [float(f) for f in forces],
                                           **column.kwargs(), **pocket.fluid_options())
     return ColumnCurve(pocket=pocket, column=column, states=tuple(states))

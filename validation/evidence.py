@@ -94,7 +94,7 @@ def _button(alpha, phat, state, target, at=None) -> dict:
     from pocket import shooting
 
     if at is None:
-        at = force_where(shooting, alpha, phat, "height_ratio", target, increasing=False)
+        at = force_where(shooting.SOLVER, alpha, phat, "height_ratio", target, increasing=False)
     return {"pressure_hat": float(phat), "height": None if state is None else float(state.inflated.height),
             "height_ratio": None if state is None else float(state.height_ratio),
             "force_at_target": float(at), "coefficient": 1.0 / at}

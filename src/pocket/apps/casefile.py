@@ -32,6 +32,7 @@ from .cases import Case
 from .folders import write_files
 from .physical import compressed_row, forces, inflated_row, resolve
 from .provenance import environment
+from .solvers import entry
 
 __all__ = ["solve", "write", "results_paths"]
 
@@ -61,7 +62,8 @@ def solve(case: Case, progress=None) -> dict:
     pocket = resolve(case)
     loads = forces(pocket)
     extra = {} if progress is None else {"progress": progress}
-    states = pocket.solver().compression_curve(pocket.material, pocket.pressure_initial, loads,
+    curve = entry(pocket.solver(), "compression_curve", f"the loads of case {case.name}")
+    states = curve(pocket.material, pocket.pressure_initial, loads,
                                                **pocket.options(), **extra)
     return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
             "states": [compressed_row(pocket, s, i) for i, s in enumerate(states)], "provenance": environment()}

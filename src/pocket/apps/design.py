@@ -63,7 +63,7 @@ from pocket.core.units import positive
 
 from .inverse import force_where, pressure_for_height, range_end
 from .slopes import curve_with_slopes
-from .solvers import get_solver
+from .solvers import entry, record
 
 __all__ = ["Design", "design", "paper_rules", "PAPER_FORCE_FACTOR", "PAPER_THICKNESS_FACTOR"]
 
@@ -144,15 +144,16 @@ def _sealed(fluid: Fluid, scale: float) -> dict:
     return {"fluid": fluid.scaled(scale)} if fluid.is_gas else {}
 
 
-def _gas_force(model, rubber, phat_i, ratio, fluid, per_fhat, liquid, options) -> float:
-    """Step 2' of the module docstring: Fhat* of a gas, Phat_atm = ``per_fhat`` Fhat, in (0, ``liquid``]."""
+def _gas_force(compress, rubber, phat_i, ratio, fluid, per_fhat, liquid, options) -> float:
+    """Step 2' of the module docstring: Fhat* of a gas, Phat_atm = ``per_fhat`` Fhat, in (0, ``liquid``], by the
+    solver's entry point ``compress``."""
     from scipy.optimize import brentq
 
     def miss(f):
         if f == 0.0:
             return 1.0 - ratio
         sealed = {"fluid": dataclasses.replace(fluid, ambient=per_fhat * f)}
-        return model.compress(rubber, phat_i, f, **sealed, **options).height_ratio - ratio
+        return compress(rubber, phat_i, f, **sealed, **options).height_ratio - ratio
 
     return brentq(miss, 0.0, liquid, xtol=1e-15, rtol=1e-13)
 
@@ -173,7 +174,8 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
     radius, height, modulus, force, rubber, ratio, fluid = _check(radius, height, modulus, material, force,
                                                                   height_ratio, fluid)
     warnings = [w for key, si in (("radius", radius), ("height", height)) for w in length_warnings(key, given[key], si)]
-    model = get_solver(solver)
+    model = record(solver)
+    compress = entry(model, "compress", "a design")
     try:
         phat_i = pressure_for_height(model, rubber, height / radius, **options)
     except OutOfRangeError as err:
@@ -181,7 +183,7 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
                               f"that high ({err})") from None
     fhat = force_where(model, rubber, phat_i, "height_ratio", ratio, increasing=False, **options)
     if fluid.is_gas:
-        fhat = _gas_force(model, rubber, phat_i, ratio, fluid, fluid.ambient * phat_i * math.pi * radius**2 / force,
+        fhat = _gas_force(compress, rubber, phat_i, ratio, fluid, fluid.ambient * phat_i * math.pi * radius**2 / force,
                           fhat, options)
     p_i = force / (math.pi * radius**2 * fhat)
     thickness = p_i * radius / (modulus * phat_i)
@@ -190,7 +192,7 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
     paper_p, paper_t = paper_rules(radius, height, modulus, force)
     paper_phat = paper_p * radius / (modulus * paper_t)
     try:
-        paper_state = model.compress(rubber, paper_phat, force / (paper_p * math.pi * radius**2),
+        paper_state = compress(rubber, paper_phat, force / (paper_p * math.pi * radius**2),
                                      **_sealed(fluid, modulus * paper_t / radius), **options)
         paper_model = paper_state.inflated.height * radius, paper_state.height_ratio
     except OutOfRangeError:  # the paper's rules can ask for a state the model does not have

@@ -12,7 +12,8 @@ Brent's method on the forward solver:
 The bracket starts at load 0, where the value is known (height 0; the
 uncompressed state). For a force, a solver that knows the end of its range
 (``range_end``, an optional entry point: ``pocket.core.solver``) gives the top of
-the bracket directly. Otherwise an upper load doubles until the sign changes; a
+the bracket directly. Each function takes the solver's record (``pocket.core.solver.Solver``) and
+gets its entry points from it (``pocket.apps.solvers.entry``). Otherwise an upper load doubles until the sign changes; a
 forward solve that is out of the model's range there (OutOfRangeError: past a
 pressure maximum, or the free part reaching the clamp plane) ends the doubling:
 the range edge is then bisected. A target the model does not reach inside its
@@ -26,6 +27,9 @@ its parser, and every ``pocket`` command would otherwise pay for it.
 from __future__ import annotations
 
 from pocket.core.errors import OutOfRangeError
+from pocket.core.solver import Solver
+
+from .solvers import entry
 
 __all__ = ["pressure_for_height", "force_where", "range_end"]
 
@@ -55,24 +59,26 @@ def _bracket(fun, start, what, reached):
     raise OutOfRangeError(f"{what} is beyond the model's range (it reaches {reached(lo):.10g} at its edge)")
 
 
-def pressure_for_height(solver, material, height, **options) -> float:
-    """Phat_I at which the inflated height H0/R is ``height`` (first branch)."""
+def pressure_for_height(solver: Solver, material, height, **options) -> float:
+    """Phat_I at which the inflated height H0/R is ``height`` (first branch), by ``solver``'s ``inflate``."""
 
     from scipy.optimize import brentq
 
     from pocket.core.smallstrain import height_constant
 
+    inflate = entry(solver, "inflate", f"an initial height H0/R = {height:.10g}")
+
     def miss(p):
-        return solver.inflate(material, p, **options).height - height if p > 0.0 else -height
+        return inflate(material, p, **options).height - height if p > 0.0 else -height
 
     guess = (height / height_constant()) ** 3  # the small-strain model's Phat_I
     lo, hi = _bracket(miss, guess, f"initial height H0/R = {height:.10g}",
-                      lambda p: solver.inflate(material, p, **options).height)
+                      lambda p: inflate(material, p, **options).height)
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
 
 
-def force_where(solver, material, pressure_initial, key, target, *, increasing, **options) -> float:
-    """Fhat at which the compressed state's ``key`` equals ``target``.
+def force_where(solver: Solver, material, pressure_initial, key, target, *, increasing, **options) -> float:
+    """Fhat at which the compressed state's ``key`` equals ``target``, by ``solver``'s ``compress``.
 
     ``increasing``: whether ``key`` grows with the force (``pressure_ratio``) or
     falls (``height``, ``height_ratio``). A target on the wrong side of the
@@ -81,9 +87,10 @@ def force_where(solver, material, pressure_initial, key, target, *, increasing, 
     from scipy.optimize import brentq
 
     sign = 1.0 if increasing else -1.0
+    compress = entry(solver, "compress", f"a compressed state of {key} = {target:.10g}")
 
     def value(f):
-        return getattr(solver.compress(material, pressure_initial, f, **options), key)
+        return getattr(compress(material, pressure_initial, f, **options), key)
 
     start = value(0.0)
     if target == start:
@@ -106,13 +113,14 @@ def force_where(solver, material, pressure_initial, key, target, *, increasing, 
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
 
 
-def _own_end(solver, material, pressure_initial, options):
-    """The solver's own ``range_end`` (its entry point), or None if it has none."""
-    own = getattr(solver, "range_end", None)
-    return None if own is None else own(material, pressure_initial, **options)
+def _own_end(solver: Solver, material, pressure_initial, options):
+    """The solver's own ``range_end`` (an entry point its record may list), or None if it has none."""
+    if not solver.serves("range_end"):
+        return None
+    return entry(solver, "range_end", "the end of the compression range")(material, pressure_initial, **options)
 
 
-def range_end(solver, material, pressure_initial, *, below=None, width=_EDGE, **options) -> float:
+def range_end(solver: Solver, material, pressure_initial, *, below=None, width=_EDGE, **options) -> float:
     """The end of the model's compression range in Fhat (where the free part reaches the
     clamp plane); the value is inside the range.
 
@@ -125,10 +133,11 @@ def range_end(solver, material, pressure_initial, *, below=None, width=_EDGE, **
     end = _own_end(solver, material, pressure_initial, options)
     if end is not None:
         return end if below is None else min(below, end)
+    compress = entry(solver, "compress", "the end of the compression range")
 
     def inside(f):
         try:
-            solver.compress(material, pressure_initial, f, **options)
+            compress(material, pressure_initial, f, **options)
         except OutOfRangeError:
             return False
         return True

@@ -25,7 +25,7 @@ from pocket.core.units import written_like
 from .cases import Case
 from .inverse import force_where, pressure_for_height, range_end
 from .rangeend import check_force
-from .solvers import get_solver, record
+from .solvers import entry, record
 
 __all__ = ["Pocket", "resolve", "forces", "inflated_row", "compressed_row"]
 
@@ -71,13 +71,13 @@ class Pocket:
         return self.pressure_initial_Pa * math.pi * self.case.radius**2
 
     def solver(self):
-        """The solver module of the case (its entry points)."""
-        return get_solver(self.case.solver)
+        """The record of the case's solver (``pocket.core.solver.Solver``: its entry points by ``entry``)."""
+        return record(self.case.solver)
 
     def options(self, step: str = "compress") -> dict:
         """The keyword arguments of ``step``'s entry points ("inflate" or "compress"): the case's solver
         options that the step takes, and for a compression the fluid if it is a gas (``fluid_options``)."""
-        solver = record(self.case.solver)
+        solver = self.solver()
         return {**{k: v for k, v in self.case.options if step in solver.option(k).steps}, **self.fluid_options(step)}
 
     def fluid_options(self, step: str = "compress") -> dict:
@@ -118,7 +118,8 @@ def resolve(case: Case) -> Pocket:
         pocket = Pocket(case, _inside("initial.pressure", scales, "Phat_I = P_I R / (E T)",
                                       value / unit.pressure_scale_Pa))
         try:
-            solver.inflate(pocket.material, pocket.pressure_initial, **options)  # solvers cache it for later
+            entry(solver, "inflate", f"initial.pressure = {given}")(pocket.material, pocket.pressure_initial,
+                                                                   **options)  # solvers cache it for later
         except OutOfRangeError as err:
             raise OutOfRangeError(f"initial.pressure = {scales} gives Phat_I = P_I R / (E T) = "
                                   f"{pocket.pressure_initial:.6g}: {err}") from None
@@ -130,8 +131,9 @@ def resolve(case: Case) -> Pocket:
             raise OutOfRangeError(f"initial.height = {given}: no inflated state of the model's first branch is "
                                   f"that high ({err})") from None
     volume = value / case.radius**3
-    phat = solver.inflate_volume(unit.material, volume, **options).pressure
-    reached = solver.inflate(unit.material, phat, **options).volume
+    purpose = f"initial.volume = {given}"
+    phat = entry(solver, "inflate_volume", purpose)(unit.material, volume, **options).pressure
+    reached = entry(solver, "inflate", purpose)(unit.material, phat, **options).volume
     if abs(reached - volume) > 1e-6 * volume:  # the two solves agree to ~1e-10 on the first branch
         raise OutOfRangeError(f"initial.volume = {given} lies past the pressure maximum of the first branch, "
                               "where the pocket cannot be held at fixed pressure")
@@ -146,7 +148,8 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
     lowest = ""
     try:
         end = range_end(pocket.solver(), pocket.material, pocket.pressure_initial, **pocket.options())
-        low = pocket.solver().compress(pocket.material, pocket.pressure_initial, end, **pocket.options()).height
+        compress = entry(pocket.solver(), "compress", "the lowest plate height")
+        low = compress(pocket.material, pocket.pressure_initial, end, **pocket.options()).height
         lowest = f" ({written_like(low * case.radius, given, 'length')}; the inflated height is " \
                  f"{written_like(top, given, 'length')})"
     except PocketError:  # the reason stands without the number
@@ -168,7 +171,8 @@ def forces(pocket: Pocket) -> list[float]:
         return [check_force(pocket, key, given, _inside(key, quote(given), "Fhat = F / (P_I pi R^2)",
                                                         f / pocket.force_scale_N)) for key, given, f in keys]
     solver, options = pocket.solver(), pocket.options()
-    top = solver.inflate(pocket.material, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
+    inflate = entry(solver, "inflate", "loads.heights")
+    top = inflate(pocket.material, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
     out = []
     for index, height in enumerate(case.loads):
         if height > top:

@@ -17,35 +17,37 @@ from pocket.core.errors import CLAMP_PLANE, beyond_range
 from pocket.core.inputs import quote
 from pocket.core.units import written_like
 
+from .solvers import SOLVERS, entry
+
 __all__ = ["range_end_of", "check_force"]
 
+_PURPOSE = "the end of the compression range"
 _FULL_CONTACT = 1e-6  # contact area / (pi R^2) within this of 1: the end is the clamp plane, not a force maximum
 
 
 def _model(pocket):
-    """The solver that locates the end, with its options: the pocket's if it has ``range_end``, else the shooting."""
+    """The record of the solver that locates the end, with its options: the pocket's if it has ``range_end``,
+    else the shooting."""
     solver = pocket.solver()
-    if getattr(solver, "range_end", None) is not None:
+    if solver.serves("range_end"):
         return solver, pocket.options()
-    from pocket import shooting
-
-    return shooting, pocket.fluid_options()
+    return SOLVERS["shooting"], pocket.fluid_options()
 
 
 def range_end_of(pocket) -> float:
     """Fhat_end of ``pocket`` (a ``pocket.apps.physical.Pocket``): the largest force with a compressed state."""
     solver, options = _model(pocket)
-    return solver.range_end(pocket.material, pocket.pressure_initial, **options)
+    return entry(solver, "range_end", _PURPOSE)(pocket.material, pocket.pressure_initial, **options)
 
 
 def check_force(pocket, key: str, given, force: float) -> float:
     """``force`` (Fhat) if the pocket has a state there; else the ``OutOfRangeError`` of the module docstring,
     quoting ``key`` = ``given`` (the force as the user wrote it) and the end in ``given``'s unit."""
     solver, options = _model(pocket)
-    end = solver.range_end(pocket.material, pocket.pressure_initial, **options)
+    end = entry(solver, "range_end", _PURPOSE)(pocket.material, pocket.pressure_initial, **options)
     if force <= end:
         return force
-    at_end = solver.compress(pocket.material, pocket.pressure_initial, end, **options)
+    at_end = entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, end, **options)
     reason = CLAMP_PLANE if abs(at_end.contact_area - 1.0) < _FULL_CONTACT else "the force has a maximum"
     raise beyond_range(f"{key} = {quote(given)} (Fhat = {force:.10g})",
                        f"{written_like(end * pocket.force_scale_N, given, 'force')} (Fhat = {end:.10g})", reason)

@@ -40,6 +40,7 @@ from .inverse import force_where, range_end
 from .physical import Pocket
 from .rangeend import check_force
 from .slopes import curve_with_slopes
+from .solvers import entry
 
 __all__ = ["Reading", "sense", "calibration", "is_table", "MAX_POINTS"]
 
@@ -96,7 +97,7 @@ def _beyond(pocket: Pocket, what: str, given) -> OutOfRangeError:
     try:
         solver, options = pocket.solver(), pocket.options()
         end = range_end(solver, pocket.material, pocket.pressure_initial, **options)
-        q = solver.compress(pocket.material, pocket.pressure_initial, end, **options).pressure_ratio
+        q = entry(solver, "compress", what)(pocket.material, pocket.pressure_initial, end, **options).pressure_ratio
         top = f" (it reaches {written_like(q * pocket.pressure_initial_Pa, given, 'pressure')}, P/P_I = {q:.6g})"
     except PocketError:  # the reason stands without the number
         pass

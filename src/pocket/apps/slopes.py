@@ -13,6 +13,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from pocket.core.solver import Solver
+
+from .solvers import entry
+
 __all__ = ["curve_with_slopes"]
 
 _STEP = 1e-4  # relative finite-difference step (see the module docstring)
@@ -25,12 +29,14 @@ def _stencil(f):
     return h, (f + h, f + 2.0 * h), (2.0, -0.5)  # plus -1.5 v(f)
 
 
-def curve_with_slopes(solver, material, pressure_initial, forces, keys, **options):
-    """States at ``forces`` (Fhat) and {key: array of d key / d Fhat} for each of ``keys``."""
+def curve_with_slopes(solver: Solver, material, pressure_initial, forces, keys, **options):
+    """States at ``forces`` (Fhat) and {key: array of d key / d Fhat} for each of ``keys``, by ``solver``'s
+    ``compression_curve`` (its record)."""
     forces = [float(f) for f in forces]
     stencils = [_stencil(f) for f in forces]
     points = sorted(set(forces) | {x for _, xs, _ in stencils for x in xs})
-    states = dict(zip(points, solver.compression_curve(material, pressure_initial, points, **options), strict=True))
+    curve = entry(solver, "compression_curve", "the slopes of a compression curve")
+    states = dict(zip(points, curve(material, pressure_initial, points, **options), strict=True))
     slopes = {}
     for key in keys:
         out = []

@@ -1,22 +1,22 @@
 """Solvers by name, from their records (``pocket.core.solver``).
 
-``SOLVERS`` maps a name to the solver's record; ``get_solver`` imports the
-module of its entry points, ``solver_options`` checks the options a user gave
-against the record (an option the solver does not take is an ``InputError``).
-Reading the records imports no solver code: each package loads its entry
-points on first use, so a shooting run does not pay for scikit-fem's import.
+``SOLVERS`` maps a name to the solver's record; ``entry`` gives one of its entry
+points (a solver without it is a one-line ``InputError`` naming the solvers that
+have it), ``solver_options`` checks the options a user gave against the record
+(an option the solver does not take is an ``InputError``). Reading the records
+imports no solver code: each package loads its entry points on first use, so a
+shooting run does not pay for scikit-fem's import.
 """
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Callable
 
 from pocket import analytical, fem, shooting
 from pocket.core.errors import InputError
 from pocket.core.solver import Solver
 
-__all__ = ["SOLVERS", "record", "get_solver", "solver_options", "all_options"]
+__all__ = ["SOLVERS", "record", "entry", "solver_options", "all_options"]
 
 #: name -> record
 SOLVERS: dict[str, Solver] = {s.SOLVER.name: s.SOLVER for s in (shooting, fem, analytical)}
@@ -29,9 +29,11 @@ def record(name: str) -> Solver:
     return SOLVERS[name]
 
 
-def get_solver(name: str):
-    """The module of the solver ``name``: its entry points (``pocket.core.solver``)."""
-    return importlib.import_module(record(name).module)
+def entry(solver: Solver | str, name: str, purpose: str) -> Callable:
+    """The entry point ``name`` of ``solver`` (its record or its name), asked for ``purpose``
+    (``Solver.entry``; the error offers the solvers of ``SOLVERS`` that have it)."""
+    solver = record(solver) if isinstance(solver, str) else solver
+    return solver.entry(name, purpose, [n for n, s in SOLVERS.items() if s.serves(name)])
 
 
 def solver_options(name: str, given: dict, step: str, spell: Callable[[str], str] = str) -> dict:

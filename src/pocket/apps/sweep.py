@@ -63,7 +63,7 @@ from pocket.core.materials import Material, as_material
 from pocket.core.states import CHECKS, CompressedState
 
 from .folders import write_whole
-from .solvers import get_solver, record
+from .solvers import entry, record
 from .sweepfile import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
 
 __all__ = ["COLUMNS", "STATUSES", "MAX_POINTS", "solve_point", "solve_curve", "run_sweep"]
@@ -97,7 +97,7 @@ def solve_point(solver: str, material, pressure_initial: float, force: float, op
     ``material`` is a Mooney-Rivlin alpha or a ``Material``; ``options`` the solver's, with the
     ``fluid`` (a ``Fluid``) if it is a gas."""
     try:
-        state = get_solver(solver).compress(material, pressure_initial, force, **options)
+        state = entry(solver, "compress", "a sweep point")(material, pressure_initial, force, **options)
     except (OutOfRangeError, ConvergenceError) as err:
         return _row(solver, material, pressure_initial, force, options, error=err)
     return _row(solver, material, pressure_initial, force, options, state)
@@ -114,8 +114,8 @@ def solve_curve(solver: str, material, pressure_initial: float, forces, options:
     """
     done = [0]
     try:
-        states = get_solver(solver).compression_curve(material, pressure_initial, forces,
-                                                      progress=lambda count, _: done.append(count), **options)
+        states = entry(solver, "compression_curve", "a sweep curve")(
+            material, pressure_initial, forces, progress=lambda count, _: done.append(count), **options)
     except (OutOfRangeError, ConvergenceError):
         k = done[-1]
         rows = solve_curve(solver, material, pressure_initial, forces[:k], options) if k else []
@@ -171,6 +171,8 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     materials = [check_alpha(a) for a in alphas or ()] if material is None else [as_material(material)]
     grid = _grid(materials, pressures, forces)
     options = record(solver).checked(dict(options or {}), "compress")
+    for name in ("compress", "compression_curve"):  # refused here, before the file is touched
+        entry(solver, name, "a sweep")
     fluid = as_fluid(fluid)
     if fluid.is_gas:
         options["fluid"] = fluid

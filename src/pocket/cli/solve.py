@@ -13,7 +13,7 @@ import json
 import math
 
 from pocket.apps.folders import check_replaceable
-from pocket.apps.solvers import SOLVERS, get_solver, record
+from pocket.apps.solvers import SOLVERS, entry
 from pocket.core.errors import ConvergenceError, InputError
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
@@ -81,18 +81,14 @@ def _fmt(value) -> str:
 
 
 def _solve(args, step: str, material, options: dict) -> list:
-    solver = get_solver(args.solver)
     if step == "inflate" and args.volume is not None:
-        if "inflate_volume" not in record(args.solver).entry_points:
-            offer = ", ".join(n for n, s in SOLVERS.items() if "inflate_volume" in s.entry_points)
-            raise InputError(f"--volume: solver {args.solver} has no volume-controlled inflation (solvers that "
-                             f"have it: {offer})")
-        return [solver.inflate_volume(material, args.volume, **options)]
+        return [entry(args.solver, "inflate_volume", "--volume")(material, args.volume, **options)]
     if step == "inflate":
-        return [solver.inflate(material, args.pressure, **options)]
+        return [entry(args.solver, "inflate", "--pressure")(material, args.pressure, **options)]
+    curve = entry(args.solver, "compression_curve", "--force")
     with progress_bar(f"compress ({args.solver})", " forces") as progress:
         extra = {} if progress is None or len(args.force) == 1 else {"progress": progress}
-        return solver.compression_curve(material, args.pressure, args.force, **options, **extra)
+        return curve(material, args.pressure, args.force, **options, **extra)
 
 
 def _main(args) -> int:

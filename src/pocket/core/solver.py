@@ -21,6 +21,10 @@ dimensionless units of ``pocket.core.states``:
 - ``compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
   **options) -> list[CompressedState]``
 
+A record lists the entry points its solver has (``entry_points``, keys of ``ENTRY_POINTS``), and callers
+get them from it (``Solver.entry``): a request a solver cannot serve is a one-line ``InputError`` naming
+the solver and what it lacks, never an ``AttributeError`` from its module.
+
 ``material`` is the rubber: a number is a Mooney-Rivlin alpha = C2/C1 (today's path, results
 unchanged), a ``pocket.core.materials.Material`` any law in any stress unit (the solver scales it to
 mu_0 itself; ``pocket.core.materials.as_material`` checks either). ``fluid`` is the fluid sealed in
@@ -44,7 +48,8 @@ no end, as for a rubber that locks before the sheet reaches the clamp plane).
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable
+import importlib
+from collections.abc import Callable, Iterable
 
 from .errors import InputError
 from .inputs import check_file
@@ -53,9 +58,10 @@ __all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS"]
 
 #: the two steps of the problem
 STEPS = ("inflate", "compress")
-#: entry point -> the step it belongs to
-ENTRY_POINTS = {"inflate": "inflate", "inflate_volume": "inflate", "compress": "compress",
-                "compression_curve": "compress"}
+#: entry point -> what it computes, in the words of an error naming what a solver lacks
+ENTRY_POINTS = {"inflate": "pressure-controlled inflation", "inflate_volume": "volume-controlled inflation",
+                "compress": "compression", "compression_curve": "compression curve",
+                "range_end": "end of the compression range"}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -93,6 +99,31 @@ class Solver:
     module: str
     entry_points: tuple[str, ...]
     options: tuple[Option, ...] = ()
+
+    def __post_init__(self):
+        unknown = sorted(set(self.entry_points) - set(ENTRY_POINTS))
+        if unknown:
+            raise ValueError(f"solver {self.name}: {', '.join(unknown)} not among the entry points "
+                             f"{', '.join(ENTRY_POINTS)}")
+
+    def serves(self, name: str) -> bool:
+        """Whether this solver has the entry point ``name`` (a key of ``ENTRY_POINTS``)."""
+        if name not in ENTRY_POINTS:
+            raise ValueError(f"{name!r} is not an entry point (they are {', '.join(ENTRY_POINTS)})")
+        return name in self.entry_points
+
+    def entry(self, name: str, purpose: str, alternatives: Iterable[str] = ()) -> Callable:
+        """The entry point ``name`` (a function of ``module``), asked for ``purpose``: what needs it, as the
+        user gave it (``"initial.volume = '2 mL'"``, ``"--volume"``).
+
+        A solver without it is a one-line ``InputError`` naming ``purpose``, the solver, what it lacks and
+        ``alternatives`` (the names of solvers that have it).
+        """
+        if not self.serves(name):
+            alternatives = ", ".join(alternatives)
+            offer = f"; solvers that have it: {alternatives}" if alternatives else ""
+            raise InputError(f"{purpose}: solver {self.name} has no {ENTRY_POINTS[name]} (entry point {name}{offer})")
+        return getattr(importlib.import_module(self.module), name)
 
     def option(self, name: str) -> Option | None:
         """The option ``name``, or None if this solver does not take it."""
