@@ -61,7 +61,8 @@ def test_the_fem_refuses_a_contact_method_that_does_not_pose_the_indenter(cone, 
 
 
 @pytest.mark.parametrize("make, match", [
-    (lambda: Indenter("sphere"), r"^indenter = 'sphere', but it must be one of flat"),
+    (lambda: Indenter("cylinder"), r"^indenter = 'cylinder', but it must be one of flat, sphere"),
+    (lambda: Indenter("sphere"), r"^indenter sphere takes the parameters \(radius\), not \(\)$"),
     (lambda: Indenter("flat", {"radius": 1.0}), r"^indenter flat takes the parameters \(\), not \(radius\)$"),
     (lambda: Indenter(TOY.name, {"slope": float("nan")}), r"^indenter.slope = nan is not finite"),
     (lambda: Indenter(TOY.name), r"takes the parameters \(slope\), not \(\)$"),
@@ -95,3 +96,28 @@ def test_states_carry_their_indenter_and_the_flat_plate_is_the_default(compressi
     given = compression_curve(0.1, 0.3, [0.0, 0.5], indenter=FLAT, **options)
     assert [s.indenter for s in default + given] == [FLAT] * 4
     assert [s.scalars() for s in default] == [s.scalars() for s in given]
+
+
+def test_the_sphere_is_its_cap_with_the_slope_and_curvature_of_its_profile():
+    """Exact answers: the slope and the second derivative of z are those of finite differences of z
+    (central, step 1e-5: error h^2 z'''/6, 1e-8 at rho = 0.35 where z''' ~ 600, relative 1e-7); the
+    curvature of a sphere is 1/R_s everywhere on its cap; z(R_s) = R_s at the equator, NaN beyond."""
+    from pocket.core.indenters import sphere
+
+    tip = sphere(0.4)
+    rho = np.linspace(0.0, 0.35, 8)
+    h = 1e-5
+    assert np.allclose(tip.slope(rho), (tip.height(rho + h) - tip.height(rho - h)) / (2 * h), rtol=1e-7, atol=1e-12)
+    second = (tip.height(rho + h) - 2 * tip.height(rho) + tip.height(rho - h)) / h**2
+    assert np.allclose(tip.curvature(rho) * (1 + tip.slope(rho) ** 2) ** 1.5, second, rtol=1e-4)
+    assert np.allclose(tip.curvature(rho), 1 / 0.4, rtol=1e-12)
+    assert tip.height(0.4) == 0.4 and np.isnan(tip.height(0.5))
+    assert not tip.pressure_area
+
+
+@pytest.mark.parametrize("radius", [0.0, -1.0, float("inf"), float("nan")])
+def test_a_sphere_of_no_size_is_an_input_error(radius):
+    from pocket.core.indenters import sphere
+
+    with pytest.raises(InputError, match="radius"):
+        sphere(radius)

@@ -5,11 +5,16 @@ the dome. Its lower surface is its height profile z(rho) above its lowest point,
 of the clamp radius R, with z(0) = 0: the surface lies at eta = h + z(rho) when the
 indenter's lowest point is at height h.
 
-=====  ========  ==========  ====================
-kind   z(rho)    parameters  F = P A_c identity
-=====  ========  ==========  ====================
-flat   0         (none)      yes
-=====  ========  ==========  ====================
+======  ==========================  ==========  ====================
+kind    z(rho)                      parameters  F = P A_c identity
+======  ==========================  ==========  ====================
+flat    0                           (none)      yes
+sphere  R_s - sqrt(R_s^2 - rho^2)   radius R_s  no
+======  ==========================  ==========  ====================
+
+A sphere's surface exists for rho <= R_s only (its equator); there z is R_s and the slope
+infinite, and beyond it ``height``, ``slope`` and ``curvature`` are NaN: a sheet wrapping
+past the equator is outside the model, which a solver says in its own words.
 
 On a flat plate the sheet in contact lies flat and carries the fluid pressure P straight
 to the plate, and a smooth edge exerts no line force: the force is F = P A_c exactly, an
@@ -36,7 +41,7 @@ import numpy as np
 from .errors import InputError
 from .inputs import check_finite, quote
 
-__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation"]
+__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "sphere"]
 
 T = TypeVar("T")
 
@@ -46,13 +51,18 @@ class Kind:
     """One kind of indenter: its ``name``, a one-line ``summary``, its ``parameters`` (names, in
     order; lengths in units of R), its ``profile`` z(params, rho) (params: name -> float; rho: float
     array of any shape; returns z of the same shape, units R) and ``pressure_area``, whether
-    F = P A_c holds as an identity (module docstring)."""
+    F = P A_c holds as an identity (module docstring). ``slope`` and ``second`` are dz/drho and
+    d2z/drho2 with the signature of ``profile`` (None: the flat plate's zeros); ``check`` refuses
+    parameters that make no indenter (params -> None, an ``InputError`` naming the parameter)."""
 
     name: str
     summary: str
     parameters: tuple[str, ...]
     profile: Callable[[Mapping[str, float], np.ndarray], np.ndarray]
     pressure_area: bool
+    slope: Callable[[Mapping[str, float], np.ndarray], np.ndarray] | None = None
+    second: Callable[[Mapping[str, float], np.ndarray], np.ndarray] | None = None
+    check: Callable[[Mapping[str, float]], None] | None = None
 
 
 #: kind name -> its definition
@@ -86,6 +96,8 @@ class Indenter:
             raise InputError(f"indenter {self.kind} takes the parameters ({', '.join(names)}), "
                              f"not ({', '.join(given)})")
         values = tuple((n, check_finite(f"indenter.{n}", given[n])) for n in names)
+        if KINDS[self.kind].check is not None:
+            KINDS[self.kind].check(dict(values))
         object.__setattr__(self, "params", values)
 
     @property
@@ -104,6 +116,21 @@ class Indenter:
         shape; the result has the same shape)."""
         return self.definition.profile(dict(self.params), np.asarray(rho, dtype=float))
 
+    def slope(self, rho) -> np.ndarray:
+        """dz/drho at the radii ``rho`` (dimensionless; any shape, the result has the same shape)."""
+        rho = np.asarray(rho, dtype=float)
+        fn = self.definition.slope
+        return np.zeros_like(rho) if fn is None else fn(dict(self.params), rho)
+
+    def curvature(self, rho) -> np.ndarray:
+        """The meridional curvature of the surface, z'' / (1 + z'^2)^(3/2), at the radii ``rho`` (units
+        1/R, positive where the surface is convex seen from below: 1/R_s everywhere on a sphere)."""
+        rho = np.asarray(rho, dtype=float)
+        fn = self.definition.second
+        if fn is None:
+            return np.zeros_like(rho)
+        return fn(dict(self.params), rho) / (1.0 + self.slope(rho) ** 2) ** 1.5
+
 
 def _flat(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
     """The flat plate: z = 0 everywhere."""
@@ -112,8 +139,46 @@ def _flat(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
 
 register(Kind("flat", "a flat plate, wider than the pocket", (), _flat, pressure_area=True))
 
+
+def _root(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+    """sqrt(R_s^2 - rho^2), NaN past the equator rho > R_s (no warning)."""
+    inside = np.square(params["radius"]) - np.square(rho)
+    with np.errstate(invalid="ignore"):
+        return np.where(inside >= 0.0, np.sqrt(np.maximum(inside, 0.0)), np.nan)
+
+
+def _sphere(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+    """The lower cap of a sphere of radius R_s: z = R_s - sqrt(R_s^2 - rho^2)."""
+    return params["radius"] - _root(params, rho)
+
+
+def _sphere_slope(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+    """dz/drho = rho / sqrt(R_s^2 - rho^2) (infinite at the equator)."""
+    with np.errstate(divide="ignore"):
+        return rho / _root(params, rho)
+
+
+def _sphere_second(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+    """d2z/drho2 = R_s^2 / (R_s^2 - rho^2)^(3/2), so that the curvature is 1/R_s."""
+    with np.errstate(divide="ignore"):
+        return np.square(params["radius"]) / _root(params, rho) ** 3
+
+
+def _sphere_check(params: Mapping[str, float]) -> None:
+    if not params["radius"] > 0.0:
+        raise InputError(f"indenter.radius = {params['radius']:g}, but a sphere's radius must be positive")
+
+
+register(Kind("sphere", "a sphere of radius R_s (a fingertip), its lowest point on the axis", ("radius",), _sphere,
+              pressure_area=False, slope=_sphere_slope, second=_sphere_second, check=_sphere_check))
+
 #: the flat plate (every solver's default)
 FLAT = Indenter("flat")
+
+
+def sphere(radius: float) -> Indenter:
+    """A sphere of radius R_s = ``radius`` (units R)."""
+    return Indenter("sphere", (("radius", radius),))
 
 
 def as_indenter(value) -> Indenter:
