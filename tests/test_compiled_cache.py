@@ -203,7 +203,7 @@ def _copy_repository(target: pathlib.Path) -> pathlib.Path:
     """The files a build of pocket reads, copied to ``target`` (the build writes beside its sources)."""
     for name in ("pyproject.toml", "README.md"):
         shutil.copy(REPOSITORY / name, target / name)
-    for name in ("src", "shooting", "fem", "meshes", "validation"):
+    for name in ("src", "shooting", "fem", "analytical", "meshes", "validation"):
         shutil.copytree(REPOSITORY / name, target / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
     return target
 

@@ -102,14 +102,14 @@ def test_one_top_level_name_installed():
 def test_generic_names_are_not_importable_and_do_not_shadow(tmp_path):
     """From a neutral folder, ``import fem`` (and the other former top-level names) fails, the
     subpackages import, and a user's own fem.py / validation.py beside the command cannot shadow them."""
-    for name in ("fem", "shooting", "meshes", "validation"):
+    for name in ("fem", "shooting", "analytical", "meshes", "validation"):
         proc = subprocess.run([sys.executable, "-c", f"import {name}"], capture_output=True, text=True,
                               cwd=tmp_path)
         assert proc.returncode == 1 and f"No module named '{name}'" in proc.stderr
     proc = subprocess.run([sys.executable, "-c", "import pocket.fem, pocket.shooting, pocket.meshes, "
                            "pocket.validation, pocket.analytical"], capture_output=True, text=True, cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
-    for name in ("fem", "shooting", "meshes", "validation"):
+    for name in ("fem", "shooting", "analytical", "meshes", "validation"):
         (tmp_path / f"{name}.py").write_text("raise RuntimeError('the user's own module was imported')\n")
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "inflate", "--alpha", "0.3", "--pressure", "0.3",
                            "--solver", "fem", "--elements", "8", "--json"], capture_output=True, text=True,
