@@ -29,8 +29,11 @@ so that reading ``SOLVER`` costs nothing.
 
 import importlib
 
+from pocket.core.importname import require_import_name
 from pocket.core.inputs import check_choice, check_count, check_flag, check_positive, check_tolerance
 from pocket.core.solver import Option, Solver
+
+require_import_name(__name__, "pocket.fem")
 
 __all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height",
            "default_mesh", "DEFAULT_ELEMENTS", "DEFAULT_ELEMENTS_P1", "MAX_ELEMENTS", "MIN_ELEMENTS",

@@ -18,11 +18,12 @@ The default mesh (``default_mesh``) is ``meshes.polar(DEFAULT_ELEMENTS,
 power=POLAR_POWER)``: graded towards the axis, where the pole stretch needs
 it (``post``), and mapped onto the free part by the edge-fitted contact. Its
 size was chosen by measurement against the shooting solver (rtol 1e-12) on
-the validation cases at Fhat = 0, 0.05, 0.19, 1 and 0.95 of the end of each
-range (``python benchmarks/bench_fem.py`` prints the table): with P2 the worst
-relative error in any reported scalar is 3e-8 at 64 elements, 2e-9 at 128,
-4e-10 at 192 and 1.3e-10 at 256 (the pole stretch; 8e-11 in compression);
-256 is the smallest of these with a margin of about 8 below the 1e-9 bar.
+the 14 validation cases (every law, liquids and gases) at Fhat = 0, 0.05, 0.19,
+1 and 0.95 of the end of each range (``python benchmarks/bench_fem.py`` prints
+the table): with P2 the worst relative error in any reported scalar is 1.5e-7
+at 64 elements, 9.3e-9 at 128, 1.8e-9 at 192, 5.8e-10 at 256 and 1.1e-10 at 384,
+each the height of the Gent rubber near its lock at Fhat = 49; 256 is the
+smallest of these below the 1e-9 bar, with a margin of 1.7.
 The P2 error falls as h^4, so 10 times the elements buys 1e-4 of the error.
 P1 (error O(h^2)) gets 1024 elements by default: within 1e-6 of shooting.
 """

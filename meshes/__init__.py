@@ -10,8 +10,12 @@ to exactly 1.0 (elements join consecutive nodes).
 - ``named(name)`` loads one of ``NAMES``, meshes stored in this folder.
 """
 
-from .files import check, read, write
-from .generate import graded, polar, refined, uniform
-from .named import NAMES, named
+from pocket.core.importname import require_import_name
+
+require_import_name(__name__, "pocket.meshes")  # before the modules below load under a wrong name
+
+from .files import check, read, write  # noqa: E402
+from .generate import graded, polar, refined, uniform  # noqa: E402
+from .named import NAMES, named  # noqa: E402
 
 __all__ = ["NAMES", "check", "graded", "named", "polar", "read", "refined", "uniform", "write"]

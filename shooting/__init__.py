@@ -17,8 +17,11 @@ command line does, to build its flags) costs nothing.
 
 import importlib
 
+from pocket.core.importname import require_import_name
 from pocket.core.inputs import check_tolerance
 from pocket.core.solver import Option, Solver
+
+require_import_name(__name__, "pocket.shooting")
 
 __all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "range_end"]
 

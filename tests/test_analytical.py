@@ -3,10 +3,10 @@
 import numpy as np
 import pytest
 import sympy as sp
+from pocket.analytical import model as analytical
 from scipy.integrate import quad
 
 from pocket import shooting
-from pocket.analytical import model as analytical
 from pocket.core.errors import OutOfRangeError
 
 SAMPLE = 47 / 160

@@ -171,10 +171,10 @@ def test_closed_pipe_ends_quietly():
 def test_python_dash_m_pocket_runs_the_command():
     """Exact answer: `python -m pocket --version` prints what `pocket --version` does, from the installed
     metadata, and `python -m pocket inflate` solves (status 0, JSON with the asked pressure)."""
-    from pocket.apps.provenance import version
+    from pocket.apps.provenance import described
 
     done = subprocess.run([sys.executable, "-m", "pocket", "--version"], capture_output=True, text=True)
-    assert (done.returncode, done.stdout.split(), done.stderr) == (0, ["pocket", version()], "")
+    assert (done.returncode, done.stdout.strip(), done.stderr) == (0, f"pocket {described()}", "")
     done = subprocess.run([sys.executable, "-m", "pocket", "inflate", "--alpha", "0.3", "--pressure", "0.3",
                            "--json"], capture_output=True, text=True)
     assert done.returncode == 0 and json.loads(done.stdout)["pressure"] == 0.3, done.stderr

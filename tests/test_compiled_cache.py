@@ -1,12 +1,12 @@
 """The compiled code's on-disk cache: outside the package, fresh after an edit, never a stop (``pocket.core.compiled``).
 
-Each case runs a copy of a solver package (``shooting`` or ``fem``), under a name of its
-own, in a fresh process whose home and temporary folder are the test's: compiling there
-takes seconds, so these are slow tests. The child prints where the cache of its main
-kernel lives, that kernel's cache hits and misses, and its result. Folders are made
-unusable in a way that holds for root too (CI may run as root, for whom permission bits
-do not stop writes): the cache locators create their folder with os.makedirs, which
-fails where a file of that name is in the way.
+Each case runs a copy of pocket (its folders placed as the installation maps them; a
+solver answers only to its name ``pocket.<solver>``), first on the path, in a fresh
+process whose home and temporary folder are the test's: compiling there takes seconds,
+so these are slow tests. The child prints where the cache of its main kernel lives, that
+kernel's cache hits and misses, and its result. Folders are made unusable in a way that
+holds for root too (CI may run as root, for whom permission bits do not stop writes): the
+cache locators create their folder with os.makedirs, which fails where a file of that name is in the way.
 """
 
 import json
@@ -18,16 +18,19 @@ import stat
 import subprocess
 import sys
 import sysconfig
+import tomllib
 
-import pocket.fem
-import pocket.shooting
 import pytest
+
+from pocket.apps.provenance import version
 
 pytestmark = pytest.mark.slow
 
 REPOSITORY = pathlib.Path(__file__).resolve().parents[1]
-VERSION = "0.1.0"
-SOURCES = {"shooting": pathlib.Path(pocket.shooting.__file__).parent, "fem": pathlib.Path(pocket.fem.__file__).parent}
+# the installed pocket's version names the cache's subfolder (the copies run by these tests are of it)
+VERSION = version()
+# a build from a copy of the sources without git history: setuptools-scm's fallback_version, no commit
+FALLBACK = tomllib.loads((REPOSITORY / "pyproject.toml").read_text())["tool"]["setuptools_scm"]["fallback_version"]
 # each child: the kernel's cache folder, hits and misses, and a result to compare bit for bit
 CHILDREN = {
     "shooting": """
@@ -54,10 +57,14 @@ print(json.dumps([stats.cache_path, sum(stats.cache_hits.values()), sum(stats.ca
 CALLEES = {"shooting": "tensions.py", "fem": "laws.py"}
 
 
-def _copy(folder: pathlib.Path, solver: str, package: str) -> pathlib.Path:
-    target = folder / package
-    shutil.copytree(SOURCES[solver], target, ignore=shutil.ignore_patterns("__pycache__"))
-    return target
+def _copy(folder: pathlib.Path, solver: str) -> pathlib.Path:
+    """A copy of pocket in ``folder``, each package where pyproject's mapping installs it; returns the
+    copy of ``solver``'s folder (``folder/pocket/<solver>``)."""
+    mapping = tomllib.loads((REPOSITORY / "pyproject.toml").read_text())["tool"]["setuptools"]["package-dir"]
+    for name in sorted(mapping, key=len):  # pocket before the folders it holds
+        shutil.copytree(REPOSITORY / mapping[name], folder / name.replace(".", "/"),
+                        ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    return folder / "pocket" / solver
 
 
 def _files(folder: pathlib.Path) -> set:
@@ -81,10 +88,13 @@ def _environment(home, tmp, **extra):
     return env
 
 
-def _run(solver, folder, package, home, tmp, **extra):
-    """Run the solver's child in a fresh process; returns (cache path, hits, misses, result)."""
+def _run(package, home, tmp, **extra):
+    """Run the child of the solver copied to ``package`` (a ``_copy``) in a fresh process, that copy of pocket
+    first on the path; returns (cache path, hits, misses, result)."""
+    folder = package.parents[1]
     env = _environment(home, tmp, PYTHONPATH=str(folder), **extra)
-    done = subprocess.run([sys.executable, "-c", CHILDREN[solver].format(package=package)], env=env, cwd=folder,
+    code = CHILDREN[package.name].format(package=f"pocket.{package.name}")
+    done = subprocess.run([sys.executable, "-c", code], env=env, cwd=folder,
                           capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
@@ -110,11 +120,11 @@ def test_the_cache_is_in_the_users_cache_folder_and_nothing_is_written_into_the_
     """Exact answer: the cache is ~/.cache/pocket-mechanics/<version>/..., the package's files are those
     copied (bytecode off: nothing of numba's), and a second process loads the kernel (hits, no miss) and
     computes the same numbers, bit for bit, as the compiled code did."""
-    package = _copy(tmp_path / "site", solver, f"{solver}_clean")
+    package = _copy(tmp_path / "site", solver)
     before = _files(package)
     home, tmp = _folders(tmp_path)
-    first = _run(solver, package.parent, package.name, home, tmp)
-    second = _run(solver, package.parent, package.name, home, tmp)
+    first = _run(package, home, tmp)
+    second = _run(package, home, tmp)
     assert first[0].startswith(str(home / ".cache" / "pocket-mechanics" / VERSION)) and first[2] >= 1
     assert second[0] == first[0] and second[1] >= 1 and second[2] == 0 and second[3] == first[3]
     assert _files(package) == before
@@ -122,10 +132,10 @@ def test_the_cache_is_in_the_users_cache_folder_and_nothing_is_written_into_the_
 
 def test_the_cache_folder_can_be_chosen_by_environment(tmp_path):
     """Exact answer: with POCKET_CACHE_DIR set, the cache is there, in the version's subfolder."""
-    package = _copy(tmp_path / "site", "shooting", "shooting_chosen")
+    package = _copy(tmp_path / "site", "shooting")
     home, tmp = _folders(tmp_path)
     chosen = tmp_path / "chosen"
-    path = _run("shooting", package.parent, package.name, home, tmp, POCKET_CACHE_DIR=str(chosen))[0]
+    path = _run(package, home, tmp, POCKET_CACHE_DIR=str(chosen))[0]
     assert path.startswith(str(chosen / VERSION))
 
 
@@ -133,14 +143,14 @@ def test_the_cache_folder_can_be_chosen_by_environment(tmp_path):
 def test_without_a_writable_cache_folder_the_cache_is_a_private_temp_folder(tmp_path, solver):
     """Exact answer: the package and the home are read-only, so the cache is <TMPDIR>/pocket-numba-<uid>,
     mode 0700, and a second process loads it and computes the same numbers, bit for bit."""
-    package = _copy(tmp_path / "site", solver, f"{solver}_ro")
-    _read_only(package.parent)
+    package = _copy(tmp_path / "site", solver)
+    _read_only(package.parents[1])
     home, tmp = _homeless(tmp_path)
-    first = _run(solver, package.parent, package.name, home, tmp)
+    first = _run(package, home, tmp)
     private = tmp / f"pocket-numba-{os.getuid()}"
     assert first[0].startswith(str(private)) and first[2] >= 1
     assert stat.S_IMODE(private.stat().st_mode) == 0o700
-    second = _run(solver, package.parent, package.name, home, tmp)
+    second = _run(package, home, tmp)
     assert second[1] >= 1 and second[2] == 0 and second[3] == first[3]
 
 
@@ -148,23 +158,23 @@ def test_without_a_writable_cache_folder_the_cache_is_a_private_temp_folder(tmp_
 def test_nowhere_to_cache_compiles_without_a_cache(tmp_path, solver):
     """Exact answer: with the home and the private temp folder unusable, the kernel still runs, uncached
     (no cache path, no hit; numba's own njit(cache=True) raised "no locator available" at import here)."""
-    package = _copy(tmp_path / "site", solver, f"{solver}_nowhere")
+    package = _copy(tmp_path / "site", solver)
     home, tmp = _homeless(tmp_path)
     _blocked(tmp / f"pocket-numba-{os.getuid()}")
-    path, hits, _, result = _run(solver, package.parent, package.name, home, tmp)
+    path, hits, _, result = _run(package, home, tmp)
     assert path is None and hits == 0 and result
 
 
 def test_a_damaged_entry_is_compiled_afresh(tmp_path):
     """Exact answer: with every data file of the cache overwritten by junk, the next process has a miss
     (compiles afresh) and computes the same numbers, bit for bit."""
-    package = _copy(tmp_path / "site", "shooting", "shooting_damaged")
+    package = _copy(tmp_path / "site", "shooting")
     home, tmp = _folders(tmp_path)
-    first = _run("shooting", package.parent, package.name, home, tmp)
+    first = _run(package, home, tmp)
     damaged = list(pathlib.Path(first[0]).glob("*.nbc"))
     for path in damaged:
         path.write_bytes(b"junk")
-    second = _run("shooting", package.parent, package.name, home, tmp)
+    second = _run(package, home, tmp)
     assert damaged and second[2] >= 1 and second[3] == first[3]
 
 
@@ -188,14 +198,14 @@ def test_editing_a_compiled_callee_makes_the_cache_stale(tmp_path, solver):
     file the kernel inlines (shooting: tensions.py; fem: laws.py) is edited (a comment: same code,
     other contents), the entry is stale and the kernel is compiled afresh (0 hits, a miss), where numba's
     own stamp (the kernel's file alone) would have loaded the old machine code."""
-    package = _copy(tmp_path / "site", solver, f"{solver}_edited")
+    package = _copy(tmp_path / "site", solver)
     home, tmp = _folders(tmp_path)
-    _run(solver, package.parent, package.name, home, tmp)
-    warm = _run(solver, package.parent, package.name, home, tmp)
+    _run(package, home, tmp)
+    warm = _run(package, home, tmp)
     assert warm[1] >= 1 and warm[2] == 0
     with (package / CALLEES[solver]).open("a") as handle:
         handle.write("\n# an edit\n")
-    edited = _run(solver, package.parent, package.name, home, tmp)
+    edited = _run(package, home, tmp)
     assert edited[1] == 0 and edited[2] >= 1 and edited[3] == warm[3]
 
 
@@ -203,7 +213,7 @@ def _copy_repository(target: pathlib.Path) -> pathlib.Path:
     """The files a build of pocket reads, copied to ``target`` (the build writes beside its sources)."""
     for name in ("pyproject.toml", "README.md"):
         shutil.copy(REPOSITORY / name, target / name)
-    for name in ("src", "shooting", "fem", "meshes", "validation"):
+    for name in ("src", "shooting", "fem", "analytical", "meshes", "validation"):
         shutil.copytree(REPOSITORY / name, target / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
     return target
 
@@ -239,5 +249,5 @@ def test_an_editable_install_over_an_uninstalled_regular_one_runs(tmp_path):
     regular = run(*solve)
     run(*pip, "uninstall", "-y", "pocket-mechanics")
     run(*install, "-e", str(source))
-    assert run(str(venv / "bin" / "pocket"), "--version").split() == ["pocket", VERSION]
+    assert run(str(venv / "bin" / "pocket"), "--version").strip() == f"pocket {FALLBACK} (commit unknown)"
     assert run(*solve) == regular

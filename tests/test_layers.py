@@ -99,17 +99,45 @@ def test_one_top_level_name_installed():
     assert top is not None and top.split() == ["pocket"]
 
 
+_IMPORT_FROM_THE_ROOT = r"""
+import importlib, json, sys
+name = sys.argv[1]
+try:
+    importlib.import_module(name)
+    message = None
+except ImportError as error:
+    message = str(error)
+print(json.dumps([message, sorted(m for m in sys.modules if m == name or m.startswith(name + "."))]))
+"""
+
+
+@pytest.mark.parametrize("name", ["shooting", "fem", "analytical", "meshes", "validation"])
+def test_no_second_copy_from_the_repository_root(name):
+    """Exact answer: from the repository's root, where the folder ``name`` is on ``sys.path``, ``import name``
+    fails with one line that says to import ``pocket.<name>``, and leaves no module of that name loaded;
+    ``pocket.<name>`` still imports there."""
+    proc = subprocess.run([sys.executable, "-c", _IMPORT_FROM_THE_ROOT, name], capture_output=True, text=True,
+                          cwd=ROOT)
+    assert proc.returncode == 0, proc.stderr
+    message, loaded = json.loads(proc.stdout)
+    assert message is not None and message.startswith(f"import pocket.{name}, not {name}:")
+    assert "\n" not in message and loaded == []
+    proc = subprocess.run([sys.executable, "-c", _IMPORT_FROM_THE_ROOT, f"pocket.{name}"], capture_output=True,
+                          text=True, cwd=ROOT)
+    assert proc.returncode == 0 and json.loads(proc.stdout)[0] is None, proc.stderr
+
+
 def test_generic_names_are_not_importable_and_do_not_shadow(tmp_path):
     """From a neutral folder, ``import fem`` (and the other former top-level names) fails, the
     subpackages import, and a user's own fem.py / validation.py beside the command cannot shadow them."""
-    for name in ("fem", "shooting", "meshes", "validation"):
+    for name in ("fem", "shooting", "analytical", "meshes", "validation"):
         proc = subprocess.run([sys.executable, "-c", f"import {name}"], capture_output=True, text=True,
                               cwd=tmp_path)
         assert proc.returncode == 1 and f"No module named '{name}'" in proc.stderr
     proc = subprocess.run([sys.executable, "-c", "import pocket.fem, pocket.shooting, pocket.meshes, "
                            "pocket.validation, pocket.analytical"], capture_output=True, text=True, cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
-    for name in ("fem", "shooting", "meshes", "validation"):
+    for name in ("fem", "shooting", "analytical", "meshes", "validation"):
         (tmp_path / f"{name}.py").write_text("raise RuntimeError('the user's own module was imported')\n")
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "inflate", "--alpha", "0.3", "--pressure", "0.3",
                            "--solver", "fem", "--elements", "8", "--json"], capture_output=True, text=True,

@@ -4,12 +4,12 @@ import re
 
 import numpy as np
 import pytest
+from pocket.analytical import model as analytical
 from scipy.integrate import quad, solve_ivp
 from scipy.interpolate import CubicSpline
 from scipy.optimize import brentq
 
 from pocket import shooting
-from pocket.analytical import model as analytical
 from pocket.core import smallstrain
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.states import InflatedState

@@ -20,6 +20,10 @@ paper's figures, the gas and other-law figures, plots, 3-D picture), ``pockets``
 
 import importlib
 
+from pocket.core.importname import require_import_name
+
+require_import_name(__name__, "pocket.validation")
+
 __all__ = ["load", "run", "write_report", "DEFAULT", "QUICK"]
 
 _HOMES = {"load": "suite", "run": "runner", "write_report": "report", "DEFAULT": "plan", "QUICK": "plan"}

@@ -16,7 +16,7 @@ import importlib
 import os
 import sys
 
-from pocket.apps.provenance import version
+from pocket.apps.provenance import described
 from pocket.core.errors import PocketError, exit_status
 
 from .common import EXIT_CODES, Parser
@@ -32,7 +32,7 @@ def _parser() -> Parser:
     parser = Parser(prog="pocket", description="Mechanics of pressurised elastic pockets: a clamped rubber "
                     "sheet inflated by a fluid and pressed by a flat plate (Bouremel et al., 'Compression of "
                     "pressurised elastic pockets').", epilog=EXIT_CODES)
-    parser.add_argument("--version", action="version", version=f"pocket {version()}")
+    parser.add_argument("--version", action="version", version=f"pocket {described()}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND")
     for name in COMMANDS:
         importlib.import_module(name).register(sub)

@@ -9,7 +9,10 @@ reaches the clamp. The model and its corrections are derived in
 
 import importlib
 
+from pocket.core.importname import require_import_name
 from pocket.core.solver import Solver
+
+require_import_name(__name__, "pocket.analytical")
 
 __all__ = ["SOLVER", "inflate", "compress", "compression_curve", "range_end", "shape_function"]
 
