@@ -4,13 +4,13 @@ before any work, rather than solved as a flat plate."""
 
 import numpy as np
 import pytest
+from pocket.analytical import model as analytical_model
 from pocket.fem import api as fem_api
 from pocket.fem import inflation as fem_inflation
 from pocket.shooting import compression as shooting_compression
 from pocket.shooting import inflation as shooting_inflation
 
 from pocket import analytical, fem, shooting
-from pocket.analytical import model as analytical_model
 from pocket.core.errors import InputError
 from pocket.core.indenters import FLAT, KINDS, Indenter, Kind, as_indenter, register
 
