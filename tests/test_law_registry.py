@@ -130,3 +130,25 @@ def test_a_parameter_without_help_or_unit_is_refused_at_registration(bad, messag
     assert "toy" not in LAWS
     assert main(["inflate", "--alpha", "0.3", "--pressure", "0.1"]) == 0
     capsys.readouterr()
+
+
+def test_a_law_whose_example_fails_its_own_check_is_refused_at_registration():
+    """The example is checked by the law's admissible set when the law is registered (ValueError naming it)."""
+    law = RubberLaw("toy", TOY.parameters, mu0=TOY.mu0, energy=TOY.energy, admissible=_toy_admissible,
+                    example={"mu": 1.0, "k": -1.0})
+    with pytest.raises(ValueError, match="the toy law's example is not a rubber of it: .*k >= 0"):
+        register(law)
+    assert "toy" not in LAWS
+
+
+def test_every_registered_law_is_in_the_documentation():
+    """The laws' table (``pocket.core.materials``) and the README's list of ``--law`` values name every law."""
+    from pathlib import Path
+
+    from pocket.core import materials
+
+    readme = Path(__file__).resolve().parents[1].joinpath("README.md").read_text()
+    start = readme.index("The rubber: `--law`")
+    for name in LAWS:
+        assert f"\n{name} " in materials.__doc__, name
+        assert name in readme[start:start + 400], name

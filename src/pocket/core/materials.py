@@ -219,7 +219,7 @@ class Material:
     @property
     def definition(self) -> RubberLaw:
         """The law's definition in the registry (an InputError for a name it lacks)."""
-        return _definition(self.law, "material")
+        return _definition(self.law)
 
     @property
     def mu0(self) -> float:
@@ -281,9 +281,11 @@ def given_alpha(value) -> float | None:
     return None if isinstance(value, Material) else check_alpha(value)
 
 
-def _definition(law, where: str) -> RubberLaw:
+def _definition(law, where: str = "") -> RubberLaw:
+    """The registered law called ``law``; an InputError naming ``where.material`` (or ``material``) otherwise."""
     if not isinstance(law, str) or law not in LAWS:
-        raise InputError(f"{where}.material = {quote(law)}, but it must be one of {', '.join(LAWS)}")
+        key = f"{where}.material" if where else "material"
+        raise InputError(f"{key} = {quote(law)}, but it must be one of {', '.join(LAWS)}")
     return LAWS[law]
 
 
@@ -292,7 +294,7 @@ def energy(material: Material, l1, l2):
     l1, l2 = np.asarray(l1, dtype=float), np.asarray(l2, dtype=float)
     l3 = 1.0 / (l1 * l2)
     i1, i2 = l1**2 + l2**2 + l3**2, l1**-2 + l2**-2 + l3**-2
-    return _definition(material.law, "material").energy(dict(material.params), l1, l2, l3, i1, i2)
+    return _definition(material.law).energy(dict(material.params), l1, l2, l3, i1, i2)
 
 
 def check(law, params: dict, where: str = "sheet") -> Material:
