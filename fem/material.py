@@ -33,8 +33,8 @@ import numpy as np
 from scipy.optimize import brentq
 
 from pocket.core.errors import ConvergenceError, InputError
-from pocket.core.inputs import check_alpha, quote
-from pocket.core.materials import Material, as_material
+from pocket.core.inputs import quote
+from pocket.core.materials import Material, as_material, given_alpha
 
 from . import laws
 
@@ -92,12 +92,12 @@ class Law:
         raise ConvergenceError(f"no meridional stretch carries the clamp tension {tension:.6g} E T ({self.label})")
 
 
-def _mooney_rivlin(p: dict) -> tuple[int, list]:
-    alpha = p["c2"] / p["c1"]
+def _mooney_rivlin(unit: Material) -> tuple[int, list]:
+    alpha = unit.alpha  # the alpha it was given by, or C2/C1
     return laws.MOONEY_RIVLIN, [1.0 / (6.0 * (1.0 + alpha)), alpha]
 
 
-#: law name -> (parameters in units of mu_0 -> (kernel code, parameters in units of E = 3 mu_0))
+#: law name -> (the Material in units of mu_0 -> (kernel code, parameters in units of E = 3 mu_0))
 KERNELS = {
     "mooney-rivlin": _mooney_rivlin,
     "neo-hookean": lambda p: (laws.YEOH, [p["mu"] / 6.0, 0.0, 0.0]),
@@ -113,17 +113,17 @@ def _scaled_params(material: Material) -> tuple[int, np.ndarray, float]:
         raise InputError(f"the finite-element solver has no kernel for the {material.law} law (it has "
                          f"{', '.join(KERNELS)})")
     unit = material.scaled()  # stresses in units of mu_0; a third of that is units of E = 3 mu_0
-    code, params = KERNELS[material.law](dict(unit.params))
+    code, params = KERNELS[material.law](unit)
     return code, np.array(params, dtype=float), unit.domain
 
 
 def law_of(value) -> Law:
-    """The Law of ``value``: a float (Mooney-Rivlin alpha, checked) or a Material (checked)."""
-    if isinstance(value, Material):
-        material = as_material(value)
-        code, params, jm = _scaled_params(material)
+    """The Law of ``value``: a float (Mooney-Rivlin alpha, checked) or a Material (checked), both through
+    ``KERNELS``; the Law echoes the value as given (``alpha``, ``material``)."""
+    material = as_material(value)
+    code, params, jm = _scaled_params(material)
+    if material.exact_alpha is not None:
+        label = f"alpha = {material.alpha!r}"
+    else:
         label = f"{material.law} rubber " + ", ".join(f"{k} = {quote(v)}" for k, v in material.params)
-        return Law(code, params, None, material, label, jm)
-    alpha = check_alpha(value)
-    return Law(laws.MOONEY_RIVLIN, np.array([1.0 / (6.0 * (1.0 + alpha)), alpha]), alpha, None,
-               f"alpha = {alpha!r}")
+    return Law(code, params, given_alpha(value), value if isinstance(value, Material) else None, label, jm)

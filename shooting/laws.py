@@ -75,9 +75,10 @@ def _ogden(unit: Material):
     return OGDEN, [x for pair in zip(unit["mu"], unit["exponents"], strict=True) for x in pair]
 
 
-#: law name -> (material in units of mu_0 -> (kernel code, parameter list)); Mooney-Rivlin is held by alpha
+#: law name -> (material in units of mu_0 -> (kernel code, parameter list)); Mooney-Rivlin is held by its alpha
+#: (``Material.alpha``: the alpha it was given by, or C2/C1), in any unit
 KERNELS = {
-    "mooney-rivlin": lambda unit: (MOONEY_RIVLIN, [unit["c2"] / unit["c1"]]),
+    "mooney-rivlin": lambda material: (MOONEY_RIVLIN, [material.alpha]),
     "neo-hookean": _in_order(NEO_HOOKEAN),
     "yeoh": _in_order(YEOH),
     "gent": _in_order(GENT),
@@ -92,15 +93,16 @@ def _kernel(law: str):
 
 
 def law_of(value) -> Law:
-    """The ``Law`` of a rubber given as a Mooney-Rivlin alpha (a number) or a ``Material`` (checked)."""
+    """The ``Law`` of a rubber given as a Mooney-Rivlin alpha (a number) or a ``Material`` (checked): both
+    through ``KERNELS``."""
     material = as_material(value)
-    if not isinstance(value, Material):
-        alpha = float(value)  # as_material checked it
-        return Law(MOONEY_RIVLIN, np.array([alpha]), 3.0 * (1.0 + alpha), ("alpha", alpha), f"alpha = {alpha!r}")
     kernel = _kernel(material.law)
-    label = f"{material.law} rubber (" + ", ".join(f"{k} = {v}" for k, v in material.describe().items()
-                                                   if k != "material") + ")"
-    if material.law == "mooney-rivlin":  # C2/C1 of the rubber as given, exactly as the float alpha
+    if material.exact_alpha is not None:
+        label = f"alpha = {material.alpha!r}"
+    else:
+        label = f"{material.law} rubber (" + ", ".join(f"{k} = {v}" for k, v in material.describe().items()
+                                                       if k != "material") + ")"
+    if material.law == "mooney-rivlin":  # tau = 2 C1, as in the paper's solver: no rescaling
         code, values = kernel(material)
         alpha = values[0]
         return Law(code, np.array(values), 3.0 * (1.0 + alpha), ("alpha", alpha), label)

@@ -204,10 +204,15 @@ class Material:
     ``params`` is given as a mapping, ``Material("yeoh", {"c10": 1, "c20": -0.02, "c30": 0.001})``
     (checked as ``check`` does: a name that is not the law's is an InputError listing the law's
     names), or as (name, value) pairs in the law's order, as stored.
+
+    ``exact_alpha`` is the C2/C1 a Mooney-Rivlin rubber was given by (``mooney_rivlin``), kept because
+    C2/C1 recomputed from its C1, C2 differs from it in the last bit for some alphas; ``alpha`` returns
+    it. It does not take part in comparisons.
     """
 
     law: str
     params: tuple[tuple[str, object], ...]
+    exact_alpha: float | None = dataclasses.field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
         if isinstance(self.params, Mapping):
@@ -238,8 +243,10 @@ class Material:
 
     @property
     def alpha(self) -> float | None:
-        """C2/C1 for a Mooney-Rivlin rubber, else None."""
-        return self["c2"] / self["c1"] if self.law == "mooney-rivlin" else None
+        """C2/C1 for a Mooney-Rivlin rubber (the alpha it was given by, if any), else None."""
+        if self.law != "mooney-rivlin":
+            return None
+        return self["c2"] / self["c1"] if self.exact_alpha is None else self.exact_alpha
 
     def scaled(self) -> Material:
         """The same law with its stresses in units of mu_0 (so that mu_0 = 1)."""
@@ -250,7 +257,7 @@ class Material:
             if name in stresses:
                 value = tuple(v / mu0 for v in value) if isinstance(value, tuple) else value / mu0
             out.append((name, value))
-        return Material(self.law, tuple(out))
+        return Material(self.law, tuple(out), self.exact_alpha)
 
     def describe(self) -> dict:
         """The law and its parameters as a flat JSON-ready dict."""
@@ -263,7 +270,7 @@ class Material:
 def mooney_rivlin(alpha: float) -> Material:
     """The Mooney-Rivlin rubber with C2/C1 = ``alpha``, in units of mu_0: C1 = 1 / (2 (1 + alpha))."""
     c1 = 0.5 / (1.0 + alpha)
-    return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)))
+    return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)), alpha)
 
 
 def as_material(value) -> Material:
