@@ -48,9 +48,11 @@ Ogden (mu_p, alpha_p), in principal stretches, with c = a^-1 b^-1 (lambda_3):
 
 ``derivatives`` evaluates one point (called inside the element loop, ``loops``);
 ``evaluate`` maps it over arrays. A law is an integer code and a parameter
-array (``material.Law`` builds them from a ``pocket.core.materials.Material``):
+array (the table ``material.KERNELS`` builds them from a ``pocket.core.materials.Material``):
 
     MOONEY_RIVLIN [s, alpha];  YEOH [C10, C20, C30];  GENT [mu, Jm];  OGDEN [mu_1..mu_n, alpha_1..alpha_n].
+
+A code with no formula here is a ValueError, never another law's numbers.
 """
 
 from __future__ import annotations
@@ -86,12 +88,14 @@ def _first_invariant(code, params, a, b):
     if code == YEOH:
         c10, c20, c30 = params[0], params[1], params[2]
         d1, d11 = c10 + x * (2.0 * c20 + 3.0 * c30 * x), 2.0 * c20 + 6.0 * c30 * x
-    else:  # GENT
+    elif code == GENT:
         mu, jm = params[0], params[1]
         if not x < jm:
             return np.nan, np.nan, np.nan, np.nan, np.nan
         slack = 1.0 / (1.0 - x / jm)
         d1, d11 = 0.5 * mu * slack, 0.5 * mu / jm * slack * slack
+    else:
+        raise ValueError("finite-element kernel: no energy derivatives for this law code")
     i1a, i1b = 2.0 * (a - ia * both), 2.0 * (b - ib * both)
     return (d1 * i1a, d1 * i1b, d11 * i1a * i1a + d1 * (2.0 + 6.0 * ia * ia * both),
             d11 * i1a * i1b + d1 * 4.0 * ia * ib * both, d11 * i1b * i1b + d1 * (2.0 + 6.0 * ib * ib * both))

@@ -5,10 +5,12 @@ alpha = C2/C1 (as it always was), a ``pocket.core.materials.Material`` any law i
 any stress unit. It keeps that value to echo in the states (``alpha`` the float,
 else None; ``material`` the Material, else None: the state then fills in
 ``mooney_rivlin(alpha)``) and turns the law into the kernel's code and
-parameters (``laws``), its stresses divided by E = 3 mu_0 (``Material.scaled``
-gives them in units of mu_0; a third of that is units of E). A Mooney-Rivlin
-Material is held by its alpha = C2/C1 and s = 1 / (6 (1 + alpha)), exactly as
-the float alpha is, so that the two give the same numbers.
+parameters (``laws``) through this solver's table ``KERNELS``, its stresses
+divided by E = 3 mu_0 (``Material.scaled`` gives them in units of mu_0; a third
+of that is units of E). A law of the registry that the table lacks is refused
+in one line naming the law and the solver (InputError), never run as another.
+A Mooney-Rivlin Material is held by its alpha = C2/C1 and s = 1 / (6 (1 + alpha)),
+exactly as the float alpha is, so that the two give the same numbers.
 
 Planar stretch at the clamp (``planar_stretch``): with lambda_2 = 1 the
 meridional tension is T_1 = w_1(l, 1); ``post`` measures T_1 there and needs
@@ -17,8 +19,9 @@ own slope) and Brent's method to 1e-15. A Gent rubber's planar stretch is
 confined to I1 - 3 = (l - 1/l)^2 < Jm, that is
 (sqrt(Jm + 4) - sqrt(Jm)) / 2 < l < (sqrt(Jm + 4) + sqrt(Jm)) / 2.
 
-``lock_margin`` is 1 - (I1 - 3) / Jm (Gent; 0 at locking, +inf for the laws
-that do not lock): how close a state is to the end of the law's domain.
+``lock_margin`` is 1 - (I1 - 3) / Jm, Jm the bound of the law's domain
+(``Material.domain``: Gent's Jm; 0 at locking, +inf for the laws that do not
+lock): how close a state is to the end of the law's domain.
 """
 
 from __future__ import annotations
@@ -29,16 +32,13 @@ import math
 import numpy as np
 from scipy.optimize import brentq
 
-from pocket.core.errors import ConvergenceError
-from pocket.core.inputs import check_alpha, quote
-from pocket.core.materials import Material, as_material
+from pocket.core.errors import ConvergenceError, InputError
+from pocket.core.inputs import quote
+from pocket.core.materials import Material, as_material, given_alpha
 
 from . import laws
 
-__all__ = ["Law", "law_of"]
-
-_CODES = {"mooney-rivlin": laws.MOONEY_RIVLIN, "neo-hookean": laws.YEOH, "yeoh": laws.YEOH, "gent": laws.GENT,
-          "ogden": laws.OGDEN}
+__all__ = ["KERNELS", "Law", "law_of"]
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -92,30 +92,38 @@ class Law:
         raise ConvergenceError(f"no meridional stretch carries the clamp tension {tension:.6g} E T ({self.label})")
 
 
+def _mooney_rivlin(unit: Material) -> tuple[int, list]:
+    alpha = unit.alpha  # the alpha it was given by, or C2/C1
+    return laws.MOONEY_RIVLIN, [1.0 / (6.0 * (1.0 + alpha)), alpha]
+
+
+#: law name -> (the Material in units of mu_0 -> (kernel code, parameters in units of E = 3 mu_0))
+KERNELS = {
+    "mooney-rivlin": _mooney_rivlin,
+    "neo-hookean": lambda p: (laws.YEOH, [p["mu"] / 6.0, 0.0, 0.0]),
+    "yeoh": lambda p: (laws.YEOH, [p["c10"] / 3.0, p["c20"] / 3.0, p["c30"] / 3.0]),
+    "gent": lambda p: (laws.GENT, [p["mu"] / 3.0, p["jm"]]),
+    "ogden": lambda p: (laws.OGDEN, [m / 3.0 for m in p["mu"]] + list(p["exponents"])),
+}
+
+
 def _scaled_params(material: Material) -> tuple[int, np.ndarray, float]:
-    """(code, parameters in units of E, Jm) of a checked Material."""
+    """(code, parameters in units of E, the bound of the domain on I1 - 3) of a checked Material."""
+    if material.law not in KERNELS:
+        raise InputError(f"the finite-element solver has no kernel for the {material.law} law (it has "
+                         f"{', '.join(KERNELS)})")
     unit = material.scaled()  # stresses in units of mu_0; a third of that is units of E = 3 mu_0
-    p = dict(unit.params)
-    law = material.law
-    if law == "mooney-rivlin":
-        alpha = p["c2"] / p["c1"]
-        return laws.MOONEY_RIVLIN, np.array([1.0 / (6.0 * (1.0 + alpha)), alpha]), math.inf
-    if law == "neo-hookean":
-        return laws.YEOH, np.array([p["mu"] / 6.0, 0.0, 0.0]), math.inf
-    if law == "yeoh":
-        return laws.YEOH, np.array([p["c10"], p["c20"], p["c30"]]) / 3.0, math.inf
-    if law == "gent":
-        return laws.GENT, np.array([p["mu"] / 3.0, p["jm"]]), p["jm"]
-    return laws.OGDEN, np.array([m / 3.0 for m in p["mu"]] + list(p["exponents"])), math.inf
+    code, params = KERNELS[material.law](unit)
+    return code, np.array(params, dtype=float), unit.domain
 
 
 def law_of(value) -> Law:
-    """The Law of ``value``: a float (Mooney-Rivlin alpha, checked) or a Material (checked)."""
-    if isinstance(value, Material):
-        material = as_material(value)
-        code, params, jm = _scaled_params(material)
+    """The Law of ``value``: a float (Mooney-Rivlin alpha, checked) or a Material (checked), both through
+    ``KERNELS``; the Law echoes the value as given (``alpha``, ``material``)."""
+    material = as_material(value)
+    code, params, jm = _scaled_params(material)
+    if material.exact_alpha is not None:
+        label = f"alpha = {material.alpha!r}"
+    else:
         label = f"{material.law} rubber " + ", ".join(f"{k} = {quote(v)}" for k, v in material.params)
-        return Law(code, params, None, material, label, jm)
-    alpha = check_alpha(value)
-    return Law(laws.MOONEY_RIVLIN, np.array([1.0 / (6.0 * (1.0 + alpha)), alpha]), alpha, None,
-               f"alpha = {alpha!r}")
+    return Law(code, params, given_alpha(value), value if isinstance(value, Material) else None, label, jm)

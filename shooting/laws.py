@@ -6,8 +6,14 @@ stresses in units of mu_0, and the pressure factor p / Phat = 3 mu_0 / tau of th
 tau (tau = 2 C1 for Mooney-Rivlin, as in the paper's solver; mu_0 for every other law). A rubber given by
 alpha keeps the exact arithmetic of the Mooney-Rivlin solver (p = 3 (1 + alpha) Phat).
 
-``stretch_limit`` is the equibiaxial stretch at which the law leaves its domain: Gent's locking,
-2 l^2 + l^-4 - 3 = Jm, i.e. the root u = l^2 > 1 of 2 u^3 - (3 + Jm) u^2 + 1 = 0; infinite for the rest.
+``KERNELS`` is this solver's table from a law's name to its kernel: the code and the parameter
+array of ``pocket.shooting.tensions``. A law of the registry (``pocket.core.materials.LAWS``) that is
+not in the table is refused in one line naming the law and the solver (InputError), never run as
+another law.
+
+``stretch_limit`` is the equibiaxial stretch at which the law leaves its domain, I1 - 3 = x_max
+(``Material.domain``: Gent's Jm), 2 l^2 + l^-4 - 3 = x_max, i.e. the root u = l^2 > 1 of
+2 u^3 - (3 + x_max) u^2 + 1 = 0; infinite for a law without a bound.
 """
 
 from __future__ import annotations
@@ -17,17 +23,19 @@ import math
 
 import numpy as np
 
+from pocket.core.errors import InputError
 from pocket.core.materials import Material, as_material
 
 from . import brent
-from .tensions import CODES, GENT, MOONEY_RIVLIN
+from .tensions import GENT, MOONEY_RIVLIN, NEO_HOOKEAN, OGDEN, YEOH
 
-__all__ = ["Law", "law_of", "as_law"]
+__all__ = ["KERNELS", "Law", "law_of", "as_law"]
 
 
 @dataclasses.dataclass(frozen=True)
 class Law:
-    """The kernel's view of a rubber. ``key`` identifies it (for caches); ``label`` names it in messages."""
+    """The kernel's view of a rubber. ``key`` identifies it (for caches); ``label`` names it in messages;
+    ``domain`` is the bound on I1 - 3 (inf: none) and ``stretch_limit`` its equibiaxial stretch."""
 
     code: int
     params: np.ndarray = dataclasses.field(compare=False, repr=False)
@@ -35,12 +43,14 @@ class Law:
     key: tuple
     label: str
     stretch_limit: float = math.inf
+    domain: float = math.inf
 
     def lock_margin(self, l1: float, l2: float) -> float:
-        """1 - (I1 - 3) / Jm at stretches (l1, l2) for a rubber that locks (0 at locking), inf for the rest."""
-        if self.code != GENT:
+        """1 - (I1 - 3) / x_max at stretches (l1, l2) for a rubber whose domain ends at I1 - 3 = x_max (Gent's
+        Jm; 0 at locking), inf for the rest."""
+        if math.isinf(self.domain):
             return math.inf
-        return 1.0 - (l1 * l1 + l2 * l2 + 1.0 / (l1 * l2) ** 2 - 3.0) / self.params[1]
+        return 1.0 - (l1 * l1 + l2 * l2 + 1.0 / (l1 * l2) ** 2 - 3.0) / self.domain
 
     @property
     def tension_scale(self) -> float:
@@ -48,31 +58,58 @@ class Law:
         return 1.0 / self.pressure_factor
 
 
-def _gent_limit(jm: float) -> float:
-    """The equibiaxial stretch at which I1 - 3 = 2 l^2 + l^-4 - 3 reaches Jm."""
-    u = brent.root(lambda u: 2.0 * u + 1.0 / (u * u) - 3.0 - jm, 1.0, 2.0 + 0.5 * jm, rtol=1e-15)
+def _stretch_limit(bound: float) -> float:
+    """The equibiaxial stretch at which I1 - 3 = 2 l^2 + l^-4 - 3 reaches ``bound`` (inf for an inf bound)."""
+    if math.isinf(bound):
+        return math.inf
+    u = brent.root(lambda u: 2.0 * u + 1.0 / (u * u) - 3.0 - bound, 1.0, 2.0 + 0.5 * bound, rtol=1e-15)
     return math.sqrt(u)
 
 
+def _in_order(code: int):
+    """A kernel whose parameters are the law's, in the law's order (stresses in units of mu_0)."""
+    return lambda unit: (code, [v for _, v in unit.params])
+
+
+def _ogden(unit: Material):
+    return OGDEN, [x for pair in zip(unit["mu"], unit["exponents"], strict=True) for x in pair]
+
+
+#: law name -> (material in units of mu_0 -> (kernel code, parameter list)); Mooney-Rivlin is held by its alpha
+#: (``Material.alpha``: the alpha it was given by, or C2/C1), in any unit
+KERNELS = {
+    "mooney-rivlin": lambda material: (MOONEY_RIVLIN, [material.alpha]),
+    "neo-hookean": _in_order(NEO_HOOKEAN),
+    "yeoh": _in_order(YEOH),
+    "gent": _in_order(GENT),
+    "ogden": _ogden,
+}
+
+
+def _kernel(law: str):
+    if law not in KERNELS:
+        raise InputError(f"the shooting solver has no kernel for the {law} law (it has {', '.join(KERNELS)})")
+    return KERNELS[law]
+
+
 def law_of(value) -> Law:
-    """The ``Law`` of a rubber given as a Mooney-Rivlin alpha (a number) or a ``Material`` (checked)."""
+    """The ``Law`` of a rubber given as a Mooney-Rivlin alpha (a number) or a ``Material`` (checked): both
+    through ``KERNELS``."""
     material = as_material(value)
-    if not isinstance(value, Material):
-        alpha = float(value)  # as_material checked it
-        return Law(MOONEY_RIVLIN, np.array([alpha]), 3.0 * (1.0 + alpha), ("alpha", alpha), f"alpha = {alpha!r}")
-    label = f"{material.law} rubber (" + ", ".join(f"{k} = {v}" for k, v in material.describe().items()
-                                                   if k != "material") + ")"
-    if material.law == "mooney-rivlin":
-        alpha = material["c2"] / material["c1"]
-        return Law(MOONEY_RIVLIN, np.array([alpha]), 3.0 * (1.0 + alpha), ("alpha", alpha), label)
-    unit = material.scaled()
-    if unit.law == "ogden":
-        values = [x for pair in zip(unit["mu"], unit["exponents"], strict=True) for x in pair]
+    kernel = _kernel(material.law)
+    if material.exact_alpha is not None:
+        label = f"alpha = {material.alpha!r}"
     else:
-        values = [v for _, v in unit.params]
-    params = np.array(values, dtype=float)
-    limit = _gent_limit(unit["jm"]) if unit.law == "gent" else math.inf
-    return Law(CODES[unit.law], params, 3.0, (unit.law, tuple(values)), label, limit)
+        label = f"{material.law} rubber (" + ", ".join(f"{k} = {v}" for k, v in material.describe().items()
+                                                       if k != "material") + ")"
+    if material.law == "mooney-rivlin":  # tau = 2 C1, as in the paper's solver: no rescaling
+        code, values = kernel(material)
+        alpha = values[0]
+        return Law(code, np.array(values), 3.0 * (1.0 + alpha), ("alpha", alpha), label)
+    unit = material.scaled()
+    code, values = kernel(unit)
+    return Law(code, np.array(values, dtype=float), 3.0, (unit.law, tuple(values)), label,
+               _stretch_limit(unit.domain), unit.domain)
 
 
 def as_law(value) -> Law:

@@ -50,11 +50,13 @@ Units. Tensions are in units of tau T and pressures p = P R / (tau T) = (3 mu_0 
 ``Law.pressure_factor`` is 3 mu_0 / tau (3 (1 + alpha) for Mooney-Rivlin, 3 for the rest) and
 tensions in units of E T are t / pressure_factor.
 
-The kernel takes the law as an integer ``code`` (``CODES``) and a float array ``params``:
-Mooney-Rivlin [alpha]; neo-Hookean [mu]; Yeoh [C10, C20, C30]; Gent [mu, Jm]; Ogden
-[mu_1, alpha_1, mu_2, alpha_2, ...], stresses in units of mu_0. ``tensions`` works on floats
-and on arrays of one shape; ``tensions_compiled`` is it compiled for the integrator (its helpers are
-``register_jitable``: plain Python when called from Python, compiled when called from compiled code).
+The kernel takes the law as an integer ``code`` and a float array ``params`` (the table
+``pocket.shooting.laws.KERNELS`` maps each law of the registry to them): Mooney-Rivlin [alpha];
+neo-Hookean [mu]; Yeoh [C10, C20, C30]; Gent [mu, Jm]; Ogden [mu_1, alpha_1, mu_2, alpha_2, ...],
+stresses in units of mu_0. A code with no formula here is a ValueError, never another law's numbers.
+``tensions`` works on floats and on arrays of one shape; ``tensions_compiled`` is it compiled for
+the integrator (its helpers are ``register_jitable``: plain Python when called from
+Python, compiled when called from compiled code).
 """
 
 from __future__ import annotations
@@ -63,12 +65,10 @@ from numba.extending import register_jitable
 
 from pocket.core.compiled import compiled
 
-__all__ = ["CODES", "MOONEY_RIVLIN", "NEO_HOOKEAN", "YEOH", "GENT", "OGDEN", "tensions", "tensions_compiled",
+__all__ = ["MOONEY_RIVLIN", "NEO_HOOKEAN", "YEOH", "GENT", "OGDEN", "tensions", "tensions_compiled",
            "inside", "inside_compiled"]
 
 MOONEY_RIVLIN, NEO_HOOKEAN, YEOH, GENT, OGDEN = 0, 1, 2, 3, 4
-#: law name -> kernel code
-CODES = {"mooney-rivlin": MOONEY_RIVLIN, "neo-hookean": NEO_HOOKEAN, "yeoh": YEOH, "gent": GENT, "ogden": OGDEN}
 
 
 def tensions(l1, l2, code, params):
@@ -114,10 +114,11 @@ def _slopes(x, code, params):
         return 0.5 * params[0] + 0.0 * x, 0.0 * x
     if code == YEOH:
         return params[0] + x * (2.0 * params[1] + 3.0 * params[2] * x), 2.0 * params[1] + 6.0 * params[2] * x
-    # GENT: defined for x < Jm (``inside``); past it the formulas stay finite and the integrator stops
-    half_mu, jm = 0.5 * params[0], params[1]
-    slack = 1.0 - x / jm
-    return half_mu / slack, half_mu / (jm * slack * slack)
+    if code == GENT:  # defined for x < Jm (``inside``); past it the formulas stay finite and the integrator stops
+        half_mu, jm = 0.5 * params[0], params[1]
+        slack = 1.0 - x / jm
+        return half_mu / slack, half_mu / (jm * slack * slack)
+    raise ValueError("shooting kernel: no tension formula for this law code")
 
 
 @register_jitable

@@ -46,18 +46,15 @@ def test_gent_tends_to_neo_hookean_at_rate_one_over_jm():
     assert gaps[0] < 0.05 and gaps[1] / gaps[0] == pytest.approx(0.5, rel=0.05)
 
 
-@pytest.mark.parametrize("material", [
-    law("mooney-rivlin", c1=160e3, c2=47e3), law("neo-hookean", mu=0.4e6), law("yeoh", c10=85e3, c20=2e3, c30=0.1e3),
-    law("gent", mu=0.3e6, jm=10.0), law("ogden", mu=[630e3, 1.2e3, -10e3], exponents=[1.3, 5.0, -2.0])])
-def test_small_strain_young_modulus_is_three_mu0(material):
+def test_small_strain_young_modulus_is_three_mu0(rubber):
     """Uniaxial tension l1 = 1 + e, l2 = l3 = (1 + e)^-1/2: W = (E / 2) e^2 + O(e^3) with E = 3 mu_0.
     The quotient 2 W / e^2 is extrapolated to e = 0 from e and e/2 (Richardson, first order in e)."""
     def quotient(e):
-        return 2 * energy(material, 1 + e, (1 + e) ** -0.5) / e**2
+        return 2 * energy(rubber, 1 + e, (1 + e) ** -0.5) / e**2
 
     e = 1e-3
     extrapolated = 2 * quotient(e / 2) - quotient(e)
-    assert extrapolated == pytest.approx(material.modulus, rel=1e-5)
+    assert extrapolated == pytest.approx(rubber.modulus, rel=1e-5)
 
 
 def test_scaled_has_unit_mu0_and_the_same_shape_of_energy():

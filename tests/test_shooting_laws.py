@@ -15,13 +15,6 @@ from pocket import shooting
 from pocket.core.errors import OutOfRangeError
 from pocket.core.materials import Material, check, energy
 
-RUBBERS = {
-    "mooney-rivlin": check("mooney-rivlin", {"c1": 160e3, "c2": 47e3}),
-    "neo-hookean": check("neo-hookean", {"mu": 0.4e6}),
-    "yeoh": check("yeoh", {"c10": 85e3, "c20": -2e3, "c30": 0.2e3}),  # softens, then stiffens
-    "gent": check("gent", {"mu": 0.3e6, "jm": 10.0}),
-    "ogden": check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}),  # Treloar's fit
-}
 GRID = [a.ravel() for a in np.meshgrid(np.linspace(0.8, 2.0, 7), np.linspace(0.85, 1.9, 6))]
 
 
@@ -51,43 +44,39 @@ def _from_energy(material, l1, l2):
     return np.array([w1 / l2, w2 / l1, w11 / l2, w12 / l2 - w1 / l2**2]) / scale
 
 
-@pytest.mark.parametrize("name", RUBBERS)
-def test_tensions_are_derivatives_of_the_shared_energy(name):
-    """Exact answer: T_1 = (T/l2) dW/dl1, T_2 = (T/l1) dW/dl2 and the derivatives of T_1, by central
-    differences of ``pocket.core.materials.energy`` (Pa, so the kernel's mu_0 scaling is checked too),
-    over stretches 0.8..2 x 0.85..1.9, l1 != l2 included."""
-    material = RUBBERS[name]
+def check_tensions(material):
+    """T_1 = (T/l2) dW/dl1, T_2 = (T/l1) dW/dl2 and the derivatives of T_1 from the kernel equal central
+    differences of ``pocket.core.materials.energy`` (in the material's unit, so the kernel's mu_0 scaling is
+    checked too), over stretches 0.8..2 x 0.85..1.9, l1 != l2 included; the compiled kernel is the Python one."""
     ours, ref = _kernel(material, *GRID), _from_energy(material, *GRID)
     for row, what, tol in ((0, "T1", 1e-8), (1, "T2", 1e-8), (2, "dT1/dl1", 1e-6), (3, "dT1/dl2", 1e-6)):
         size = np.max(np.abs(ref[row]))
         err = np.max(np.abs(ours[row] - ref[row])) / size
-        assert err < tol, (name, what, err)
+        assert err < tol, (material.law, what, err)
+    # one source, two compilations: they agree to rounding (a few ulps)
+    np.testing.assert_allclose(_kernel(material, *GRID, compiled=True), ours, rtol=1e-13, atol=1e-15)
 
 
-@pytest.mark.parametrize("name", RUBBERS)
-def test_compiled_kernel_is_the_python_one(name):
-    """Exact answer: one source, two compilations; they agree to rounding (a few ulps)."""
-    a, b = _kernel(RUBBERS[name], *GRID), _kernel(RUBBERS[name], *GRID, compiled=True)
-    np.testing.assert_allclose(b, a, rtol=1e-13, atol=1e-15)
+def test_tensions_are_derivatives_of_the_shared_energy(rubber):
+    """Exact answer: ``check_tensions`` for every law of the registry (its example rubber, in Pa)."""
+    check_tensions(rubber)
 
 
-@pytest.mark.parametrize("name", RUBBERS)
-def test_small_strain_tension_is_two_e_t_e(name):
+def test_small_strain_tension_is_two_e_t_e(rubber):
     """Exact answer: equibiaxial l = 1 + e gives T = 2 E T e + O(e^2) for every law (E = 3 mu_0).
     Richardson extrapolation of T / (2 E T e) from e and e/2 removes the O(e) term."""
     def ratio(e):
-        return _kernel(RUBBERS[name], np.array([1 + e]), np.array([1 + e]))[0, 0] / (2 * e)
+        return _kernel(rubber, np.array([1 + e]), np.array([1 + e]))[0, 0] / (2 * e)
 
     e = 1e-4
     assert 2 * ratio(e / 2) - ratio(e) == pytest.approx(1.0, abs=1e-7)
 
 
-@pytest.mark.parametrize("name", RUBBERS)
-def test_pole_series_order(name):
+def test_pole_series_order(rubber):
     """Exact answer: the pole series is regular for every isotropic law, with errors O(r^3) in psi and
     O(r^4) in lambda_1. Measured against the integrated solution from r = 1e-7 (series error ~1e-28),
     at r = 0.01, 0.02, 0.04: the fitted orders."""
-    law = law_of(RUBBERS[name])
+    law = law_of(rubber)
     l0, p = 1.2, 0.8 * law.pressure_factor
     radii = [0.01, 0.02, 0.04]
     errors = []
@@ -98,7 +87,7 @@ def test_pole_series_order(name):
     errors = np.array(errors)
     for column, order in ((2, 3), (3, 4)):  # psi, lambda_1
         fitted = np.polyfit(np.log(radii), np.log(errors[:, column]), 1)[0]
-        assert fitted == pytest.approx(order, abs=0.1), (name, column, fitted, errors[:, column])
+        assert fitted == pytest.approx(order, abs=0.1), (rubber.law, column, fitted, errors[:, column])
 
 
 def _same_states(a, b, rel):
@@ -147,8 +136,7 @@ def test_gent_tends_to_neo_hookean_at_rate_one_over_jm():
     np.testing.assert_allclose(gaps[1] / gaps[2], 10.0, rtol=0.002)
 
 
-@pytest.mark.parametrize("name", RUBBERS)
-def test_small_pressure_limit_is_hencky_for_every_law(name):
+def test_small_pressure_limit_is_hencky_for_every_law(rubber):
     """Exact answer: H0/R / Phat^(1/3) -> Hencky's constant (nu = 1/2), the same for every law since
     only mu_0 enters at small strain (E = 3 mu_0). Richardson in Phat^(2/3) from 1e-4 and 1e-5 leaves
     O(Phat^(4/3)) ~ 1e-7; the Mooney-Rivlin value by alpha is computed alongside."""
@@ -156,7 +144,7 @@ def test_small_pressure_limit_is_hencky_for_every_law(name):
         k = [shooting.inflate(rubber, p).height / p ** (1 / 3) for p in (1e-4, 1e-5)]
         return k[1] + (k[1] - k[0]) / (10 ** (2 / 3) - 1)
 
-    ours = limit(RUBBERS[name])
+    ours = limit(rubber)
     assert ours == pytest.approx(hencky_constant(), rel=1e-5)
     assert ours == pytest.approx(limit(0.3), rel=1e-6)
 
@@ -169,7 +157,7 @@ def test_gent_locking_stretch_and_domain():
     assert 2 * lock**2 + lock**-4 - 3 == pytest.approx(3.0, rel=1e-14)
     assert inside(lock * (1 - 1e-9), lock * (1 - 1e-9), law.code, law.params)
     assert not inside(lock * (1 + 1e-9), lock * (1 + 1e-9), law.code, law.params)
-    assert law_of(RUBBERS["neo-hookean"]).stretch_limit == math.inf
+    assert law_of(check("neo-hookean", {"mu": 0.4e6})).stretch_limit == math.inf
 
 
 def test_gent_past_locking_is_out_of_range():

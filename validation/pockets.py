@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import math
 
-from pocket.core.materials import STRESSES
-
 __all__ = ["case_table", "cell", "rubber_text", "fluid_text"]
 
 
@@ -21,8 +19,9 @@ def cell(x, digits=4) -> str:
 def rubber_text(material) -> str:
     """A rubber in a table cell: its law and parameters, stresses in kPa ("yeoh: c10 85, c20 2, c30 0.1 kPa")."""
     parts = []
+    stresses = material.definition.stresses
     for name, value in material.params:
-        scale = 1e-3 if name in STRESSES else 1.0
+        scale = 1e-3 if name in stresses else 1.0
         values = value if isinstance(value, tuple) else (value,)
         parts.append(f"{name} {' '.join(cell(v * scale) for v in values)}{' kPa' if scale != 1.0 else ''}")
     return f"{material.law}: {', '.join(parts)}"

@@ -63,7 +63,7 @@ import pathlib
 from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
 from pocket.core.inputs import quote
-from pocket.core.materials import STRESSES, Material
+from pocket.core.materials import Material
 from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import positive, quantity
 
@@ -135,9 +135,10 @@ class Case:
         ``ambient_Pa`` and ``gamma``.
         """
         rubber = {"material": self.material.law}
+        stresses = self.material.definition.stresses
         for name, value in self.material.describe().items():
             if name != "material":
-                rubber[f"{name}_Pa" if name in STRESSES else name] = value
+                rubber[f"{name}_Pa" if name in stresses else name] = value
         rubber["modulus_Pa"] = self.modulus
         if self.alpha is not None:
             rubber["alpha"] = self.alpha

@@ -25,14 +25,14 @@ from collections.abc import Callable
 from pocket.core.errors import InputError
 from pocket.core.fluids import AMBIENT, LIQUID, Fluid, gas
 from pocket.core.inputs import check_alpha, check_finite, quote
-from pocket.core.materials import LAWS, STRESSES, Material, check
+from pocket.core.materials import LAWS, Material, check
 from pocket.core.units import positive, quantity
 
 __all__ = ["DEFAULT_LAW", "PARAMETERS", "FLUIDS", "law_name", "rubber", "sheet", "fluid", "gas_of"]
 
 DEFAULT_LAW = "mooney-rivlin"
 #: every parameter name of every law, in order (c1, c2, mu, c10, c20, c30, jm, exponents)
-PARAMETERS = tuple(dict.fromkeys(name for names in LAWS.values() for name in names))
+PARAMETERS = tuple(dict.fromkeys(name for law in LAWS.values() for name in law.names))
 #: the kinds of fluid
 FLUIDS = ("liquid", "gas")
 #: Mooney-Rivlin in a case file: c1 and c2, or modulus E = 6 (C1 + C2) and alpha = C2/C1
@@ -64,11 +64,11 @@ def rubber(law, params: dict, spell: Callable[[str], str] = lambda name: f"--{na
     same parameters), so any unit gives the same rubber. Errors name a parameter as ``spell(name)``.
     """
     law = law_name(law, "--law")
-    _only(law, params, LAWS[law], spell)
-    missing = [name for name in LAWS[law] if name not in params]
+    names = LAWS[law].names
+    _only(law, params, names, spell)
+    missing = [name for name in names if name not in params]
     if missing:
-        raise InputError(f"{spell(missing[0])} is missing: the {law} law needs "
-                         f"{', '.join(map(spell, LAWS[law]))}")
+        raise InputError(f"{spell(missing[0])} is missing: the {law} law needs {', '.join(map(spell, names))}")
     try:
         material = check(law, params, _WHERE)
     except InputError as err:  # spelled as the user wrote the names
@@ -77,7 +77,7 @@ def rubber(law, params: dict, spell: Callable[[str], str] = lambda name: f"--{na
 
 
 def _respelled(message: str, spell) -> str:
-    for name in sorted(PARAMETERS, key=len, reverse=True):
+    for name in sorted({n for law in LAWS.values() for n in law.names}, key=len, reverse=True):
         message = message.replace(f"{_WHERE}.{name}", spell(name))
     return message.replace(f"{_WHERE}: ", "")
 
@@ -141,11 +141,12 @@ def sheet(table: dict, where: str, given: dict) -> tuple[float, Material]:
     if law == DEFAULT_LAW:
         return thickness, _mooney_rivlin(table, where, given)
     params = {k: v for k, v in table.items() if k not in ("thickness", "material")}
-    _only(law, params, LAWS[law], lambda name: f"sheet.{name}", ", ".join(LAWS[law]))
+    definition = LAWS[law]
+    _only(law, params, definition.names, lambda name: f"sheet.{name}", ", ".join(definition.names))
     parsed = {}
     for name, value in params.items():
-        listed = law == "ogden" and isinstance(value, list)  # only Ogden's parameters are lists
-        parse = _stress if name in STRESSES else _number
+        listed = definition.parameter(name).listed and isinstance(value, list)
+        parse = _stress if definition.parameter(name).unit == "stress" else _number
         parsed[name] = [parse(f"sheet.{name}[{i}]", v) for i, v in enumerate(value)] if listed else \
             parse(f"sheet.{name}", value)
         given[f"sheet.{name}"] = value

@@ -1,9 +1,10 @@
 """The rubber and fluid flags shared by ``inflate``, ``compress``, ``sweep`` and ``design``.
 
 ``--law NAME`` (default mooney-rivlin, which takes ``--alpha`` = C2/C1, as it always
-did) and the law's parameters as flags: ``--mu`` (neo-hookean, gent: one value;
-ogden: one per term), ``--c10 --c20 --c30`` (yeoh), ``--jm`` (gent, a number),
-``--exponents`` (ogden, one per term). The stresses may be given in any one unit:
+did) and the law's parameters as flags, built from the registry of laws
+(``pocket.core.materials.LAWS``: each parameter's help text, and one value or a list): ``--mu``
+(neo-hookean, gent: one value; ogden: one per term), ``--c10 --c20 --c30`` (yeoh), ``--jm``
+(gent, a number), ``--exponents`` (ogden, one per term). The stresses may be given in any one unit:
 they are rescaled to units of mu_0 (so that mu_0 = 1), the unit of the model and
 of every output, since only their ratios enter the dimensionless model
 (``pocket.apps.rubbers.rubber``).
@@ -17,7 +18,7 @@ law's, a missing one, or a gas option without ``--fluid gas`` is a one-line erro
 
 from __future__ import annotations
 
-from pocket.apps.rubbers import DEFAULT_LAW, FLUIDS, PARAMETERS, gas_of, rubber
+from pocket.apps.rubbers import DEFAULT_LAW, FLUIDS, gas_of, rubber
 from pocket.core.errors import InputError
 from pocket.core.fluids import AMBIENT
 from pocket.core.inputs import check_positive
@@ -26,14 +27,8 @@ from pocket.core.units import quantity
 
 from .common import number
 
-__all__ = ["add_rubber_flags", "add_fluid_flags", "material_of", "fluid_of", "LAW_FLAGS"]
+__all__ = ["add_rubber_flags", "add_fluid_flags", "material_of", "fluid_of", "law_flags"]
 
-#: parameter flags of the laws other than Mooney-Rivlin (which takes --alpha)
-LAW_FLAGS = tuple(name for name in PARAMETERS if name not in LAWS[DEFAULT_LAW])
-_LISTS = ("mu", "exponents")  # several values for Ogden (one per term)
-_HELP = {"mu": "shear modulus mu (neo-hookean, gent), or Ogden's mu_p, one per term",
-         "c10": "Yeoh's C10", "c20": "Yeoh's C20", "c30": "Yeoh's C30",
-         "jm": "Gent's locking parameter Jm (a number)", "exponents": "Ogden's exponents alpha_p, one per term"}
 _UNITS = ("stresses in any one unit, rescaled to units of mu_0 (mu_0 = 1: the unit of the model and of the "
           "output; only their ratios matter)")
 
@@ -42,9 +37,28 @@ def _flag(name: str) -> str:
     return f"--{name}"
 
 
+def law_flags() -> dict[str, list]:
+    """The parameter flags of the registered laws other than Mooney-Rivlin (which takes --alpha): each
+    parameter name -> the (law, ``Parameter``) pairs that use it, in the registry's order."""
+    flags: dict[str, list] = {}
+    for law in LAWS.values():
+        if law.name != DEFAULT_LAW:
+            for q in law.parameters:
+                flags.setdefault(q.name, []).append((law.name, q))
+    return flags
+
+
+def _help(uses) -> str:
+    """A flag's help from its parameters' help texts, each with the laws it serves."""
+    texts: dict[str, list] = {}
+    for law, q in uses:
+        texts.setdefault(q.help, []).append(law)
+    return "; ".join(f"{text} ({', '.join(laws)})" for text, laws in texts.items())
+
+
 def add_rubber_flags(parser, *, alphas: bool = False) -> None:
     """``--law``, ``--alpha`` (several values if ``alphas``: a sweep's axis) and the other laws' parameter
-    flags, in one group."""
+    flags, in one group, from the registry ``pocket.core.materials.LAWS``."""
     group = parser.add_argument_group("rubber", f"the strain-energy law and its parameters ({_UNITS})")
     group.add_argument("--law", choices=tuple(LAWS), default=DEFAULT_LAW,
                        help="strain-energy law of the rubber (default mooney-rivlin)")
@@ -52,15 +66,16 @@ def add_rubber_flags(parser, *, alphas: bool = False) -> None:
     group.add_argument("--alpha", type=number, nargs="+" if alphas else None,
                        help=f"C2/C1 of the Mooney-Rivlin rubber, > -1 (fractions allowed: 47/160){several}; "
                        "required with --law mooney-rivlin, refused with another law")
-    for name in LAW_FLAGS:
-        group.add_argument(_flag(name), type=number, nargs="+" if name in _LISTS else None,
-                           metavar=name.upper(), help=_HELP[name])
+    for name, uses in law_flags().items():
+        listed = any(q.listed for _, q in uses)
+        group.add_argument(_flag(name), type=number, nargs="+" if listed else None, metavar=name.upper(),
+                           help=_help(uses))
 
 
 def material_of(args):
     """The rubber of the command line: the float alpha (or the list of ``--alpha`` values of a sweep) for
     Mooney-Rivlin, else the law's ``Material`` in units of mu_0."""
-    given = {name: getattr(args, name) for name in LAW_FLAGS if getattr(args, name) is not None}
+    given = {name: getattr(args, name) for name in law_flags() if getattr(args, name, None) is not None}
     if args.law == DEFAULT_LAW:
         if given:
             first = next(iter(given))
@@ -69,12 +84,13 @@ def material_of(args):
         if args.alpha is None:
             raise InputError("--alpha is missing: the mooney-rivlin law (the default --law) needs it")
         return args.alpha
+    definition = LAWS[args.law]
     if args.alpha is not None:
         raise InputError(f"--alpha is not a parameter of the {args.law} law (its parameters: "
-                         f"{', '.join(map(_flag, LAWS[args.law]))})")
+                         f"{', '.join(map(_flag, definition.names))})")
     params = {}
     for name, values in given.items():
-        if name in _LISTS and args.law != "ogden":
+        if isinstance(values, list) and not (name in definition.names and definition.parameter(name).listed):
             if len(values) != 1:
                 raise InputError(f"--{name} takes one value for the {args.law} law, got {len(values)}")
             values = values[0]

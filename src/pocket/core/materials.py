@@ -27,6 +27,13 @@ Convert before entering another code's fit. Yeoh's C_i0 and Mooney-Rivlin's C1, 
 neo-hookean(mu) = mooney-rivlin(mu/2, 0) = yeoh(mu/2, 0, 0) = ogden([mu], [2]),
 and ogden([2 C1, -2 C2], [2, -2]) = mooney-rivlin(C1, C2).
 
+Each law is one ``RubberLaw`` in the registry ``LAWS`` (name -> definition): its parameters
+(``Parameter``: name, unit "stress" or "dimensionless", help text, whether it is a list), mu_0,
+the strain energy, the admissible set (``admissible`` raises the one-line error) and the bound
+on I1 - 3 where the law's domain ends (Gent's Jm; inf for the rest). The command line, case
+files and tests read the registry; a new law is one ``register`` call here, and each solver
+maps it to its kernel through its own table, which refuses a law it lacks in one line.
+
 A ``Material`` holds the law's name and its parameters in any consistent unit
 (Pa in case files, units of mu_0 inside the solvers: ``scaled`` divides the
 stresses by mu_0). ``check`` refuses, in one line naming the parameter, what
@@ -41,39 +48,171 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 import numpy as np
 
 from .errors import InputError
 from .inputs import check_alpha, check_finite, quote
 
-__all__ = ["LAWS", "Material", "mooney_rivlin", "energy", "check", "as_material", "given_alpha"]
+__all__ = ["Parameter", "RubberLaw", "LAWS", "register", "Material", "mooney_rivlin", "energy", "check",
+           "as_material", "given_alpha"]
 
-#: law -> its parameters (names as in case files), in order
-LAWS = {
-    "mooney-rivlin": ("c1", "c2"),
-    "neo-hookean": ("mu",),
-    "yeoh": ("c10", "c20", "c30"),
-    "gent": ("mu", "jm"),
-    "ogden": ("mu", "exponents"),
-}
-#: parameters that are stresses (the rest are dimensionless: jm, exponents)
-STRESSES = {"c1", "c2", "mu", "c10", "c20", "c30"}
+#: the units a parameter may have
+UNITS = ("stress", "dimensionless")
+
+
+@dataclasses.dataclass(frozen=True)
+class Parameter:
+    """One parameter of a law: its ``name`` (as in case files and flags), ``unit`` ("stress": Pa in case
+    files, units of mu_0 inside the solvers; or "dimensionless"), a ``help`` text for the command line,
+    and whether it is a list (one value per term, ``listed``)."""
+
+    name: str
+    unit: str
+    help: str
+    listed: bool = False
+
+
+@dataclasses.dataclass(frozen=True)
+class RubberLaw:
+    """A strain-energy law: its ``name``, ``parameters`` (in order) and, each of a dict name -> value
+    (floats; tuples for listed parameters):
+
+    - ``mu0(p)``: the small-strain shear modulus, in the unit of the stresses;
+    - ``energy(p, l1, l2, l3, i1, i2)``: W per unit reference volume (arrays broadcast, l3 = 1/(l1 l2),
+      I1, I2 the invariants);
+    - ``admissible(p, where)``: raises a one-line ``InputError`` naming ``where.<parameter>`` for a
+      rubber that is not stable;
+    - ``domain(p)``: the bound on I1 - 3 below which W exists (inf: everywhere).
+
+    ``example`` is a typical rubber of the law in Pa (a case-file table): the tests check every law's
+    kernels on it.
+    """
+
+    name: str
+    parameters: tuple[Parameter, ...]
+    mu0: Callable[[dict], float]
+    energy: Callable
+    admissible: Callable[[dict, str], None]
+    example: Mapping
+    domain: Callable[[dict], float] = lambda p: math.inf
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        """The parameters' names, in order."""
+        return tuple(q.name for q in self.parameters)
+
+    @property
+    def stresses(self) -> tuple[str, ...]:
+        """The names of the parameters that are stresses."""
+        return tuple(q.name for q in self.parameters if q.unit == "stress")
+
+    def parameter(self, name: str) -> Parameter:
+        """The parameter called ``name`` (KeyError if the law has none)."""
+        return {q.name: q for q in self.parameters}[name]
+
+
+#: law name -> its definition, in the order the laws were registered
+LAWS: dict[str, RubberLaw] = {}
+
+
+def register(law: RubberLaw) -> RubberLaw:
+    """Add ``law`` to ``LAWS``; a parameter without a help text or with an unknown unit, a name used
+    twice, or an example that fails the law's own check is refused here (ValueError), not at run time."""
+    if law.name in LAWS:
+        raise ValueError(f"a law named {law.name!r} is registered already")
+    if not law.parameters:
+        raise ValueError(f"the {law.name} law has no parameters")
+    for q in law.parameters:
+        if q.unit not in UNITS or not q.help.strip():
+            raise ValueError(f"{law.name}.{q.name}: a parameter needs a unit in {UNITS} and a help text")
+    if len(set(law.names)) != len(law.names):
+        raise ValueError(f"the {law.name} law names a parameter twice")
+    LAWS[law.name] = law
+    try:
+        check(law.name, dict(law.example), where=f"{law.name}.example")
+    except (InputError, KeyError, TypeError) as err:
+        del LAWS[law.name]
+        raise ValueError(f"the {law.name} law's example is not a rubber of it: {err}") from None
+    return law
+
+
+def _stress(name: str, text: str, listed: bool = False) -> Parameter:
+    return Parameter(name, "stress", text, listed)
+
+
+def _mooney_rivlin_admissible(v: dict, where: str) -> None:
+    if v["c1"] <= 0.0 or v["c1"] + v["c2"] <= 0.0:
+        raise InputError(f"{where}.c1 = {quote(v['c1'])}, {where}.c2 = {quote(v['c2'])}, but a Mooney-Rivlin "
+                         "rubber needs C1 > 0 and C1 + C2 > 0 (alpha = C2/C1 > -1)")
+
+
+def _shear_admissible(v: dict, where: str) -> None:
+    if v["mu"] <= 0.0:
+        raise InputError(f"{where}.mu = {quote(v['mu'])}, but the shear modulus must be > 0")
+
+
+def _gent_admissible(v: dict, where: str) -> None:
+    _shear_admissible(v, where)
+    if v["jm"] <= 0.0:
+        raise InputError(f"{where}.jm = {quote(v['jm'])}, but the locking parameter Jm must be > 0")
+
+
+def _yeoh_stable(c10: float, c20: float, c30: float) -> bool:
+    """dW/dI1 = c10 + 2 c20 x + 3 c30 x^2 > 0 for every x = I1 - 3 >= 0."""
+    if c10 <= 0.0 or c30 < 0.0:
+        return False
+    if c20 >= 0.0:
+        return True
+    if c30 == 0.0:
+        return False  # the slope falls without bound
+    x = -c20 / (3.0 * c30)  # the minimum of the quadratic, at x > 0
+    return c10 + 2.0 * c20 * x + 3.0 * c30 * x * x > 0.0
+
+
+def _yeoh_admissible(v: dict, where: str) -> None:
+    if not _yeoh_stable(v["c10"], v["c20"], v["c30"]):
+        raise InputError(f"{where}.c10, c20, c30 = {v['c10']:g}, {v['c20']:g}, {v['c30']:g}, but a stable Yeoh "
+                         "rubber needs C10 > 0 and dW/dI1 = C10 + 2 C20 x + 3 C30 x^2 > 0 for all x = I1 - 3 >= 0")
+
+
+def _ogden_admissible(v: dict, where: str) -> None:
+    mu, exponents = v["mu"], v["exponents"]
+    if len(mu) != len(exponents):
+        raise InputError(f"{where}.mu has {len(mu)} terms but {where}.exponents has {len(exponents)}")
+    for k, (m, a) in enumerate(zip(mu, exponents, strict=True)):
+        if not m * a > 0.0:
+            raise InputError(f"{where}.mu[{k}] = {m:g} with exponent {a:g}, but a stable Ogden term needs "
+                             "mu_p alpha_p > 0")
+
+
+def _yeoh_energy(p, l1, l2, l3, i1, i2):
+    x = i1 - 3.0
+    return p["c10"] * x + p["c20"] * x**2 + p["c30"] * x**3
+
+
+def _ogden_energy(p, l1, l2, l3, i1, i2):
+    return sum(m / a * (l1**a + l2**a + l3**a - 3.0) for m, a in zip(p["mu"], p["exponents"], strict=True))
 
 
 @dataclasses.dataclass(frozen=True)
 class Material:
-    """A law by name with its parameters: ``params`` maps each name of ``LAWS[law]`` to a float
-    (Ogden's ``mu`` and ``exponents`` to tuples of floats).
+    """A law by name with its parameters: ``params`` maps each name of ``LAWS[law].names`` to a float
+    (a listed parameter, as Ogden's ``mu`` and ``exponents``, to a tuple of floats).
 
     ``params`` is given as a mapping, ``Material("yeoh", {"c10": 1, "c20": -0.02, "c30": 0.001})``
     (checked as ``check`` does: a name that is not the law's is an InputError listing the law's
     names), or as (name, value) pairs in the law's order, as stored.
+
+    ``exact_alpha`` is the C2/C1 a Mooney-Rivlin rubber was given by (``mooney_rivlin``), kept because
+    C2/C1 recomputed from its C1, C2 differs from it in the last bit for some alphas; ``alpha`` returns
+    it. It does not take part in comparisons.
     """
 
     law: str
     params: tuple[tuple[str, object], ...]
+    exact_alpha: float | None = dataclasses.field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
         if isinstance(self.params, Mapping):
@@ -83,16 +222,14 @@ class Material:
         return dict(self.params)[name]
 
     @property
+    def definition(self) -> RubberLaw:
+        """The law's definition in the registry (an InputError for a name it lacks)."""
+        return _definition(self.law)
+
+    @property
     def mu0(self) -> float:
         """The small-strain shear modulus mu_0, in the unit of the stresses."""
-        p = dict(self.params)
-        if self.law == "mooney-rivlin":
-            return 2.0 * (p["c1"] + p["c2"])
-        if self.law == "yeoh":
-            return 2.0 * p["c10"]
-        if self.law == "ogden":
-            return 0.5 * sum(m * a for m, a in zip(p["mu"], p["exponents"], strict=True))
-        return p["mu"]
+        return self.definition.mu0(dict(self.params))
 
     @property
     def modulus(self) -> float:
@@ -100,19 +237,27 @@ class Material:
         return 3.0 * self.mu0
 
     @property
+    def domain(self) -> float:
+        """The bound on I1 - 3 below which the energy exists (inf: everywhere)."""
+        return self.definition.domain(dict(self.params))
+
+    @property
     def alpha(self) -> float | None:
-        """C2/C1 for a Mooney-Rivlin rubber, else None."""
-        return self["c2"] / self["c1"] if self.law == "mooney-rivlin" else None
+        """C2/C1 for a Mooney-Rivlin rubber (the alpha it was given by, if any), else None."""
+        if self.law != "mooney-rivlin":
+            return None
+        return self["c2"] / self["c1"] if self.exact_alpha is None else self.exact_alpha
 
     def scaled(self) -> Material:
         """The same law with its stresses in units of mu_0 (so that mu_0 = 1)."""
         mu0 = self.mu0
+        stresses = self.definition.stresses
         out = []
         for name, value in self.params:
-            if name in STRESSES:
+            if name in stresses:
                 value = tuple(v / mu0 for v in value) if isinstance(value, tuple) else value / mu0
             out.append((name, value))
-        return Material(self.law, tuple(out))
+        return Material(self.law, tuple(out), self.exact_alpha)
 
     def describe(self) -> dict:
         """The law and its parameters as a flat JSON-ready dict."""
@@ -125,7 +270,7 @@ class Material:
 def mooney_rivlin(alpha: float) -> Material:
     """The Mooney-Rivlin rubber with C2/C1 = ``alpha``, in units of mu_0: C1 = 1 / (2 (1 + alpha))."""
     c1 = 0.5 / (1.0 + alpha)
-    return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)))
+    return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)), alpha)
 
 
 def as_material(value) -> Material:
@@ -143,51 +288,30 @@ def given_alpha(value) -> float | None:
     return None if isinstance(value, Material) else check_alpha(value)
 
 
-def _invariants(l1, l2):
-    l3 = 1.0 / (l1 * l2)
-    return l1**2 + l2**2 + l3**2, l1**-2 + l2**-2 + l3**-2, l3
+def _definition(law, where: str = "") -> RubberLaw:
+    """The registered law called ``law``; an InputError naming ``where.material`` (or ``material``) otherwise."""
+    if not isinstance(law, str) or law not in LAWS:
+        key = f"{where}.material" if where else "material"
+        raise InputError(f"{key} = {quote(law)}, but it must be one of {', '.join(LAWS)}")
+    return LAWS[law]
 
 
 def energy(material: Material, l1, l2):
     """W(l1, l2) per unit reference volume (the unit of the stresses); arrays broadcast."""
     l1, l2 = np.asarray(l1, dtype=float), np.asarray(l2, dtype=float)
-    i1, i2, l3 = _invariants(l1, l2)
-    p = dict(material.params)
-    law = material.law
-    if law == "mooney-rivlin":
-        return p["c1"] * (i1 - 3.0) + p["c2"] * (i2 - 3.0)
-    if law == "neo-hookean":
-        return 0.5 * p["mu"] * (i1 - 3.0)
-    if law == "yeoh":
-        x = i1 - 3.0
-        return p["c10"] * x + p["c20"] * x**2 + p["c30"] * x**3
-    if law == "gent":
-        return -0.5 * p["mu"] * p["jm"] * np.log1p(-(i1 - 3.0) / p["jm"])
-    if law == "ogden":
-        return sum(m / a * (l1**a + l2**a + l3**a - 3.0) for m, a in zip(p["mu"], p["exponents"], strict=True))
-    raise InputError(f"material = {quote(law)}, but it must be one of {', '.join(LAWS)}")
-
-
-def _yeoh_stable(c10: float, c20: float, c30: float) -> bool:
-    """dW/dI1 = c10 + 2 c20 x + 3 c30 x^2 > 0 for every x = I1 - 3 >= 0."""
-    if c10 <= 0.0 or c30 < 0.0:
-        return False
-    if c20 >= 0.0:
-        return True
-    if c30 == 0.0:
-        return False  # the slope falls without bound
-    x = -c20 / (3.0 * c30)  # the minimum of the quadratic, at x > 0
-    return c10 + 2.0 * c20 * x + 3.0 * c30 * x * x > 0.0
+    l3 = 1.0 / (l1 * l2)
+    i1, i2 = l1**2 + l2**2 + l3**2, l1**-2 + l2**-2 + l3**-2
+    return _definition(material.law).energy(dict(material.params), l1, l2, l3, i1, i2)
 
 
 def check(law, params: dict, where: str = "sheet") -> Material:
-    """A ``Material`` from ``law`` and ``params`` (name -> number, or list of numbers for Ogden), checked.
+    """A ``Material`` from ``law`` and ``params`` (name -> number, or list of numbers for a listed
+    parameter), checked.
 
     Every parameter of the law must be given and no other; errors name ``where.<parameter>``.
     """
-    if law not in LAWS:
-        raise InputError(f"{where}.material = {quote(law)}, but it must be one of {', '.join(LAWS)}")
-    names = LAWS[law]
+    definition = _definition(law, where)
+    names = definition.names
     extra = sorted(set(params) - set(names))
     if extra:
         raise InputError(f"{where}.{extra[0]} is not a parameter of the {law} law (its parameters: "
@@ -196,40 +320,44 @@ def check(law, params: dict, where: str = "sheet") -> Material:
     if missing:
         raise InputError(f"{where}.{missing[0]} is missing: the {law} law needs {', '.join(names)}")
     values = {}
-    for name in names:
-        value = params[name]
-        if law == "ogden":
+    for q in definition.parameters:
+        value = params[q.name]
+        if q.listed:
             if not isinstance(value, (list, tuple)) or not value:
-                raise InputError(f"{where}.{name} = {quote(value)}, but the ogden law needs a non-empty list")
-            values[name] = tuple(check_finite(f"{where}.{name}[{i}]", v) for i, v in enumerate(value))
+                raise InputError(f"{where}.{q.name} = {quote(value)}, but the {law} law needs a non-empty list")
+            values[q.name] = tuple(check_finite(f"{where}.{q.name}[{i}]", v) for i, v in enumerate(value))
         else:
-            values[name] = check_finite(f"{where}.{name}", value)
-    _check_stable(law, values, where)
+            values[q.name] = check_finite(f"{where}.{q.name}", value)
+    definition.admissible(values, where)
+    mu0 = definition.mu0(values)
+    if not (math.isfinite(mu0) and mu0 > 0.0):
+        raise InputError(f"{where}: the small-strain shear modulus mu_0 of these parameters is not > 0")
     return Material(law, tuple((n, values[n]) for n in names))
 
 
-def _check_stable(law: str, v: dict, where: str) -> None:
-    if law == "mooney-rivlin":
-        if v["c1"] <= 0.0 or v["c1"] + v["c2"] <= 0.0:
-            raise InputError(f"{where}.c1 = {quote(v['c1'])}, {where}.c2 = {quote(v['c2'])}, but a Mooney-Rivlin "
-                             "rubber needs C1 > 0 and C1 + C2 > 0 (alpha = C2/C1 > -1)")
-    elif law in ("neo-hookean", "gent"):
-        if v["mu"] <= 0.0:
-            raise InputError(f"{where}.mu = {quote(v['mu'])}, but the shear modulus must be > 0")
-        if law == "gent" and v["jm"] <= 0.0:
-            raise InputError(f"{where}.jm = {quote(v['jm'])}, but the locking parameter Jm must be > 0")
-    elif law == "yeoh":
-        if not _yeoh_stable(v["c10"], v["c20"], v["c30"]):
-            raise InputError(f"{where}.c10, c20, c30 = {v['c10']:g}, {v['c20']:g}, {v['c30']:g}, but a stable Yeoh "
-                             "rubber needs C10 > 0 and dW/dI1 = C10 + 2 C20 x + 3 C30 x^2 > 0 for all x = I1 - 3 >= 0")
-    elif law == "ogden":
-        mu, exponents = v["mu"], v["exponents"]
-        if len(mu) != len(exponents):
-            raise InputError(f"{where}.mu has {len(mu)} terms but {where}.exponents has {len(exponents)}")
-        for k, (m, a) in enumerate(zip(mu, exponents, strict=True)):
-            if not m * a > 0.0:
-                raise InputError(f"{where}.mu[{k}] = {m:g} with exponent {a:g}, but a stable Ogden term needs "
-                                 "mu_p alpha_p > 0")
-    mu0 = Material(law, tuple(v.items())).mu0
-    if not (math.isfinite(mu0) and mu0 > 0.0):
-        raise InputError(f"{where}: the small-strain shear modulus mu_0 of these parameters is not > 0")
+# the laws, in the order the command line and the tables list them
+register(RubberLaw(
+    "mooney-rivlin", (_stress("c1", "Mooney-Rivlin's C1"), _stress("c2", "Mooney-Rivlin's C2")),
+    mu0=lambda p: 2.0 * (p["c1"] + p["c2"]),
+    energy=lambda p, l1, l2, l3, i1, i2: p["c1"] * (i1 - 3.0) + p["c2"] * (i2 - 3.0),
+    admissible=_mooney_rivlin_admissible, example={"c1": 160e3, "c2": 47e3}))
+register(RubberLaw(
+    "neo-hookean", (_stress("mu", "the shear modulus mu"),),
+    mu0=lambda p: p["mu"], energy=lambda p, l1, l2, l3, i1, i2: 0.5 * p["mu"] * (i1 - 3.0),
+    admissible=_shear_admissible, example={"mu": 0.4e6}))
+register(RubberLaw(
+    "yeoh", (_stress("c10", "Yeoh's C10"), _stress("c20", "Yeoh's C20"), _stress("c30", "Yeoh's C30")),
+    mu0=lambda p: 2.0 * p["c10"], energy=_yeoh_energy, admissible=_yeoh_admissible,
+    example={"c10": 85e3, "c20": -2e3, "c30": 0.2e3}))  # softens, then stiffens
+register(RubberLaw(
+    "gent", (_stress("mu", "the shear modulus mu"),
+             Parameter("jm", "dimensionless", "Gent's locking parameter Jm (a number)")),
+    mu0=lambda p: p["mu"],
+    energy=lambda p, l1, l2, l3, i1, i2: -0.5 * p["mu"] * p["jm"] * np.log1p(-(i1 - 3.0) / p["jm"]),
+    admissible=_gent_admissible, example={"mu": 0.3e6, "jm": 10.0}, domain=lambda p: p["jm"]))
+register(RubberLaw(
+    "ogden", (_stress("mu", "Ogden's mu_p, one per term", listed=True),
+              Parameter("exponents", "dimensionless", "Ogden's exponents alpha_p, one per term", listed=True)),
+    mu0=lambda p: 0.5 * sum(m * a for m, a in zip(p["mu"], p["exponents"], strict=True)),
+    energy=_ogden_energy, admissible=_ogden_admissible,
+    example={"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}))  # Treloar's data, Ogden's fit
