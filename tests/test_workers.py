@@ -1,7 +1,8 @@
 """Local sweep workers die with the sweep: real process trees, killed the way users kill them.
 
-The sweeps here solve FE points of 20000 elements (about a minute each on this machine), so the
-workers are busy in compiled code when their parent goes.
+The local sweeps here run two curves on two workers, each of which waits inside its task for the test
+(``holds.SWEEP_CURVE``; a forked worker inherits the patch): the workers are busy when their parent
+goes, however fast the machine or the solver is, and would never end by themselves.
 """
 
 import os
@@ -12,11 +13,12 @@ import textwrap
 import time
 
 import pytest
+from holds import SWEEP_CURVE, Hold
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads the process tree in /proc")
 
-SLOW_SWEEP = [sys.executable, "-m", "pocket.cli", "sweep", "--alpha", "0.3", "--pressure", "0.3",
-              "--force", "0.1", "0.2", "0.3", "0.4", "--solver", "fem", "--elements", "20000", "--workers", "2"]
+#: two curves (one task each) on two workers
+HELD_SWEEP = ["sweep", "--alpha", "0.3", "--pressure", "0.3", "0.31", "--force", "0.1", "0.2", "--workers", "2"]
 
 
 def _children(pid: int) -> set[int]:
@@ -59,21 +61,23 @@ def _wait(condition, timeout: float) -> bool:
 
 def test_kill_9_of_a_sweep_ends_its_workers(tmp_path):
     """Exact answer: after SIGKILL to `pocket sweep` (its output piped, as into `| tee`), its two
-    busy workers are gone within 10 s and the pipe reaches end-of-file (nobody holds it)."""
-    proc = subprocess.Popen([*SLOW_SWEEP, "--out", str(tmp_path / "s.csv")], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE)
-    workers = set()
-    try:
-        assert _wait(lambda: len(_children(proc.pid)) == 2, 60), "the sweep did not start two workers"
-        workers = _children(proc.pid)
-        time.sleep(1.0)  # the workers are now solving
-        os.kill(proc.pid, signal.SIGKILL)
-        proc.wait()
-        assert _wait(lambda: not any(map(_alive, workers)), 10), "workers outlived their parent"
-        os.set_blocking(proc.stdout.fileno(), False)
-        assert _wait(lambda: proc.stdout.read() == b"", 10)  # end-of-file, not None (no data yet)
-    finally:
-        _kill(workers | _children(proc.pid))
+    busy workers (each inside its task, never released) are gone and the pipe reaches end-of-file
+    (nobody holds it). The waits are bounds for a broken test, not guesses of speed."""
+    with Hold(tmp_path, SWEEP_CURVE) as hold:
+        proc = hold.popen([*HELD_SWEEP, "--out", str(tmp_path / "s.csv")], stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE)
+        workers = set()
+        try:
+            assert hold.arrived(2), "the two workers did not start their tasks"
+            workers = _children(proc.pid)
+            assert len(workers) == 2
+            os.kill(proc.pid, signal.SIGKILL)
+            proc.wait()
+            assert _wait(lambda: not any(map(_alive, workers)), 60), "workers outlived their parent"
+            os.set_blocking(proc.stdout.fileno(), False)
+            assert _wait(lambda: proc.stdout.read() == b"", 60)  # end-of-file, not None (no data yet)
+        finally:
+            _kill(workers | _children(proc.pid))
 
 
 def test_portable_watchdog_alone(tmp_path):
@@ -103,27 +107,25 @@ def test_portable_watchdog_alone(tmp_path):
 
 
 def test_ctrl_c_ends_the_sweep_at_once_with_one_line(tmp_path):
-    """Exact answer: SIGINT to the sweep's process group (what Ctrl-C does) ends it within 10 s,
-    though its points take a minute each: status 130, stderr exactly one line, no worker left,
-    and (no point finished) no file left."""
+    """Exact answer: SIGINT to the sweep's process group (what Ctrl-C does) while both workers are
+    inside their tasks, which never end by themselves (so a sweep that waited for them would never
+    end): status 130, stderr exactly one line, no worker left, and (no point finished) no file left."""
     path = tmp_path / "s.csv"
-    proc = subprocess.Popen([*SLOW_SWEEP, "--out", str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            start_new_session=True)
-    workers = set()
-    try:
-        assert _wait(lambda: len(_children(proc.pid)) == 2, 60), "the sweep did not start two workers"
-        workers = _children(proc.pid)
-        time.sleep(1.0)
-        start = time.monotonic()
-        os.killpg(proc.pid, signal.SIGINT)
-        out, err = proc.communicate(timeout=30)
-        assert time.monotonic() - start < 10
-        assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
-        assert _wait(lambda: not any(map(_alive, workers)), 10)
-        assert list(tmp_path.iterdir()) == []
-    finally:
-        proc.kill()
-        _kill(workers | _children(proc.pid))
+    with Hold(tmp_path, SWEEP_CURVE) as hold:
+        proc = hold.popen([*HELD_SWEEP, "--out", str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          start_new_session=True)
+        workers = set()
+        try:
+            assert hold.arrived(2), "the two workers did not start their tasks"
+            workers = _children(proc.pid)
+            os.killpg(proc.pid, signal.SIGINT)
+            out, err = proc.communicate(timeout=600)
+            assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
+            assert _wait(lambda: not any(map(_alive, workers)), 60)
+            assert [p.name for p in tmp_path.iterdir()] == [hold.script.name]  # no output left
+        finally:
+            proc.kill()
+            _kill(workers | _children(proc.pid))
 
 
 # A dask cluster that cannot run the sweep: real scheduler and worker processes on 127.0.0.1, the

@@ -17,6 +17,7 @@ import os
 import sys
 
 from pocket.apps.provenance import described
+from pocket.core import interrupts
 from pocket.core.errors import PocketError, exit_status
 
 from .common import EXIT_CODES, Parser
@@ -57,8 +58,16 @@ def main(argv=None) -> int:
 
     Output cut short by the reader (``pocket ... | head``) ends quietly with status 0, as a command
     whose reader has all it wanted (Python's documented recipe for SIGPIPE, without its status 1,
-    which would fail a passing run under ``set -o pipefail``); an interrupt ends with one line and 130.
+    which would fail a passing run under ``set -o pipefail``); an interrupt ends with one line and 130,
+    also one that Python could not raise where it landed (``pocket.core.interrupts``), at the latest
+    when the command returns.
     """
+    with interrupts.remembered():
+        return _run(argv)
+
+
+def _run(argv) -> int:
+    """``main`` within ``interrupts.remembered()``."""
     try:
         try:
             args = _parser().parse_args(argv)
@@ -67,6 +76,7 @@ def main(argv=None) -> int:
             return stop.code if isinstance(stop.code, int) else 2
         try:
             status = args.handler(args)
+            interrupts.check()
         except PocketError as err:
             print(f"pocket: error: {err}", file=sys.stderr)
             return exit_status(err)
@@ -75,6 +85,7 @@ def main(argv=None) -> int:
         except Exception as err:  # a bug: one line, unless its traceback is asked for
             if _interrupted(err):  # Ctrl-C inside compiled code comes back wrapped in a SystemError
                 raise KeyboardInterrupt from err
+            interrupts.check()  # a failure that followed an interrupt Python could not raise
             if os.environ.get("POCKET_TRACEBACK"):
                 raise
             print(f"pocket: internal error: {type(err).__name__}: {' '.join(str(err).split())} (a bug in pocket: "

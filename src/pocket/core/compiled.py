@@ -38,6 +38,11 @@ entry stale, and it is compiled afresh and overwritten. An entry that fails to l
 is a cache miss; one that cannot be written leaves the function uncached. A cache
 costs or saves compile time, never a result.
 
+A Ctrl-C while numba compiles can land in a callback of the compiler whose
+exceptions are ignored; every compilation (or load of an entry) checks, when it
+returns, whether an interrupt was recorded meanwhile and raises it then
+(``pocket.core.interrupts``).
+
 Loading an entry initialises only numba's runtime, not its whole compiler (see
 ``_Cache.load_overload``): that halves the start-up of a command.
 
@@ -58,6 +63,8 @@ import stat
 import tempfile
 
 from numba import njit
+
+from . import interrupts
 
 try:
     from numba.core.caching import (
@@ -191,14 +198,31 @@ if FunctionCache is not None:
                 pass
 
 
+def _checking_interrupts(dispatcher):
+    """``dispatcher``, whose compilations (numba calls ``compile`` for each new signature, also for a
+    function compiled inside another) raise an interrupt recorded while they ran, when they return."""
+    compile_signature = dispatcher.compile
+
+    @functools.wraps(compile_signature)
+    def compile_then_check(sig):
+        try:
+            return compile_signature(sig)
+        finally:
+            interrupts.check()
+
+    dispatcher.compile = compile_then_check
+    return dispatcher
+
+
 def compiled(function=None, **options):
     """``numba.njit(function, **options)``, cached on disk outside the package where possible (module
     docstring), with numpy's error model: a division by zero gives inf or nan (which the solvers reject
-    as a failed step) rather than raising ZeroDivisionError from compiled code. Used as ``@compiled`` or
+    as a failed step) rather than raising ZeroDivisionError from compiled code, and an interrupt never
+    lost while it compiles (module docstring). Used as ``@compiled`` or
     ``@compiled(inline="always")``."""
     if function is None:
         return functools.partial(compiled, **options)
-    dispatcher = njit(function, error_model="numpy", **options)
+    dispatcher = _checking_interrupts(njit(function, error_model="numpy", **options))
     if FunctionCache is None:
         return dispatcher
     try:
