@@ -80,10 +80,11 @@ from .problem import Problem
 from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, profile_from_steps, tension_minima
 from .tensions import tensions
 
-__all__ = ["SphereProblem", "EQUATOR", "TOUCH"]
+__all__ = ["SphereProblem", "EQUATOR", "POLE", "TOUCH"]
 
 #: the ends of the model particular to a sphere (``pocket.shooting.sphereend``)
 EQUATOR = "the sheet would wrap past the sphere's equator"
+POLE = "the sphere's lowest point, and the sheet's pole on it, would reach the clamp plane"
 TOUCH = "the free sheet would touch the sphere outside the contact zone"
 
 
@@ -175,8 +176,8 @@ class SphereProblem(Problem):
         return np.array(out if angle is None else [*out, y[2] - angle])
 
     def solved(self, force, x):
-        """The solved state's pieces at ``force``: (profile with its contact pressure, free steps, y(1),
-        y(a)); a ConvergenceError if its final shots do not reach the clamp."""
+        """The solved state's pieces at ``force``: (profile, contact pressure at its points (NaN off
+        contact), free steps, y(1), y(a)); a ConvergenceError if its final shots do not reach the clamp."""
         from .compression import final_shots  # the plate's reading of a final shot, shared
 
         q, lc, a, p = self.geometry(x, force)
@@ -187,24 +188,24 @@ class SphereProblem(Problem):
         profile = profile_from_steps(np.concatenate([inner, outer[1:]]), self.law, lc)
         on = profile.r <= a
         pc = np.where(on, self.inflated.pressure * q + (profile.tension_1 + profile.tension_2) / self.radius, np.nan)
-        return dataclasses.replace(profile, contact=on, contact_pressure=pc), outer[1:], y, edge
+        return dataclasses.replace(profile, contact=on), pc, outer[1:], y, edge
 
     def margins(self, force, x) -> dict[str, float]:
         """How far the solved state at ``force`` stands from each end of the model (positive inside it):
-        {EQUATOR: pi/2 - phi_c (rad), CLAMP_PLANE: pi - psi(1) (rad), TOUCH: the free sheet's smallest
-        gap below the sphere (units R)}."""
-        profile, _, y, edge = self.solved(force, x)
+        {EQUATOR: pi/2 - phi_c (rad), CLAMP_PLANE: pi - psi(1) (rad), POLE: the height h (units R),
+        TOUCH: the free sheet's smallest gap below the sphere (units R)}."""
+        profile, _, _, y, edge = self.solved(force, x)
         gap = self.gap(profile, -y[1])
-        return {EQUATOR: 0.5 * math.pi + edge[2], CLAMP_PLANE: math.pi - y[2],
+        return {EQUATOR: 0.5 * math.pi + edge[2], CLAMP_PLANE: math.pi - y[2], POLE: -y[1],
                 TOUCH: float(np.min(gap)) if gap.size else math.inf}
 
     def compressed(self, force, x, fluid) -> tuple[CompressedState, float]:
         """The compressed state at ``force`` (as given, ``fluid`` too) for the solved unknowns x, checked
         (``check``), and its clamp angle psi(1)."""
         q, lc, a, p = self.geometry(x, force)
-        profile, outer, y, edge = self.solved(force, x)
+        profile, pc, outer, y, edge = self.solved(force, x)
         height = -y[1]
-        self.check(profile, height, force)
+        self.check(profile, pc, height, force)
         low = tension_minima(profile, outer, self.law, p, self.tolerance)
         inflated = self.inflated
         pressure = inflated.pressure * q
@@ -216,7 +217,7 @@ class SphereProblem(Problem):
             volume=y[4], profile=profile, inflated=inflated, solver="shooting", material=inflated.material,
             fluid=fluid, tension_1_min=low[0], tension_2_min=low[1], indenter=self.indenter,
             contact_radius_deformed=float(edge[0]), contact_pressure_pole=pressure + 2.0 * t0 / self.radius,
-            contact_pressure_edge=float(profile.contact_pressure[profile.contact][-1]),
+            contact_pressure_edge=float(pc[profile.contact][-1]), contact_pressure=pc,
         )
         return state, float(y[2])
 
@@ -228,10 +229,11 @@ class SphereProblem(Problem):
         surface = height + self.indenter.height(profile.rho[free])
         return surface - profile.eta[free]
 
-    def check(self, profile, height, force) -> None:
-        """Refuse, by name, a state with a negative contact pressure or its free sheet inside the sphere
-        (OutOfRangeError): neither is a state of this model."""
-        pc = profile.contact_pressure[profile.contact]
+    def check(self, profile, contact_pressure, height, force) -> None:
+        """Refuse, by name, a state (its ``profile``, the ``contact_pressure`` at its points, ``height``)
+        with a negative contact pressure or its free sheet inside the sphere (OutOfRangeError): neither
+        is a state of this model."""
+        pc = contact_pressure[profile.contact]
         if np.any(pc < 0.0):
             i = int(np.argmin(pc))
             raise OutOfRangeError(f"force = {force!r} ({self.label}): the contact pressure would be negative "

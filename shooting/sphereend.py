@@ -1,11 +1,13 @@
 r"""The end of the compression range under a sphere: the largest force the pocket's first branch carries.
 
-Three things end the model as the sphere presses further (``pocket.shooting.sphere``):
+Four things end the model as the sphere presses further (``pocket.shooting.sphere``):
 
 - the sheet would wrap past the sphere's equator (phi_c = pi/2): its lower cap ends there, and the
   contact zone's shot stops (``integrator.FOLD``, psi = -pi/2);
 - the free sheet would reach the clamp plane: psi(1) = pi, as under the plate
   (``pocket.shooting.rangeend``); shots may turn past pi, so this margin is smooth across it;
+- the sphere's lowest point, and the sheet's pole on it, would reach the clamp plane (h = 0): a small
+  sphere pushed deep, whose cap dips below the clamp before the free sheet does;
 - the free sheet would touch the sphere outside the contact zone. For a sphere this cannot come
   first: the free sheet leaves the edge tangent to the sphere and, while it rises (psi < 0), normal
   equilibrium turns it down (psi' = lambda_1 (p - t2 sin(psi) / rho) / t1 > 0) while the sphere's
@@ -14,11 +16,12 @@ Three things end the model as the sphere presses further (``pocket.shooting.sphe
 
 The end, computed. From a state at a small force, the force is continued with steps doubled after each
 success (each state solved by ``newton`` from a secant prediction) while every margin
-(``SphereProblem.margins``: pi/2 - phi_c, pi - psi(1), the smallest gap) stays positive; a step whose
+(``SphereProblem.margins``: pi/2 - phi_c, pi - psi(1), h, the smallest gap) stays positive; a step whose
 state does not solve or breaks a margin is halved, until it is below ``_RTOL`` of the force. The end is
 then the last force solved, within that relative width, and its reason the margin nearest to zero
-there (scaled: the angles by pi/2 and pi, the gap by the dome's height). A search that stalls with
-every margin above ``_NEAR`` is no end of the model but a solver failure (ConvergenceError). A force
+there (scaled: the angles by pi/2 and pi, the height and the gap by the inflated dome's height). A
+search that stalls with every margin above ``_NEAR`` is no end of the model but a solver failure
+(ConvergenceError). A force
 that grows past ``_FORCE_MAX`` without an end (a rubber that locks) leaves the range without end
 (inf). A force maximum before either end (a fold) is not sought under a sphere. Computed once per
 pocket and indenter (``rangeend.end_of`` caches it).
@@ -34,7 +37,7 @@ from pocket.core.errors import CLAMP_PLANE, ConvergenceError
 
 from . import newton
 from .rangeend import End
-from .sphere import EQUATOR, TOUCH
+from .sphere import EQUATOR, POLE, TOUCH
 
 __all__ = ["end_of_sphere"]
 
@@ -52,9 +55,10 @@ def _solve(problem, force, guess, jacobian=None):
 
 
 def _scaled(problem, margins) -> dict[str, float]:
-    """The margins in comparable units: the angles by pi/2 and pi, the gap by the inflated height."""
+    """The margins in comparable units: the angles by pi/2 and pi, the lengths by the inflated height."""
+    height = problem.inflated.height
     return {EQUATOR: margins[EQUATOR] / (0.5 * math.pi), CLAMP_PLANE: margins[CLAMP_PLANE] / math.pi,
-            TOUCH: margins[TOUCH] / problem.inflated.height}
+            POLE: margins[POLE] / height, TOUCH: margins[TOUCH] / height}
 
 
 def _first(problem, seed):

@@ -50,8 +50,6 @@ class Profile:
     stretch_1, stretch_2 : meridional and hoop stretches lambda_1, lambda_2.
     tension_1, tension_2 : stress resultants T_1, T_2 in units of E T.
     contact : bool array, True where the sheet touches the indenter.
-    contact_pressure : the pressure p_c the indenter exerts on the sheet (Phat units), NaN off the
-        contact zone; None where a solver does not give it.
     """
 
     r: np.ndarray
@@ -62,11 +60,9 @@ class Profile:
     tension_1: np.ndarray
     tension_2: np.ndarray
     contact: np.ndarray
-    contact_pressure: np.ndarray | None = None
 
     def __post_init__(self):
-        shapes = {f.name: np.shape(getattr(self, f.name)) for f in dataclasses.fields(self)
-                  if getattr(self, f.name) is not None}
+        shapes = {f.name: np.shape(getattr(self, f.name)) for f in dataclasses.fields(self)}
         if len(set(shapes.values())) != 1 or len(shapes["r"]) != 1:
             raise ValueError(f"Profile fields must be arrays of one common shape (n,), got {shapes}")
 
@@ -167,7 +163,8 @@ class CompressedState(_Membrane):
     ``height`` is the indenter's lowest point above the clamp plane (the dome's height under the plate).
     ``contact_radius_deformed`` (rho_c / R), ``contact_pressure_pole`` and ``contact_pressure_edge`` (the
     contact pressure at the pole and at the contact edge, Phat units) are reported where a solver gives
-    them (NaN otherwise). ``inflated`` is the
+    them (NaN otherwise), and ``contact_pressure`` is that pressure at each point of the profile (shape
+    (n,) as ``profile.r``, NaN off the contact zone; None where a solver does not give it). ``inflated`` is the
     step-1 state this one was compressed from. ``fluid`` is the fluid sealed
     in the pocket at Phat_I (its ambient pressure as Phat_atm); ``indenter`` what
     presses on it (``pocket.core.indenters``). ``extra``,
@@ -198,6 +195,7 @@ class CompressedState(_Membrane):
     contact_radius_deformed: float = math.nan
     contact_pressure_pole: float = math.nan
     contact_pressure_edge: float = math.nan
+    contact_pressure: np.ndarray | None = None
 
     #: reported after KEYS where given (finite)
     CONTACT_KEYS = ("contact_radius_deformed", "contact_pressure_pole", "contact_pressure_edge")
