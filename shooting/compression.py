@@ -1,7 +1,9 @@
 """Step 2, compression at fixed volume by a flat frictionless plate, force given.
 
 The indenter is an argument (``pocket.core.indenters``): this solver poses the flat plate,
-its default, and refuses another kind (``pocket.shooting.problem.CONTACTS``).
+its default, and the sphere (``pocket.shooting.sphere``, whose problem the continuation below
+solves the same way; its range end is ``pocket.shooting.sphereend``), and refuses another kind
+(``pocket.shooting.problem.CONTACTS``).
 
 The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.problem``; the
 fluid sealed in the pocket (a liquid: fixed volume; a gas: the polytropic law) enters only its
