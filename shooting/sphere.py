@@ -121,7 +121,7 @@ class SphereProblem(Problem):
 
     def _contact(self, lc, a, store):
         """(status, y(a), steps) of the contact zone from the pole to the edge r = a."""
-        t0, start = self._pole(lc)
+        start = self._pole(lc)[1]
         if a <= 2.0 * R_POLE:  # the series alone: its error O(a^3) is below the integration's
             y = pole_state(lc, self.law, start, a)
             return OK, y, np.array([[a, *y]])
