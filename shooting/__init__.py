@@ -1,9 +1,10 @@
 """The reference solver: shooting on the axisymmetric membrane equations (Yang & Feng).
 
 ``inflate`` / ``inflate_volume`` solve step 1 (pressure or volume control),
-``compress`` / ``compression_curve`` step 2 (fixed volume, flat frictionless
-plate, force given), ``range_end`` the force at which step 2 leaves the model (the
-free sheet reaches the clamp plane). The rubber is a Mooney-Rivlin alpha or any law of
+``compress`` / ``compression_curve`` step 2 (fixed volume, a flat frictionless
+plate or a sphere, force given), ``range_end`` the force at which step 2 leaves the model (the
+free sheet reaches the clamp plane; under a sphere also its equator, ``pocket.shooting.sphereend``).
+The rubber is a Mooney-Rivlin alpha or any law of
 ``pocket.core.materials`` (its tensions derived from its strain energy in
 ``pocket.shooting.tensions``); a compression's fluid is a liquid or a gas sealed at the
 initial pressure (``pocket.core.fluids``; ``pocket.shooting.problem``). The states are

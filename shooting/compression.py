@@ -1,7 +1,9 @@
 """Step 2, compression at fixed volume by a flat frictionless plate, force given.
 
 The indenter is an argument (``pocket.core.indenters``): this solver poses the flat plate,
-its default, and refuses another kind (``pocket.shooting.problem.CONTACTS``).
+its default, and the sphere (``pocket.shooting.sphere``, whose problem the continuation below
+solves the same way; its range end is ``pocket.shooting.sphereend``), and refuses another kind
+(``pocket.shooting.problem.CONTACTS``).
 
 The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.problem``; the
 fluid sealed in the pocket (a liquid: fixed volume; a gas: the polytropic law) enters only its
@@ -31,7 +33,7 @@ import math
 
 import numpy as np
 
-from pocket.core.errors import CLAMP_PLANE, ConvergenceError, InputError, beyond_range
+from pocket.core.errors import ConvergenceError, InputError, beyond_range
 from pocket.core.fluids import as_fluid
 from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_force, check_positive
@@ -45,7 +47,7 @@ from .problem import Problem, contact_of
 from .rangeend import end_of, solve_on_branch
 from .shots import profile_from_steps, tension_minima
 
-__all__ = ["compress", "compression_curve"]
+__all__ = ["compress", "compression_curve", "plate_state", "final_shots"]
 
 _MIN_STEP = 1e-9  # smallest force step, relative to the force, before a solve is declared failed
 _FOLD_STEP = 1e-3  # near a fold of the force, the step below which the state is sought by the clamp angle
@@ -60,7 +62,7 @@ def _beyond(force, problem, seed):
     """The range end of ``problem`` (``rangeend.End``); OutOfRangeError if ``force`` is past it."""
     end = end_of(problem, seed)
     if force > end.force:
-        where = (CLAMP_PLANE if not end.fold else
+        where = (end.reason if not end.fold else
                  f"the force has a maximum, with the sheet's angle at the clamp at {end.angle:.6g} rad")
         raise beyond_range(f"force = {force!r}", f"force = {end.force:.10g} ({problem.label})", where)
     return end
@@ -143,7 +145,7 @@ def _advance(problem, branch, force):
 
 def _failed(problem, sol, f_try, f0, force, more):
     """The ConvergenceError of a continuation step that could not be taken: where, from where, why."""
-    q, e = sol.x
+    q, e = sol.x[:2]
     why = sol.message if not sol.success else "the solution left the branch (past pi, a fold, or a jump)"
     last = problem.failure()
     lc = problem.stretch(e)
@@ -157,15 +159,21 @@ def _failed(problem, sol, f_try, f0, force, more):
         + more, load=f_try, iterations=sol.evaluations, residual=sol.residual)
 
 
-def _state(problem, force, x, fluid) -> tuple[CompressedState, float]:
-    """The compressed state at ``force`` (as given, ``fluid`` too) for the solved unknowns x, and its clamp
-    angle psi(1)."""
-    q, lc, a, p = problem.geometry(x, force)
-    status, y, _ = problem.shoot(x, force)
-    profile_status, _, steps = problem.shoot(x, force, store=20000)
+def final_shots(force, status, profile_status) -> None:
+    """A ConvergenceError if the final shot at ``force`` (its ``status``) or the shot storing its profile
+    did not reach the clamp."""
     for what, code in (("final", status), ("profile", profile_status)):
         if code != OK:
             raise ConvergenceError(f"compression at force = {force!r}: the {what} shot {STATUS[code]}", load=force)
+
+
+def plate_state(problem, force, x, fluid) -> tuple[CompressedState, float]:
+    """The compressed state under the plate at ``force`` (as given, ``fluid`` too) for the solved unknowns
+    x, and its clamp angle psi(1) (``Problem.compressed``)."""
+    q, lc, a, p = problem.geometry(x, force)
+    status, y, _ = problem.shoot(x, force)
+    profile_status, _, steps = problem.shoot(x, force, store=20000)
+    final_shots(force, status, profile_status)
     inflated = problem.inflated
     height = -y[1]
     profile = profile_from_steps(steps, problem.law, lc, contact_radius=a)
@@ -237,7 +245,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
             states[f] = _uncompressed(problem, f, fluid)
         else:
             branch = _advance(problem, branch, f)
-            states[f], clamp_angle = _state(problem, f, branch.points[-1][1], fluid)
+            states[f], clamp_angle = problem.compressed(f, branch.points[-1][1], fluid)
             if clamp_angle >= math.pi - _band(rtol):
                 _beyond(f, problem, branch.points[-1])
         done += counts[f]

@@ -55,7 +55,7 @@ from pocket.core.compiled import compiled
 
 from .tensions import tensions, tensions_compiled
 
-__all__ = ["rhs", "pole_state"]
+__all__ = ["rhs", "derivatives", "pole_state"]
 
 
 @functools.partial(compiled, inline="always")
@@ -73,6 +73,16 @@ def rhs(r, y, code, params, p, out):
     out[2] = l1 * (p - t2 * s / rho) / t1
     out[3] = ((t2 - t1) * drho / rho - a12 * dl2) / a11
     out[4] = np.pi * rho * rho * l1 * s
+
+
+@functools.partial(compiled, inline="always")
+def derivatives(r, y, code, params, p, wrap, out):
+    """``rhs`` for the free sheet (``wrap`` = 0), or for the sheet lying on a sphere of curvature
+    ``wrap`` = 1/R_s > 0 (units 1/R): there psi' = -lambda_1 / R_s replaces normal equilibrium
+    (``pocket.shooting.sphere``), the other four equations unchanged."""
+    rhs(r, y, code, params, p, out)
+    if wrap > 0.0:
+        out[2] = -y[3] * wrap
 
 
 def pole_state(l0: float, law, p: float, r0: float) -> np.ndarray:

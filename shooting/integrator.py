@@ -44,7 +44,7 @@ import numpy as np
 from pocket.core.compiled import compiled
 
 from . import tableau
-from .equations import rhs
+from .equations import derivatives
 from .tensions import inside_compiled, tensions_compiled
 
 __all__ = ["integrate", "OK", "AXIS", "FOLD", "SLACK", "STEPS", "SMALL_STEP", "LOCKED", "STATUS", "NUMERICAL"]
@@ -83,14 +83,14 @@ def _status(y, code, params, r, psi_max):
 
 
 @compiled
-def _integrate(y0, r0, r1, code, params, p, rtol, atol, h0, hmax, psi_max, store, A, B, C, E3, E5):
+def _integrate(y0, r0, r1, code, params, p, wrap, rtol, atol, h0, hmax, psi_max, store, A, B, C, E3, E5):
     n = y0.size
     K = np.empty((_NS + 1, n))
     y = y0.copy()
     ynew = np.empty(n)
     ytmp = np.empty(n)
     f = np.empty(n)
-    rhs(r0, y, code, params, p, f)
+    derivatives(r0, y, code, params, p, wrap, f)
     r = r0
     h = h0
     nstore = 0
@@ -117,13 +117,13 @@ def _integrate(y0, r0, r1, code, params, p, rtol, atol, h0, hmax, psi_max, store
                     for j in range(s):
                         acc += A[s, j] * K[j, i]
                     ytmp[i] = y[i] + hh * acc
-                rhs(r + C[s] * hh, ytmp, code, params, p, K[s])
+                derivatives(r + C[s] * hh, ytmp, code, params, p, wrap, K[s])
             for i in range(n):
                 acc = 0.0
                 for j in range(_NS):
                     acc += B[j] * K[j, i]
                 ynew[i] = y[i] + hh * acc
-            rhs(rnew, ynew, code, params, p, K[_NS])
+            derivatives(rnew, ynew, code, params, p, wrap, K[_NS])
             e5 = 0.0
             e3 = 0.0
             for i in range(n):
@@ -161,7 +161,8 @@ def _integrate(y0, r0, r1, code, params, p, rtol, atol, h0, hmax, psi_max, store
     return STEPS, r, y, nstore
 
 
-def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi, r_end=1.0):
+def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi, r_end=1.0,
+              wrap=0.0):
     """Integrate the membrane equations from r0 to ``r_end`` (the clamp r = 1 unless given).
 
     y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). law: a ``pocket.shooting.laws.Law``.
@@ -169,7 +170,9 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     tolerance, a float or one per component, shape (5,) (default rtol / 100). store: if > 0,
     keep every accepted step, up to ``store`` points. h0: first step (default: a hundredth
     of r0, or 1e-6). max_step: largest step in r (a finer profile; accuracy is set by rtol).
-    psi_max: the meridian angle at which the meridian counts as folded (status FOLD).
+    psi_max: the meridian angle at which the meridian counts as folded (status FOLD). wrap: 0 for the
+    free sheet, or the curvature 1/R_s (units 1/R) of a sphere the sheet lies on (``equations.derivatives``);
+    on a sphere, psi reaching -pi/2 is the sheet reaching its equator (status FOLD).
 
     Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
     columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
@@ -178,7 +181,8 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
     buf = np.empty((store, 6)) if store else np.empty((0, 6))
     status, r_end, y_end, m = _integrate(
-        np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(rtol), atol,
+        np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(wrap), float(rtol),
+        atol,
         float(h0), float(max_step), float(psi_max), buf, tableau.A, tableau.B, tableau.C, tableau.E3, tableau.E5,
     )
     return int(status), float(r_end), y_end, buf[:m]

@@ -1,7 +1,8 @@
 """Step 2 of one inflated pocket as a shooting problem: unknowns, shots and residuals.
 
-The indenter is the flat plate (``pocket.core.indenters``; ``CONTACTS`` maps each
-indenter kind this solver poses to its problem, and ``contact_of`` refuses another).
+The indenter is the flat plate here (``pocket.core.indenters``; ``CONTACTS`` maps each
+indenter kind this solver poses to its problem, and ``contact_of`` refuses another; the sphere's
+is ``pocket.shooting.sphere``).
 Contact zone (0 <= r <= a): the sheet lies flat on the plate; tangential
 equilibrium with no friction and regularity at the axis leave the uniform
 equibiaxial stretch rho = lambda_c r, lambda_1 = lambda_2 = lambda_c (the normal
@@ -160,6 +161,18 @@ class Problem:
         unknown. A continuation step that jumps further may have landed on another branch."""
         return bool(np.all(np.abs(x - guess) <= np.maximum(1.0, np.abs(previous))))
 
+    def compressed(self, force, x, fluid):
+        """(the ``CompressedState`` at ``force`` for the solved unknowns x, its clamp angle psi(1))."""
+        from .compression import plate_state
+
+        return plate_state(self, force, x, fluid)
+
+    def end(self, seed):
+        """The range end (``pocket.shooting.rangeend.End``) from the solved (force, x) ``seed`` or None."""
+        from .rangeend import plate_end
+
+        return plate_end(self, seed)
+
     def residual(self, x, force, angle=None):
         """The residuals at ``force`` (shape (2,)), with psi(1) - ``angle`` appended if given; None
         where the shot does not reach the clamp or x is outside the domain."""
@@ -175,8 +188,10 @@ class Problem:
         return np.array(out if angle is None else [*out, y[2] - angle])
 
 
+from .sphere import SphereProblem  # noqa: E402 (it builds on Problem)
+
 #: indenter kind -> the problem that poses its contact
-CONTACTS: dict[str, type[Problem]] = {"flat": Problem}
+CONTACTS: dict[str, type[Problem]] = {"flat": Problem, "sphere": SphereProblem}
 
 
 def contact_of(indenter: Indenter) -> type[Problem]:

@@ -54,7 +54,7 @@ import math
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError
+from pocket.core.errors import CLAMP_PLANE, ConvergenceError
 from pocket.core.fluids import as_fluid
 from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_positive
@@ -63,7 +63,7 @@ from . import brent, newton
 from .laws import law_of
 from .problem import Problem, contact_of
 
-__all__ = ["End", "range_end", "end_of", "solve_on_branch"]
+__all__ = ["End", "range_end", "end_of", "plate_end", "solve_on_branch"]
 
 _START_FORCE = 1e-2  # the first state of the continuation in theta (halved if it does not solve)
 _MIN_STEP = 1e-6  # smallest step in theta (rad) before the continuation gives up
@@ -75,13 +75,15 @@ _LOCKING = 1e-2  # lock margin 1 - (I1 - 3)/Jm of the contact zone below which a
 class End:
     """The end of one pocket's range: ``force`` (Fhat_end), the clamp angle there (pi, or less at a
     ``fold``) and the branch up to it, ``path``: (theta, z = (q, e, Fhat)) with theta increasing.
-    A rubber that ``locks`` first has no end: ``force`` is inf, ``angle`` the last clamp angle solved."""
+    A rubber that ``locks`` first has no end: ``force`` is inf, ``angle`` the last clamp angle solved.
+    ``reason``: what happens there (the plate's: the clamp plane; a sphere's, ``pocket.shooting.sphereend``)."""
 
     force: float
     angle: float
     fold: bool
     path: tuple
     locks: bool = False
+    reason: str = CLAMP_PLANE
 
 
 _ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid, indenter) -> End
@@ -108,7 +110,7 @@ def end_of(problem: Problem, seed=None) -> End:
     """The ``End`` of ``problem`` (cached); ``seed``: an optional solved (force, x) on its branch."""
     key = problem.key
     if key not in _ENDS:
-        _ENDS[key] = _compute(problem, seed)
+        _ENDS[key] = problem.end(seed)
     return _ENDS[key]
 
 
@@ -156,7 +158,8 @@ def _fold(problem, path, k):
     return End(force=float(peak), angle=float(theta), fold=True, path=branch)
 
 
-def _compute(problem, seed):
+def plate_end(problem, seed) -> End:
+    """The ``End`` of the plate's ``problem`` (module docstring; ``Problem.end``), from the solved ``seed``."""
     force, x = _first_state(problem, seed)
     theta = problem.clamp_angle(x, force)
     path = [(theta, np.array([x[0], x[1], force]))]

@@ -83,7 +83,7 @@ def test_computed_once_per_pocket(monkeypatch):
     """Exact answer: a second request (range_end, or forces past it) reads the cache."""
     shooting.range_end(0.4, 0.2)
     calls = []
-    monkeypatch.setattr(rangeend, "_compute", lambda *a: calls.append(a))
+    monkeypatch.setattr(rangeend, "plate_end", lambda *a: calls.append(a))
     shooting.range_end(0.4, 0.2)
     with pytest.raises(OutOfRangeError):
         shooting.compress(0.4, 0.2, 1e3)

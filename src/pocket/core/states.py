@@ -158,8 +158,13 @@ class InflatedState(_Membrane):
 class CompressedState(_Membrane):
     """Step 2: the inflated pocket pressed by ``indenter`` (the flat plate by default) at fixed volume.
 
-    ``contact_area`` is the deformed area A_c/(pi R^2) = pi (lambda_c a_c)^2 /
-    (pi R^2); ``contact_radius`` the Lagrangian a_c/R. ``inflated`` is the
+    ``contact_area`` is the deformed area A_c/(pi R^2) in contact (the curved area on a curved
+    indenter; pi (lambda_c a_c)^2 / (pi R^2) on the plate); ``contact_radius`` the Lagrangian a_c/R.
+    ``height`` is the indenter's lowest point above the clamp plane (the dome's height under the plate).
+    ``contact_radius_deformed`` (rho_c / R), ``contact_pressure_pole`` and ``contact_pressure_edge`` (the
+    contact pressure at the pole and at the contact edge, Phat units) are reported where a solver gives
+    them (NaN otherwise), and ``contact_pressure`` is that pressure at each point of the profile (shape
+    (n,) as ``profile.r``, NaN off the contact zone; None where a solver does not give it). ``inflated`` is the
     step-1 state this one was compressed from. ``fluid`` is the fluid sealed
     in the pocket at Phat_I (its ambient pressure as Phat_atm); ``indenter`` what
     presses on it (``pocket.core.indenters``). ``extra``,
@@ -187,6 +192,13 @@ class CompressedState(_Membrane):
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
     indenter: Indenter = FLAT
+    contact_radius_deformed: float = math.nan
+    contact_pressure_pole: float = math.nan
+    contact_pressure_edge: float = math.nan
+    contact_pressure: np.ndarray | None = None
+
+    #: reported after KEYS where given (finite)
+    CONTACT_KEYS = ("contact_radius_deformed", "contact_pressure_pole", "contact_pressure_edge")
 
     KEYS = (
         "alpha",
@@ -203,5 +215,7 @@ class CompressedState(_Membrane):
     )
 
     def scalars(self) -> dict:
-        """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars``, and the fluid."""
-        return _scalars(self, self.KEYS, self.extra, {**self.material.describe(), **self.fluid.describe()})
+        """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars`` with the
+        ``CONTACT_KEYS`` a solver gave, and the fluid."""
+        keys = self.KEYS + tuple(k for k in self.CONTACT_KEYS if math.isfinite(getattr(self, k)))
+        return _scalars(self, keys, self.extra, {**self.material.describe(), **self.fluid.describe()})
