@@ -48,10 +48,10 @@ nodal values. Each iteration assembles element by element and solves the bordere
 O(N).
 
 ``solve`` runs Newton, projects the zone's eta dofs onto the surface, and refuses a state outside
-the model (``OutOfRangeError``): the free part at the clamp plane (``steps.check_clamp``), the zone
-wrapping past the surface's reach (a sphere's equator), the free sheet above the surface
-(touching it outside the contact zone), or a contact pressure p_c = P + kappa_1 T_1 + kappa_2 T_2
-below zero at a point of the zone.
+the model (``OutOfRangeError``): the zone wrapping past the surface's reach (a sphere's equator),
+the free sheet above the surface (touching it outside the contact zone), a contact pressure
+p_c = P + kappa_1 T_1 + kappa_2 T_2 below zero at a point of the zone, the indenter's lowest point
+below the clamp plane, or the free part at it (``steps.check_clamp``).
 """
 
 from __future__ import annotations
@@ -333,7 +333,6 @@ def check_range(model: Model, y: np.ndarray, surf: Surface) -> None:
     if not rho_e < surf.reach:
         raise OutOfRangeError(f"the sheet wraps past the indenter's equator (contact radius rho_c/R = {rho_e:.6g} "
                               f"reaches its radius {surf.reach:.6g}, {where}), outside the model")
-    check_clamp(model, y, WRAPPED)
     free_rho, free_eta = y[e: n: 2], y[e + 1: n: 2]
     under = free_rho < surf.reach
     gap = free_eta[under] - y[n + 1] - surf.height(free_rho[under])
@@ -347,6 +346,10 @@ def check_range(model: Model, y: np.ndarray, surf: Surface) -> None:
     if pc.min() < 0.0:
         raise OutOfRangeError(f"the contact pressure turns negative in the contact zone (p_c R/(E T) = "
                               f"{pc.min():.3g}, {where}): the indenter would pull the sheet, outside the model")
+    if y[n + 1] < 0.0:
+        raise OutOfRangeError(f"the indenter presses the pole below the clamp plane (its lowest point at h/R = "
+                              f"{y[n + 1]:.3g}, {where}), outside the model")
+    check_clamp(model, y, WRAPPED)
 
 
 def contact_pressure(zn: Zone, pressure: float, surf: Surface) -> np.ndarray:

@@ -49,8 +49,9 @@ class Surface:
 def _sphere(params: dict) -> Surface:
     k = params["radius"]
 
-    def root(rho):
-        return np.sqrt(k * k - np.square(rho))
+    def root(rho):  # NaN past the equator, which the solver rejects
+        with np.errstate(invalid="ignore"):
+            return np.sqrt(k * k - np.square(rho))
 
     return Surface(height=lambda rho: k - root(rho), slope=lambda rho: rho / root(rho),
                    second=lambda rho: k * k / root(rho) ** 3, third=lambda rho: 3.0 * k * k * rho / root(rho) ** 5,

@@ -6,6 +6,10 @@ fitted mesh with the zone r < a_0 laid on the surface, h = eta_I(a_0) - z(rho_I(
 halves a_0. The load is then stepped (``continuation.follow``) in sigma = sqrt(F) or in h; each
 later force of a curve is one Newton solve from the extrapolation through the states before it
 (``curves.predict``), stepping from the last state if that fails or leaves the model.
+
+A sphere's surface ends at its equator, where its slope diverges: a path that gives up with the
+contact edge within EQUATOR of it has met the end of the model's range (the sheet would wrap past
+the equator), an ``OutOfRangeError`` quoting the last force (or height) reached.
 """
 
 from __future__ import annotations
@@ -26,9 +30,12 @@ from .newton import Tolerances
 from .obstacle import conform, reaction, solve
 from .surfaces import surface
 
-__all__ = ["touch", "first_contact", "force_path", "height_path", "curve", "at_height"]
+__all__ = ["touch", "first_contact", "first_radius", "force_path", "height_path", "curve", "at_height"]
 
 _HALVINGS = 6
+#: a path that gives up with its contact edge within this fraction of the surface's reach has met
+#: a sphere's equator, where the zone's slope z' diverges (measured: rho_c/R_s = 0.99993 converges)
+EQUATOR = 1e-3
 
 
 def touch(model: Model, inflated: np.ndarray, fill: Control, a: float) -> np.ndarray:
@@ -51,13 +58,19 @@ def first_contact(model: Model, inflated: np.ndarray, fill: Control, a: float,
         try:
             y, iterations = solve(model, replace(fill, radius=a), touch(model, inflated, fill, a), tol)
             return y, total + iterations
-        except ConvergenceError as err:
-            total += err.iterations
+        except (ConvergenceError, OutOfRangeError) as err:  # a first contact out of range is a step too long
+            total += getattr(err, "iterations", 0)
             last = err
             a *= 0.5
     raise ConvergenceError(f"first contact with the {fill.indenter.kind}: Newton failed at every contact radius "
                            f"from a/R = {first:.3g} down to {2 * a:.3g}: {last}", load=a, iterations=total,
-                           residual=last.residual)
+                           residual=getattr(last, "residual", float("nan")))
+
+
+def first_radius(inflated, fill: Control, largest: float) -> float:
+    """The first contact radius: ``largest``, and at most a quarter of the surface's reach seen from the
+    inflated pole (the zone's radius, about lambda_0 a, then stays well inside the cap)."""
+    return min(largest, 0.25 * surface(fill.indenter).reach / inflated.stretch_pole)
 
 
 def force_path(model: Model, y0: np.ndarray, fill: Control, force: float, tol: Tolerances, unit: float):
@@ -67,11 +80,27 @@ def force_path(model: Model, y0: np.ndarray, fill: Control, force: float, tol: T
     def along(sigma, guess):
         return solve(model, replace(fill, force=sigma**2), guess, tol)
 
-    start = np.sqrt(reaction(model, y0, surface(fill.indenter)))
+    surf = surface(fill.indenter)
+    start = np.sqrt(reaction(model, y0, surf))
     total, y = 0, y0
-    for _, y, iterations in follow(along, y0, start, np.sqrt(force), name="force", show=lambda s: s**2 / unit):
-        total += iterations
+    try:
+        for _, y, iterations in follow(along, y0, start, np.sqrt(force), name="force", show=lambda s: s**2 / unit):
+            total += iterations
+    except ConvergenceError as err:
+        reached = reaction(model, y, surf) / unit
+        _at_equator(model, y, surf, err, f"force = {force / unit:.6g}", f"force = {reached:.6g}")
+        raise
     return y, total
+
+
+def _at_equator(model: Model, y: np.ndarray, surf, err: ConvergenceError, target: str, reached: str) -> None:
+    """Raise OutOfRangeError from ``err`` if the last state y of a path that gave up has its contact edge
+    within EQUATOR of the surface's reach: the sheet wraps past a sphere's equator there (module docstring)."""
+    rho_c = float(y[2 * model.order * contact_elements(model.elements)])
+    if rho_c > (1.0 - EQUATOR) * surf.reach:
+        raise OutOfRangeError(f"{target} is beyond the model's range, which ends near {reached}: there the sheet "
+                              f"wraps past the indenter's equator (rho_c/R_s = {rho_c / surf.reach:.6f} at the last "
+                              "state reached), outside the model") from err
 
 
 def height_path(model: Model, y0: np.ndarray, fill: Control, height: float, tol: Tolerances):
@@ -81,8 +110,13 @@ def height_path(model: Model, y0: np.ndarray, fill: Control, height: float, tol:
         return solve(model, replace(fill, height=h), guess, tol)
 
     total, y = 0, y0
-    for _, y, iterations in follow(along, y0, float(y0[model.dofs + 1]), height, name="indenter height h/R"):
-        total += iterations
+    try:
+        for _, y, iterations in follow(along, y0, float(y0[model.dofs + 1]), height, name="indenter height h/R"):
+            total += iterations
+    except ConvergenceError as err:
+        _at_equator(model, y, surface(fill.indenter), err, f"indenter height h/R = {height:.6g}",
+                    f"h/R = {y[model.dofs + 1]:.6g}")
+        raise
     return y, total
 
 
@@ -107,8 +141,8 @@ def curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: T
             force = fhat * unit
             try:
                 if not history:
-                    a0 = min(A_FIRST, 0.5 * np.sqrt(fhat) / inflated.stretch_pole)
-                    y, iterations = first_contact(model, y_i, fill, a0, tol)
+                    y, iterations = first_contact(model, y_i, fill, first_radius(inflated, fill, min(
+                        A_FIRST, 0.5 * np.sqrt(fhat) / inflated.stretch_pole)), tol)
                     y, more = force_path(model, y, fill, force, tol, unit)
                     iterations += more
                 else:
@@ -128,7 +162,7 @@ def curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: T
 
 def at_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height: float, tol: Tolerances):
     """The compressed state with the indenter's lowest point at ``height``."""
-    y, iterations = first_contact(model, y_i, fill, A_FIRST / 4, tol)
+    y, iterations = first_contact(model, y_i, fill, first_radius(inflated, fill, A_FIRST / 4), tol)
     y, more = height_path(model, y, fill, height, tol)
     fhat = reaction(model, y, surface(fill.indenter)) / (np.pi * inflated.pressure)
     return wrapstates.state(model, y, iterations + more, inflated, fill, fhat)
