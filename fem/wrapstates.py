@@ -17,7 +17,10 @@ in Phat units):
 - ``contact_pressure_edge``: p_c at the edge, from the zone's last element;
 - ``contact_pressure_min``: the least p_c at the zone's quadrature points;
 - ``contact_radius_deformed``: rho_c = rho(a);
-- ``penetration``: max(eta - h - z(rho)) over the free part's nodes under the surface (0 or round-off).
+- ``penetration``: max(eta - h - z(rho)) over the free part's nodes under the surface (0 or round-off);
+- ``energy``: the stored elastic energy U = 2 pi int w(l1, l2) r dr (units E T R^2, the rubber's W / E
+  by the same quadrature as the solver's), whose slope along the indenter's travel is the force:
+  F = (-dU + P dV) / dh.
 
 Checks as ``results``' (finite numbers, positive stretches, rho(1) = 1, the fluid's volume or gas law)
 and the reaction equal to the force asked.
@@ -27,11 +30,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from pocket.core.materials import energy, mooney_rivlin
 from pocket.core.states import CompressedState
 
 from . import post
 from .geometry import contact_elements
-from .model import WRAPPED, Control, Model, placement
+from .model import WRAPPED, Control, Model, fields, placement
 from .obstacle import contact_pressure, forms, zone
 from .results import (
     CONSISTENCY,
@@ -62,6 +66,17 @@ def _edge_pressure(model: Model, y: np.ndarray, surf, pressure: float) -> float:
     return float(pressure + k1 * t1[0] + k2 * t2[0])
 
 
+def _stored_energy(model: Model, y: np.ndarray, zn, surf) -> float:
+    """U = 2 pi int w r dr (units E T R^2): the zone's points (``zn``) and the free part's (``model.fields``)."""
+    material = (model.law.material or mooney_rivlin(model.law.alpha)).scaled()  # stresses in mu_0 = E / 3
+    k = contact_elements(model.elements)
+    stretch = zn.drho * np.sqrt(1.0 + surf.slope(zn.rho) ** 2)
+    inside = np.sum(zn.measure * zn.r * energy(material, stretch, zn.rho / zn.r))
+    w = fields(model, y, WRAPPED)
+    free = np.sum(model.ref.weights * w.lengths[k:, None] * w.r[k:] * energy(material, w.l1[k:], w.l2[k:]))
+    return float(2.0 * np.pi * (inside + free) / 3.0)
+
+
 def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control, force) -> CompressedState:
     """The compressed state of WRAPPED unknowns y at the given ``force`` (Fhat, echoed) with ``fill``."""
     surf = surface(fill.indenter)
@@ -88,7 +103,8 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
                  contact_pressure_pole=pressure + 2.0 * float(surf.curvatures(np.array([0.0]))[0][0]) * t0,
                  contact_pressure_edge=_edge_pressure(model, y, surf, pressure),
                  contact_pressure_min=float(pc.min()), contact_radius_deformed=rho_c,
-                 penetration=max(0.0, float((free_eta[under] - h - surf.height(free_rho[under])).max())))
+                 penetration=max(0.0, float((free_eta[under] - h - surf.height(free_rho[under])).max())),
+                 energy=_stored_energy(model, y, zn, surf))
     rows = post.reaction(model, y, WRAPPED)
     clamp = post.clamp_stretch(model, y, WRAPPED, rows)
     profile = post.profile(model, y, WRAPPED, pole=pole, clamp=clamp, contact_radius=a)
