@@ -15,7 +15,7 @@ from pocket.fem.model import Control
 from pocket.fem.newton import Tolerances
 
 from pocket import fem
-from pocket.core.errors import InputError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import gas
 from pocket.core.indenters import sphere
 from pocket.core.materials import check
@@ -30,19 +30,24 @@ def _order(sizes, errors):
     return np.polyfit(np.log(sizes), np.log(errors), 1)[0]
 
 
-@pytest.mark.parametrize("order, meshes, reference, least", [
+@pytest.mark.parametrize("order, meshes, reference, least, rubber, fluid", [
     # P2 on edge-fitted meshes: O(h^4) in the functionals (3.5 the bar); P1: O(h^2)
-    (2, (8, 16, 32, 64, 128), 1024, 3.5),
-    (1, (16, 32, 64, 128), 2048, 1.8),
+    (2, (8, 16, 32, 64, 128), 1024, 3.5, ALPHA, None),
+    (2, (8, 16, 32, 64, 128), 1024, 3.5, YEOH, None),
+    (2, (8, 16, 32, 64, 128), 1024, 3.5, ALPHA, GAS),
+    (1, (16, 32, 64, 128), 2048, 1.8, ALPHA, None),
 ])
-def test_edge_fitted_sphere_converges_at_full_order(order, meshes, reference, least):
+def test_edge_fitted_sphere_converges_at_full_order(order, meshes, reference, least, rubber, fluid):
     """Self-convergence against a very fine mesh (its own error, by the rate, below 1e-3 of the coarse
     meshes'): the order of the largest relative error over the quantities and three forces."""
     forces = [0.05, 0.19, 1.0]
-    ref = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=sphere(1.0), elements=reference, order=order)
-    errors = np.array([[[abs(getattr(s, q) / getattr(r, q) - 1) for q in QUANTITIES] for s, r in
-                        zip(fem.compression_curve(ALPHA, PRESSURE, forces, indenter=sphere(1.0), elements=n,
-                                                  order=order), ref, strict=True)] for n in meshes])
+
+    def curve(**mesh):
+        return fem.compression_curve(rubber, PRESSURE, forces, fluid=fluid, indenter=sphere(1.0), order=order, **mesh)
+
+    ref = curve(elements=reference)
+    errors = np.array([[[abs(getattr(s, q) / getattr(r, q) - 1) for q in QUANTITIES]
+                        for s, r in zip(curve(elements=n), ref, strict=True)] for n in meshes])
     h = 1.0 / np.array(meshes)
     each = {(f, q): round(_order(h, errors[:, i, j]), 2)
             for i, f in enumerate(forces) for j, q in enumerate(QUANTITIES)}
@@ -184,3 +189,14 @@ def test_the_flat_plate_keeps_its_numbers_and_the_penalty_is_refused_for_a_spher
     assert fem.compress(ALPHA, PRESSURE, 0.19, indenter=FLAT).scalars() == fem.compress(ALPHA, PRESSURE, 0.19).scalars()
     with pytest.raises(InputError, match="does not apply to the sphere"):
         fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0), contact="penalty")
+
+
+def test_a_failed_solve_is_a_convergence_error_saying_where(monkeypatch):
+    """A Newton that never converges (replaced by one that fails) is a ConvergenceError naming the force and
+    the first contact, not an out-of-range answer."""
+    def fails(*args, **kwargs):
+        raise ConvergenceError("Newton failed after 25 iterations, residual 1e-3", iterations=25, residual=1e-3)
+
+    monkeypatch.setattr(wrapping, "solve", fails)
+    with pytest.raises(ConvergenceError, match=r"^compression at Fhat = 0.19: first contact with the sphere: "):
+        fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0))
