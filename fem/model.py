@@ -63,7 +63,7 @@ import numpy as np
 
 from pocket.core.indenters import FLAT, Indenter
 
-from . import banded, condensed, kernel
+from . import banded, condensed, kernel, spherepenalty
 from .gas import Gas
 from .geometry import Placement, contact_elements, place
 from .material import Law, law_of
@@ -101,7 +101,8 @@ class Control:
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Model:
-    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty.
+    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty;
+    ``obstacle``, the surface (``surfaces.Surface``) of a curved indenter posed by penalty (None: the plate).
 
     ``workspace`` holds the large arrays of ``linearize`` from one call to the next (a system it
     returns is valid until the next call, which is how Newton uses it).
@@ -111,6 +112,7 @@ class Model:
     xi: np.ndarray
     ref: Reference
     penalty: float
+    obstacle: object = None
     workspace: dict = dataclasses.field(default_factory=dict, repr=False)
 
     @property
@@ -191,8 +193,11 @@ def fields(model: Model, y: np.ndarray, mode: str) -> kernel.Fields:
 def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False, out=None) -> kernel.Linear:
     """The forms at the state y (``kernel.evaluate``): R and its derivatives, the volume, the plate force."""
     u, s = split(model, y)
-    return kernel.evaluate(model.law, model.ref, placement(model, y, mode), u, s[0],
-                           _contact(model, y, mode, multiplier), tangent, out)
+    contact, place = _contact(model, y, mode, multiplier), placement(model, y, mode)
+    if contact is not None and model.obstacle is not None:
+        linear = kernel.evaluate(model.law, model.ref, place, u, s[0], None, tangent, out)
+        return spherepenalty.add(model.ref, place, u, s[0], contact, model.obstacle, linear, tangent)
+    return kernel.evaluate(model.law, model.ref, place, u, s[0], contact, tangent, out)
 
 
 def plate_force(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> float:

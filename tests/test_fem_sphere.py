@@ -15,7 +15,7 @@ from pocket.fem.model import Control
 from pocket.fem.newton import Tolerances
 
 from pocket import fem
-from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.fluids import gas
 from pocket.core.indenters import sphere
 from pocket.core.materials import check
@@ -182,13 +182,12 @@ def test_the_end_of_the_range_is_out_of_range(radius, force, words):
         fem.compress(ALPHA, pressure, force, indenter=sphere(radius))
 
 
-def test_the_flat_plate_keeps_its_numbers_and_the_penalty_is_refused_for_a_sphere():
-    """The plate through the indenter keyword is the default plate, bit for bit; penalty contact does not
-    pose a sphere (one line)."""
+def test_the_flat_plate_by_name_is_the_default_plate():
+    """The plate through the indenter keyword is the default plate, bit for bit, by either method."""
     from pocket.core.indenters import FLAT
-    assert fem.compress(ALPHA, PRESSURE, 0.19, indenter=FLAT).scalars() == fem.compress(ALPHA, PRESSURE, 0.19).scalars()
-    with pytest.raises(InputError, match="does not apply to the sphere"):
-        fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0), contact="penalty")
+    for contact in ("fitted", "penalty"):
+        assert fem.compress(ALPHA, PRESSURE, 0.19, indenter=FLAT, contact=contact).scalars() == \
+            fem.compress(ALPHA, PRESSURE, 0.19, contact=contact).scalars()
 
 
 def test_a_failed_solve_is_a_convergence_error_saying_where(monkeypatch):
@@ -200,3 +199,20 @@ def test_a_failed_solve_is_a_convergence_error_saying_where(monkeypatch):
     monkeypatch.setattr(wrapping, "solve", fails)
     with pytest.raises(ConvergenceError, match=r"^compression at Fhat = 0.19: first contact with the sphere: "):
         fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0))
+
+
+def test_the_penalty_sphere_tends_to_the_edge_fitted_one():
+    """Penalty contact on a fixed mesh, gap measured vertically to the sphere: with the augmented Lagrangian
+    within 1e-5 of the edge-fitted state in P and h (measured 3e-6 at most: the edge inside an element), the
+    penetration below 1e-6, the force the reaction; the pure penalty's penetration falls as 1/kappa."""
+    forces = [0.05, 0.19, 1.0]
+    fitted = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=sphere(1.0))
+    pen = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=sphere(1.0), contact="penalty")
+    for f, p in zip(fitted, pen, strict=True):
+        assert p.pressure == pytest.approx(f.pressure, rel=1e-5) and p.height == pytest.approx(f.height, rel=1e-5)
+        assert p.extra["penetration"] < 1e-6
+        assert p.extra["force_reaction"] == pytest.approx(p.force, rel=1e-9)
+    depth = [fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0), contact="penalty", penalty=k,
+                          augmented=False).extra["penetration"] for k in (1e4, 1e5)]
+    print("pure-penalty penetration at kappa = 1e4, 1e5:", depth)
+    assert 8.0 < depth[0] / depth[1] < 12.0
