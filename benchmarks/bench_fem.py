@@ -22,6 +22,8 @@ state, a compression curve's time against the shooting solver's, and the default
    (``pocket.apps.design``, whose inverse problems call the solver once per bracket step), each with
    every call solving its inflation (nothing remembered: as before) and with the inflation remembered,
    with the ratio and whether the answers are equal bit for bit (their pickles).
+6. A fingertip: the 40-point curve of section 2 under spheres of radius R_s = 0.5 R and 2 R (edge-fitted,
+   the contact zone wrapped on the sphere) against the plate's, with the Newton iterations per state.
 
 The machine is shared: medians of repeats, with the least time beside them as the estimate of the
 undisturbed cost.
@@ -43,6 +45,7 @@ from timing import median_time
 
 from pocket import fem, shooting
 from pocket.core.fluids import gas
+from pocket.core.indenters import sphere
 from pocket.core.materials import check
 
 ALPHA, PHAT, FHAT = 47 / 160, 0.31, 0.19
@@ -218,6 +221,21 @@ def remembered(repeat):
               f" {each[1] / once[1]:5.2f} | {pickle.dumps(before) == pickle.dumps(after)}")
 
 
+def fingertip(points, repeat):
+    """Section 6."""
+    forces = np.linspace(0.02, 0.8, points)
+    print(f"\n{points}-point curve under a sphere against the plate's (default mesh, Fhat 0.02..0.8):")
+    print(f"{'indenter':16s} | {'median s':>9s} ({'least':>6s}) | ratio to the plate | Newton its per state")
+    plate = None
+    for label, indenter in (("plate", None), ("sphere R_s = 2R", sphere(2.0)), ("sphere R_s = R/2", sphere(0.5))):
+        fem.compression_curve(ALPHA, PHAT, forces[:2], indenter=indenter)
+        states = fem.compression_curve(ALPHA, PHAT, forces, indenter=indenter)
+        took = _times(lambda indenter=indenter: fem.compression_curve(ALPHA, PHAT, forces, indenter=indenter), repeat)
+        plate = plate or took
+        its = np.mean([s.extra["newton_iterations"] for s in states])
+        print(f"{label:16s} | {took[0]:9.3f} ({took[1]:6.3f}) | {took[0] / plate[0]:18.2f} | {its:.2f}")
+
+
 def main(argv=None):
     quick = "--quick" in (sys.argv[1:] if argv is None else argv)
     per_iteration([100, 1000, 10000] if quick else [100, 1000, 10000, 100000, 1000000])
@@ -226,6 +244,7 @@ def main(argv=None):
         default_mesh_accuracy([64, 128, 192, 256, 384])
     laws_and_fluids(3 if quick else 7)
     remembered(3 if quick else 7)
+    fingertip(40, 3 if quick else 7)
 
 
 if __name__ == "__main__":

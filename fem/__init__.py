@@ -6,7 +6,9 @@ pressure as the multiplier of the volume. The frictionless flat plate either
 on an edge-fitted mesh (the default: the Lagrangian contact radius is a
 Newton unknown, closed by tangent contact, and a mesh vertex follows it, so
 that every element is smooth and the contact is exact) or on a fixed mesh by
-penalty with augmented-Lagrangian updates. The rubber is any law of
+penalty with augmented-Lagrangian updates; a sphere (``surfaces``) edge-fitted too, the sheet in
+contact lying exactly on it (``obstacle``, ``wrapping``, ``wrapstates``), or by penalty on its vertical gap
+(``spherepenalty``). The rubber is any law of
 ``pocket.core.materials`` (a float is a Mooney-Rivlin alpha); the pocket holds
 a liquid (fixed volume) or a gas sealed at the initial pressure (the
 polytropic law ties the pressure to the volume).

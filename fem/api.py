@@ -31,6 +31,7 @@ P1 (error O(h^2)) gets 1024 elements by default: within 1e-6 of shooting.
 from __future__ import annotations
 
 import pathlib
+from dataclasses import replace
 
 import numpy as np
 
@@ -40,10 +41,11 @@ from pocket.core.fluids import as_fluid
 from pocket.core.indenters import as_indenter, formulation
 from pocket.core.inputs import check_force, check_positive, quote
 
-from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results
+from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results, wrapping
 from .gas import sealed
 from .model import FITTED, PENALTY, Control, Model, discretize
 from .newton import Tolerances
+from .surfaces import SURFACES, surface
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh",
            "DEFAULT_PENALTY", "POLAR_POWER", "CONTACTS"]
@@ -56,8 +58,9 @@ MAX_RATIO = 1e3
 #: shortest usable element (units R): nodal values carry round-off of ~1e-16 R, so a shorter
 #: element's slope (the stretch) would carry a relative error above 1e-6
 MIN_LENGTH = 1e-10
-#: indenter kind -> the contact methods (the model's modes, ``model``) that pose it
-CONTACTS = {"flat": (FITTED, PENALTY)}
+#: indenter kind -> the contact methods (the model's modes, ``model``) that pose it; a curved one
+#: (``surfaces.SURFACES``) is posed edge-fitted by ``obstacle``, by penalty with ``spherepenalty``
+CONTACTS = {"flat": (FITTED, PENALTY), "sphere": (FITTED, PENALTY)}
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
@@ -162,6 +165,8 @@ def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, c
     y_i, iterations = inflation.inflated_at(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
     fill = Control(volume=state.volume, gas=sealed(fluid, p_i), indenter=indenter)
+    if contact == PENALTY and indenter.kind in SURFACES:
+        model = replace(model, obstacle=surface(indenter))
     return model, contact, augmented, tol, y_i, state, fill
 
 
@@ -181,6 +186,8 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
         raise InputError("no force given")
     model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter, mesh,
                                                                  elements, order, contact, penalty, augmented, tol)
+    if fill.indenter.kind in SURFACES and contact == FITTED:
+        return wrapping.curve(model, y_i, inflated, fill, forces, tol, progress)
     if contact == FITTED:
         return curves.fitted_curve(model, y_i, inflated, fill, forces, tol, progress)
     return curves.penalty_curve(model, y_i, inflated, fill, forces, tol, augmented, progress)
@@ -200,6 +207,8 @@ def compress_height(material, pressure_initial, height, *, fluid=None, indenter=
                                                                  elements, order, contact, penalty, augmented, tol)
     if height >= inflated.height:
         return results.uncompressed(inflated, fill, contact)
+    if fill.indenter.kind in SURFACES and contact == FITTED:
+        return wrapping.at_height(model, y_i, inflated, fill, height, tol)
     if contact == FITTED:
         return curves.fitted_height(model, y_i, inflated, fill, height, tol)
     return curves.penalty_height(model, y_i, inflated, fill, height, tol, augmented)

@@ -19,6 +19,10 @@ and the element lengths scale as dL_e/da = L_e V'. (``kernel`` turns V into the
 derivative of the residual with respect to a.) One contact element suffices:
 there the solution is the uniform equibiaxial stretch rho = lambda_c r, eta = h,
 which P1 and P2 represent exactly, so every other element resolves the free part.
+
+On a curved indenter (``obstacle``) the contact zone is not uniform: vertex k follows a instead,
+r = a xi / xi_k on the first k elements (``contact_elements``: a quarter of the mesh), so that
+V = r / a and V' = 1/a on all of them.
 """
 
 from __future__ import annotations
@@ -29,7 +33,7 @@ import numpy as np
 
 from .reference import Reference
 
-__all__ = ["Placement", "place", "node_radii", "evaluate"]
+__all__ = ["Placement", "place", "contact_elements", "node_radii", "evaluate"]
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -51,23 +55,32 @@ class Placement:
     stretch_rate: np.ndarray | None = None
 
 
-def _vertices(xi: np.ndarray, a: float) -> np.ndarray:
-    r = a + (1.0 - a) * (xi - xi[1]) / (1.0 - xi[1])
-    r[0], r[1], r[-1] = 0.0, a, 1.0
+def _vertices(xi: np.ndarray, a: float, k: int) -> np.ndarray:
+    r = a + (1.0 - a) * (xi - xi[k]) / (1.0 - xi[k])
+    if k > 1:
+        r[1:k] = a * (xi[1:k] / xi[k])
+    r[0], r[k], r[-1] = 0.0, a, 1.0
     return r
 
 
-def place(xi: np.ndarray, ref: Reference, a: float | None = None) -> Placement:
-    """The elements of the reference mesh ``xi``, fitted to the contact radius ``a`` if given."""
-    vertices = xi if a is None else _vertices(xi, a)
+def contact_elements(elements: int) -> int:
+    """The number k of elements a curved indenter's contact zone [0, a] holds (``obstacle``): a quarter of
+    the mesh, at least one."""
+    return max(1, elements // 4)
+
+
+def place(xi: np.ndarray, ref: Reference, a: float | None = None, k: int = 1) -> Placement:
+    """The elements of the reference mesh ``xi``, fitted to the contact radius ``a`` if given, vertex ``k``
+    following it (the first ``k`` elements map onto the contact zone [0, a], r = a xi / xi_k there)."""
+    vertices = xi if a is None else _vertices(xi, a, k)
     lengths = np.diff(vertices)
     r = vertices[:-1, None] + lengths[:, None] * ref.t[None, :]
     if a is None:
         return Placement(vertices, lengths, r)
     rate = np.full(lengths.shape, -1.0 / (1.0 - a))
-    rate[0] = 1.0 / a
+    rate[:k] = 1.0 / a
     velocity = (1.0 - r) / (1.0 - a)
-    velocity[0] = r[0] / a
+    velocity[:k] = r[:k] / a
     return Placement(vertices, lengths, r, a, velocity, rate)
 
 

@@ -14,6 +14,9 @@ modes that pose it. With a plate the volume row is the fluid's: V / V_I - 1 for 
 V / V_I - q(P) for a gas sealed at P_I (``gas``: the polytropic law solved for
 the volume; its tangent has the corner entry -q'(P) in the column of P).
 
+``WRAPPED``: the edge-fitted contact with a curved indenter, its unknowns as FITTED's; its
+equations are ``obstacle``'s.
+
 ``PENALTY`` (fixed mesh, penalty plate at height h), s = [P, h]: R includes
 the plate pressure (``kernel``); control rows V / V_I - 1 and h - h* (plate
 height) or (F(U, h) - F*) / F* (plate force F = 2 pi int p_N r dr).
@@ -60,17 +63,17 @@ import numpy as np
 
 from pocket.core.indenters import FLAT, Indenter
 
-from . import banded, condensed, kernel
+from . import banded, condensed, kernel, spherepenalty
 from .gas import Gas
-from .geometry import Placement, place
+from .geometry import Placement, contact_elements, place
 from .material import Law, law_of
 from .reference import Reference, reference
 
-__all__ = ["FREE", "PENALTY", "FITTED", "Control", "Model", "discretize", "placement", "fields", "forms", "split",
-           "conform", "residual", "linearize", "plate_force", "edge"]
+__all__ = ["FREE", "PENALTY", "FITTED", "WRAPPED", "Control", "Model", "discretize", "placement", "fields", "forms",
+           "split", "conform", "residual", "linearize", "plate_force", "edge"]
 
-FREE, PENALTY, FITTED = "free", "penalty", "fitted"
-_SCALARS = {FREE: 1, PENALTY: 2, FITTED: 3}
+FREE, PENALTY, FITTED, WRAPPED = "free", "penalty", "fitted", "wrapped"
+_SCALARS = {FREE: 1, PENALTY: 2, FITTED: 3, WRAPPED: 3}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -98,7 +101,8 @@ class Control:
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Model:
-    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty.
+    """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty;
+    ``obstacle``, the surface (``surfaces.Surface``) of a curved indenter posed by penalty (None: the plate).
 
     ``workspace`` holds the large arrays of ``linearize`` from one call to the next (a system it
     returns is valid until the next call, which is how Newton uses it).
@@ -108,6 +112,7 @@ class Model:
     xi: np.ndarray
     ref: Reference
     penalty: float
+    obstacle: object = None
     workspace: dict = dataclasses.field(default_factory=dict, repr=False)
 
     @property
@@ -129,9 +134,12 @@ class Model:
         return 2 * self.order + 1
 
     def fixed(self, mode: str) -> np.ndarray:
-        """Dofs held fixed in ``mode``: rho(0), rho(1), eta(1), and with FITTED the tied set C."""
+        """Dofs held fixed in ``mode``: rho(0), rho(1), eta(1), and with FITTED (WRAPPED) the tied set C
+        (the eta dofs of the contact zone, ``obstacle``)."""
         n = self.dofs
         bc = np.array([0, n - 2, n - 1])
+        if mode == WRAPPED:
+            return np.concatenate([bc, 2 * np.arange(self.order * contact_elements(self.elements) + 1) + 1])
         return np.concatenate([bc, self.tied()]) if mode == FITTED else bc
 
     def tied(self) -> np.ndarray:
@@ -167,6 +175,8 @@ def split(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def placement(model: Model, y: np.ndarray, mode: str) -> Placement:
     """The physical elements of the state y."""
+    if mode == WRAPPED:
+        return place(model.xi, model.ref, y[model.dofs + 2], contact_elements(model.elements))
     return place(model.xi, model.ref, y[model.dofs + 2] if mode == FITTED else None)
 
 
@@ -183,8 +193,11 @@ def fields(model: Model, y: np.ndarray, mode: str) -> kernel.Fields:
 def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False, out=None) -> kernel.Linear:
     """The forms at the state y (``kernel.evaluate``): R and its derivatives, the volume, the plate force."""
     u, s = split(model, y)
-    return kernel.evaluate(model.law, model.ref, placement(model, y, mode), u, s[0],
-                           _contact(model, y, mode, multiplier), tangent, out)
+    contact, place = _contact(model, y, mode, multiplier), placement(model, y, mode)
+    if contact is not None and model.obstacle is not None:
+        linear = kernel.evaluate(model.law, model.ref, place, u, s[0], None, tangent, out)
+        return spherepenalty.add(model.ref, place, u, s[0], contact, model.obstacle, linear, tangent)
+    return kernel.evaluate(model.law, model.ref, place, u, s[0], contact, tangent, out)
 
 
 def plate_force(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> float:

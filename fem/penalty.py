@@ -53,10 +53,11 @@ from pocket.core.errors import ConvergenceError, OutOfRangeError
 from .continuation import follow
 from .model import PENALTY, Control, Model, fields, plate_force
 from .newton import Tolerances
+from .spherepenalty import gap
 from .steps import land, solve
 
 __all__ = ["press_to_force", "press_to_height", "force_path", "augment", "penetration", "multiplier_update",
-           "contact_area_active"]
+           "contact_area_active", "contact_zone_active"]
 
 PENETRATION = 1e-9  # target of the Uzawa loop, in units of R
 MAX_UPDATES = 30
@@ -79,7 +80,8 @@ def _onto_plate(model: Model, y: np.ndarray) -> np.ndarray:
     """
     out = y.copy()
     n = model.dofs
-    out[1:n:2] = np.minimum(out[1:n:2], y[n + 1] + y[n] / model.penalty)
+    lift = 0.0 if model.obstacle is None else np.nan_to_num(model.obstacle.height(y[0:n:2]), nan=np.inf)
+    out[1:n:2] = np.minimum(out[1:n:2], y[n + 1] + lift + y[n] / model.penalty)
     return out
 
 
@@ -177,8 +179,11 @@ def force_path(model: Model, y0, fill: Control, force, lam, tol: Tolerances):
 
 
 def _gap(model: Model, y: np.ndarray) -> np.ndarray:
-    """eta - h at the quadrature points."""
-    return fields(model, y, PENALTY).eta - y[model.dofs + 1]
+    """eta - h at the quadrature points (eta - h - z(rho) under a curved indenter: ``spherepenalty``)."""
+    w = fields(model, y, PENALTY)
+    if model.obstacle is not None:
+        return gap(model.obstacle, w.rho, w.eta, y[model.dofs + 1])
+    return w.eta - y[model.dofs + 1]
 
 
 def penetration(model: Model, y: np.ndarray) -> float:
@@ -194,8 +199,17 @@ def multiplier_update(model: Model, y: np.ndarray, lam) -> np.ndarray:
 def contact_area_active(model: Model, y: np.ndarray, lam) -> float:
     """Deformed area of the active set, 2 pi int chi rho rho' dr (edge resolved to O(h))."""
     w = fields(model, y, PENALTY)
-    chi = lam + model.penalty * (w.eta - y[model.dofs + 1]) > 0.0
+    chi = lam + model.penalty * _gap(model, y) > 0.0
     return float(np.sum(2 * np.pi * chi * w.rho * w.drho * w.lengths[:, None] * model.ref.weights))
+
+
+def contact_zone_active(model: Model, y: np.ndarray, lam) -> tuple[float, float]:
+    """(curved area 2 pi int chi rho |x'| dr (units R^2), the largest r of an active point): the contact zone
+    under a curved indenter, to O(h)."""
+    w = fields(model, y, PENALTY)
+    chi = lam + model.penalty * _gap(model, y) > 0.0
+    area = float(np.sum(2 * np.pi * chi * w.rho * w.l1 * w.lengths[:, None] * model.ref.weights))
+    return area, float(w.r[chi].max()) if chi.any() else 0.0
 
 
 def augment(model: Model, y, control: Control, lam, tol: Tolerances):

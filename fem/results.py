@@ -25,7 +25,8 @@ a frictionless flat plate carries exactly the fluid pressure) and
 indenter's height profile: the free part must stay below the indenter).
 
 Compressed, penalty contact (``penalty``): ``contact_area`` = Fhat P_I/P from
-the plate force and the pressure, ``contact_radius`` = sqrt(A_c)/lambda_c,
+the plate force and the pressure, ``contact_radius`` = sqrt(A_c)/lambda_c (under a curved
+indenter the active set's curved area and its outermost point, ``penalty.contact_zone_active``),
 ``height`` = eta(0) (the sheet, about p_N/kappa above the plate with a pure
 penalty), ``force_pressure_area`` from the active quadrature points (O(h)),
 ``penetration`` (max(eta - h) at the quadrature points) and
@@ -52,7 +53,7 @@ from pocket.core.states import CompressedState, InflatedState
 
 from . import post
 from .model import FITTED, FREE, PENALTY, Control, Model, fields, forms, plate_force
-from .penalty import contact_area_active, penetration
+from .penalty import contact_area_active, contact_zone_active, penetration
 
 __all__ = ["inflated", "uncompressed", "fitted_state", "penalty_state", "CONSISTENCY"]
 
@@ -222,6 +223,9 @@ def penalty_state(model: Model, y: np.ndarray, lam, iterations: int, state: Infl
     area = fhat * p_i / pressure
     stretch = post.pole_stretch(model, y, PENALTY)
     radius = float(np.sqrt(area) / stretch)
+    if model.obstacle is not None:  # a curved indenter: the active set's curved area and edge (O(h))
+        area, radius = contact_zone_active(model, y, lam)
+        area /= np.pi
     active = pressure * contact_area_active(model, y, lam) / (np.pi * p_i)
     extra = _extra(model, iterations, PENALTY)
     extra.update(penetration=penetration(model, y), penetration_pole=max(0.0, float(y[1] - h)),

@@ -44,7 +44,7 @@ from .model import FITTED, FREE, Control, Model, conform, fields, linearize, pla
 from .newton import Tolerances, newton
 from .post import reaction
 
-__all__ = ["solve", "dome", "land", "increment", "near_locking", "LOCKING"]
+__all__ = ["solve", "check_clamp", "scales", "dome", "land", "increment", "near_locking", "LOCKING"]
 
 _ETA_FLOOR = -1e-12  # round-off below the clamp plane is not a range violation
 _SLOPE_FLOOR = 1e-12  # nor a tangent at the clamp rising by round-off
@@ -75,8 +75,13 @@ def solve(model: Model, mode: str, control: Control, guess: np.ndarray, tol: Tol
     if mode == FITTED or control.force is not None:
         control = dataclasses.replace(control, scale=_plate_scale(model, guess, mode, control))
     result = newton(lambda z: linearize(model, z, mode, control, multiplier), guess, tol, increment(model, mode),
-                    _scales(model, guess, mode))
-    y = result.y
+                    scales(model, guess, mode))
+    check_clamp(model, result.y, mode, multiplier)
+    return result.y, result.iterations
+
+
+def check_clamp(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> None:
+    """OutOfRangeError if the free part of the state y comes below the clamp plane (module docstring)."""
     rows = reaction(model, y, mode, multiplier)
     rise = rows[-1] - np.pi * y[model.dofs]  # 2 pi T1 t_eta at the clamp
     slope = rise / np.hypot(rows[-2], rise)
@@ -86,10 +91,9 @@ def solve(model: Model, mode: str, control: Control, guess: np.ndarray, tol: Tol
             f"{CLAMP_PLANE} (its tangent at the clamp rises at {slope:.3g}, min eta/R = {eta.min():.3g}, "
             f"at Phat = {y[model.dofs]:.6g}), outside the membrane model"
         )
-    return y, result.iterations
 
 
-def _scales(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
+def scales(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
     """What each unknown's increment is measured against: eta and h the sheet's height, rho its
     largest radial displacement, P itself, a one (Newton's tolerance is relative to these)."""
     n = model.dofs
