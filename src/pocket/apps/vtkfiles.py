@@ -103,6 +103,7 @@ from pocket.core.states import CHECKS
 
 from .folders import check_replaceable, staged
 from .resampling import resample, series_radii
+from .revolve import revolve
 from .solvers import SOLVERS
 
 __all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS", "KIND",
@@ -199,33 +200,12 @@ def surface_mesh(state, *, segments=64, radii=None) -> meshio.Mesh:
     """The profile (resampled at ``radii`` if given) revolved about the z axis: quads, triangles at the pole."""
     segments = _segments(segments)
     profile = _sampled(state, radii)
-    rho, eta = np.asarray(profile.rho, dtype=float), np.asarray(profile.eta, dtype=float)
-    pole = rho[0] == 0.0
-    angle = 2.0 * np.pi * np.arange(segments) / segments
-    cos, sin = np.cos(angle), np.sin(angle)
-    rings = np.arange(1 if pole else 0, len(rho))  # profile index of each ring
-    x, y = np.outer(rho[rings], cos).ravel(), np.outer(rho[rings], sin).ravel()
-    points = np.column_stack((x, y, np.repeat(eta[rings], segments)))
-    source = np.repeat(rings, segments)  # profile index of each point
-    hoop = np.tile(np.arange(segments), len(rings))
-    if pole:
-        points = np.vstack(([[0.0, 0.0, eta[0]]], points))
-        source, hoop = np.concatenate(([0], source)), np.concatenate(([0], hoop))
-    first = 1 if pole else 0  # index of the first point of ring 0
-
-    def at(ring, j):
-        return first + ring * segments + j % segments
-
-    j = np.arange(segments)
-    band = np.arange(len(rings) - 1)[:, None]
-    quads = np.stack((at(band, j), at(band + 1, j), at(band + 1, j + 1), at(band, j + 1)), axis=-1)
-    cells = [("quad", quads.reshape(-1, 4))] if len(rings) > 1 else []
-    if pole:
-        cells.insert(0, ("triangle", np.column_stack((np.zeros(segments, int), at(0, j), at(0, j + 1)))))
+    surface = revolve(profile.rho, profile.eta, segments)
+    source, hoop, cos, sin = surface.source, surface.hoop, surface.cos, surface.sin
     data = {name: values[source] for name, values in _point_data(profile).items()}
     radial, up = data["displacement"][:, 0], data["displacement"][:, 2]
     data["displacement"] = np.column_stack((radial * cos[hoop], radial * sin[hoop], up))
-    return meshio.Mesh(points, cells, point_data=data, field_data=field_data(state))
+    return meshio.Mesh(surface.points, surface.cells, point_data=data, field_data=field_data(state))
 
 
 def _write_vtu(path: pathlib.Path, mesh: meshio.Mesh) -> None:
