@@ -79,11 +79,13 @@ point index is one material point throughout the series.
 Load paths. ``write_series`` writes ``step_0000_profile.vtu``,
 ``step_0000_surface.vtu``, ... and the collections ``profile.pvd`` and
 ``surface.pvd`` (file names relative to them), so ParaView plays the path as a
-time series. The "time" of a step defaults to its index; a compression path
-should pass the force Fhat (an inflation path the pressure or the volume),
-strictly increasing. The directory appears complete or not at all: the files
-go into a temporary sibling directory that is renamed into place at the end
-and removed on any failure.
+time series. A compression path also gets the indenter's surface at each step,
+``step_0000_indenter.vtu``, ... and ``indenter.pvd`` (``pocket.apps.vtkindenter``:
+the flat plate a disc wider than the pocket, its lowest point at the state's height).
+The "time" of a step defaults to its index; a compression path should pass
+the force Fhat (an inflation path the pressure or the volume), strictly increasing.
+The directory appears complete or not at all: the files go into a temporary
+sibling directory that is renamed into place at the end and removed on any failure.
 """
 
 from __future__ import annotations
@@ -105,6 +107,7 @@ from .folders import check_replaceable, staged
 from .resampling import resample, series_radii
 from .revolve import revolve
 from .solvers import SOLVERS
+from .vtkindenter import indenter_mesh, reach_of
 
 __all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS", "KIND",
            "CODES"]
@@ -255,7 +258,8 @@ def _pvd(path: pathlib.Path, files: list[str], times: np.ndarray) -> None:
 
 def write_series(directory, states, *, times=None, segments=64, points=SERIES_POINTS,
                  overwrite=False) -> pathlib.Path:
-    """Write one profile and one surface per state plus ``profile.pvd`` and ``surface.pvd``.
+    """Write one profile and one surface per state plus ``profile.pvd`` and ``surface.pvd``; for compressed
+    states (with an ``indenter``) also the indenter's surface per state and ``indenter.pvd``.
 
     ``times`` (default: the step index) label the steps. Every step has the same
     points: the profiles are resampled on ``series_radii(states, points)``. An
@@ -273,11 +277,16 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
     target = check_replaceable(directory, KIND, "VTK folder", overwrite=overwrite)
     with staged(target, KIND) as partial:
         width = max(4, len(str(len(states) - 1)))
-        files = {"profile": [], "surface": []}
+        pressed = all(hasattr(s, "indenter") for s in states)
+        files = {"profile": [], "surface": [], **({"indenter": []} if pressed else {})}
+        reach = reach_of([_profile(s) for s in states])
         for k, state in enumerate(states):
             stem = f"step_{k:0{width}d}"
             paths = write_state(partial, state, stem=stem, segments=segments, radii=radii)
-            for part, path in zip(("profile", "surface"), paths, strict=True):
+            if pressed:
+                paths.append(partial / f"{stem}_indenter.vtu")
+                _write_vtu(paths[-1], indenter_mesh(state.indenter, state.height, reach, segments=segments))
+            for part, path in zip(files, paths, strict=True):
                 files[part].append(path.name)
         for part, names in files.items():
             _pvd(partial / f"{part}.pvd", names, times)
