@@ -5,6 +5,7 @@ solving. A sphere is carried to the solver, which refuses it in one line until i
 
 import json
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -12,7 +13,8 @@ import pytest
 from pocket.apps import casefile
 from pocket.apps.cases import load
 from pocket.cli import main
-from pocket.core.indenters import FLAT, sphere
+from pocket.core.indenters import FLAT, profile, sphere
+from pocket.core.profiles import read_csv
 
 CASE = """
 name = "button"
@@ -113,3 +115,12 @@ def test_a_sphere_reaches_the_solver_which_refuses_it_in_one_line(tmp_path, caps
     err = capsys.readouterr().err
     assert "does not implement the sphere indenter" in err and err.count("\n") == 1
     assert not list(tmp_path.glob("case.*json")) and not list(tmp_path.glob("case.csv"))
+
+
+def test_the_readmes_profile_table_is_a_paraboloid_of_tip_radius_8_mm(tmp_path):
+    """The README's example rows are z = rho^2 / 16 mm, whose tip curvature is 1/(8 mm) (2 z'' = 1/8 mm)."""
+    readme = (pathlib.Path(__file__).parents[1] / "README.md").read_text()
+    text = readme.split("```text\nradius [mm],height [mm]\n", 1)[1].split("```", 1)[0]
+    (tmp_path / "tip.csv").write_text("radius [mm],height [mm]\n" + text)
+    tip = profile(read_csv(tmp_path / "tip.csv", clamp_radius=0.020))
+    assert tip.curvature(0.0) == pytest.approx(20.0 / 8.0, rel=1e-12)  # units 1/R, R = 20 mm
