@@ -7,6 +7,7 @@ import json
 import pytest
 from pocket.shooting import compression
 
+from pocket.apps import design
 from pocket.cli import main
 
 BASE = ["compress", "--pressure", "0.3", "--force", "0.5", "--alpha", "0.1"]
@@ -51,3 +52,45 @@ def test_bad_indenter_flags_are_one_line_exit_2_before_any_solving(capsys, monke
     assert main([*BASE, *flags]) == 2
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1
+
+
+DESIGN = ["design", "--radius", "20 mm", "--height", "10 mm", "--modulus", "1 MPa", "--alpha", "0.3", "--force",
+          "0.67 N"]
+
+
+def test_design_with_the_plate_flag_is_todays_design(capsys):
+    assert main([*DESIGN, "--json"]) == 0
+    default = json.loads(capsys.readouterr().out)
+    assert main([*DESIGN, "--json", "--indenter", "plate"]) == 0
+    assert json.loads(capsys.readouterr().out) == default
+
+
+def test_design_for_a_fingertip_reaches_the_solver_which_refuses_it_in_one_line(capsys):
+    assert main([*DESIGN, "--indenter", "sphere", "--indenter-radius", "8 mm"]) == 2
+    err = capsys.readouterr().err
+    assert "solver shooting does not implement the sphere indenter" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("flags, message", [
+    (["--indenter", "sphere", "--indenter-radius", "-8 mm"], "indenter.radius = '-8 mm', but it must be > 0"),
+    (["--indenter", "sphere", "--indenter-radius", "0"], "indenter.radius = '0', but it must be > 0"),
+    (["--indenter-radius", "8 mm"], "--indenter-radius is given, but a plate indenter takes no size"),
+    (["--indenter", "profile", "--indenter-file", "{bad}"], "column 1 ('radius') has no unit"),
+])
+def test_bad_design_indenter_flags_are_one_line_exit_2_before_any_solving(capsys, monkeypatch, tmp_path, flags,
+                                                                         message):
+    (tmp_path / "bad.csv").write_text("radius,height\n0,0\n1,1\n2,4\n3,9\n")
+    monkeypatch.setattr(design, "pressure_for_height", _no_solving)
+    assert main([*DESIGN, *[f.format(bad=tmp_path / "bad.csv") for f in flags]]) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1
+
+
+def test_sense_with_a_sphere_in_the_case_reaches_the_solver_which_refuses_it(capsys, tmp_path):
+    case = tmp_path / "case.toml"
+    case.write_text('[sheet]\nthickness = "0.25 mm"\nc1 = "160 kPa"\nc2 = "47 kPa"\n[clamp]\nradius = "20 mm"\n'
+                    '[initial]\npressure = "4.8 kPa"\n[loads]\nforces = ["1 N"]\n'
+                    '[indenter]\nshape = "sphere"\nradius = "8 mm"\n')
+    assert main(["sense", str(case), "--ratio", "1.1"]) == 2
+    err = capsys.readouterr().err
+    assert "solver shooting does not implement the sphere indenter" in err and err.count("\n") == 1

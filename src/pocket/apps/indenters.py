@@ -29,30 +29,32 @@ SHAPES = {"plate": (), "sphere": ("radius",), "profile": ("file",)}
 KEYS = ("shape", "radius", "file")
 
 
-def parse(table: dict, clamp_radius: float, base=None, given: dict | None = None) -> Indenter:
+def parse(table: dict, clamp_radius: float, base=None, given: dict | None = None, *,
+          spell=lambda key: f"indenter.{key}") -> Indenter:
     """The ``Indenter`` of the ``[indenter]`` table ``table`` on a clamp of radius ``clamp_radius`` (m); a
     relative profile file is relative to ``base`` (a folder; the current one by default). Each key is
-    recorded in ``given`` as written (``"indenter.radius"``)."""
+    recorded in ``given`` as written (``"indenter.radius"``); ``spell(key)`` names a key in messages (a
+    command line's flag)."""
     if not isinstance(table, dict):
         raise InputError(f"indenter must be a table ([indenter]), got {quote(table)}")
     shape = table.get("shape", "plate")
     if not isinstance(shape, str) or shape not in SHAPES:
-        raise InputError(f"indenter.shape = {quote(shape)}, but it must be one of {', '.join(SHAPES)}")
+        raise InputError(f"{spell('shape')} = {quote(shape)}, but it must be one of {', '.join(SHAPES)}")
     for key in table:
         if key != "shape" and key not in SHAPES[shape]:
             takes = ", ".join(SHAPES[shape]) or "no other key"
-            raise InputError(f"indenter.{key} = {quote(table[key])}, but a {shape} indenter takes {takes}")
+            raise InputError(f"{spell(key)} = {quote(table[key])}, but a {shape} indenter takes {takes}")
     for key in SHAPES[shape]:
         if key not in table:
-            raise InputError(f"missing key 'indenter.{key}' (a {shape} indenter needs it)")
+            raise InputError(f"missing key '{spell(key)}' (a {shape} indenter needs it)")
     if given is not None:
         given.update({f"indenter.{k}": v for k, v in table.items()})
     if shape == "sphere":
-        return sphere(positive("indenter.radius", table["radius"], "length") / clamp_radius)
+        return sphere(positive(spell("radius"), table["radius"], "length") / clamp_radius)
     if shape == "profile":
         name = table["file"]
         if not isinstance(name, str) or not name:
-            raise InputError(f"indenter.file = {quote(name)}, but it must be a file name")
+            raise InputError(f"{spell('file')} = {quote(name)}, but it must be a file name")
         path = pathlib.Path(name) if base is None else pathlib.Path(base) / name
         return profile(read_csv(path, clamp_radius))
     return FLAT
