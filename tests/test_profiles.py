@@ -122,3 +122,14 @@ def test_functions_that_are_no_profile_are_refused():
         profiles.functions(lambda r: r**2 - r**4, lambda r: 2 * r - 4 * r**3, lambda r: 2 - 12 * r**2, extent=0.6)
     with pytest.raises(InputError, match=r"^indenter.shape = 1.0, but it must be a profile"):
         Indenter("profile", {"shape": 1.0})
+
+
+def test_a_profile_table_survives_pickling():
+    """A case holding a profile table can go to a worker process (the validation suite, sweeps): the copy is the
+    same profile."""
+    import pickle
+
+    tip = profile(profiles.table(*_sphere_table(12)))
+    copy, x = pickle.loads(pickle.dumps(tip)), np.linspace(0.0, TOP, 17)
+    for f in ("height", "slope", "curvature"):
+        np.testing.assert_array_equal(getattr(copy, f)(x), getattr(tip, f)(x))

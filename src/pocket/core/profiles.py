@@ -101,6 +101,25 @@ def _check_convex(source: str, rho: np.ndarray, second: np.ndarray, slope: np.nd
                          f"(z'' = {second[bad[0]]:.3g}): an indenter must be convex")
 
 
+@dataclasses.dataclass(frozen=True)
+class _Spline:
+    """z(rho) = g(rho^2) of the cubic spline ``g`` (module docstring), up to ``extent``; picklable, so that a
+    case holding a profile table can go to a worker process."""
+
+    g: object
+    extent: float
+
+    def height(self, r):
+        return _outside(self.extent, r, self.g(np.square(r)))
+
+    def slope(self, r):
+        return _outside(self.extent, r, 2.0 * r * self.g(np.square(r), 1))
+
+    def second(self, r):
+        s = np.square(r)
+        return _outside(self.extent, r, 2.0 * self.g(s, 1) + 4.0 * s * self.g(s, 2))
+
+
 def table(radii, heights, source: str = "the profile table") -> Shape:
     """The profile interpolating the rows (``radii``, ``heights``), float sequences of equal length, units R
     (module docstring); an InputError naming ``source`` and the row for a table that is no profile."""
@@ -135,20 +154,9 @@ def table(radii, heights, source: str = "the profile table") -> Shape:
     if tip > FLAT_TOLERANCE * z2 / r2:
         raise InputError(f"{source}: does not start flat on the axis (the first rows have a tip slope "
                          f"{tip:.3g}, {tip / (z2 / r2):.0%} of their mean slope): a profile must have z'(0) = 0")
-    spline = CubicSpline(rho**2, z)
-    first, second = spline.derivative(1), spline.derivative(2)
-    extent = float(rho[-1])
-
-    def height(r):
-        return _outside(extent, r, spline(np.square(r)))
-
-    def slope(r):
-        return _outside(extent, r, 2.0 * r * first(np.square(r)))
-
-    def curve(r):
-        s = np.square(r)
-        return _outside(extent, r, 2.0 * first(s) + 4.0 * s * second(s))
-
+    spline = _Spline(CubicSpline(rho**2, z), float(rho[-1]))
+    extent = spline.extent
+    height, slope, curve = spline.height, spline.slope, spline.second
     fine = np.linspace(0.0, extent, _CHECKS * rho.size)
     _check_convex(source + " (interpolated)", fine, curve(fine), slope(fine))
     return Shape(height, slope, curve, extent, source)
