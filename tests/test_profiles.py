@@ -87,11 +87,11 @@ CSV_REFUSALS = [
     ("radius [mm],height [mm]\n0,0\n1,0.1\nabc,0.4\n3,0.9\n", r"row 3 is 'abc,0.4', but each row must be two"),
     ("radius [mm],height [mm]\n0,0\n1,0.1\n2\n3,0.9\n", r"row 3 is '2', but each row must be two numbers"),
     ("radius [mm],height [mm]\n0,0\n1,0.1\n2,0.4\n", r"3 rows, but a profile needs at least 4"),
-    ("radius [mm],height [mm]\n0,0\n1,0.1\n2,0.4\n3,0.5\n", r"not convex at row 3"),
+    ("radius [mm],height [mm]\n0,0\n1,0.1\n2,0.4\n3,0.5\n", r"not convex at row 3 \('2,0.4'\)"),
     ("radius [mm],height [mm]\n0,0\n1,1\n2,2.1\n3,3.3\n", r"does not start flat on the axis"),
-    ("radius [mm],height [mm]\n0,0.1\n1,0.2\n2,0.5\n3,1\n", r"row 1 has height 0.005, but z\(0\) must be 0"),
-    ("radius [mm],height [mm]\n1,0\n2,0.1\n3,0.4\n4,0.9\n", r"row 1 has radius 0.05, but a profile starts"),
-    ("radius [mm],height [mm]\n0,0\n2,0.1\n1,0.4\n3,0.9\n", r"row 3 has radius 0.05, but the radii must increase"),
+    ("radius [mm],height [mm]\n0,0.1\n1,0.2\n2,0.5\n3,1\n", r"row 1 \('0,0.1'\) has a height that is not 0"),
+    ("radius [mm],height [mm]\n1,0\n2,0.1\n3,0.4\n4,0.9\n", r"row 1 \('1,0'\) has a radius that is not 0"),
+    ("radius [mm],height [mm]\n0,0\n2,0.1\n1,0.4\n3,0.9\n", r"row 3 \('1,0.4'\): the radii must increase"),
     ("radius [mm]\n0\n1\n2\n3\n", r"the first line must name two columns with units"),
 ]
 

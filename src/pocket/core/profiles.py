@@ -120,34 +120,40 @@ class _Spline:
         return _outside(self.extent, r, 2.0 * self.g(s, 1) + 4.0 * s * self.g(s, 2))
 
 
-def table(radii, heights, source: str = "the profile table") -> Shape:
+def table(radii, heights, source: str = "the profile table", written=None) -> Shape:
     """The profile interpolating the rows (``radii``, ``heights``), float sequences of equal length, units R
-    (module docstring); an InputError naming ``source`` and the row for a table that is no profile."""
+    (module docstring); an InputError naming ``source`` and the row for a table that is no profile, quoting
+    the row as ``written`` (its text per row, as the file has it) if given, else in units of R."""
     from scipy.interpolate import CubicSpline
 
     rho, z = np.asarray(radii, dtype=float), np.asarray(heights, dtype=float)
     if rho.shape != z.shape or rho.ndim != 1:
         raise InputError(f"{source}: radii and heights must be two lists of the same length")
+
+    def row(i: int) -> str:
+        """Row ``i`` (from 0) as its message names it."""
+        text = f"{rho[i]:g} R,{z[i]:g} R" if written is None else written[i]
+        return f"row {i + 1} ({text!r})"
+
     if rho.size < MIN_ROWS:
         raise InputError(f"{source}: {rho.size} rows, but a profile needs at least {MIN_ROWS}")
     if not (np.all(np.isfinite(rho)) and np.all(np.isfinite(z))):
-        raise InputError(f"{source}: row {int(np.flatnonzero(~np.isfinite(rho + z))[0]) + 1} is not finite")
+        raise InputError(f"{source}: {row(int(np.flatnonzero(~np.isfinite(rho + z))[0]))} is not finite")
     if rho[0] != 0.0:
-        raise InputError(f"{source}: row 1 has radius {rho[0]:g}, but a profile starts on the axis (radius 0)")
+        raise InputError(f"{source}: {row(0)} has a radius that is not 0, but a profile starts on the axis")
     if z[0] != 0.0:
-        raise InputError(f"{source}: row 1 has height {z[0]:g}, but z(0) must be 0 (heights are measured from "
+        raise InputError(f"{source}: {row(0)} has a height that is not 0, but z(0) must be 0 (heights are from "
                          "the indenter's lowest point, on the axis)")
     steps = np.diff(rho)
     if np.any(steps <= 0.0):
-        row = int(np.flatnonzero(steps <= 0.0)[0]) + 2
-        raise InputError(f"{source}: row {row} has radius {rho[row - 1]:g}, but the radii must increase")
+        raise InputError(f"{source}: {row(int(np.flatnonzero(steps <= 0.0)[0]) + 1)}: the radii must increase")
     if np.any(z < 0.0):
-        raise InputError(f"{source}: row {int(np.flatnonzero(z < 0.0)[0]) + 1} has a negative height, but "
+        raise InputError(f"{source}: {row(int(np.flatnonzero(z < 0.0)[0]))} has a negative height, but "
                          "z >= 0 (the lowest point is on the axis)")
     chords = np.diff(z) / steps
     drops = np.flatnonzero(np.diff(chords) < -CONVEX_TOLERANCE * max(float(np.max(np.abs(chords))), 1e-300))
     if drops.size:
-        raise InputError(f"{source}: not convex at row {int(drops[0]) + 2} (the slope falls from "
+        raise InputError(f"{source}: not convex at {row(int(drops[0]) + 1)} (the slope falls from "
                          f"{chords[drops[0]]:.6g} to {chords[drops[0] + 1]:.6g}): an indenter must be convex")
     r1, r2, z1, z2 = rho[1], rho[2], z[1], z[2]
     tip = (z1 * r2**2 - z2 * r1**2) / (r1 * r2 * (r2 - r1))
@@ -225,13 +231,14 @@ def read_csv(path, clamp_radius: float | None = None) -> Shape:
     if not rows or len(rows[0]) != 2:
         raise InputError(f"{path}: the first line must name two columns with units, like 'radius [mm],height [mm]'")
     factors = [_unit(path, i + 1, cell, clamp_radius) for i, cell in enumerate(rows[0])]
-    values = []
+    values, written = [], []
     for number, row in enumerate(rows[1:], start=1):
         try:
             if len(row) != 2:
                 raise ValueError
             values.append([float(cell) * f for cell, f in zip(row, factors, strict=True)])
+            written.append(",".join(row))
         except ValueError:
             raise InputError(f"{path}: row {number} is {','.join(row)!r}, but each row must be two numbers") from None
     data = np.array(values, dtype=float).reshape(-1, 2)
-    return table(data[:, 0], data[:, 1], source=str(path))
+    return table(data[:, 0], data[:, 1], source=str(path), written=written)
