@@ -155,7 +155,7 @@ def test_fem_solver_same_keys_as_shooting_plus_its_own(capsys, tmp_path):
         assert a["elements"] == 200 and a["order"] == 2
         for key in CompressedState.KEYS:
             assert a[key] == pytest.approx(b[key], rel=1e-5, abs=1e-12), key
-    assert sorted(p.name for p in (tmp_path / "fe").glob("*.pvd")) == ["profile.pvd", "surface.pvd"]
+    assert sorted(p.name for p in (tmp_path / "fe").glob("*.pvd")) == ["indenter.pvd", "profile.pvd", "surface.pvd"]
 
 
 def test_closed_pipe_ends_quietly():

@@ -243,13 +243,15 @@ def series():
 
 
 def test_write_series(tmp_path):
-    """One profile and one surface per step; both .pvd list every step with its time, relative names."""
+    """One profile, one surface and (compressed states) one indenter per step; each .pvd lists every step with its
+    time, relative names."""
     states, forces = series()
     out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=8)
     names = sorted(p.name for p in out.iterdir())
-    steps = [f"step_{k:04d}_{part}.vtu" for k in range(3) for part in ("profile", "surface")]
-    assert names == sorted(steps + ["profile.pvd", "surface.pvd", folders.MARKER])
-    for part in ("profile", "surface"):
+    parts = ("profile", "surface", "indenter")
+    steps = [f"step_{k:04d}_{part}.vtu" for k in range(3) for part in parts]
+    assert names == sorted(steps + [f"{part}.pvd" for part in parts] + [folders.MARKER])
+    for part in parts:
         root = ET.parse(out / f"{part}.pvd").getroot()
         assert root.get("type") == "Collection"
         sets = root.find("Collection").findall("DataSet")

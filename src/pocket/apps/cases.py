@@ -23,6 +23,9 @@
     pressure = "4.8 kPa"                 # P_I, or height = "10 mm" (H0), or volume = "2 mL"
     [loads]                              # exactly one of
     forces = ["0 N", "0.5 N", "1 N"]     # plate forces F, or heights = ["9 mm", "8 mm"] (plate heights H)
+    [indenter]                           # optional, default the flat plate (pocket.apps.indenters)
+    shape = "sphere"                     # "plate", "sphere" with radius = "8 mm", or "profile" with
+    radius = "8 mm"                      # file = "tip.csv" (relative to the case file's folder)
     [solver]                             # optional, default shooting
     name = "shooting"                    # or "fem" or "analytical", with that solver's options:
                                          # rtol (shooting); elements, mesh, order, penalty, augmented, tol (fem);
@@ -62,11 +65,13 @@ import pathlib
 
 from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
+from pocket.core.indenters import FLAT, Indenter
 from pocket.core.inputs import quote
 from pocket.core.materials import Material
 from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import positive, quantity
 
+from . import indenters
 from .rubbers import PARAMETERS, fluid, sheet
 from .solvers import SOLVERS, record
 from .tomlfiles import read_toml
@@ -79,7 +84,7 @@ MAX_LOADS = 10_000
 _SECTIONS = {"name": None, "label": None, "tags": None,
              "sheet": ("thickness", "material", *PARAMETERS, "modulus", "alpha"), "clamp": ("radius",),
              "fluid": ("kind", "ambient", "gamma"),
-             "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"),
+             "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"), "indenter": indenters.KEYS,
              "solver": ("name", *dict.fromkeys(o.name for s in SOLVERS.values() for o in s.options))}
 
 
@@ -92,7 +97,8 @@ class Case:
     ``load_kind`` is ``"forces"`` (F in N) or ``"heights"`` (plate height H in m), or ``""``
     for a case without loads (the validation suite chooses its own). ``given`` maps each
     physical key (``"sheet.thickness"``, ``"loads.forces[0]"``) to the value as written.
-    ``warnings`` are about the inputs (``pocket.core.sizes``), one line each.
+    ``warnings`` are about the inputs (``pocket.core.sizes``), one line each. ``indenter`` is what
+    presses, dimensionless (``pocket.core.indenters``; lengths in units of the clamp radius).
     """
 
     name: str
@@ -109,6 +115,7 @@ class Case:
     given: tuple[tuple[str, object], ...] = dataclasses.field(default=(), hash=False)  # values may be lists
     fluid: Fluid = LIQUID
     warnings: tuple[str, ...] = ()  # about the inputs: a plain length that looks like millimetres, a thick sheet
+    indenter: Indenter = FLAT
 
     @property
     def alpha(self) -> float | None:
@@ -132,7 +139,8 @@ class Case:
         The rubber is ``material`` and its parameters, stresses in Pa (``c1_Pa``, ``c10_Pa``,
         Ogden's ``mu_Pa`` a list), numbers as they are (``jm``, ``exponents``), with ``modulus_Pa``
         (E = 3 mu_0) and, for Mooney-Rivlin, ``alpha``; the fluid is ``fluid`` and, for a gas,
-        ``ambient_Pa`` and ``gamma``.
+        ``ambient_Pa`` and ``gamma``; the indenter is ``indenter`` (plate, sphere or profile) and a sphere's
+        ``indenter_radius_m`` or a profile's ``indenter_file`` (``pocket.apps.indenters.describe``).
         """
         rubber = {"material": self.material.law}
         stresses = self.material.definition.stresses
@@ -147,7 +155,8 @@ class Case:
             fluid.update(ambient_Pa=self.fluid.ambient, gamma=self.fluid.gamma)
         return {"name": self.name, "thickness_m": self.thickness, **rubber, "radius_m": self.radius, **fluid,
                 f"initial_{self.initial[0]}": self.initial[1], "load_kind": self.load_kind,
-                "loads": list(self.loads), "solver": self.solver, **dict(self.options),
+                "loads": list(self.loads), **indenters.describe(self.indenter, self.radius),
+                "solver": self.solver, **dict(self.options),
                 "given": dict(self.given), "warnings": list(self.warnings)}
 
 
@@ -269,12 +278,13 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     load_kind, loads = "", ()
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)
+    indenter = indenters.parse(data["indenter"], radius, base, given) if "indenter" in data else FLAT
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
     warnings = _sizes(given, thickness, radius, initial=(kind, value), loads=(load_kind, loads))
     return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
                 label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()),
-                warnings=tuple(warnings))
+                warnings=tuple(warnings), indenter=indenter)
 
 
 def load(path, *, require_loads: bool = True) -> Case:

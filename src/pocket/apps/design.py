@@ -56,11 +56,13 @@ import numpy as np
 
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
+from pocket.core.indenters import FLAT
 from pocket.core.inputs import check_alpha, quote
 from pocket.core.materials import Material, as_material, mooney_rivlin
 from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import positive
 
+from . import indenters
 from .inverse import force_where, pressure_for_height, range_end
 from .slopes import curve_with_slopes
 from .solvers import entry, record
@@ -159,12 +161,13 @@ def _gas_force(compress, rubber, phat_i, ratio, fluid, per_fhat, liquid, options
 
 
 def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=None, solver="shooting", points=20,
-           **options) -> Design:
+           indenter=None, **options) -> Design:
     """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units.
 
     ``material``: a Mooney-Rivlin alpha = C2/C1, or a ``pocket.core.materials.Material`` (any stress unit:
     ``modulus`` sets E = 3 mu_0). ``fluid``: None (a liquid) or a gas (``pocket.core.fluids.gas``) with its
-    ambient pressure in Pa.
+    ambient pressure in Pa. ``indenter``: None (the flat plate) or an ``[indenter]`` table in physical units
+    (``pocket.apps.indenters.parse``: ``{"shape": "sphere", "radius": "8 mm"}``), what the finger is.
 
     A length outside the sizes of a pocket, or a designed sheet too thick for a membrane, is an ``InputError``;
     a plain length above 1 m (probably meant in mm) or T/R above 0.1 is one of the design's ``warnings``
@@ -174,6 +177,8 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
     radius, height, modulus, force, rubber, ratio, fluid = _check(radius, height, modulus, material, force,
                                                                   height_ratio, fluid)
     warnings = [w for key, si in (("radius", radius), ("height", height)) for w in length_warnings(key, given[key], si)]
+    finger = FLAT if indenter is None else indenters.parse(indenter, radius)
+    pressing = {**options, **({} if finger == FLAT else {"indenter": finger})}  # the compressions' options
     model = record(solver)
     compress = entry(model, "compress", "a design")
     try:
@@ -181,10 +186,10 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
     except OutOfRangeError as err:
         raise OutOfRangeError(f"height = {quote(given['height'])}: no inflated state of the model's first branch is "
                               f"that high ({err})") from None
-    fhat = force_where(model, rubber, phat_i, "height_ratio", ratio, increasing=False, **options)
+    fhat = force_where(model, rubber, phat_i, "height_ratio", ratio, increasing=False, **pressing)
     if fluid.is_gas:
         fhat = _gas_force(compress, rubber, phat_i, ratio, fluid, fluid.ambient * phat_i * math.pi * radius**2 / force,
-                          fhat, options)
+                          fhat, pressing)
     p_i = force / (math.pi * radius**2 * fhat)
     thickness = p_i * radius / (modulus * phat_i)
     warnings += _thin(thickness, radius, given)
@@ -193,15 +198,15 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
     paper_phat = paper_p * radius / (modulus * paper_t)
     try:
         paper_state = compress(rubber, paper_phat, force / (paper_p * math.pi * radius**2),
-                                     **_sealed(fluid, modulus * paper_t / radius), **options)
+                                     **_sealed(fluid, modulus * paper_t / radius), **pressing)
         paper_model = paper_state.inflated.height * radius, paper_state.height_ratio
     except OutOfRangeError:  # the paper's rules can ask for a state the model does not have
         paper_model = None, None
-    top = range_end(model, rubber, phat_i, below=2.0 * fhat, **sealed, **options)
+    top = range_end(model, rubber, phat_i, below=2.0 * fhat, **sealed, **pressing)
     limited = top < 2.0 * fhat
     top *= 1.0 - 1e-3 if limited else 1.0  # room for the slope's stencil (pocket/slopes.py, 1e-4 f)
     forces = top * np.arange(1, points + 1) / points
-    states, slopes = curve_with_slopes(model, rubber, phat_i, [fhat, *forces], ["height_ratio"], **sealed, **options)
+    states, slopes = curve_with_slopes(model, rubber, phat_i, [fhat, *forces], ["height_ratio"], **sealed, **pressing)
     scale = p_i * math.pi * radius**2
     stiffness = -scale / (height * slopes["height_ratio"])
     return Design(pressure_initial_Pa=p_i, thickness_m=thickness, paper_pressure_initial_Pa=paper_p,

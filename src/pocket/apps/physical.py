@@ -19,10 +19,12 @@ import math
 
 from pocket.core.errors import InputError, OutOfRangeError, PocketError
 from pocket.core.fluids import Fluid
+from pocket.core.indenters import FLAT
 from pocket.core.inputs import MAGNITUDES, quote
 from pocket.core.units import written_like
 
 from .cases import Case
+from .contact import contact_pressures
 from .inverse import force_where, pressure_for_height, range_end
 from .rangeend import check_force
 from .solvers import entry, record
@@ -76,14 +78,19 @@ class Pocket:
 
     def options(self, step: str = "compress") -> dict:
         """The keyword arguments of ``step``'s entry points ("inflate" or "compress"): the case's solver
-        options that the step takes, and for a compression the fluid if it is a gas (``fluid_options``)."""
+        options that the step takes, and for a compression the fluid if it is a gas and the indenter if it is not
+        the flat plate (``fluid_options``)."""
         solver = self.solver()
         return {**{k: v for k, v in self.case.options if step in solver.option(k).steps}, **self.fluid_options(step)}
 
     def fluid_options(self, step: str = "compress") -> dict:
-        """``{"fluid": self.fluid}`` for a gas-filled pocket's compression, else nothing (a liquid is every
-        solver's default)."""
-        return {"fluid": self.fluid} if step == "compress" and self.case.fluid.is_gas else {}
+        """What a compression is given besides its solver's options: ``{"fluid": self.fluid}`` for a gas-filled
+        pocket and ``{"indenter": ...}`` for an indenter other than the flat plate, else nothing (a liquid and
+        the flat plate are every solver's default)."""
+        if step != "compress":
+            return {}
+        gas = {"fluid": self.fluid} if self.case.fluid.is_gas else {}
+        return {**gas, **({} if self.case.indenter == FLAT else {"indenter": self.case.indenter})}
 
 
 def _inside(key: str, given: str, name: str, value: float) -> float:
@@ -204,7 +211,10 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     ``pressure_initial`` are the pocket's. With ``load``, the state of the case's load of that
     index: the row starts with the load as the case gives it (``"0.2 N"``, ``"9 mm"``), and a
     force load's ``force_N`` is the force as parsed and its ``force`` the Fhat given to the solver
-    (``forces``), not values recomputed from the state.
+    (``forces``), not values recomputed from the state. ``contact_pressure_pole_Pa`` and
+    ``contact_pressure_edge_Pa`` follow the pressure where the state carries them (``pocket.apps.contact``:
+    on the flat plate both are P); ``contact_area_m2`` is the curved area in contact, ``contact_radius_m``
+    the Lagrangian a_c R and ``height_m`` the indenter's lowest point above the clamp plane.
     """
     case, r, scale = pocket.case, pocket.case.radius, pocket.pressure_scale_Pa
     asked = {"pressure_initial": pocket.pressure_initial}
@@ -217,6 +227,7 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
             row["force_N"], asked["force"] = case.loads[load], case.loads[load] / pocket.force_scale_N
     row.update({"pressure_Pa": state.pressure * scale,
                 "pressure_rise_Pa": (state.pressure - pocket.pressure_initial) * scale,
+                **{f"{k}_Pa": v * scale for k, v in contact_pressures(state).items()},
                 "contact_area_m2": state.contact_area * math.pi * r**2,
                 "contact_radius_m": state.contact_radius * r, "height_m": state.height * r,
                 "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,

@@ -79,11 +79,13 @@ point index is one material point throughout the series.
 Load paths. ``write_series`` writes ``step_0000_profile.vtu``,
 ``step_0000_surface.vtu``, ... and the collections ``profile.pvd`` and
 ``surface.pvd`` (file names relative to them), so ParaView plays the path as a
-time series. The "time" of a step defaults to its index; a compression path
-should pass the force Fhat (an inflation path the pressure or the volume),
-strictly increasing. The directory appears complete or not at all: the files
-go into a temporary sibling directory that is renamed into place at the end
-and removed on any failure.
+time series. A compression path also gets the indenter's surface at each step,
+``step_0000_indenter.vtu``, ... and ``indenter.pvd`` (``pocket.apps.vtkindenter``:
+the flat plate a disc wider than the pocket, its lowest point at the state's height).
+The "time" of a step defaults to its index; a compression path should pass
+the force Fhat (an inflation path the pressure or the volume), strictly increasing.
+The directory appears complete or not at all: the files go into a temporary
+sibling directory that is renamed into place at the end and removed on any failure.
 """
 
 from __future__ import annotations
@@ -103,7 +105,9 @@ from pocket.core.states import CHECKS
 
 from .folders import check_replaceable, staged
 from .resampling import resample, series_radii
+from .revolve import revolve
 from .solvers import SOLVERS
+from .vtkindenter import indenter_mesh, reach_of
 
 __all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS", "KIND",
            "CODES"]
@@ -199,33 +203,12 @@ def surface_mesh(state, *, segments=64, radii=None) -> meshio.Mesh:
     """The profile (resampled at ``radii`` if given) revolved about the z axis: quads, triangles at the pole."""
     segments = _segments(segments)
     profile = _sampled(state, radii)
-    rho, eta = np.asarray(profile.rho, dtype=float), np.asarray(profile.eta, dtype=float)
-    pole = rho[0] == 0.0
-    angle = 2.0 * np.pi * np.arange(segments) / segments
-    cos, sin = np.cos(angle), np.sin(angle)
-    rings = np.arange(1 if pole else 0, len(rho))  # profile index of each ring
-    x, y = np.outer(rho[rings], cos).ravel(), np.outer(rho[rings], sin).ravel()
-    points = np.column_stack((x, y, np.repeat(eta[rings], segments)))
-    source = np.repeat(rings, segments)  # profile index of each point
-    hoop = np.tile(np.arange(segments), len(rings))
-    if pole:
-        points = np.vstack(([[0.0, 0.0, eta[0]]], points))
-        source, hoop = np.concatenate(([0], source)), np.concatenate(([0], hoop))
-    first = 1 if pole else 0  # index of the first point of ring 0
-
-    def at(ring, j):
-        return first + ring * segments + j % segments
-
-    j = np.arange(segments)
-    band = np.arange(len(rings) - 1)[:, None]
-    quads = np.stack((at(band, j), at(band + 1, j), at(band + 1, j + 1), at(band, j + 1)), axis=-1)
-    cells = [("quad", quads.reshape(-1, 4))] if len(rings) > 1 else []
-    if pole:
-        cells.insert(0, ("triangle", np.column_stack((np.zeros(segments, int), at(0, j), at(0, j + 1)))))
+    surface = revolve(profile.rho, profile.eta, segments)
+    source, hoop, cos, sin = surface.source, surface.hoop, surface.cos, surface.sin
     data = {name: values[source] for name, values in _point_data(profile).items()}
     radial, up = data["displacement"][:, 0], data["displacement"][:, 2]
     data["displacement"] = np.column_stack((radial * cos[hoop], radial * sin[hoop], up))
-    return meshio.Mesh(points, cells, point_data=data, field_data=field_data(state))
+    return meshio.Mesh(surface.points, surface.cells, point_data=data, field_data=field_data(state))
 
 
 def _write_vtu(path: pathlib.Path, mesh: meshio.Mesh) -> None:
@@ -275,7 +258,8 @@ def _pvd(path: pathlib.Path, files: list[str], times: np.ndarray) -> None:
 
 def write_series(directory, states, *, times=None, segments=64, points=SERIES_POINTS,
                  overwrite=False) -> pathlib.Path:
-    """Write one profile and one surface per state plus ``profile.pvd`` and ``surface.pvd``.
+    """Write one profile and one surface per state plus ``profile.pvd`` and ``surface.pvd``; for compressed
+    states (with an ``indenter``) also the indenter's surface per state and ``indenter.pvd``.
 
     ``times`` (default: the step index) label the steps. Every step has the same
     points: the profiles are resampled on ``series_radii(states, points)``. An
@@ -293,11 +277,16 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
     target = check_replaceable(directory, KIND, "VTK folder", overwrite=overwrite)
     with staged(target, KIND) as partial:
         width = max(4, len(str(len(states) - 1)))
-        files = {"profile": [], "surface": []}
+        pressed = all(hasattr(s, "indenter") for s in states)
+        files = {"profile": [], "surface": [], **({"indenter": []} if pressed else {})}
+        reach = reach_of([_profile(s) for s in states])
         for k, state in enumerate(states):
             stem = f"step_{k:0{width}d}"
             paths = write_state(partial, state, stem=stem, segments=segments, radii=radii)
-            for part, path in zip(("profile", "surface"), paths, strict=True):
+            if pressed:
+                paths.append(partial / f"{stem}_indenter.vtu")
+                _write_vtu(paths[-1], indenter_mesh(state.indenter, state.height, reach, segments=segments))
+            for part, path in zip(files, paths, strict=True):
                 files[part].append(path.name)
         for part, names in files.items():
             _pvd(partial / f"{part}.pvd", names, times)

@@ -8,6 +8,7 @@ import sys
 from pocket.apps.design import design
 
 from .common import EXIT_CODES, number
+from .indenters import add_indenter_flags, indenter_table
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
@@ -15,7 +16,7 @@ __all__ = ["register"]
 
 def _main(args) -> int:
     result = design(args.radius, args.height, args.modulus, material_of(args), args.force, args.height_ratio,
-                    fluid=fluid_of(args, physical=True), solver=args.solver)
+                    fluid=fluid_of(args, physical=True), solver=args.solver, indenter=indenter_table(args))
     for text in result.warnings:
         print(f"pocket: warning: {text}", file=sys.stderr)
     if args.json:
@@ -64,4 +65,5 @@ def register(subparsers) -> None:
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     add_rubber_flags(p)
     add_fluid_flags(p, physical=True)
+    add_indenter_flags(p, physical=True)
     p.set_defaults(handler=_main)

@@ -15,8 +15,10 @@ import math
 from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, entry
 from pocket.core.errors import ConvergenceError, InputError
+from pocket.core.indenters import FLAT
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
+from .indenters import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
@@ -26,8 +28,8 @@ __all__ = ["register"]
 def register(subparsers) -> None:
     """Add ``inflate`` and ``compress``."""
     for name, text in (("inflate", "step 1: inflate the pocket at pressure Phat"),
-                       ("compress", "step 2: press the inflated pocket with a flat plate, its fluid sealed in (a "
-                                    "liquid keeps its volume, a gas is compressed)")):
+                       ("compress", "step 2: press the inflated pocket with a flat plate or another indenter, its "
+                                    "fluid sealed in (a liquid keeps its volume, a gas is compressed)")):
         p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}.", epilog=EXIT_CODES)
         if name == "inflate":
             control = p.add_mutually_exclusive_group(required=True)
@@ -49,6 +51,7 @@ def register(subparsers) -> None:
         add_rubber_flags(p)
         if name == "compress":
             add_fluid_flags(p, physical=False)
+            add_indenter_flags(p)
         add_solver_flags(p, "inflate" if name == "inflate" else "compress")
         p.set_defaults(handler=_main)
 
@@ -98,6 +101,8 @@ def _main(args) -> int:
     if step == "compress":
         fluid = fluid_of(args, physical=False)
         options.update({} if fluid is None else {"fluid": fluid})
+        indenter = indenter_of(args)
+        options.update({} if indenter == FLAT else {"indenter": indenter})
     if args.vtk:
         from pocket.apps.vtkfiles import KIND
 

@@ -10,11 +10,17 @@ kind    z(rho)                      parameters  F = P A_c identity
 ======  ==========================  ==========  ====================
 flat    0                           (none)      yes
 sphere  R_s - sqrt(R_s^2 - rho^2)   radius R_s  no
+profile a user's table or function  shape       no
 ======  ==========================  ==========  ====================
 
 A sphere's surface exists for rho <= R_s only (its equator); there z is R_s and the slope
 infinite, and beyond it ``height``, ``slope`` and ``curvature`` are NaN: a sheet wrapping
 past the equator is outside the model, which a solver says in its own words.
+
+A profile is a user's convex z(rho), flat on the axis, given as a table (a CSV file with units in
+its header) or as functions with its slope and curvature (``pocket.core.profiles``: the
+interpolation and its error, the checks); past its last radius it is NaN like a sphere past its
+equator.
 
 On a flat plate the sheet in contact lies flat and carries the fluid pressure P straight
 to the plate, and a smooth edge exerts no line force: the force is F = P A_c exactly, an
@@ -40,8 +46,9 @@ import numpy as np
 
 from .errors import InputError
 from .inputs import check_finite, quote
+from .profiles import Shape
 
-__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "sphere"]
+__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "sphere", "profile"]
 
 T = TypeVar("T")
 
@@ -53,7 +60,8 @@ class Kind:
     array of any shape; returns z of the same shape, units R) and ``pressure_area``, whether
     F = P A_c holds as an identity (module docstring). ``slope`` and ``second`` are dz/drho and
     d2z/drho2 with the signature of ``profile`` (None: the flat plate's zeros); ``check`` refuses
-    parameters that make no indenter (params -> None, an ``InputError`` naming the parameter)."""
+    parameters that make no indenter (params -> None, an ``InputError`` naming the parameter). The
+    parameters named in ``shapes`` are a ``pocket.core.profiles.Shape`` rather than a float."""
 
     name: str
     summary: str
@@ -63,6 +71,7 @@ class Kind:
     slope: Callable[[Mapping[str, float], np.ndarray], np.ndarray] | None = None
     second: Callable[[Mapping[str, float], np.ndarray], np.ndarray] | None = None
     check: Callable[[Mapping[str, float]], None] | None = None
+    shapes: tuple[str, ...] = ()  # the parameters that are a ``pocket.core.profiles.Shape``, not a float
 
 
 #: kind name -> its definition
@@ -80,9 +89,9 @@ def register(kind: Kind) -> Kind:
 @dataclasses.dataclass(frozen=True)
 class Indenter:
     """A registered kind by name with its parameters: ``params`` maps each name of the kind's
-    ``parameters`` to a float, given as a mapping or as (name, value) pairs in the kind's order (as
-    stored). An unknown kind, a missing or foreign parameter or a value that is not a finite number
-    is an ``InputError`` naming it."""
+    ``parameters`` to a float (a ``Shape`` for those in its ``shapes``), given as a mapping or as
+    (name, value) pairs in the kind's order (as stored). An unknown kind, a missing or foreign
+    parameter or a value that is not a finite number is an ``InputError`` naming it."""
 
     kind: str
     params: tuple[tuple[str, float], ...] = ()
@@ -95,7 +104,8 @@ class Indenter:
         if set(given) != set(names):
             raise InputError(f"indenter {self.kind} takes the parameters ({', '.join(names)}), "
                              f"not ({', '.join(given)})")
-        values = tuple((n, check_finite(f"indenter.{n}", given[n])) for n in names)
+        values = tuple((n, given[n] if n in KINDS[self.kind].shapes else check_finite(f"indenter.{n}", given[n]))
+                       for n in names)
         if KINDS[self.kind].check is not None:
             KINDS[self.kind].check(dict(values))
         object.__setattr__(self, "params", values)
@@ -172,6 +182,21 @@ def _sphere_check(params: Mapping[str, float]) -> None:
 register(Kind("sphere", "a sphere of radius R_s (a fingertip), its lowest point on the axis", ("radius",), _sphere,
               pressure_area=False, slope=_sphere_slope, second=_sphere_second, check=_sphere_check))
 
+def _profile(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+    """A user's profile: its shape's z(rho)."""
+    return params["shape"].height(rho)
+
+
+def _profile_check(params: Mapping[str, float]) -> None:
+    if not isinstance(params["shape"], Shape):
+        raise InputError(f"indenter.shape = {quote(params['shape'])}, but it must be a profile "
+                         "(pocket.core.profiles: table, functions or read_csv)")
+
+
+register(Kind("profile", "a user's convex profile z(rho), flat on the axis (a table or functions)", ("shape",),
+              _profile, pressure_area=False, slope=lambda params, rho: params["shape"].slope(rho),
+              second=lambda params, rho: params["shape"].second(rho), check=_profile_check, shapes=("shape",)))
+
 #: the flat plate (every solver's default)
 FLAT = Indenter("flat")
 
@@ -179,6 +204,11 @@ FLAT = Indenter("flat")
 def sphere(radius: float) -> Indenter:
     """A sphere of radius R_s = ``radius`` (units R)."""
     return Indenter("sphere", (("radius", radius),))
+
+
+def profile(shape: Shape) -> Indenter:
+    """The user's profile ``shape`` (``pocket.core.profiles``) as an indenter."""
+    return Indenter("profile", (("shape", shape),))
 
 
 def as_indenter(value) -> Indenter:

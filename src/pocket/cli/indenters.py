@@ -1,0 +1,70 @@
+"""The indenter flags of ``pocket compress`` (the model's units) and ``pocket design`` (physical units).
+
+``--indenter {plate,sphere,profile}`` (default plate, the flat plate), ``--indenter-radius`` for a sphere
+and ``--indenter-file FILE.csv`` for a profile. In ``compress`` the radius is K = R_s / R (> 0) and the
+profile's header is in units of R, ``radius [R],height [R]`` (``pocket.core.profiles``); in ``design``, which
+knows R, the radius is a length ('8 mm') and the profile's header in any length unit (``radius [mm],...``).
+A flag the shape does not take, a missing one, a radius that is not positive or a bad profile file is a
+one-line error before any solving.
+"""
+
+from __future__ import annotations
+
+from pocket.apps.indenters import SHAPES
+from pocket.core.errors import InputError
+from pocket.core.indenters import FLAT, Indenter, profile, sphere
+from pocket.core.profiles import read_csv
+
+from .common import number
+
+__all__ = ["add_indenter_flags", "indenter_of", "indenter_table"]
+
+_FLAGS = {"radius": "--indenter-radius", "file": "--indenter-file"}
+
+
+def add_indenter_flags(parser, *, physical: bool = False) -> None:
+    """Add ``--indenter``, ``--indenter-radius`` and ``--indenter-file`` to ``parser`` (a length and a file in any
+    length unit if ``physical``, else in units of R)."""
+    parser.add_argument("--indenter", choices=tuple(SHAPES), default="plate",
+                        help="what presses: the flat plate (default), a sphere (a fingertip) or a profile")
+    if physical:
+        parser.add_argument(_FLAGS["radius"], metavar="LENGTH", help="a sphere's radius R_s ('8 mm')")
+        parser.add_argument(_FLAGS["file"], metavar="FILE.csv", help="a profile's table: a header 'radius [mm],"
+                            "height [mm]' (any length unit) and rows of two numbers, from the axis outwards")
+        return
+    parser.add_argument(_FLAGS["radius"], type=number, metavar="K", help="a sphere's radius K = R_s / R")
+    parser.add_argument(_FLAGS["file"], metavar="FILE.csv", help="a profile's table: a header 'radius [R],height "
+                        "[R]' (units of the clamp radius R) and rows of two numbers, from the axis outwards")
+
+
+def _given(args) -> dict:
+    """{key: value} of the size flags given, checked against the shape: an InputError for one it does not
+    take or lacks."""
+    shape = args.indenter
+    values = {"radius": args.indenter_radius, "file": args.indenter_file}
+    for key, value in values.items():
+        if value is not None and key not in SHAPES[shape]:
+            raise InputError(f"{_FLAGS[key]} is given, but a {shape} indenter takes "
+                             f"{' '.join(_FLAGS[k] for k in SHAPES[shape]) or 'no size'}")
+        if value is None and key in SHAPES[shape]:
+            raise InputError(f"--indenter {shape} needs {_FLAGS[key]}")
+    return {k: v for k, v in values.items() if v is not None}
+
+
+def indenter_of(args) -> Indenter:
+    """The indenter the dimensionless flags ``args`` give (``compress``)."""
+    values = _given(args)
+    if args.indenter == "sphere":
+        if not values["radius"] > 0.0:
+            raise InputError(f"--indenter-radius = {values['radius']:g}, but a sphere's radius must be > 0")
+        return sphere(values["radius"])
+    if args.indenter == "profile":
+        return profile(read_csv(values["file"]))
+    return FLAT
+
+
+def indenter_table(args) -> dict | None:
+    """The physical flags ``args`` as an ``[indenter]`` table (``pocket.apps.indenters.parse``, ``design``), None
+    for the plate."""
+    values = _given(args)
+    return None if args.indenter == "plate" else {"shape": args.indenter, **values}
