@@ -12,7 +12,14 @@ target, ``steps.land`` solves under pressure control from the bracketing
 states. If P falls before reaching it, the path has passed a pressure maximum
 (neo-Hookean-like alpha): a golden-section search in V locates it; a target
 above it has no state on the first branch (``OutOfRangeError``), one below it
-is landed on the rising side.
+is landed on the rising side. A maximum can hide inside one step: for alpha
+just below the value where the maximum disappears, P(V) has a dip so shallow and
+narrow (alpha = 0.0547: Phat 0.73277 at V/R^3 = 8.2, 0.73246 at 12, back to
+0.73277 by 16) that the states on either side of it both rise. A local maximum
+flattens the path first, so where the slope dP/dlog V of a step falls below
+``FLATTENING`` times the step's before it, ``SUBSTEPS`` states are solved
+inside it and watched like the others (``_states``); without that the path
+would pass the dip and return a state of the second rising branch.
 
 A rubber that locks (Gent) stops the volume path at its locking stretch
 (``steps.near_locking``): a volume target past it is ``OutOfRangeError``.
@@ -49,6 +56,11 @@ P_START = 1e-3
 #: without a pressure maximum reaches Phat = 2 at V/R^3 ~ 1.6e3 (alpha = 0.1), far past 1e3 times the start
 LOG_V_RANGE = np.log(1e6)
 _STEPS = dict(first_step=0.05, max_step=0.1)  # log V steps of 0.35 to 0.7
+#: a step whose slope dP/dlog V is below this fraction of the step's before it is searched for a maximum
+#: inside it (a rubber without one flattens by a few per cent a step; at a maximum the slope goes to 0)
+FLATTENING = 0.25
+#: the states solved inside such a step
+SUBSTEPS = 8
 _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
@@ -94,7 +106,7 @@ def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
     log_v0 = np.log(volume(model, y))
     path = [(log_v0, y)]
     try:
-        for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
+        for log_v, y, iterations in _states(along, y, log_v0):
             total += iterations
             if y[-1] >= target:
                 y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
@@ -113,6 +125,24 @@ def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
     raise OutOfRangeError(
         f"Phat = {target:.6g} not reached up to V/R^3 = {np.exp(log_v):.4g} on the first branch"
     )
+
+
+def _states(along, y, log_v0):
+    """(log V, y, Newton iterations) along the volume path from ``y`` at log V = ``log_v0`` to
+    ``LOG_V_RANGE`` past it, with ``SUBSTEPS`` states more inside each step where the path flattens
+    (module docstring)."""
+    last: list[tuple[float, np.ndarray]] = [(log_v0, y)]
+    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
+        if len(last) == 2:
+            (s_a, y_a), (s_m, y_m) = last
+            before, now = (y_m[-1] - y_a[-1]) / (s_m - s_a), (y[-1] - y_m[-1]) / (log_v - s_m)
+            if 0.0 <= now < FLATTENING * before:
+                guess = y_m
+                for s in np.linspace(s_m, log_v, SUBSTEPS + 2)[1:-1]:
+                    guess, k = along(s, guess)
+                    yield s, guess, k
+        yield log_v, y, iterations
+        last = [*last, (log_v, y)][-2:]
 
 
 def inflated_at(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray, int]:

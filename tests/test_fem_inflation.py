@@ -7,6 +7,8 @@ pressure maximum; the pole stretch's convergence order on uniform meshes (2)
 and on meshes graded towards the axis (4 with P2).
 """
 
+import re
+
 import numpy as np
 import pytest
 
@@ -162,3 +164,18 @@ def test_the_memory_of_inflations_is_bounded(counted):
         with pytest.raises(OutOfRangeError):
             fem.inflate(0.0, 2.0, elements=16)
     assert len(counted) == REMEMBERED + 4
+
+
+def test_a_maximum_hidden_inside_one_step_is_found():
+    """Exact answer: the shooting solver's first pressure maximum. At alpha = 0.0546875 the dip after the
+    maximum is shallow and narrow (shooting: Phat 0.73277 at V/R^3 = 8.2, lower at 12, back above it by 16),
+    so the states of one log V step can rise on both sides of it; the FE must still refuse Phat = 1 (the
+    second rising branch reaches it near V/R^3 = 577) and quote the same maximum, to the golden-section
+    search's tolerance in V (1e-7 in log V) and the default mesh's error (1e-8 in Phat)."""
+    alpha = 0.0546875
+    with pytest.raises(OutOfRangeError) as shooting_err:
+        shooting.inflate(alpha, 1.0)
+    with pytest.raises(OutOfRangeError) as fem_err:
+        fem.inflate(alpha, 1.0)
+    quoted = [float(re.search(r"maximum Phat = ([0-9.]+)", str(e.value)).group(1)) for e in (shooting_err, fem_err)]
+    assert quoted[0] == pytest.approx(quoted[1], abs=2e-6), (str(shooting_err.value), str(fem_err.value))  # 6 digits
