@@ -48,7 +48,7 @@ P_START = 1e-3
 #: how far past the start volume (V/R^3 ~ 0.1 at Phat_0 = 1e-3) a pressure target is sought: a rubber
 #: without a pressure maximum reaches Phat = 2 at V/R^3 ~ 1.6e3 (alpha = 0.1), far past 1e3 times the start
 LOG_V_RANGE = np.log(1e6)
-_STEPS = dict(first_step=0.05, max_step=0.1)  # log V steps of 0.35 to 0.7
+_FIRST_STEP, _MAX_STEP = 0.05, 0.1  # log V steps of 0.35 to 0.7
 _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
@@ -94,7 +94,8 @@ def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
     log_v0 = np.log(volume(model, y))
     path = [(log_v0, y)]
     try:
-        for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
+        for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)",
+                                           first_step=_FIRST_STEP, max_step=_MAX_STEP):
             total += iterations
             if y[-1] >= target:
                 y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
