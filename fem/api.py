@@ -97,20 +97,20 @@ def _nodes(mesh, elements, order) -> np.ndarray:
     if mesh is not None and elements is not None:
         raise InputError("give either mesh or elements, not both")
     if mesh is None:
-        nodes = default_mesh(None if elements is None else SOLVER.option("elements").checked(elements), order)
+        nodes = default_mesh(None if elements is None else SOLVER.check_option("elements", elements), order)
         return _usable(nodes, "default mesh")
     nodes = meshes.read(mesh) if isinstance(mesh, (str, pathlib.PurePath)) else meshes.check(mesh, "mesh")
-    SOLVER.option("elements").checked(nodes.size - 1, lambda _: "mesh elements")
+    SOLVER.check_option("elements", nodes.size - 1, lambda _: "mesh elements")
     return _usable(nodes, "mesh" if not isinstance(mesh, (str, pathlib.PurePath)) else str(mesh))
 
 
 def _model(material, mesh, elements, order, penalty) -> Model:
-    order = SOLVER.option("order").checked(order)
+    order = SOLVER.check_option("order", order)
     return discretize(material, _nodes(mesh, elements, order), order, penalty)
 
 
 def _tolerances(tol) -> Tolerances:
-    tol = SOLVER.option("tol").checked(tol)
+    tol = SOLVER.check_option("tol", tol)
     return Tolerances(tol, tol)
 
 
@@ -118,7 +118,7 @@ def _contact(indenter, contact, penalty, augmented) -> tuple[str, float, bool]:
     """The contact method and, for the penalty method, its penalty and augmentation (checked), for the
     checked ``indenter``."""
     methods = formulation(CONTACTS, "fem", indenter)
-    contact = SOLVER.option("contact").checked(contact)
+    contact = SOLVER.check_option("contact", contact)
     if contact not in methods:
         raise InputError(f"contact = {contact!r} does not apply to the {indenter.kind} indenter (its methods: "
                          f"{', '.join(methods)})")
@@ -127,8 +127,8 @@ def _contact(indenter, contact, penalty, augmented) -> tuple[str, float, bool]:
             if value is not None:
                 raise InputError(f"{name} = {value!r} applies only to contact = 'penalty', not to contact = 'fitted'")
         return contact, DEFAULT_PENALTY, False
-    penalty = DEFAULT_PENALTY if penalty is None else SOLVER.option("penalty").checked(penalty)
-    augmented = True if augmented is None else SOLVER.option("augmented").checked(augmented)
+    penalty = DEFAULT_PENALTY if penalty is None else SOLVER.check_option("penalty", penalty)
+    augmented = True if augmented is None else SOLVER.check_option("augmented", augmented)
     return contact, penalty, augmented
 
 

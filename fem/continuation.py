@@ -46,11 +46,16 @@ def follow(
     or ``OutOfRangeError``; the error messages give a load as ``name = show(load)``.
     """
     s, ds = 0.0, min(first_step, max_step)
-    y, s_prev, y_prev = np.asarray(y0, dtype=float), None, None
+    y = np.asarray(y0, dtype=float)
+    previous: tuple[float, np.ndarray] | None = None  # the converged step before the last, (s, y)
     while s < 1.0:
         ds = min(ds, 1.0 - s)
         s_new = 1.0 if s + ds > 1.0 - 1e-12 else s + ds
-        guess = y if y_prev is None else y + ((s_new - s) / (s - s_prev)) * (y - y_prev)
+        if previous is None:
+            guess = y
+        else:
+            s_prev, y_prev = previous
+            guess = y + ((s_new - s) / (s - s_prev)) * (y - y_prev)
         load = stop if s_new == 1.0 else start + s_new * (stop - start)
         try:
             y_new, iterations = solve(load, guess)
@@ -69,7 +74,7 @@ def follow(
                 iterations=err.iterations,
                 residual=err.residual,
             ) from err
-        s_prev, y_prev, s, y = s, y, s_new, y_new
+        previous, s, y = (s, y), s_new, y_new
         yield load, y, iterations
         if iterations <= _EASY:
             ds = min(2.0 * ds, max_step)

@@ -72,7 +72,8 @@ def _next_fitted(model, history, fill, force, tol, unit):
 def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: Tolerances,
                  progress=None) -> list:
     """Compressed states (edge-fitted contact) at the forces Fhat, from the inflated unknowns y_i."""
-    p_i, states, history = inflated.pressure, [], []
+    p_i, states = inflated.pressure, []
+    history: list[tuple[float, np.ndarray]] = []  # (sqrt(force), unknowns) of the states solved
     for k, fhat in enumerate(forces):
         if fhat == 0.0:
             states.append(results.uncompressed(inflated, fill, FITTED))

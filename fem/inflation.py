@@ -55,7 +55,7 @@ P_START = 1e-3
 #: how far past the start volume (V/R^3 ~ 0.1 at Phat_0 = 1e-3) a pressure target is sought: a rubber
 #: without a pressure maximum reaches Phat = 2 at V/R^3 ~ 1.6e3 (alpha = 0.1), far past 1e3 times the start
 LOG_V_RANGE = np.log(1e6)
-_STEPS = dict(first_step=0.05, max_step=0.1)  # log V steps of 0.35 to 0.7
+_FIRST_STEP, _MAX_STEP = 0.05, 0.1  # log V steps of 0.35 to 0.7
 #: a step whose slope dP/dlog V is below this fraction of the step's before it is searched for a maximum
 #: inside it (a rubber without one flattens by a few per cent a step; at a maximum the slope goes to 0)
 FLATTENING = 0.25
@@ -132,7 +132,8 @@ def _states(along, y, log_v0):
     ``LOG_V_RANGE`` past it, with ``SUBSTEPS`` states more inside each step where the path flattens
     (module docstring)."""
     last: list[tuple[float, np.ndarray]] = [(log_v0, y)]
-    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)", **_STEPS):
+    for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)",
+                                       first_step=_FIRST_STEP, max_step=_MAX_STEP):
         if len(last) == 2:
             (s_a, y_a), (s_m, y_m) = last
             before, now = (y_m[-1] - y_a[-1]) / (s_m - s_a), (y[-1] - y_m[-1]) / (log_v - s_m)

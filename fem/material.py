@@ -94,6 +94,7 @@ class Law:
 
 def _mooney_rivlin(unit: Material) -> tuple[int, list]:
     alpha = unit.alpha  # the alpha it was given by, or C2/C1
+    assert alpha is not None, "a Mooney-Rivlin rubber has its alpha"
     return laws.MOONEY_RIVLIN, [1.0 / (6.0 * (1.0 + alpha)), alpha]
 
 

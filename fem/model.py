@@ -249,6 +249,7 @@ def linearize(model: Model, y: np.ndarray, mode: str, control: Control, multipli
     b, c = buffer("columns", (n, m)), buffer("rows", (m, n))  # B and C of the bordered system
     b[:, 0] = rp
     if control.pressure is None:
+        assert control.volume is not None, "a control prescribes the pressure or the volume"
         np.divide(rp, -control.volume, out=c[0])
     else:
         c[0] = 0.0

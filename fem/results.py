@@ -66,7 +66,7 @@ FORCE_FLOOR = 1e-12
 
 
 def _extra(model: Model, iterations: int, contact: str | None = None) -> dict:
-    out = dict(elements=model.elements, order=model.order, newton_iterations=int(iterations))
+    out: dict[str, int | str] = dict(elements=model.elements, order=model.order, newton_iterations=int(iterations))
     if contact is not None:
         out["contact"] = contact
     return out
@@ -78,7 +78,7 @@ def _fail(where: str, what: str):
 
 def _echo(model: Model, fill: Control | None = None) -> dict:
     """The inputs a state echoes as given: alpha, material and (compressed) the fluid and the indenter."""
-    out = dict(alpha=model.law.alpha, material=model.law.material)
+    out: dict[str, object] = dict(alpha=model.law.alpha, material=model.law.material)
     if fill is not None:
         out.update(fluid=_fluid(fill), indenter=fill.indenter)
     return out
@@ -99,11 +99,13 @@ def _least_tensions(linear, profile) -> dict:
 
 def _volume_target(fill: Control, pressure: float) -> float:
     """V_I, or V_I q(P) for a gas."""
+    assert fill.volume is not None, "a fill holds V_I"
     return fill.volume * (1.0 if fill.gas is None else fill.gas.ratio(pressure)[0])
 
 
 def _check_gas(fill: Control, state, where: str) -> None:
     if fill.gas is not None:
+        assert fill.volume is not None, "a fill holds V_I"
         error = fill.gas.residual(state.pressure, state.volume, fill.volume)
         if abs(error) > CONSISTENCY:
             _fail(where, f"the gas law (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma off by {error:.3g} (relative)")

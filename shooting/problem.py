@@ -52,7 +52,7 @@ from pocket.core.indenters import FLAT, Indenter, formulation
 from pocket.core.states import InflatedState
 
 from .integrator import OK, STATUS
-from .laws import Law, law_of
+from .laws import Law
 from .shots import Tolerance, shot_edge
 
 __all__ = ["Problem", "CONTACTS", "contact_of"]
@@ -61,20 +61,15 @@ __all__ = ["Problem", "CONTACTS", "contact_of"]
 @dataclasses.dataclass(frozen=True)
 class Problem:
     """The compression of ``inflated`` (its rubber, Phat_I) at ODE tolerance ``rtol``, with ``fluid``
-    sealed in it (ambient pressure as Phat_atm), by the flat plate ``indenter``. ``law`` defaults to the
-    inflated state's rubber."""
+    sealed in it (ambient pressure as Phat_atm), by the flat plate ``indenter``. ``law`` is the inflated
+    state's rubber (``pocket.shooting.laws.law_of``)."""
 
     inflated: InflatedState
     rtol: float
-    law: Law | None = None
+    law: Law
     fluid: Fluid = LIQUID
     indenter: Indenter = FLAT
     _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
-
-    def __post_init__(self):
-        if self.law is None:
-            given = self.inflated.alpha if self.inflated.alpha is not None else self.inflated.material
-            object.__setattr__(self, "law", law_of(given))
 
     @property
     def label(self) -> str:

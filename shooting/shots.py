@@ -130,7 +130,7 @@ def tension_minima(profile, steps, law, p, tol: Tolerance) -> tuple[float, float
     the vertex of the parabola through the smallest of them and its neighbours.
     ``steps`` are the integrator's (the profile's last ``len(steps)`` points), ``p`` its pressure."""
     offset = profile.r.size - steps.shape[0]
-    out = []
+    out: list[float] = []
     for tension in (profile.tension_1, profile.tension_2):
         i = int(np.argmin(tension))
         low = float(tension[i])

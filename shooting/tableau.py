@@ -13,7 +13,7 @@ __all__ = ["N_STAGES", "A", "B", "C", "E3", "E5"]
 
 N_STAGES = 12
 
-_ROWS = (
+_ROWS: tuple[list[float], ...] = (
     [],
     [
         0.05260015195876773,

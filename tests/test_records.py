@@ -135,3 +135,20 @@ def test_entry_refuses_in_one_line_and_knows_every_entry_point():
     with pytest.raises(ValueError, match="inflate_pressure"):
         dataclasses.replace(TOY, entry_points=("inflate_pressure",))
     assert set(ENTRY_POINTS) >= {name for s in SOLVERS.values() for name in s.entry_points}
+
+
+def test_check_option_checks_by_the_record_and_refuses_an_undeclared_option():
+    """``Solver.check_option`` is the record's own ``Option.checked`` (same value, same one-line error);
+    an option the record does not declare is a bug of the solver (ValueError), not a user's error."""
+    fem = SOLVERS["fem"]
+    option = fem.option("order")
+    assert option is not None
+    for value in (1, 2):
+        assert fem.check_option("order", value) == option.checked(value)
+    with pytest.raises(InputError) as expected:
+        option.checked(0, lambda _: "mesh order")
+    with pytest.raises(InputError) as got:
+        fem.check_option("order", 0, lambda _: "mesh order")
+    assert str(got.value) == str(expected.value)
+    with pytest.raises(ValueError, match="solver toy declares no option 'tol'"):
+        TOY.check_option("tol", 1e-8)

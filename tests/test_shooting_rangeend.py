@@ -8,6 +8,7 @@ import types
 import numpy as np
 import pytest
 from pocket.shooting import rangeend
+from pocket.shooting.laws import law_of
 from pocket.shooting.problem import Problem
 
 from pocket import shooting
@@ -96,7 +97,7 @@ def test_a_fold_ends_the_range_of_a_softening_rubber():
     carries less force, forces up to it solve on its rising side, forces above it do not."""
     alpha, pressure = -0.5, 0.1
     end = shooting.range_end(alpha, pressure)
-    problem = Problem(shooting.inflate(alpha, pressure), 1e-10)
+    problem = Problem(shooting.inflate(alpha, pressure), 1e-10, law_of(alpha))
     info = rangeend.end_of(problem)
     assert info.fold and info.angle < math.pi and info.force == end
     for dtheta in (-1e-3, 1e-3):

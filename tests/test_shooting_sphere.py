@@ -22,6 +22,7 @@ import math
 
 import numpy as np
 import pytest
+from pocket.shooting.laws import law_of
 from pocket.shooting.problem import contact_of
 from pocket.shooting.sphere import EQUATOR, POLE, TOUCH
 from scipy.integrate import simpson
@@ -163,7 +164,8 @@ def test_range_ends_are_named_with_their_force(radius, reason):
 
 def test_a_state_with_negative_contact_pressure_or_penetration_is_refused_by_name():
     state = shooting.compress(ALPHA, PHAT, 0.5, indenter=sphere(1.0))
-    problem = contact_of(state.indenter)(state.inflated, 1e-10, None, state.fluid, state.indenter)
+    problem = contact_of(state.indenter)(state.inflated, 1e-10, law_of(state.material), state.fluid,
+                                         state.indenter)
     profile = state.profile
     problem.check(profile, state.contact_pressure, state.height, 0.5)  # the solver's own state passes
     with pytest.raises(OutOfRangeError, match="contact pressure would be negative"):

@@ -62,8 +62,8 @@ def test_smallest_tensions_are_refined_between_steps(rubber):
     from pocket.shooting.tensions import tensions
 
     state = shooting.compress(rubber, 0.31, 3.0)
-    problem = Problem(state.inflated, 1e-10)
     law = law_of(rubber)
+    problem = Problem(state.inflated, 1e-10, law)
     x = [state.pressure_ratio, (state.stretch_contact - 1) / problem.strain]
     _, lc, a, p = problem.geometry(x, state.force)
     from pocket.shooting.integrator import OK, integrate
@@ -89,6 +89,6 @@ def test_a_slack_shot_is_a_status_not_a_state():
 
     status, r, y, _ = integrate(edge_state(1.5, 0.3), 0.3, law_of(-0.5), 0.3, rtol=1e-10)
     assert status == SLACK and r < 1.0 and np.all(np.isfinite(y))
-    problem = Problem(shooting.inflate(-0.5, 0.1), 1e-10)
+    problem = Problem(shooting.inflate(-0.5, 0.1), 1e-10, law_of(-0.5))
     assert problem.residual(np.array([1.0, (1.5 - 1) / problem.strain]), 0.01) is None
     assert "tension vanished" in problem.failure()

@@ -76,7 +76,9 @@ try:
     )
     from numba.core.runtime import rtsys
 except ImportError:  # a numba without these internals: no on-disk cache (module docstring)
-    FunctionCache = None
+    _DISK_CACHE = False
+else:
+    _DISK_CACHE = True
 
 __all__ = ["CACHE_ENV", "cache_roots", "compiled", "private_cache_root"]
 
@@ -131,7 +133,7 @@ def _check_private(root: str) -> None:
         raise PermissionError(f"{root} is not a private folder of this user")
 
 
-if FunctionCache is not None:
+if _DISK_CACHE:
 
     class _Locator(_SourceFileBackedLocatorMixin, _CacheLocator):
         """The first usable folder of ``cache_roots``, in a subfolder for pocket's version and the source's folder."""
@@ -165,7 +167,9 @@ if FunctionCache is not None:
             return None
 
     class _Impl(CompileResultCacheImpl):
-        _locator_classes = [_Locator]
+        # mypy infers numba's list as constructors taking (py_func, py_file), the signature of its own
+        # locators; numba only calls their from_function(py_func, py_file), which _Locator has
+        _locator_classes = [_Locator]  # type: ignore[list-item]
 
     class _Cache(FunctionCache):
         """numba's function cache, where an entry that cannot be loaded or saved is a cache miss."""
@@ -223,7 +227,7 @@ def compiled(function=None, **options):
     if function is None:
         return functools.partial(compiled, **options)
     dispatcher = _checking_interrupts(njit(function, error_model="numpy", **options))
-    if FunctionCache is None:
+    if not _DISK_CACHE:
         return dispatcher
     try:
         dispatcher._cache = _Cache(function)  # what njit(cache=True) does, with the cache above

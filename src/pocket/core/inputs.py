@@ -54,7 +54,8 @@ def quote(value) -> str:
     if isinstance(value, bool) or value is None:
         return repr(value)
     if isinstance(value, numbers.Integral):
-        return str(int(value)) if abs(value) < 10**30 else _QUOTE.repr(int(value))
+        whole = int(value)
+        return str(whole) if abs(whole) < 10**30 else _QUOTE.repr(whole)
     if isinstance(value, numbers.Real):
         return repr(float(value))
     return " ".join(_QUOTE.repr(value).split())

@@ -192,6 +192,10 @@ def _yeoh_energy(p, l1, l2, l3, i1, i2):
     return p["c10"] * x + p["c20"] * x**2 + p["c30"] * x**3
 
 
+# a parameter's value: a float, or a tuple of floats for a listed parameter (Ogden's mu and exponents)
+ParamValue = float | tuple[float, ...]
+
+
 def _ogden_energy(p, l1, l2, l3, i1, i2):
     return sum(m / a * (l1**a + l2**a + l3**a - 3.0) for m, a in zip(p["mu"], p["exponents"], strict=True))
 
@@ -211,7 +215,7 @@ class Material:
     """
 
     law: str
-    params: tuple[tuple[str, object], ...]
+    params: tuple[tuple[str, ParamValue], ...]
     exact_alpha: float | None = dataclasses.field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
@@ -252,7 +256,7 @@ class Material:
         """The same law with its stresses in units of mu_0 (so that mu_0 = 1)."""
         mu0 = self.mu0
         stresses = self.definition.stresses
-        out = []
+        out: list[tuple[str, ParamValue]] = []
         for name, value in self.params:
             if name in stresses:
                 value = tuple(v / mu0 for v in value) if isinstance(value, tuple) else value / mu0
@@ -261,7 +265,7 @@ class Material:
 
     def describe(self) -> dict:
         """The law and its parameters as a flat JSON-ready dict."""
-        out = {"material": self.law}
+        out: dict[str, str | float | list[float]] = {"material": self.law}
         for name, value in self.params:
             out[name] = list(value) if isinstance(value, tuple) else value
         return out
@@ -319,7 +323,7 @@ def check(law, params: dict, where: str = "sheet") -> Material:
     missing = [n for n in names if n not in params]
     if missing:
         raise InputError(f"{where}.{missing[0]} is missing: the {law} law needs {', '.join(names)}")
-    values = {}
+    values: dict[str, ParamValue] = {}
     for q in definition.parameters:
         value = params[q.name]
         if q.listed:

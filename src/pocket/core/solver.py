@@ -129,6 +129,14 @@ class Solver:
         """The option ``name``, or None if this solver does not take it."""
         return next((o for o in self.options if o.name == name), None)
 
+    def check_option(self, name: str, value, spell: Callable[[str], str] = str):
+        """``value`` checked by this solver's option ``name`` (``Option.checked``). A ValueError if the record
+        does not declare ``name``: a solver checking an option its own record lacks is a defect of the solver."""
+        option = self.option(name)
+        if option is None:
+            raise ValueError(f"solver {self.name} declares no option {name!r}")
+        return option.checked(value, spell)
+
     def checked(self, given: dict, step: str, spell: Callable[[str], str] = str) -> dict:
         """The options ``given`` (name -> value) checked for ``step`` ("inflate" or "compress").
 

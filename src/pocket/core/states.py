@@ -110,6 +110,10 @@ def _scalars(state, keys, extra, described) -> dict:
 class _Membrane:
     """What both states share: defaults filled in on creation, and the wrinkling flag."""
 
+    # fields of both states (declared here for the type checker; each state's dataclass defines them)
+    tension_1_min: float
+    tension_2_min: float
+
     def __post_init__(self):
         _complete(self)
 
@@ -140,7 +144,7 @@ class InflatedState(_Membrane):
     stretch_clamp: float
     profile: Profile | None
     solver: str
-    extra: Mapping[str, float] = dataclasses.field(default_factory=dict)
+    extra: Mapping[str, float | str] = dataclasses.field(default_factory=dict)
     warnings: tuple[str, ...] = ()
     material: Material | None = None
     tension_1_min: float = math.nan
@@ -151,6 +155,7 @@ class InflatedState(_Membrane):
     def scalars(self) -> dict:
         """The reported quantities as a flat dict (JSON-ready): KEYS (``alpha`` only for Mooney-Rivlin),
         CHECKS, the material's law and parameters, then ``extra`` and the solver."""
+        assert self.material is not None, "filled in on creation"
         return _scalars(self, self.KEYS, self.extra, self.material.describe())
 
 
@@ -185,7 +190,7 @@ class CompressedState(_Membrane):
     profile: Profile | None
     inflated: InflatedState
     solver: str
-    extra: Mapping[str, float] = dataclasses.field(default_factory=dict)
+    extra: Mapping[str, float | str] = dataclasses.field(default_factory=dict)
     warnings: tuple[str, ...] = ()
     material: Material | None = None
     fluid: Fluid = LIQUID
@@ -218,4 +223,5 @@ class CompressedState(_Membrane):
         """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars`` with the
         ``CONTACT_KEYS`` a solver gave, and the fluid."""
         keys = self.KEYS + tuple(k for k in self.CONTACT_KEYS if math.isfinite(getattr(self, k)))
+        assert self.material is not None, "filled in on creation"
         return _scalars(self, keys, self.extra, {**self.material.describe(), **self.fluid.describe()})
