@@ -68,6 +68,7 @@ from .gas import Gas
 from .geometry import Placement, contact_elements, place
 from .material import Law, law_of
 from .reference import Reference, reference
+from .surfaces import Surface
 
 __all__ = ["FREE", "PENALTY", "FITTED", "WRAPPED", "Control", "Model", "discretize", "placement", "fields", "forms",
            "split", "conform", "residual", "linearize", "plate_force", "edge"]
@@ -112,7 +113,7 @@ class Model:
     xi: np.ndarray
     ref: Reference
     penalty: float
-    obstacle: object = None
+    obstacle: Surface | None = None
     workspace: dict = dataclasses.field(default_factory=dict, repr=False)
 
     @property

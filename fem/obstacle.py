@@ -148,6 +148,7 @@ def zone(model: Model, place: Placement, s_nodes: np.ndarray, pressure: float, s
 def _free_rate(model: Model, place: Placement, u_free: np.ndarray, pressure: float) -> np.ndarray:
     """dR/da of the free part (its dofs), from ``kernel``'s formula with V = (1 - r)/(1 - a), V' = -1/(1 - a)."""
     ref, a = model.ref, place.a
+    assert a is not None, "a WRAPPED placement has its contact edge"
     w = kernel.fields(ref, place, u_free, pressure)
     w1, w2, w11, w12, w22 = model.law.derivatives(w.l1, w.l2)
     velocity, rate = (1.0 - w.r) / (1.0 - a), -1.0 / (1.0 - a)
@@ -209,7 +210,9 @@ def forms(model: Model, y: np.ndarray, surf: Surface, tangent: bool = False) -> 
         out[2 * E:] += free_part
         out[2 * E] += g * free_part[1]
         assembled.append(out)
-    return Forms(zn, free, rate, *assembled, zn.volume + free.volume, g, float(surf.second(y[2 * E])))
+    residual, pressure_rate, radius_rate = assembled
+    return Forms(zn, free, rate, residual, pressure_rate, radius_rate, zn.volume + free.volume, g,
+                 float(surf.second(y[2 * E])))
 
 
 def _ratio(control: Control, pressure: float) -> tuple[float, float]:
@@ -222,6 +225,7 @@ def _border(model: Model, y: np.ndarray, control: Control, f: Forms) -> np.ndarr
     n, E = model.dofs, model.order * contact_elements(model.elements)
     pressure, rho_e = y[n], y[2 * E]
     fr, fe = f.free.residual[0], f.free.residual[1]
+    assert control.volume is not None, "a compression holds its fluid's volume"
     rows = [f.volume / control.volume - _ratio(control, pressure)[0],
             (fe - f.slope * fr + np.pi * pressure * rho_e**2) / control.scale]
     if control.height is not None:

@@ -129,7 +129,8 @@ def curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: T
     """Compressed states under the curved indenter of ``fill`` at the forces Fhat, from the inflated
     unknowns y_i (``curves.fitted_curve``'s rules, the smallest force included)."""
     unit = np.pi * inflated.pressure
-    states, history = [], []
+    states: list = []
+    history: list[tuple[float, np.ndarray]] = []
     for k, fhat in enumerate(forces):
         if fhat == 0.0:
             states.append(results.uncompressed(inflated, fill, "fitted"))

@@ -68,7 +68,13 @@ def _edge_pressure(model: Model, y: np.ndarray, surf, pressure: float) -> float:
 
 def _stored_energy(model: Model, y: np.ndarray, zn, surf) -> float:
     """U = 2 pi int w r dr (units E T R^2): the zone's points (``zn``) and the free part's (``model.fields``)."""
-    material = (model.law.material or mooney_rivlin(model.law.alpha)).scaled()  # stresses in mu_0 = E / 3
+    law = model.law
+    if law.material is None:  # a rubber given by its alpha alone
+        assert law.alpha is not None, "a law is given by a Material or by alpha"
+        given = mooney_rivlin(law.alpha)
+    else:
+        given = law.material
+    material = given.scaled()  # stresses in mu_0 = E / 3
     k = contact_elements(model.elements)
     stretch = zn.drho * np.sqrt(1.0 + surf.slope(zn.rho) ** 2)
     inside = np.sum(zn.measure * zn.r * energy(material, stretch, zn.rho / zn.r))
@@ -86,7 +92,7 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
     rho_c = float(y[e])
     f = forms(model, y, surf)
     unit = np.pi * p_i
-    g = float(surf.slope(rho_c))
+    g = float(surf.slope(np.array(rho_c)))
     c = np.sqrt(1.0 + g * g)
     ring = (f.zone.residual[-1] - np.pi * pressure * rho_c**2 * g) / c  # 2 pi rho_c T_1
     zn = zone(model, placement(model, y, WRAPPED), y[0: e + 1: 2], pressure, surf, tangent=False)

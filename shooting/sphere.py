@@ -95,7 +95,7 @@ class SphereProblem(Problem):
     @property
     def radius(self) -> float:
         """K = R_s / R."""
-        return dict(self.indenter.params)["radius"]
+        return self.indenter.number("radius")
 
     def _pole(self, lc):
         """(t_0, contact start pressure -2 t_0 / K) at pole stretch ``lc`` (kernel units)."""

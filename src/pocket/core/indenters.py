@@ -48,6 +48,9 @@ from .errors import InputError
 from .inputs import check_finite, quote
 from .profiles import Shape
 
+#: a kind's parameters by name: numbers (lengths in units of R), or a ``Shape`` for those in its ``shapes``
+Params = Mapping[str, "float | Shape"]
+
 __all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "sphere", "profile"]
 
 T = TypeVar("T")
@@ -66,11 +69,11 @@ class Kind:
     name: str
     summary: str
     parameters: tuple[str, ...]
-    profile: Callable[[Mapping[str, float], np.ndarray], np.ndarray]
+    profile: Callable[[Params, np.ndarray], np.ndarray]
     pressure_area: bool
-    slope: Callable[[Mapping[str, float], np.ndarray], np.ndarray] | None = None
-    second: Callable[[Mapping[str, float], np.ndarray], np.ndarray] | None = None
-    check: Callable[[Mapping[str, float]], None] | None = None
+    slope: Callable[[Params, np.ndarray], np.ndarray] | None = None
+    second: Callable[[Params, np.ndarray], np.ndarray] | None = None
+    check: Callable[[Params], None] | None = None
     shapes: tuple[str, ...] = ()  # the parameters that are a ``pocket.core.profiles.Shape``, not a float
 
 
@@ -94,7 +97,7 @@ class Indenter:
     parameter or a value that is not a finite number is an ``InputError`` naming it."""
 
     kind: str
-    params: tuple[tuple[str, float], ...] = ()
+    params: tuple[tuple[str, float | Shape], ...] = ()
 
     def __post_init__(self):
         if self.kind not in KINDS:
@@ -114,6 +117,10 @@ class Indenter:
     def definition(self) -> Kind:
         """The registered ``Kind``."""
         return KINDS[self.kind]
+
+    def number(self, name: str) -> float:
+        """The numeric parameter ``name`` (a length in units of R); an InputError if it is a shape."""
+        return _number(dict(self.params), name)
 
     @property
     def pressure_area(self) -> bool:
@@ -142,7 +149,7 @@ class Indenter:
         return fn(dict(self.params), rho) / (1.0 + self.slope(rho) ** 2) ** 1.5
 
 
-def _flat(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+def _flat(params: Params, rho: np.ndarray) -> np.ndarray:
     """The flat plate: z = 0 everywhere."""
     return np.zeros_like(rho)
 
@@ -150,52 +157,68 @@ def _flat(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
 register(Kind("flat", "a flat plate, wider than the pocket", (), _flat, pressure_area=True))
 
 
-def _root(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+def _number(params: Params, name: str) -> float:
+    """The number ``params[name]``; an InputError if a shape stands there instead."""
+    value = params[name]
+    if isinstance(value, Shape):
+        raise InputError(f"indenter.{name} is a profile, but it must be a number")
+    return value
+
+
+def _root(params: Params, rho: np.ndarray) -> np.ndarray:
     """sqrt(R_s^2 - rho^2), NaN past the equator rho > R_s (no warning)."""
-    inside = np.square(params["radius"]) - np.square(rho)
+    inside = np.square(_number(params, "radius")) - np.square(rho)
     with np.errstate(invalid="ignore"):
         return np.where(inside >= 0.0, np.sqrt(np.maximum(inside, 0.0)), np.nan)
 
 
-def _sphere(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+def _sphere(params: Params, rho: np.ndarray) -> np.ndarray:
     """The lower cap of a sphere of radius R_s: z = R_s - sqrt(R_s^2 - rho^2)."""
-    return params["radius"] - _root(params, rho)
+    return _number(params, "radius") - _root(params, rho)
 
 
-def _sphere_slope(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+def _sphere_slope(params: Params, rho: np.ndarray) -> np.ndarray:
     """dz/drho = rho / sqrt(R_s^2 - rho^2) (infinite at the equator)."""
     with np.errstate(divide="ignore"):
         return rho / _root(params, rho)
 
 
-def _sphere_second(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+def _sphere_second(params: Params, rho: np.ndarray) -> np.ndarray:
     """d2z/drho2 = R_s^2 / (R_s^2 - rho^2)^(3/2), so that the curvature is 1/R_s."""
     with np.errstate(divide="ignore"):
-        return np.square(params["radius"]) / _root(params, rho) ** 3
+        return np.square(_number(params, "radius")) / _root(params, rho) ** 3
 
 
-def _sphere_check(params: Mapping[str, float]) -> None:
-    if not params["radius"] > 0.0:
-        raise InputError(f"indenter.radius = {params['radius']:g}, but a sphere's radius must be positive")
+def _sphere_check(params: Params) -> None:
+    radius = _number(params, "radius")
+    if not radius > 0.0:
+        raise InputError(f"indenter.radius = {radius:g}, but a sphere's radius must be positive")
 
 
 register(Kind("sphere", "a sphere of radius R_s (a fingertip), its lowest point on the axis", ("radius",), _sphere,
               pressure_area=False, slope=_sphere_slope, second=_sphere_second, check=_sphere_check))
 
-def _profile(params: Mapping[str, float], rho: np.ndarray) -> np.ndarray:
+def _profile(params: Params, rho: np.ndarray) -> np.ndarray:
     """A user's profile: its shape's z(rho)."""
-    return params["shape"].height(rho)
+    return _shape(params).height(rho)
 
 
-def _profile_check(params: Mapping[str, float]) -> None:
-    if not isinstance(params["shape"], Shape):
-        raise InputError(f"indenter.shape = {quote(params['shape'])}, but it must be a profile "
+def _shape(params: Params) -> Shape:
+    """The profile ``params["shape"]``; an InputError if something else stands there."""
+    value = params["shape"]
+    if not isinstance(value, Shape):
+        raise InputError(f"indenter.shape = {quote(value)}, but it must be a profile "
                          "(pocket.core.profiles: table, functions or read_csv)")
+    return value
+
+
+def _profile_check(params: Params) -> None:
+    _shape(params)
 
 
 register(Kind("profile", "a user's convex profile z(rho), flat on the axis (a table or functions)", ("shape",),
-              _profile, pressure_area=False, slope=lambda params, rho: params["shape"].slope(rho),
-              second=lambda params, rho: params["shape"].second(rho), check=_profile_check, shapes=("shape",)))
+              _profile, pressure_area=False, slope=lambda params, rho: _shape(params).slope(rho),
+              second=lambda params, rho: _shape(params).second(rho), check=_profile_check, shapes=("shape",)))
 
 #: the flat plate (every solver's default)
 FLAT = Indenter("flat")
