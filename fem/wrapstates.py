@@ -3,8 +3,12 @@ r"""The compressed state under a curved indenter (``obstacle``), built from conv
 Reported as for the flat plate (``results``), with on a curved indenter: ``contact_area`` the
 CURVED area in contact over pi R^2 (``surfaces``: 2 R_s z(rho_c) / R^2 on a sphere),
 ``contact_radius`` = a (Lagrangian), ``stretch_contact`` the pole stretch (the zone is not
-uniform), ``height`` = h, the indenter's lowest point. In ``extra`` (forces as Fhat, pressures
-in Phat units):
+uniform), ``height`` = h, the indenter's lowest point; as the shooting solver's states (units Phat,
+R): ``contact_pressure_pole`` = P + 2 kappa(0) T_0 (T_0 = w_1(l0, l0) / l0 at the pole),
+``contact_pressure_edge`` p_c at the edge from the zone's last element, ``contact_radius_deformed``
+rho_c = rho(a), and ``contact_pressure`` p_c = P + kappa_1 T_1 + kappa_2 T_2 at each profile node in
+contact (the edge node's value the edge's, NaN off the contact zone). In ``extra`` (forces as Fhat,
+pressures in Phat units):
 
 - ``force_reaction``: the indenter's reaction -R^f_eta at the edge (the force it carries);
 - ``force_cap``: the contact cap as a free body, P pi rho_c^2 + 2 pi rho_c T_1 sin(theta_c),
@@ -13,10 +17,7 @@ in Phat units):
 - ``force_contact_pressure``: the integral of p_c over the contact area,
   int_0^{rho_c} p_c 2 pi rho d rho, p_c = P + kappa_1 T_1 + kappa_2 T_2 at the zone's quadrature points;
 - ``force_difference``: force_cap - force_contact_pressure (the discretisation error of the balance);
-- ``contact_pressure_pole``: P + 2 kappa(0) T_0 (T_0 = w_1(l0, l0) / l0 at the pole);
-- ``contact_pressure_edge``: p_c at the edge, from the zone's last element;
 - ``contact_pressure_min``: the least p_c at the zone's quadrature points;
-- ``contact_radius_deformed``: rho_c = rho(a);
 - ``penetration``: max(eta - h - z(rho)) over the free part's nodes under the surface (0 or round-off);
 - ``energy``: the stored elastic energy U = 2 pi int w(l1, l2) r dr (units E T R^2, the rubber's W / E
   by the same quadrature as the solver's), whose slope along the indenter's travel is the force:
@@ -66,6 +67,18 @@ def _edge_pressure(model: Model, y: np.ndarray, surf, pressure: float) -> float:
     return float(pressure + k1 * t1[0] + k2 * t2[0])
 
 
+def _nodal_pressure(profile, surf, pressure: float, edge: float) -> np.ndarray:
+    """p_c = P + kappa_1 T_1 + kappa_2 T_2 (units Phat) at each node of ``profile`` in contact, shape (n,),
+    NaN off the contact zone; at the edge node the one-sided ``edge`` value (the node's averaged slope
+    straddles the kink of the meridian there)."""
+    on = profile.contact
+    k1, k2 = surf.curvatures(profile.rho[on])
+    out = np.full(profile.r.shape, np.nan)
+    out[on] = pressure + k1 * profile.tension_1[on] + k2 * profile.tension_2[on]
+    out[np.flatnonzero(on)[-1]] = edge
+    return out
+
+
 def _stored_energy(model: Model, y: np.ndarray, zn, surf) -> float:
     """U = 2 pi int w r dr (units E T R^2): the zone's points (``zn``) and the free part's (``model.fields``)."""
     material = (model.law.material or mooney_rivlin(model.law.alpha)).scaled()  # stresses in mu_0 = E / 3
@@ -100,14 +113,13 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
     extra = _extra(model, iterations, "fitted")
     extra.update(force_reaction=-float(f.free.residual[1]) / unit, force_cap=cap / unit,
                  force_contact_pressure=integral / unit, force_difference=(cap - integral) / unit,
-                 contact_pressure_pole=pressure + 2.0 * float(surf.curvatures(np.array([0.0]))[0][0]) * t0,
-                 contact_pressure_edge=_edge_pressure(model, y, surf, pressure),
-                 contact_pressure_min=float(pc.min()), contact_radius_deformed=rho_c,
+                 contact_pressure_min=float(pc.min()),
                  penetration=max(0.0, float((free_eta[under] - h - surf.height(free_rho[under])).max())),
                  energy=_stored_energy(model, y, zn, surf))
     rows = post.reaction(model, y, WRAPPED)
     clamp = post.clamp_stretch(model, y, WRAPPED, rows)
     profile = post.profile(model, y, WRAPPED, pole=pole, clamp=clamp, contact_radius=a)
+    edge = _edge_pressure(model, y, surf, pressure)
     tensions = _least_tensions(f.free, profile)
     tensions = dict(tension_1_min=min(tensions["tension_1_min"], float(zn.tension_1.min())),
                     tension_2_min=min(tensions["tension_2_min"], float(zn.tension_2.min())))
@@ -115,7 +127,9 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
         **_echo(model, fill), pressure_initial=p_i, force=force, pressure=pressure, pressure_ratio=pressure / p_i,
         contact_area=surf.area(rho_c) / np.pi, contact_radius=a, stretch_contact=pole, height=h,
         height_ratio=h / inflated.height, volume=f.volume, profile=profile, inflated=inflated, solver="fem",
-        extra=extra, **tensions,
+        extra=extra, **tensions, contact_radius_deformed=rho_c,
+        contact_pressure_pole=pressure + 2.0 * float(surf.curvatures(np.array([0.0]))[0][0]) * t0,
+        contact_pressure_edge=edge, contact_pressure=_nodal_pressure(profile, surf, pressure, edge),
     )
     where = f"at Fhat = {force!r} under the {fill.indenter.kind}"
     _check_common(model, y, WRAPPED, out, where, _volume_target(fill, pressure))
