@@ -53,15 +53,28 @@ from .surfaces import surface
 
 __all__ = ["state"]
 
+#: the most Newton steps solving T_1(lambda_1, lambda_2) for lambda_1 at the edge (quadratic from a close start)
+EDGE_NEWTON = 8
 
-def _edge_pressure(model: Model, y: np.ndarray, surf, pressure: float) -> float:
-    """p_c at the edge: the zone's last element evaluated at its end (O(h^p), a point value)."""
+
+def _edge_pressure(model: Model, y: np.ndarray, surf, pressure: float, flux: float) -> float:
+    """p_c at the edge (units Phat) from the zone's flux there, ``flux`` = 2 pi rho_c T_1 (converging as the
+    reaction does, faster than a slope): T_1 = flux / (2 pi rho_c) and lambda_2 = rho_c / a fix lambda_1
+    (Newton from the zone's last element's one-sided slope), hence T_2."""
     p, k = model.order, contact_elements(model.elements)
     nodes = y[0: 2 * p * k + 1: 2][-(p + 1):]
     place = placement(model, y, WRAPPED)
     slope = (nodes[1] - nodes[0]) if p == 1 else (nodes[0] - 4 * nodes[1] + 3 * nodes[2])
     s, g = nodes[-1], surf.slope(nodes[-1])
     l1, l2 = slope / place.lengths[k - 1] * np.sqrt(1 + g * g), s / place.vertices[k]
+    target = flux / (2.0 * np.pi * s)
+    for _ in range(EDGE_NEWTON):
+        d = 1e-7 * l1
+        low, high = (model.law.tensions(np.array([l1 + e]), np.array([l2]))[0][0] for e in (-d, d))
+        step = (model.law.tensions(np.array([l1]), np.array([l2]))[0][0] - target) * 2 * d / (high - low)
+        l1 -= step
+        if abs(step) <= 1e-15 * l1:
+            break
     t1, t2 = model.law.tensions(np.array([l1]), np.array([l2]))
     k1, k2 = surf.curvatures(s)
     return float(pressure + k1 * t1[0] + k2 * t2[0])
@@ -119,7 +132,7 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
     rows = post.reaction(model, y, WRAPPED)
     clamp = post.clamp_stretch(model, y, WRAPPED, rows)
     profile = post.profile(model, y, WRAPPED, pole=pole, clamp=clamp, contact_radius=a)
-    edge = _edge_pressure(model, y, surf, pressure)
+    edge = _edge_pressure(model, y, surf, pressure, float(ring))
     tensions = _least_tensions(f.free, profile)
     tensions = dict(tension_1_min=min(tensions["tension_1_min"], float(zn.tension_1.min())),
                     tension_2_min=min(tensions["tension_2_min"], float(zn.tension_2.min())))
