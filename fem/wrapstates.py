@@ -5,10 +5,10 @@ CURVED area in contact over pi R^2 (``surfaces``: 2 R_s z(rho_c) / R^2 on a sphe
 ``contact_radius`` = a (Lagrangian), ``stretch_contact`` the pole stretch (the zone is not
 uniform), ``height`` = h, the indenter's lowest point; as the shooting solver's states (units Phat,
 R): ``contact_pressure_pole`` = P + 2 kappa(0) T_0 (T_0 = w_1(l0, l0) / l0 at the pole),
-``contact_pressure_edge`` p_c at the edge from the zone's last element, ``contact_radius_deformed``
-rho_c = rho(a), and ``contact_pressure`` p_c = P + kappa_1 T_1 + kappa_2 T_2 at each profile node in
-contact (the edge node's value the edge's, NaN off the contact zone). In ``extra`` (forces as Fhat,
-pressures in Phat units):
+``contact_pressure_edge`` p_c at the edge (T_1 there from the zone's flux, ``_edge_pressure``),
+``contact_radius_deformed`` rho_c = rho(a), and ``contact_pressure`` p_c = P + kappa_1 T_1 + kappa_2 T_2
+at each profile node in contact (the edge node's value the edge's, NaN off the contact zone). In
+``extra`` (forces as Fhat, pressures in Phat units):
 
 - ``force_reaction``: the indenter's reaction -R^f_eta at the edge (the force it carries);
 - ``force_cap``: the contact cap as a free body, P pi rho_c^2 + 2 pi rho_c T_1 sin(theta_c),
