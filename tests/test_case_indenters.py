@@ -1,7 +1,8 @@
 """The ``[indenter]`` table of a case file: the flat plate by default and end to end with ``pocket run`` (its
 contact pressure the pressure P at pole and edge, every other key as without the table), a sphere's radius
 and a profile's file made dimensionless by the clamp radius, and every bad table one line, exit 2, before any
-solving. A sphere is carried to the solver, which refuses it in one line until it poses it."""
+solving. A sphere runs end to end in both numerical solvers (its contact pressure above P, its curved contact
+area); the analytical model, which does not pose it, refuses it in one line."""
 
 import json
 import math
@@ -10,6 +11,7 @@ import pathlib
 import numpy as np
 import pytest
 
+from pocket import fem, shooting
 from pocket.apps import casefile
 from pocket.apps.cases import load
 from pocket.cli import main
@@ -109,11 +111,36 @@ def test_a_plate_table_runs_end_to_end_with_the_contact_pressure_p(tmp_path, cap
     assert after["case"]["given"]["indenter.shape"] == "plate"
 
 
-def test_a_sphere_reaches_the_solver_which_refuses_it_in_one_line(tmp_path, capsys):
-    path = _case(tmp_path, '[indenter]\nshape = "sphere"\nradius = "8 mm"\n')
+@pytest.mark.parametrize("solver", ["shooting", "fem"])
+def test_a_sphere_runs_end_to_end_with_its_contact_pressure_and_curved_area(tmp_path, solver):
+    """A sphere of 8 mm on the 20 mm pocket: each compressed row carries the solver's contact pressure at the
+    pole and the edge times the pressure scale E T / R (above P), and the curved area of the spherical cap in
+    contact, 2 pi R_s (R_s - sqrt(R_s^2 - rho_c^2)) with rho_c the solver's deformed contact radius."""
+    path = _case(tmp_path, f'[indenter]\nshape = "sphere"\nradius = "8 mm"\n[solver]\nname = "{solver}"\n')
+    assert main(["run", str(path), "--out", str(tmp_path)]) == 0
+    rows = json.loads((tmp_path / "case.json").read_text())["states"]
+    modulus, thickness, clamp, radius = 1e6, 0.25e-3, 0.020, 0.008  # the case's values, SI
+    scale = modulus * thickness / clamp  # Pa per unit Phat
+    solve = {"shooting": shooting.compress, "fem": fem.compress}[solver]
+    pressed = [row for row in rows if row["force"] > 0.0]
+    assert pressed
+    for row in pressed:
+        state = solve(row["alpha"], row["pressure_initial"], row["force"], indenter=sphere(radius / clamp))
+        assert row["contact_pressure_pole_Pa"] == pytest.approx(state.contact_pressure_pole * scale, rel=1e-12)
+        assert row["contact_pressure_edge_Pa"] == pytest.approx(state.contact_pressure_edge * scale, rel=1e-12)
+        assert row["contact_pressure_pole_Pa"] > row["contact_pressure_edge_Pa"] > row["pressure_Pa"]
+        rho_c = state.contact_radius_deformed * clamp
+        cap = 2 * math.pi * radius * (radius - math.sqrt(radius**2 - rho_c**2))
+        assert row["contact_area_m2"] == pytest.approx(cap, rel=1e-12)
+        assert row["contact_area_m2"] > math.pi * rho_c**2  # curved, not its flat projection
+        assert row["contact_radius_m"] == pytest.approx(state.contact_radius * clamp, rel=1e-12)
+
+
+def test_a_sphere_reaches_the_analytical_solver_which_refuses_it_in_one_line(tmp_path, capsys):
+    path = _case(tmp_path, '[indenter]\nshape = "sphere"\nradius = "8 mm"\n[solver]\nname = "analytical"\n')
     assert main(["run", str(path), "--out", str(tmp_path)]) == 2
     err = capsys.readouterr().err
-    assert "does not implement the sphere indenter" in err and err.count("\n") == 1
+    assert "solver analytical does not implement the sphere indenter" in err and err.count("\n") == 1
     assert not list(tmp_path.glob("case.*json")) and not list(tmp_path.glob("case.csv"))
 
 

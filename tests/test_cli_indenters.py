@@ -1,6 +1,7 @@
 """The indenter flags of ``pocket compress`` (units of the clamp radius R): the plate flag is today's compression,
-a sphere reaches the solver (which refuses it in one line until it poses it), and a flag the shape does not take,
-a missing one, a radius that is not positive or a bad profile file is one line, exit 2, before any solving."""
+a sphere solves in both numerical solvers (the analytical model refuses it in one line), and a flag the shape
+does not take, a missing one, a radius that is not positive or a bad profile file is one line, exit 2, before any
+solving."""
 
 import json
 
@@ -25,10 +26,18 @@ def test_the_plate_flag_is_the_default_compression(capsys):
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
-def test_a_sphere_reaches_the_solver_which_refuses_it_in_one_line(capsys, solver):
-    assert main([*BASE, "--solver", solver, "--indenter", "sphere", "--indenter-radius", "0.4"]) == 2
+def test_a_sphere_solves_with_its_contact_pressure_above_p(capsys, solver):
+    assert main([*BASE, "--json", "--solver", solver, "--indenter", "sphere", "--indenter-radius", "0.4"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["solver"] == solver and out["force"] == 0.5
+    assert out["contact_pressure_pole"] > out["contact_pressure_edge"] > out["pressure"]
+    assert out["contact_radius_deformed"] < 0.4  # on the sphere's lower half
+
+
+def test_a_sphere_reaches_the_analytical_solver_which_refuses_it_in_one_line(capsys):
+    assert main([*BASE, "--solver", "analytical", "--indenter", "sphere", "--indenter-radius", "0.4"]) == 2
     err = capsys.readouterr().err
-    assert f"solver {solver} does not implement the sphere indenter" in err and err.count("\n") == 1
+    assert "solver analytical does not implement the sphere indenter" in err and err.count("\n") == 1
 
 
 @pytest.mark.parametrize("flags, message", [
@@ -65,10 +74,16 @@ def test_design_with_the_plate_flag_is_todays_design(capsys):
     assert json.loads(capsys.readouterr().out) == default
 
 
-def test_design_for_a_fingertip_reaches_the_solver_which_refuses_it_in_one_line(capsys):
-    assert main([*DESIGN, "--indenter", "sphere", "--indenter-radius", "8 mm"]) == 2
-    err = capsys.readouterr().err
-    assert "solver shooting does not implement the sphere indenter" in err and err.count("\n") == 1
+def test_design_for_a_fingertip_meets_its_target_under_the_fingertip(capsys):
+    """The button designed for an 8 mm fingertip travels 20 % of its 10 mm height (H/H0 = 0.8) under 0.67 N
+    pressed by that sphere, and needs another P_I (in Pa) than the one designed for the plate."""
+    assert main([*DESIGN, "--json", "--indenter", "sphere", "--indenter-radius", "8 mm"]) == 0
+    finger = json.loads(capsys.readouterr().out)
+    assert main([*DESIGN, "--json"]) == 0
+    plate = json.loads(capsys.readouterr().out)
+    travel = {row["force_N"]: row["travel_m"] for row in finger["curve"]}[0.67]
+    assert travel == pytest.approx((1.0 - 0.8) * 0.010, rel=1e-9)
+    assert abs(finger["pressure_initial_Pa"] / plate["pressure_initial_Pa"] - 1) > 1e-3
 
 
 @pytest.mark.parametrize("flags, message", [
@@ -86,11 +101,17 @@ def test_bad_design_indenter_flags_are_one_line_exit_2_before_any_solving(capsys
     assert message in err and err.count("\n") == 1
 
 
-def test_sense_with_a_sphere_in_the_case_reaches_the_solver_which_refuses_it(capsys, tmp_path):
+def test_sense_with_a_sphere_in_the_case_solves(capsys, tmp_path):
+    """``pocket sense`` under an 8 mm sphere: exit 0, the pressure ratio asked, reached at another force than
+    under the plate."""
     case = tmp_path / "case.toml"
-    case.write_text('[sheet]\nthickness = "0.25 mm"\nc1 = "160 kPa"\nc2 = "47 kPa"\n[clamp]\nradius = "20 mm"\n'
-                    '[initial]\npressure = "4.8 kPa"\n[loads]\nforces = ["1 N"]\n'
-                    '[indenter]\nshape = "sphere"\nradius = "8 mm"\n')
-    assert main(["sense", str(case), "--ratio", "1.1"]) == 2
-    err = capsys.readouterr().err
-    assert "solver shooting does not implement the sphere indenter" in err and err.count("\n") == 1
+    text = ('[sheet]\nthickness = "0.25 mm"\nc1 = "160 kPa"\nc2 = "47 kPa"\n[clamp]\nradius = "20 mm"\n'
+            '[initial]\npressure = "4.8 kPa"\n[loads]\nforces = ["1 N"]\n')
+    case.write_text(text + '[indenter]\nshape = "sphere"\nradius = "8 mm"\n')
+    assert main(["sense", str(case), "--ratio", "1.1", "--json"]) == 0
+    finger = json.loads(capsys.readouterr().out)
+    case.write_text(text)
+    assert main(["sense", str(case), "--ratio", "1.1", "--json"]) == 0
+    plate = json.loads(capsys.readouterr().out)
+    assert finger["pressure_ratio"] == pytest.approx(1.1, rel=1e-9)
+    assert abs(finger["force_N"] / plate["force_N"] - 1) > 1e-3

@@ -78,7 +78,7 @@ def test_the_force_is_the_cap_balance_and_the_contact_pressure_integral(rubber, 
         assert x["force_contact_pressure"] == pytest.approx(state.force, rel=1e-8)
         assert x["force_reaction"] == pytest.approx(state.force, rel=1e-9)
         assert x["contact_pressure_min"] > state.pressure
-        assert x["contact_pressure_pole"] > x["contact_pressure_edge"] > state.pressure
+        assert state.contact_pressure_pole > state.contact_pressure_edge > state.pressure
 
 
 @pytest.mark.parametrize("fluid", [None, GAS])
@@ -127,7 +127,7 @@ def test_every_returned_state_touches_without_penetration_and_pushes():
     for state in fem.compression_curve(ALPHA, 1.5, np.linspace(0.02, 0.24, 6), indenter=sphere(0.1)):
         assert state.extra["penetration"] <= 1e-12
         assert state.extra["contact_pressure_min"] >= 0.0
-        assert state.extra["contact_radius_deformed"] < 0.1
+        assert state.contact_radius_deformed < 0.1
         assert not state.wrinkled
 
 
@@ -216,3 +216,30 @@ def test_the_penalty_sphere_tends_to_the_edge_fitted_one():
                           augmented=False).extra["penetration"] for k in (1e4, 1e5)]
     print("pure-penalty penetration at kappa = 1e4, 1e5:", depth)
     assert 8.0 < depth[0] / depth[1] < 12.0
+
+
+def test_the_contact_pressure_is_reported_as_the_shooting_solver_reports_it():
+    """The state's own fields, as shooting's: contact_pressure at every profile node (NaN off the contact
+    zone), its pole and edge values the scalars, P + (T_1 + T_2)/R_s there from the profile's tensions,
+    its integral over the zone the force; the FE-only diagnostics stay in ``extra``."""
+    from scipy.integrate import simpson
+
+    from pocket.apps.contact import contact_pressures
+
+    radius = 0.8
+    state = fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(radius))
+    profile, pc = state.profile, state.contact_pressure
+    on = profile.contact
+    assert pc.shape == profile.r.shape and np.all(np.isnan(pc[~on])) and np.all(np.isfinite(pc[on]))
+    assert pc[0] == state.contact_pressure_pole and pc[on][-1] == state.contact_pressure_edge
+    inner = on & (profile.r < state.contact_radius)  # the edge node's value is the one-sided edge value
+    expected = state.pressure + (profile.tension_1[inner] + profile.tension_2[inner]) / radius
+    assert pc[inner] == pytest.approx(expected, rel=1e-12)
+    assert state.contact_radius_deformed == profile.rho[on][-1]
+    force = simpson(2.0 * profile.rho[on] * pc[on], x=profile.rho[on]) / state.pressure_initial
+    assert force == pytest.approx(state.force, rel=1e-4)  # Simpson on the nodes, O(h^4)
+    scalars = state.scalars()
+    for key in ("contact_radius_deformed", "contact_pressure_pole", "contact_pressure_edge"):
+        assert key not in state.extra and scalars[key] == getattr(state, key)
+    assert contact_pressures(state) == {k: getattr(state, k) for k in ("contact_pressure_pole",
+                                                                       "contact_pressure_edge")}
