@@ -210,11 +210,13 @@ def test_editing_a_compiled_callee_makes_the_cache_stale(tmp_path, solver):
 
 
 def _copy_repository(target: pathlib.Path) -> pathlib.Path:
-    """The files a build of pocket reads, copied to ``target`` (the build writes beside its sources)."""
+    """The files a build of pocket reads, copied to ``target`` (the build writes beside its sources); not
+    ``_version.py``, which an earlier build of the checkout wrote (it would lend the copy the checkout's commit)."""
     for name in ("pyproject.toml", "README.md"):
         shutil.copy(REPOSITORY / name, target / name)
     for name in ("src", "shooting", "fem", "analytical", "meshes", "validation"):
-        shutil.copytree(REPOSITORY / name, target / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+        shutil.copytree(REPOSITORY / name, target / name,
+                        ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "_version.py"))
     return target
 
 

@@ -166,20 +166,34 @@ def _scheduler(folder):
     return proc, json.loads(file.read_text())["address"]
 
 
+#: a dask worker on a machine without pocket: an import of pocket fails as it does where it is not installed
+NO_POCKET = """
+import runpy, sys
+
+
+class NoPocket:
+    def find_spec(self, name, path=None, target=None):
+        if name == "pocket" or name.startswith("pocket."):
+            raise ModuleNotFoundError("No module named 'pocket'", name="pocket")
+
+
+sys.meta_path.insert(0, NoPocket())
+sys.argv = ["dask-worker", *sys.argv[1:]]
+runpy.run_module("distributed.cli.dask_worker", run_name="__main__", alter_sys=True)
+"""
+
+
 def _worker(address, folder, *, without_pocket=False):
     """A dask worker process (no nanny: killing it kills the worker) whose tasks wait for ``folder``'s
     release file; ``without_pocket``: started so that it cannot import pocket."""
     preload = folder / "hold.py"
     preload.write_text(HOLD.format(folder=str(folder)))
     argv = ["-m", "distributed.cli.dask_worker", address, "--nthreads", "1", "--no-nanny", "--no-dashboard"]
-    env = dict(os.environ)
-    if without_pocket:  # no site: the editable install's path hook is not read, the packages are on the path
-        import sysconfig
-
-        argv, env["PYTHONPATH"] = ["-S", *argv], sysconfig.get_paths()["purelib"]
+    if without_pocket:  # however pocket is installed (regular or editable), this worker cannot import it
+        argv = ["-c", NO_POCKET, *argv[2:]]
     else:
         argv += ["--preload", str(preload)]
-    return subprocess.Popen([sys.executable, *argv], cwd=folder, env=env, stdout=subprocess.DEVNULL,
+    return subprocess.Popen([sys.executable, *argv], cwd=folder, stdout=subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL)
 
 
