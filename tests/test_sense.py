@@ -171,8 +171,8 @@ def _case(tmp_path_factory, fluid: str, indenter: str):
 def test_sensitivity_at_rest_two_ways(tmp_path_factory, fluid, indenter):
     """dP/dF at F -> 0 by reciprocity, (dH0/dP) / (dV0/dP [+ V / (gamma (P + P_atm))]) of the inflated pocket,
     against the solved curve: the one-sided second-order difference (-3 q(0) + 4 q(h) - q(2 h)) / (2 h) of
-    P/P_I in Fhat, times P_I / (P_I pi R^2). Its error is first order in h (the contact zone opens like
-    sqrt(F), so q is not smooth at 0; measured 0.66 h relative), so the differences at h = 1e-4 and 1e-5 are
+    P/P_I in Fhat, times P_I / (P_I pi R^2). Its error is first order in h (q is not smooth at F = 0, where the
+    contact zone opens; measured 0.66 h relative), so the differences at h = 1e-4 and 1e-5 are
     extrapolated to h -> 0 (Richardson, (10 s(h/10) - s(h)) / 9; round-off ~1e-11 / h = 1e-6). The
     calibration table's first row (its own step, 1e-6) agrees within its round-off. The gas's compliance
     makes it smaller than the liquid's."""
