@@ -83,6 +83,8 @@ def test_table(pocket, tmp_path, capsys):
         (["--pressure", "5 mm"], "pressure = '5 mm' has dimension [length], but a pressure"),
         ([], "give a measured --pressure or --ratio, or --table FILE.csv"),
         (["--ratio", "1.2", "--pressure", "5 kPa"], "give either a pressure or a pressure ratio"),
+        (["--ratio", "1.2", "--range", "2 N", "1 N"], "--range = '2 N' '1 N', but it must go up from 0 or more"),
+        (["--ratio", "1.2", "--range", "0 N", "1 mm"], "--range = '1 mm' has dimension [length], but a force"),
     ],
 )
 def test_cli_errors(args, message, capsys, tmp_path, monkeypatch):
@@ -150,3 +152,84 @@ def test_gas_round_trip(barometer):
         row = reading.row()
         assert (row["material"], row["fluid"], row["ambient"]) == ("mooney-rivlin", "gas", barometer.fluid.ambient)
         assert row["gamma"] == barometer.case.fluid.gamma
+
+
+def _case(tmp_path_factory, fluid: str, indenter: str):
+    """Sample 1 with a liquid or air (isothermal, 101.325 kPa), pressed by the plate or an 8 mm sphere (K = 0.4)."""
+    from pocket.apps.cases import load
+
+    path = tmp_path_factory.mktemp("sensor") / "sensor.toml"
+    path.write_text('[sheet]\nthickness = "0.25 mm"\nc1 = "160 kPa"\nc2 = "47 kPa"\n[clamp]\nradius = "20 mm"\n'
+                    '[initial]\npressure = "4.81275 kPa"\n[loads]\nforces = ["0 N", "2 N"]\n'
+                    + ('[fluid]\nkind = "gas"\n' if fluid == "gas" else "")
+                    + ('[indenter]\nshape = "sphere"\nradius = "8 mm"\n' if indenter == "sphere" else ""))
+    return resolve(load(path))
+
+
+@pytest.mark.parametrize("fluid", ["liquid", "gas"])
+@pytest.mark.parametrize("indenter", ["plate", "sphere"])
+def test_sensitivity_at_rest_two_ways(tmp_path_factory, fluid, indenter):
+    """dP/dF at F -> 0 by reciprocity, (dH0/dP) / (dV0/dP [+ V / (gamma (P + P_atm))]) of the inflated pocket,
+    against the solved curve: the one-sided second-order difference (-3 q(0) + 4 q(h) - q(2 h)) / (2 h) of
+    P/P_I in Fhat, times P_I / (P_I pi R^2). Its error is first order in h (q is not smooth at F = 0, where the
+    contact zone opens; measured 0.66 h relative), so the differences at h = 1e-4 and 1e-5 are
+    extrapolated to h -> 0 (Richardson, (10 s(h/10) - s(h)) / 9; round-off ~1e-11 / h = 1e-6). The
+    calibration table's first row (its own step, 1e-6) agrees within its round-off. The gas's compliance
+    makes it smaller than the liquid's."""
+    from pocket.apps.sense import sensitivity_at_rest
+
+    pocket = _case(tmp_path_factory, fluid, indenter)
+    slopes = []
+    for h in (1e-4, 1e-5):
+        q0, q1, q2 = (s.pressure_ratio for s in shooting.compression_curve(
+            pocket.material, pocket.pressure_initial, [0.0, h, 2 * h], **pocket.options()))
+        slopes.append((-3 * q0 + 4 * q1 - q2) / (2 * h) * pocket.pressure_initial_Pa / pocket.force_scale_N / 1e3)
+    at_rest = sensitivity_at_rest(pocket)
+    assert at_rest == pytest.approx(slopes[1], rel=2e-5)
+    assert at_rest == pytest.approx((10 * slopes[1] - slopes[0]) / 9, rel=2e-6)
+    assert calibration(pocket, "1 N", 2)[0].sensitivity_kPa_per_N == pytest.approx(at_rest, rel=1e-4)
+    if fluid == "gas":
+        assert at_rest < sensitivity_at_rest(_case(tmp_path_factory, "liquid", indenter))
+
+
+def test_linearity_of_known_curves():
+    """A straight line is 0 % from its best line; P = F^2 on [0, L] is c L^2 / 8 from it (the chord lowered by
+    half the largest gap F (L - F) at F = L / 2), of a full scale L^2: 12.5 %, whatever the units and the
+    order of the points; with a linear part added, the full scale is P(L) - P(0)."""
+    from pocket.apps.sense import linearity
+
+    rng = np.random.default_rng(1)
+    forces = rng.permutation(np.linspace(0.0, 2.0, 41))
+    assert linearity(forces, 3.0 * forces + 7.0) == pytest.approx(0.0, abs=1e-12)
+    length, c, b = 2.0, 5.0, 4.0
+    expected = 100.0 * (c * length**2 / 8) / (c * length**2 + b * length)
+    assert linearity(forces, c * forces**2 + b * forces + 1.0) == pytest.approx(expected, rel=1e-12)
+    assert linearity(forces, forces**2) == pytest.approx(12.5, rel=1e-12)
+
+
+def test_sensor_keys_end_to_end(tmp_path, capsys):
+    """Through the CLI, a sphere-pressed gas sensor: the reading and every table row carry dP/dF (kPa/N, the
+    inverse of dF/dP in N/Pa), the travel (m, 0 at rest, then H0 - H of the forward solver) and the
+    reading's at-rest sensitivity and linearity over the given range (as ``range_linearity`` computes)."""
+    from pocket.apps.cases import load
+    from pocket.apps.sense import range_linearity, sensitivity_at_rest
+
+    case = tmp_path / "finger.toml"
+    case.write_text('[sheet]\nthickness = "0.25 mm"\nc1 = "160 kPa"\nc2 = "47 kPa"\n[clamp]\nradius = "20 mm"\n'
+                    '[initial]\npressure = "4.81275 kPa"\n[loads]\nforces = ["0 N", "2 N"]\n[fluid]\nkind = "gas"\n'
+                    '[indenter]\nshape = "sphere"\nradius = "8 mm"\n')
+    table = tmp_path / "cal.csv"
+    assert main(["sense", str(case), "--ratio", "1.05", "--table", str(table), "--points", "3",
+                 "--range", "0 N", "1 N", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    pocket = resolve(load(case))
+    assert out["sensitivity_kPa_per_N"] * 1e3 * out["sensitivity_N_per_Pa"] == pytest.approx(1.0, rel=1e-12)
+    assert out["sensitivity_at_rest_kPa_per_N"] == pytest.approx(sensitivity_at_rest(pocket), rel=1e-12)
+    assert out["linearity_percent_fs"] == pytest.approx(range_linearity(pocket, "0 N", "1 N", 3), rel=1e-12)
+    assert out["linearity_range_N"] == [0.0, 1.0]
+    rows = list(csv.DictReader(table.open()))
+    assert float(rows[0]["travel_m"]) == 0.0
+    last = shooting.compress(pocket.material, pocket.pressure_initial, 2.0 / pocket.force_scale_N, **pocket.options())
+    assert float(rows[-1]["travel_m"]) == pytest.approx((last.inflated.height - last.height) * 0.02, rel=1e-8)
+    for row in rows:
+        assert float(row["sensitivity_kPa_per_N"]) * 1e3 * float(row["sensitivity_N_per_Pa"]) == pytest.approx(1.0)

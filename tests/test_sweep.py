@@ -444,7 +444,10 @@ def test_another_solver_or_options_computes_its_own_points(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("columns, lacks", [
-    ((*CompressedState.KEYS, "solver", "status", "message", *IDENTITY[2:], *CHECKS), "the solver's options"),
+    ((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *IDENTITY[2:-1], *CHECKS),
+     "the indenter (they were all pressed by the flat plate)"),
+    ((*CompressedState.KEYS, "solver", "status", "message", *IDENTITY[2:-1], *CHECKS),
+     "the solver's options and the indenter"),
     ((*CompressedState.KEYS, "solver", "status", "message"), "the solver's options, the rubber and the fluid")])
 def test_a_sweep_file_of_an_earlier_pocket_is_refused_saying_what_it_holds(tmp_path, capsys, columns, lacks):
     """A file whose rows do not say all of what a point is: exit 2, one line saying so and how many points
@@ -462,3 +465,46 @@ def test_a_sweep_file_of_an_earlier_pocket_is_refused_saying_what_it_holds(tmp_p
     assert f"{path} is a sweep file of an earlier pocket (2 points: 2 of solver shooting), whose rows do not " \
            f"record {lacks}" in err, err
     assert path.read_text() == text
+
+
+def test_indenters_share_a_file(tmp_path, capsys):
+    """The indenter is part of a point: the plate's sweep, then the same grid under a sphere K = 0.4, keep both
+    in one file, each row saying what pressed it; the sphere's rows are the solver's sphere curve exactly, not
+    the plate's; each rerun reuses its own points."""
+    from pocket.core.indenters import sphere
+
+    path = tmp_path / "fingers.csv"
+    argv = ["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "0.2", "--out", str(path),
+            "--workers", "1"]
+    runs = [[], ["--indenter", "sphere", "--indenter-radius", "0.4"]]
+    for extra in runs:
+        assert main([*argv, *extra]) == 0
+        assert "2 points computed, 0 reused" in capsys.readouterr().out
+    rows = list(csv.DictReader(path.open()))  # the last sweep's grid first, then the other points
+    assert [r["indenter"] for r in rows] == ["sphere K=0.4", "sphere K=0.4", "plate", "plate"]
+    assert [float(r["height"]) for r in rows[:2]] == [
+        s.height for s in shooting.compression_curve(0.3, 0.1, [0.1, 0.2], indenter=sphere(0.4))]
+    assert [float(r["height"]) for r in rows[2:]] == [
+        s.height for s in shooting.compression_curve(0.3, 0.1, [0.1, 0.2])]
+    assert rows[2]["height"] != rows[0]["height"]
+    for extra in runs:
+        assert main([*argv, *extra]) == 0
+        assert "0 points computed, 2 reused" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("extra, message", [
+    (["--indenter", "sphere"], "--indenter sphere needs --indenter-radius"),
+    (["--indenter", "sphere", "--indenter-radius", "-1"], "--indenter-radius = -1, but a sphere's radius must be > 0"),
+    (["--indenter", "profile", "--indenter-file", "{tip}"],
+     "a sweep records its indenter as text, the plate or a sphere, not a profile")])
+def test_bad_sweep_indenter(tmp_path, capsys, extra, message):
+    """A missing or bad radius, or an indenter a row cannot name: exit 2, one line, no file written."""
+    tip = tmp_path / "tip.csv"
+    tip.write_text("radius [R],height [R]\n0,0\n0.1,0.005\n0.2,0.02\n0.3,0.045\n")
+    path = tmp_path / "s.csv"
+    extra = [e.format(tip=tip) for e in extra]
+    assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
+                 "--workers", "1", *extra]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and message in err, err
+    assert not path.exists()

@@ -2,7 +2,7 @@
 
 The rubber is a Mooney-Rivlin alpha per grid point (the alpha axis), or one rubber of
 another law for the whole sweep (``pocket.core.materials.Material``); the fluid is a
-liquid or one gas for the whole sweep.
+liquid or one gas, and the indenter the flat plate or one sphere, for the whole sweep.
 
 Each grid point is one compressed state. The points of one curve (a rubber,
 a fluid, Phat_I, the solver and its options) are solved in one task by
@@ -58,6 +58,7 @@ from concurrent.futures import as_completed
 
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
+from pocket.core.indenters import FLAT, Indenter, as_indenter
 from pocket.core.inputs import check_alpha, check_force, check_positive
 from pocket.core.materials import Material, as_material
 from pocket.core.states import CHECKS, CompressedState
@@ -84,7 +85,8 @@ def _row(solver: str, material, pressure_initial: float, force: float, options: 
         row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS if key != "alpha"})
         row.update({key: float(getattr(state, key)) for key in CHECKS[:2]}, wrinkled=state.wrinkled)
         row.update(status="ok", message=line("; ".join(state.warnings)))
-    row.update(identity(solver, options, material, as_fluid(options.get("fluid"))))  # the point as asked
+    row.update(identity(solver, options, material, as_fluid(options.get("fluid")),
+                        as_indenter(options.get("indenter"))))  # the point as asked
     row.update(alpha="" if isinstance(material, Material) else material, pressure_initial=pressure_initial,
                force=force)
     return row
@@ -95,7 +97,7 @@ def solve_point(solver: str, material, pressure_initial: float, force: float, op
     a status, not an error.
 
     ``material`` is a Mooney-Rivlin alpha or a ``Material``; ``options`` the solver's, with the
-    ``fluid`` (a ``Fluid``) if it is a gas."""
+    ``fluid`` (a ``Fluid``) if it is a gas and the ``indenter`` if it is not the flat plate."""
     try:
         state = entry(solver, "compress", "a sweep point")(material, pressure_initial, force, **options)
     except (OutOfRangeError, ConvergenceError) as err:
@@ -149,12 +151,13 @@ def _curves(points) -> dict:
 
 def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", options=None,
               progress: Callable[[int, int], None] | None = None, material: Material | None = None,
-              fluid: Fluid | None = None) -> tuple[int, int]:
+              fluid: Fluid | None = None, indenter: Indenter | None = None) -> tuple[int, int]:
     """Solve every (alpha, Phat_I, Fhat) of the grid not already in the CSV ``path``.
 
     Returns (computed, reused) points. The rubber is Mooney-Rivlin with each of ``alphas``, or
     ``material`` (another law, for every point: ``alphas`` then empty or None). ``fluid``: None (a
-    liquid) or a gas, its ambient pressure as Phat_atm. ``solver`` and its ``options`` (checked
+    liquid) or a gas, its ambient pressure as Phat_atm. ``indenter``: None (the flat plate) or a sphere
+    (``pocket.core.indenters``), part of each point like the fluid. ``solver`` and its ``options`` (checked
     against its record) are part of each point: a file may hold the points of several solvers.
     Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the
     grid's forces up to the last one missing, so that a point's row does not depend on which
@@ -176,7 +179,10 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     fluid = as_fluid(fluid)
     if fluid.is_gas:
         options["fluid"] = fluid
-    cells = {m: identity(solver, options, m, fluid) for m in materials}
+    indenter = as_indenter(indenter)
+    if indenter != FLAT:
+        options["indenter"] = indenter
+    cells = {m: identity(solver, options, m, fluid, indenter) for m in materials}
     keys = [key({**cells[m], "alpha": "" if material is not None else m, "pressure_initial": p, "force": f})
             for m, p, f in grid]
     journal = Journal(pathlib.Path(path))

@@ -7,12 +7,12 @@ in name order, as given; empty for the solver's defaults), a ``status``
 (``material``, the law's name, and a column per parameter of every law, empty where
 the law has no such parameter: Mooney-Rivlin's is ``alpha``, so its rows leave
 ``c1`` and ``c2`` empty; Ogden's lists are numbers separated by spaces), the fluid
-(``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), and the membrane's
-checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``). Floats are written
-exactly (``repr``), so a point reads back equal to the number asked.
+(``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), the indenter (``indenter``: ``plate``, or
+``sphere K=...`` with K = R_s / R), and the membrane's checks (``tension_1_min``, ``tension_2_min``,
+``wrinkled``). Floats are written exactly (``repr``), so a point reads back equal to the number asked.
 
-A point is its solver and options, rubber, fluid, Phat_I and Fhat (``key``): a file may
-hold points of several sweeps, of several solvers, and a rerun recognises its own. A
+A point is its solver and options, rubber, fluid, indenter, Phat_I and Fhat (``key``): a file
+may hold points of several sweeps, of several solvers and indenters, and a rerun recognises its own. A
 file of an earlier pocket, whose rows lack some of these columns, is refused, saying
 what it holds.
 
@@ -38,6 +38,7 @@ import stat
 
 from pocket.core.errors import InputError, OutputError
 from pocket.core.fluids import Fluid
+from pocket.core.indenters import FLAT, Indenter
 from pocket.core.materials import Material
 from pocket.core.states import CHECKS, CompressedState
 
@@ -49,12 +50,13 @@ try:
 except ImportError:  # not a POSIX system: no lock
     fcntl = None
 
-__all__ = ["COLUMNS", "IDENTITY", "STATUSES", "Journal", "identity", "key", "line", "options_text", "rows_csv"]
+__all__ = ["COLUMNS", "IDENTITY", "STATUSES", "Journal", "identity", "indenter_text", "key", "line", "options_text",
+           "rows_csv"]
 
-#: what identifies a point besides alpha, Phat_I and Fhat: its solver, rubber and fluid
-IDENTITY = ("solver", "solver_options", "material", *PARAMETERS, "fluid", "ambient", "gamma")
-_RUBBER_FLUID = IDENTITY[2:]
-COLUMNS = (*CompressedState.KEYS, "solver", "solver_options", "status", "message", *_RUBBER_FLUID, *CHECKS)
+#: what identifies a point besides alpha, Phat_I and Fhat: its solver, rubber, fluid and indenter
+IDENTITY = ("solver", "solver_options", "material", *PARAMETERS, "fluid", "ambient", "gamma", "indenter")
+_RUBBER_FLUID = IDENTITY[2:-1]
+COLUMNS = (*CompressedState.KEYS, "solver", "solver_options", "status", "message", *IDENTITY[2:], *CHECKS)
 STATUSES = ("ok", "out_of_range", "failed")
 _NUMBERS = ("alpha", "pressure_initial", "force")
 
@@ -78,16 +80,27 @@ def _option(name: str, value) -> str:
 
 
 def options_text(options: dict) -> str:
-    """The ``solver_options`` cell of a sweep's solver ``options`` (checked; the fluid is not one)."""
-    return " ".join(_option(name, options[name]) for name in sorted(options) if name != "fluid")
+    """The ``solver_options`` cell of a sweep's solver ``options`` (checked; the fluid and the indenter are not
+    ones)."""
+    return " ".join(_option(name, options[name]) for name in sorted(options) if name not in ("fluid", "indenter"))
 
 
-def identity(solver: str, options: dict, material, fluid: Fluid) -> dict:
+def indenter_text(indenter: Indenter) -> str:
+    """The ``indenter`` cell: ``plate``, or ``sphere K=...`` (K = R_s / R written exactly); an InputError for
+    an indenter a sweep cannot record as text (a profile)."""
+    if indenter == FLAT:
+        return "plate"
+    if indenter.kind == "sphere":
+        return f"sphere K={indenter.number('radius')!r}"
+    raise InputError(f"a sweep records its indenter as text, the plate or a sphere, not a {indenter.kind}")
+
+
+def identity(solver: str, options: dict, material, fluid: Fluid, indenter: Indenter = FLAT) -> dict:
     """The IDENTITY cells (text) of a point: ``solver`` its name and ``options`` its options (as
     ``options_text``), ``material`` a Mooney-Rivlin alpha (its own column) or a ``Material``,
-    ``fluid`` a ``Fluid``."""
+    ``fluid`` a ``Fluid``, ``indenter`` as ``indenter_text``."""
     cells = dict.fromkeys(IDENTITY, "")
-    cells.update(solver=solver, solver_options=options_text(options))
+    cells.update(solver=solver, solver_options=options_text(options), indenter=indenter_text(indenter))
     if isinstance(material, Material):
         cells.update({name: _cell(value) for name, value in material.params}, material=material.law)
     else:
@@ -97,7 +110,7 @@ def identity(solver: str, options: dict, material, fluid: Fluid) -> dict:
 
 
 def key(row) -> tuple:
-    """The point of a row: its IDENTITY cells (solver, options, rubber, fluid), then alpha (None for
+    """The point of a row: its IDENTITY cells (solver, options, rubber, fluid, indenter), then alpha (None for
     another law), Phat_I and Fhat."""
     alpha, pressure, force = (row[k] for k in _NUMBERS)
     return (*(row[k] for k in IDENTITY), None if alpha in ("", None) else float(alpha), float(pressure),
@@ -120,7 +133,9 @@ _EARLIER = {
     ",".join((*CompressedState.KEYS, "solver", "status", "message")).encode() + b"\n":
         "the solver's options, the rubber and the fluid",
     ",".join((*CompressedState.KEYS, "solver", "status", "message", *_RUBBER_FLUID, *CHECKS)).encode() + b"\n":
-        "the solver's options",
+        "the solver's options and the indenter",
+    ",".join((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *_RUBBER_FLUID,
+              *CHECKS)).encode() + b"\n": "the indenter (they were all pressed by the flat plate)",
 }
 
 

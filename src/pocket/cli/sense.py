@@ -8,7 +8,15 @@ import json
 
 from pocket.apps.folders import check_output_file, write_whole
 from pocket.apps.physical import forces, resolve
-from pocket.apps.sense import MAX_POINTS, calibration, is_table, sense
+from pocket.apps.sense import (
+    MAX_POINTS,
+    calibration,
+    force_range,
+    is_table,
+    range_linearity,
+    sense,
+    sensitivity_at_rest,
+)
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_count
 from pocket.core.units import positive, quantity
@@ -30,10 +38,16 @@ def _main(args) -> int:
     points = check_count("--points", args.points, 2, MAX_POINTS)
     if args.pressure is not None:
         quantity("--pressure", args.pressure, "pressure")
+    if args.range is not None:
+        span = list(force_range(*args.range, key="--range"))
     pocket = resolve(case)
     out = {}
     if args.pressure is not None or args.ratio is not None:
         out = sense(pocket, pressure=args.pressure, ratio=args.ratio).row()
+    out["sensitivity_at_rest_kPa_per_N"] = sensitivity_at_rest(pocket)
+    if args.range is not None:
+        out["linearity_percent_fs"] = range_linearity(pocket, *args.range, points, key="--range")
+        out["linearity_range_N"] = span
     if table is not None:
         if args.max_force is None:
             rows = [r.row() for r in calibration(pocket, max(forces(pocket)) * pocket.force_scale_N, points)]
@@ -50,24 +64,33 @@ def _main(args) -> int:
         print(json.dumps(out))
     else:
         for key, value in out.items():
-            print(f"{key:<22}{value:.10g}" if isinstance(value, float) else f"{key:<22}{value}")
+            print(f"{key:<31}{value:.10g}" if isinstance(value, float) else f"{key:<31}{value}")
     return 0
 
 
 def register(subparsers) -> None:
     """Add ``pocket sense``."""
-    text = "force sensing: force, contact area and dF/dP from a measured pressure"
+    text = "force sensing: force, contact area, travel and sensitivity from a measured pressure"
     p = subparsers.add_parser("sense", help=text, description=f"{text} (gauge, like P_I), by inverting the "
                               "full model (no extrapolation: a pressure below P_I or past the model's range is "
                               "an error); --table writes a calibration table over the force range. The case's "
                               "rubber and fluid are used: with a gas ([fluid] kind = \"gas\") it is the "
-                              "barometric touch sensor, the gas compressed by (P + P_atm) V^gamma fixed.",
+                              "barometric touch sensor, the gas compressed by (P + P_atm) V^gamma fixed; the case's "
+                              "[indenter] presses. Reported: sensitivity_kPa_per_N (dP/dF) and sensitivity_N_per_Pa "
+                              "(dF/dP) at the reading and at each row of the table, travel_m (H0 - H, the indenter's "
+                              "descent from the top of the inflated dome), sensitivity_at_rest_kPa_per_N (dP/dF as "
+                              "F -> 0, from the inflated pocket by reciprocity) and, with --range, "
+                              "linearity_percent_fs: the largest deviation of P(F) from its best straight line over "
+                              "the range, in % of the full-scale pressure change.",
                               epilog=EXIT_CODES)
     add_case_arguments(p)
     p.add_argument("--pressure", help="measured gauge pressure P ('5.2 kPa', SI if plain)")
     p.add_argument("--ratio", type=number, help="measured pressure rise P/P_I")
     p.add_argument("--table", metavar="FILE.csv", help="write a calibration table over the force range")
     p.add_argument("--max-force", help="top of the table's force range (default: the case's largest load)")
-    p.add_argument("--points", type=int, default=21, help=f"rows of the table (2 to {MAX_POINTS})")
+    p.add_argument("--points", type=int, default=21, help=f"rows of the table, and forces of --range's curve "
+                   f"(2 to {MAX_POINTS})")
+    p.add_argument("--range", nargs=2, metavar=("LOW", "HIGH"), help="report the linearity of P(F) over this "
+                   "force range ('0 N' '2 N', SI if plain)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(handler=_main)

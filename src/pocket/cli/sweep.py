@@ -1,5 +1,5 @@
 """``pocket sweep``: a grid over alpha (or one rubber of another law), Phat_I and Fhat, with a liquid or a
-gas, on local processes or a dask cluster, resumable."""
+gas, pressed by the flat plate or a sphere, on local processes or a dask cluster, resumable."""
 
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ from pocket.core.errors import InputError
 from pocket.core.inputs import check_positive
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, solver_flags
+from .indenters import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
@@ -35,11 +36,13 @@ def _main(args) -> int:
     rubber = material_of(args)
     alphas, material = (rubber, None) if isinstance(rubber, list) else (None, rubber)
     fluid = fluid_of(args, physical=False)
+    indenter = indenter_of(args)
     executor = _executor(args)
     try:
         with progress_bar("sweep", " points") as progress:
             computed, reused = run_sweep(args.out, alphas, args.pressure, args.force, executor, solver=args.solver,
-                                         options=options, progress=progress, material=material, fluid=fluid)
+                                         options=options, progress=progress, material=material, fluid=fluid,
+                                         indenter=indenter)
         executor.shutdown()
     except BaseException:
         stop(executor)
@@ -54,9 +57,10 @@ def register(subparsers) -> None:
     p = subparsers.add_parser(
         "sweep", help=text, epilog=EXIT_CODES,
         description=f"{text}: one compressed state per grid point (at most {MAX_POINTS}), one CSV row each, "
-        "with a status (ok, out_of_range, failed) and a message; rerun the same command to compute only the "
-        "missing points. While it runs the file collects finished points; at the end it is rewritten in grid "
-        "order. Stopped early (interrupt, error), the file keeps its complete rows only.")
+        "with a status (ok, out_of_range, failed) and a message, and the indenter that pressed it (plate, or "
+        "sphere K=... with K = R_s/R; sweeps of several indenters can share a file); rerun the same command to "
+        "compute only the missing points. While it runs the file collects finished points; at the end it is "
+        "rewritten in grid order. Stopped early (interrupt, error), the file keeps its complete rows only.")
     p.add_argument("--pressure", type=number, nargs="+", required=True, help="values of Phat_I = P_I R/(E T)")
     p.add_argument("--force", type=number, nargs="+", required=True, help="values of Fhat = F/(P_I pi R^2)")
     p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
@@ -69,5 +73,6 @@ def register(subparsers) -> None:
                    f"while no worker is connected before stopping (default {PATIENCE:g})")
     add_rubber_flags(p, alphas=True)
     add_fluid_flags(p, physical=False)
+    add_indenter_flags(p)
     add_solver_flags(p, "compress")
     p.set_defaults(handler=_main)
