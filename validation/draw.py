@@ -21,7 +21,8 @@ __all__ = ["draw", "write_csv", "math_text", "PALETTE"]
 
 #: the colour cycle: matplotlib's ten, then three more, enough for one colour per pocket of the suite
 PALETTE = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
-           "#17becf", "navy", "darkgoldenrod", "teal")
+           "#17becf", "navy", "darkgoldenrod", "teal", "maroon", "olive", "darkviolet", "saddlebrown", "deeppink",
+           "slategray")
 _WIDTH = 6.4  # inches per panel
 _EMPHASIS = "0.15"  # the headline pocket's colour: near black
 _BROAD = 3.4  # the headline pocket's line width
