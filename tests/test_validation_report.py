@@ -60,7 +60,8 @@ def test_every_check_has_a_verdict_that_matches_its_numbers(report):
 def test_figure_csvs_hold_the_plotted_numbers(report):
     """Exact answer: each PNG has its CSV, with finite numbers; fig2's shooting profile ends at the clamp (1, 0)."""
     out = report[1]
-    for name in ("fig2", "fig3a", "fig3b", "fig4", "fig5", "fluids", "laws", "convergence"):
+    for name in ("fig2", "fig3a", "fig3b", "fig4", "fig5", "fluids", "laws", "fingertips", "contact_pressure",
+                 "convergence"):
         png = out / f"{name}.png"
         assert png.stat().st_size > 10_000 and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
         rows = _rows(out / f"{name}.csv")
@@ -234,7 +235,7 @@ def test_log_axes_leave_out_zero_and_say_so(report):
             for s in panel.series:
                 assert "x" not in panel.log or (s.x > 0).all(), (fig.name, panel.title, s.label)
                 assert "y" not in panel.log or (s.y > 0).all(), (fig.name, panel.title, s.label)
-        if fig.name in ("fig3a", "fig3b", "fig5", "fluids", "laws"):  # log in F, whose curves start at F = 0
+        if fig.name in ("fig3a", "fig3b", "fig5", "fluids", "laws", "fingertips"):  # log in F, curves from F = 0
             assert NO_ZERO in fig.caption, fig.name
     assert results.curves[0].reference[0].force == 0.0  # the curves do start at 0: the test can fail
 
@@ -520,10 +521,12 @@ def test_every_law_and_fluid_is_cross_checked(report):
     P2 columns compared with shooting on every reported scalar, at the inflated state, Fhat = 1 and near the
     end of its range, within the stated tolerances (P2 1e-9, P1 1e-6); its fluid's own law holds at each FE
     state; and every pocket has its wrinkling verdict for each solver."""
+    from pocket.validation.suite import on_plate
     from pocket.validation.verdicts import MEMBRANE, TOLERANCES
 
     results = report[2]
-    others = [p for p in results.pockets if p.case.material.law != "mooney-rivlin" or p.case.fluid.is_gas]
+    others = [p for p in results.pockets if (p.case.material.law != "mooney-rivlin" or p.case.fluid.is_gas)
+              and on_plate(p)]
     assert len(others) == 5
     for pocket in others:
         name = pocket.case.name
@@ -581,3 +584,91 @@ def test_a_rerun_replaces_the_report_pocket_wrote(report, tmp_path, capsys, monk
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "holds a pocket validation report, not a convergence report" in err, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
+
+
+def _sphere_radii_mm(results) -> dict:
+    """case name -> the radius of the sphere pressing it, in mm (the pockets pressed by a sphere)."""
+    return {p.case.name: p.case.indenter.number("radius") * p.case.radius * 1e3 for p in results.pockets
+            if p.case.indenter.kind == "sphere"}
+
+
+def test_spheres_are_cross_checked_on_every_scalar(report):
+    """Exact answer: the headline pocket under spheres of 8, 20 and 60 mm, a Yeoh sheet and an air-filled
+    pocket under one: P2 FE against shooting on every reported scalar, the contact's own among them (the
+    pressure at the pole and at the edge, the deformed contact radius), at Fhat = 0.5 and near the end of the
+    range, within the sphere's tolerances; the indenter carries the force; no P1 and no analytical column
+    (the paper's model is the flat plate's)."""
+    from pocket.validation.verdicts import TOLERANCES
+
+    from pocket.core.states import CompressedState
+
+    results = report[2]
+    radii = _sphere_radii_mm(results)
+    head = next(p for p in results.pockets if "headline" in p.case.tags)
+    spheres = [p for p in results.pockets if p.case.name in radii]
+    assert sorted(r for p, r in zip(spheres, radii.values(), strict=True) if p.case.material == head.case.material
+                  and p.case.fluid == head.case.fluid) == pytest.approx([8.0, 20.0, 60.0])
+    assert {p.case.material.law for p in spheres} >= {"mooney-rivlin", "yeoh"}
+    assert any(p.case.fluid.is_gas for p in spheres)
+    for name in radii:
+        rows = [c for c in results.checks if c.case == name]
+        p2 = [c for c in rows if c.comparison == "FEM P2 vs shooting" and c.step == "compression"]
+        assert {c.quantity for c in p2} >= {"pressure", "height", *CompressedState.CONTACT_KEYS}
+        assert len({c.where for c in p2}) == 2 and "Fhat = 0.5" in {c.where for c in p2}
+        scalars = [c for c in p2 if c.quantity not in ("tension_1_min", "tension_2_min", "profile (distance / R)")]
+        assert all(c.tolerance == TOLERANCES["fem_sphere"][0] and c.verdict == "pass" for c in scalars)
+        reaction = [c for c in rows if c.quantity == "indenter reaction = F"]
+        assert len(reaction) == 2 and all(c.verdict == "pass" for c in reaction)
+        assert not [c for c in rows if c.comparison.startswith(("FEM P1", "analytical"))]
+
+
+def test_fingertip_figure_plots_force_against_travel(report):
+    """Exact answer: the fingertips figure holds the plate and the three spheres of the headline pocket; a
+    point of its panel (a) is (H_0 - H, F) of the state shooting solves afresh at that force; at Fhat = 0.5
+    a smaller sphere travels further and raises the pressure more, as the caption says."""
+    from pocket.validation.figures import figures, pocket_label
+
+    from pocket import shooting
+
+    results = report[2]
+    fig = next(f for f in figures(results) if f.name == "fingertips")
+    lines = [s for s in fig.panels[0].series if s.solver == "shooting"]
+    assert len(lines) == 4 and "FEM P2" in {s.solver for s in fig.panels[0].series}
+    by_group = {p: next(p_ for p_ in results.pockets if pocket_label(p_) == p) for p in (s.group for s in lines)}
+    travel, rise = {}, {}
+    for line in lines:
+        pocket = by_group[line.group]
+        k = len(line.x) // 2
+        state = shooting.compress(pocket.material, pocket.pressure_initial, float(line.y[k]), **pocket.fluid_options())
+        assert line.x[k] == pytest.approx(state.inflated.height - state.height, rel=1e-9)
+        half = shooting.compress(pocket.material, pocket.pressure_initial, 0.5, **pocket.fluid_options())
+        size = pocket.case.indenter.number("radius") if pocket.case.name in _sphere_radii_mm(results) else np.inf
+        travel[size], rise[size] = half.inflated.height - half.height, half.pressure_ratio
+    sizes = sorted(travel)
+    assert [travel[s] for s in sizes] == sorted(travel.values(), reverse=True)
+    assert [rise[s] for s in sizes] == sorted(rise.values(), reverse=True)
+    assert "smaller sphere travels further and raises the pressure a little more" in fig.caption
+
+
+def test_contact_pressure_figure_follows_the_contact_zone(report):
+    """Exact answer: one shooting line per pocket pressed by a sphere, from the pole (rho = 0, p_c/P the
+    state's contact_pressure_pole / P) to the contact edge (rho = rho_c, contact_pressure_edge / P), above 1
+    all along; panel (b) ends at rho/rho_c = 1; the FE's markers lie on the shooting's line."""
+    from pocket.validation.figures import figures, pocket_label
+
+    from pocket import shooting
+
+    results = report[2]
+    fig = next(f for f in figures(results) if f.name == "contact_pressure")
+    radii = _sphere_radii_mm(results)
+    lines = [s for s in fig.panels[0].series if s.solver == "shooting"]
+    assert len(lines) == len(radii) == 5
+    for line, scaled in zip(lines, (s for s in fig.panels[1].series if s.solver == "shooting"), strict=True):
+        pocket = next(p for p in results.pockets if pocket_label(p) == line.group)
+        state = shooting.compress(pocket.material, pocket.pressure_initial, 0.5, **pocket.fluid_options())
+        assert line.x[0] == 0.0 and line.x[-1] == pytest.approx(state.contact_radius_deformed, rel=1e-9)
+        assert line.y[0] == pytest.approx(state.contact_pressure_pole / state.pressure, rel=1e-9)
+        assert line.y[-1] == pytest.approx(state.contact_pressure_edge / state.pressure, rel=1e-9)
+        assert (line.y > 1.0).all() and scaled.x[-1] == pytest.approx(1.0, rel=1e-9)
+        fe = next(s for s in fig.panels[0].series if s.group == line.group and s.solver == "FEM P2")
+        assert fe.y == pytest.approx(np.interp(fe.x, line.x, line.y), rel=1e-4)

@@ -1,8 +1,8 @@
 """The solves of a validation run, as functions of plain data (run in worker processes).
 
 ``reference(pocket, plan)``: the reference column (shooting) and the approximate one
-(the analytical model) on a grid of forces from 0 to near the end of the
-reference model's range, found by ``pocket.apps.inverse.range_end``: the
+(the analytical model, the flat plate's only: None under a curved indenter) on a grid
+of forces from 0 to near the end of the reference model's range, found by ``pocket.apps.inverse.range_end``: the
 largest Fhat with a compressed state (past it the free part of the sheet
 reaches the clamp plane).
 ``column_curve(pocket, column, forces)``: a solver column's curve (the FE columns).
@@ -27,6 +27,7 @@ from pocket.core.states import CompressedState
 
 from .failures import located
 from .plan import APPROXIMATE, RANGE_FRACTION, REFERENCE, Column, Plan
+from .suite import on_plate
 
 __all__ = ["Curves", "ColumnCurve", "reference", "column_curve", "fem_forces", "range_end", "force_grid",
            "DESIGN_FORCES", "RANGE_RTOL"]
@@ -43,7 +44,8 @@ RANGE_RTOL = 1e-3
 class Curves:
     """Reference and approximate compression curves of one pocket (index 0: Fhat = 0).
 
-    ``approximate`` holds None where a force is past the approximate model's own range.
+    ``approximate`` holds None where a force is past the approximate model's own range, and at every force
+    of a pocket pressed by a curved indenter (the paper's model is the flat plate's).
     """
 
     pocket: Pocket
@@ -110,8 +112,10 @@ def reference(pocket: Pocket, plan: Plan) -> Curves:
         end = range_end(pocket)
     forces = force_grid(end, plan.curve_points, fem_forces(plan.fem_forces_of(pocket), end))
     states = column_curve(pocket, REFERENCE, forces).states
-    with located(pocket.case.name, "analytical column", _mesh(APPROXIMATE), _forces(forces)):
-        approximate = _pointwise(pocket, APPROXIMATE, forces)
+    approximate = (None,) * len(forces)
+    if on_plate(pocket):
+        with located(pocket.case.name, "analytical column", _mesh(APPROXIMATE), _forces(forces)):
+            approximate = _pointwise(pocket, APPROXIMATE, forces)
     return Curves(pocket=pocket, force_end=end, forces=forces, reference=states, approximate=approximate)
 
 

@@ -21,7 +21,8 @@ __all__ = ["draw", "write_csv", "math_text", "PALETTE"]
 
 #: the colour cycle: matplotlib's ten, then three more, enough for one colour per pocket of the suite
 PALETTE = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
-           "#17becf", "navy", "darkgoldenrod", "teal")
+           "#17becf", "navy", "darkgoldenrod", "teal", "maroon", "olive", "darkviolet", "saddlebrown", "deeppink",
+           "slategray")
 _WIDTH = 6.4  # inches per panel
 _EMPHASIS = "0.15"  # the headline pocket's colour: near black
 _BROAD = 3.4  # the headline pocket's line width
@@ -138,7 +139,8 @@ _SYMBOLS = (("A_c / (pi R^2)", r"$A_c/(\pi R^2)$"), ("F / (P_I pi R^2)", r"$F/(P
             ("F/(P_I pi R^2)", r"$F/(P_I\pi R^2)$"), ("H / H_0", r"$H/H_0$"), ("H / R", r"$H/R$"),
             ("P / P_I", r"$P/P_I$"), ("rho / R", r"$\rho/R$"), ("eta / R", r"$\eta/R$"),
             ("H_0", r"$H_0$"), ("a_c", r"$a_c$"), ("Fhat", r"$\hat F$"), ("Phat_I", r"$\hat P_I$"),
-            ("alpha", r"$\alpha$"), ("lambda_1", r"$\lambda_1$"), ("<=", r"$\leq$"))
+            ("alpha", r"$\alpha$"), ("lambda_1", r"$\lambda_1$"), ("<=", r"$\leq$"),
+            ("rho / rho_c", r"$\rho/\rho_c$"), ("p_c / P", r"$p_c/P$"), ("R_s", r"$R_s$"))
 
 
 _PATTERN = re.compile("|".join(re.escape(p) for p, _ in sorted(_SYMBOLS, key=lambda s: -len(s[0]))))

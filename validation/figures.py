@@ -26,7 +26,7 @@ from pocket.apps.design import PAPER_FORCE_FACTOR
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .convergence import observed_order
 from .plan import RANGE_FRACTION
-from .suite import headline
+from .suite import headline, on_plate
 
 __all__ = ["Series", "Panel", "Figure", "figures", "convergence_figure", "curve_series", "paper_pockets", "STYLES",
            "pocket_label", "pocket_colors", "solver_key", "without_zeros", "NO_ZERO"]
@@ -199,8 +199,9 @@ def convergence_figure(results) -> Figure:
 
 
 def figures(results) -> list[Figure]:
-    """The paper's figs 2-5, the other rubbers' and the gases' figures (``others``) and the convergence
-    study, from a run's results."""
+    """The paper's figs 2-5, the other rubbers' and the gases' figures (``others``), the fingertips'
+    (``fingertips``) and the convergence study, from a run's results."""
+    from .fingertips import fingertip_figures
     from .others import other_figures
 
     head = headline(results.pockets)
@@ -216,7 +217,7 @@ def figures(results) -> list[Figure]:
                       f"nodes subsampled to {_PROFILE_MARKERS} markers.", tuple(panels)))
     against = _against_force(results)
     out += [against["fig3a"], against["fig3b"], _fig4(results), against["fig5"]]
-    out += other_figures(results)
+    out += other_figures(results) + fingertip_figures(results)
     if results.sequences:
         out.append(convergence_figure(results))
     return [without_zeros(f) for f in out]
@@ -259,5 +260,5 @@ def _fig4(results) -> Figure:
 
 
 def paper_pockets(pockets) -> list:
-    """The pockets of the paper's model: a Mooney-Rivlin rubber filled with a liquid."""
-    return [p for p in pockets if p.case.material.law == "mooney-rivlin" and not p.case.fluid.is_gas]
+    """The pockets of the paper's model: a Mooney-Rivlin rubber filled with a liquid, pressed by the plate."""
+    return [p for p in pockets if p.case.material.law == "mooney-rivlin" and not p.case.fluid.is_gas and on_plate(p)]

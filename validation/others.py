@@ -21,7 +21,7 @@ import numpy as np
 
 from .figures import Figure, Panel, Series, curve_series, paper_pockets, pocket_colors, pocket_label
 from .plan import RANGE_FRACTION
-from .suite import headline
+from .suite import headline, on_plate
 
 __all__ = ["other_figures"]
 
@@ -81,7 +81,8 @@ def other_figures(results) -> list[Figure]:
     fluids = [p for p in results.pockets if "fluids" in p.case.tags]
     if fluids:
         out.append(_fluids(results, fluids))
-    others = [p for p in results.pockets if p.case.material.law != "mooney-rivlin" and not p.case.fluid.is_gas]
+    others = [p for p in results.pockets
+              if p.case.material.law != "mooney-rivlin" and not p.case.fluid.is_gas and on_plate(p)]
     if others:
         main = [head] if head in paper_pockets(results.pockets) else []
         out.append(_laws(results, main + others))

@@ -10,7 +10,10 @@ other rubber laws and the gas-filled pockets) from the inflated state to near
 the end of the range, the others at their inflated state; ``--quick`` keeps the
 headline case's FE columns at three forces and the "fem-range" cases' at the
 inflated state, Fhat = 1 and near the end of the range: every law and fluid is
-cross-checked in both plans. The
+cross-checked in both plans. The pockets pressed by a sphere (tag "sphere") get the P2
+column only (``Plan.columns_of``): the P2 FE model against shooting is the verdict under a
+curved indenter, and a P1 curve costs about five times a P2 one there; their forces include
+Fhat = 0.5, where the contact-pressure figure compares the two solvers. The
 report's timing table gives each task's seconds, to re-tune these numbers.
 
 A column is a solver of ``pocket.apps.solvers`` with options, checked by its
@@ -24,7 +27,10 @@ import dataclasses
 
 from pocket.apps.solvers import record, solver_options
 
-__all__ = ["Column", "Plan", "DEFAULT", "QUICK", "RANGE_FRACTION", "REFERENCE", "APPROXIMATE", "FEM_COLUMNS"]
+from .suite import on_plate
+
+__all__ = ["Column", "Plan", "DEFAULT", "QUICK", "RANGE_FRACTION", "REFERENCE", "APPROXIMATE", "FEM_COLUMNS",
+           "INDENTER_COLUMNS"]
 
 #: curves run to this fraction of the end of the shooting model's range
 RANGE_FRACTION = 0.95
@@ -51,6 +57,8 @@ class Column:
 REFERENCE = Column("shooting", "shooting")
 APPROXIMATE = Column("analytical", "analytical")
 FEM_COLUMNS = (Column("fem", "FEM P1", (("order", 1),)), Column("fem", "FEM P2", (("order", 2),)))
+#: the FE columns of a pocket pressed by a curved indenter (module docstring)
+INDENTER_COLUMNS = FEM_COLUMNS[1:]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -64,7 +72,8 @@ class Plan:
         matches every case; ``None`` stands for RANGE_FRACTION times the end of the range, 0
         gives the inflated state.
     convergence_sizes: element counts per order of the mesh-convergence study.
-    fem_columns: the FE columns compared with the reference (shooting).
+    fem_columns: the FE columns compared with the reference (shooting) on a pocket pressed by the plate.
+    indenter_columns: those of a pocket pressed by a curved indenter.
     """
 
     name: str
@@ -72,6 +81,7 @@ class Plan:
     fem: dict
     convergence_sizes: dict
     fem_columns: tuple[Column, ...] = FEM_COLUMNS
+    indenter_columns: tuple[Column, ...] = INDENTER_COLUMNS
 
     def fem_forces_of(self, pocket) -> tuple:
         """The FE forces of ``pocket`` (empty: no FE column for it in this plan)."""
@@ -80,18 +90,22 @@ class Plan:
                 return self.fem[tag]
         return ()
 
+    def columns_of(self, pocket) -> tuple[Column, ...]:
+        """The FE columns of ``pocket``: by the indenter that presses it."""
+        return self.fem_columns if on_plate(pocket) else self.indenter_columns
+
 
 DEFAULT = Plan(
     name="default",
     curve_points=40,
     fem={"headline": (0.0, 0.05, 0.19, 0.5, 1.0, 2.0, 4.0, None), "fem": (0.0, 0.19, 1.0),
-         "fem-range": (0.0, 0.19, 1.0, 4.0, None), "*": (0.0,)},
+         "fem-range": (0.0, 0.19, 1.0, 4.0, None), "sphere": (0.19, 0.5, 1.0, None), "*": (0.0,)},
     convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
 )
 
 QUICK = Plan(
     name="quick",
     curve_points=20,
-    fem={"headline": (0.0, 0.19, 1.0), "fem-range": (0.0, 1.0, None)},
+    fem={"headline": (0.0, 0.19, 1.0), "fem-range": (0.0, 1.0, None), "sphere": (0.5, None)},
     convergence_sizes={1: (32, 64, 128), 2: (16, 32, 64)},
 )

@@ -140,7 +140,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
                     forces = plan.fem_forces_of(pockets[key])
                     if forces:
                         forces = compute.fem_forces(forces, done[kind][key].force_end)
-                        for j, column in enumerate(plan.fem_columns):
+                        for j, column in enumerate(plan.columns_of(pockets[key])):
                             submit("column", (key, j), compute.column_curve, pockets[key], column, forces)
     except BaseException:  # not shutdown(cancel_futures=True): killed workers and cancelled futures break it
         stop(pool)

@@ -26,10 +26,11 @@ from pocket.apps.design import paper_rules
 from pocket.apps.physical import Pocket, resolve
 from pocket.apps.tomlfiles import read_toml
 from pocket.core.errors import InputError
+from pocket.core.indenters import FLAT
 from pocket.core.inputs import check_alpha, check_finite, quote
 from pocket.core.units import positive
 
-__all__ = ["Button", "load", "headline", "CASES_FILE"]
+__all__ = ["Button", "load", "headline", "on_plate", "CASES_FILE"]
 
 CASES_FILE = pathlib.Path(__file__).with_name("cases.toml")
 
@@ -110,3 +111,8 @@ def load(path=CASES_FILE) -> tuple[tuple[Pocket, ...], Button]:
 def headline(pockets) -> Pocket:
     """The pocket tagged "headline" (the first one if none is)."""
     return next((p for p in pockets if "headline" in p.case.tags), pockets[0])
+
+
+def on_plate(pocket) -> bool:
+    """Whether ``pocket`` is pressed by the flat plate (the paper's indenter), not by a curved one."""
+    return pocket.case.indenter == FLAT

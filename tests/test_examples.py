@@ -1,0 +1,31 @@
+"""The runnable examples of ``examples/``, each run as a user runs it: a script in a subprocess."""
+
+import pathlib
+import re
+import subprocess
+import sys
+
+import pytest
+
+from pocket import shooting
+from pocket.core.indenters import sphere
+
+EXAMPLES = pathlib.Path(__file__).resolve().parent.parent / "examples"
+
+
+def test_fingertip_button_designs_for_the_sphere_and_writes_its_series(tmp_path):
+    """Exact answer: the example's printed design (Phat_I, Fhat) gives H/H0 = 0.8 under the 8 mm sphere
+    (K = 0.4) when shooting solves it afresh, P_I = F / (pi R^2 Fhat); its VTK series has the fingertip's
+    surface in every step beside the sheet's."""
+    run = subprocess.run([sys.executable, str(EXAMPLES / "fingertip_button.py"), str(tmp_path)],
+                         capture_output=True, text=True, timeout=300, check=False)
+    assert run.returncode == 0 and not run.stderr, run.stderr
+    phat_i = float(re.search(r"Phat_I = (\S+),", run.stdout).group(1))
+    fhat = float(re.search(r"Fhat = (\S+),", run.stdout).group(1))
+    state = shooting.compress(47 / 160, phat_i, fhat, indenter=sphere(0.4))
+    assert state.height_ratio == pytest.approx(0.8, abs=1e-8)
+    p_i = float(re.search(r"P_I = (\S+) kPa", run.stdout).group(1)) * 1e3
+    assert p_i == pytest.approx(0.67 / (3.141592653589793 * 0.02**2 * fhat), rel=1e-3)  # printed to 4 digits
+    vtk = tmp_path / "vtk"
+    steps = [len(re.findall(r'file="', (vtk / f"{part}.pvd").read_text())) for part in ("surface", "indenter")]
+    assert steps[0] == steps[1] == len(list(vtk.glob("step_*_indenter.vtu"))) == 11
