@@ -74,8 +74,8 @@ def register(subparsers) -> None:
                        help="cases file (default: the suite's own cases.toml): [[case]] tables, each with a label "
                             "and a case file's [case.sheet], [case.clamp] and [case.initial]; optional name (not "
                             "repeated), tags ('headline' picks the pocket of figure 2 and the convergence study, "
-                            "else the first) and [case.fluid]; no [case.loads] or [case.solver]; and one "
-                            "[design] table (the paper's soft button) with exactly radius, height (H0), "
+                            "else the first), [case.fluid] and [case.indenter]; no [case.loads] or [case.solver]; "
+                            "and one [design] table (the paper's soft button) with exactly radius, height (H0), "
                             "modulus (E), force, alpha and height_ratio (0 < H/H0 < 1), as in cases.toml")
         p.set_defaults(handler=handler)
 
