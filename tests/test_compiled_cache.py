@@ -220,6 +220,16 @@ def _copy_repository(target: pathlib.Path) -> pathlib.Path:
     return target
 
 
+def _without_pocket(packages: pathlib.Path, target: pathlib.Path) -> pathlib.Path:
+    """A folder of links to the entries of the folder ``packages`` but pocket's own (a regular install of the
+    test run's pocket there would otherwise stand before the new venv's, and be the one tested)."""
+    target.mkdir()
+    for entry in packages.iterdir() if packages.is_dir() else ():
+        if not entry.name.lower().startswith(("pocket", "__editable__.pocket", "__editable___pocket")):
+            (target / entry.name).symlink_to(entry)
+    return target
+
+
 def test_an_editable_install_over_an_uninstalled_regular_one_runs(tmp_path):
     """Exact answer: in a fresh virtual environment (the test's dependencies reached through a .pth file),
     pocket installed from a copy of the sources, run once (it compiles and caches), uninstalled and installed
@@ -234,8 +244,9 @@ def test_an_editable_install_over_an_uninstalled_regular_one_runs(tmp_path):
     python = venv / "bin" / "python"
     purelib = subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
                              capture_output=True, text=True, check=True).stdout.strip()
-    ours = [sysconfig.get_paths()["purelib"], *site.getsitepackages()]
-    pathlib.Path(purelib, "dependencies.pth").write_text("\n".join(dict.fromkeys(ours)) + "\n")
+    ours = [str(_without_pocket(pathlib.Path(folder), tmp_path / f"dependencies-{k}"))
+            for k, folder in enumerate(dict.fromkeys([sysconfig.get_paths()["purelib"], *site.getsitepackages()]))]
+    pathlib.Path(purelib, "dependencies.pth").write_text("\n".join(ours) + "\n")
     env = _environment(*_folders(tmp_path))
     pip = [sys.executable, "-m", "pip", "--python", str(python), "-q", "--disable-pip-version-check"]
     install = [*pip, "install", "--no-deps"]  # the build backend as a user gets it (build isolation)
