@@ -82,16 +82,14 @@ def options_text(options: dict) -> str:
     return " ".join(_option(name, options[name]) for name in sorted(options) if name != "fluid")
 
 
-def identity(solver: str, options: dict, material, fluid: Fluid) -> dict:
+def identity(solver: str, options: dict, material: Material, fluid: Fluid) -> dict:
     """The IDENTITY cells (text) of a point: ``solver`` its name and ``options`` its options (as
-    ``options_text``), ``material`` a Mooney-Rivlin alpha (its own column) or a ``Material``,
-    ``fluid`` a ``Fluid``."""
+    ``options_text``), ``material`` a ``Material`` (a Mooney-Rivlin rubber given by its alpha: that
+    alpha has its own column, and the parameters' cells stay empty), ``fluid`` a ``Fluid``."""
     cells = dict.fromkeys(IDENTITY, "")
-    cells.update(solver=solver, solver_options=options_text(options))
-    if isinstance(material, Material):
-        cells.update({name: _cell(value) for name, value in material.params}, material=material.law)
-    else:
-        cells["material"] = "mooney-rivlin"
+    cells.update(solver=solver, solver_options=options_text(options), material=material.law)
+    if material.exact_alpha is None:
+        cells.update({name: _cell(value) for name, value in material.params})
     cells.update({k: v if isinstance(v, str) else repr(v) for k, v in fluid.describe().items()})
     return cells
 
