@@ -464,3 +464,18 @@ def test_a_sweep_file_of_an_earlier_pocket_is_refused_saying_what_it_holds(tmp_p
     assert f"{path} is a sweep file of an earlier pocket (2 points: 2 of solver shooting), whose rows do not " \
            f"record {lacks}" in err, err
     assert path.read_text() == text
+
+
+def test_two_alphas_with_one_c1_c2_are_two_rows(tmp_path):
+    """Exact answer: a sweep over two neighbouring alphas whose C1, C2 round alike (found by searching up from
+    alpha = 1.5) solves both, each row holding its own alpha."""
+    import math
+
+    alpha = 1.5
+    while mooney_rivlin(alpha).params != mooney_rivlin(math.nextafter(alpha, 2.0)).params:
+        alpha = math.nextafter(alpha, 2.0)
+    alphas = [alpha, math.nextafter(alpha, 2.0)]
+    path = tmp_path / "ulp.csv"
+    with CountingExecutor() as executor:
+        assert run_sweep(path, alphas, [0.1], [0.2], executor, solver="analytical") == (2, 0)
+    assert [float(r["alpha"]) for r in csv.DictReader(path.open())] == alphas
