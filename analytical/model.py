@@ -63,7 +63,7 @@ from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import LIQUID, as_fluid
 from pocket.core.indenters import as_indenter, formulation
 from pocket.core.inputs import check_force, check_positive
-from pocket.core.materials import Material, as_material, given_alpha
+from pocket.core.materials import as_material
 from pocket.core.states import CompressedState, InflatedState, Profile
 
 __all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT", "CONTACTS"]
@@ -117,20 +117,18 @@ def _profile(r, rho, eta, l1, l2, contact):
 def inflate(material, pressure) -> InflatedState:
     """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``.
 
-    ``material``: the rubber, a Mooney-Rivlin alpha or any ``pocket.core.materials.Material`` (only
-    mu_0 enters, through Phat: module docstring); echoed by the state."""
-    checked = as_material(material)
-    alpha = given_alpha(material)
+    ``material``: the rubber, any ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha,
+    ``as_material``; only mu_0 enters, through Phat: module docstring); echoed by the state."""
+    material = as_material(material)
     pressure = check_positive("pressure", pressure)
     s = smallstrain.pole_strain(pressure)
     r = np.linspace(0.0, 1.0, _N)
     l2 = 1.0 + s - s * r * r
     height = smallstrain.height_of_strain(s)
     profile = _profile(r, l2 * r, height * (1.0 - r * r), np.full_like(r, 1.0 + s), l2, np.zeros(r.size, bool))
-    return InflatedState(alpha=alpha, pressure=pressure, stretch_pole=1.0 + s, height=height,
+    return InflatedState(material=material, pressure=pressure, stretch_pole=1.0 + s, height=height,
                          volume=smallstrain.volume_of_strain(s), stretch_clamp=1.0 + s,
-                         profile=profile, solver="analytical", warnings=_warnings(lambda_0=1.0 + s),
-                         material=checked if isinstance(material, Material) else None)
+                         profile=profile, solver="analytical", warnings=_warnings(lambda_0=1.0 + s))
 
 
 def _contact_strain(a, s0, pressure_initial=None, fluid=LIQUID):
@@ -171,7 +169,7 @@ def _compressed(inflated, force, a, fluid, indenter):
                        r <= a if a > 0.0 else np.zeros(r.size, bool))
     height = np.sqrt(sc) * shape_function(0.0, a)
     return CompressedState(
-        alpha=inflated.alpha, pressure_initial=inflated.pressure, force=force, pressure=phat,
+        pressure_initial=inflated.pressure, force=force, pressure=phat,
         pressure_ratio=phat / inflated.pressure, contact_area=((1.0 + sc) * a) ** 2,
         contact_radius=a, stretch_contact=1.0 + sc, height=height,
         height_ratio=height / inflated.height,

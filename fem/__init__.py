@@ -9,7 +9,7 @@ that every element is smooth and the contact is exact) or on a fixed mesh by
 penalty with augmented-Lagrangian updates; a sphere (``surfaces``) edge-fitted too, the sheet in
 contact lying exactly on it (``obstacle``, ``wrapping``, ``wrapstates``), or by penalty on its vertical gap
 (``spherepenalty``). The rubber is any law of
-``pocket.core.materials`` (a float is a Mooney-Rivlin alpha); the pocket holds
+``pocket.core.materials`` (a number is a Mooney-Rivlin alpha, ``mooney_rivlin``); the pocket holds
 a liquid (fixed volume) or a gas sealed at the initial pressure (the
 polytropic law ties the pressure to the volume).
 

@@ -4,9 +4,9 @@ Inputs are checked before any work (``pocket.core.inputs``; a mesh the solver
 cannot use is an ``InputError`` saying why). The states are built and
 checked by ``results``; the curves are driven by ``curves``.
 
-The rubber comes first: a float is a Mooney-Rivlin alpha = C2/C1 (as it always
-was), a ``pocket.core.materials.Material`` any law in any stress unit
-(``material``). The fluid of a compression is a keyword: None (a liquid) or a
+The rubber comes first: a ``pocket.core.materials.Material``, any law in any
+stress unit (``material``; a number is taken as a Mooney-Rivlin alpha = C2/C1
+and converted once, by ``as_material``). The fluid of a compression is a keyword: None (a liquid) or a
 ``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
 units, Phat_atm = P_atm R / (E T) (``gas``); so is the indenter: None (the flat plate) or a
 ``pocket.core.indenters.Indenter`` whose kind ``CONTACTS`` maps to the contact methods that pose it
@@ -135,7 +135,7 @@ def _contact(indenter, contact, penalty, augmented) -> tuple[str, float, bool]:
 def inflate(material, pressure, *, mesh=None, elements=None, order=2, tol=1e-10):
     """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
 
-    material: the rubber (a Mooney-Rivlin alpha, or a Material). mesh: nodes of [0, 1] (array, shape
+    material: the rubber (a Material, or a Mooney-Rivlin alpha: ``as_material``). mesh: nodes of [0, 1] (array, shape
     (n+1,)) or a mesh file; else the default mesh family of ``elements`` (default: DEFAULT_ELEMENTS with
     P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or 2. tol: Newton tolerance.
     """

@@ -1,16 +1,14 @@
 r"""The rubber as the solver sees it: a law's code and parameters, and what the states echo.
 
-``law_of`` takes what a caller gives: a float is a Mooney-Rivlin rubber by its
-alpha = C2/C1 (as it always was), a ``pocket.core.materials.Material`` any law in
-any stress unit. It keeps that value to echo in the states (``alpha`` the float,
-else None; ``material`` the Material, else None: the state then fills in
-``mooney_rivlin(alpha)``) and turns the law into the kernel's code and
-parameters (``laws``) through this solver's table ``KERNELS``, its stresses
+``law_of`` takes a ``pocket.core.materials.Material``, any law in any stress
+unit (a number is taken as a Mooney-Rivlin alpha = C2/C1, ``as_material``). It
+keeps that Material for the states to echo and turns the law into the kernel's
+code and parameters (``laws``) through this solver's table ``KERNELS``, its stresses
 divided by E = 3 mu_0 (``Material.scaled`` gives them in units of mu_0; a third
 of that is units of E). A law of the registry that the table lacks is refused
 in one line naming the law and the solver (InputError), never run as another.
-A Mooney-Rivlin Material is held by its alpha = C2/C1 and s = 1 / (6 (1 + alpha)),
-exactly as the float alpha is, so that the two give the same numbers.
+A Mooney-Rivlin Material is held by its alpha = C2/C1 (the alpha it was given
+by, if any) and s = 1 / (6 (1 + alpha)).
 
 Planar stretch at the clamp (``planar_stretch``): with lambda_2 = 1 the
 meridional tension is T_1 = w_1(l, 1); ``post`` measures T_1 there and needs
@@ -34,7 +32,7 @@ from scipy.optimize import brentq
 
 from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.inputs import quote
-from pocket.core.materials import Material, as_material, given_alpha
+from pocket.core.materials import Material, as_material
 
 from . import laws
 
@@ -43,13 +41,12 @@ __all__ = ["KERNELS", "Law", "law_of"]
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Law:
-    """The kernel's ``code`` and ``params`` (``laws``), the values states echo (``alpha``, ``material``),
-    a ``label`` for messages and Gent's ``jm`` (inf: no locking)."""
+    """The kernel's ``code`` and ``params`` (``laws``), the ``material`` states echo, a ``label`` for
+    messages and Gent's ``jm`` (inf: no locking)."""
 
     code: int
     params: np.ndarray
-    alpha: float | None
-    material: Material | None
+    material: Material
     label: str
     jm: float = math.inf
 
@@ -119,12 +116,12 @@ def _scaled_params(material: Material) -> tuple[int, np.ndarray, float]:
 
 
 def law_of(value) -> Law:
-    """The Law of ``value``: a float (Mooney-Rivlin alpha, checked) or a Material (checked), both through
-    ``KERNELS``; the Law echoes the value as given (``alpha``, ``material``)."""
+    """The Law of the rubber ``value``, a Material (or a Mooney-Rivlin alpha: ``as_material``), checked,
+    through ``KERNELS``; the Law keeps the Material as given for the states to echo."""
     material = as_material(value)
     code, params, jm = _scaled_params(material)
     if material.exact_alpha is not None:
         label = f"alpha = {material.alpha!r}"
     else:
         label = f"{material.law} rubber " + ", ".join(f"{k} = {quote(v)}" for k, v in material.params)
-    return Law(code, params, given_alpha(value), value if isinstance(value, Material) else None, label, jm)
+    return Law(code, params, material, label, jm)

@@ -149,7 +149,7 @@ class Model:
 
 
 def discretize(material, nodes: np.ndarray, order: int, penalty: float) -> Model:
-    """The model of the rubber ``material`` (a Mooney-Rivlin alpha or a Material: ``material.law_of``) on
+    """The model of the rubber ``material`` (a Material, or a Mooney-Rivlin alpha: ``material.law_of``) on
     the reference vertices ``nodes`` (checked by the caller)."""
     return Model(law_of(material), np.asarray(nodes, dtype=float), reference(order), penalty)
 

@@ -77,8 +77,8 @@ def _fail(where: str, what: str):
 
 
 def _echo(model: Model, fill: Control | None = None) -> dict:
-    """The inputs a state echoes as given: alpha, material and (compressed) the fluid and the indenter."""
-    out: dict[str, object] = dict(alpha=model.law.alpha, material=model.law.material)
+    """The inputs a state echoes as given: the material and (compressed) the fluid and the indenter."""
+    out: dict[str, object] = dict(material=model.law.material)
     if fill is not None:
         out.update(fluid=_fluid(fill), indenter=fill.indenter)
     return out
@@ -156,7 +156,7 @@ def inflated(model: Model, y: np.ndarray, iterations: int, *, pressure: float | 
 def uncompressed(state: InflatedState, fill: Control, contact: str) -> CompressedState:
     """The state at Fhat = 0: the inflated one (with the fluid ``fill`` holds)."""
     return CompressedState(
-        alpha=state.alpha, material=state.material, fluid=_fluid(fill), pressure_initial=state.pressure, force=0.0,
+        material=state.material, fluid=_fluid(fill), pressure_initial=state.pressure, force=0.0,
         pressure=state.pressure, pressure_ratio=1.0,
         contact_area=0.0, contact_radius=0.0, stretch_contact=state.stretch_pole, height=state.height,
         height_ratio=1.0, volume=state.volume, profile=state.profile, inflated=state, solver="fem",

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pocket.core.materials import energy, mooney_rivlin
+from pocket.core.materials import energy
 from pocket.core.states import CompressedState
 
 from . import post
@@ -94,13 +94,7 @@ def _nodal_pressure(profile, surf, pressure: float, edge: float) -> np.ndarray:
 
 def _stored_energy(model: Model, y: np.ndarray, zn, surf) -> float:
     """U = 2 pi int w r dr (units E T R^2): the zone's points (``zn``) and the free part's (``model.fields``)."""
-    law = model.law
-    if law.material is None:  # a rubber given by its alpha alone
-        assert law.alpha is not None, "a law is given by a Material or by alpha"
-        given = mooney_rivlin(law.alpha)
-    else:
-        given = law.material
-    material = given.scaled()  # stresses in mu_0 = E / 3
+    material = model.law.material.scaled()  # stresses in mu_0 = E / 3
     k = contact_elements(model.elements)
     stretch = zn.drho * np.sqrt(1.0 + surf.slope(zn.rho) ** 2)
     inside = np.sum(zn.measure * zn.r * energy(material, stretch, zn.rho / zn.r))

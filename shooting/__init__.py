@@ -4,9 +4,9 @@
 ``compress`` / ``compression_curve`` step 2 (fixed volume, a flat frictionless
 plate or a sphere, force given), ``range_end`` the force at which step 2 leaves the model (the
 free sheet reaches the clamp plane; under a sphere also its equator, ``pocket.shooting.sphereend``).
-The rubber is a Mooney-Rivlin alpha or any law of
-``pocket.core.materials`` (its tensions derived from its strain energy in
-``pocket.shooting.tensions``); a compression's fluid is a liquid or a gas sealed at the
+The rubber is any law of ``pocket.core.materials`` (a number is a Mooney-Rivlin
+alpha, ``mooney_rivlin``), its tensions derived from its strain energy in
+``pocket.shooting.tensions``; a compression's fluid is a liquid or a gas sealed at the
 initial pressure (``pocket.core.fluids``; ``pocket.shooting.problem``). The states are
 ``pocket.core.states`` containers; the equations and their derivation are in
 ``pocket.shooting.equations``, the range end in ``pocket.shooting.rangeend``. ``SOLVER`` is

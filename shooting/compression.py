@@ -179,7 +179,6 @@ def plate_state(problem, force, x, fluid) -> tuple[CompressedState, float]:
     profile = profile_from_steps(steps, problem.law, lc, contact_radius=a)
     low = tension_minima(profile, steps, problem.law, p, problem.tolerance)
     state = CompressedState(
-        alpha=inflated.alpha,
         pressure_initial=inflated.pressure,
         force=force,
         pressure=inflated.pressure * q,
@@ -206,7 +205,7 @@ def _uncompressed(problem: Problem, force: float, fluid) -> CompressedState:
     """Fhat = 0: the inflated state itself, seen as a compressed state with no contact."""
     inflated = problem.inflated
     return CompressedState(
-        alpha=inflated.alpha, pressure_initial=inflated.pressure, force=force,
+        pressure_initial=inflated.pressure, force=force,
         pressure=inflated.pressure, pressure_ratio=1.0, contact_area=0.0, contact_radius=0.0,
         stretch_contact=inflated.stretch_pole, height=inflated.height, height_ratio=1.0,
         volume=inflated.volume, profile=inflated.profile, inflated=inflated, solver="shooting",
@@ -219,7 +218,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
                       progress=None) -> list[CompressedState]:
     """Compress at each force Fhat = F/(P_I pi R^2) of ``forces`` (any order), by continuation.
 
-    material: the rubber, a Mooney-Rivlin alpha or a ``pocket.core.materials.Material``. fluid: None
+    material: the rubber, a ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha, ``as_material``). fluid: None
     or "liquid" (fixed volume), or a gas (``pocket.core.fluids.gas``, its ambient pressure as
     Phat_atm = P_atm R / (E T)), sealed at Phat_I. indenter: None (the flat plate) or a
     ``pocket.core.indenters.Indenter`` this solver poses (an InputError for another). Returns the states

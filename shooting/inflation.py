@@ -45,7 +45,7 @@ import math
 from pocket.core import smallstrain
 from pocket.core.errors import ConvergenceError, OutOfRangeError, above_pressure_maximum
 from pocket.core.inputs import check_positive
-from pocket.core.materials import Material, given_alpha
+from pocket.core.materials import as_material
 from pocket.core.states import InflatedState
 
 from . import brent
@@ -218,20 +218,15 @@ def _state(l0, law, p, tol, what, echo):
                          tension_2_min=low[1])
 
 
-def _given(material) -> dict:
-    """The rubber as a state echoes it: ``alpha`` (the float, or None) and ``material`` (None for a float)."""
-    return dict(alpha=given_alpha(material), material=material if isinstance(material, Material) else None)
-
-
 def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     """Inflate at pressure Phat = P R / (E T) (pressure control, first branch).
 
-    material: the rubber, a Mooney-Rivlin alpha = C2/C1 (> -1) or a ``pocket.core.materials.Material``
-    (any stress unit). pressure: Phat (> 0). rtol: ODE tolerance.
+    material: the rubber, a ``pocket.core.materials.Material`` (any stress unit; a number is taken as the
+    Mooney-Rivlin alpha = C2/C1, ``as_material``). pressure: Phat (> 0). rtol: ODE tolerance.
     Raises OutOfRangeError if Phat exceeds the first-branch maximum of Phat(V).
     """
+    material = as_material(material)
     law = law_of(material)
-    echo = _given(material)
     pressure = check_positive("pressure", pressure)
     p = law.pressure_factor * pressure
     s_est = smallstrain.pole_strain(pressure)
@@ -262,14 +257,14 @@ def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     s = brent.root(miss, lo, hi, fa=f_lo, fb=f_hi, rtol=_S_RTOL)
     if abs(branch.phat(s) / pressure - 1.0) > 1e-7:  # a root of m on another branch: follow p(s) itself
         s = brent.root(lambda x: branch.phat(x, True) - pressure, lo, hi, rtol=_S_RTOL)
-    return _state(1.0 + s, law, p, tol, what, dict(echo, pressure=pressure))
+    return _state(1.0 + s, law, p, tol, what, dict(material=material, pressure=pressure))
 
 
 def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:
     """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima).
     ``material`` as for ``inflate``."""
+    material = as_material(material)
     law = law_of(material)
-    echo = _given(material)
     volume = check_positive("volume", volume)
     s_est = smallstrain.strain_of_volume(volume)
     tol = _tolerance(rtol, s_est)
@@ -292,4 +287,4 @@ def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:
 
     lo, hi, _ = _first_branch(volume_of, volume, s_est, "volume", law.stretch_limit - 1.0)
     s = brent.root(lambda x: volume_of(x) - volume, lo, hi, rtol=_S_RTOL)
-    return _state(1.0 + s, law, branch.pressure(s, precise=True), tol, what, dict(echo, volume=volume))
+    return _state(1.0 + s, law, branch.pressure(s, precise=True), tol, what, dict(material=material, volume=volume))

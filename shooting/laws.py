@@ -1,10 +1,11 @@
 """A rubber as the compiled shooting code takes it: a law code, a parameter array and its units.
 
-``law_of`` turns what a caller gives (a Mooney-Rivlin alpha, or any ``pocket.core.materials.Material``,
-in any stress unit) into a ``Law``: the kernel's code and parameters (``pocket.shooting.tensions``),
-stresses in units of mu_0, and the pressure factor p / Phat = 3 mu_0 / tau of the kernel's tension unit
-tau (tau = 2 C1 for Mooney-Rivlin, as in the paper's solver; mu_0 for every other law). A rubber given by
-alpha keeps the exact arithmetic of the Mooney-Rivlin solver (p = 3 (1 + alpha) Phat).
+``law_of`` turns a ``pocket.core.materials.Material``, in any stress unit (a number: the Mooney-Rivlin
+alpha of ``mooney_rivlin``, converted by ``as_material``), into a ``Law``: the kernel's code and
+parameters (``pocket.shooting.tensions``), stresses in units of mu_0, and the pressure factor
+p / Phat = 3 mu_0 / tau of the kernel's tension unit tau (tau = 2 C1 for Mooney-Rivlin, as in the
+paper's solver; mu_0 for every other law). A rubber given by alpha keeps the exact arithmetic of the
+Mooney-Rivlin solver (p = 3 (1 + alpha) Phat).
 
 ``KERNELS`` is this solver's table from a law's name to its kernel: the code and the parameter
 array of ``pocket.shooting.tensions``. A law of the registry (``pocket.core.materials.LAWS``) that is
@@ -93,7 +94,7 @@ def _kernel(law: str):
 
 
 def law_of(value) -> Law:
-    """The ``Law`` of a rubber given as a Mooney-Rivlin alpha (a number) or a ``Material`` (checked): both
+    """The ``Law`` of a rubber, a ``Material`` (or a Mooney-Rivlin alpha: ``as_material``), checked: both
     through ``KERNELS``."""
     material = as_material(value)
     kernel = _kernel(material.law)

@@ -90,8 +90,8 @@ _ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid, indent
 
 
 def range_end(material, pressure_initial, *, fluid=None, indenter=None, rtol=1e-10) -> float:
-    """The largest force Fhat for which the pocket (its rubber ``material``, a Mooney-Rivlin alpha or a
-    ``Material``; Phat_I; its ``fluid`` and the ``indenter``, as for ``compression_curve``) has a
+    """The largest force Fhat for which the pocket (its rubber ``material``, a ``Material`` or a Mooney-Rivlin
+    alpha; Phat_I; its ``fluid`` and the ``indenter``, as for ``compression_curve``) has a
     compressed state (module docstring): forces up to and including it solve; above it, none do."""
     from .inflation import inflate
 

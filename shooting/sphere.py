@@ -211,7 +211,7 @@ class SphereProblem(Problem):
         pressure = inflated.pressure * q
         t0 = tensions(lc, lc, self.law.code, self.law.params)[0] * self.law.tension_scale
         state = CompressedState(
-            alpha=inflated.alpha, pressure_initial=inflated.pressure, force=force, pressure=pressure,
+            pressure_initial=inflated.pressure, force=force, pressure=pressure,
             pressure_ratio=q, contact_area=4.0 * (self.radius * math.sin(0.5 * edge[2])) ** 2,
             contact_radius=a, stretch_contact=lc, height=height, height_ratio=height / inflated.height,
             volume=y[4], profile=profile, inflated=inflated, solver="shooting", material=inflated.material,

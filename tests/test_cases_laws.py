@@ -12,7 +12,7 @@ from pocket.apps.cases import load
 from pocket.apps.physical import resolve
 from pocket.cli import main
 from pocket.core.fluids import gas
-from pocket.core.materials import Material
+from pocket.core.materials import Material, mooney_rivlin
 
 R, T, P_I = 0.02, 0.5e-3, 4000.0  # m, m, Pa
 FORCES = (0.0, 0.5, 1.0, 2.0)  # N
@@ -97,13 +97,14 @@ def test_run_each_law_and_fluid(law, fluid, tmp_path, capsys):
 
 
 def test_mooney_rivlin_takes_its_old_path(tmp_path):
-    """Exact: a c1/c2 case (with or without material = "mooney-rivlin") hands the solvers the float
+    """Exact: a c1/c2 case (with or without material = "mooney-rivlin") hands the solvers the rubber of
     alpha = C2/C1, as before other laws existed, and its rows are that solve to the last bit; Phat_I
     is P_I R / (E T) with E = 6 (C1 + C2)."""
     plain = case_text("mooney-rivlin").replace('material = "mooney-rivlin"\n', "")
     for text in (plain, case_text("mooney-rivlin")):
         pocket = resolve(load_text(tmp_path, text))
-        assert type(pocket.material) is float and pocket.material == 47e3 / 160e3 and pocket.fluid.kind == "liquid"
+        assert pocket.material == mooney_rivlin(47e3 / 160e3) and pocket.material.alpha == 47e3 / 160e3
+        assert pocket.fluid.kind == "liquid"
         assert pocket.pressure_initial == pytest.approx(P_I * R / (6 * 207e3 * T), rel=1e-15)
         result, _ = run_case(tmp_path, text)
         states = shooting.compression_curve(pocket.material, pocket.pressure_initial,

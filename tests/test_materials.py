@@ -1,5 +1,7 @@
 """The strain-energy laws: identities between laws, the small-strain modulus, and the checks."""
 
+import math
+
 import numpy as np
 import pytest
 
@@ -135,13 +137,13 @@ def test_bad_gas(ambient, gamma, message):
 
 
 def test_as_material_takes_an_alpha_or_a_checked_material():
-    """Exact answer: a number is the Mooney-Rivlin alpha in units of mu_0; a Material comes back as the same
-    object after its check; a Material built around the check, or a bad alpha, is a one-line InputError."""
-    from pocket.core.materials import as_material, given_alpha
+    """Exact answer: a number is the Mooney-Rivlin alpha in units of mu_0, kept exactly; a Material comes back as
+    the same object after its check; a Material built around the check, or a bad alpha, is a one-line InputError."""
+    from pocket.core.materials import as_material
 
-    assert as_material(0.3) == mooney_rivlin(0.3) and given_alpha(0.3) == 0.3
+    assert as_material(0.3) == mooney_rivlin(0.3) and as_material(0.3).exact_alpha == 0.3
     gent = law("gent", mu=0.3e6, jm=10.0)
-    assert as_material(gent) is gent and given_alpha(gent) is None
+    assert as_material(gent) is gent
     for bad, message in ((Material("gent", (("mu", 1.0), ("jm", -2.0))), "sheet.jm = -2.0"),
                          (Material("rubber", ()), "must be one of"), (-1.5, "alpha = -1.5"),
                          ("soft", "alpha = 'soft' is not a number")):
@@ -177,3 +179,32 @@ def test_material_takes_a_mapping_of_the_laws_parameter_names():
     with pytest.raises(InputError, match=r"^material\.c40 is not a parameter of the yeoh law \(its parameters: "
                        r"c10, c20, c30\)$"):
         Material("yeoh", {"c10": 1, "c20": 0, "c40": 1})
+
+
+@pytest.mark.parametrize("alpha, message", [(-1.0, "alpha = -1.0, but the Mooney-Rivlin model needs alpha > -1"),
+                                            (math.nan, "alpha = nan"), ("soft", "alpha = 'soft' is not a number")])
+def test_mooney_rivlin_refuses_a_bad_alpha_in_one_line(alpha, message):
+    """Exact answer: ``mooney_rivlin`` is where every alpha becomes a rubber, so it checks it (alpha = -1 would
+    divide by zero, a NaN would make a NaN rubber)."""
+    with pytest.raises(InputError, match=message) as err:
+        mooney_rivlin(alpha)
+    assert "\n" not in str(err.value)
+
+
+def _alphas_of_one_c1_c2():
+    """Two alphas one ulp apart whose mooney_rivlin rubbers have the same C1 and C2 (found, not assumed)."""
+    alpha = 1.5  # 1 + alpha in [2, 4) and C2 = alpha C1 in [1/4, 1/2): both coarser than a step of alpha
+    for _ in range(10_000):
+        other = math.nextafter(alpha, 2.0)
+        if mooney_rivlin(alpha).params == mooney_rivlin(other).params:
+            return alpha, other
+        alpha = other
+    raise AssertionError("no two neighbouring alphas share C1 and C2")
+
+
+def test_rubbers_given_by_two_alphas_are_two_rubbers():
+    """Exact answer: the solvers take a Mooney-Rivlin rubber by the alpha it was given by, so two alphas whose C1,
+    C2 round to the same numbers are still two rubbers: unequal, and two keys of a dict."""
+    a, b = _alphas_of_one_c1_c2()
+    assert mooney_rivlin(a) != mooney_rivlin(b) and len({mooney_rivlin(a), mooney_rivlin(b)}) == 2
+    assert mooney_rivlin(a) == mooney_rivlin(a) and hash(mooney_rivlin(a)) == hash(mooney_rivlin(a))

@@ -68,3 +68,15 @@ def test_a_material_given_by_alpha_is_solved_as_that_alpha(solver):
     module, options = SOLVERS[solver]
     by_alpha, by_material = (module.compress(given, 0.2, 0.3, **options) for given in (alpha, mooney_rivlin(alpha)))
     _same(by_alpha, by_material)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_a_float_alpha_and_mooney_rivlin_of_it_are_one_input(solver):
+    """Exact answer: an entry point converts a float alpha with mooney_rivlin, so passing either is passing the
+    same rubber: the same scalars (keys, their order and every bit, alpha first), the state's alpha that alpha."""
+    alpha = _alpha_that_does_not_round_trip()
+    module, options = SOLVERS[solver]
+    by_float, by_material = (module.compress(given, 0.2, 0.3, **(options or {})) for given in
+                             (alpha, mooney_rivlin(alpha)))
+    assert list(by_material.scalars().items()) == list(by_float.scalars().items())
+    assert next(iter(by_material.scalars().items())) == ("alpha", alpha) and by_material.inflated.alpha == alpha

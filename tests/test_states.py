@@ -39,31 +39,47 @@ def test_warnings_stay_out_of_the_scalars():
     assert report(noted) == {**state.scalars(), "warnings": ["a note"]}
 
 
-def _inflated(tension_2=None, **fields):
+def _inflated(tension_2=None, material=None):
+    from pocket.core.materials import mooney_rivlin
     from pocket.core.states import InflatedState
 
     parts = _fields(5)
     if tension_2 is not None:
         parts[6] = tension_2
-    return InflatedState(alpha=fields.pop("alpha", 0.3), pressure=0.3, stretch_pole=1.1, height=0.5, volume=0.8,
-                         stretch_clamp=1.05, profile=Profile(*parts), solver="test", **fields)
+    return InflatedState(material=mooney_rivlin(0.3) if material is None else material, pressure=0.3,
+                         stretch_pole=1.1, height=0.5, volume=0.8, stretch_clamp=1.05, profile=Profile(*parts),
+                         solver="test")
 
 
-def test_material_defaults_to_the_mooney_rivlin_of_alpha_and_is_reported():
-    """Exact answer: alpha = C2/C1 = 0.3 with mu_0 = 2 (C1 + C2) = 1 gives C1 = 1/2.6, C2 = 0.3/2.6."""
+def test_a_rubber_given_by_alpha_reports_that_alpha_first_and_its_c1_c2():
+    """Exact answer: alpha = C2/C1 = 0.3 with mu_0 = 2 (C1 + C2) = 1 gives C1 = 1/2.6, C2 = 0.3/2.6; the state's
+    alpha is the material's, and it is the first key reported."""
     state = _inflated()
-    assert state.material.law == "mooney-rivlin" and state.material.mu0 == pytest.approx(1.0, rel=1e-15)
+    assert state.alpha == 0.3 and state.material.mu0 == pytest.approx(1.0, rel=1e-15)
     out = state.scalars()
-    assert out["alpha"] == 0.3 and out["material"] == "mooney-rivlin"
+    assert next(iter(out)) == "alpha" and out["alpha"] == 0.3 and out["material"] == "mooney-rivlin"
     assert out["c1"] == pytest.approx(1 / 2.6, rel=1e-15) and out["c2"] == pytest.approx(0.3 / 2.6, rel=1e-15)
 
 
-def test_another_law_reports_no_alpha():
+@pytest.mark.parametrize("law, params", [("neo-hookean", {"mu": 1.0}), ("mooney-rivlin", {"c1": 160e3, "c2": 47e3})])
+def test_a_rubber_given_by_its_parameters_reports_no_alpha(law, params):
+    """Exact answer: the parameters as given, and no alpha (for Mooney-Rivlin none recomputed from C1, C2)."""
     from pocket.core.materials import check
 
-    state = _inflated(alpha=None, material=check("neo-hookean", {"mu": 1.0}))
+    state = _inflated(material=check(law, params))
     out = state.scalars()
-    assert "alpha" not in out and out["material"] == "neo-hookean" and out["mu"] == 1.0
+    assert state.alpha is None and "alpha" not in out and out["material"] == law
+    assert {k: out[k] for k in params} == params
+
+
+def test_a_state_has_no_alpha_of_its_own():
+    """Exact answer: the material is the one echo of the rubber; alpha cannot be given beside it."""
+    import dataclasses
+
+    state = _inflated()
+    assert "alpha" not in {f.name for f in dataclasses.fields(state)}
+    with pytest.raises(TypeError):
+        dataclasses.replace(state, alpha=0.5)
 
 
 def test_smallest_tensions_and_the_wrinkling_flag():

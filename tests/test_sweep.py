@@ -9,6 +9,7 @@ from pocket import analytical, shooting
 from pocket.apps.sweep import COLUMNS, run_sweep
 from pocket.apps.sweepfile import IDENTITY
 from pocket.cli import main
+from pocket.core.materials import mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState
 
 ALPHAS, PRESSURES, FORCES = [0.2, 47 / 160], [0.1, 0.31], [0.0, 0.2, 1.0, 15.0]  # 15: out of range at 0.31
@@ -24,7 +25,7 @@ class CountingExecutor(ThreadPoolExecutor):
 
     def submit(self, fn, *args, **kwargs):
         solver, material, pressure, forces, options = args
-        self.points += [(material, pressure, force) for force in forces]
+        self.points += [(material.alpha, pressure, force) for force in forces]
         self.tasks += 1
         return super().submit(fn, *args, **kwargs)
 
@@ -87,8 +88,8 @@ def test_a_curve_task_gives_the_points(solver, options):
     rel = 100 * (record(solver).option(tolerance[solver]).default if solver in tolerance else 1e-12)
     for alpha in ALPHAS:
         for pressure in PRESSURES:
-            curve = solve_curve(solver, alpha, pressure, FORCES, options)
-            points = [solve_point(solver, alpha, pressure, force, options) for force in FORCES]
+            curve = solve_curve(solver, mooney_rivlin(alpha), pressure, FORCES, options)
+            points = [solve_point(solver, mooney_rivlin(alpha), pressure, force, options) for force in FORCES]
             assert [r["status"] for r in curve] == [r["status"] for r in points]
             assert "out_of_range" in {r["status"] for r in curve} or pressure == 0.1
             for row, alone in zip(curve, points, strict=True):
@@ -170,9 +171,10 @@ def test_rows_record_the_grid_as_asked(tmp_path, monkeypatch):
 
     import pocket.apps.sweep as sweep
 
-    def compress(alpha, pressure_initial, force, **options):
-        state = shooting.compress(alpha, pressure_initial, force, **options)
-        return dataclasses.replace(state, alpha=math.nextafter(alpha, 2.0), force=math.nextafter(force, 2.0),
+    def compress(material, pressure_initial, force, **options):
+        state = shooting.compress(material, pressure_initial, force, **options)
+        return dataclasses.replace(state, material=mooney_rivlin(math.nextafter(material.alpha, 2.0)),
+                                   force=math.nextafter(force, 2.0),
                                    pressure_initial=math.nextafter(pressure_initial, 2.0))
 
     monkeypatch.setattr(sweep, "entry", _entry_of(compress))
@@ -508,3 +510,18 @@ def test_bad_sweep_indenter(tmp_path, capsys, extra, message):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
     assert not path.exists()
+
+
+def test_two_alphas_with_one_c1_c2_are_two_rows(tmp_path):
+    """Exact answer: a sweep over two neighbouring alphas whose C1, C2 round alike (found by searching up from
+    alpha = 1.5) solves both, each row holding its own alpha."""
+    import math
+
+    alpha = 1.5
+    while mooney_rivlin(alpha).params != mooney_rivlin(math.nextafter(alpha, 2.0)).params:
+        alpha = math.nextafter(alpha, 2.0)
+    alphas = [alpha, math.nextafter(alpha, 2.0)]
+    path = tmp_path / "ulp.csv"
+    with CountingExecutor() as executor:
+        assert run_sweep(path, alphas, [0.1], [0.2], executor, solver="analytical") == (2, 0)
+    assert [float(r["alpha"]) for r in csv.DictReader(path.open())] == alphas

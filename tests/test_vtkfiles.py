@@ -18,6 +18,7 @@ import pytest
 from pocket import shooting
 from pocket.apps import folders, resampling, vtkfiles
 from pocket.core.errors import InputError
+from pocket.core.materials import mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState, InflatedState, Profile
 
 NAMES = {"lambda_1", "lambda_2", "lambda_3", "T_1", "T_2", "contact", "displacement", "r"}
@@ -43,7 +44,7 @@ def cap(height, n=201, pressure=0.1):
     volume = math.pi * height**2 * (3 * a - height) / 3
     profile = _profile(r, rho, eta, np.zeros(n, bool), pressure)
     stretches = profile.stretch_1[0], height, volume, profile.stretch_1[-1]
-    return InflatedState(0.3, pressure, *stretches, profile, "test")
+    return InflatedState(mooney_rivlin(0.3), pressure, *stretches, profile, "test")
 
 
 def pressed_shape(r, contact_radius=0.3, stretch=1.2, height=0.3):
@@ -79,8 +80,9 @@ def pressed(n=201, contact_radius=0.3, stretch=1.2, height=0.3, r=None):
     inflated = cap(0.4)
     area = c * c  # A_c / (pi R^2)
     return CompressedState(
-        0.3, inflated.pressure, pressure * area / inflated.pressure, pressure, pressure / inflated.pressure,
-        area, contact_radius, stretch, H, H / inflated.height, volume, profile, inflated, "test",
+        mooney_rivlin(0.3), inflated.pressure, pressure * area / inflated.pressure, pressure,
+        pressure / inflated.pressure, area, contact_radius, stretch, H, H / inflated.height, volume, profile,
+        inflated, "test",
     )
 
 

@@ -31,6 +31,7 @@ from pocket import analytical
 from pocket.apps.design import PAPER_FORCE_FACTOR, design
 from pocket.apps.inverse import force_where
 from pocket.core.errors import OutOfRangeError
+from pocket.core.materials import mooney_rivlin
 
 __all__ = ["Evidence", "collect", "eq9_residuals"]
 
@@ -72,7 +73,7 @@ def _pole_ratios() -> dict:
 
     out = {}
     for alpha in POLE_ALPHAS:
-        state = shooting.inflate(alpha, POLE_PRESSURE)
+        state = shooting.inflate(mooney_rivlin(alpha), POLE_PRESSURE)
         out[alpha] = float(state.profile.tension_1[0] / (2.0 * (state.stretch_pole - 1.0)))
     return out
 
@@ -82,19 +83,20 @@ def _small_strain(alpha) -> dict:
 
     from pocket import shooting
 
-    phat = pressure_of_stretch(1.0 + STRAIN_LIMIT, alpha) / (3.0 * (1.0 + alpha))
-    full, model = shooting.inflate(alpha, phat), analytical.inflate(alpha, phat)
+    rubber = mooney_rivlin(alpha)
+    phat = pressure_of_stretch(1.0 + STRAIN_LIMIT, rubber) / (3.0 * (1.0 + alpha))
+    full, model = shooting.inflate(rubber, phat), analytical.inflate(rubber, phat)
     return {"pressure_hat": float(phat), "height": float(model.height / full.height - 1.0),
             "volume": float(model.volume / full.volume - 1.0)}
 
 
-def _button(alpha, phat, state, target, at=None) -> dict:
+def _button(rubber, phat, state, target, at=None) -> dict:
     """Phat_I, H0/R and H/H0 of ``state`` (None: no state there), the Fhat where H/H0 = ``target``
     (``at``, else solved for) and the coefficient 1/Fhat."""
     from pocket import shooting
 
     if at is None:
-        at = force_where(shooting.SOLVER, alpha, phat, "height_ratio", target, increasing=False)
+        at = force_where(shooting.SOLVER, rubber, phat, "height_ratio", target, increasing=False)
     return {"pressure_hat": float(phat), "height": None if state is None else float(state.inflated.height),
             "height_ratio": None if state is None else float(state.height_ratio),
             "force_at_target": float(at), "coefficient": 1.0 / at}
@@ -104,17 +106,17 @@ def _buttons(button) -> tuple[dict, float]:
     """The "full" and "paper" buttons (module docstring) and k of T = k P_I R^4 / (E H0^3), full model."""
     from pocket import shooting
 
-    alpha, force, target = button.alpha, 1.0 / PAPER_FORCE_FACTOR, button.height_ratio
-    full = design(button.radius, button.height, button.modulus, alpha, button.force, target, solver="shooting")
+    rubber, force, target = mooney_rivlin(button.alpha), 1.0 / PAPER_FORCE_FACTOR, button.height_ratio
+    full = design(button.radius, button.height, button.modulus, rubber, button.force, target, solver="shooting")
     pressure, thickness = button.paper
     phat_paper = pressure * button.radius / (button.modulus * thickness)
     try:
-        paper_state = shooting.compress(alpha, phat_paper, force)
+        paper_state = shooting.compress(rubber, phat_paper, force)
     except OutOfRangeError:  # the paper's rules can ask for a pocket the model does not have
         paper_state = None
-    buttons = {"full": _button(alpha, full.pressure_initial, shooting.compress(alpha, full.pressure_initial, force),
+    buttons = {"full": _button(rubber, full.pressure_initial, shooting.compress(rubber, full.pressure_initial, force),
                                target, at=full.force),
-               "paper": _button(alpha, phat_paper, paper_state, target)}
+               "paper": _button(rubber, phat_paper, paper_state, target)}
     return buttons, (button.height / button.radius) ** 3 / full.pressure_initial
 
 

@@ -57,8 +57,8 @@ import numpy as np
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
 from pocket.core.indenters import FLAT
-from pocket.core.inputs import check_alpha, quote
-from pocket.core.materials import Material, as_material, mooney_rivlin
+from pocket.core.inputs import quote
+from pocket.core.materials import Material, as_material
 from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import positive
 
@@ -131,7 +131,9 @@ def _check(radius, height, modulus, material, force, height_ratio, fluid):
         raise InputError(f"height_ratio = {height_ratio!r} is not a number") from None
     if not 0.0 < ratio < 1.0:
         raise InputError(f"height_ratio = {height_ratio!r}, but a pressed button needs 0 < H/H0 < 1")
-    rubber = as_material(material).scaled() if isinstance(material, Material) else check_alpha(material)
+    rubber = as_material(material)
+    if rubber.exact_alpha is None:  # a rubber given by alpha is in units of mu_0 already (mooney_rivlin)
+        rubber = rubber.scaled()
     return (*values, rubber, ratio, as_fluid(fluid))
 
 
@@ -164,10 +166,11 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
            indenter=None, **options) -> Design:
     """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units.
 
-    ``material``: a Mooney-Rivlin alpha = C2/C1, or a ``pocket.core.materials.Material`` (any stress unit:
-    ``modulus`` sets E = 3 mu_0). ``fluid``: None (a liquid) or a gas (``pocket.core.fluids.gas``) with its
-    ambient pressure in Pa. ``indenter``: None (the flat plate) or an ``[indenter]`` table in physical units
-    (``pocket.apps.indenters.parse``: ``{"shape": "sphere", "radius": "8 mm"}``), what the finger is.
+    ``material``: a ``pocket.core.materials.Material`` (any stress unit: ``modulus`` sets E = 3 mu_0; a
+    number is taken as a Mooney-Rivlin alpha = C2/C1, ``as_material``). ``fluid``: None (a liquid) or a
+    gas (``pocket.core.fluids.gas``) with its ambient pressure in Pa. ``indenter``: None (the flat plate)
+    or an ``[indenter]`` table in physical units (``pocket.apps.indenters.parse``: ``{"shape": "sphere",
+    "radius": "8 mm"}``), what the finger is.
 
     A length outside the sizes of a pocket, or a designed sheet too thick for a membrane, is an ``InputError``;
     a plain length above 1 m (probably meant in mm) or T/R above 0.1 is one of the design's ``warnings``
@@ -215,5 +218,5 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
                   stiffness_N_per_m=float(stiffness[0]), curve_force_N=forces * scale,
                   curve_travel_m=np.array([height * (1.0 - s.height_ratio) for s in states[1:]]),
                   curve_stiffness_N_per_m=stiffness[1:], curve_limited=limited,
-                  material=rubber if isinstance(rubber, Material) else mooney_rivlin(rubber), fluid=fluid,
+                  material=rubber, fluid=fluid,
                   ambient=sealed["fluid"].ambient if sealed else None, warnings=tuple(warnings))

@@ -21,6 +21,7 @@ from pocket.core.errors import InputError, OutOfRangeError, PocketError
 from pocket.core.fluids import Fluid
 from pocket.core.indenters import FLAT
 from pocket.core.inputs import MAGNITUDES, quote
+from pocket.core.materials import Material, mooney_rivlin
 from pocket.core.units import written_like
 
 from .cases import Case
@@ -48,9 +49,10 @@ class Pocket:
         return self.case.alpha
 
     @property
-    def material(self):
-        """The rubber as the solvers take it: alpha (Mooney-Rivlin), else the law in units of mu_0."""
-        return self.case.alpha if self.case.alpha is not None else self.case.material.scaled()
+    def material(self) -> Material:
+        """The rubber as the solvers take it: a Mooney-Rivlin rubber by its C2/C1 (``mooney_rivlin``, as it
+        always was solved), another law in units of mu_0."""
+        return mooney_rivlin(self.case.alpha) if self.case.alpha is not None else self.case.material.scaled()
 
     @property
     def fluid(self) -> Fluid:

@@ -7,7 +7,7 @@ of stresses, ``exponents`` a list of numbers, Gent's ``jm`` a number); on the
 command line they are numbers in any one stress unit (``rubber``), rescaled to
 units of mu_0. Mooney-Rivlin keeps its own spellings: ``c1`` and ``c2`` (or
 ``modulus`` and ``alpha``) in a case file, ``--alpha`` on the command line, and
-the solvers get its float alpha = C2/C1, as they always did.
+the solvers get ``mooney_rivlin`` of its alpha = C2/C1, solved by that alpha as it always was.
 
 A fluid is a liquid (the default) or an ideal gas with its ambient (absolute)
 pressure P_atm > 0 and polytropic exponent gamma in [1, 5/3]

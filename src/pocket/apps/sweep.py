@@ -59,8 +59,8 @@ from concurrent.futures import as_completed
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
 from pocket.core.indenters import FLAT, Indenter, as_indenter
-from pocket.core.inputs import check_alpha, check_force, check_positive
-from pocket.core.materials import Material, as_material
+from pocket.core.inputs import check_force, check_positive
+from pocket.core.materials import Material, as_material, mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState
 
 from .folders import write_whole
@@ -87,17 +87,21 @@ def _row(solver: str, material, pressure_initial: float, force: float, options: 
         row.update(status="ok", message=line("; ".join(state.warnings)))
     row.update(identity(solver, options, material, as_fluid(options.get("fluid")),
                         as_indenter(options.get("indenter"))))  # the point as asked
-    row.update(alpha="" if isinstance(material, Material) else material, pressure_initial=pressure_initial,
-               force=force)
+    row.update(alpha=_alpha_cell(material), pressure_initial=pressure_initial, force=force)
     return row
+
+
+def _alpha_cell(material: Material):
+    """The ``alpha`` cell of a point: the alpha a Mooney-Rivlin rubber was given by, else empty."""
+    return "" if material.exact_alpha is None else material.exact_alpha
 
 
 def solve_point(solver: str, material, pressure_initial: float, force: float, options: dict) -> dict:
     """One grid point, from a fresh inflation, as a CSV row (dict of COLUMNS); model failures become
     a status, not an error.
 
-    ``material`` is a Mooney-Rivlin alpha or a ``Material``; ``options`` the solver's, with the
-    ``fluid`` (a ``Fluid``) if it is a gas and the ``indenter`` if it is not the flat plate."""
+    ``material`` is a ``Material``; ``options`` the solver's, with the ``fluid`` (a ``Fluid``) if it is a
+    gas and the ``indenter`` if it is not the flat plate."""
     try:
         state = entry(solver, "compress", "a sweep point")(material, pressure_initial, force, **options)
     except (OutOfRangeError, ConvergenceError) as err:
@@ -171,7 +175,7 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     """
     if material is not None and alphas:
         raise InputError("give either alphas (a Mooney-Rivlin rubber) or another law's material, not both")
-    materials = [check_alpha(a) for a in alphas or ()] if material is None else [as_material(material)]
+    materials = [mooney_rivlin(a) for a in alphas or ()] if material is None else [as_material(material)]
     grid = _grid(materials, pressures, forces)
     options = record(solver).checked(dict(options or {}), "compress")
     for name in ("compress", "compression_curve"):  # refused here, before the file is touched
@@ -183,7 +187,7 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     if indenter != FLAT:
         options["indenter"] = indenter
     cells = {m: identity(solver, options, m, fluid, indenter) for m in materials}
-    keys = [key({**cells[m], "alpha": "" if material is not None else m, "pressure_initial": p, "force": f})
+    keys = [key({**cells[m], "alpha": _alpha_cell(m), "pressure_initial": p, "force": f})
             for m, p, f in grid]
     journal = Journal(pathlib.Path(path))
     failed = True

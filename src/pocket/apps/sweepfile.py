@@ -95,16 +95,16 @@ def indenter_text(indenter: Indenter) -> str:
     raise InputError(f"a sweep records its indenter as text, the plate or a sphere, not a {indenter.kind}")
 
 
-def identity(solver: str, options: dict, material, fluid: Fluid, indenter: Indenter = FLAT) -> dict:
+def identity(solver: str, options: dict, material: Material, fluid: Fluid, indenter: Indenter = FLAT) -> dict:
     """The IDENTITY cells (text) of a point: ``solver`` its name and ``options`` its options (as
-    ``options_text``), ``material`` a Mooney-Rivlin alpha (its own column) or a ``Material``,
-    ``fluid`` a ``Fluid``, ``indenter`` as ``indenter_text``."""
+    ``options_text``), ``material`` a ``Material`` (a Mooney-Rivlin rubber given by its alpha: that
+    alpha has its own column, and the parameters' cells stay empty), ``fluid`` a ``Fluid``, ``indenter``
+    as ``indenter_text``."""
     cells = dict.fromkeys(IDENTITY, "")
-    cells.update(solver=solver, solver_options=options_text(options), indenter=indenter_text(indenter))
-    if isinstance(material, Material):
-        cells.update({name: _cell(value) for name, value in material.params}, material=material.law)
-    else:
-        cells["material"] = "mooney-rivlin"
+    cells.update(solver=solver, solver_options=options_text(options), material=material.law,
+                 indenter=indenter_text(indenter))
+    if material.exact_alpha is None:
+        cells.update({name: _cell(value) for name, value in material.params})
     cells.update({k: v if isinstance(v, str) else repr(v) for k, v in fluid.describe().items()})
     return cells
 

@@ -22,7 +22,7 @@ from pocket.apps.rubbers import DEFAULT_LAW, FLUIDS, gas_of, rubber
 from pocket.core.errors import InputError
 from pocket.core.fluids import AMBIENT
 from pocket.core.inputs import check_positive
-from pocket.core.materials import LAWS
+from pocket.core.materials import LAWS, mooney_rivlin
 from pocket.core.units import quantity
 
 from .common import number
@@ -73,8 +73,9 @@ def add_rubber_flags(parser, *, alphas: bool = False) -> None:
 
 
 def material_of(args):
-    """The rubber of the command line: the float alpha (or the list of ``--alpha`` values of a sweep) for
-    Mooney-Rivlin, else the law's ``Material`` in units of mu_0."""
+    """The rubber of the command line, a ``Material``: Mooney-Rivlin by its ``--alpha`` (``mooney_rivlin``,
+    the one conversion), else the law's in units of mu_0; a sweep's several ``--alpha`` values stay a list
+    of floats (its axis, converted by the sweep)."""
     given = {name: getattr(args, name) for name in law_flags() if getattr(args, name, None) is not None}
     if args.law == DEFAULT_LAW:
         if given:
@@ -83,7 +84,7 @@ def material_of(args):
                              "another law with --law)")
         if args.alpha is None:
             raise InputError("--alpha is missing: the mooney-rivlin law (the default --law) needs it")
-        return args.alpha
+        return args.alpha if isinstance(args.alpha, list) else mooney_rivlin(args.alpha)
     definition = LAWS[args.law]
     if args.alpha is not None:
         raise InputError(f"--alpha is not a parameter of the {args.law} law (its parameters: "

@@ -56,7 +56,7 @@ from .errors import InputError
 from .inputs import check_alpha, check_finite, quote
 
 __all__ = ["Parameter", "RubberLaw", "LAWS", "register", "Material", "mooney_rivlin", "energy", "check",
-           "as_material", "given_alpha"]
+           "as_material"]
 
 #: the units a parameter may have
 UNITS = ("stress", "dimensionless")
@@ -211,12 +211,14 @@ class Material:
 
     ``exact_alpha`` is the C2/C1 a Mooney-Rivlin rubber was given by (``mooney_rivlin``), kept because
     C2/C1 recomputed from its C1, C2 differs from it in the last bit for some alphas; ``alpha`` returns
-    it. It does not take part in comparisons.
+    it, and a state reports it as its ``alpha`` (None for a rubber given by its parameters). It takes
+    part in comparisons: the solvers take a Mooney-Rivlin rubber by this alpha where there is one, so
+    two rubbers that differ in it are solved as two rubbers.
     """
 
     law: str
     params: tuple[tuple[str, ParamValue], ...]
-    exact_alpha: float | None = dataclasses.field(default=None, compare=False, repr=False)
+    exact_alpha: float | None = dataclasses.field(default=None, repr=False)
 
     def __post_init__(self):
         if isinstance(self.params, Mapping):
@@ -271,25 +273,24 @@ class Material:
         return out
 
 
-def mooney_rivlin(alpha: float) -> Material:
-    """The Mooney-Rivlin rubber with C2/C1 = ``alpha``, in units of mu_0: C1 = 1 / (2 (1 + alpha))."""
+def mooney_rivlin(alpha) -> Material:
+    """The Mooney-Rivlin rubber with C2/C1 = ``alpha`` (a number, checked: -1 < alpha, an InputError
+    otherwise), in units of mu_0: C1 = 1 / (2 (1 + alpha)), C2 = alpha C1; it keeps ``alpha`` exactly
+    (``Material.exact_alpha``). The one conversion of an alpha, wherever one is given (``--alpha``, a
+    case file's ``sheet.alpha``, a sweep's alphas)."""
+    alpha = check_alpha(alpha)
     c1 = 0.5 / (1.0 + alpha)
     return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)), alpha)
 
 
 def as_material(value) -> Material:
-    """The rubber of ``value``: a ``Material``, re-checked and returned as given (in its own stress unit), or a
-    number, the Mooney-Rivlin alpha = C2/C1 (checked: alpha > -1), as ``mooney_rivlin(alpha)`` in units of mu_0."""
+    """The rubber every solver entry point works with: a ``Material``, re-checked and returned as given (in
+    its own stress unit). A number is taken, as a convenience for Python callers, as the Mooney-Rivlin
+    alpha = C2/C1 and converted here, and only here, by ``mooney_rivlin``."""
     if isinstance(value, Material):
         check(value.law, dict(value.params))
         return value
-    return mooney_rivlin(check_alpha(value))
-
-
-def given_alpha(value) -> float | None:
-    """The alpha a state echoes for the rubber ``value`` as given: the checked float for a number, None for a
-    ``Material`` (whatever its law: a state then reports the material itself)."""
-    return None if isinstance(value, Material) else check_alpha(value)
+    return mooney_rivlin(value)
 
 
 def _definition(law, where: str = "") -> RubberLaw:

@@ -25,16 +25,17 @@ A record lists the entry points its solver has (``entry_points``, keys of ``ENTR
 get them from it (``Solver.entry``): a request a solver cannot serve is a one-line ``InputError`` naming
 the solver and what it lacks, never an ``AttributeError`` from its module.
 
-``material`` is the rubber: a number is a Mooney-Rivlin alpha = C2/C1 (today's path, results
-unchanged), a ``pocket.core.materials.Material`` any law in any stress unit (the solver scales it to
-mu_0 itself; ``pocket.core.materials.as_material`` checks either). ``fluid`` is the fluid sealed in
+``material`` is the rubber, a ``pocket.core.materials.Material``: any law in any stress unit (the
+solver scales it to mu_0 itself), a Mooney-Rivlin one given by its alpha = C2/C1 as
+``mooney_rivlin(alpha)``; ``pocket.core.materials.as_material`` checks it at each entry point and, as a
+convenience for Python callers, takes a number as that alpha. ``fluid`` is the fluid sealed in
 the pocket at the initial pressure: None or "liquid" (fixed volume), or a gas
 (``pocket.core.fluids.gas``) whose ambient pressure is dimensionless like every pressure,
 Phat_atm = P_atm R / (E T) (``pocket.core.fluids.as_fluid`` checks it). Inflation takes no fluid: the
 gas is sealed once the pocket is inflated. ``indenter`` is what presses on the pocket: None (the flat
 plate, ``pocket.core.indenters.FLAT``) or an ``Indenter``; each solver maps the kinds it poses to its
 contact formulation in a table and refuses another kind in one line (``indenters.formulation``).
-States echo ``material`` as given (and ``alpha``, the number when a number was given, else None),
+States echo ``material`` as given (their ``alpha`` is derived from it: the alpha it was given by, else None),
 ``fluid`` as given (``LIQUID`` for None) and ``indenter`` (``FLAT`` for None).
 
 ``progress``, if given, is called as ``progress(done, total)`` after each force of a

@@ -6,10 +6,12 @@ the rubber, 6 (C1 + C2) for Mooney-Rivlin; T the sheet thickness), tensions
 (membrane stress resultants) in units of E T, volumes in R^3, force as
 Fhat = F / (P_I pi R^2).
 
-A state echoes its inputs exactly: ``alpha`` (a Mooney-Rivlin rubber given by
-C2/C1; None for another law), ``material``, ``pressure`` of an inflation,
+A state echoes its inputs exactly: ``material``, ``pressure`` of an inflation,
 ``pressure_initial``, ``force``, ``fluid`` and ``indenter`` of a compression are
-what the caller gave, never recomputed ones.
+what the caller gave, never recomputed ones. Its ``alpha`` is derived from the
+material: the C2/C1 a Mooney-Rivlin rubber was given by (``mooney_rivlin``,
+exactly), None for a rubber given by its parameters (a Mooney-Rivlin one given
+by C1, C2 reports those, not a recomputed C2/C1) and for every other law.
 
 Every state also carries its smallest tensions ``tension_1_min`` and
 ``tension_2_min`` (units E T; by default the minima over its profile) and
@@ -30,7 +32,7 @@ import numpy as np
 
 from .fluids import LIQUID, Fluid
 from .indenters import FLAT, Indenter
-from .materials import Material, mooney_rivlin
+from .materials import Material
 
 __all__ = ["Profile", "InflatedState", "CompressedState", "CHECKS"]
 
@@ -73,12 +75,8 @@ class Profile:
 
 
 def _complete(state) -> None:
-    """Fill the defaults of a new state: its material from alpha, its smallest tensions from its profile,
-    and a warning if one is not positive (frozen dataclass: object.__setattr__)."""
-    if state.material is None:
-        if state.alpha is None:
-            raise ValueError("a state needs alpha (Mooney-Rivlin) or a material")
-        object.__setattr__(state, "material", mooney_rivlin(state.alpha))
+    """Fill the defaults of a new state: its smallest tensions from its profile, and a warning if one is
+    not positive (frozen dataclass: object.__setattr__)."""
     profile = state.profile
     for k in (1, 2):
         name = f"tension_{k}_min"
@@ -111,11 +109,18 @@ class _Membrane:
     """What both states share: defaults filled in on creation, and the wrinkling flag."""
 
     # fields of both states (declared here for the type checker; each state's dataclass defines them)
+    material: Material
     tension_1_min: float
     tension_2_min: float
 
     def __post_init__(self):
         _complete(self)
+
+    @property
+    def alpha(self) -> float | None:
+        """The C2/C1 the rubber was given by (``Material.exact_alpha``); None for a rubber given by its
+        parameters."""
+        return self.material.exact_alpha
 
     @property
     def wrinkled(self) -> bool:
@@ -132,11 +137,11 @@ class InflatedState(_Membrane):
     ``warnings`` are one-line notes on a state that is returned but should not
     pass unremarked (an approximate model outside its range, a compressive
     tension); the command line prints them and JSON carries them. ``material``
-    (default: Mooney-Rivlin of ``alpha``, in units of mu_0) and the smallest
+    is the rubber as given (``mooney_rivlin(alpha)`` for an alpha); the smallest
     tensions (default: from the profile) are filled in when not given.
     """
 
-    alpha: float | None
+    material: Material
     pressure: float
     stretch_pole: float
     height: float
@@ -146,16 +151,14 @@ class InflatedState(_Membrane):
     solver: str
     extra: Mapping[str, float | str] = dataclasses.field(default_factory=dict)
     warnings: tuple[str, ...] = ()
-    material: Material | None = None
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
 
     KEYS = ("alpha", "pressure", "stretch_pole", "height", "volume", "stretch_clamp")
 
     def scalars(self) -> dict:
-        """The reported quantities as a flat dict (JSON-ready): KEYS (``alpha`` only for Mooney-Rivlin),
+        """The reported quantities as a flat dict (JSON-ready): KEYS (``alpha`` only for a rubber given by it),
         CHECKS, the material's law and parameters, then ``extra`` and the solver."""
-        assert self.material is not None, "filled in on creation"
         return _scalars(self, self.KEYS, self.extra, self.material.describe())
 
 
@@ -176,7 +179,7 @@ class CompressedState(_Membrane):
     ``warnings``, ``material`` and the smallest tensions as for ``InflatedState``.
     """
 
-    alpha: float | None
+    material: Material
     pressure_initial: float
     force: float
     pressure: float
@@ -192,7 +195,6 @@ class CompressedState(_Membrane):
     solver: str
     extra: Mapping[str, float | str] = dataclasses.field(default_factory=dict)
     warnings: tuple[str, ...] = ()
-    material: Material | None = None
     fluid: Fluid = LIQUID
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
@@ -223,5 +225,4 @@ class CompressedState(_Membrane):
         """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars`` with the
         ``CONTACT_KEYS`` a solver gave, and the fluid."""
         keys = self.KEYS + tuple(k for k in self.CONTACT_KEYS if math.isfinite(getattr(self, k)))
-        assert self.material is not None, "filled in on creation"
         return _scalars(self, keys, self.extra, {**self.material.describe(), **self.fluid.describe()})
