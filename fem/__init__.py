@@ -65,7 +65,7 @@ SOLVER = Solver(
     name="fem",
     summary="finite elements: P1/P2 membrane, volume multiplier, plate contact on an edge-fitted mesh",
     module=__name__,
-    entry_points=("inflate", "inflate_volume", "compress", "compression_curve"),
+    entry_points=("inflate", "inflate_volume", "compress", "compression_curve", "compress_height"),
     options=(
         Option("elements", "int", DEFAULT_ELEMENTS,
                f"elements of the default mesh, graded towards the axis ({MIN_ELEMENTS} to {MAX_ELEMENTS}; "

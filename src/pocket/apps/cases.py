@@ -22,7 +22,7 @@
     [initial]                            # exactly one of
     pressure = "4.8 kPa"                 # P_I, or height = "10 mm" (H0), or volume = "2 mL"
     [loads]                              # exactly one of
-    forces = ["0 N", "0.5 N", "1 N"]     # plate forces F, or heights = ["9 mm", "8 mm"] (plate heights H)
+    forces = ["0 N", "0.5 N", "1 N"]     # forces F, or heights = ["9 mm", "8 mm"] (indenter heights H)
     [indenter]                           # optional, default the flat plate (pocket.apps.indenters)
     shape = "sphere"                     # "plate", "sphere" with radius = "8 mm", or "profile" with
     radius = "8 mm"                      # file = "tip.csv" (relative to the case file's folder)
@@ -94,8 +94,8 @@ class Case:
 
     ``material`` is the rubber with its stresses in Pa, ``fluid`` the fluid (a gas's ambient
     pressure in Pa). ``initial`` is ``("pressure", P_I)``, ``("height", H0)`` or ``("volume", V)``;
-    ``load_kind`` is ``"forces"`` (F in N) or ``"heights"`` (plate height H in m), or ``""``
-    for a case without loads (the validation suite chooses its own). ``given`` maps each
+    ``load_kind`` is ``"forces"`` (F in N) or ``"heights"`` (H in m: the indenter's lowest point above the
+    clamp plane), or ``""`` for a case without loads (the validation suite chooses its own). ``given`` maps each
     physical key (``"sheet.thickness"``, ``"loads.forces[0]"``) to the value as written.
     ``warnings`` are about the inputs (``pocket.core.sizes``), one line each. ``indenter`` is what
     presses, dimensionless (``pocket.core.indenters``; lengths in units of the clamp radius).
@@ -197,7 +197,7 @@ def _loads(table, where, given) -> tuple[str, tuple[float, ...]]:
     for i, value in enumerate(values):
         si = quantity(f"{key}[{i}]", value, unit)
         if si < 0.0 or (kind == "heights" and si == 0.0):
-            bound = ">= 0 (the plate pushes)" if kind == "forces" else "> 0 (above the clamp plane)"
+            bound = ">= 0 (the indenter pushes)" if kind == "forces" else "> 0 (above the clamp plane)"
             raise InputError(f"{key}[{i}] = {quote(value)}, but it must be {bound}")
         given[f"{key}[{i}]"] = value
         out.append(si)

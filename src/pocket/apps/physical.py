@@ -149,28 +149,35 @@ def resolve(case: Case) -> Pocket:
     return Pocket(case, phat)
 
 
+def _pressing(case: Case) -> str:
+    """What presses the case's pocket, in a message: "plate" or "indenter"."""
+    return "plate" if case.indenter == FLAT else "indenter"
+
+
 def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
-    """Why plate height ``index`` (below the inflated height ``top``, m) has no state: it is below the
-    lowest plate height the model reaches, said in the case's own unit."""
+    """Why height ``index`` of the indenter (below the inflated height ``top``, m) has no state: it is below
+    the lowest height the model reaches, said in the case's own unit."""
     case = pocket.case
     given = case.as_given(f"loads.heights[{index}]")
     lowest = ""
     try:
         end = range_end(pocket.solver(), pocket.material, pocket.pressure_initial, **pocket.options())
-        compress = entry(pocket.solver(), "compress", "the lowest plate height")
+        compress = entry(pocket.solver(), "compress", f"the lowest {_pressing(case)} height")
         low = compress(pocket.material, pocket.pressure_initial, end, **pocket.options()).height
         lowest = f" ({written_like(low * case.radius, given, 'length')}; the inflated height is " \
                  f"{written_like(top, given, 'length')})"
     except PocketError:  # the reason stands without the number
         pass
-    return OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is below the lowest plate height the model "
-                           f"reaches{lowest}: the free part of the sheet would fold onto the clamp plane first")
+    why = ("the free part of the sheet would fold onto the clamp plane first" if case.indenter == FLAT else
+           "the model's range under this indenter ends first")
+    return OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is below the lowest {_pressing(case)} height "
+                           f"the model reaches{lowest}: {why}")
 
 
 def forces(pocket: Pocket) -> list[float]:
-    """The case's loads as forces Fhat (plate heights solved for their force).
+    """The case's loads as forces Fhat (heights of the indenter's lowest point solved for their force).
 
-    A plate height above the inflated pocket, or below the lowest the model reaches, or a force past the
+    A height above the inflated pocket, or below the lowest the model reaches, or a force past the
     end of the model's range (``pocket.apps.rangeend``), is an ``OutOfRangeError`` quoting the load as the
     case gives it, with the bound in its unit.
     """
@@ -186,8 +193,8 @@ def forces(pocket: Pocket) -> list[float]:
     for index, height in enumerate(case.loads):
         if height > top:
             given = case.as_given(f"loads.heights[{index}]")
-            raise OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket "
-                                  f"(H0 = {written_like(top, given, 'length')}): the plate would not touch it")
+            raise OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket (H0 = "
+                                  f"{written_like(top, given, 'length')}): the {_pressing(case)} would not touch it")
         try:
             out.append(force_where(solver, pocket.material, pocket.pressure_initial, "height", height / case.radius,
                                    increasing=False, **options))

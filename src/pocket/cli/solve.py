@@ -14,8 +14,9 @@ import math
 
 from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, entry
-from pocket.core.errors import ConvergenceError, InputError
+from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.indenters import FLAT
+from pocket.core.inputs import check_positive
 
 from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
 from .indenters import add_indenter_flags, indenter_of
@@ -38,8 +39,12 @@ def register(subparsers) -> None:
                                  "a pressure maximum; solvers shooting and fem)")
         else:
             p.add_argument("--pressure", type=number, required=True, help="initial Phat_I = P_I R / (E T)")
-            p.add_argument("--force", type=number, nargs="+", required=True,
-                           help="Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
+            load = p.add_mutually_exclusive_group(required=True)
+            load.add_argument("--force", type=number, nargs="+",
+                              help="Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
+            load.add_argument("--height", type=number, nargs="+", metavar="H",
+                              help="travel control: the indenter's lowest point at H/R above the clamp plane, "
+                                   "at most the inflated height H0/R (solver fem)")
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                        help="shooting (the reference, default), fem or analytical")
         p.add_argument("--json", action="store_true",
@@ -88,10 +93,30 @@ def _solve(args, step: str, material, options: dict) -> list:
         return [entry(args.solver, "inflate_volume", "--volume")(material, args.volume, **options)]
     if step == "inflate":
         return [entry(args.solver, "inflate", "--pressure")(material, args.pressure, **options)]
+    if args.height is not None:
+        return _at_heights(args, material, options)
     curve = entry(args.solver, "compression_curve", "--force")
     with progress_bar(f"compress ({args.solver})", " forces") as progress:
         extra = {} if progress is None or len(args.force) == 1 else {"progress": progress}
         return curve(material, args.pressure, args.force, **options, **extra)
+
+
+def _at_heights(args, material, options: dict) -> list:
+    """The compressed states with the indenter's lowest point at each ``--height`` H/R; a height above the
+    inflated pocket (where the indenter would not touch it) is an ``OutOfRangeError``."""
+    at_height = entry(args.solver, "compress_height", "--height")
+    heights = [check_positive("--height", h) for h in args.height]
+    states = []
+    with progress_bar(f"compress ({args.solver})", " heights") as progress:
+        for done, height in enumerate(heights, start=1):
+            state = at_height(material, args.pressure, height, **options)
+            if height > state.inflated.height:
+                raise OutOfRangeError(f"--height {height:.10g} is above the inflated pocket (H0/R = "
+                                      f"{state.inflated.height:.10g}): the indenter would not touch it")
+            states.append(state)
+            if progress is not None:
+                progress(done, len(heights))
+    return states
 
 
 def _main(args) -> int:
@@ -107,10 +132,12 @@ def _main(args) -> int:
         from pocket.apps.vtkfiles import KIND
 
         check_replaceable(args.vtk, KIND, "--vtk", overwrite=args.overwrite)
-        repeated = sorted({f for f in getattr(args, "force", ()) if args.force.count(f) > 1})
+        given = getattr(args, "height", None)
+        loads, name = (given, "height") if given else (getattr(args, "force", ()), "force")
+        repeated = sorted({f for f in loads if loads.count(f) > 1})
         if repeated:
-            raise InputError(f"--force gives {', '.join(map(repr, repeated))} more than once, but the time of a "
-                             "--vtk step is its force: give each force once")
+            raise InputError(f"--{name} gives {', '.join(map(repr, repeated))} more than once, but the time of a "
+                             f"--vtk step is its force: give each {name} once")
     states = _solve(args, step, material, options)
     rows = [report(s) for s in states]
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
@@ -122,7 +149,7 @@ def _main(args) -> int:
         write_series(args.vtk, steps, times=[getattr(s, "force", 0.0) for s in steps], overwrite=args.overwrite)
     warn(states)
     if args.json:
-        print(json.dumps(rows if step == "compress" and len(args.force) > 1 else rows[0]))
+        print(json.dumps(rows if step == "compress" and len(args.force or args.height) > 1 else rows[0]))
     else:
         print(f"# solver: {rows[0]['solver']}")
         print(_table(rows))

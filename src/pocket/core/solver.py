@@ -20,6 +20,9 @@ dimensionless units of ``pocket.core.states``:
 - ``compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options) -> CompressedState``
 - ``compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
   **options) -> list[CompressedState]``
+- ``compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, **options)
+  -> CompressedState``: travel control, the indenter's lowest point at ``height`` = H/R above the clamp
+  plane (optional: listed in ``entry_points`` by a solver that has it)
 
 A record lists the entry points its solver has (``entry_points``, keys of ``ENTRY_POINTS``), and callers
 get them from it (``Solver.entry``): a request a solver cannot serve is a one-line ``InputError`` naming
@@ -62,6 +65,7 @@ STEPS = ("inflate", "compress")
 #: entry point -> what it computes, in the words of an error naming what a solver lacks
 ENTRY_POINTS = {"inflate": "pressure-controlled inflation", "inflate_volume": "volume-controlled inflation",
                 "compress": "compression", "compression_curve": "compression curve",
+                "compress_height": "height-controlled compression",
                 "range_end": "end of the compression range"}
 
 
