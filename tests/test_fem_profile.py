@@ -58,10 +58,7 @@ def test_a_sphere_as_a_table_reproduces_the_sphere_to_the_interpolation_error():
 
 
 def test_a_sphere_as_exact_functions_reproduces_the_sphere():
-    k = RADIUS
-    shape = profiles.functions(lambda r: k - np.sqrt(k * k - r * r), lambda r: r / np.sqrt(k * k - r * r),
-                               lambda r: np.full_like(r, 1.0 / k), 0.9 * k)
-    difference = _worst(_curve(profile(shape)), _curve(sphere(RADIUS)))
+    difference = _worst(_curve(_exact_sphere()), _curve(sphere(RADIUS)))
     print(f"sphere as functions: within {difference:.3g}")
     assert difference < 1e-9
 
@@ -94,3 +91,27 @@ def test_the_force_on_a_paraboloid_is_the_integral_of_its_contact_pressure():
         print(f"Fhat = {force}: reaction {state.force!r}, integral of p_c {integral!r}")
         assert state.force == pytest.approx(force, rel=1e-12)
         assert integral == pytest.approx(state.force, rel=1e-4)
+
+
+def _exact_sphere():
+    k = RADIUS
+    return profile(profiles.functions(lambda r: k - np.sqrt(k * k - r * r), lambda r: r / np.sqrt(k * k - r * r),
+                                      lambda r: np.full_like(r, 1.0 / k), 0.9 * k))
+
+
+def test_the_penalty_method_poses_a_profile_as_it_poses_the_sphere():
+    quantities = ("height", "pressure", "contact_area")
+    states = [fem.compress(ALPHA, PRESSURE, 0.19, indenter=ind, contact="penalty")
+              for ind in (_exact_sphere(), sphere(RADIUS))]
+    assert _worst(states[:1], states[1:], quantities) < 1e-9
+
+
+def test_a_sheet_wrapping_past_the_end_of_a_profile_is_out_of_range():
+    """A paraboloid tabled up to rho = 0.3 R: a force that would wrap the sheet past its last row is
+    refused by name, quoting the force where the range ends (below the force asked)."""
+    from pocket.core.errors import OutOfRangeError
+
+    rho = np.linspace(0.0, 0.3, 20)
+    with pytest.raises(OutOfRangeError, match="wraps past the end of the indenter's profile") as err:
+        fem.compression_curve(ALPHA, PRESSURE, [0.19, 1.0], indenter=profile(profiles.table(rho, rho**2 / 2.0)))
+    assert str(err.value).startswith("force = 1 is beyond the model's range, which ends near force = 0.")
