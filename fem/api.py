@@ -60,7 +60,7 @@ MAX_RATIO = 1e3
 MIN_LENGTH = 1e-10
 #: indenter kind -> the contact methods (the model's modes, ``model``) that pose it; a curved one
 #: (``surfaces.SURFACES``) is posed edge-fitted by ``obstacle``, by penalty with ``spherepenalty``
-CONTACTS = {"flat": (FITTED, PENALTY), "sphere": (FITTED, PENALTY)}
+CONTACTS = {"flat": (FITTED, PENALTY), "sphere": (FITTED, PENALTY), "profile": (FITTED, PENALTY)}
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:

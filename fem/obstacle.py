@@ -335,8 +335,8 @@ def check_range(model: Model, y: np.ndarray, surf: Surface) -> None:
     where = f"at Phat = {y[n]:.6g}"
     rho_e = float(y[e])
     if not rho_e < surf.reach:
-        raise OutOfRangeError(f"the sheet wraps past the indenter's equator (contact radius rho_c/R = {rho_e:.6g} "
-                              f"reaches its radius {surf.reach:.6g}, {where}), outside the model")
+        raise OutOfRangeError(f"the sheet wraps past {surf.end} (contact radius "
+                              f"rho_c/R = {rho_e:.6g} reaches {surf.reach:.6g} R, {where}), outside the model")
     free_rho, free_eta = y[e: n: 2], y[e + 1: n: 2]
     under = free_rho < surf.reach
     gap = free_eta[under] - y[n + 1] - surf.height(free_rho[under])

@@ -10,6 +10,14 @@ indenter's parameters are in units of R. For a sphere of radius K, with q = sqrt
 the curved area of the cap rho < rho_c is 2 pi K z(rho_c), and the surface ends at its equator,
 ``reach`` = K. The principal curvatures of any profile are kappa_1 = z'' / (1 + z'^2)^(3/2)
 (meridional) and kappa_2 = z' / (rho sqrt(1 + z'^2)) (hoop; z''(0) on the axis): 1/K both on a sphere.
+
+A user's profile (``pocket.core.profiles.Shape``) gives z, z' and z'' up to its ``extent``, its
+``reach``. Its third derivative enters only the tangent (through c_ss, ``obstacle``), never the
+residual, so it is the central difference of z'' with step d = THIRD_STEP * extent (z'' is even,
+z''(-rho) = z''(rho); one-sided at the extent): its error, O(d^2 z^(5)) + O(eps z'' / d), about
+1e-10 relative, leaves the solution exact and Newton quadratic down to that level. The curved area
+of the cap rho < rho_c is the integral of 2 pi rho sqrt(1 + z'^2), by adaptive quadrature to
+``AREA_RTOL``.
 """
 
 from __future__ import annotations
@@ -21,13 +29,19 @@ import numpy as np
 
 from pocket.core.indenters import Indenter
 
-__all__ = ["Surface", "SURFACES", "surface"]
+__all__ = ["Surface", "SURFACES", "surface", "THIRD_STEP", "AREA_RTOL"]
+
+#: step of the central difference giving a profile's third derivative (a fraction of its extent; ~eps^(1/3))
+THIRD_STEP = 6e-6
+#: relative tolerance of the quadrature giving a profile's curved contact area
+AREA_RTOL = 1e-13
 
 
 @dataclasses.dataclass(frozen=True)
 class Surface:
     """z and its derivatives (each: rho array -> array of its shape, units R), the curved area of the
-    cap rho < rho_c (units R^2) and ``reach``, the largest radius the surface covers (units R)."""
+    cap rho < rho_c (units R^2) and ``reach``, the largest radius the surface covers (units R), which
+    ``end`` names in messages (a sphere's equator)."""
 
     height: Callable[[np.ndarray], np.ndarray]
     slope: Callable[[np.ndarray], np.ndarray]
@@ -35,6 +49,7 @@ class Surface:
     third: Callable[[np.ndarray], np.ndarray]
     area: Callable[[float], float]
     reach: float
+    end: str = "the indenter's equator"
 
     def curvatures(self, rho) -> tuple[np.ndarray, np.ndarray]:
         """(kappa_1, kappa_2) at ``rho`` (units 1/R; module docstring)."""
@@ -58,8 +73,29 @@ def _sphere(params: dict) -> Surface:
                    area=lambda rho_c: 2.0 * np.pi * k * float(k - root(rho_c)), reach=k)
 
 
+def _profile(params: dict) -> Surface:
+    shape = params["shape"]
+    extent, step = shape.extent, THIRD_STEP * shape.extent
+
+    def third(rho):
+        rho = np.asarray(rho, dtype=float)
+        hi = np.minimum(rho + step, extent)
+        return (shape.second(hi) - shape.second(np.abs(rho - step))) / (hi - (rho - step))
+
+    def area(rho_c: float) -> float:
+        from scipy.integrate import quad
+
+        def band(rho):
+            return 2.0 * np.pi * rho * np.sqrt(1.0 + float(shape.slope(np.asarray(rho))) ** 2)
+
+        return float(quad(band, 0.0, rho_c, epsabs=0.0, epsrel=AREA_RTOL, limit=200)[0])
+
+    return Surface(height=shape.height, slope=shape.slope, second=shape.second, third=third, area=area,
+                   reach=extent, end="the end of the indenter's profile")
+
+
 #: indenter kind -> its surface from its parameters (units R)
-SURFACES: dict[str, Callable[[dict], Surface]] = {"sphere": _sphere}
+SURFACES: dict[str, Callable[[dict], Surface]] = {"sphere": _sphere, "profile": _profile}
 
 
 def surface(indenter: Indenter) -> Surface:

@@ -99,7 +99,7 @@ def _at_equator(model: Model, y: np.ndarray, surf, err: ConvergenceError, target
     rho_c = float(y[2 * model.order * contact_elements(model.elements)])
     if rho_c > (1.0 - EQUATOR) * surf.reach:
         raise OutOfRangeError(f"{target} is beyond the model's range, which ends near {reached}: there the sheet "
-                              f"wraps past the indenter's equator (rho_c/R_s = {rho_c / surf.reach:.6f} at the last "
+                              f"wraps past {surf.end} (rho_c/R = {rho_c:.6f} of its {surf.reach:.6g}, at the last "
                               "state reached), outside the model") from err
 
 
