@@ -37,7 +37,6 @@ from pocket.core.errors import CLAMP_PLANE, ConvergenceError
 
 from . import newton
 from .rangeend import End
-from .sphere import EQUATOR, POLE, TOUCH
 
 __all__ = ["end_of_sphere"]
 
@@ -55,10 +54,9 @@ def _solve(problem, force, guess, jacobian=None):
 
 
 def _scaled(problem, margins) -> dict[str, float]:
-    """The margins in comparable units: the angles by pi/2 and pi, the lengths by the inflated height."""
-    height = problem.inflated.height
-    return {EQUATOR: margins[EQUATOR] / (0.5 * math.pi), CLAMP_PLANE: margins[CLAMP_PLANE] / math.pi,
-            POLE: margins[POLE] / height, TOUCH: margins[TOUCH] / height}
+    """The margins in comparable units (``problem.scales``: the angles by pi/2 and pi, the lengths by the
+    inflated height)."""
+    return {key: value / problem.scales[key] for key, value in margins.items()}
 
 
 def _first(problem, seed):
