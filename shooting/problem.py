@@ -183,10 +183,11 @@ class Problem:
         return np.array(out if angle is None else [*out, y[2] - angle])
 
 
+from .profile import ProfileProblem  # noqa: E402 (it builds on Problem)
 from .sphere import SphereProblem  # noqa: E402 (it builds on Problem)
 
 #: indenter kind -> the problem that poses its contact
-CONTACTS: dict[str, type[Problem]] = {"flat": Problem, "sphere": SphereProblem}
+CONTACTS: dict[str, type[Problem]] = {"flat": Problem, "sphere": SphereProblem, "profile": ProfileProblem}
 
 
 def contact_of(indenter: Indenter) -> type[Problem]:
