@@ -2,7 +2,7 @@
 
 The indenter is the flat plate here (``pocket.core.indenters``; ``CONTACTS`` maps each
 indenter kind this solver poses to its problem, and ``contact_of`` refuses another; the sphere's
-is ``pocket.shooting.sphere``).
+is ``pocket.shooting.sphere``, a user's profile's ``pocket.shooting.profile``).
 Contact zone (0 <= r <= a): the sheet lies flat on the plate; tangential
 equilibrium with no friction and regularity at the axis leave the uniform
 equibiaxial stretch rho = lambda_c r, lambda_1 = lambda_2 = lambda_c (the normal

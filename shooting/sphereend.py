@@ -1,6 +1,8 @@
 r"""The end of the compression range under a sphere: the largest force the pocket's first branch carries.
 
-Four things end the model as the sphere presses further (``pocket.shooting.sphere``):
+Four things end the model as the sphere presses further (``pocket.shooting.sphere``; under a user's
+profile, ``pocket.shooting.profile``, the same four with the equator replaced by the profile's end: its
+last radius, or where its slope turns vertical):
 
 - the sheet would wrap past the sphere's equator (phi_c = pi/2): its lower cap ends there, and the
   contact zone's shot stops (``integrator.FOLD``, psi = -pi/2);
