@@ -16,7 +16,7 @@ import re
 import numpy as np
 import pytest
 from pocket.shooting.problem import contact_of
-from pocket.shooting.profile import PROFILE_END, ProfileProblem
+from pocket.shooting.profile import PROFILE_END, PROFILE_POLE, ProfileProblem
 from scipy.integrate import simpson
 
 from pocket import shooting
@@ -117,3 +117,14 @@ def test_contact_area_is_the_curved_area():
     # a spherical cap reaching rho_c: 2 pi K^2 (1 - cos(phi_c)), sin(phi_c) = rho_c / K, over pi R^2
     phi = math.asin(state.contact_radius_deformed / K)
     assert state.contact_area == pytest.approx(2.0 * K * K * (1.0 - math.cos(phi)), rel=1e-10)
+
+
+def test_a_blunt_profile_ends_with_its_lowest_point_at_the_clamp_plane():
+    rc = 0.5  # the paraboloid reaching rho = R: the pole meets the clamp plane before the profile ends
+    shape = profiles.functions(lambda r: r * r / (2 * rc), lambda r: r / rc,
+                               lambda r: (1.0 / rc) / (1.0 + (r / rc) ** 2) ** 1.5, 1.0, source="a paraboloid")
+    end = shooting.range_end(ALPHA, PHAT, indenter=profile(shape))
+    state = shooting.compress(ALPHA, PHAT, end, indenter=profile(shape))
+    assert abs(state.height) < 1e-6 * state.inflated.height
+    with pytest.raises(OutOfRangeError, match=re.escape(PROFILE_POLE)):
+        shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=profile(shape))
