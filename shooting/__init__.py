@@ -2,8 +2,9 @@
 
 ``inflate`` / ``inflate_volume`` solve step 1 (pressure or volume control),
 ``compress`` / ``compression_curve`` step 2 (fixed volume, a flat frictionless
-plate or a sphere, force given), ``range_end`` the force at which step 2 leaves the model (the
-free sheet reaches the clamp plane; under a sphere also its equator, ``pocket.shooting.sphereend``).
+plate, a sphere or a user's profile, force given), ``range_end`` the force at which step 2 leaves the
+model (the free sheet reaches the clamp plane; under a sphere also its equator, under a profile its
+end, ``pocket.shooting.sphereend``).
 The rubber is any law of ``pocket.core.materials`` (a number is a Mooney-Rivlin
 alpha, ``mooney_rivlin``), its tensions derived from its strain energy in
 ``pocket.shooting.tensions``; a compression's fluid is a liquid or a gas sealed at the

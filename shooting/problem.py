@@ -2,7 +2,7 @@
 
 The indenter is the flat plate here (``pocket.core.indenters``; ``CONTACTS`` maps each
 indenter kind this solver poses to its problem, and ``contact_of`` refuses another; the sphere's
-is ``pocket.shooting.sphere``).
+is ``pocket.shooting.sphere``, a user's profile's ``pocket.shooting.profile``).
 Contact zone (0 <= r <= a): the sheet lies flat on the plate; tangential
 equilibrium with no friction and regularity at the axis leave the uniform
 equibiaxial stretch rho = lambda_c r, lambda_1 = lambda_2 = lambda_c (the normal
@@ -183,10 +183,11 @@ class Problem:
         return np.array(out if angle is None else [*out, y[2] - angle])
 
 
+from .profile import ProfileProblem  # noqa: E402 (it builds on Problem)
 from .sphere import SphereProblem  # noqa: E402 (it builds on Problem)
 
 #: indenter kind -> the problem that poses its contact
-CONTACTS: dict[str, type[Problem]] = {"flat": Problem, "sphere": SphereProblem}
+CONTACTS: dict[str, type[Problem]] = {"flat": Problem, "sphere": SphereProblem, "profile": ProfileProblem}
 
 
 def contact_of(indenter: Indenter) -> type[Problem]:

@@ -92,15 +92,35 @@ TOUCH = "the free sheet would touch the sphere outside the contact zone"
 class SphereProblem(Problem):
     """The compression of ``inflated`` by the sphere ``indenter`` (module docstring); fields as ``Problem``."""
 
+    #: what the messages call the indenter, and the names of the ends of the model under it
+    NAME, END, POLE, TOUCH = "sphere", EQUATOR, POLE, TOUCH
+
     @property
     def radius(self) -> float:
         """K = R_s / R."""
         return self.indenter.number("radius")
 
+    @property
+    def reach(self) -> float:
+        """The largest rho (units R) the indenter's surface stands above: K."""
+        return self.radius
+
+    @property
+    def pole_radius(self) -> float:
+        """The surface's radius of curvature on the axis (units R): K."""
+        return self.radius
+
+    @property
+    def scales(self) -> dict[str, float]:
+        """What each margin of ``margins`` is divided by to compare them: the angles by pi/2 and pi,
+        the lengths by the inflated dome's height."""
+        height = self.inflated.height
+        return {self.END: 0.5 * math.pi, CLAMP_PLANE: math.pi, self.POLE: height, self.TOUCH: height}
+
     def _pole(self, lc):
-        """(t_0, contact start pressure -2 t_0 / K) at pole stretch ``lc`` (kernel units)."""
+        """(t_0, contact start pressure -2 t_0 / K_0) at pole stretch ``lc`` (kernel units; K_0 = ``pole_radius``)."""
         t0 = tensions(lc, lc, self.law.code, self.law.params)[0]
-        return t0, -2.0 * t0 / self.radius
+        return t0, -2.0 * t0 / self.pole_radius
 
     def start(self) -> np.ndarray:
         """Unknowns (q, e, c) of the inflated state (Fhat -> 0), the guess for the first force."""
@@ -187,8 +207,22 @@ class SphereProblem(Problem):
         inner, outer = stored[2]
         profile = profile_from_steps(np.concatenate([inner, outer[1:]]), self.law, lc)
         on = profile.r <= a
-        pc = np.where(on, self.inflated.pressure * q + (profile.tension_1 + profile.tension_2) / self.radius, np.nan)
+        pc = np.where(on, self.contact_pressure(profile, q), np.nan)
         return dataclasses.replace(profile, contact=on), pc, outer[1:], y, edge
+
+    def contact_pressure(self, profile, q) -> np.ndarray:
+        """Phat_c = Phat + (T_1 + T_2) / (E T K) at each point of ``profile`` (shape of its arrays; only the
+        contact zone's values mean something) at pressure ratio ``q``."""
+        return self.inflated.pressure * q + (profile.tension_1 + profile.tension_2) / self.radius
+
+    def contact_area(self, edge) -> float:
+        """The curved area of the cap the sheet wraps, over pi R^2: 2 K^2 (1 - cos(phi_c)), for the contact
+        edge's state ``edge`` = [rho, eta, psi, lambda_1, v] (phi_c = -psi)."""
+        return 4.0 * (self.radius * math.sin(0.5 * edge[2])) ** 2
+
+    def end_margin(self, edge) -> float:
+        """How far the contact edge ``edge`` (its state) stands from the sphere's equator: pi/2 - phi_c (rad)."""
+        return 0.5 * math.pi + edge[2]
 
     def margins(self, force, x) -> dict[str, float]:
         """How far the solved state at ``force`` stands from each end of the model (positive inside it):
@@ -196,8 +230,8 @@ class SphereProblem(Problem):
         TOUCH: the free sheet's smallest gap below the sphere (units R)}."""
         profile, _, _, y, edge = self.solved(force, x)
         gap = self.gap(profile, -y[1])
-        return {EQUATOR: 0.5 * math.pi + edge[2], CLAMP_PLANE: math.pi - y[2], POLE: -y[1],
-                TOUCH: float(np.min(gap)) if gap.size else math.inf}
+        return {self.END: self.end_margin(edge), CLAMP_PLANE: math.pi - y[2], self.POLE: -y[1],
+                self.TOUCH: float(np.min(gap)) if gap.size else math.inf}
 
     def compressed(self, force, x, fluid) -> tuple[CompressedState, float]:
         """The compressed state at ``force`` (as given, ``fluid`` too) for the solved unknowns x, checked
@@ -212,11 +246,11 @@ class SphereProblem(Problem):
         t0 = tensions(lc, lc, self.law.code, self.law.params)[0] * self.law.tension_scale
         state = CompressedState(
             pressure_initial=inflated.pressure, force=force, pressure=pressure,
-            pressure_ratio=q, contact_area=4.0 * (self.radius * math.sin(0.5 * edge[2])) ** 2,
+            pressure_ratio=q, contact_area=self.contact_area(edge),
             contact_radius=a, stretch_contact=lc, height=height, height_ratio=height / inflated.height,
             volume=y[4], profile=profile, inflated=inflated, solver="shooting", material=inflated.material,
             fluid=fluid, tension_1_min=low[0], tension_2_min=low[1], indenter=self.indenter,
-            contact_radius_deformed=float(edge[0]), contact_pressure_pole=pressure + 2.0 * t0 / self.radius,
+            contact_radius_deformed=float(edge[0]), contact_pressure_pole=pressure + 2.0 * t0 / self.pole_radius,
             contact_pressure_edge=float(pc[profile.contact][-1]), contact_pressure=pc,
         )
         return state, float(y[2])
@@ -225,7 +259,7 @@ class SphereProblem(Problem):
         """The free sheet's distance below the sphere (units R; negative where it would be inside it),
         at each profile point off the contact zone with rho < K (elsewhere the sphere is not above it).
         ``height``: the sphere's lowest point above the clamp plane (the profile's eta = 0)."""
-        free = ~profile.contact & (profile.rho < self.radius)
+        free = ~profile.contact & (profile.rho < self.reach)
         surface = height + self.indenter.height(profile.rho[free])
         return surface - profile.eta[free]
 
@@ -238,11 +272,11 @@ class SphereProblem(Problem):
             i = int(np.argmin(pc))
             raise OutOfRangeError(f"force = {force!r} ({self.label}): the contact pressure would be negative "
                                   f"({pc[i]:.6g}) at r = {profile.r[profile.contact][i]:.6g}: the sheet would pull "
-                                  "on the sphere")
+                                  f"on the {self.NAME}")
         gap = self.gap(profile, height)
         allowed = 1e3 * self.rtol * max(height, self.inflated.height)
         if gap.size and np.min(gap) < -allowed:
-            raise OutOfRangeError(f"force = {force!r} ({self.label}): {TOUCH} (the free sheet would lie "
+            raise OutOfRangeError(f"force = {force!r} ({self.label}): {self.TOUCH} (the free sheet would lie "
                                   f"{-np.min(gap):.3g} R inside it)")
 
     def end(self, seed):

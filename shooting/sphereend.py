@@ -1,6 +1,8 @@
 r"""The end of the compression range under a sphere: the largest force the pocket's first branch carries.
 
-Four things end the model as the sphere presses further (``pocket.shooting.sphere``):
+Four things end the model as the sphere presses further (``pocket.shooting.sphere``; under a user's
+profile, ``pocket.shooting.profile``, the same four with the equator replaced by the profile's end: its
+last radius, or where its slope turns vertical):
 
 - the sheet would wrap past the sphere's equator (phi_c = pi/2): its lower cap ends there, and the
   contact zone's shot stops (``integrator.FOLD``, psi = -pi/2);
@@ -37,7 +39,6 @@ from pocket.core.errors import CLAMP_PLANE, ConvergenceError
 
 from . import newton
 from .rangeend import End
-from .sphere import EQUATOR, POLE, TOUCH
 
 __all__ = ["end_of_sphere"]
 
@@ -55,10 +56,9 @@ def _solve(problem, force, guess, jacobian=None):
 
 
 def _scaled(problem, margins) -> dict[str, float]:
-    """The margins in comparable units: the angles by pi/2 and pi, the lengths by the inflated height."""
-    height = problem.inflated.height
-    return {EQUATOR: margins[EQUATOR] / (0.5 * math.pi), CLAMP_PLANE: margins[CLAMP_PLANE] / math.pi,
-            POLE: margins[POLE] / height, TOUCH: margins[TOUCH] / height}
+    """The margins in comparable units (``problem.scales``: the angles by pi/2 and pi, the lengths by the
+    inflated height)."""
+    return {key: value / problem.scales[key] for key, value in margins.items()}
 
 
 def _first(problem, seed):

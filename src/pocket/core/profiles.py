@@ -76,13 +76,16 @@ _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]*?)\s*\[(?P<unit>[^\[\]]*)\]\s*$")
 class Shape:
     """A profile: ``height``, ``slope`` and ``second`` map radii rho (float array of any shape, units R)
     to z, dz/drho and d2z/drho2 of the same shape, NaN past ``extent`` (units R). ``source`` names it
-    in messages (a file, or "a function"). Compared by identity (a cache key)."""
+    in messages (a file, or "a function"). ``knots``: the radii (units R, increasing) where d3z/drho3
+    jumps, a table's rows (an ODE integrator keeps its order by stopping there); none for functions.
+    Compared by identity (a cache key)."""
 
     height: Callable[[np.ndarray], np.ndarray]
     slope: Callable[[np.ndarray], np.ndarray]
     second: Callable[[np.ndarray], np.ndarray]
     extent: float
     source: str
+    knots: tuple[float, ...] = ()
 
     def __repr__(self) -> str:
         return f"Shape({self.source}, extent {self.extent:g} R)"
@@ -165,7 +168,7 @@ def table(radii, heights, source: str = "the profile table", written=None) -> Sh
     height, slope, curve = spline.height, spline.slope, spline.second
     fine = np.linspace(0.0, extent, _CHECKS * rho.size)
     _check_convex(source + " (interpolated)", fine, curve(fine), slope(fine))
-    return Shape(height, slope, curve, extent, source)
+    return Shape(height, slope, curve, extent, source, tuple(map(float, rho)))
 
 
 def functions(height, slope, curvature, extent: float, source: str = "the profile function") -> Shape:
