@@ -59,7 +59,6 @@ import dataclasses
 import math
 
 import numpy as np
-from scipy.integrate import quad, solve_ivp
 
 from .equations import pole_state, rhs
 from .integrator import FOLD, OK, SLACK, STEPS
@@ -131,6 +130,8 @@ class ProfileProblem(SphereProblem):
         tol = self.tolerance
         r, y = R_POLE, pole_state(lc, self.law, start, R_POLE)
         pieces, knots = [], [k for k in self.shape.knots if k > y[0]]
+        from scipy.integrate import solve_ivp  # here: scipy stays off the plate's import path
+
         while True:
             event = None
             if knots:
@@ -169,6 +170,8 @@ class ProfileProblem(SphereProblem):
         """The curved contact area over pi R^2, 2 int_0^rho_c rho sqrt(1 + z'^2) drho, for the contact edge's
         state ``edge`` = [rho, eta, psi, lambda_1, v]."""
         slope = self.shape.slope
+        from scipy.integrate import quad  # here: scipy stays off the plate's import path
+
         return 2.0 * quad(lambda r: r * math.sqrt(1.0 + float(slope(r)) ** 2), 0.0, float(edge[0]),
                           epsabs=0.0, epsrel=1e-12, limit=200)[0]
 
