@@ -140,6 +140,7 @@ def curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: T
                     f"force = {fhat!r} is below the smallest force the edge-fitted finite elements resolve "
                     f"({SMALLEST_FORCE:g}): the indenter's balance is lost in round-off")
             force = fhat * unit
+            state = None  # the state at fhat, once known
             try:
                 if not history:
                     y, iterations = first_contact(model, y_i, fill, first_radius(inflated, fill, min(
@@ -150,13 +151,15 @@ def curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: T
                     try:
                         y, iterations = solve(model, replace(fill, force=force), predict(history, np.sqrt(force)),
                                               tol)
-                        _same_branch(wrapstates.state(model, y, iterations, inflated, fill, fhat), states[-1])
+                        state = wrapstates.state(model, y, iterations, inflated, fill, fhat)
+                        _same_branch(state, states[-1])
                     except (ConvergenceError, OutOfRangeError):
+                        state = None
                         y, iterations = force_path(model, history[-1][1], fill, force, tol, unit)
             except ConvergenceError as err:
                 raise _at_force(fhat, err) from err
             history.append((np.sqrt(force), y))
-            states.append(wrapstates.state(model, y, iterations, inflated, fill, fhat))
+            states.append(state or wrapstates.state(model, y, iterations, inflated, fill, fhat))
         if progress is not None:
             progress(k + 1, len(forces))
     return states
