@@ -36,7 +36,7 @@ from dataclasses import replace
 import numpy as np
 
 from pocket import meshes
-from pocket.core.errors import InputError
+from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.indenters import as_indenter, formulation
 from pocket.core.inputs import check_force, check_positive, quote
@@ -201,11 +201,14 @@ def compress(material, pressure_initial, force, *, fluid=None, indenter=None, **
 def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, mesh=None, elements=None,
                     order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
     """Compressed state with the indenter's lowest point at height H/R = ``height`` (fluid, indenter and options
-    as ``compression_curve``)."""
+    as ``compression_curve``); an OutOfRangeError above the inflated pocket, where the indenter would not
+    touch it (at its top: the uncompressed state, force 0)."""
     height = check_positive("height", height)
     model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter, mesh,
                                                                  elements, order, contact, penalty, augmented, tol)
-    if height >= inflated.height:
+    if height > inflated.height:
+        raise above_the_pocket(height, inflated.height)
+    if height == inflated.height:
         return results.uncompressed(inflated, fill, contact)
     if fill.indenter.kind in SURFACES and contact == FITTED:
         return wrapping.at_height(model, y_i, inflated, fill, height, tol)

@@ -4,7 +4,8 @@
 ``compress`` / ``compression_curve`` step 2 (fixed volume, a flat frictionless
 plate, a sphere or a user's profile, force given), ``range_end`` the force at which step 2 leaves the
 model (the free sheet reaches the clamp plane; under a sphere also its equator, under a profile its
-end, ``pocket.shooting.sphereend``).
+end, ``pocket.shooting.sphereend``), ``compress_height`` the state with the indenter at a given height
+(travel control, ``pocket.shooting.travel``).
 The rubber is any law of ``pocket.core.materials`` (a number is a Mooney-Rivlin
 alpha, ``mooney_rivlin``), its tensions derived from its strain energy in
 ``pocket.shooting.tensions``; a compression's fluid is a liquid or a gas sealed at the
@@ -25,7 +26,7 @@ from pocket.core.solver import Option, Solver
 
 require_import_name(__name__, "pocket.shooting")
 
-__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "range_end"]
+__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "range_end"]
 
 #: loosest ODE tolerance accepted: the root finders need residuals far below the quantities they resolve
 RTOL_MAX = 1e-4
@@ -34,13 +35,14 @@ SOLVER = Solver(
     name="shooting",
     summary="reference: the membrane equations integrated to the clamp, root finding on the unknowns",
     module=__name__,
-    entry_points=("inflate", "inflate_volume", "compress", "compression_curve", "range_end"),
+    entry_points=("inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "range_end"),
     options=(Option("rtol", "float", 1e-10, f"relative tolerance of the ODE integration (DOP853), "
                     f"at most {RTOL_MAX:g}", lambda name, value: check_tolerance(name, value, RTOL_MAX)),),
 )
 
 _HOMES = {"inflate": "inflation", "inflate_volume": "inflation", "compress": "compression",
-          "compression_curve": "compression", "range_end": "rangeend"}
+          "compression_curve": "compression", "compress_height": "travel",
+          "range_end": "rangeend"}
 
 
 def __getattr__(name):

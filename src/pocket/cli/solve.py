@@ -14,7 +14,7 @@ import math
 
 from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, entry
-from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.indenters import FLAT
 from pocket.core.inputs import check_positive
 
@@ -44,7 +44,7 @@ def register(subparsers) -> None:
                               help="Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
             load.add_argument("--height", type=number, nargs="+", metavar="H",
                               help="travel control: the indenter's lowest point at H/R above the clamp plane, "
-                                   "at most the inflated height H0/R (solver fem)")
+                                   "at most the inflated height H0/R (solvers shooting and fem)")
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                        help="shooting (the reference, default), fem or analytical")
         p.add_argument("--json", action="store_true",
@@ -103,17 +103,13 @@ def _solve(args, step: str, material, options: dict) -> list:
 
 def _at_heights(args, material, options: dict) -> list:
     """The compressed states with the indenter's lowest point at each ``--height`` H/R; a height above the
-    inflated pocket (where the indenter would not touch it) is an ``OutOfRangeError``."""
+    inflated pocket (where the indenter would not touch it) is the solver's ``OutOfRangeError``."""
     at_height = entry(args.solver, "compress_height", "--height")
     heights = [check_positive("--height", h) for h in args.height]
     states = []
     with progress_bar(f"compress ({args.solver})", " heights") as progress:
         for done, height in enumerate(heights, start=1):
-            state = at_height(material, args.pressure, height, **options)
-            if height > state.inflated.height:
-                raise OutOfRangeError(f"--height {height:.10g} is above the inflated pocket (H0/R = "
-                                      f"{state.inflated.height:.10g}): the indenter would not touch it")
-            states.append(state)
+            states.append(at_height(material, args.pressure, height, **options))
             if progress is not None:
                 progress(done, len(heights))
     return states

@@ -68,6 +68,13 @@ def exit_status(err: PocketError) -> int:
     return 1 if isinstance(err, (ConvergenceError, OutputError, ClusterError)) else 2
 
 
+def above_the_pocket(height: float, top: float) -> OutOfRangeError:
+    """The one wording, for every solver, of an indenter height H/R = ``height`` above the inflated pocket's
+    top H0/R = ``top``: there is no compressed state there."""
+    return OutOfRangeError(f"height = {height!r} is above the inflated pocket (H0/R = {top:.10g}): the indenter "
+                           "would not touch it")
+
+
 def beyond_range(asked: str, end: str, reason: str = CLAMP_PLANE) -> OutOfRangeError:
     """The one wording, for every solver and unit, of a load past the end of the model's compression range:
     ``"<asked> is beyond the model's range, which ends at <end>: there <reason>"`` (``asked`` and ``end``

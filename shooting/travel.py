@@ -1,0 +1,67 @@
+"""Travel control: the compressed state with the indenter's lowest point at a given height.
+
+The force Fhat is the load this solver's equations take (``pocket.shooting.compression``). Along
+the first branch the indenter's height H/R falls strictly as the force grows from 0 (where it is
+the inflated height H0/R) to the end of the range Fhat_end (``pocket.shooting.rangeend``: the
+free sheet at the clamp plane, a force maximum, or under a sphere or a profile the end of what
+it can wrap). So a height h in [H(Fhat_end), H0] belongs to exactly one force of [0, Fhat_end],
+the root of H(Fhat) - h, found by Brent's method (``pocket.shooting.brent``) on that bracket,
+each H(Fhat) a force-controlled solve. The state returned is the one solved at the root, its
+``height`` the solved height (within the shots' tolerance of h, ``rtol``), never overwritten by h.
+
+A height above H0 is not a compressed state (the indenter would not touch the pocket), and one
+below H(Fhat_end) is outside the model: each an OutOfRangeError naming the bound. A rubber whose
+range has no end (Fhat_end = inf, a Gent sheet locking first) is bracketed by doubling the force
+from 1; a solve that fails there is the ConvergenceError it raised.
+
+The finite-element solver controls the height directly (its load is the indenter's position):
+the two routes are independent, and the tests compare them.
+"""
+
+from __future__ import annotations
+
+import math
+
+from pocket.core.errors import OutOfRangeError, above_the_pocket
+from pocket.core.inputs import check_positive
+
+from . import brent
+from .compression import compress
+from .inflation import inflate
+from .rangeend import range_end
+
+__all__ = ["compress_height"]
+
+_FORCE_RTOL = 1e-14  # relative width of the force bracket at the root: far below the shots' height error
+
+
+def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, rtol=1e-10):
+    """The compressed state with the indenter's lowest point at H/R = ``height`` above the clamp plane.
+
+    material, pressure_initial (Phat_I), fluid, indenter and rtol as ``compression_curve``. Returns a
+    ``CompressedState`` whose ``force`` is the Fhat found. Raises OutOfRangeError for a height above the
+    inflated pocket or below the lowest the model reaches, InputError for invalid input,
+    ConvergenceError if a solve fails.
+    """
+    height = check_positive("height", height)
+    top = inflate(material, pressure_initial, rtol=rtol).height
+
+    def solved(force):
+        return compress(material, pressure_initial, force, fluid=fluid, indenter=indenter, rtol=rtol)
+
+    if height > top:
+        raise above_the_pocket(height, top)
+    if height == top:
+        return solved(0.0)
+    end = range_end(material, pressure_initial, fluid=fluid, indenter=indenter, rtol=rtol)
+    hi = end if math.isfinite(end) else 1.0
+    low = solved(hi).height
+    while not math.isfinite(end) and low > height:
+        hi *= 2.0
+        low = solved(hi).height
+    if low > height:
+        raise OutOfRangeError(f"height = {height!r} is below the lowest the model reaches (H/R = {low:.10g}, at "
+                              f"the end of its range, force = {end:.10g})")
+    force = brent.root(lambda f: solved(f).height - height if f > 0.0 else top - height, 0.0, hi,
+                       fa=top - height, fb=low - height, rtol=_FORCE_RTOL)
+    return solved(force)
