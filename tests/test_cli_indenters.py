@@ -87,8 +87,10 @@ def test_design_for_a_fingertip_meets_its_target_under_the_fingertip(capsys):
 
 
 @pytest.mark.parametrize("flags, message", [
-    (["--indenter", "sphere", "--indenter-radius", "-8 mm"], "indenter.radius = '-8 mm', but it must be > 0"),
-    (["--indenter", "sphere", "--indenter-radius", "0"], "indenter.radius = '0', but it must be > 0"),
+    (["--indenter", "sphere", "--indenter-radius", "-8 mm"], "--indenter-radius = '-8 mm', but it must be > 0"),
+    (["--indenter", "sphere", "--indenter-radius", "0"], "--indenter-radius = '0', but it must be > 0"),
+    (["--indenter", "sphere", "--indenter-radius", "8 km"], "--indenter-radius = '8 km' is 8000 m, outside the sizes "
+                                                            "of a pocket"),
     (["--indenter-radius", "8 mm"], "--indenter-radius is given, but a plate indenter takes no size"),
     (["--indenter", "profile", "--indenter-file", "{bad}"], "column 1 ('radius') has no unit"),
 ])

@@ -138,3 +138,20 @@ def test_design_of_a_thick_sheet(capsys, modulus, factor):
         assert status == 2 and err.startswith("pocket: error: ")
     else:
         assert THIN_WARNING < ratio and status == 0 and err.startswith("pocket: warning: ")
+
+
+def test_a_plain_fingertip_radius_warns_in_a_case_and_in_design(capsys):
+    """A sphere's radius is a length like the others: ``indenter.radius = 8`` (8 m, a plate to a 20 mm pocket)
+    draws the plain-length warning in a case file, and ``--indenter-radius 8`` the same, named by its flag, in
+    ``pocket design``; '8 mm' draws none."""
+    import tomllib
+
+    sphere = '\n[indenter]\nshape = "sphere"\nradius = {}\n'
+    case = parse(tomllib.loads(CASE + sphere.format("8")))
+    assert [w.split(" = ")[0] for w in case.warnings] == ["indenter.radius"]
+    assert parse(tomllib.loads(CASE + sphere.format('"8 mm"'))).warnings == ()
+    args = ["design", "--alpha", "0.3", "--modulus", "1 MPa", "--force", "0.67 N", "--radius", "20 mm", "--height",
+            "10 mm", "--indenter", "sphere", "--json", "--indenter-radius"]
+    assert main([*args, "8"]) == 0
+    assert capsys.readouterr().err.splitlines() == ["pocket: warning: --indenter-radius = '8' has no unit and is read "
+                                                    "as 8 m; write '8 mm' if millimetres were meant"]

@@ -9,12 +9,12 @@ import json
 import pytest
 
 from pocket import fem, shooting
+from pocket.apps.solvers import SOLVERS
+from pocket.cli import main
 from pocket.core.errors import OutOfRangeError
 from pocket.core.fluids import gas
 from pocket.core.indenters import sphere
 from pocket.core.materials import Material
-from pocket.apps.solvers import SOLVERS
-from pocket.cli import main
 
 BASE = ["compress", "--alpha", "0.3", "--pressure", "0.3", "--json"]
 FEM = ["--solver", "fem", "--elements", "40"]

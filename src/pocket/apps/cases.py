@@ -278,9 +278,10 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     load_kind, loads = "", ()
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)
-    indenter = indenters.parse(data["indenter"], radius, base, given) if "indenter" in data else FLAT
+    pressing: list[str] = []  # the indenter's size warnings
+    indenter = indenters.parse(data["indenter"], radius, base, given, warnings=pressing) if "indenter" in data else FLAT
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
-    warnings = _sizes(given, thickness, radius, initial=(kind, value), loads=(load_kind, loads))
+    warnings = _sizes(given, thickness, radius, initial=(kind, value), loads=(load_kind, loads)) + pressing
     return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
                 label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()),

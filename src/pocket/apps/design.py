@@ -163,14 +163,15 @@ def _gas_force(compress, rubber, phat_i, ratio, fluid, per_fhat, liquid, options
 
 
 def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=None, solver="shooting", points=20,
-           indenter=None, **options) -> Design:
+           indenter=None, spell=None, **options) -> Design:
     """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units.
 
     ``material``: a ``pocket.core.materials.Material`` (any stress unit: ``modulus`` sets E = 3 mu_0; a
     number is taken as a Mooney-Rivlin alpha = C2/C1, ``as_material``). ``fluid``: None (a liquid) or a
     gas (``pocket.core.fluids.gas``) with its ambient pressure in Pa. ``indenter``: None (the flat plate)
     or an ``[indenter]`` table in physical units (``pocket.apps.indenters.parse``: ``{"shape": "sphere",
-    "radius": "8 mm"}``), what the finger is.
+    "radius": "8 mm"}``), what the finger is; ``spell(key)``, if given, names its keys in messages (a command
+    line's flags), else they are ``indenter.<key>``.
 
     A length outside the sizes of a pocket, or a designed sheet too thick for a membrane, is an ``InputError``;
     a plain length above 1 m (probably meant in mm) or T/R above 0.1 is one of the design's ``warnings``
@@ -180,7 +181,8 @@ def design(radius, height, modulus, material, force, height_ratio=0.8, *, fluid=
     radius, height, modulus, force, rubber, ratio, fluid = _check(radius, height, modulus, material, force,
                                                                   height_ratio, fluid)
     warnings = [w for key, si in (("radius", radius), ("height", height)) for w in length_warnings(key, given[key], si)]
-    finger = FLAT if indenter is None else indenters.parse(indenter, radius)
+    named = {} if spell is None else {"spell": spell}
+    finger = FLAT if indenter is None else indenters.parse(indenter, radius, warnings=warnings, **named)
     pressing = {**options, **({} if finger == FLAT else {"indenter": finger})}  # the compressions' options
     model = record(solver)
     compress = entry(model, "compress", "a design")

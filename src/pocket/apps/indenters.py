@@ -19,6 +19,7 @@ from pocket.core.errors import InputError
 from pocket.core.indenters import FLAT, Indenter, profile, sphere
 from pocket.core.inputs import quote
 from pocket.core.profiles import read_csv
+from pocket.core.sizes import length_warnings
 from pocket.core.units import positive
 
 __all__ = ["SHAPES", "KEYS", "parse", "describe"]
@@ -30,11 +31,12 @@ KEYS = ("shape", "radius", "file")
 
 
 def parse(table: dict, clamp_radius: float, base=None, given: dict | None = None, *,
-          spell=lambda key: f"indenter.{key}") -> Indenter:
+          spell=lambda key: f"indenter.{key}", warnings: list | None = None) -> Indenter:
     """The ``Indenter`` of the ``[indenter]`` table ``table`` on a clamp of radius ``clamp_radius`` (m); a
     relative profile file is relative to ``base`` (a folder; the current one by default). Each key is
     recorded in ``given`` as written (``"indenter.radius"``); ``spell(key)`` names a key in messages (a
-    command line's flag)."""
+    command line's flag). A sphere's radius is a length of a pocket's sizes (``pocket.core.sizes``): outside
+    them an ``InputError``; a plain number above 1 m (millimetres meant?) a line appended to ``warnings``."""
     if not isinstance(table, dict):
         raise InputError(f"indenter must be a table ([indenter]), got {quote(table)}")
     shape = table.get("shape", "plate")
@@ -50,7 +52,11 @@ def parse(table: dict, clamp_radius: float, base=None, given: dict | None = None
     if given is not None:
         given.update({f"indenter.{k}": v for k, v in table.items()})
     if shape == "sphere":
-        return sphere(positive(spell("radius"), table["radius"], "length") / clamp_radius)
+        radius = positive(spell("radius"), table["radius"], "length")
+        found = length_warnings(spell("radius"), table["radius"], radius)
+        if warnings is not None:
+            warnings.extend(found)
+        return sphere(radius / clamp_radius)
     if shape == "profile":
         name = table["file"]
         if not isinstance(name, str) or not name:

@@ -8,7 +8,7 @@ import sys
 from pocket.apps.design import design
 
 from .common import EXIT_CODES, number
-from .indenters import add_indenter_flags, indenter_table
+from .indenters import add_indenter_flags, flag, indenter_table
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
@@ -16,7 +16,8 @@ __all__ = ["register"]
 
 def _main(args) -> int:
     result = design(args.radius, args.height, args.modulus, material_of(args), args.force, args.height_ratio,
-                    fluid=fluid_of(args, physical=True), solver=args.solver, indenter=indenter_table(args))
+                    fluid=fluid_of(args, physical=True), solver=args.solver, indenter=indenter_table(args),
+                    spell=flag)
     for text in result.warnings:
         print(f"pocket: warning: {text}", file=sys.stderr)
     if args.json:

@@ -17,9 +17,9 @@ from pocket.core.profiles import read_csv
 
 from .common import number
 
-__all__ = ["add_indenter_flags", "indenter_of", "indenter_table"]
+__all__ = ["add_indenter_flags", "indenter_of", "indenter_table", "flag"]
 
-_FLAGS = {"radius": "--indenter-radius", "file": "--indenter-file"}
+_FLAGS = {"shape": "--indenter", "radius": "--indenter-radius", "file": "--indenter-file"}
 
 
 def add_indenter_flags(parser, *, physical: bool = False) -> None:
@@ -61,6 +61,11 @@ def indenter_of(args) -> Indenter:
     if args.indenter == "profile":
         return profile(read_csv(values["file"]))
     return FLAT
+
+
+def flag(key: str) -> str:
+    """The flag of the ``[indenter]`` key ``key`` (``--indenter-radius`` for ``radius``), for messages."""
+    return _FLAGS[key]
 
 
 def indenter_table(args) -> dict | None:
