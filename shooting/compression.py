@@ -44,13 +44,14 @@ from .inflation import inflate
 from .integrator import OK, STATUS
 from .laws import law_of
 from .problem import Problem, contact_of
-from .rangeend import end_of, solve_on_branch
+from .rangeend import end_of
 from .shots import profile_from_steps, tension_minima
 
 __all__ = ["compress", "compression_curve", "plate_state", "final_shots"]
 
 _MIN_STEP = 1e-9  # smallest force step, relative to the force, before a solve is declared failed
-_FOLD_STEP = 1e-3  # near a fold of the force, the step below which the state is sought by the clamp angle
+_FOLD_STEP = 1e-3  # near a fold of the force (within 10 such steps of it), the step below which the state is
+# sought on the end's branch (``Problem.on_branch``)
 
 
 def _band(rtol):
@@ -70,7 +71,7 @@ def _beyond(force, problem, seed):
 
 def _on_branch(problem, force):
     """newton.Solution at ``force`` seeded on the branch by its clamp angle (near a fold), or None."""
-    x = solve_on_branch(problem, force)
+    x = problem.on_branch(force)
     if x is None:
         return None
     sol = newton.solve(lambda v: problem.residual(v, force), x, tol=problem.residual_tol,
@@ -135,7 +136,8 @@ def _advance(problem, branch, force):
                 end, unknown = None, f"; locating the end of the range failed too: {err}"
         step *= 0.5
         branch = dataclasses.replace(branch, jacobian=None)
-        if step < (_FOLD_STEP if end is not None and end.fold else _MIN_STEP) * force:
+        near_fold = end is not None and end.fold and f_try >= (1.0 - 10.0 * _FOLD_STEP) * end.force
+        if step < (_FOLD_STEP if near_fold else _MIN_STEP) * force:
             found = _on_branch(problem, force) if end is not None else None
             if found is not None:
                 return branch.then(force, found.x, found.jacobian, 0.0)

@@ -168,6 +168,13 @@ class Problem:
 
         return plate_end(self, seed)
 
+    def on_branch(self, force):
+        """Unknowns x at ``force`` near a fold, found on the end's branch by the clamp angle, or None
+        (``pocket.shooting.rangeend.solve_on_branch``)."""
+        from .rangeend import solve_on_branch
+
+        return solve_on_branch(self, force)
+
     def residual(self, x, force, angle=None):
         """The residuals at ``force`` (shape (2,)), with psi(1) - ``angle`` appended if given; None
         where the shot does not reach the clamp or x is outside the domain."""

@@ -227,11 +227,13 @@ class SphereProblem(Problem):
     def margins(self, force, x) -> dict[str, float]:
         """How far the solved state at ``force`` stands from each end of the model (positive inside it):
         {EQUATOR: pi/2 - phi_c (rad), CLAMP_PLANE: pi - psi(1) (rad), POLE: the height h (units R),
-        TOUCH: the free sheet's smallest gap below the sphere (units R)}."""
+        TOUCH: the free sheet's smallest gap below the sphere where it is negative beyond ``gap_allowed``,
+        else inf (units R; ``pocket.shooting.sphereend``)}."""
         profile, _, _, y, edge = self.solved(force, x)
         gap = self.gap(profile, -y[1])
+        inside = float(np.min(gap)) if gap.size else math.inf  # zero at the edge by tangency: only < 0 counts
         return {self.END: self.end_margin(edge), CLAMP_PLANE: math.pi - y[2], self.POLE: -y[1],
-                self.TOUCH: float(np.min(gap)) if gap.size else math.inf}
+                self.TOUCH: inside if inside < -self.gap_allowed(-y[1]) else math.inf}
 
     def compressed(self, force, x, fluid) -> tuple[CompressedState, float]:
         """The compressed state at ``force`` (as given, ``fluid`` too) for the solved unknowns x, checked
@@ -263,6 +265,11 @@ class SphereProblem(Problem):
         surface = height + self.indenter.height(profile.rho[free])
         return surface - profile.eta[free]
 
+    def gap_allowed(self, height) -> float:
+        """How far (units R) the free sheet may seem inside the indenter at ``height`` before it is: the shots'
+        resolution of the gap, 1e3 rtol of the larger of h and H0."""
+        return 1e3 * self.rtol * max(height, self.inflated.height)
+
     def check(self, profile, contact_pressure, height, force) -> None:
         """Refuse, by name, a state (its ``profile``, the ``contact_pressure`` at its points, ``height``)
         with a negative contact pressure or its free sheet inside the sphere (OutOfRangeError): neither
@@ -274,8 +281,7 @@ class SphereProblem(Problem):
                                   f"({pc[i]:.6g}) at r = {profile.r[profile.contact][i]:.6g}: the sheet would pull "
                                   f"on the {self.NAME}")
         gap = self.gap(profile, height)
-        allowed = 1e3 * self.rtol * max(height, self.inflated.height)
-        if gap.size and np.min(gap) < -allowed:
+        if gap.size and np.min(gap) < -self.gap_allowed(height):
             raise OutOfRangeError(f"force = {force!r} ({self.label}): {self.TOUCH} (the free sheet would lie "
                                   f"{-np.min(gap):.3g} R inside it)")
 
@@ -284,3 +290,9 @@ class SphereProblem(Problem):
         from .sphereend import end_of_sphere
 
         return end_of_sphere(self, seed)
+
+    def on_branch(self, force):
+        """Unknowns x at ``force`` near a fold, found on the end's branch (``pocket.shooting.sphereend``)."""
+        from .sphereend import on_branch
+
+        return on_branch(self, force)

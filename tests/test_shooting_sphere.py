@@ -27,7 +27,7 @@ from pocket.shooting.problem import contact_of
 from pocket.shooting.sphere import EQUATOR, POLE, TOUCH
 from scipy.integrate import simpson
 
-from pocket import shooting
+from pocket import fem, shooting
 from pocket.core.errors import CLAMP_PLANE, OutOfRangeError
 from pocket.core.fluids import gas
 from pocket.core.indenters import sphere
@@ -174,3 +174,25 @@ def test_a_state_with_negative_contact_pressure_or_penetration_is_refused_by_nam
     inside = dataclasses.replace(profile, eta=np.where(near, state.height + 1.0, profile.eta))
     with pytest.raises(OutOfRangeError, match=TOUCH):
         problem.check(inside, state.contact_pressure, state.height, 0.5)
+
+
+@pytest.mark.parametrize("radius", [0.5, 2.0])
+def test_a_force_maximum_under_a_sphere_ends_the_range(radius):
+    """A softening rubber (alpha = -0.5, Phat_I = 0.1; under the plate its range ends at a fold too) under a
+    sphere: the force has a maximum before any other end. Shooting finds it by continuing in the indenter's
+    height past the stall; it must be a maximum of F(h), which the FE shows independently by holding the
+    indenter at heights on either side of it (its load is the height, so it passes the fold): the FE force is
+    lower on both sides, and at the fold's height equals shooting's end to the FE's floor at 128 elements
+    (measured 2e-8; the sides are 1e-5 lower, F'' h^2 / 2 at 0.2 % of h). Forces just below the end solve
+    (near the fold, on the height branch), just above are out of range by the fold's name, not the touch's."""
+    alpha, phat, indenter = -0.5, 0.1, sphere(radius)
+    end = shooting.range_end(alpha, phat, indenter=indenter)
+    at_end = shooting.compress(alpha, phat, end, indenter=indenter)
+    assert shooting.compress(alpha, phat, end * (1 - 1e-8), indenter=indenter).height > at_end.height
+    fe = [fem.compress_height(alpha, phat, at_end.height * (1 + d), indenter=indenter, elements=128).force
+          for d in (-2e-3, 0.0, 2e-3)]
+    print(f"K = {radius}: shooting's end {end:.12g}; FE at its height and 0.2 % either side: {fe}")
+    assert fe[1] == pytest.approx(end, rel=1e-7)
+    assert fe[0] < end * (1 - 1e-6) and fe[2] < end * (1 - 1e-6)
+    with pytest.raises(OutOfRangeError, match=f"ends at force = {end:.10g}.*there the force has a maximum"):
+        shooting.compress(alpha, phat, end * (1 + 1e-9), indenter=indenter)
