@@ -9,6 +9,7 @@ from pocket import analytical, shooting
 from pocket.apps.sweep import COLUMNS, run_sweep
 from pocket.apps.sweepfile import IDENTITY
 from pocket.cli import main
+from pocket.core.errors import InputError
 from pocket.core.materials import mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState
 
@@ -497,12 +498,11 @@ def test_indenters_share_a_file(tmp_path, capsys):
 @pytest.mark.parametrize("extra, message", [
     (["--indenter", "sphere"], "--indenter sphere needs --indenter-radius"),
     (["--indenter", "sphere", "--indenter-radius", "-1"], "--indenter-radius = -1, but a sphere's radius must be > 0"),
-    (["--indenter", "profile", "--indenter-file", "{tip}"],
-     "a sweep records its indenter as text, the plate or a sphere, not a profile")])
+    (["--indenter", "profile", "--indenter-file", "{tip}"], "tip.csv: not convex at row 3")])
 def test_bad_sweep_indenter(tmp_path, capsys, extra, message):
     """A missing or bad radius, or an indenter a row cannot name: exit 2, one line, no file written."""
     tip = tmp_path / "tip.csv"
-    tip.write_text("radius [R],height [R]\n0,0\n0.1,0.005\n0.2,0.02\n0.3,0.045\n")
+    tip.write_text("radius [R],height [R]\n0,0\n0.1,0.005\n0.2,0.02\n0.3,0.03\n")
     path = tmp_path / "s.csv"
     extra = [e.format(tip=tip) for e in extra]
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
@@ -510,6 +510,40 @@ def test_bad_sweep_indenter(tmp_path, capsys, extra, message):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
     assert not path.exists()
+
+
+def test_a_profile_table_is_recorded_by_its_content(tmp_path, capsys):
+    """A profile table presses in a sweep; its rows name it by the SHA-256 of its numbers (units R), so the same
+    table copied to another folder reuses every point, a different table is another indenter, and the rows are
+    the solver's own curve under that profile exactly. A profile given as functions has no content to record:
+    one line, before any solving."""
+    from pocket.core import profiles
+    from pocket.core.indenters import profile
+
+    tip = "radius [R],height [R]\n0,0\n0.1,0.005\n0.2,0.02\n0.3,0.045\n0.4,0.08\n"
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    (tmp_path / "a" / "tip.csv").write_text(tip)
+    (tmp_path / "b" / "tip.csv").write_text(tip)
+    (tmp_path / "b" / "blunt.csv").write_text(tip.replace("0.08", "0.081"))
+    path = tmp_path / "tips.csv"
+    argv = ["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.05", "0.1", "--out", str(path),
+            "--workers", "1", "--indenter", "profile", "--indenter-file"]
+    for where, message in (("a/tip.csv", "2 points computed, 0 reused"), ("b/tip.csv", "0 points computed, 2 reused"),
+                           ("b/blunt.csv", "2 points computed, 0 reused")):
+        assert main([*argv, str(tmp_path / where)]) == 0
+        assert message in capsys.readouterr().out
+    rows = list(csv.DictReader(path.open()))
+    shape = profiles.read_csv(tmp_path / "a" / "tip.csv")
+    assert {r["indenter"] for r in rows[2:]} == {f"profile sha256={shape.digest}"}
+    assert [float(r["height"]) for r in rows[2:]] == [
+        s.height for s in shooting.compression_curve(0.3, 0.1, [0.05, 0.1], indenter=profile(shape))]
+    assert rows[0]["indenter"] != rows[2]["indenter"]
+    functions = profiles.functions(lambda r: r * r, lambda r: 2 * r, lambda r: 2 + 0 * r, 0.5)
+    with pytest.raises(InputError, match="not a profile given as functions"):
+        with ThreadPoolExecutor(1) as executor:
+            run_sweep(tmp_path / "f.csv", [0.3], [0.1], [0.1], executor, indenter=profile(functions))
+    assert not (tmp_path / "f.csv").exists()
 
 
 def test_two_alphas_with_one_c1_c2_are_two_rows(tmp_path):

@@ -160,9 +160,10 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
 
     Returns (computed, reused) points. The rubber is Mooney-Rivlin with each of ``alphas``, or
     ``material`` (another law, for every point: ``alphas`` then empty or None). ``fluid``: None (a
-    liquid) or a gas, its ambient pressure as Phat_atm. ``indenter``: None (the flat plate) or a sphere
-    (``pocket.core.indenters``), part of each point like the fluid. ``solver`` and its ``options`` (checked
-    against its record) are part of each point: a file may hold the points of several solvers.
+    liquid) or a gas, its ambient pressure as Phat_atm. ``indenter``: None (the flat plate), a sphere
+    or a profile table (``pocket.core.indenters``), part of each point like the fluid. ``solver`` and
+    its ``options`` (checked against its record) are part of each point: a file may hold the points of
+    several solvers.
     Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the
     grid's forces up to the last one missing, so that a point's row does not depend on which
     points an earlier run on the file had finished;

@@ -7,9 +7,10 @@ in name order, as given; empty for the solver's defaults), a ``status``
 (``material``, the law's name, and a column per parameter of every law, empty where
 the law has no such parameter: Mooney-Rivlin's is ``alpha``, so its rows leave
 ``c1`` and ``c2`` empty; Ogden's lists are numbers separated by spaces), the fluid
-(``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), the indenter (``indenter``: ``plate``, or
-``sphere K=...`` with K = R_s / R), and the membrane's checks (``tension_1_min``, ``tension_2_min``,
-``wrinkled``). Floats are written exactly (``repr``), so a point reads back equal to the number asked.
+(``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), the indenter (``indenter``: ``plate``,
+``sphere K=...`` with K = R_s / R, or ``profile sha256=...`` for a profile table), and the membrane's
+checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``). Floats are written exactly (``repr``), so
+a point reads back equal to the number asked.
 
 A point is its solver and options, rubber, fluid, indenter, Phat_I and Fhat (``key``): a file
 may hold points of several sweeps, of several solvers and indenters, and a rerun recognises its own. A
@@ -86,13 +87,19 @@ def options_text(options: dict) -> str:
 
 
 def indenter_text(indenter: Indenter) -> str:
-    """The ``indenter`` cell: ``plate``, or ``sphere K=...`` (K = R_s / R written exactly); an InputError for
-    an indenter a sweep cannot record as text (a profile)."""
+    """The ``indenter`` cell: ``plate``, ``sphere K=...`` (K = R_s / R written exactly) or ``profile
+    sha256=...`` (a profile table's content in units of R, ``pocket.core.profiles.Shape.digest``: the same
+    table read from another file or folder is the same indenter); an InputError for an indenter a sweep
+    cannot record as text (a profile given as functions)."""
     if indenter == FLAT:
         return "plate"
     if indenter.kind == "sphere":
         return f"sphere K={indenter.number('radius')!r}"
-    raise InputError(f"a sweep records its indenter as text, the plate or a sphere, not a {indenter.kind}")
+    digest = getattr(dict(indenter.params).get("shape"), "digest", "")
+    if indenter.kind == "profile" and digest:
+        return f"profile sha256={digest}"
+    raise InputError(f"a sweep records its indenter as text (the plate, a sphere or a profile table), not a "
+                     f"{indenter.kind} given as functions")
 
 
 def identity(solver: str, options: dict, material: Material, fluid: Fluid, indenter: Indenter = FLAT) -> dict:

@@ -58,7 +58,8 @@ def register(subparsers) -> None:
         "sweep", help=text, epilog=EXIT_CODES,
         description=f"{text}: one compressed state per grid point (at most {MAX_POINTS}), one CSV row each, "
         "with a status (ok, out_of_range, failed) and a message, and the indenter that pressed it (plate, or "
-        "sphere K=... with K = R_s/R; sweeps of several indenters can share a file); rerun the same command to "
+        "sphere K=... with K = R_s/R, or profile sha256=... naming a profile table by its content; sweeps of several "
+        "indenters can share a file); rerun the same command to "
         "compute only the missing points. While it runs the file collects finished points; at the end it is "
         "rewritten in grid order. Stopped early (interrupt, error), the file keeps its complete rows only.")
     p.add_argument("--pressure", type=number, nargs="+", required=True, help="values of Phat_I = P_I R/(E T)")

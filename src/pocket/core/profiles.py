@@ -45,6 +45,7 @@ from __future__ import annotations
 
 import csv
 import dataclasses
+import hashlib
 import io
 import pathlib
 import re
@@ -78,7 +79,10 @@ class Shape:
     to z, dz/drho and d2z/drho2 of the same shape, NaN past ``extent`` (units R). ``source`` names it
     in messages (a file, or "a function"). ``knots``: the radii (units R, increasing) where d3z/drho3
     jumps, a table's rows (an ODE integrator keeps its order by stopping there); none for functions.
-    Compared by identity (a cache key)."""
+    ``digest``: a table's content, the SHA-256 (hex) of its radii and heights in units of R as float64
+    bytes, so that two tables of the same numbers are recognised as one profile wherever they were read
+    from (a sweep's record); empty for functions, whose content cannot be read. Compared by identity (a
+    cache key)."""
 
     height: Callable[[np.ndarray], np.ndarray]
     slope: Callable[[np.ndarray], np.ndarray]
@@ -86,6 +90,7 @@ class Shape:
     extent: float
     source: str
     knots: tuple[float, ...] = ()
+    digest: str = ""
 
     def __repr__(self) -> str:
         return f"Shape({self.source}, extent {self.extent:g} R)"
@@ -168,7 +173,8 @@ def table(radii, heights, source: str = "the profile table", written=None) -> Sh
     height, slope, curve = spline.height, spline.slope, spline.second
     fine = np.linspace(0.0, extent, _CHECKS * rho.size)
     _check_convex(source + " (interpolated)", fine, curve(fine), slope(fine))
-    return Shape(height, slope, curve, extent, source, tuple(map(float, rho)))
+    digest = hashlib.sha256(np.ascontiguousarray([rho, z], dtype=np.float64).tobytes()).hexdigest()
+    return Shape(height, slope, curve, extent, source, tuple(map(float, rho)), digest)
 
 
 def functions(height, slope, curvature, extent: float, source: str = "the profile function") -> Shape:
