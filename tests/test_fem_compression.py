@@ -125,13 +125,16 @@ def test_height_control_reaches_the_force_state():
         assert getattr(by_height, key) == pytest.approx(getattr(by_force, key), rel=1e-9)
 
 
-def test_zero_force_and_plate_above_give_the_inflated_state():
-    """Fhat = 0 and a plate above the pole: no contact, the inflated numbers."""
+def test_zero_force_and_plate_at_the_top_give_the_inflated_state():
+    """Fhat = 0 and the plate at the pole's height: no contact, the inflated numbers. A plate above the pole
+    touches nothing: no compressed state (out of range, not the inflated state passed off as one)."""
     zero = fem.compress(ALPHA, P_I, 0.0, elements=20)
-    above = fem.compress_height(ALPHA, P_I, 10.0, elements=20)
-    for state in (zero, above):
+    top = fem.compress_height(ALPHA, P_I, zero.inflated.height, elements=20)
+    for state in (zero, top):
         assert state.contact_radius == 0.0 and state.pressure_ratio == 1.0
         assert state.height == state.inflated.height
+    with pytest.raises(OutOfRangeError, match="is above the inflated pocket"):
+        fem.compress_height(ALPHA, P_I, 10.0, elements=20)
 
 
 def test_progress_is_called_after_each_force():
