@@ -55,7 +55,7 @@ from pocket.core.compiled import compiled
 
 from .tensions import tensions, tensions_compiled
 
-__all__ = ["rhs", "derivatives", "pole_state"]
+__all__ = ["rhs", "derivatives", "table_curvature", "pole_state"]
 
 
 @functools.partial(compiled, inline="always")
@@ -76,12 +76,31 @@ def rhs(r, y, code, params, p, out):
 
 
 @functools.partial(compiled, inline="always")
-def derivatives(r, y, code, params, p, wrap, out):
-    """``rhs`` for the free sheet (``wrap`` = 0), or for the sheet lying on a sphere of curvature
-    ``wrap`` = 1/R_s > 0 (units 1/R): there psi' = -lambda_1 / R_s replaces normal equilibrium
-    (``pocket.shooting.sphere``), the other four equations unchanged."""
+def table_curvature(rho, breaks, coef):
+    """The meridional curvature kappa_1 = z'' / (1 + z'^2)^(3/2) (units 1/R) at ``rho`` of a profile table whose
+    spline z = g(s), s = rho^2, has ``breaks`` (shape (n,)) and ``coef`` (shape (4, n - 1), scipy's PPoly
+    layout: ``pocket.core.profiles.Shape.pieces``), read at the table's extent past it (as
+    ``ProfileProblem.curvature``): z' = 2 rho g'(s), z'' = 2 g'(s) + 4 s g''(s), the piece found as PPoly finds it
+    (the one starting at or below s; the last past the end)."""
+    s = min(rho * rho, breaks[-1])
+    i = min(max(np.searchsorted(breaks, s, side="right") - 1, 0), breaks.size - 2)
+    d = s - breaks[i]
+    g1 = (3.0 * coef[0, i] * d + 2.0 * coef[1, i]) * d + coef[2, i]
+    g2 = 6.0 * coef[0, i] * d + 2.0 * coef[1, i]
+    slope = 2.0 * np.sqrt(s) * g1
+    return (2.0 * g1 + 4.0 * s * g2) / (1.0 + slope * slope) ** 1.5
+
+
+@functools.partial(compiled, inline="always")
+def derivatives(r, y, code, params, p, wrap, breaks, coef, out):
+    """``rhs`` for the free sheet (``wrap`` = 0, ``breaks`` empty), or for the sheet lying on a sphere of
+    curvature ``wrap`` = 1/R_s > 0 (units 1/R): there psi' = -lambda_1 / R_s replaces normal equilibrium
+    (``pocket.shooting.sphere``), the other four equations unchanged; or on a profile table (``breaks`` and
+    ``coef`` its spline, ``table_curvature``): psi' = -lambda_1 kappa_1(rho) (``pocket.shooting.profile``)."""
     rhs(r, y, code, params, p, out)
-    if wrap > 0.0:
+    if breaks.size > 0:
+        out[2] = -y[3] * table_curvature(y[0], breaks, coef)
+    elif wrap > 0.0:
         out[2] = -y[3] * wrap
 
 

@@ -64,6 +64,7 @@ STATUS = {
 NUMERICAL = (STEPS, SMALL_STEP)
 
 _NS = tableau.N_STAGES
+_LANDING = 1e-13  # a step ends on a knot when within this of it (units R); a slip of that size is harmless
 _EXPONENT = -1.0 / 8.0
 
 
@@ -83,15 +84,19 @@ def _status(y, code, params, r, psi_max):
 
 
 @compiled
-def _integrate(y0, r0, r1, code, params, p, wrap, rtol, atol, h0, hmax, psi_max, store, A, B, C, E3, E5):
+def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, atol, h0, hmax, psi_max, store, A, B, C,
+               E3, E5):
     n = y0.size
     K = np.empty((_NS + 1, n))
     y = y0.copy()
     ynew = np.empty(n)
     ytmp = np.empty(n)
     f = np.empty(n)
-    derivatives(r0, y, code, params, p, wrap, f)
+    derivatives(r0, y, code, params, p, wrap, breaks, coef, f)
     r = r0
+    k = 0  # the next knot ahead (``integrate``)
+    while k < knots.size and knots[k] <= y[0] + _LANDING:
+        k += 1
     h = h0
     nstore = 0
     if store.shape[0] > 0:
@@ -117,13 +122,13 @@ def _integrate(y0, r0, r1, code, params, p, wrap, rtol, atol, h0, hmax, psi_max,
                     for j in range(s):
                         acc += A[s, j] * K[j, i]
                     ytmp[i] = y[i] + hh * acc
-                derivatives(r + C[s] * hh, ytmp, code, params, p, wrap, K[s])
+                derivatives(r + C[s] * hh, ytmp, code, params, p, wrap, breaks, coef, K[s])
             for i in range(n):
                 acc = 0.0
                 for j in range(_NS):
                     acc += B[j] * K[j, i]
                 ynew[i] = y[i] + hh * acc
-            derivatives(rnew, ynew, code, params, p, wrap, K[_NS])
+            derivatives(rnew, ynew, code, params, p, wrap, breaks, coef, K[_NS])
             e5 = 0.0
             e3 = 0.0
             for i in range(n):
@@ -139,6 +144,9 @@ def _integrate(y0, r0, r1, code, params, p, wrap, rtol, atol, h0, hmax, psi_max,
                 err = 0.0
             else:
                 err = hh * e5 / np.sqrt((e5 + 0.01 * e3) * n)
+            if err < 1.0 and np.isfinite(err) and k < knots.size and ynew[0] > knots[k] + _LANDING > y[0]:
+                h = hh * (knots[k] - y[0]) / (ynew[0] - y[0])  # a knot inside the step: end it there instead
+                continue
             if err < 1.0 and np.isfinite(err):
                 factor = 10.0 if err == 0.0 else min(10.0, 0.9 * err**_EXPONENT)
                 if rejected:
@@ -151,6 +159,8 @@ def _integrate(y0, r0, r1, code, params, p, wrap, rtol, atol, h0, hmax, psi_max,
         r = rnew
         y[:] = ynew
         f[:] = K[_NS]
+        while k < knots.size and knots[k] <= y[0] + _LANDING:
+            k += 1
         if nstore > 0:
             store[nstore, 0] = r
             store[nstore, 1:] = y
@@ -162,7 +172,7 @@ def _integrate(y0, r0, r1, code, params, p, wrap, rtol, atol, h0, hmax, psi_max,
 
 
 def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi, r_end=1.0,
-              wrap=0.0):
+              wrap=0.0, table=None):
     """Integrate the membrane equations from r0 to ``r_end`` (the clamp r = 1 unless given).
 
     y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). law: a ``pocket.shooting.laws.Law``.
@@ -172,7 +182,12 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     of r0, or 1e-6). max_step: largest step in r (a finer profile; accuracy is set by rtol).
     psi_max: the meridian angle at which the meridian counts as folded (status FOLD). wrap: 0 for the
     free sheet, or the curvature 1/R_s (units 1/R) of a sphere the sheet lies on (``equations.derivatives``);
-    on a sphere, psi reaching -pi/2 is the sheet reaching its equator (status FOLD).
+    on a sphere, psi reaching -pi/2 is the sheet reaching its equator (status FOLD). table: None, or the
+    spline (breakpoints in s = rho^2, coefficients) of a profile table the sheet lies on
+    (``pocket.core.profiles.Shape.pieces``, ``equations.table_curvature``). Its curvature's slope jumps at
+    each row rho_k = sqrt(s_k): an 8th-order step across one is only 2nd-order accurate with an error its
+    estimate does not see, so a step that would cross a row is shortened to end on it (secant in rho,
+    within ``_LANDING``) and the next starts there, on the row's own piece.
 
     Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
     columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
@@ -180,9 +195,10 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     atol = np.broadcast_to(rtol * 1e-2 if atol is None else np.asarray(atol, dtype=float), (5,)).copy()
     h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
     buf = np.empty((store, 6)) if store else np.empty((0, 6))
+    breaks, coef = (np.empty(0), np.empty((4, 0))) if table is None else table
     status, r_end, y_end, m = _integrate(
-        np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(wrap), float(rtol),
-        atol,
+        np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(wrap),
+        breaks, coef, np.sqrt(breaks), float(rtol), atol,
         float(h0), float(max_step), float(psi_max), buf, tableau.A, tableau.B, tableau.C, tableau.E3, tableau.E5,
     )
     return int(status), float(r_end), y_end, buf[:m]

@@ -38,12 +38,13 @@ is the integral of the contact pressure's vertical component, F = int p_c cos(th
 (``tests/test_shooting_profile.py`` checks both). The contact area is the curved area
 A_c = 2 pi int_0^rho_c rho sqrt(1 + z'^2) drho.
 
-The contact zone is integrated by scipy's DOP853 (``solve_ivp``, the same method and tolerances as the
-compiled integrator, ``pocket.shooting.integrator``) since its curvature is the user's function. A
-table's spline has a third derivative that jumps at its rows, so the curvature's slope jumps there:
-an 8th-order step across such a knot is only 2nd-order accurate, its error unseen by the estimate, and
-the residuals turn noisy above the Newton tolerance. The integration therefore stops at each row
-(an event rho = rho_k) and restarts there.
+The contact zone of a table is integrated by the compiled integrator (``pocket.shooting.integrator``), which
+evaluates the table's spline itself (``equations.table_curvature``); a profile given as functions by
+scipy's DOP853 (``solve_ivp``, the same method and tolerances), since its curvature is the user's Python
+function (about 100 times slower). A table's spline has a third derivative that jumps at its rows, so the
+curvature's slope jumps there: an 8th-order step across such a knot is only 2nd-order accurate, its error
+unseen by the estimate, and the residuals turn noisy above the Newton tolerance. Both integrations
+therefore stop at each row (rho = rho_k: a step shortened to end there, or an event) and restart there.
 
 Where the model ends (``pocket.shooting.sphereend``, the same search): the contact edge would pass the
 end of the profile (its last row or its ``extent``, or a slope turning vertical, theta_c -> pi/2), the
@@ -61,7 +62,7 @@ import math
 import numpy as np
 
 from .equations import pole_state, rhs
-from .integrator import FOLD, OK, SLACK, STEPS
+from .integrator import FOLD, OK, SLACK, STEPS, integrate
 from .shots import PROFILE_STEP, R_POLE
 from .sphere import SphereProblem
 from .tensions import tensions
@@ -119,6 +120,12 @@ class ProfileProblem(SphereProblem):
         if a <= 2.0 * R_POLE:  # the series alone: its error O(a^3) is below the integration's
             y = pole_state(lc, self.law, start, a)
             return OK, y, np.array([[a, *y]])
+        tol = self.tolerance
+        if self.shape.pieces is not None:  # a table: the compiled integrator, stopping at its rows
+            status, _, y, steps = integrate(pole_state(lc, self.law, start, R_POLE), R_POLE, self.law, 0.0,
+                                            rtol=tol.rtol, atol=tol.atol, store=store, r_end=a,
+                                            table=self.shape.pieces, max_step=PROFILE_STEP if store else np.inf)
+            return status, y, steps
         code, params = self.law.code, self.law.params
 
         def f(r, y):
@@ -127,7 +134,6 @@ class ProfileProblem(SphereProblem):
             out[2] = -y[3] * float(self.curvature(y[0]))
             return out
 
-        tol = self.tolerance
         r, y = R_POLE, pole_state(lc, self.law, start, R_POLE)
         pieces, knots = [], [k for k in self.shape.knots if k > y[0]]
         from scipy.integrate import solve_ivp  # here: scipy stays off the plate's import path

@@ -10,6 +10,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 
@@ -148,3 +149,21 @@ def test_a_flat_profile_reproduces_the_plate():
         assert got.contact_pressure[on] == pytest.approx(np.full(on.sum(), ref.pressure), rel=1e-12)
     ends = shooting.range_end(ALPHA, PHAT, indenter=flat), shooting.range_end(ALPHA, PHAT)
     assert ends[0] == pytest.approx(ends[1], rel=1e-9)
+
+
+def test_a_table_is_integrated_compiled_as_scipy_integrates_it():
+    """Two integrations of one 40-row table: the compiled integrator, which evaluates the spline itself and ends
+    a step on each row it would cross, and scipy's DOP853 on the table's Python functions, stopping at each row
+    by an event (the route a profile given as functions takes). Both at rtol 1e-10, against the compiled one at
+    rtol 1e-12: measured 8e-11 (compiled) and 5e-9 (scipy, whose restarts at the rows lose more), so they agree
+    to 1e-8 and the compiled one stays within 1e-9 of the tighter solve."""
+    shape = _sphere_table(40)
+    slow = dataclasses.replace(shape, pieces=None)
+    keys = SCALARS
+    fine = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=profile(shape), rtol=1e-12)
+    fast = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=profile(shape))
+    scipy = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=profile(slow))
+    for a, b, c in zip(fast, scipy, fine, strict=True):
+        for key in keys:
+            assert getattr(a, key) == pytest.approx(getattr(b, key), rel=1e-8), key
+            assert getattr(a, key) == pytest.approx(getattr(c, key), rel=1e-9), key

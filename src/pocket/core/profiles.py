@@ -81,8 +81,10 @@ class Shape:
     jumps, a table's rows (an ODE integrator keeps its order by stopping there); none for functions.
     ``digest``: a table's content, the SHA-256 (hex) of its radii and heights in units of R as float64
     bytes, so that two tables of the same numbers are recognised as one profile wherever they were read
-    from (a sweep's record); empty for functions, whose content cannot be read. Compared by identity (a
-    cache key)."""
+    from (a sweep's record); empty for functions, whose content cannot be read. ``pieces``: a table's
+    spline g(s) as (breakpoints s_i = rho_i^2, shape (n,); coefficients c, shape (4, n - 1)), so that on
+    s_i <= s <= s_(i+1) g(s) = sum_k c[k, i] (s - s_i)^(3 - k) (scipy's ``PPoly`` layout): compiled code
+    evaluates the same spline from them; None for functions. Compared by identity (a cache key)."""
 
     height: Callable[[np.ndarray], np.ndarray]
     slope: Callable[[np.ndarray], np.ndarray]
@@ -91,6 +93,7 @@ class Shape:
     source: str
     knots: tuple[float, ...] = ()
     digest: str = ""
+    pieces: tuple[np.ndarray, np.ndarray] | None = None
 
     def __repr__(self) -> str:
         return f"Shape({self.source}, extent {self.extent:g} R)"
@@ -174,7 +177,8 @@ def table(radii, heights, source: str = "the profile table", written=None) -> Sh
     fine = np.linspace(0.0, extent, _CHECKS * rho.size)
     _check_convex(source + " (interpolated)", fine, curve(fine), slope(fine))
     digest = hashlib.sha256(np.ascontiguousarray([rho, z], dtype=np.float64).tobytes()).hexdigest()
-    return Shape(height, slope, curve, extent, source, tuple(map(float, rho)), digest)
+    pieces = (np.array(spline.g.x, dtype=float), np.array(spline.g.c, dtype=float))
+    return Shape(height, slope, curve, extent, source, tuple(map(float, rho)), digest, pieces)
 
 
 def functions(height, slope, curvature, extent: float, source: str = "the profile function") -> Shape:
