@@ -171,13 +171,14 @@ def table(radii, heights, source: str = "the profile table", written=None) -> Sh
     if tip > FLAT_TOLERANCE * z2 / r2:
         raise InputError(f"{source}: does not start flat on the axis (the first rows have a tip slope "
                          f"{tip:.3g}, {tip / (z2 / r2):.0%} of their mean slope): a profile must have z'(0) = 0")
-    spline = _Spline(CubicSpline(rho**2, z), float(rho[-1]))
+    g = CubicSpline(rho**2, z)
+    spline = _Spline(g, float(rho[-1]))
     extent = spline.extent
     height, slope, curve = spline.height, spline.slope, spline.second
     fine = np.linspace(0.0, extent, _CHECKS * rho.size)
     _check_convex(source + " (interpolated)", fine, curve(fine), slope(fine))
     digest = hashlib.sha256(np.ascontiguousarray([rho, z], dtype=np.float64).tobytes()).hexdigest()
-    pieces = (np.array(spline.g.x, dtype=float), np.array(spline.g.c, dtype=float))
+    pieces = (np.asarray(g.x, dtype=np.float64), np.asarray(g.c, dtype=np.float64))
     return Shape(height, slope, curve, extent, source, tuple(map(float, rho)), digest, pieces)
 
 
