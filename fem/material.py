@@ -94,8 +94,8 @@ class Law:
             low, high = 0.5 * (wide - root), 0.5 * (wide + root)
         elif not math.isinf(self.jm):  # the roots u = l^2 of the quadratic of the module docstring
             half = 0.5 * (3.0 + self.jm - lp * lp)
-            gap = math.sqrt(half * half - lp**-2)
-            low, high = math.sqrt(lp**-4 / (half + gap)), math.sqrt((half + gap) / (lp * lp))
+            spread = math.sqrt(half * half - lp**-2)
+            low, high = math.sqrt(lp**-4 / (half + spread)), math.sqrt((half + spread) / (lp * lp))
 
         def gap(s):
             return laws.derivatives(self.code, self.params, s, 1.0)[0] - tension

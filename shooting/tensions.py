@@ -60,7 +60,8 @@ products by 1.0 are exact: the kernel is bit for bit the unstretched one.
 The kernel takes the law as an integer ``code`` and a float array ``params`` (the table
 ``pocket.shooting.laws.KERNELS`` maps each law of the registry to them): Mooney-Rivlin [alpha];
 neo-Hookean [mu]; Yeoh [C10, C20, C30]; Gent [mu, Jm]; Ogden [mu_1, alpha_1, mu_2, alpha_2, ...],
-stresses in units of mu_0; the prestretch lambda_p is appended as the array's last entry. A code with no formula here is a ValueError, never another law's numbers.
+stresses in units of mu_0; the prestretch lambda_p is appended as the array's last entry. A code with
+no formula here is a ValueError, never another law's numbers.
 ``tensions`` works on floats and on arrays of one shape; ``tensions_compiled`` is it compiled for
 the integrator (its helpers are ``register_jitable``: plain Python when called from
 Python, compiled when called from compiled code).

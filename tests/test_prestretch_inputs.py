@@ -70,7 +70,8 @@ def test_a_bad_flag_is_one_line(value, message, capsys):
 
 
 def test_gent_past_locking_on_the_command_line(capsys):
-    assert _exit(["inflate", "--law", "gent", "--mu", "1", "--jm", "0.3", "--prestretch", "1.2", "--pressure", "0.3"]) == 2
+    argv = ["inflate", "--law", "gent", "--mu", "1", "--jm", "0.3", "--prestretch", "1.2", "--pressure", "0.3"]
+    assert _exit(argv) == 2
     assert "--prestretch = 1.2 puts the clamped flat sheet at I1 - 3 = 0.362253" in capsys.readouterr().err
 
 
