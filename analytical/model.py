@@ -38,6 +38,10 @@ the units Phat = P R / (E T) nothing else of the law is left: the model accepts 
 from it does depend on the law (a rubber that stiffens or locks departs sooner); the warnings
 above still mark stretches past 1.1, and the shooting solver is the measure.
 
+A prestretched sheet (``Material.prestretch`` > 1) is not modelled: it is taut before any pressure,
+and the small-strain dome above is that of a slack one. It is refused in one line (InputError);
+the shooting and finite-element solvers take it.
+
 A gas sealed at P_I (``pocket.core.fluids``). The volume constraint V = V_I becomes
 V = V_I ((Phat_I + Phat_atm) / (Phat + Phat_atm))^(1/gamma). With u = sqrt(s_c / s) and
 eq (16b), V / V_I = 2 pi sqrt(s) u M(a) / ((pi / 4) sqrt(6 s)) = u / u_L(a), where
@@ -120,6 +124,9 @@ def inflate(material, pressure) -> InflatedState:
     ``material``: the rubber, any ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha,
     ``as_material``; only mu_0 enters, through Phat: module docstring); echoed by the state."""
     material = as_material(material)
+    if material.prestretch != 1.0:
+        raise InputError(f"prestretch = {material.prestretch!r}, but the analytical model is that of a sheet "
+                         "clamped without prestretch (the shooting and fem solvers take one)")
     pressure = check_positive("pressure", pressure)
     s = smallstrain.pole_strain(pressure)
     r = np.linspace(0.0, 1.0, _N)

@@ -46,11 +46,24 @@ Ogden (mu_p, alpha_p), in principal stretches, with c = a^-1 b^-1 (lambda_3):
     w_aa = sum_p mu_p ((alpha_p - 1) a^alpha_p + (alpha_p + 1) c^alpha_p) / a^2,
     w_ab = sum_p mu_p alpha_p c^alpha_p / (a b).
 
+Prestretch (``pocket.core.materials``). A sheet clamped with an equibiaxial prestretch lambda_p has,
+per unit area of the clamped flat sheet and at stretches (a, b) relative to it, the energy
+w(a, b) = w_u(lambda_p a, lambda_p b) / lambda_p^2 of the unstretched sheet (w_u, thickness and E the
+unstretched rubber's) at the material stretches A = lambda_p a, B = lambda_p b, so
+
+    w_a = w_u,a(A, B) / lambda_p,    w_ab = w_u,ab(A, B),
+
+and the tensions w_a / b = w_u,a(A, B) / B are the unstretched sheet's at the material stretches.
+Gent's domain is that of the material stretches. With lambda_p = 1 the products and quotients by
+1.0 are exact: bit for bit the unstretched kernel.
+
 ``derivatives`` evaluates one point (called inside the element loop, ``loops``);
 ``evaluate`` maps it over arrays. A law is an integer code and a parameter
 array (the table ``material.KERNELS`` builds them from a ``pocket.core.materials.Material``):
 
-    MOONEY_RIVLIN [s, alpha];  YEOH [C10, C20, C30];  GENT [mu, Jm];  OGDEN [mu_1..mu_n, alpha_1..alpha_n].
+    MOONEY_RIVLIN [s, alpha];  YEOH [C10, C20, C30];  GENT [mu, Jm];  OGDEN [mu_1..mu_n, alpha_1..alpha_n],
+
+each followed by the prestretch lambda_p as the array's last entry.
 
 A code with no formula here is a ValueError, never another law's numbers.
 """
@@ -119,7 +132,16 @@ def _ogden(params, a, b):
 
 @compiled
 def derivatives(code, params, a, b):
-    """(w_1, w_2, w_11, w_12, w_22) of the law ``code`` with ``params`` at the stretches (a, b)."""
+    """(w_1, w_2, w_11, w_12, w_22) of the law ``code`` with ``params`` (the prestretch last) at the
+    stretches (a, b) relative to the clamped flat sheet."""
+    lp = params[-1]
+    w1, w2, w11, w12, w22 = _material(code, params[:-1], lp * a, lp * b)
+    return w1 / lp, w2 / lp, w11, w12, w22
+
+
+@compiled
+def _material(code, params, a, b):
+    """``derivatives`` of the unstretched sheet at the material stretches (a, b), of the law's own ``params``."""
     if code == MOONEY_RIVLIN:
         return _mooney_rivlin(params[0], params[1], a, b)
     if code == OGDEN:

@@ -17,6 +17,13 @@ own slope) and Brent's method to 1e-15. A Gent rubber's planar stretch is
 confined to I1 - 3 = (l - 1/l)^2 < Jm, that is
 (sqrt(Jm + 4) - sqrt(Jm)) / 2 < l < (sqrt(Jm + 4) + sqrt(Jm)) / 2.
 
+A prestretched sheet (``Material.prestretch`` = lambda_p, appended to the kernel's parameters:
+``laws``) has its stretches relative to the clamped flat sheet: Gent's domain is that of the material
+stretches lambda_p l_i, so the planar stretch is confined to
+I1 - 3 = lambda_p^2 (l^2 + 1) + lambda_p^-4 l^-2 - 3 < Jm, i.e. u = l^2 between the roots of
+lambda_p^2 u^2 + (lambda_p^2 - 3 - Jm) u + lambda_p^-4 = 0 (with lambda_p = 1 the bounds above, kept in
+their closed form), and ``lock_margin`` takes the material stretches.
+
 ``lock_margin`` is 1 - (I1 - 3) / Jm, Jm the bound of the law's domain
 (``Material.domain``: Gent's Jm; 0 at locking, +inf for the laws that do not
 lock): how close a state is to the end of the law's domain.
@@ -50,6 +57,16 @@ class Law:
     label: str
     jm: float = math.inf
 
+    @property
+    def prestretch(self) -> float:
+        """lambda_p, the equibiaxial stretch of the clamped flat sheet (1: none)."""
+        return self.material.prestretch
+
+    @property
+    def flat_tension(self) -> float:
+        """N_0 / (E T): the tension of the clamped flat sheet, that of its prestretch (0 without one)."""
+        return float(laws.derivatives(self.code, self.params, 1.0, 1.0)[0])
+
     def derivatives(self, a, b) -> np.ndarray:
         """(w_1, w_2, w_11, w_12, w_22) at stretches a, b (arrays of one shape): shape (5, *a.shape)."""
         a, b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
@@ -65,15 +82,20 @@ class Law:
         """min of 1 - (I1 - 3) / Jm over the stretches (+inf for a law that does not lock)."""
         if math.isinf(self.jm):
             return math.inf
-        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        a, b = self.prestretch * np.asarray(a, dtype=float), self.prestretch * np.asarray(b, dtype=float)
         return float(np.min(1.0 - (a * a + b * b + (a * b) ** -2 - 3.0) / self.jm))
 
     def planar_stretch(self, tension: float, guess: float) -> float:
         """The stretch l with T_1(l, 1) = ``tension`` nearest ``guess`` (module docstring)."""
         low, high = 0.0, math.inf
-        if not math.isinf(self.jm):
+        lp = self.prestretch
+        if not math.isinf(self.jm) and lp == 1.0:
             root, wide = math.sqrt(self.jm), math.sqrt(self.jm + 4.0)
             low, high = 0.5 * (wide - root), 0.5 * (wide + root)
+        elif not math.isinf(self.jm):  # the roots u = l^2 of the quadratic of the module docstring
+            half = 0.5 * (3.0 + self.jm - lp * lp)
+            spread = math.sqrt(half * half - lp**-2)
+            low, high = math.sqrt(lp**-4 / (half + spread)), math.sqrt((half + spread) / (lp * lp))
 
         def gap(s):
             return laws.derivatives(self.code, self.params, s, 1.0)[0] - tension
@@ -112,7 +134,7 @@ def _scaled_params(material: Material) -> tuple[int, np.ndarray, float]:
                          f"{', '.join(KERNELS)})")
     unit = material.scaled()  # stresses in units of mu_0; a third of that is units of E = 3 mu_0
     code, params = KERNELS[material.law](unit)
-    return code, np.array(params, dtype=float), unit.domain
+    return code, np.array([*params, material.prestretch], dtype=float), unit.domain
 
 
 def law_of(value) -> Law:
@@ -124,4 +146,6 @@ def law_of(value) -> Law:
         label = f"alpha = {material.alpha!r}"
     else:
         label = f"{material.law} rubber " + ", ".join(f"{k} = {quote(v)}" for k, v in material.params)
+    if material.prestretch != 1.0:
+        label += f", prestretch = {quote(material.prestretch)}"
     return Law(code, params, material, label, jm)

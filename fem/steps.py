@@ -120,10 +120,20 @@ def dome(model: Model, pressure: float) -> np.ndarray:
 
     lambda_0 - 1 = (Phat / (4 sqrt 6))^(2/3), rho = r (lambda_0 - (lambda_0 - 1) r^2),
     eta = sqrt(3 (lambda_0 - 1) / 2) (1 - r^2).
+
+    A prestretched sheet is taut: where it gives the smaller strain, the dome is the paraboloid of its
+    tension N_0 = n_0 E T, eta = H (1 - r^2) with H = Phat / (4 n_0), and the same radial form with
+    lambda_0 - 1 = 0.7 H^2 (linear in-plane elasticity about the prestressed sheet,
+    ``pocket.shooting.inflation``).
     """
     e = smallstrain.pole_strain(pressure)
+    height = np.sqrt(1.5 * e)
+    if model.law.prestretch != 1.0:
+        taut = pressure / (4.0 * model.law.flat_tension)
+        if 0.7 * taut * taut < e:
+            e, height = 0.7 * taut * taut, taut
     r = node_radii(place(model.xi, model.ref), model.ref)
-    u = np.column_stack([r * (1 + e - e * r**2), np.sqrt(1.5 * e) * (1 - r**2)]).ravel()
+    u = np.column_stack([r * (1 + e - e * r**2), height * (1 - r**2)]).ravel()
     return np.concatenate([u, [pressure]])
 
 

@@ -23,7 +23,7 @@ clamp plane (``pocket.shooting.rangeend``; psi(1) = pi). A force above it is an
 OutOfRangeError quoting Fhat_end, the same number whatever force was asked; a
 force up to it is solved. Fhat_end is computed (once, cached) only when it can
 matter: when a step fails, or when a state's clamp angle psi(1) comes within
-1e-6 rad (or 1e4 rtol) of pi.
+1e-6 rad (or 1e4 rtol) of pi, or its indenter's lowest point lies below the clamp plane.
 """
 
 from __future__ import annotations
@@ -247,6 +247,10 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
         else:
             branch = _advance(problem, branch, f)
             states[f], clamp_angle = problem.compressed(f, branch.points[-1][1], fluid)
+            # a solved state past an end: an indenter's lowest point below the clamp plane (a taut, prestretched
+            # sheet under a small sphere gets there with no failed step), or the free sheet at the clamp plane
+            if states[f].height < 0.0:  # no seed: the end is sought from inside the range
+                _beyond(f, problem, None)
             if clamp_angle >= math.pi - _band(rtol):
                 _beyond(f, problem, branch.points[-1])
         done += counts[f]

@@ -26,6 +26,19 @@ it) is restarted lower. A rubber that locks (Gent: I1 - 3 < Jm) has a largest po
 stretch: the march halves its way to it instead of stepping past it, and a pressure or
 volume not reached before it is an OutOfRangeError naming that stretch.
 
+A prestretched sheet (``Law.prestretch`` > 1) is taut before any pressure: at small pressure it is a
+membrane under the uniform tension N_0 of its prestretch (``Law.flat_tension``), the paraboloid
+eta = Phat (1 - r^2) / (4 n_0) (n_0 = N_0 / (E T), lengths in R), whose pole strain is second order in
+its height. Linear in-plane elasticity about the prestressed sheet, with the radial displacement
+u = A r + B r^3 driven by the slope (eta')^2 / 2 = 2 H^2 r^2 and u(1) = 0, gives
+s = A = (3 - nu) H^2 / 4 (nu the ratio of the incremental stiffnesses, 0 to 1/2): the marches
+start from s = 0.7 H^2 (``_taut_strain``) where it lies below Hencky's estimate, and the pressure
+of a stretch is guessed as the larger of the two estimates. Only starting points: each root is the
+solver's own. Without prestretch the estimates are Hencky's alone, unchanged. The strain of a taut sheet
+is small (5e-6 at Phat = 1e-3, lambda_p = 1.05) and rho(1) = 1 + O(s) resolves it only to the integration's
+error (~ 1e-2 rtol), so the check that a root lies on the first branch allows p(s) a relative drift of
+rtol / s more there; the state itself (its tensions, height, volume) is resolved to the tolerance.
+
 Volume control (``inflate_volume``) marches V(s) on the first branch the same way;
 the volume grows through pressure maxima, so it reaches states pressure control
 cannot.
@@ -66,6 +79,31 @@ _LOCK_RTOL = 1e-9  # relative distance to a locking strain at which a march give
 _P_CAP = 1e6  # largest pressure p tried for one pole stretch (Phat ~ 3e5; 1e6 is already no rubber pocket)
 
 
+_TAUT = 0.7  # s / H^2 of a taut membrane at small pressure, (3 - nu) / 4 (module docstring)
+
+
+def _taut_strain(law, height):
+    """The pole strain of the taut (prestretched) membrane of pole height H / R = ``height``, inf without
+    prestretch (no taut regime)."""
+    return math.inf if law.prestretch == 1.0 else _TAUT * height * height
+
+
+def _strain_of_pressure(law, phat):
+    """An estimate of the pole strain at Phat: Hencky's, or the taut membrane's H = Phat / (4 n_0) if less."""
+    hencky = smallstrain.pole_strain(phat)
+    if law.prestretch == 1.0:
+        return hencky
+    return min(hencky, _taut_strain(law, phat / (4.0 * law.flat_tension)))
+
+
+def _pressure_of_strain(law, s):
+    """An estimate of Phat at pole strain s: Hencky's, or the taut membrane's 4 n_0 sqrt(s / 0.7) if more."""
+    hencky = smallstrain.pressure_of_strain(s)
+    if law.prestretch == 1.0:
+        return hencky
+    return max(hencky, 4.0 * law.flat_tension * math.sqrt(s / _TAUT))
+
+
 def _tolerance(rtol, strain):
     """Integration tolerances for a dome of pole strain ~ ``strain`` (``Tolerance.scaled``)."""
     return Tolerance.scaled(rtol, smallstrain.height_of_strain(strain), smallstrain.volume_of_strain(strain))
@@ -104,7 +142,7 @@ def pressure_of_stretch(l0, law, *, rtol=1e-10, tol=None, guess=None, accuracy=_
     def miss(p):
         return _signed(_landing(s, law, p, tol, what))
 
-    p = law.pressure_factor * smallstrain.pressure_of_strain(s) if guess is None else guess
+    p = law.pressure_factor * _pressure_of_strain(law, s) if guess is None else guess
     f, width = miss(p), 0.02 * p
     if f >= 0.0:  # grow a bracket upward from the guess
         lo, f_lo = p, f
@@ -137,9 +175,12 @@ class _Branch:
         self.law, self.tol, self.points = law, tol, []
 
     def pressure(self, s, precise=False):
-        near = sorted(self.points, key=lambda point: abs(math.log(point[0] / s)))[:2]
+        near = sorted(self.points, key=lambda point: abs(math.log(point[0] / s)))
+        # a second point within 1e-9 of the first (a root beside a march's point) gives no slope: its noise
+        # over a difference of a few ulps would make the exponent, and the guess, absurd
+        near = near[:1] + [point for point in near[1:] if abs(point[0] / near[0][0] - 1.0) > 1e-9][:1]
         guess = None
-        if len(near) == 2 and near[0][0] != near[1][0]:
+        if len(near) == 2:
             (s0, p0), (s1, p1) = near
             guess = p0 * (s / s0) ** (math.log(p1 / p0) / math.log(s1 / s0))
         elif near:
@@ -204,7 +245,8 @@ def _state(l0, law, p, tol, what, echo):
     finer-stepped shot of the same problem; ``echo`` the inputs as given (rubber, and pressure or volume)."""
     status, y, _ = shot_pole(l0, law, p, tol)
     miss = y[0] - 1.0
-    if status != OK or abs(miss) > 1e-8 * (l0 - 1.0) + 1e-13:
+    # the miss against the material strain lambda_p lambda_0 - 1 (a taut sheet's is its prestretch's)
+    if status != OK or abs(miss) > 1e-8 * (law.prestretch * l0 - 1.0) + 1e-13:
         raise ConvergenceError(f"inflation ({what}): the final shot from lambda_0 = {l0:.12g} "
                                f"{STATUS[status]}, rho(1) - 1 = {miss:.3g}", load=l0, residual=miss)
     status, _, steps = shot_pole(l0, law, p, tol, store=20000)
@@ -229,7 +271,7 @@ def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     law = law_of(material)
     pressure = check_positive("pressure", pressure)
     p = law.pressure_factor * pressure
-    s_est = smallstrain.pole_strain(pressure)
+    s_est = _strain_of_pressure(law, pressure)
     tol = _tolerance(rtol, s_est)
     what = f"Phat = {pressure!r}"
     branch = _Branch(law, tol)
@@ -255,7 +297,9 @@ def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
         raise OutOfRangeError(f"no inflated state on the first branch: pressure = {pressure:.6g} is at its "
                               f"maximum (reached at lambda_0 = {1 + hi:.6g}) to within the solver's accuracy")
     s = brent.root(miss, lo, hi, fa=f_lo, fb=f_hi, rtol=_S_RTOL)
-    if abs(branch.phat(s) / pressure - 1.0) > 1e-7:  # a root of m on another branch: follow p(s) itself
+    # a taut sheet's p(s) is resolved only as far as rho(1) resolves its small strain s (module docstring)
+    drift = 1e-7 if law.prestretch == 1.0 else 1e-7 + rtol / s
+    if abs(branch.phat(s) / pressure - 1.0) > drift:  # a root of m on another branch: follow p(s) itself
         s = brent.root(lambda x: branch.phat(x, True) - pressure, lo, hi, rtol=_S_RTOL)
     return _state(1.0 + s, law, p, tol, what, dict(material=material, pressure=pressure))
 
@@ -267,6 +311,8 @@ def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:
     law = law_of(material)
     volume = check_positive("volume", volume)
     s_est = smallstrain.strain_of_volume(volume)
+    if law.prestretch != 1.0:  # the paraboloid's volume pi H / 2 (units R^3)
+        s_est = min(s_est, _taut_strain(law, 2.0 * volume / math.pi))
     tol = _tolerance(rtol, s_est)
     what = f"V = {volume!r}"
     branch = _Branch(law, tol)

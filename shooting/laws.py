@@ -15,6 +15,12 @@ another law.
 ``stretch_limit`` is the equibiaxial stretch at which the law leaves its domain, I1 - 3 = x_max
 (``Material.domain``: Gent's Jm), 2 l^2 + l^-4 - 3 = x_max, i.e. the root u = l^2 > 1 of
 2 u^3 - (3 + x_max) u^2 + 1 = 0; infinite for a law without a bound.
+
+A prestretched sheet (``Material.prestretch`` = lambda_p) has its lambda_p appended to the
+parameter array (``pocket.shooting.tensions``); its stretches are relative to the clamped flat sheet,
+so its ``stretch_limit`` is the material one divided by lambda_p and ``lock_margin`` takes the material
+stretches lambda_p l_i. Its ``key`` gains ("prestretch", lambda_p); a sheet without prestretch keeps
+its key.
 """
 
 from __future__ import annotations
@@ -28,7 +34,7 @@ from pocket.core.errors import InputError
 from pocket.core.materials import Material, as_material
 
 from . import brent
-from .tensions import GENT, MOONEY_RIVLIN, NEO_HOOKEAN, OGDEN, YEOH
+from .tensions import GENT, MOONEY_RIVLIN, NEO_HOOKEAN, OGDEN, YEOH, tensions
 
 __all__ = ["KERNELS", "Law", "law_of", "as_law"]
 
@@ -45,13 +51,20 @@ class Law:
     label: str
     stretch_limit: float = math.inf
     domain: float = math.inf
+    prestretch: float = 1.0
 
     def lock_margin(self, l1: float, l2: float) -> float:
-        """1 - (I1 - 3) / x_max at stretches (l1, l2) for a rubber whose domain ends at I1 - 3 = x_max (Gent's
-        Jm; 0 at locking), inf for the rest."""
+        """1 - (I1 - 3) / x_max at stretches (l1, l2) (relative to the clamped flat sheet; I1 of the material
+        stretches) for a rubber whose domain ends at I1 - 3 = x_max (Gent's Jm; 0 at locking), inf for the rest."""
         if math.isinf(self.domain):
             return math.inf
+        l1, l2 = self.prestretch * l1, self.prestretch * l2
         return 1.0 - (l1 * l1 + l2 * l2 + 1.0 / (l1 * l2) ** 2 - 3.0) / self.domain
+
+    @property
+    def flat_tension(self) -> float:
+        """N_0 / (E T): the tension of the clamped flat sheet, that of its prestretch (0 without one)."""
+        return tensions(1.0, 1.0, self.code, self.params)[0] * self.tension_scale
 
     @property
     def tension_scale(self) -> float:
@@ -98,19 +111,22 @@ def law_of(value) -> Law:
     through ``KERNELS``."""
     material = as_material(value)
     kernel = _kernel(material.law)
+    lp = material.prestretch
+    stretched = () if lp == 1.0 else (("prestretch", lp),)
     if material.exact_alpha is not None:
-        label = f"alpha = {material.alpha!r}"
+        label = f"alpha = {material.alpha!r}" + "".join(f", {k} = {v!r}" for k, v in stretched)
     else:
         label = f"{material.law} rubber (" + ", ".join(f"{k} = {v}" for k, v in material.describe().items()
                                                        if k != "material") + ")"
     if material.law == "mooney-rivlin":  # tau = 2 C1, as in the paper's solver: no rescaling
         code, values = kernel(material)
         alpha = values[0]
-        return Law(code, np.array(values), 3.0 * (1.0 + alpha), ("alpha", alpha), label)
+        return Law(code, np.array([*values, lp]), 3.0 * (1.0 + alpha), ("alpha", alpha, *stretched), label,
+                   prestretch=lp)
     unit = material.scaled()
     code, values = kernel(unit)
-    return Law(code, np.array(values, dtype=float), 3.0, (unit.law, tuple(values)), label,
-               _stretch_limit(unit.domain), unit.domain)
+    return Law(code, np.array([*values, lp], dtype=float), 3.0, (unit.law, tuple(values), *stretched), label,
+               _stretch_limit(unit.domain) / lp, unit.domain, lp)
 
 
 def as_law(value) -> Law:

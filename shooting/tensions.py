@@ -50,10 +50,18 @@ Units. Tensions are in units of tau T and pressures p = P R / (tau T) = (3 mu_0 
 ``Law.pressure_factor`` is 3 mu_0 / tau (3 (1 + alpha) for Mooney-Rivlin, 3 for the rest) and
 tensions in units of E T are t / pressure_factor.
 
+Prestretch (``pocket.core.materials``). A sheet clamped with an equibiaxial prestretch lambda_p has,
+at stretches (l1, l2) relative to the clamped flat sheet, the tensions of the unstretched sheet at
+the material stretches L_i = lambda_p l_i: t1(l1, l2) = t1^u(L1, L2), and each derivative with
+respect to l_j is lambda_p dt1^u/dL_j. The thickness and the unit tau stay the unstretched sheet's.
+The domain of a locking law is that of the material stretches (``inside``). With lambda_p = 1 the
+products by 1.0 are exact: the kernel is bit for bit the unstretched one.
+
 The kernel takes the law as an integer ``code`` and a float array ``params`` (the table
 ``pocket.shooting.laws.KERNELS`` maps each law of the registry to them): Mooney-Rivlin [alpha];
 neo-Hookean [mu]; Yeoh [C10, C20, C30]; Gent [mu, Jm]; Ogden [mu_1, alpha_1, mu_2, alpha_2, ...],
-stresses in units of mu_0. A code with no formula here is a ValueError, never another law's numbers.
+stresses in units of mu_0; the prestretch lambda_p is appended as the array's last entry. A code with
+no formula here is a ValueError, never another law's numbers.
 ``tensions`` works on floats and on arrays of one shape; ``tensions_compiled`` is it compiled for
 the integrator (its helpers are ``register_jitable``: plain Python when called from
 Python, compiled when called from compiled code).
@@ -72,7 +80,16 @@ MOONEY_RIVLIN, NEO_HOOKEAN, YEOH, GENT, OGDEN = 0, 1, 2, 3, 4
 
 
 def tensions(l1, l2, code, params):
-    """(t1, t2, dt1/dl1, dt1/dl2) at stretches (l1, l2), in units of tau T (module docstring)."""
+    """(t1, t2, dt1/dl1, dt1/dl2) at stretches (l1, l2) relative to the clamped flat sheet, in units of
+    tau T (module docstring); ``params[-1]`` is the prestretch."""
+    lp = params[-1]
+    t1, t2, a11, a12 = _material(lp * l1, lp * l2, code, params[:-1])
+    return t1, t2, lp * a11, lp * a12
+
+
+@register_jitable
+def _material(l1, l2, code, params):
+    """``tensions`` at the material stretches (l1, l2), of the law's own ``params``."""
     if code == MOONEY_RIVLIN:
         return _mooney_rivlin(l1, l2, params[0])
     if code == OGDEN:
@@ -140,10 +157,12 @@ def _ogden(l1, l2, params):
 
 
 def inside(l1, l2, code, params):
-    """Whether the stretches lie in the law's domain: x = I1 - 3 < Jm for Gent, everywhere for the rest."""
+    """Whether the stretches (relative to the clamped flat sheet) lie in the law's domain: x = I1 - 3 < Jm
+    of the material stretches for Gent, everywhere for the rest."""
     if code != GENT:
         return True
-    return l1 * l1 + l2 * l2 + 1.0 / (l1 * l1 * l2 * l2) - 3.0 < params[1]
+    m1, m2 = params[-1] * l1, params[-1] * l2
+    return m1 * m1 + m2 * m2 + 1.0 / (m1 * m1 * m2 * m2) - 3.0 < params[1]
 
 
 tensions_compiled = compiled(tensions, inline="always")

@@ -152,9 +152,10 @@ def test_gent_planar_stretch_stays_inside_the_domain():
 
 
 def test_neo_hookean_runs_as_yeoh():
-    """neo-Hookean runs on Yeoh's kernel with C10 = mu / 2 (in units of E = 3 mu: C10 / E = 1/6)."""
+    """neo-Hookean runs on Yeoh's kernel with C10 = mu / 2 (in units of E = 3 mu: C10 / E = 1/6), then its
+    prestretch (1: none)."""
     law = law_of(check("neo-hookean", {"mu": 0.4e6}))
-    assert law.code == laws.YEOH and list(law.params) == [0.4e6 / 0.4e6 / 6.0, 0.0, 0.0]
+    assert law.code == laws.YEOH and list(law.params) == [0.4e6 / 0.4e6 / 6.0, 0.0, 0.0, 1.0]
 
 
 def test_an_unstable_material_is_refused_by_the_shared_check():

@@ -13,6 +13,8 @@
     # another law takes its own parameters, stresses with units (pocket.core.materials):
     # neo-hookean: mu;  yeoh: c10, c20, c30;  gent: mu and jm (a number);
     # ogden: mu = ["630 kPa", "1.2 kPa", "-10 kPa"] and exponents = [1.3, 5.0, -2.0]
+    # prestretch = 1.1                   # optional: the sheet clamped stretched equibiaxially by 1.1
+                                         # (default 1; thickness and parameters of the unstretched rubber)
     [fluid]                              # optional, default a liquid
     kind = "gas"                         # "liquid" or "gas"
     ambient = "101.325 kPa"              # gas only: ambient (absolute) pressure, default 101.325 kPa
@@ -82,7 +84,7 @@ __all__ = ["Case", "SAMPLES", "MAX_LOADS", "load", "parse", "sample"]
 MAX_LOADS = 10_000
 
 _SECTIONS = {"name": None, "label": None, "tags": None,
-             "sheet": ("thickness", "material", *PARAMETERS, "modulus", "alpha"), "clamp": ("radius",),
+             "sheet": ("thickness", "material", *PARAMETERS, "modulus", "alpha", "prestretch"), "clamp": ("radius",),
              "fluid": ("kind", "ambient", "gamma"),
              "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"), "indenter": indenters.KEYS,
              "solver": ("name", *dict.fromkeys(o.name for s in SOLVERS.values() for o in s.options))}

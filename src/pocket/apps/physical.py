@@ -52,7 +52,11 @@ class Pocket:
     def material(self) -> Material:
         """The rubber as the solvers take it: a Mooney-Rivlin rubber by its C2/C1 (``mooney_rivlin``, as it
         always was solved), another law in units of mu_0."""
-        return mooney_rivlin(self.case.alpha) if self.case.alpha is not None else self.case.material.scaled()
+        if self.case.alpha is None:
+            return self.case.material.scaled()
+        given = mooney_rivlin(self.case.alpha)
+        lp = self.case.material.prestretch
+        return given if lp == 1.0 else dataclasses.replace(given, prestretch=lp)
 
     @property
     def fluid(self) -> Fluid:

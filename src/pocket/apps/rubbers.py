@@ -9,6 +9,11 @@ units of mu_0. Mooney-Rivlin keeps its own spellings: ``c1`` and ``c2`` (or
 ``modulus`` and ``alpha``) in a case file, ``--alpha`` on the command line, and
 the solvers get ``mooney_rivlin`` of its alpha = C2/C1, solved by that alpha as it always was.
 
+A sheet clamped with an equibiaxial prestretch lambda_p >= 1 already in it (``Material.prestretch``)
+says so by ``prestretch`` in a case file's ``[sheet]`` table (a number, default 1: none) and
+``--prestretch`` on the command line; the thickness and the law's parameters stay those of the
+unstretched rubber.
+
 A fluid is a liquid (the default) or an ideal gas with its ambient (absolute)
 pressure P_atm > 0 and polytropic exponent gamma in [1, 5/3]
 (``pocket.core.fluids``); a gas option given for a liquid is an error, not
@@ -20,15 +25,16 @@ spelled it (``spell``) and quoting the value.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 
 from pocket.core.errors import InputError
 from pocket.core.fluids import AMBIENT, LIQUID, Fluid, gas
 from pocket.core.inputs import check_alpha, check_finite, quote
-from pocket.core.materials import LAWS, Material, check
+from pocket.core.materials import LAWS, Material, check, check_prestretch
 from pocket.core.units import positive, quantity
 
-__all__ = ["DEFAULT_LAW", "PARAMETERS", "FLUIDS", "law_name", "rubber", "sheet", "fluid", "gas_of"]
+__all__ = ["DEFAULT_LAW", "PARAMETERS", "FLUIDS", "law_name", "rubber", "sheet", "fluid", "gas_of", "prestretched"]
 
 DEFAULT_LAW = "mooney-rivlin"
 #: every parameter name of every law, in order (c1, c2, mu, c10, c20, c30, jm, exponents)
@@ -128,11 +134,24 @@ def _need(table, key, where):
     return table[key]
 
 
+def prestretched(material: Material, value, spell: str) -> Material:
+    """``material`` clamped with the prestretch ``value`` (None: as it is), checked, errors naming ``spell``."""
+    if value is None:
+        return material
+    return dataclasses.replace(material, prestretch=check_prestretch(value, material, spell))
+
+
 def sheet(table: dict, where: str, given: dict) -> tuple[float, Material]:
-    """The ``[sheet]`` table of a case: (thickness T in m, the rubber with its stresses in Pa).
+    """The ``[sheet]`` table of a case: (thickness T in m, the rubber with its stresses in Pa, and its
+    ``prestretch`` if given).
 
     ``given`` collects each key as written (``"sheet.c10": "85 kPa"``).
     """
+    if "prestretch" in table:
+        given["sheet.prestretch"] = table["prestretch"]
+        table = {k: v for k, v in table.items() if k != "prestretch"}
+        thickness, material = sheet(table, where, given)
+        return thickness, prestretched(material, given["sheet.prestretch"], "sheet.prestretch")
     thickness = positive("sheet.thickness", _need(table, "thickness", where), "length")
     given["sheet.thickness"] = table["thickness"]
     law = law_name(table.get("material", DEFAULT_LAW))

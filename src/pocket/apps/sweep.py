@@ -64,6 +64,7 @@ from pocket.core.materials import Material, as_material, mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState
 
 from .folders import write_whole
+from .rubbers import prestretched
 from .solvers import entry, record
 from .sweepfile import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
 
@@ -155,14 +156,16 @@ def _curves(points) -> dict:
 
 def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", options=None,
               progress: Callable[[int, int], None] | None = None, material: Material | None = None,
-              fluid: Fluid | None = None, indenter: Indenter | None = None) -> tuple[int, int]:
+              fluid: Fluid | None = None, indenter: Indenter | None = None, prestretch: float = 1.0
+              ) -> tuple[int, int]:
     """Solve every (alpha, Phat_I, Fhat) of the grid not already in the CSV ``path``.
 
     Returns (computed, reused) points. The rubber is Mooney-Rivlin with each of ``alphas``, or
     ``material`` (another law, for every point: ``alphas`` then empty or None). ``fluid``: None (a
     liquid) or a gas, its ambient pressure as Phat_atm. ``indenter``: None (the flat plate), a sphere
-    or a profile table (``pocket.core.indenters``), part of each point like the fluid. ``solver`` and
-    its ``options`` (checked against its record) are part of each point: a file may hold the points of
+    or a profile table (``pocket.core.indenters``), part of each point like the fluid. ``prestretch``:
+    the sheets' lambda_p (``Material.prestretch``), for every rubber of the grid. ``solver`` and its
+    ``options`` (checked against its record) are part of each point: a file may hold the points of
     several solvers.
     Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the
     grid's forces up to the last one missing, so that a point's row does not depend on which
@@ -177,6 +180,8 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     if material is not None and alphas:
         raise InputError("give either alphas (a Mooney-Rivlin rubber) or another law's material, not both")
     materials = [mooney_rivlin(a) for a in alphas or ()] if material is None else [as_material(material)]
+    if prestretch != 1.0:  # every alpha's sheet clamped with it
+        materials = [prestretched(m, prestretch, "prestretch") for m in materials]
     grid = _grid(materials, pressures, forces)
     options = record(solver).checked(dict(options or {}), "compress")
     for name in ("compress", "compression_curve"):  # refused here, before the file is touched

@@ -6,7 +6,9 @@ in name order, as given; empty for the solver's defaults), a ``status``
 (``STATUSES``) and a one-line ``message``; then the rubber
 (``material``, the law's name, and a column per parameter of every law, empty where
 the law has no such parameter: Mooney-Rivlin's is ``alpha``, so its rows leave
-``c1`` and ``c2`` empty; Ogden's lists are numbers separated by spaces), the fluid
+``c1`` and ``c2`` empty; Ogden's lists are numbers separated by spaces; a sheet clamped with a
+prestretch lambda_p != 1 has ``material`` = ``<law> prestretch=<lambda_p>``, so the files of sheets
+without one keep their columns and cells), the fluid
 (``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), the indenter (``indenter``: ``plate``,
 ``sphere K=...`` with K = R_s / R, or ``profile sha256=...`` for a profile table), and the membrane's
 checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``). Floats are written exactly (``repr``), so
@@ -108,8 +110,8 @@ def identity(solver: str, options: dict, material: Material, fluid: Fluid, inden
     alpha has its own column, and the parameters' cells stay empty), ``fluid`` a ``Fluid``, ``indenter``
     as ``indenter_text``."""
     cells = dict.fromkeys(IDENTITY, "")
-    cells.update(solver=solver, solver_options=options_text(options), material=material.law,
-                 indenter=indenter_text(indenter))
+    law = material.law if material.prestretch == 1.0 else f"{material.law} prestretch={material.prestretch!r}"
+    cells.update(solver=solver, solver_options=options_text(options), material=law, indenter=indenter_text(indenter))
     if material.exact_alpha is None:
         cells.update({name: _cell(value) for name, value in material.params})
     cells.update({k: v if isinstance(v, str) else repr(v) for k, v in fluid.describe().items()})

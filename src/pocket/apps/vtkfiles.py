@@ -32,7 +32,9 @@ all dimensionless:
 =================  ==========================================================
 ``lambda_1``       meridional stretch (deformed / flat length along a meridian)
 ``lambda_2``       hoop stretch rho / r
-``lambda_3``       thickness stretch 1 / (lambda_1 lambda_2) (incompressible)
+``lambda_3``       thickness stretch 1 / (lambda_1 lambda_2) (incompressible); like lambda_1 and
+                   lambda_2, relative to the clamped flat sheet: a sheet clamped with a
+                   prestretch lambda_p is T lambda_3 / lambda_p^2 thick (T unstretched)
 ``T_1``, ``T_2``   meridional and hoop tensions (stress resultants), units of E T
 ``contact``        1 where the sheet touches the plate, else 0 (uint8)
 ``r``              Lagrangian radius: the point's radius in the flat sheet, units of R

@@ -9,6 +9,9 @@ they are rescaled to units of mu_0 (so that mu_0 = 1), the unit of the model and
 of every output, since only their ratios enter the dimensionless model
 (``pocket.apps.rubbers.rubber``).
 
+``--prestretch LAMBDA_P`` (default 1): the sheet clamped with an equibiaxial stretch already in it,
+the law's parameters being those of the unstretched rubber (``Material.prestretch``).
+
 ``--fluid {liquid,gas}`` with, for a gas, ``--ambient`` and ``--gamma`` (default 1,
 isothermal; at most 5/3). The dimensionless commands take the ambient pressure as
 Phat_atm = P_atm R / (E T) (required with a gas: it depends on the pocket);
@@ -18,7 +21,7 @@ law's, a missing one, or a gas option without ``--fluid gas`` is a one-line erro
 
 from __future__ import annotations
 
-from pocket.apps.rubbers import DEFAULT_LAW, FLUIDS, gas_of, rubber
+from pocket.apps.rubbers import DEFAULT_LAW, FLUIDS, gas_of, prestretched, rubber
 from pocket.core.errors import InputError
 from pocket.core.fluids import AMBIENT
 from pocket.core.inputs import check_positive
@@ -70,12 +73,25 @@ def add_rubber_flags(parser, *, alphas: bool = False) -> None:
         listed = any(q.listed for _, q in uses)
         group.add_argument(_flag(name), type=number, nargs="+" if listed else None, metavar=name.upper(),
                            help=_help(uses))
+    group.add_argument("--prestretch", type=number, metavar="LAMBDA_P",
+                       help="equibiaxial stretch of the sheet as clamped, >= 1 (default 1: none); the law's "
+                       "parameters and the thickness are the unstretched rubber's")
 
 
 def material_of(args):
     """The rubber of the command line, a ``Material``: Mooney-Rivlin by its ``--alpha`` (``mooney_rivlin``,
-    the one conversion), else the law's in units of mu_0; a sweep's several ``--alpha`` values stay a list
-    of floats (its axis, converted by the sweep)."""
+    the one conversion), else the law's in units of mu_0, clamped with ``--prestretch`` if given; a sweep's
+    several ``--alpha`` values stay a list of floats (its axis, converted by the sweep, ``--prestretch``
+    checked here all the same)."""
+    material = _unstretched(args)
+    if isinstance(material, list):
+        prestretched(mooney_rivlin(material[0]), getattr(args, "prestretch", None), "--prestretch")
+        return material
+    return prestretched(material, getattr(args, "prestretch", None), "--prestretch")
+
+
+def _unstretched(args):
+    """``material_of`` before its prestretch."""
     given = {name: getattr(args, name) for name in law_flags() if getattr(args, name, None) is not None}
     if args.law == DEFAULT_LAW:
         if given:

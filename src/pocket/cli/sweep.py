@@ -42,7 +42,7 @@ def _main(args) -> int:
         with progress_bar("sweep", " points") as progress:
             computed, reused = run_sweep(args.out, alphas, args.pressure, args.force, executor, solver=args.solver,
                                          options=options, progress=progress, material=material, fluid=fluid,
-                                         indenter=indenter)
+                                         indenter=indenter, prestretch=args.prestretch or 1.0)
         executor.shutdown()
     except BaseException:
         stop(executor)

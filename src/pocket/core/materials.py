@@ -56,7 +56,7 @@ from .errors import InputError
 from .inputs import check_alpha, check_finite, quote
 
 __all__ = ["Parameter", "RubberLaw", "LAWS", "register", "Material", "mooney_rivlin", "energy", "check",
-           "as_material"]
+           "as_material", "check_prestretch"]
 
 #: the units a parameter may have
 UNITS = ("stress", "dimensionless")
@@ -214,15 +214,21 @@ class Material:
     it, and a state reports it as its ``alpha`` (None for a rubber given by its parameters). It takes
     part in comparisons: the solvers take a Mooney-Rivlin rubber by this alpha where there is one, so
     two rubbers that differ in it are solved as two rubbers.
+
+    ``prestretch`` is the equibiaxial stretch lambda_p >= 1 of the clamped flat sheet (module docstring;
+    checked by ``check_prestretch``); the parameters stay those of the unstretched rubber.
     """
 
     law: str
     params: tuple[tuple[str, ParamValue], ...]
     exact_alpha: float | None = dataclasses.field(default=None, repr=False)
+    prestretch: float = 1.0
 
     def __post_init__(self):
         if isinstance(self.params, Mapping):
             object.__setattr__(self, "params", check(self.law, dict(self.params), where="material").params)
+        if self.prestretch != 1.0 or not isinstance(self.prestretch, float):
+            object.__setattr__(self, "prestretch", check_prestretch(self.prestretch, self, "prestretch"))
 
     def __getitem__(self, name: str):
         return dict(self.params)[name]
@@ -263,14 +269,33 @@ class Material:
             if name in stresses:
                 value = tuple(v / mu0 for v in value) if isinstance(value, tuple) else value / mu0
             out.append((name, value))
-        return Material(self.law, tuple(out), self.exact_alpha)
+        return Material(self.law, tuple(out), self.exact_alpha, self.prestretch)
 
     def describe(self) -> dict:
-        """The law and its parameters as a flat JSON-ready dict."""
+        """The law and its parameters as a flat JSON-ready dict, with ``prestretch`` where it is not 1."""
         out: dict[str, str | float | list[float]] = {"material": self.law}
         for name, value in self.params:
             out[name] = list(value) if isinstance(value, tuple) else value
+        if self.prestretch != 1.0:
+            out["prestretch"] = self.prestretch
         return out
+
+
+def check_prestretch(value, material: Material, key: str = "prestretch") -> float:
+    """``value`` as the prestretch lambda_p of ``material``'s sheet: a finite float >= 1 whose clamped flat
+    sheet lies inside the law's domain; otherwise a one-line InputError naming ``key``."""
+    if isinstance(value, str):
+        raise InputError(f"{key} = {quote(value)} is not a number (a stretch has no unit)")
+    number = check_finite(key, value)
+    if not number >= 1.0:
+        raise InputError(f"{key} = {quote(value)}, but a prestretch of the clamped sheet must be >= 1")
+    bound = material.domain
+    excess = 2.0 * number * number + number**-4 - 3.0  # I1 - 3 of the clamped flat sheet
+    if not excess < bound:
+        raise InputError(f"{key} = {quote(value)} puts the clamped flat sheet at I1 - 3 = {excess:.6g}, past the "
+                         f"{material.law} rubber's locking (I1 - 3 < {bound:.6g})")
+    return number
+
 
 
 def mooney_rivlin(alpha) -> Material:
