@@ -83,7 +83,14 @@ def table_curvature(rho, breaks, coef):
     ``ProfileProblem.curvature``): z' = 2 rho g'(s), z'' = 2 g'(s) + 4 s g''(s), the piece found as PPoly finds it
     (the one starting at or below s; the last past the end)."""
     s = min(rho * rho, breaks[-1])
-    i = min(max(np.searchsorted(breaks, s, side="right") - 1, 0), breaks.size - 2)
+    lo, hi = 0, breaks.size - 2  # bisection for the last piece starting at or below s (np.searchsorted would
+    while lo < hi:  # pull numba's array typing into a process that only loads cached code)
+        mid = (lo + hi + 1) // 2
+        if breaks[mid] <= s:
+            lo = mid
+        else:
+            hi = mid - 1
+    i = lo
     d = s - breaks[i]
     g1 = (3.0 * coef[0, i] * d + 2.0 * coef[1, i]) * d + coef[2, i]
     g2 = 6.0 * coef[0, i] * d + 2.0 * coef[1, i]
