@@ -1,6 +1,7 @@
 """The reference solver: shooting on the axisymmetric membrane equations (Yang & Feng).
 
-``inflate`` / ``inflate_volume`` solve step 1 (pressure or volume control),
+``inflate`` / ``inflate_volume`` solve step 1 (pressure or volume control), ``inflation_curve`` at
+several pressures by one march along the first branch,
 ``compress`` / ``compression_curve`` step 2 (fixed volume, a flat frictionless
 plate, a sphere or a user's profile, force given), ``range_end`` the force at which step 2 leaves the
 model (the free sheet reaches the clamp plane; under a sphere also its equator, under a profile its
@@ -26,7 +27,8 @@ from pocket.core.solver import Option, Solver
 
 require_import_name(__name__, "pocket.shooting")
 
-__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "range_end"]
+__all__ = ["SOLVER", "inflate", "inflation_curve", "inflate_volume", "compress", "compression_curve", "compress_height",
+           "range_end"]
 
 #: loosest ODE tolerance accepted: the root finders need residuals far below the quantities they resolve
 RTOL_MAX = 1e-4
@@ -35,13 +37,14 @@ SOLVER = Solver(
     name="shooting",
     summary="reference: the membrane equations integrated to the clamp, root finding on the unknowns",
     module=__name__,
-    entry_points=("inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "range_end"),
+    entry_points=("inflate", "inflation_curve", "inflate_volume", "compress", "compression_curve", "compress_height",
+                  "range_end"),
     options=(Option("rtol", "float", 1e-10, f"relative tolerance of the ODE integration (DOP853), "
                     f"at most {RTOL_MAX:g}", lambda name, value: check_tolerance(name, value, RTOL_MAX)),),
 )
 
-_HOMES = {"inflate": "inflation", "inflate_volume": "inflation", "compress": "compression",
-          "compression_curve": "compression", "compress_height": "travel",
+_HOMES = {"inflate": "inflation", "inflation_curve": "inflation", "inflate_volume": "inflation",
+          "compress": "compression", "compression_curve": "compression", "compress_height": "travel",
           "range_end": "rangeend"}
 
 

@@ -56,7 +56,7 @@ from __future__ import annotations
 import math
 
 from pocket.core import smallstrain
-from pocket.core.errors import ConvergenceError, OutOfRangeError, above_pressure_maximum
+from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError, above_pressure_maximum
 from pocket.core.inputs import check_positive
 from pocket.core.materials import as_material
 from pocket.core.states import InflatedState
@@ -67,7 +67,7 @@ from .laws import as_law, law_of
 from .shots import Tolerance, profile_from_steps, shot_pole, tension_minima
 from .tensions import inside, tensions
 
-__all__ = ["inflate", "inflate_volume", "pressure_of_stretch"]
+__all__ = ["inflate", "inflation_curve", "inflate_volume", "pressure_of_stretch"]
 
 _GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
 _S_MAX = 20.0  # s beyond which the marches give up
@@ -173,8 +173,11 @@ class _Branch:
 
     def __init__(self, law, tol):
         self.law, self.tol, self.points = law, tol, []
+        self.known: dict[float, tuple[float | None, bool]] = {}  # s -> (p(s), computed precisely)
 
     def pressure(self, s, precise=False):
+        if s in self.known and (self.known[s][1] or not precise):  # a curve's next march starts where one ended
+            return self.known[s][0]
         near = sorted(self.points, key=lambda point: abs(math.log(point[0] / s)))
         # a second point within 1e-9 of the first (a root beside a march's point) gives no slope: its noise
         # over a difference of a few ulps would make the exponent, and the guess, absurd
@@ -189,6 +192,7 @@ class _Branch:
                                 accuracy=_P_RTOL if precise else _MARCH_RTOL)
         if p is not None:
             self.points.append((s, p))
+        self.known[s] = (p, precise)
         return p
 
     def phat(self, s, precise=False):
@@ -270,17 +274,48 @@ def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     material = as_material(material)
     law = law_of(material)
     pressure = check_positive("pressure", pressure)
-    p = law.pressure_factor * pressure
     s_est = _strain_of_pressure(law, pressure)
     tol = _tolerance(rtol, s_est)
+    return _inflated(material, law, pressure, rtol, tol, _Branch(law, tol), s_est)[0]
+
+
+def inflation_curve(material, pressures, *, rtol=1e-10, progress=None) -> list[InflatedState]:
+    """Inflated states at each Phat of ``pressures`` (any order; pressure control, first branch), from one
+    march along the branch: the pressures are taken in increasing order, each march starting at the pole
+    strain of the state before it, the branch's computed points p(s) shared (about half the shots of as many
+    ``inflate`` calls). Each state is ``inflate``'s to its tolerance; the integration's absolute tolerances
+    are those of each pressure's own scale, the march's (which only guesses) those of the smallest.
+    ``progress(done, total)``, if given, is called after each pressure. Returns the states in the order of
+    ``pressures``; raises OutOfRangeError at the first pressure above the first branch's maximum (as
+    ``inflate``), InputError for invalid input."""
+    material = as_material(material)
+    law = law_of(material)
+    given = [check_positive("pressure", p) for p in pressures]
+    if not given:
+        raise InputError("no pressure given")
+    order = sorted(set(given))
+    branch = _Branch(law, _tolerance(rtol, _strain_of_pressure(law, order[0])))
+    states, start = {}, None
+    for done, pressure in enumerate(order, start=1):
+        s_est = _strain_of_pressure(law, pressure)
+        states[pressure], start = _inflated(material, law, pressure, rtol, _tolerance(rtol, s_est), branch,
+                                            s_est if start is None else start)
+        if progress is not None:
+            progress(done, len(order))
+    return [states[p] for p in given]
+
+
+def _inflated(material, law, pressure, rtol, tol, branch, start) -> tuple[InflatedState, float]:
+    """(the state at Phat = ``pressure``, its pole strain): the march along ``branch`` from pole strain
+    ``start``, then the root of the landing at that pressure (module docstring); ``tol`` the integration's."""
+    p = law.pressure_factor * pressure
     what = f"Phat = {pressure!r}"
-    branch = _Branch(law, tol)
 
     def above(s, peak):  # the volume at the maximum, from the shot that lands there
         _, y, _ = shot_pole(1.0 + s, law, law.pressure_factor * peak, tol)
         return above_pressure_maximum(pressure, peak, y[4], f"lambda_0 = {1 + s:.6g}")
 
-    lo, hi, peak = _first_branch(branch.phat, pressure, s_est, "pressure", law.stretch_limit - 1.0, above)
+    lo, hi, peak = _first_branch(branch.phat, pressure, start, "pressure", law.stretch_limit - 1.0, above)
 
     def miss(s):
         return _signed(_landing(s, law, p, tol, what))
@@ -301,7 +336,7 @@ def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     drift = 1e-7 if law.prestretch == 1.0 else 1e-7 + rtol / s
     if abs(branch.phat(s) / pressure - 1.0) > drift:  # a root of m on another branch: follow p(s) itself
         s = brent.root(lambda x: branch.phat(x, True) - pressure, lo, hi, rtol=_S_RTOL)
-    return _state(1.0 + s, law, p, tol, what, dict(material=material, pressure=pressure))
+    return _state(1.0 + s, law, p, tol, what, dict(material=material, pressure=pressure)), s
 
 
 def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:

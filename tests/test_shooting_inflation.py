@@ -12,6 +12,7 @@ from scipy.optimize import brentq
 from pocket import shooting
 from pocket.core import smallstrain
 from pocket.core.errors import InputError, OutOfRangeError
+from pocket.core.materials import Material
 from pocket.core.states import InflatedState
 
 SAMPLE = 47 / 160
@@ -152,3 +153,32 @@ def test_negative_alpha_above_its_maximum_names_it(alpha, pressure):
     swept = [shooting.inflate_volume(alpha, at_peak.volume * k).pressure for k in np.linspace(0.999, 1.0005, 7)]
     # quoted to 6 digits: 1e-6 relative
     assert max(swept) <= peak * (1 + 1e-6) and max(swept) >= peak * (1 - 1e-4), (max(swept), peak)
+
+
+@pytest.mark.parametrize("material", [0.3, Material("yeoh", {"c10": 0.5, "c20": 0.02, "c30": 0.001}),
+                                      Material("gent", {"mu": 1.0, "jm": 20.0}, prestretch=1.05)],
+                         ids=["mooney-rivlin", "yeoh", "gent-prestretched"])
+def test_a_curve_is_each_pressure_inflated(material):
+    """``inflation_curve`` marches once along the first branch through the pressures (given out of order and
+    repeated) and returns each state in the given order; each is ``inflate``'s state at that pressure to the
+    root finders' tolerance (measured <= 4e-11: the march's guesses differ, not the roots), and reported
+    with the pressure echoed exactly. ``progress`` sees every distinct pressure."""
+    pressures = [0.3, 0.02, 0.6, 0.3, 0.1]
+    calls = []
+    curve = shooting.inflation_curve(material, pressures, progress=lambda d, t: calls.append((d, t)))
+    assert [s.pressure for s in curve] == pressures
+    assert calls == [(1, 4), (2, 4), (3, 4), (4, 4)]
+    for got, pressure in zip(curve, pressures, strict=True):
+        ref = shooting.inflate(material, pressure)
+        for key in ("height", "volume", "stretch_pole", "stretch_clamp", "tension_1_min", "tension_2_min"):
+            assert getattr(got, key) == pytest.approx(getattr(ref, key), rel=1e-9), key
+
+
+def test_a_curve_past_the_pressure_maximum_is_out_of_range():
+    """A neo-Hookean sheet's pressure has a maximum (about Phat = 0.63): the curve stops with inflate's own
+    OutOfRangeError at the first pressure above it; no pressure is an InputError."""
+    with pytest.raises(OutOfRangeError, match="Phat = 5 is above its pressure maximum"):
+        shooting.inflation_curve(Material("neo-hookean", {"mu": 1.0}), [0.1, 0.5, 5.0])
+    with pytest.raises(InputError, match="no pressure given"):
+        shooting.inflation_curve(0.3, [])
+    assert shooting.SOLVER.serves("inflation_curve")

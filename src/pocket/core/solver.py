@@ -17,6 +17,8 @@ dimensionless units of ``pocket.core.states``:
 
 - ``inflate(material, pressure, **options) -> InflatedState``
 - ``inflate_volume(material, volume, **options) -> InflatedState``
+- ``inflation_curve(material, pressures, *, progress=None, **options) -> list[InflatedState]``: the states at
+  several pressures (optional: a solver that can share work between them lists it)
 - ``compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options) -> CompressedState``
 - ``compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
   **options) -> list[CompressedState]``
@@ -64,6 +66,7 @@ __all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS"]
 STEPS = ("inflate", "compress")
 #: entry point -> what it computes, in the words of an error naming what a solver lacks
 ENTRY_POINTS = {"inflate": "pressure-controlled inflation", "inflate_volume": "volume-controlled inflation",
+                "inflation_curve": "inflation curve",
                 "compress": "compression", "compression_curve": "compression curve",
                 "compress_height": "height-controlled compression",
                 "range_end": "end of the compression range"}
