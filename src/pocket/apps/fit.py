@@ -13,10 +13,12 @@ a trial set with a datum without state (a residual ``PENALTY``), is taken backwa
 derivative is ever taken across the penalty.
 
 Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every
-datum are ranked by cost, and the fit runs from the best ``RUNS`` of them (one for a law with at
-most two unknowns), keeping the lowest cost. A result with any datum without state is never
-reported: if no start has all its states, or the best run ends outside the model's range, the fit
-is a ``ConvergenceError`` saying so.
+datum are ranked by cost. Where there are several, the best ``RUNS`` each run ``_PROBE``
+evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or Ogden start can
+lead into a valley or a local minimum where trust-region steps crawl) and the lowest of them runs on
+to convergence. Bounds make trf's steps short near them, so a law without finite bounds (Ogden) uses
+Levenberg-Marquardt. A result with any datum without state is never reported: if no start has all
+its states, or the run ends outside the model's range, the fit is a ``ConvergenceError`` saying so.
 
 The statistics of the result are in ``pocket.apps.fitstats``.
 """
@@ -39,12 +41,12 @@ from .fitstart import starts
 
 __all__ = ["Fit", "fit", "RUNS"]
 
-#: runs from the best starts for a law with more than two unknowns
-RUNS = 2
+#: starts probed (the best by their cost)
+RUNS = 4
 _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring)
 _TOL = 1e-10  # least_squares' ftol, xtol and gtol: noise-free data are fitted to the solvers' accuracy
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
-_PROBE = 6  # evaluations a further start runs before it must have overtaken the best
+_PROBE = 6  # evaluations each start runs before the best of them continues
 
 
 @dataclasses.dataclass(frozen=True)
@@ -53,8 +55,8 @@ class Fit:
     without a thickness), the ``free`` keys' names, the ``fixed`` ones (name -> value), the
     ``statistics`` (``pocket.apps.fitstats.Statistics``), the model's ``values`` at the data (as
     ``pocket.apps.fitmodel.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls``,
-    the wall-clock ``seconds``, the ``starts`` evaluated and ``penalised`` trial sets (some datum
-    without state) met on the way."""
+    the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised`` trial sets of the least-squares
+    runs (some datum without state)."""
 
     setup: Setup
     material: Material
@@ -133,8 +135,6 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     the start's (for every start). Raises InputError for fewer data than unknowns + 1 (before any
     solve), ConvergenceError if no start or no result has a state for every datum.
     """
-    from scipy.optimize import least_squares
-
     clock = time.perf_counter()
     fixed, start = dict(fixed or {}), dict(start or {})
     all_keys = keys(law, terms)
@@ -160,24 +160,23 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
         raise ConvergenceError(f"no start of the {law} fit has a state for every datum (tried {tried}): the data "
                                "may lie beyond this law's range (a pressure maximum, a force past the range end)")
     ranked.sort(key=lambda pair: pair[0])
-    best, notes = None, []
-    for rank, (_, material) in enumerate(ranked[:1 if len(free) <= 2 else RUNS]):
+    count["penalised"] = 0  # from here on: trial sets of the runs (a start without all states is just skipped)
+    probes = []
+    for _, material in ranked[:RUNS]:  # each start a few steps, where its basin shows
         problem = _problem(setup, material, free, count)
-        x = problem.x(material)
-        for budget in (_PROBE, _MAX_EVALUATIONS) if rank else (_MAX_EVALUATIONS,):
-            out = least_squares(problem, np.clip(x, problem.lower, problem.upper), jac=problem.jacobian,
-                                bounds=(problem.lower, problem.upper), method="trf", ftol=_TOL, xtol=_TOL,
-                                gtol=_TOL, max_nfev=budget)
-            x, r = out.x, problem(out.x)
-            if best is not None and r @ r >= best[0] @ best[0]:
-                break  # a further start that has not overtaken the best by its probe is dropped
-        if not np.any(r == PENALTY) and (best is None or r @ r < best[0] @ best[0]):
-            best = (r, x, problem)
-            notes = [] if out.status > 0 else [f"the fit stopped after {out.nfev} evaluations without meeting its "
-                                               "tolerances: the parameters may be ill-determined"]
-    if best is None:
+        x = _run(problem, problem.x(material), _PROBE if len(ranked) > 1 else _MAX_EVALUATIONS)[0]
+        r = problem(x)
+        if not np.any(r == PENALTY):
+            probes.append((float(r @ r), x, problem))
+    if not probes:
         raise ConvergenceError(f"the {law} fit ended outside the model's range from every start")
-    r, x, problem = best
+    _, x, problem = min(probes, key=lambda probe: probe[0])
+    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if len(ranked) > 1 else (x, 1, 0)
+    r = problem(x)
+    if np.any(r == PENALTY):
+        raise ConvergenceError(f"the {law} fit ended outside the model's range")
+    notes = [] if status > 0 else [f"the fit stopped after {evaluations} evaluations without meeting its "
+                                   "tolerances: the parameters may be ill-determined"]
     jac = problem.jacobian(x)
     material = problem.material(x)
     values, calls = predict(setup, material)
@@ -186,6 +185,17 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
         stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
     return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"] + calls,
                time.perf_counter() - clock, tried, count["penalised"])
+
+
+def _run(problem: _Problem, x, budget: int) -> tuple[np.ndarray, int, int]:
+    """least_squares from ``x`` for at most ``budget`` evaluations: (x, its status, evaluations)."""
+    from scipy.optimize import least_squares
+
+    bounded = np.any(np.isfinite(problem.lower)) or np.any(np.isfinite(problem.upper))
+    out = least_squares(problem, np.clip(x, problem.lower, problem.upper), jac=problem.jacobian,
+                        bounds=(problem.lower, problem.upper), method="trf" if bounded else "lm", ftol=_TOL,
+                        xtol=_TOL, gtol=_TOL, max_nfev=budget)
+    return out.x, out.status, out.nfev
 
 
 def _problem(setup: Setup, material: Material, free: list[Key], count: dict) -> _Problem:

@@ -28,7 +28,7 @@ from pocket.core.inputs import quote
 from pocket.core.tables import heading, rows
 from pocket.core.units import is_plain, quantity
 
-__all__ = ["QUANTITIES", "Test", "read", "CONTROLS"]
+__all__ = ["QUANTITIES", "Dataset", "read", "CONTROLS"]
 
 #: column name -> the kind of quantity it holds (``pocket.core.units.KINDS``)
 QUANTITIES = {"pressure": "pressure", "height": "length", "volume": "volume", "force": "force"}
@@ -38,7 +38,7 @@ _EXAMPLE = "pressure [kPa],height [mm]"
 
 
 @dataclasses.dataclass(frozen=True)
-class Test:
+class Dataset:
     """One test: ``kind`` ("inflation" or "compression"), ``control`` (pressures in Pa or forces in N,
     shape (n,)), ``responses`` (column name -> SI values of shape (n,), NaN where a row has no datum:
     the zero-force pressure that defines P_I), ``initial_pressure`` (P_I in Pa; None for an inflation)
@@ -96,7 +96,7 @@ def _positive(path, name, values) -> None:
         raise InputError(f"{path}: row {bad[0] + 1}, {name} = {values[bad[0]]:.6g} (SI), but it must be > 0")
 
 
-def read(path, initial_pressure: float | None = None) -> Test:
+def read(path, initial_pressure: float | None = None) -> Dataset:
     """The test of the CSV file ``path`` (module docstring); ``initial_pressure`` P_I in Pa for a
     compression test (None: from its row at zero force; ignored for an inflation test)."""
     path = pathlib.Path(path)
@@ -113,7 +113,7 @@ def read(path, initial_pressure: float | None = None) -> Test:
     return _inflation(path, data)
 
 
-def _inflation(path, data) -> Test:
+def _inflation(path, data) -> Dataset:
     if "pressure" not in data or not ({"height", "volume"} & set(data)):
         raise InputError(f"{path}: an inflation test needs a pressure column and a height or volume column "
                          f"(a compression test a force column): write the header like {_EXAMPLE!r}")
@@ -125,10 +125,10 @@ def _inflation(path, data) -> Test:
                          f"row before ({pressure[steps[0]]:.6g} Pa): an inflation test's pressures must increase")
     for name, v in data.items():
         _positive(path, name, v)
-    return Test("inflation", pressure, data, None, str(path))
+    return Dataset("inflation", pressure, data, None, str(path))
 
 
-def _compression(path, data, initial_pressure) -> Test:
+def _compression(path, data, initial_pressure) -> Dataset:
     if "pressure" not in data:
         raise InputError(f"{path}: a compression test (a force column) needs a pressure column, like "
                          "'force [N],pressure [kPa]'")
@@ -153,4 +153,4 @@ def _compression(path, data, initial_pressure) -> Test:
         pressure[zero[0]] = math.nan  # it defines P_I: not a datum
     elif not initial_pressure > 0.0:
         raise InputError(f"initial pressure = {quote(initial_pressure)} Pa, but it must be > 0")
-    return Test("compression", force, {**data, "pressure": pressure}, float(initial_pressure), str(path))
+    return Dataset("compression", force, {**data, "pressure": pressure}, float(initial_pressure), str(path))

@@ -6,8 +6,8 @@ returns a new ``Material`` with another value (``dataclasses``-style: the materi
 so that anything a material carries can be fitted by adding a key here (a prestretch of the
 clamped sheet would be one more, with bounds [1, inf)).
 
-Bounds are the box part of each law's admissible set: C1, mu, C10, Jm > 0 and C30 >= 0. The rest of
-the set (C1 + C2 > 0, a Yeoh slope that stays positive, mu_p alpha_p > 0, Jm above the data's
+Bounds are the box part of each law's admissible set: C1, mu, C10, Jm > 0. The rest of the set
+(C1 + C2 > 0, C30 >= 0 and a Yeoh slope that stays positive, mu_p alpha_p > 0, Jm above the data's
 largest I1 - 3) is not a box: a trial set outside it has no state, and the fit treats it as it
 treats a datum with no state (``pocket.apps.fitmodel``).
 """
@@ -24,7 +24,7 @@ from pocket.core.materials import LAWS, Material
 __all__ = ["Key", "keys", "key_named"]
 
 #: (law, parameter name) -> its lower bound, where the law's admissible set bounds it alone
-_LOWER = {("mooney-rivlin", "c1"): 0.0, ("neo-hookean", "mu"): 0.0, ("yeoh", "c10"): 0.0, ("yeoh", "c30"): 0.0,
+_LOWER = {("mooney-rivlin", "c1"): 0.0, ("neo-hookean", "mu"): 0.0, ("yeoh", "c10"): 0.0,
           ("gent", "mu"): 0.0, ("gent", "jm"): 0.0}
 
 

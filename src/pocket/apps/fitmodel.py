@@ -35,7 +35,7 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.materials import Material, check
 
-from .fitdata import Test
+from .fitdata import Dataset
 from .solvers import entry, record
 
 __all__ = ["PENALTY", "Setup", "predict", "residuals"]
@@ -47,12 +47,12 @@ _MISSED = (OutOfRangeError, ConvergenceError)
 
 @dataclasses.dataclass(frozen=True)
 class Setup:
-    """What the fit compares: ``tests`` (``pocket.apps.fitdata.Test``), the clamp ``radius`` R (m), the
+    """What the fit compares: ``tests`` (``pocket.apps.fitdata.Dataset``), the clamp ``radius`` R (m), the
     ``thickness`` T (m, or None: stresses are then fitted as products with T, in N/m), the ``solver`` by
     name with its ``options``, and ``sigma`` (column name -> stated uncertainty, SI; a column not named
     has relative residuals)."""
 
-    tests: tuple[Test, ...]
+    tests: tuple[Dataset, ...]
     radius: float
     thickness: float | None = None
     solver: str = "shooting"
@@ -74,7 +74,7 @@ class Setup:
         return sum(t.count for t in self.tests)
 
 
-def _inflation(setup: Setup, test: Test, material: Material, tension: float, calls: list) -> dict:
+def _inflation(setup: Setup, test: Dataset, material: Material, tension: float, calls: list) -> dict:
     inflate = entry(record(setup.solver), "inflate", "an inflation test's data")
     out = {name: np.full(test.control.shape, math.nan) for name in test.responses}
     for i, pressure in enumerate(test.control):
@@ -111,7 +111,7 @@ def _curve(setup, material, pressure_initial, forces, calls):
     return states + [None] * (len(forces) - len(inside))
 
 
-def _compression(setup: Setup, test: Test, material: Material, tension: float, calls: list) -> dict:
+def _compression(setup: Setup, test: Dataset, material: Material, tension: float, calls: list) -> dict:
     pressure_initial = test.initial_pressure
     order = np.argsort(test.control)
     forces = [float(f) for f in test.control[order] / (pressure_initial * math.pi * setup.radius**2)]
