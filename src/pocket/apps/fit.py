@@ -13,10 +13,10 @@ a trial set with a datum without state (a residual ``PENALTY``), is taken backwa
 derivative is ever taken across the penalty.
 
 Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every
-datum are ranked by cost. Where there are several, the best ``RUNS`` each run ``_PROBE``
+datum are ranked by cost. For the laws with many parameters (``PROBED``), the best ``RUNS`` each run ``_PROBE``
 evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or Ogden start can
 lead into a valley or a local minimum where trust-region steps crawl) and the lowest of them runs on
-to convergence. Bounds make trf's steps short near them, so a law without finite bounds (Ogden) uses
+to convergence; the others run from their best start. Bounds make trf's steps short near them, so a law without finite bounds (Ogden) uses
 Levenberg-Marquardt. A result with any datum without state is never reported: if no start has all
 its states, or the run ends outside the model's range, the fit is a ``ConvergenceError`` saying so.
 
@@ -39,12 +39,14 @@ from .fitkeys import Key, key_named, keys
 from .fitmodel import PENALTY, Setup, predict, residuals
 from .fitstart import starts
 
-__all__ = ["Fit", "fit", "RUNS"]
+__all__ = ["Fit", "fit", "RUNS", "PROBED"]
 
-#: starts probed (the best by their cost)
+#: starts probed (the best by their cost), for the laws ``PROBED``
 RUNS = 4
+#: the laws with many parameters, whose starts are probed; the others run from their best start
+PROBED = ("yeoh", "ogden")
 _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring)
-_TOL = 1e-10  # least_squares' ftol, xtol and gtol: noise-free data are fitted to the solvers' accuracy
+_TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
 _PROBE = 6  # evaluations each start runs before the best of them continues
 
@@ -162,16 +164,16 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     ranked.sort(key=lambda pair: pair[0])
     count["penalised"] = 0  # from here on: trial sets of the runs (a start without all states is just skipped)
     probes = []
-    for _, material in ranked[:RUNS]:  # each start a few steps, where its basin shows
+    for _, material in ranked[:RUNS if law in PROBED else 1]:  # each start a few steps, where its basin shows
         problem = _problem(setup, material, free, count)
-        x = _run(problem, problem.x(material), _PROBE if len(ranked) > 1 else _MAX_EVALUATIONS)[0]
+        x = _run(problem, problem.x(material), _PROBE if law in PROBED else _MAX_EVALUATIONS)[0]
         r = problem(x)
         if not np.any(r == PENALTY):
             probes.append((float(r @ r), x, problem))
     if not probes:
         raise ConvergenceError(f"the {law} fit ended outside the model's range from every start")
     _, x, problem = min(probes, key=lambda probe: probe[0])
-    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if len(ranked) > 1 else (x, 1, 0)
+    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if law in PROBED else (x, 1, 0)
     r = problem(x)
     if np.any(r == PENALTY):
         raise ConvergenceError(f"the {law} fit ended outside the model's range")
