@@ -13,19 +13,24 @@ R, T = 0.02, 1e-3
 TRUTH = check("mooney-rivlin", {"c1": 160e3, "c2": 47e3})
 
 
-def bulge_csv(path, phats=np.linspace(0.05, 0.6, 8)):
-    """A noise-free bulge test of TRUTH in kPa and mm."""
+def bulge_csv(path):
+    """A noise-free bulge test of TRUTH in kPa and mm, 8 pressures."""
+    phats = np.linspace(0.05, 0.6, 8)
     tension = 3.0 * TRUTH.mu0 * T
-    rows = [f"{float(p * tension / R / 1e3)!r},{float(shooting.inflate(TRUTH.scaled(), p).height * R * 1e3)!r}" for p in phats]
+    heights = [shooting.inflate(TRUTH.scaled(), p).height * R for p in phats]
+    rows = [f"{float(p * tension / R / 1e3)!r},{float(h * 1e3)!r}" for p, h in zip(phats, heights, strict=True)]
     path.write_text("pressure [kPa],height [mm]\n" + "\n".join(rows) + "\n")
     return str(path)
 
 
 BAD = {
     "missing unit": ("pressure,height [mm]\n1,2\n2,3\n3,4\n", "has no unit"),
-    "non-numeric cell": ("pressure [kPa],height [mm]\n1,2\n2,abc\n3,4\n", "row 2, height = 'abc' is not a finite number"),
-    "negative pressure": ("pressure [kPa],height [mm]\n-1,2\n2,3\n3,4\n", "row 1, pressure = -1000 (SI), but it must be > 0"),
-    "non-monotone pressures": ("pressure [kPa],height [mm]\n1,2\n3,3\n2,4\n", "row 3, pressure = 2000 Pa is not above"),
+    "non-numeric cell": ("pressure [kPa],height [mm]\n1,2\n2,abc\n3,4\n",
+                         "row 2, height = 'abc' is not a finite number"),
+    "negative pressure": ("pressure [kPa],height [mm]\n-1,2\n2,3\n3,4\n",
+                          "row 1, pressure = -1000 (SI), but it must be > 0"),
+    "non-monotone pressures": ("pressure [kPa],height [mm]\n1,2\n3,3\n2,4\n",
+                               "row 3, pressure = 2000 Pa is not above"),
     "fewer points than parameters": ("pressure [kPa],height [mm]\n1,2\n2,3\n", "2 data, but fitting 2 parameters"),
     "unusable column": ("pressure [kPa],temperature [K]\n1,2\n2,3\n3,4\n", "the fit cannot use a column 'temperature'"),
     "volume in compression": ("force [N],pressure [kPa],volume [mL]\n0,1,2\n1,2,2\n2,3,2\n", "cannot use a volume"),
@@ -71,8 +76,8 @@ def test_without_thickness_reports_products(tmp_path, capsys):
 def test_out_folder_case_file_round_trip(tmp_path, capsys):
     """The fitted sheet's case file runs, and its inflated height at its initial pressure is the fitted
     curve's (the data's, noise-free) there; a folder pocket did not write is refused before solving."""
-    from pocket.apps.cases import load
     from pocket.apps.casefile import solve
+    from pocket.apps.cases import load
 
     data = bulge_csv(tmp_path / "b.csv")
     (tmp_path / "mine").mkdir()

@@ -13,12 +13,13 @@ a trial set with a datum without state (a residual ``PENALTY``), is taken backwa
 derivative is ever taken across the penalty.
 
 Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every
-datum are ranked by cost. For the laws with many parameters (``PROBED``), the best ``RUNS`` each run ``_PROBE``
-evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or Ogden start can
-lead into a valley or a local minimum where trust-region steps crawl) and the lowest of them runs on
-to convergence; the others run from their best start. Bounds make trf's steps short near them, so a law without finite bounds (Ogden) uses
-Levenberg-Marquardt. A result with any datum without state is never reported: if no start has all
-its states, or the run ends outside the model's range, the fit is a ``ConvergenceError`` saying so.
+datum are ranked by cost. For the laws with many parameters (``PROBED``), the best ``RUNS`` each
+run ``_PROBE`` evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or
+Ogden start can lead into a valley or a local minimum where trust-region steps crawl) and the
+lowest of them runs on to convergence; the others run from their best start. Bounds make trf's
+steps short near them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result
+with any datum without state is never reported: if no start has all its states, or the run ends
+outside the model's range, the fit is a ``ConvergenceError`` saying so.
 
 The statistics of the result are in ``pocket.apps.fitstats``.
 """

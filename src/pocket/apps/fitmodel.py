@@ -123,7 +123,8 @@ def _compression(setup: Setup, test: Dataset, material: Material, tension: float
     for i, state in zip(order, states, strict=True):
         if state is not None:
             for name in out:
-                out[name][i] = state.height * setup.radius if name == "height" else state.pressure_ratio * pressure_initial
+                out[name][i] = state.height * setup.radius if name == "height" else \
+                    state.pressure_ratio * pressure_initial
     return out
 
 
