@@ -25,7 +25,8 @@ from .common import EXIT_CODES, Parser
 __all__ = ["main", "COMMANDS"]
 
 #: modules adding subcommands, in the order of ``pocket --help``
-COMMANDS = ("pocket.cli.solve", "pocket.cli.run", "pocket.cli.design", "pocket.cli.sense", "pocket.cli.sweep",
+COMMANDS = ("pocket.cli.solve", "pocket.cli.run", "pocket.cli.fit", "pocket.cli.design", "pocket.cli.sense",
+            "pocket.cli.sweep",
             "pocket.cli.validate")
 
 

@@ -43,17 +43,16 @@ numbers per line.
 
 from __future__ import annotations
 
-import csv
 import dataclasses
 import hashlib
-import io
 import pathlib
-import re
 from collections.abc import Callable
 
 import numpy as np
 
 from .errors import InputError
+from .tables import MAX_BYTES, heading
+from .tables import rows as _rows
 from .units import is_plain, quantity
 
 __all__ = ["Shape", "MIN_ROWS", "MAX_BYTES", "CONVEX_TOLERANCE", "FLAT_TOLERANCE", "table", "functions",
@@ -61,16 +60,12 @@ __all__ = ["Shape", "MIN_ROWS", "MAX_BYTES", "CONVEX_TOLERANCE", "FLAT_TOLERANCE
 
 #: fewest rows of a table: the three of the flatness check and one more for the cubic spline's ends
 MIN_ROWS = 4
-#: largest profile file read (bytes): a bound on the work a file can ask for
-MAX_BYTES = 1_000_000
 #: a chord slope may fall below the one before by this fraction of the largest slope (rounded tables)
 CONVEX_TOLERANCE = 1e-6
 #: the tip slope b may be this fraction of the mean slope z_2/rho_2 (a cone's is 1, a smooth tip's O(rho_1))
 FLAT_TOLERANCE = 0.05
 #: points per row on which the interpolated profile is checked convex
 _CHECKS = 8
-
-_HEADER = re.compile(r"^\s*(?P<name>[^\[\]]*?)\s*\[(?P<unit>[^\[\]]*)\]\s*$")
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -208,11 +203,8 @@ def functions(height, slope, curvature, extent: float, source: str = "the profil
 
 def _unit(path, column: int, text: str, clamp_radius: float | None) -> float:
     """The factor turning column ``column``'s numbers into units of R, from its header ``text``."""
-    match = _HEADER.match(text)
     where = f"{path}: column {column} ({text.strip()!r})"
-    if match is None or not match["unit"].strip():
-        raise InputError(f"{where} has no unit: write the header like 'radius [mm],height [mm]'")
-    unit = match["unit"].strip()
+    _, unit = heading(where, text, "radius [mm],height [mm]")
     if unit == "R":
         return 1.0
     key = f"{where} unit"
@@ -233,15 +225,7 @@ def read_csv(path, clamp_radius: float | None = None) -> Shape:
     is not two numbers or a table that is no profile (``table``) is an InputError naming the file, the
     row or the column."""
     path = pathlib.Path(path)
-    try:
-        if path.stat().st_size > MAX_BYTES:
-            raise InputError(f"{path}: larger than {MAX_BYTES} bytes, too large for a profile table")
-        text = path.read_bytes().decode("utf-8")
-    except OSError as err:
-        raise InputError(f"{path}: cannot read the profile file ({err.strerror})") from None
-    except UnicodeDecodeError as err:
-        raise InputError(f"{path}: not a UTF-8 text file (byte {err.start}), so not a CSV profile") from None
-    rows = [r for r in csv.reader(io.StringIO(text)) if any(cell.strip() for cell in r)]
+    rows = _rows(path, "the profile file")
     if not rows or len(rows[0]) != 2:
         raise InputError(f"{path}: the first line must name two columns with units, like 'radius [mm],height [mm]'")
     factors = [_unit(path, i + 1, cell, clamp_radius) for i, cell in enumerate(rows[0])]

@@ -1,0 +1,209 @@
+r"""Identify a rubber law's parameters from a user's tests of the clamped sheet: least squares on the model.
+
+The unknowns are the law's keys not held fixed (``pocket.apps.fitkeys``), scaled so that the problem
+is well conditioned: x_k = value_k / s_k with s_k the start's mu_0 (times T: ``pocket.apps.fitmodel``)
+for a stress, max(|start value|, 1) for a number. scipy's ``least_squares`` (trust region
+reflective, within the keys' bounds) minimises (1/2) sum r_i(x)^2 over the residuals of
+``pocket.apps.fitmodel.residuals``.
+
+Jacobian. The solvers resolve their states to ~1e-10 relative, so J is taken by forward differences
+of step h = 1e-6 in x (truncation error O(h) ~ 1e-6, rounding O(1e-10 / h) ~ 1e-4 relative: ample
+for a Gauss-Newton step and for the covariance). A forward step that leaves the bounds, or reaches
+a trial set with a datum without state (a residual ``PENALTY``), is taken backward instead, so no
+derivative is ever taken across the penalty.
+
+Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every
+datum are ranked by cost. For the laws with many parameters (``PROBED``), the best ``RUNS`` each
+run ``_PROBE`` evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or
+Ogden start can lead into a valley or a local minimum where trust-region steps crawl) and the
+lowest of them runs on to convergence; the others run from their best start. Bounds make trf's
+steps short near them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result
+with any datum without state is never reported: if no start has all its states, or the run ends
+outside the model's range, the fit is a ``ConvergenceError`` saying so.
+
+The statistics of the result are in ``pocket.apps.fitstats``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+
+import numpy as np
+
+from pocket.core.errors import ConvergenceError, InputError
+from pocket.core.materials import Material
+
+from . import fitstats
+from .fitkeys import Key, key_named, keys
+from .fitmodel import PENALTY, Setup, predict, residuals
+from .fitstart import starts
+
+__all__ = ["Fit", "fit", "RUNS", "PROBED"]
+
+#: starts probed (the best by their cost), for the laws ``PROBED``
+RUNS = 4
+#: the laws with many parameters, whose starts are probed; the others run from their best start
+PROBED = ("yeoh", "ogden")
+_STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring)
+_TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
+_MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
+_PROBE = 6  # evaluations each start runs before the best of them continues
+
+
+@dataclasses.dataclass(frozen=True)
+class Fit:
+    """A fit's result: the ``setup``, the fitted ``material`` (stresses in the setup's unit: Pa, or N/m
+    without a thickness), the ``free`` keys' names, the ``fixed`` ones (name -> value), the
+    ``statistics`` (``pocket.apps.fitstats.Statistics``), the model's ``values`` at the data (as
+    ``pocket.apps.fitmodel.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls``,
+    the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised`` trial sets of the least-squares
+    runs (some datum without state)."""
+
+    setup: Setup
+    material: Material
+    free: tuple[str, ...]
+    fixed: dict
+    statistics: fitstats.Statistics
+    values: list
+    residuals: np.ndarray
+    calls: int
+    seconds: float
+    starts: int
+    penalised: int
+
+
+class _Problem:
+    """The residual function of the scaled unknowns x, with its Jacobian and counters."""
+
+    def __init__(self, setup: Setup, base: Material, free: list[Key], scales: np.ndarray, count: dict):
+        self.setup, self.base, self.free, self.scales, self.count = setup, base, free, scales, count
+        self.lower = np.array([k.lower for k in free]) / scales
+        self.upper = np.array([k.upper for k in free]) / scales
+        self._last: tuple[bytes, np.ndarray] | None = None
+
+    def x(self, material: Material) -> np.ndarray:
+        """The scaled unknowns of ``material``."""
+        return np.array([k.get(material) for k in self.free]) / self.scales
+
+    def material(self, x) -> Material:
+        m = self.base
+        for key, value in zip(self.free, np.asarray(x) * self.scales, strict=True):
+            m = key.put(m, value)
+        return m
+
+    def __call__(self, x) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        if self._last is not None and self._last[0] == x.tobytes():
+            return self._last[1]
+        values, calls = predict(self.setup, self.material(x))
+        r = residuals(self.setup, values)
+        self.count["calls"] += calls
+        self.count["penalised"] += bool(np.any(r == PENALTY))
+        self._last = (x.tobytes(), r)
+        return r
+
+    def jacobian(self, x) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        r0 = self(x)
+        jac = np.empty((r0.size, x.size))
+        for k in range(x.size):
+            for h in (_STEP, -_STEP):
+                step = x.copy()
+                step[k] += h
+                if not self.lower[k] <= step[k] <= self.upper[k]:
+                    continue
+                r = self(step)
+                if not np.any(r == PENALTY):
+                    break
+            else:
+                raise ConvergenceError(f"the fit's Jacobian: {self.free[k].name} can be moved neither up nor down "
+                                       "by a relative 1e-6 without leaving the model's range")
+            jac[:, k] = (r - r0) / h
+        self._last = (x.tobytes(), r0)
+        return jac
+
+
+def _fixed_material(material: Material, fixed: dict, all_keys) -> Material:
+    for name, value in fixed.items():
+        material = key_named(all_keys, name, "--fix").put(material, value)
+    return material
+
+
+def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, start: dict | None = None) -> Fit:
+    """Fit ``law`` (``terms`` terms for Ogden) to ``setup``'s data (``pocket.apps.fitmodel.Setup``).
+
+    ``fixed``: key -> value held (stresses in the setup's unit); ``start``: key -> value that replaces
+    the start's (for every start). Raises InputError for fewer data than unknowns + 1 (before any
+    solve), ConvergenceError if no start or no result has a state for every datum.
+    """
+    clock = time.perf_counter()
+    fixed, start = dict(fixed or {}), dict(start or {})
+    all_keys = keys(law, terms)
+    for name in (*fixed, *start):
+        key_named(all_keys, name, "--fix" if name in fixed else "start")
+    free = [k for k in all_keys if k.name not in fixed]
+    if not free:
+        raise InputError("--fix holds every parameter of the law: there is nothing left to fit")
+    if setup.count <= len(free):
+        raise InputError(f"{setup.count} data, but fitting {len(free)} parameters ({', '.join(k.name for k in free)}) "
+                         f"needs at least {len(free) + 1}")
+    ranked, count, tried = [], {"calls": 0, "penalised": 0}, 0
+    for shape in starts(setup, law, terms):
+        for material in shape:
+            material = _fixed_material(_fixed_material(material, start, all_keys), fixed, all_keys)
+            problem = _problem(setup, material, free, count)
+            r = problem(problem.x(material))
+            tried += 1
+            if not np.any(r == PENALTY):
+                ranked.append((float(r @ r), material))
+                break
+    if not ranked:
+        raise ConvergenceError(f"no start of the {law} fit has a state for every datum (tried {tried}): the data "
+                               "may lie beyond this law's range (a pressure maximum, a force past the range end)")
+    ranked.sort(key=lambda pair: pair[0])
+    count["penalised"] = 0  # from here on: trial sets of the runs (a start without all states is just skipped)
+    probes = []
+    for _, material in ranked[:RUNS if law in PROBED else 1]:  # each start a few steps, where its basin shows
+        problem = _problem(setup, material, free, count)
+        x = _run(problem, problem.x(material), _PROBE if law in PROBED else _MAX_EVALUATIONS)[0]
+        r = problem(x)
+        if not np.any(r == PENALTY):
+            probes.append((float(r @ r), x, problem))
+    if not probes:
+        raise ConvergenceError(f"the {law} fit ended outside the model's range from every start")
+    _, x, problem = min(probes, key=lambda probe: probe[0])
+    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if law in PROBED else (x, 1, 0)
+    r = problem(x)
+    if np.any(r == PENALTY):
+        raise ConvergenceError(f"the {law} fit ended outside the model's range")
+    notes = [] if status > 0 else [f"the fit stopped after {evaluations} evaluations without meeting its "
+                                   "tolerances: the parameters may be ill-determined"]
+    jac = problem.jacobian(x)
+    material = problem.material(x)
+    values, calls = predict(setup, material)
+    stats = fitstats.statistics(setup, material, free, x, problem.scales, r, jac)
+    if notes:
+        stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
+    return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"] + calls,
+               time.perf_counter() - clock, tried, count["penalised"])
+
+
+def _run(problem: _Problem, x, budget: int) -> tuple[np.ndarray, int, int]:
+    """least_squares from ``x`` for at most ``budget`` evaluations: (x, its status, evaluations)."""
+    from scipy.optimize import least_squares
+
+    bounded = np.any(np.isfinite(problem.lower)) or np.any(np.isfinite(problem.upper))
+    out = least_squares(problem, np.clip(x, problem.lower, problem.upper), jac=problem.jacobian,
+                        bounds=(problem.lower, problem.upper), method="trf" if bounded else "lm", ftol=_TOL,
+                        xtol=_TOL, gtol=_TOL, max_nfev=budget)
+    return out.x, out.status, out.nfev
+
+
+def _problem(setup: Setup, material: Material, free: list[Key], count: dict) -> _Problem:
+    mu0 = abs(material.mu0)
+    scales = np.array([mu0 if k.unit == "stress" else max(abs(k.get(material)), 1.0) for k in free])
+    if not np.all(np.isfinite(scales)) or not np.all(scales > 0.0) or not math.isfinite(mu0):
+        raise ConvergenceError("the fit's start has no finite positive mu_0")
+    return _Problem(setup, material, free, scales, count)

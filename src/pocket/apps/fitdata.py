@@ -1,0 +1,156 @@
+"""A user's test data for a fit: CSV files read, checked and turned into SI arrays, before any solve.
+
+Each file is one test of the clamped sheet, its header naming each column's quantity and unit
+(``pocket.core.tables``):
+
+- an **inflation** (bulge) test: ``pressure`` with ``height`` (the pole's rise above the clamp plane)
+  and/or ``volume`` (the enclosed volume); the pressure is the control, strictly increasing and > 0;
+- a **compression** test by the flat plate: ``force`` with ``pressure`` and optionally ``height`` (of
+  the plate, the sheet's top); the force is the control (>= 0, no force twice), at the initial
+  pressure P_I given (``initial_pressure``), or else read from the row at zero force.
+
+Any other column, a column without a unit or of the wrong dimension, a cell that is not a finite
+number, or a response that is not > 0 (a relative residual divides by it) is a one-line
+``InputError`` naming the file, the row or the column. The fluid is a liquid (the volume is fixed
+under compression, so a volume column there says nothing and is refused).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import pathlib
+
+import numpy as np
+
+from pocket.core.errors import InputError
+from pocket.core.inputs import quote
+from pocket.core.tables import heading, rows
+from pocket.core.units import is_plain, quantity
+
+__all__ = ["QUANTITIES", "Dataset", "read", "CONTROLS"]
+
+#: column name -> the kind of quantity it holds (``pocket.core.units.KINDS``)
+QUANTITIES = {"pressure": "pressure", "height": "length", "volume": "volume", "force": "force"}
+#: test kind -> its control column
+CONTROLS = {"inflation": "pressure", "compression": "force"}
+_EXAMPLE = "pressure [kPa],height [mm]"
+
+
+@dataclasses.dataclass(frozen=True)
+class Dataset:
+    """One test: ``kind`` ("inflation" or "compression"), ``control`` (pressures in Pa or forces in N,
+    shape (n,)), ``responses`` (column name -> SI values of shape (n,), NaN where a row has no datum:
+    the zero-force pressure that defines P_I), ``initial_pressure`` (P_I in Pa; None for an inflation)
+    and ``source`` (the file, for messages)."""
+
+    kind: str
+    control: np.ndarray
+    responses: dict[str, np.ndarray]
+    initial_pressure: float | None
+    source: str
+
+    @property
+    def count(self) -> int:
+        """The number of data (finite responses) the test gives the fit."""
+        return int(sum(np.count_nonzero(np.isfinite(v)) for v in self.responses.values()))
+
+
+def _columns(path: pathlib.Path, header: list[str]) -> list[tuple[str, float]]:
+    """(name, SI factor) of each header cell."""
+    out = []
+    for i, text in enumerate(header, start=1):
+        where = f"{path}: column {i} ({text.strip()!r})"
+        name, unit = heading(where, text, _EXAMPLE)
+        if name not in QUANTITIES:
+            raise InputError(f"{where}: the fit cannot use a column {name!r} (it uses {', '.join(QUANTITIES)})")
+        if name in (n for n, _ in out):
+            raise InputError(f"{where}: a second {name!r} column")
+        one = f"1 {unit}"
+        factor = quantity(f"{where} unit", one, QUANTITIES[name])
+        if is_plain(one):
+            raise InputError(f"{where} has no {QUANTITIES[name]} unit: write the header like {_EXAMPLE!r}")
+        out.append((name, factor))
+    return out
+
+
+def _numbers(path: pathlib.Path, body: list[list[str]], columns) -> np.ndarray:
+    values = np.empty((len(body), len(columns)))
+    for number, row in enumerate(body, start=1):
+        if len(row) != len(columns):
+            raise InputError(f"{path}: row {number} is {','.join(row)!r}, but the header names {len(columns)} columns")
+        for j, (cell, (name, factor)) in enumerate(zip(row, columns, strict=True)):
+            try:
+                value = float(cell)
+            except ValueError:
+                value = math.nan
+            if not math.isfinite(value):
+                raise InputError(f"{path}: row {number}, {name} = {quote(cell.strip())} is not a finite number")
+            values[number - 1, j] = value * factor
+    return values
+
+
+def _positive(path, name, values) -> None:
+    bad = np.flatnonzero(~(values > 0.0))
+    if bad.size:
+        raise InputError(f"{path}: row {bad[0] + 1}, {name} = {values[bad[0]]:.6g} (SI), but it must be > 0")
+
+
+def read(path, initial_pressure: float | None = None) -> Dataset:
+    """The test of the CSV file ``path`` (module docstring); ``initial_pressure`` P_I in Pa for a
+    compression test (None: from its row at zero force; ignored for an inflation test)."""
+    path = pathlib.Path(path)
+    table = rows(path, "a test's CSV data")
+    if not table:
+        raise InputError(f"{path}: empty, but the first line must name the columns with units, like {_EXAMPLE!r}")
+    columns = _columns(path, table[0])
+    if len(table) < 2:
+        raise InputError(f"{path}: a header and no rows of data")
+    values = _numbers(path, table[1:], columns)
+    data = {name: values[:, j] for j, (name, _) in enumerate(columns)}
+    if "force" in data:
+        return _compression(path, data, initial_pressure)
+    return _inflation(path, data)
+
+
+def _inflation(path, data) -> Dataset:
+    if "pressure" not in data or not ({"height", "volume"} & set(data)):
+        raise InputError(f"{path}: an inflation test needs a pressure column and a height or volume column "
+                         f"(a compression test a force column): write the header like {_EXAMPLE!r}")
+    pressure = data.pop("pressure")
+    _positive(path, "pressure", pressure)
+    steps = np.flatnonzero(np.diff(pressure) <= 0.0)
+    if steps.size:
+        raise InputError(f"{path}: row {steps[0] + 2}, pressure = {pressure[steps[0] + 1]:.6g} Pa is not above the "
+                         f"row before ({pressure[steps[0]]:.6g} Pa): an inflation test's pressures must increase")
+    for name, v in data.items():
+        _positive(path, name, v)
+    return Dataset("inflation", pressure, data, None, str(path))
+
+
+def _compression(path, data, initial_pressure) -> Dataset:
+    if "pressure" not in data:
+        raise InputError(f"{path}: a compression test (a force column) needs a pressure column, like "
+                         "'force [N],pressure [kPa]'")
+    if "volume" in data:
+        raise InputError(f"{path}: the fit cannot use a volume column in a compression test (the liquid's "
+                         "volume is fixed while the plate presses)")
+    force = data.pop("force")
+    bad = np.flatnonzero(~(force >= 0.0))
+    if bad.size:
+        raise InputError(f"{path}: row {bad[0] + 1}, force = {force[bad[0]]:.6g} N, but it must be >= 0")
+    if np.unique(force).size != force.size:
+        raise InputError(f"{path}: a force given twice, but each row of a compression test needs its own force")
+    for name, v in data.items():
+        _positive(path, name, v)
+    zero = np.flatnonzero(force == 0.0)
+    pressure = data["pressure"].copy()
+    if initial_pressure is None:
+        if not zero.size:
+            raise InputError(f"{path}: a compression test needs its initial pressure: give --initial-pressure or "
+                             "a row at zero force")
+        initial_pressure = float(pressure[zero[0]])
+        pressure[zero[0]] = math.nan  # it defines P_I: not a datum
+    elif not initial_pressure > 0.0:
+        raise InputError(f"initial pressure = {quote(initial_pressure)} Pa, but it must be > 0")
+    return Dataset("compression", force, {**data, "pressure": pressure}, float(initial_pressure), str(path))

@@ -1,0 +1,79 @@
+"""The parameters a fit can vary: one ``Key`` per case-file key of a law, with its getter, setter and bounds.
+
+A law's keys are its parameters by name (``c1``, ``c10``, ``jm``), a listed parameter one key per
+term (Ogden's ``mu[0]``, ``exponents[0]``, ...). A key reads its value from a ``Material`` and
+returns a new ``Material`` with another value (``dataclasses``-style: the material is not changed),
+so that anything a material carries can be fitted by adding a key here (a prestretch of the
+clamped sheet would be one more, with bounds [1, inf)).
+
+Bounds are the box part of each law's admissible set: C1, mu, C10, Jm > 0. The rest of the set
+(C1 + C2 > 0, C30 >= 0 and a Yeoh slope that stays positive, mu_p alpha_p > 0, Jm above the data's
+largest I1 - 3) is not a box: a trial set outside it has no state, and the fit treats it as it
+treats a datum with no state (``pocket.apps.fitmodel``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable
+
+from pocket.core.errors import InputError
+from pocket.core.materials import LAWS, Material
+
+__all__ = ["Key", "keys", "key_named"]
+
+#: (law, parameter name) -> its lower bound, where the law's admissible set bounds it alone
+_LOWER = {("mooney-rivlin", "c1"): 0.0, ("neo-hookean", "mu"): 0.0, ("yeoh", "c10"): 0.0,
+          ("gent", "mu"): 0.0, ("gent", "jm"): 0.0}
+
+
+@dataclasses.dataclass(frozen=True)
+class Key:
+    """A fitted quantity: its ``name`` (a case-file key), ``unit`` ("stress" or "dimensionless"),
+    ``lower`` and ``upper`` bounds (stresses in the material's unit: only 0 and inf are used),
+    ``get(material) -> float`` and ``put(material, value) -> Material``."""
+
+    name: str
+    unit: str
+    lower: float
+    upper: float
+    get: Callable[[Material], float]
+    put: Callable[[Material, float], Material]
+
+
+def _replaced(material: Material, name: str, value) -> Material:
+    params = tuple((n, value if n == name else v) for n, v in material.params)
+    return dataclasses.replace(material, params=params, exact_alpha=None)
+
+
+def _plain(name: str) -> tuple[Callable, Callable]:
+    return (lambda m: float(m[name])), (lambda m, v: _replaced(m, name, float(v)))
+
+
+def _term(name: str, k: int) -> tuple[Callable, Callable]:
+    def put(m, v):
+        values = list(m[name])
+        values[k] = float(v)
+        return _replaced(m, name, tuple(values))
+
+    return (lambda m: float(m[name][k])), put
+
+
+def keys(law: str, terms: int = 1) -> tuple[Key, ...]:
+    """The keys of ``law`` (a name of ``LAWS``), ``terms`` terms for a listed parameter (Ogden)."""
+    out = []
+    for q in LAWS[law].parameters:
+        names = [(f"{q.name}[{k}]", _term(q.name, k)) for k in range(terms)] if q.listed else \
+            [(q.name, _plain(q.name))]
+        for name, (get, put) in names:
+            out.append(Key(name, q.unit, _LOWER.get((law, q.name), -math.inf), math.inf, get, put))
+    return tuple(out)
+
+
+def key_named(all_keys, name: str, flag: str) -> Key:
+    """The key called ``name`` among ``all_keys``; an InputError naming ``flag`` otherwise."""
+    for key in all_keys:
+        if key.name == name:
+            return key
+    raise InputError(f"{flag} = {name!r}, but the law's keys are {', '.join(k.name for k in all_keys)}")

@@ -1,0 +1,154 @@
+r"""The model's values at a fit's data, and the residuals that compare them.
+
+Units. The membrane model sees the rubber only through its tension scale mu_0 T: with E = 3 mu_0,
+
+    Phat = P R / (E T),   Fhat = F / (P_I pi R^2),   H = (H/R) R,   V = (V/R^3) R^3,
+
+and the shape of the law (its stresses divided by mu_0). So a material here holds its stresses in
+Pa when the thickness T is known, and the products stress * T in N/m when it is not (``Setup.scale``
+is then 1 m): the same numbers enter the model either way.
+
+Each datum is solved by the chosen solver (``pocket.apps.solvers``): an inflation test's pressures one
+by one (first branch), a compression test's forces as one curve (continuation). A datum the model
+has no state for at this trial set (``OutOfRangeError``: a pressure above the first branch's
+maximum, a force past the end of the range, a rubber that locks first; or a ``ConvergenceError``)
+gets NaN; so do all data of a trial set outside the law's admissible set. Pressures of an inflation
+test increase, so once one is above the maximum the higher ones are too and are not solved.
+
+Residuals. Column by column, a datum d with model value m gives (m - d) / |d| (relative: the
+default) or (m - d) / sigma with the column's stated uncertainty sigma (same unit). A datum with no
+state gives ``PENALTY``: finite, far above any residual of a trial set that has all its states
+(relative residuals are O(1); residuals in units of a stated uncertainty reach it only at a start a
+million uncertainties off), so the trust-region step that reached it is rejected and its radius
+shrinks (scipy's ``least_squares`` compares costs: a larger one halves the step until it is back in
+the model's range). The penalty is constant: the fit never differentiates across it
+(``pocket.apps.fit`` takes a one-sided difference away from it).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.materials import Material, check
+
+from .fitdata import Dataset
+from .solvers import entry, record
+
+__all__ = ["PENALTY", "Setup", "predict", "residuals"]
+
+#: the residual of a datum with no state (module docstring)
+PENALTY = 1e6
+_MISSED = (OutOfRangeError, ConvergenceError)
+
+
+@dataclasses.dataclass(frozen=True)
+class Setup:
+    """What the fit compares: ``tests`` (``pocket.apps.fitdata.Dataset``), the clamp ``radius`` R (m), the
+    ``thickness`` T (m, or None: stresses are then fitted as products with T, in N/m), the ``solver`` by
+    name with its ``options``, and ``sigma`` (column name -> stated uncertainty, SI; a column not named
+    has relative residuals)."""
+
+    tests: tuple[Dataset, ...]
+    radius: float
+    thickness: float | None = None
+    solver: str = "shooting"
+    options: dict = dataclasses.field(default_factory=dict)
+    sigma: dict = dataclasses.field(default_factory=dict)
+
+    @property
+    def scale(self) -> float:
+        """The length the material's stresses are multiplied by to give tensions: T, or 1 m without T."""
+        return 1.0 if self.thickness is None else self.thickness
+
+    def tension(self, material: Material) -> float:
+        """E T = 3 mu_0 T in N/m of ``material`` (its stresses in this setup's unit)."""
+        return 3.0 * material.mu0 * self.scale
+
+    @property
+    def count(self) -> int:
+        """The number of data."""
+        return sum(t.count for t in self.tests)
+
+
+def _inflation(setup: Setup, test: Dataset, material: Material, tension: float, calls: list) -> dict:
+    inflate = entry(record(setup.solver), "inflate", "an inflation test's data")
+    out = {name: np.full(test.control.shape, math.nan) for name in test.responses}
+    for i, pressure in enumerate(test.control):
+        calls[0] += 1
+        try:
+            state = inflate(material, pressure * setup.radius / tension, **setup.options)
+        except OutOfRangeError:
+            break  # the pressures increase: the higher ones are above the maximum too
+        except ConvergenceError:
+            continue
+        for name in out:
+            out[name][i] = state.height * setup.radius if name == "height" else state.volume * setup.radius**3
+    return out
+
+
+def _curve(setup, material, pressure_initial, forces, calls):
+    """The compressed states at ``forces`` (Fhat, increasing), or those below the range end, then None."""
+    solver = record(setup.solver)
+    curve = entry(solver, "compression_curve", "a compression test's data")
+    calls[0] += 1
+    try:
+        return curve(material, pressure_initial, forces, **setup.options)
+    except OutOfRangeError:
+        if not solver.serves("range_end"):
+            return [None] * len(forces)
+    calls[0] += 1
+    try:
+        end = entry(solver, "range_end", "a compression test's data")(material, pressure_initial, **setup.options)
+        inside = [f for f in forces if f <= end]
+        calls[0] += bool(inside)
+        states = curve(material, pressure_initial, inside, **setup.options) if inside else []
+    except _MISSED:
+        return [None] * len(forces)
+    return states + [None] * (len(forces) - len(inside))
+
+
+def _compression(setup: Setup, test: Dataset, material: Material, tension: float, calls: list) -> dict:
+    pressure_initial = test.initial_pressure
+    order = np.argsort(test.control)
+    forces = [float(f) for f in test.control[order] / (pressure_initial * math.pi * setup.radius**2)]
+    try:
+        states = _curve(setup, material, pressure_initial * setup.radius / tension, forces, calls)
+    except _MISSED:
+        states = [None] * len(forces)
+    out = {name: np.full(test.control.shape, math.nan) for name in test.responses}
+    for i, state in zip(order, states, strict=True):
+        if state is not None:
+            for name in out:
+                out[name][i] = state.height * setup.radius if name == "height" else \
+                    state.pressure_ratio * pressure_initial
+    return out
+
+
+def predict(setup: Setup, material: Material) -> tuple[list[dict], int]:
+    """The model's value at each datum (per test, column name -> SI array of the test's shape, NaN where the
+    model has no state) for ``material`` (its stresses in the setup's unit), and the number of solver calls."""
+    calls = [0]
+    try:
+        check(material.law, {n: list(v) if isinstance(v, tuple) else v for n, v in material.params})
+    except InputError:  # outside the law's admissible set: no state anywhere
+        return [{n: np.full(t.control.shape, math.nan) for n in t.responses} for t in setup.tests], 0
+    tension = setup.tension(material)
+    unit = material.scaled()
+    out = [(_inflation if t.kind == "inflation" else _compression)(setup, t, unit, tension, calls) for t in setup.tests]
+    return out, calls[0]
+
+
+def residuals(setup: Setup, values: list[dict]) -> np.ndarray:
+    """The residual of each datum (module docstring), tests in order, columns in each test's order; shape (n,)."""
+    out = []
+    for test, model in zip(setup.tests, values, strict=True):
+        for name, data in test.responses.items():
+            keep = np.isfinite(data)
+            d, m = data[keep], model[name][keep]
+            r = (m - d) / setup.sigma[name] if name in setup.sigma else m / d - 1.0
+            out.append(np.where(np.isfinite(m), r, PENALTY))
+    return np.concatenate(out) if out else np.empty(0)

@@ -1,0 +1,177 @@
+"""A fit's result as users take it: a JSON-ready summary, a case file of the fitted sheet, a figure.
+
+Units: stresses in Pa when the thickness T was given; without it the membrane model determines only
+the products stress * T (it sees the rubber through its tension scale mu_0 T), reported in N/m.
+The case file then writes the sheet with a nominal thickness ``NOMINAL_THICKNESS`` and the stresses
+divided by it: the model solves the same sheet for any T with the same products. The figure
+(matplotlib, imported here only) shows each test's data with the fitted curve and, below, the
+residuals; ``write`` puts both in a folder written whole (``pocket.apps.folders.staged``).
+"""
+
+from __future__ import annotations
+
+import math
+import pathlib
+
+import numpy as np
+
+from pocket.core.errors import ConvergenceError, OutOfRangeError
+
+from .fit import Fit
+from .fitdata import CONTROLS
+from .fitmodel import predict
+from .folders import staged
+
+__all__ = ["KIND", "NOMINAL_THICKNESS", "summary", "case_text", "write", "FIGURE", "CASE"]
+
+#: the kind of folder ``write`` writes (its ownership marker)
+KIND = "fit result"
+#: thickness written in the case file of a fit without one (m)
+NOMINAL_THICKNESS = 1e-3
+FIGURE, CASE = "fit.png", "fitted.toml"
+_CURVE = 60  # points of a fitted curve in the figure
+_SI = {"pressure": ("Pa", 1.0), "height": ("mm", 1e3), "volume": ("mL", 1e6), "force": ("N", 1.0)}
+
+
+def _unit(fit: Fit, key: str) -> str:
+    law_unit = next(k.unit for k in _keys(fit) if k.name == key)
+    return ("Pa" if fit.setup.thickness else "N/m") if law_unit == "stress" else "1"
+
+
+def _keys(fit: Fit):
+    from .fitkeys import keys
+
+    terms = len(fit.material["mu"]) if fit.material.law == "ogden" else 1
+    return keys(fit.material.law, terms)
+
+
+def summary(fit: Fit) -> dict:
+    """The fit as one JSON-ready dict: ``parameters`` maps each fitted key to its value, standard error,
+    95 % interval and unit (Pa for stresses, N/m for stress * T without a thickness, 1 for numbers)."""
+    s = fit.statistics
+    return {
+        "law": fit.material.law,
+        "parameters": {name: {"value": float(v), "standard_error": float(e), "interval_95": [float(a), float(b)],
+                              "unit": _unit(fit, name)}
+                       for name, v, e, (a, b) in zip(s.names, s.values, s.standard_errors, s.intervals, strict=True)},
+        "fixed": {name: {"value": float(v), "unit": _unit(fit, name)} for name, v in fit.fixed.items()},
+        "mu0": {"value": s.mu0, "standard_error": s.mu0_error, "unit": "Pa" if fit.setup.thickness else "N/m"},
+        "thickness_m": fit.setup.thickness,
+        "radius_m": fit.setup.radius,
+        "tension_scale": "the membrane model sees the rubber only through mu_0 T" +
+                         ("" if fit.setup.thickness else ": without a thickness, stresses are reported times T (N/m)"),
+        "correlation": {"keys": list(s.names), "matrix": s.correlation.tolist()},
+        "residuals": "relative" if not fit.setup.sigma else
+                     f"in units of the stated uncertainty for {', '.join(fit.setup.sigma)}, relative otherwise",
+        "residual_rms": s.rms,
+        "data": int(fit.residuals.size),
+        "degrees_of_freedom": s.dof,
+        "solver": fit.setup.solver,
+        "solver_calls": fit.calls,
+        "seconds": fit.seconds,
+        "starts": fit.starts,
+        "trials_without_state": fit.penalised,
+        "warnings": list(s.warnings),
+        "files": [t.source for t in fit.setup.tests],
+    }
+
+
+def _quantity(value: float, unit: str) -> str:
+    return f'"{value:.10g} {unit}"'
+
+
+def case_text(fit: Fit) -> str:
+    """A case file (TOML) of the fitted sheet for ``pocket run``: the clamp, the fitted rubber, the initial
+    pressure of the first compression test (else the middle pressure of the first inflation test) and
+    forces (the compression test's, else a quarter, a half and one of P_I pi R^2)."""
+    setup, material = fit.setup, fit.material
+    thickness = setup.thickness or NOMINAL_THICKNESS
+    factor = 1.0 if setup.thickness else 1.0 / NOMINAL_THICKNESS
+    compression = [t for t in setup.tests if t.kind == "compression"]
+    if compression:
+        pressure = compression[0].initial_pressure
+        forces = sorted(float(f) for f in compression[0].control if f > 0.0)
+    else:
+        first = setup.tests[0].control
+        pressure = float(first[len(first) // 2])
+        forces = [s * pressure * math.pi * setup.radius**2 for s in (0.25, 0.5, 1.0)]
+    lines = [f"# the {material.law} sheet fitted by pocket fit to {', '.join(t.source for t in setup.tests)}"]
+    if not setup.thickness:
+        lines.append(f"# no thickness was given: the fit determines stress * T; written with T = "
+                     f"{NOMINAL_THICKNESS * 1e3:g} mm (any T with the same products is the same sheet)")
+    lines += ['name = "fitted"', "[sheet]", f"thickness = {_quantity(thickness, 'm')}",
+              f'material = "{material.law}"']
+    stresses = material.definition.stresses
+    for name, value in material.params:
+        if isinstance(value, tuple):
+            cells = [_quantity(v * factor, "Pa") if name in stresses else f"{v:.10g}" for v in value]
+            lines.append(f"{name} = [{', '.join(cells)}]")
+        else:
+            lines.append(f"{name} = {_quantity(value * factor, 'Pa') if name in stresses else f'{value:.10g}'}")
+    lines += ["[clamp]", f"radius = {_quantity(setup.radius, 'm')}", "[initial]",
+              f"pressure = {_quantity(pressure, 'Pa')}", "[loads]",
+              f"forces = [{', '.join(_quantity(f, 'N') for f in forces)}]"]
+    if setup.solver != "shooting":
+        lines += ["[solver]", f'name = "{setup.solver}"']
+    return "\n".join(lines) + "\n"
+
+
+def _curve(fit: Fit, test):
+    """The fitted model along a dense control range of ``test``: (controls, column -> values)."""
+    import dataclasses
+
+    top = float(np.max(test.control))
+    low = 0.0 if test.kind == "compression" else top / _CURVE
+    dense = dataclasses.replace(test, control=np.linspace(low, top, _CURVE),
+                                responses={n: np.zeros(_CURVE) for n in test.responses})
+    try:
+        values, _ = predict(dataclasses.replace(fit.setup, tests=(dense,)), fit.material)
+    except (OutOfRangeError, ConvergenceError):
+        return dense.control, {}
+    return dense.control, values[0]
+
+
+def figure(fit: Fit, path: pathlib.Path) -> None:
+    """Draw each test's data, fitted curve and residuals into the PNG ``path``."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    panels = [(t, name) for t in fit.setup.tests for name in t.responses]
+    fig, axes = plt.subplots(2, len(panels), figsize=(4.8 * len(panels), 6.0), squeeze=False,
+                             gridspec_kw={"height_ratios": [3, 1]}, sharex="col")
+    start = 0
+    for j, (test, name) in enumerate(panels):
+        control = CONTROLS[test.kind]
+        cu, cf = _SI[control]
+        ru, rf = _SI[name]
+        data = test.responses[name]
+        keep = np.isfinite(data)
+        dense, curve = _curve(fit, test)
+        top, bottom = axes[0, j], axes[1, j]
+        top.plot(test.control[keep] * cf, data[keep] * rf, "o", ms=4, label="data")
+        if name in curve:
+            top.plot(dense * cf, curve[name] * rf, "-", label=f"fitted {fit.material.law}")
+        top.set_ylabel(f"{name} [{ru}]")
+        top.set_title(f"{pathlib.Path(test.source).name}: {test.kind}", fontsize=9)
+        top.legend(fontsize=8)
+        r = fit.residuals[start:start + int(np.count_nonzero(keep))]
+        start += r.size
+        bottom.axhline(0.0, color="0.6", lw=0.8)
+        bottom.plot(test.control[keep] * cf, r, "o", ms=3)
+        bottom.set_xlabel(f"{control} [{cu}]")
+        bottom.set_ylabel("residual" if name not in fit.setup.sigma else "residual / sigma")
+    fig.suptitle(f"{fit.material.law} fit: residual RMS {fit.statistics.rms:.3g}", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def write(fit: Fit, target: pathlib.Path) -> pathlib.Path:
+    """Write the figure (``FIGURE``) and the case file (``CASE``) into the folder ``target`` (absolute,
+    checked by ``pocket.apps.folders.check_replaceable`` for ``KIND``), whole or not at all."""
+    with staged(target, KIND) as partial:
+        figure(fit, partial / FIGURE)
+        (partial / CASE).write_text(case_text(fit), encoding="utf-8")
+    return target

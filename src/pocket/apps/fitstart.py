@@ -1,0 +1,97 @@
+r"""Where a fit starts: the tension scale from the small-strain limit, the law's shape at neutral values.
+
+Tension scale. At small strain every law is its small-strain shear modulus mu_0 (E = 3 mu_0), and
+the dome's pole height and volume grow as the cube root of the pressure (Hencky's regime,
+``pocket.core.smallstrain``):
+
+    H0 / R = c_H Phat^(1/3),   V / R^3 = c_V Phat^(1/3),   Phat = P R / (E T),
+
+so each datum (P, H0) gives E T = P R (c_H R / H0)^3, and (P, V) gives E T = P R (c_V R^3 / V)^3.
+The estimate is the median over the first ``SMALL`` rows (the lowest pressures) of each inflation
+test, and the zero-force row of a compression test with heights (the dome at P_I). At larger
+strains the estimate is biased (a stiffening rubber looks stiffer), which the fit corrects: the
+scale is the best-determined direction of every fit. Without such rows (a compression test of
+forces and pressures alone) the starts span Phat_I from 0.01 to 1. Each shape is tried at these
+scales in turn (``_STIFFER`` times the estimate), and starts from the first that has a state for
+every datum.
+
+Shape. In units of mu_0, each law's start shapes (``SHAPES``): neutral values (Yeoh's C20 and C30
+near 0, Mooney-Rivlin's alpha = C2/C1 small and moderate, Gent's Jm from little to much locking,
+Ogden's exponents from Ogden's rubber and neighbours, each term carrying an equal share of mu_0,
+mu_p alpha_p = 2 mu_0 / N). A law with several starts is fitted from the best few
+(``pocket.apps.fit``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pocket.core import smallstrain
+from pocket.core.errors import InputError
+from pocket.core.materials import LAWS, Material
+
+from .fitmodel import Setup
+
+__all__ = ["SMALL", "SHAPES", "MAX_TERMS", "tension_estimate", "starts"]
+
+#: rows of each test used for the small-strain estimate
+SMALL = 3
+#: Ogden's exponents tried, per number of terms
+_OGDEN = {1: ((2.0,), (4.0,), (8.0,), (-2.0,)), 2: ((2.0, -2.0), (4.0, -2.0), (1.3, 5.0), (8.0, -2.0)),
+          3: ((1.3, 5.0, -2.0), (2.0, 4.0, -2.0), (1.5, 8.0, -1.0))}
+#: law -> its start shapes in units of mu_0 (Ogden: built from ``_OGDEN`` by ``_ogden``)
+SHAPES = {
+    "neo-hookean": ({"mu": 1.0},),
+    "mooney-rivlin": tuple({"c1": 0.5 / (1.0 + a), "c2": 0.5 * a / (1.0 + a)} for a in (0.1, 0.5)),
+    "yeoh": ({"c10": 0.5, "c20": 0.0, "c30": 5e-4}, {"c10": 0.5, "c20": -0.01, "c30": 1e-3},
+             {"c10": 0.5, "c20": 0.02, "c30": 1e-5}),
+    "gent": tuple({"mu": 1.0, "jm": jm} for jm in (100.0, 20.0, 5.0)),
+}
+#: factors on the small-strain estimate of E T tried: a stiffer start keeps the highest pressures below a
+#: pressure maximum that the estimate (biased soft at the larger strains of the first rows) puts them above
+_STIFFER = (1.0, 2.0, 4.0)
+#: largest number of Ogden terms fitted
+MAX_TERMS = max(_OGDEN)
+
+
+def tension_estimate(setup: Setup) -> float | None:
+    """E T (N/m) from the small-strain rows of ``setup``'s tests (module docstring), or None if none has any."""
+    c_h, c_v = smallstrain.height(1.0), smallstrain.volume(1.0)
+    radius = setup.radius
+    out = []
+    for test in setup.tests:
+        if test.kind == "inflation":
+            rows = slice(0, SMALL)
+            pressures = test.control[rows]
+        else:
+            rows = test.control == 0.0
+            pressures = np.full(np.count_nonzero(rows), test.initial_pressure)
+        for name, (c, power) in {"height": (c_h, 1), "volume": (c_v, 3)}.items():
+            if name in test.responses:
+                values = test.responses[name][rows] / radius**power
+                out += [p * radius * (c / v) ** 3 for p, v in zip(pressures, values, strict=True) if np.isfinite(v)]
+    return float(np.median(out)) if out else None
+
+
+def _ogden(terms: int) -> tuple[dict, ...]:
+    if terms not in _OGDEN:
+        raise InputError(f"--terms = {terms!r}, but an Ogden fit takes 1 to {MAX_TERMS} terms")
+    return tuple({"mu": tuple(2.0 / (terms * a) for a in alphas), "exponents": alphas} for alphas in _OGDEN[terms])
+
+
+def starts(setup: Setup, law: str, terms: int = 1) -> list[list[Material]]:
+    """The start materials of ``law`` (stresses in ``setup``'s unit): per shape, one at each tension scale
+    to try in turn."""
+    shapes = _ogden(terms) if law == "ogden" else SHAPES[law]
+    estimate = tension_estimate(setup)
+    if estimate is not None:
+        tensions = [estimate * f for f in _STIFFER]
+    else:
+        tensions = [t.initial_pressure * setup.radius / p for t in setup.tests[:1] for p in (0.01, 0.1, 1.0)]
+    stresses = LAWS[law].stresses
+    return [[Material(law, tuple((n, _times(t / 3.0 / setup.scale, v) if n in stresses else v)
+                                 for n, v in shape.items())) for t in tensions] for shape in shapes]
+
+
+def _times(factor: float, value):
+    return tuple(factor * v for v in value) if isinstance(value, tuple) else factor * value

@@ -1,0 +1,102 @@
+r"""What a fit's data determine: standard errors, correlations, intervals and identifiability warnings.
+
+At the solution x (the scaled unknowns, x_k = value_k / s_k) with residuals r (n of them) and
+Jacobian J = dr/dx (n x p), the linearised model gives, for residuals with a common unknown variance
+sigma^2 (relative residuals, or residuals in units of the stated uncertainties),
+
+    s^2 = RSS / (n - p),   RSS = r . r,
+    Cov(x) = s^2 (J^T J)^-1,   Cov(value) = D Cov(x) D,   D = diag(s_k),
+
+(the pseudo-inverse by SVD, so a rank-deficient J gives infinite-looking but finite numbers rather
+than an error), standard errors SE_k = sqrt(Cov_kk), correlations Cov_kl / (SE_k SE_l) and 95 %
+intervals value_k +- t_{0.975, n-p} SE_k (Student's t: s^2 is estimated from the same n - p degrees of
+freedom). mu_0 = mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov grad(mu_0).
+
+Identifiability. Non-uniqueness is real for these laws (Ogden, Saccomandi and Sgura, 2004): a
+parameter whose SE exceeds |value| is not determined, and two parameters correlated beyond
+``CORRELATED`` in magnitude are determined only as a combination. For such a pair (a, b), the
+combination determined best is the eigenvector (u_a, u_b) of their covariance in relative units
+(Cov / (|a| |b|)) with the smaller eigenvalue lambda: u_a a/|a| + u_b b/|b| has relative error
+sqrt(lambda), reported as "a + c b" with c = (u_b / u_a) |a| / |b|. With any such warning the
+report adds mu_0 and its error, the combination small-strain data always determine.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from pocket.core.materials import Material
+
+__all__ = ["CORRELATED", "Statistics", "statistics"]
+
+#: |correlation| above which two parameters are reported as determined only together
+CORRELATED = 0.99
+_LEVEL = 0.95  # the intervals' confidence
+
+
+@dataclasses.dataclass(frozen=True)
+class Statistics:
+    """A fit's statistics: ``names`` of the p free keys, their ``values``, ``standard_errors``,
+    ``covariance`` (p x p), ``correlation`` (p x p) and 95 % ``intervals`` (p x 2), all in the
+    material's units; ``mu0`` and ``mu0_error`` (same unit); the residual ``rms``, the degrees of
+    freedom ``dof`` = n - p; and the identifiability ``warnings`` (one line each)."""
+
+    names: tuple[str, ...]
+    values: np.ndarray
+    standard_errors: np.ndarray
+    covariance: np.ndarray
+    correlation: np.ndarray
+    intervals: np.ndarray
+    mu0: float
+    mu0_error: float
+    rms: float
+    dof: int
+    warnings: tuple[str, ...]
+
+
+def statistics(setup, material: Material, free, x, scales, r, jac) -> Statistics:
+    """The statistics (module docstring) of ``material``, the fit at scaled unknowns ``x`` (keys ``free``,
+    ``scales`` s_k) with residuals ``r`` (n,) and Jacobian ``jac`` (n x p) in x."""
+    from scipy.stats import t as student
+
+    n, p = jac.shape
+    dof = n - p
+    s2 = float(r @ r) / dof
+    cov = np.diag(scales) @ (s2 * np.linalg.pinv(jac.T @ jac)) @ np.diag(scales)
+    se = np.sqrt(np.maximum(np.diag(cov), 0.0))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = np.where(np.outer(se, se) > 0.0, cov / np.outer(se, se), 0.0)
+    np.fill_diagonal(corr, 1.0)
+    values = np.array([k.get(material) for k in free])
+    half = student.ppf(0.5 + 0.5 * _LEVEL, dof) * se
+    grad = np.array([(k.put(material, v + h).mu0 - material.mu0) / h
+                     for k, v, h in zip(free, values, 1e-6 * scales, strict=True)])
+    mu0_error = math.sqrt(max(float(grad @ cov @ grad), 0.0))
+    names = tuple(k.name for k in free)
+    warnings = _warnings(names, values, se, cov, corr)
+    if warnings:
+        warnings.append(f"what the data do determine: mu_0 = {material.mu0:.6g} +- {mu0_error:.2g}"
+                        f"{'' if setup.thickness else ' (times T, N/m)'}, the small-strain shear modulus")
+    return Statistics(names, values, se, cov, corr, np.stack([values - half, values + half], axis=1),
+                      material.mu0, mu0_error, math.sqrt(float(r @ r) / n), dof, tuple(warnings))
+
+
+def _warnings(names, values, se, cov, corr) -> list[str]:
+    out = [f"{name} = {v:.6g} +- {e:.2g}: the data do not determine it (its standard error exceeds its value)"
+           for name, v, e in zip(names, values, se, strict=True) if e > abs(v)]
+    for i in range(len(names)):
+        for j in range(i + 1, len(names)):
+            if abs(corr[i, j]) > CORRELATED:
+                a, b = abs(values[i]), abs(values[j])
+                if a == 0.0 or b == 0.0:
+                    continue
+                rel = cov[np.ix_([i, j], [i, j])] / np.outer([a, b], [a, b])
+                lam, vec = np.linalg.eigh(rel)
+                ua, ub = vec[:, 0]
+                combination = f"{names[i]} {'+' if ub / ua >= 0 else '-'} {abs(ub / ua) * a / b:.4g} {names[j]}"
+                out.append(f"{names[i]} and {names[j]} are correlated (r = {corr[i, j]:+.4f}): the data determine "
+                           f"{combination} (to {math.sqrt(max(lam[0], 0.0)):.2g} relative), not each")
+    return out

@@ -1,0 +1,93 @@
+"""``pocket fit``: bad data refused in one line before any solve; the JSON; the folder and its case file."""
+
+import json
+
+import numpy as np
+import pytest
+
+from pocket import shooting
+from pocket.cli import main
+from pocket.core.materials import check
+
+R, T = 0.02, 1e-3
+TRUTH = check("mooney-rivlin", {"c1": 160e3, "c2": 47e3})
+
+
+def bulge_csv(path):
+    """A noise-free bulge test of TRUTH in kPa and mm, 8 pressures."""
+    phats = np.linspace(0.05, 0.6, 8)
+    tension = 3.0 * TRUTH.mu0 * T
+    heights = [shooting.inflate(TRUTH.scaled(), p).height * R for p in phats]
+    rows = [f"{float(p * tension / R / 1e3)!r},{float(h * 1e3)!r}" for p, h in zip(phats, heights, strict=True)]
+    path.write_text("pressure [kPa],height [mm]\n" + "\n".join(rows) + "\n")
+    return str(path)
+
+
+BAD = {
+    "missing unit": ("pressure,height [mm]\n1,2\n2,3\n3,4\n", "has no unit"),
+    "non-numeric cell": ("pressure [kPa],height [mm]\n1,2\n2,abc\n3,4\n",
+                         "row 2, height = 'abc' is not a finite number"),
+    "negative pressure": ("pressure [kPa],height [mm]\n-1,2\n2,3\n3,4\n",
+                          "row 1, pressure = -1000 (SI), but it must be > 0"),
+    "non-monotone pressures": ("pressure [kPa],height [mm]\n1,2\n3,3\n2,4\n",
+                               "row 3, pressure = 2000 Pa is not above"),
+    "fewer points than parameters": ("pressure [kPa],height [mm]\n1,2\n2,3\n", "2 data, but fitting 2 parameters"),
+    "unusable column": ("pressure [kPa],temperature [K]\n1,2\n2,3\n3,4\n", "the fit cannot use a column 'temperature'"),
+    "volume in compression": ("force [N],pressure [kPa],volume [mL]\n0,1,2\n1,2,2\n2,3,2\n", "cannot use a volume"),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD))
+def test_bad_data_one_line_exit_2_before_solving(case, tmp_path, capsys, monkeypatch):
+    """Each defect is one line on stderr naming it, exit status 2, and no solve (the model is not called)."""
+    import pocket.apps.fitmodel as model
+
+    monkeypatch.setattr(model, "entry", lambda *a: pytest.fail("solved"))
+    text, message = BAD[case]
+    (tmp_path / "data.csv").write_text(text)
+    status = main(["fit", str(tmp_path / "data.csv"), "--radius", "20 mm", "--thickness", "1 mm"])
+    out, err = capsys.readouterr()
+    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+
+
+def test_json_parameters_in_si(tmp_path, capsys):
+    """Exact answer: the truth's C1 and C2 in Pa (noise-free data; 1e-6 as in the library's recovery test),
+    with standard errors, the correlation matrix and the counts."""
+    status = main(["fit", bulge_csv(tmp_path / "b.csv"), "--radius", "20 mm", "--thickness", "1 mm", "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert status == 0
+    for key in ("c1", "c2"):
+        assert out["parameters"][key]["value"] == pytest.approx(TRUTH[key], rel=1e-6)
+        assert out["parameters"][key]["unit"] == "Pa" and out["parameters"][key]["standard_error"] >= 0.0
+    assert out["correlation"]["keys"] == ["c1", "c2"] and out["solver_calls"] > 0 and out["data"] == 8
+
+
+def test_without_thickness_reports_products(tmp_path, capsys):
+    """The model sees mu_0 T only: without --thickness the parameters are stress * T in N/m (truth times T)."""
+    status = main(["fit", bulge_csv(tmp_path / "b.csv"), "--radius", "20 mm", "--json", "--fix", "c2=0.047 N/m"])
+    assert status == 2  # a held stress needs a thickness
+    capsys.readouterr()
+    status = main(["fit", bulge_csv(tmp_path / "b.csv"), "--radius", "20 mm", "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert status == 0 and out["parameters"]["c1"]["unit"] == "N/m"
+    assert out["parameters"]["c1"]["value"] == pytest.approx(TRUTH["c1"] * T, rel=1e-6)
+
+
+def test_out_folder_case_file_round_trip(tmp_path, capsys):
+    """The fitted sheet's case file runs, and its inflated height at its initial pressure is the fitted
+    curve's (the data's, noise-free) there; a folder pocket did not write is refused before solving."""
+    from pocket.apps.casefile import solve
+    from pocket.apps.cases import load
+
+    data = bulge_csv(tmp_path / "b.csv")
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "notes.txt").write_text("mine")
+    assert main(["fit", data, "--radius", "20 mm", "--thickness", "1 mm", "--out", str(tmp_path / "mine")]) == 2
+    assert main(["fit", data, "--radius", "20 mm", "--thickness", "1 mm", "--out", str(tmp_path / "res")]) == 0
+    capsys.readouterr()
+    assert (tmp_path / "res" / "fit.png").stat().st_size > 0
+    case = load(tmp_path / "res" / "fitted.toml")
+    result = solve(case)
+    pressure = result["inflated"]["pressure_Pa"]
+    expected = shooting.inflate(TRUTH.scaled(), pressure * R / (3.0 * TRUTH.mu0 * T)).height * R
+    assert result["inflated"]["height_m"] == pytest.approx(expected, rel=1e-6)  # the fit's 1e-6
