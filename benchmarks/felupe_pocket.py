@@ -164,3 +164,67 @@ def inflate(m: Pocket, phat=PHAT, steps=21, tol=1e-9) -> dict:
         m.pressure.update(pk)
         _solve(m, [m.solid, m.pressure], tol)
     return {"pressure": phat, **measure(m), "iterations": m.iterations, "seconds": time.perf_counter() - tic}
+
+
+def _secant(fun, x0, x1, tol, maxiter=30):
+    """A root of fun by the secant method from x0, x1 (fun(x0) first); the last fun value with it."""
+    f0 = fun(x0)
+    for _ in range(maxiter):
+        f1 = fun(x1)
+        if abs(f1) < tol:
+            return x1, f1
+        x0, x1, f0 = x1, x1 - f1 * (x1 - x0) / (f1 - f0), f1
+    raise RuntimeError(f"secant iteration did not converge: residual {f1:.3g}")
+
+
+def compress(m: Pocket, inflated: dict, forces, penalty=1e3, tol=1e-9) -> list[dict]:
+    """Press the inflated ``m`` (its state ``inflated`` from ``inflate``) by a rigid flat plate at fixed
+    liquid volume to each Fhat in ``forces`` (increasing); per force P/P_I, H/H0, the contact force and the
+    state's measures. The fluid pressure is the root of V(P; h) = V_I and the plate's height h the root
+    of F(h) = F, both by secant iterations (see the module docstring)."""
+    import felupe as fem
+
+    p_i = 3.0 * m.thickness * inflated["pressure"]
+    h0, v_i = inflated["height"], inflated["volume"]
+    u = m.field[0]
+    mask = np.arange(m.points.shape[0]) == m.centre
+    u.values[m.centre] = [h0 - m.thickness, 0.0]  # the plate, free of the sheet so far, put on its top
+    m.boundaries["plate"] = fem.Boundary(u, mask=mask, skip=(0, 1), value=h0 - m.thickness)
+    m.boundaries["plate_r"] = fem.Boundary(u, mask=mask, skip=(1, 0))
+    contact = fem.ContactRigidPlane(m.field, points=m.upper, centerpoint=m.centre, normal=np.array([-1.0, 0.0]),
+                                    multiplier=penalty)
+    items = [m.solid, m.pressure, contact]
+    state = {"p": p_i, "dvdp": None}
+
+    def volume_error(p):
+        m.pressure.update(p)
+        _solve(m, items, tol)
+        return measure(m)["volume"] - v_i
+
+    def force_at(h):
+        """Fhat with the plate at h and the pressure that keeps the volume."""
+        m.boundaries["plate"].value = h - m.thickness
+        m.boundaries["plate"].update(h - m.thickness)
+        p0 = state["p"]
+        p1 = p0 * (1.0 + 1e-3)
+        state["p"], _ = _secant(volume_error, p0, p1, 1e-10 * v_i)
+        reaction = contact.assemble.vector(m.field).toarray().ravel()[2 * m.centre]
+        return abs(reaction) / (np.pi * p_i)
+
+    tic = time.perf_counter()
+    out, h, f_prev, h_prev = [], h0, 0.0, h0
+    for target in forces:
+        # march down until the force passes the target, then the secant on h
+        while True:
+            step = min(0.01, 2.0 * (h_prev - h)) if h_prev > h else 1e-5
+            h_try = h - step
+            f_try = force_at(h_try)
+            h_prev, h, f_prev = h, h_try, f_try
+            if f_try >= target:
+                break
+        h, _ = _secant(lambda hh: force_at(hh) - target, h_prev, h, 1e-8)
+        s = measure(m)
+        out.append({"force": target, "pressure_ratio": state["p"] / p_i, "height_ratio": h / h0, "plate": h,
+                    **s, "seconds": time.perf_counter() - tic, "iterations": m.iterations})
+        h_prev, f_prev = h, target
+    return out
