@@ -212,19 +212,18 @@ def compress(m: Pocket, inflated: dict, forces, penalty=1e3, tol=1e-9) -> list[d
         return abs(reaction) / (np.pi * p_i)
 
     tic = time.perf_counter()
-    out, h, f_prev, h_prev = [], h0, 0.0, h0
+    out, h, h_prev = [], h0, h0
     for target in forces:
         # march down until the force passes the target, then the secant on h
         while True:
             step = min(0.01, 2.0 * (h_prev - h)) if h_prev > h else 1e-5
             h_try = h - step
-            f_try = force_at(h_try)
-            h_prev, h, f_prev = h, h_try, f_try
-            if f_try >= target:
+            h_prev, h = h, h_try
+            if force_at(h_try) >= target:
                 break
-        h, _ = _secant(lambda hh: force_at(hh) - target, h_prev, h, 1e-8)
+        h, _ = _secant(lambda hh, f=target: force_at(hh) - f, h_prev, h, 1e-8)
         s = measure(m)
         out.append({"force": target, "pressure_ratio": state["p"] / p_i, "height_ratio": h / h0, "plate": h,
                     **s, "seconds": time.perf_counter() - tic, "iterations": m.iterations})
-        h_prev, f_prev = h, target
+        h_prev = h
     return out
