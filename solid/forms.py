@@ -47,11 +47,11 @@ COMPONENTS = ((0, 0), (0, 1), (1, 0), (1, 1), (2, 2))
 def components(field, r) -> np.ndarray:
     """The five components (5, ...) of dF of a vector field (a skfem DiscreteField) at radius r."""
     g = field.grad
-    return np.array([g[0, 0], g[0, 1], g[1, 0], g[1, 1], field.value[0] / r])
+    return np.array([g[0, 0], g[0, 1], g[1, 0], g[1, 1], field[0] / r])
 
 
 def _deformation(w):
-    return kin.gradient(w["u"].grad, w["u"].value[0], w.x[0])
+    return kin.gradient(w["u"].grad, w["u"][0], w.x[0])
 
 
 def tangent_table(F: np.ndarray, p: np.ndarray, law) -> np.ndarray:
@@ -77,7 +77,7 @@ def residual_u(law):
     @LinearForm
     def form(v, w):
         F = _deformation(w)
-        S = kin.stress(F, law) + w["p"].value * kin.cofactor(F)
+        S = kin.stress(F, law) + np.asarray(w["p"]) * kin.cofactor(F)
         return np.einsum("a...,a...->...", np.array([S[i, j] for i, j in COMPONENTS]),
                          components(v, w.x[0])) * 2.0 * np.pi * w.x[0]
 
@@ -94,7 +94,7 @@ def residual_p(q, w):
 def tangent_uu(du, v, w):
     """K_uu[du, v] with the tangent tabulated in w["table"] (``tangent_table``)."""
     r = w.x[0]
-    return np.einsum("ab...,a...,b...->...", w["table"].value, components(du, r), components(v, r)) * 2.0 * np.pi * r
+    return np.einsum("ab...,a...,b...->...", np.asarray(w["table"]), components(du, r), components(v, r)) * 2.0 * np.pi * r
 
 
 @BilinearForm
@@ -107,7 +107,7 @@ def coupling(du, q, w):
 
 def _surface(w):
     u = w["u"]
-    return w.x[0] + u.value[0], u.value[1], 1.0 + u.grad[0, 0]
+    return w.x[0] + u[0], u[1], 1.0 + u.grad[0, 0]
 
 
 @Functional
@@ -121,14 +121,14 @@ def volume(w):
 def volume_first(v, w):
     """V'[v]."""
     rho, uz, drho = _surface(w)
-    return 2.0 * np.pi * (v.value[0] * uz * drho + rho * v.value[1] * drho + rho * uz * v.grad[0, 0])
+    return 2.0 * np.pi * (v[0] * uz * drho + rho * v[1] * drho + rho * uz * v.grad[0, 0])
 
 
 @BilinearForm
 def volume_second(dw, v, w):
     """V''[dw, v] (symmetric)."""
     rho, uz, drho = _surface(w)
-    vr, vz, dvr = v.value[0], v.value[1], v.grad[0, 0]
-    wr, wz, dwr = dw.value[0], dw.value[1], dw.grad[0, 0]
+    vr, vz, dvr = v[0], v[1], v.grad[0, 0]
+    wr, wz, dwr = dw[0], dw[1], dw.grad[0, 0]
     return 2.0 * np.pi * (vr * wz * drho + vr * uz * dwr + wr * vz * drho + rho * vz * dwr + wr * uz * dvr
                           + rho * wz * dvr)

@@ -80,8 +80,8 @@ def solid(model: Model, u: np.ndarray, p: np.ndarray):
     """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p) (``forms``)."""
     bu, bp = model.basis_u, model.basis_p
     uq, pq = bu.interpolate(u), bp.interpolate(p)
-    F = kin.gradient(uq.grad, uq.value[0], bu.global_coordinates().value[0])
-    table = forms.tangent_table(F, pq.value, model.law)
+    F = kin.gradient(uq.grad, uq[0], bu.global_coordinates()[0])
+    table = forms.tangent_table(F, np.asarray(pq), model.law)
     r_u = asm(forms.residual_u(model.law), bu, u=uq, p=pq)
     r_p = asm(forms.residual_p, bp, u=uq)
     k_uu = _tangent(bu, table)
@@ -92,7 +92,7 @@ def solid(model: Model, u: np.ndarray, p: np.ndarray):
 def _tangent(basis: Basis, table: np.ndarray):
     """K_uu = int dF[phi_j] : T : dF[phi_i] 2 pi r (``forms.tangent_uu``), each element's matrix by one
     contraction over its basis functions and quadrature points instead of one form call per pair."""
-    r = basis.global_coordinates().value[0]
+    r = basis.global_coordinates()[0]
     comps = np.array([forms.components(phi[0], r) for phi in basis.basis])  # (basis functions, 5, e, q)
     weight = basis.dx * 2.0 * np.pi * r
     local = np.einsum("iaeq,abeq,jbeq,eq->eij", comps, table, comps, weight, optimize=True)

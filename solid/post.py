@@ -49,7 +49,7 @@ class Fields:
 def _slope(r: np.ndarray, f: np.ndarray) -> np.ndarray:
     """df/dr at the grid's nodes (odd ones: element midpoints), from each element's quadratic (at the
     element ends the mean of the two sides' slopes; the ends of the line one-sided)."""
-    r0, r1, r2 = r[0:-2:2], r[1:-1:2], r[2::2]
+    r0, r2 = r[0:-2:2], r[2::2]
     f0, f1, f2 = f[0:-2:2], f[1:-1:2], f[2::2]
     h = r2 - r0
     left = (-3.0 * f0 + 4.0 * f1 - f2) / h
@@ -59,7 +59,6 @@ def _slope(r: np.ndarray, f: np.ndarray) -> np.ndarray:
     out[1:-1:2] = mid
     out[0], out[-1] = left[0], right[-1]
     out[2:-2:2] = 0.5 * (right[:-1] + left[1:])
-    del r1
     return out
 
 
@@ -103,10 +102,9 @@ def fields(model: Model, y: np.ndarray) -> Fields:
     out.top_rho, out.top_eta = r + ur[grid[-1]], z[-1] + uz[grid[-1]]
     out.volume_mid = _line_volume(r, out.rho, out.eta)
     uq = model.basis_u.interpolate(u)
-    F = kin.gradient(uq.grad, uq.value[0], model.basis_u.global_coordinates().value[0])
+    F = kin.gradient(uq.grad, uq[0], model.basis_u.global_coordinates()[0])
     out.incompressibility = float(np.abs(kin.jacobian(F) - 1.0).max())
-    del p
-    P = kin.stress(F, model.law) + model.basis_p.interpolate(split(model, y)[1]).value * kin.cofactor(F)
+    P = kin.stress(F, model.law) + np.asarray(model.basis_p.interpolate(p)) * kin.cofactor(F)
     nodal = {key: scalar.project(P[i, j])[grid] for key, (i, j) in
              {"rR": (0, 0), "zR": (1, 0), "hoop": (2, 2)}.items()}
     simpson = np.zeros(z.size)

@@ -1,0 +1,123 @@
+"""The solid's stress, tangent and fluid terms against finite differences of what they differentiate.
+
+Exact answers: each derivative is the limit of the central difference quotient of the function it
+differentiates, whose error is O(h^2); with h = 1e-6 relative the quotient carries ~1e-10 of
+round-off relative to the function's scale, so the tolerances below are 1e-6 relative (a wrong
+term is off by O(1)).
+"""
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+from pocket.core.materials import LAWS, Material, energy
+from pocket.solid import kinematics as kin
+from pocket.solid import laws, mesh, model
+from pocket.solid.equations import Control, system
+
+H = 1e-6
+RTOL = 1e-6  # central differences: O(H^2) truncation, ~1e-10 round-off; a wrong term is off by O(1)
+INVARIANT_LAWS = sorted(laws.LAWS)
+
+
+def _material(name):
+    return Material(name, dict(LAWS[name].example)).scaled()
+
+
+def _axisymmetric(rng, shape=(3,)):
+    F = np.zeros((3, 3) + shape)
+    F[:2, :2] = np.eye(2)[:, :, None] + 0.3 * rng.standard_normal((2, 2) + shape)
+    F[2, 2] = 1.0 + 0.3 * rng.random(shape)
+    return F
+
+
+@pytest.mark.parametrize("name", INVARIANT_LAWS)
+def test_invariant_derivatives_are_those_of_the_energy(name):
+    """dW/dl1 at fixed l2 (l3 = 1/(l1 l2)) from W_1, W_2 equals the difference quotient of ``energy``; so do
+    its second derivative and the cross one, from W_11, W_12, W_22."""
+    material = _material(name)
+    d = laws.derivatives(material)
+    for l1, l2 in ((1.3, 1.1), (1.7, 0.8), (2.2, 2.0)):
+        def first(a, b):
+            c = 1.0 / (a * b)
+            i1, i2 = a * a + b * b + c * c, a**-2 + b**-2 + c**-2
+            w1, w2 = d(i1, i2)[:2]
+            # I1 = a^2 + b^2 + a^-2 b^-2, I2 = a^-2 + b^-2 + a^2 b^2
+            return w1 * (2 * a - 2 * c * c / a) + w2 * (-2 / a**3 + 2 * a * b * b)
+        exact = first(l1, l2)
+        quotient = (energy(material, l1 + H, l2) - energy(material, l1 - H, l2)) / (2 * H)
+        assert abs(exact - quotient) <= RTOL * max(1.0, abs(exact)), (name, l1, l2, exact, quotient)
+        second = (first(l1 + H, l2) - first(l1 - H, l2)) / (2 * H)
+        fd2 = (energy(material, l1 + H, l2) - 2 * energy(material, l1, l2) + energy(material, l1 - H, l2)) / H**2
+        assert abs(second - fd2) <= 1e-3 * max(1.0, abs(second)), (name, second, fd2)  # H^2 quotient: 1e-4 noise
+
+
+def _energy_of_f(material, F):
+    """W(I1, I2) of the registry's definition at a general (compressible) F."""
+    C = np.einsum("ki...,kj...->ij...", F, F)
+    i1 = np.einsum("ii...->...", C)
+    i2 = 0.5 * (i1**2 - np.einsum("ij...,ij...->...", C, C))
+    return LAWS[material.law].energy(dict(material.params), None, None, None, i1, i2)
+
+
+@pytest.mark.parametrize("name", INVARIANT_LAWS)
+def test_stress_and_tangent_are_derivatives(name):
+    """P = dW/dF component by component, dP[A] = the difference quotient of P along A, and the
+    incompressibility's cofactor and second variation are those of det F."""
+    material = _material(name)
+    law = laws.derivatives(material)
+    rng = np.random.default_rng(1)
+    F = _axisymmetric(rng)  # I1 - 3 ~ 0.5: inside Gent's domain (Jm = 10)
+    P = kin.stress(F, law)
+    for i, j in ((0, 0), (0, 1), (1, 0), (1, 1), (2, 2)):
+        E = np.zeros_like(F)
+        E[i, j] = H
+        quotient = (_energy_of_f(material, F + E) - _energy_of_f(material, F - E)) / (2 * H)
+        np.testing.assert_allclose(P[i, j], quotient, rtol=RTOL, atol=RTOL)
+        dJ = (kin.jacobian(F + E) - kin.jacobian(F - E)) / (2 * H)
+        np.testing.assert_allclose(kin.cofactor(F)[i, j], dJ, rtol=RTOL, atol=RTOL)
+    A, B = 0.5 * (_axisymmetric(rng) - np.eye(3)[:, :, None]), 0.5 * (_axisymmetric(rng) - np.eye(3)[:, :, None])
+    dP = (kin.stress(F + H * A, law) - kin.stress(F - H * A, law)) / (2 * H)
+    np.testing.assert_allclose(kin.stress_variation(F, A, law), dP, rtol=RTOL, atol=RTOL)
+    cof = lambda G: np.einsum("ij...,ij...->...", kin.cofactor(G), B)  # noqa: E731
+    d2J = (cof(F + H * A) - cof(F - H * A)) / (2 * H)
+    np.testing.assert_allclose(kin.jacobian_second(F, A, B), d2J, rtol=RTOL, atol=RTOL)
+
+
+def test_the_ogden_law_is_refused_in_one_line():
+    """The solid has no kernel for a law of the principal stretches: a one-line InputError naming it."""
+    from pocket.core.errors import InputError
+
+    with pytest.raises(InputError, match="ogden") as err:
+        laws.derivatives(_material("ogden"))
+    assert "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize("contact", [False, True])
+def test_the_jacobian_is_the_derivative_of_the_residual(contact):
+    """The bordered Jacobian (rubber, incompressibility, follower pressure, fluid row of a gas, contact rows,
+    force row) applied to a direction equals the difference quotient of the residual along it."""
+    t = 0.05
+    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(_material("yeoh")))
+    rng = np.random.default_rng(2)
+    x = m.basis_u.doflocs[0]
+    u = np.zeros(m.basis_u.N)
+    ur, uz = m.basis_u.split_indices()
+    u[uz] = 0.3 * (1 - x[uz] ** 2) + 0.01 * rng.standard_normal(uz.size)
+    u[ur] = 0.05 * x[ur] * (1 - x[ur]) + 0.01 * rng.standard_normal(ur.size)
+    y = np.concatenate([u, 0.1 * rng.standard_normal(m.basis_p.N), [0.02]])
+    gas = lambda pf: (0.4 / (1 + pf), -0.4 / (1 + pf) ** 2)  # noqa: E731  (any smooth V(p_f))
+    control = Control(volume=gas)
+    if contact:
+        active = np.array([0, 1, 2, 3])
+        y = np.concatenate([y, [0.33], rng.random(active.size)])
+        control = Control(volume=gas, active=active, force=0.5)
+    _, jac, keep = system(m, y, control)
+    direction = np.zeros_like(y)
+    direction[keep] = rng.standard_normal(keep.size)
+    plus, _, _ = system(m, y + H * direction, control)
+    minus, _, _ = system(m, y - H * direction, control)
+    quotient = (plus - minus) / (2 * H)
+    exact = jac @ direction[keep]
+    assert sp.issparse(jac)
+    np.testing.assert_allclose(exact, quotient, rtol=1e-5, atol=1e-6 * np.abs(exact).max())
