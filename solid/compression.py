@@ -25,6 +25,8 @@ __all__ = ["fluid_control", "first_contact", "to_force", "to_height", "MAX_FORCE
 
 #: the largest force step (Fhat)
 MAX_FORCE_STEP = 0.25
+#: the plate's first travel, in thicknesses, under height control (``to_force``)
+FIRST_TRAVEL = 0.05
 #: the smallest step, as a fraction of the first, before the path is declared lost
 MIN_FRACTION = 1e-3
 
@@ -69,12 +71,23 @@ def _march(model, y, control, key, target, step, tol):
 
 def to_force(model: Model, y: np.ndarray, control: Control, force: float, unit: float, tol: float):
     """The state at the plate force ``force`` (mu_0 R^2) from the state y of ``control`` (force control);
-    ``unit`` is the force of Fhat = 1. (y, control, Newton iterations)."""
-    return _march(model, y, control, "force", force, MAX_FORCE_STEP * unit, tol)
+    ``unit`` is the force of Fhat = 1. (y, control, Newton iterations).
+
+    From the first contact (no force yet) the plate is first pressed by ``FIRST_TRAVEL`` thicknesses
+    under height control: a force on the pole's node alone is a point load on a continuum, whose
+    indentation has no bound, and Newton on it fails; a travel spreads it over the nodes it reaches."""
+    total = 0
+    if control.force == 0.0:
+        travel = FIRST_TRAVEL * model.thickness
+        y, control, total = to_height(model, y, control, float(y[model.size + 1]) - travel, tol)
+        control = dataclasses.replace(control, height=None, force=float(np.sum(y[model.size + 2:])))
+    y, control, iterations = _march(model, y, control, "force", force, MAX_FORCE_STEP * unit, tol)
+    return y, control, total + iterations
 
 
 def to_height(model: Model, y: np.ndarray, control: Control, height: float, tol: float):
     """The state with the plate at ``height`` (R) from the state y of ``control``: first the control turned
     to the plate's height where it is, then the height marched in steps of a tenth of the travel."""
     control = dataclasses.replace(control, force=None, height=float(y[model.size + 1]))
-    return _march(model, y, control, "height", height, 0.1 * abs(control.height - height) + 1e-12, tol)
+    return _march(model, y, control, "height", height, min(0.1 * abs(control.height - height),
+                                                           FIRST_TRAVEL * model.thickness) + 1e-12, tol)

@@ -75,8 +75,9 @@ def system(model: Model, y: np.ndarray, control: Control):
         residual[0] = residual[0] + E @ lam
         residual.append([h - control.height] if control.force is None else [lam.sum() - control.force])
         residual.append(0.5 * model.thickness + u[dofs] - h)
-        plate = (sp.csr_matrix([[0.0, 1.0]]) if control.force is None
-                 else sp.hstack([sp.csr_matrix((1, 1)), sp.csr_matrix(np.ones((1, m)))]))
+        # the plate's row: d/dh and d/dlambda of h - H, or of sum lambda - F
+        plate = (sp.csr_matrix(np.r_[1.0, np.zeros(m)][None, :]) if control.force is None
+                 else sp.csr_matrix(np.r_[0.0, np.ones(m)][None, :]))
         for row in blocks:
             row.extend([None, None])
         blocks[0][4] = E
