@@ -63,11 +63,12 @@ def system(model: Model, y: np.ndarray, control: Control):
     if control.pressure is not None:
         fluid_row, fluid_res, fluid_diag = sp.csr_matrix((1, n)), pf - control.pressure, 1.0
     else:
+        assert control.volume is not None  # a Control holds the pressure or the volume
         target, slope = control.volume(pf)
         fluid_row, fluid_res, fluid_diag = sp.csr_matrix(dv[None, :]), volume - target, -slope
     blocks = [[k_uu, k_pu.T, -dv_col], [k_pu, None, None], [fluid_row, None, sp.csr_matrix([[fluid_diag]])]]
     residual = [r_u, r_p, [fluid_res]]
-    if control.contact:
+    if control.active is not None:
         m = len(control.active)
         h, lam = y[size + 1], y[size + 2:]
         dofs = model.top_z[control.active]

@@ -92,9 +92,11 @@ def residual_p(q, w):
 
 @BilinearForm
 def tangent_uu(du, v, w):
-    """K_uu[du, v] with the tangent tabulated in w["table"] (``tangent_table``)."""
+    """K_uu[du, v] with the tangent tabulated in w["table"] (``tangent_table``): the definition that
+    ``model`` assembles by one contraction per element (a test compares the two)."""
     r = w.x[0]
-    return np.einsum("ab...,a...,b...->...", np.asarray(w["table"]), components(du, r), components(v, r)) * 2.0 * np.pi * r
+    table = np.asarray(w["table"])
+    return np.einsum("ab...,a...,b...->...", table, components(du, r), components(v, r)) * 2.0 * np.pi * r
 
 
 @BilinearForm

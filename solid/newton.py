@@ -64,7 +64,7 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     for sweep in range(MAX_SWEEPS):
         y, iterations = solve(model, y, control, loose if sweep < MAX_SWEEPS - 1 else tol)
         total += iterations
-        active, lam, h = control.active, y[size + 2:], y[size + 1]
+        active, lam, h = np.asarray(control.active), y[size + 2:], y[size + 1]
         z = 0.5 * model.thickness + y[model.top_z]
         keep = lam >= 0.0
         if not keep.any():

@@ -9,11 +9,11 @@ term is off by O(1)).
 import numpy as np
 import pytest
 import scipy.sparse as sp
-
-from pocket.core.materials import LAWS, Material, energy
 from pocket.solid import kinematics as kin
 from pocket.solid import laws, mesh, model
 from pocket.solid.equations import Control, system
+
+from pocket.core.materials import LAWS, Material, energy
 
 H = 1e-6
 RTOL = 1e-6  # central differences: O(H^2) truncation, ~1e-10 round-off; a wrong term is off by O(1)
@@ -121,3 +121,18 @@ def test_the_jacobian_is_the_derivative_of_the_residual(contact):
     exact = jac @ direction[keep]
     assert sp.issparse(jac)
     np.testing.assert_allclose(exact, quotient, rtol=1e-5, atol=1e-6 * np.abs(exact).max())
+
+
+def test_the_element_contraction_is_the_tangent_form():
+    """``model``'s tangent, one contraction per element, equals scikit-fem's assembly of ``forms.tangent_uu``."""
+    from pocket.solid import forms
+    from skfem import asm
+
+    t = 0.05
+    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(_material("gent")))
+    rng = np.random.default_rng(3)
+    uq = m.basis_u.interpolate(0.01 * rng.standard_normal(m.basis_u.N))
+    F = kin.gradient(uq.grad, uq[0], m.basis_u.global_coordinates()[0])
+    table = forms.tangent_table(F, np.asarray(m.basis_p.interpolate(0.1 * rng.standard_normal(m.basis_p.N))), m.law)
+    reference = asm(forms.tangent_uu, m.basis_u, table=table)
+    assert abs(model._tangent(m.basis_u, table) - reference).max() <= 1e-12 * abs(reference).max()

@@ -9,13 +9,13 @@ complementary (active nodes on the plate with forces >= 0, the rest below it).
 
 import numpy as np
 import pytest
+from pocket.solid import compression, inflation, kinematics, laws, mesh, model
+from pocket.solid.model import split
 
 from pocket import shooting, solid
 from pocket.cli import main
 from pocket.core.errors import InputError
 from pocket.core.materials import mooney_rivlin
-from pocket.solid import compression, inflation, kinematics, laws, mesh, model
-from pocket.solid.model import split
 
 T, ELEMENTS, PHAT, FORCE = 0.0125, 32, 0.31, 0.5
 TOL = 1e-10
