@@ -3,27 +3,15 @@ r"""The weak forms: the solid's residual and tangent, and the fluid's volume wit
 Solid (units: stresses of mu_0, lengths of R; the axisymmetric measure dV = 2 pi r dr dz). The
 Lagrangian of the mixed displacement-pressure formulation is
 
-    L(u, p) = int [W(I1, I2) + p (J - 1) + (k / 2) (J - 1)^2] 2 pi r dr dz,
+    L(u, p) = int [W(Ib1, Ib2) + p (J - 1)] 2 pi r dr dz
 
-so that, with P the first Piola stress, cof F = J F^-T (``kinematics``) and p* = p + k (J - 1),
+(W at the isochoric invariants, ``kinematics``), so that, in the five components of dF,
 
-    R_u[v] = int (P + p* cof F) : dF[v] 2 pi r,              R_p[q] = int q (J - 1) 2 pi r,
-    K_uu[du, v] = int (dP[du] : dF[v] + p* d^2 J[du, v] + k (cof F : dF[du]) (cof F : dF[v])) 2 pi r,
-    K_pu[du, q] = int q cof F : dF[du] 2 pi r.
+    R_u[v] = int (dW + p dJ) . dF[v] 2 pi r,                 R_p[q] = int q (J - 1) 2 pi r,
+    K_uu[du, v] = int dF[du] . (d^2 W + p d^2 J) . dF[v] 2 pi r,   K_pu[du, q] = int q dJ . dF[du] 2 pi r.
 
-Why the k term. W(I1, I2) is the law's energy of an incompressible deformation; off J = 1 it has a
-volumetric part, and a concave one: under F = s I, W = C1 (I1 - 3) = 3 C1 (J^(2/3) - 1) has
-d^2 W / dJ^2 = -(2/3) C1 J^(-4/3) < 0. Taylor-Hood holds J = 1 only against bilinear pressures, so
-where the strain is singular (the clamp's corners) the discrete solution can lower its energy by
-changing volume locally: elements there folded (|J - 1| ~ 3 was measured) and Newton stalled. The
-augmented-Lagrangian term (k / 2) (J - 1)^2 with k = ``STABILIZATION`` = 10 mu_0 (above (2/3) C1 and
-the like for every law) makes the volumetric part convex. It is consistent: it and its derivative
-vanish at J = 1, so the exact solution, and the constraint's multiplier, are unchanged; only the
-discrete solution's O(h) violation of J = 1 is penalised.
-
-The tangent dP + p* d^2 J + k cof (x) cof is linear in dF, whose axisymmetric pattern has five components
-(rr, rz, zr, zz, hoop); it is tabulated once per Newton iteration as a 5 x 5 matrix at each
-quadrature point (``tangent_table``) and contracted in the bilinear form.
+The 5 x 5 tangent d^2 W + p d^2 J is tabulated once per Newton iteration at each quadrature point
+(``tangent_table``) and contracted in the bilinear form.
 
 Fluid. The fluid fills the cavity between the deformed lower surface (rho, zeta)(r), rho = r + u_r,
 zeta = -t/2 + u_z, and its flat reference plane zeta = -t/2; its volume is
@@ -49,13 +37,7 @@ from skfem import BilinearForm, Functional, LinearForm
 from . import kinematics as kin
 
 __all__ = ["components", "tangent_table", "residual_u", "residual_p", "tangent_uu", "coupling", "volume",
-           "volume_first", "volume_second", "COMPONENTS"]
-
-#: k of the consistent stabilisation k (J - 1)^2 / 2, units mu_0 (see the module docstring)
-STABILIZATION = 10.0
-#: the nonzero components of an axisymmetric dF
-COMPONENTS = ((0, 0), (0, 1), (1, 0), (1, 1), (2, 2))
-
+           "volume_first", "volume_second"]
 
 def components(field, r) -> np.ndarray:
     """The five components (5, ...) of dF of a vector field (a skfem DiscreteField) at radius r."""
@@ -68,23 +50,8 @@ def _deformation(w):
 
 
 def tangent_table(F: np.ndarray, p: np.ndarray, law) -> np.ndarray:
-    """The tangent dP + (p + k (J - 1)) d^2 J + k cof F (x) cof F (k = ``STABILIZATION``) in the five
-    components: a (5, 5, ...) array T with (tangent[A]) : B = sum_ab T[a, b] A_a B_b."""
-    shape = F.shape[2:]
-    cof = kin.cofactor(F)
-    p = p + STABILIZATION * (kin.jacobian(F) - 1.0)
-    units = []
-    for i, j in COMPONENTS:
-        unit = np.zeros((3, 3) + shape)
-        unit[i, j] = 1.0
-        units.append(unit)
-    table = np.empty((5, 5) + shape)
-    for a, A in enumerate(units):
-        dP = kin.stress_variation(F, A, law)
-        for b, (i, j) in enumerate(COMPONENTS):
-            table[a, b] = (dP[i, j] + p * kin.jacobian_second(F, A, units[b])
-                           + STABILIZATION * cof[COMPONENTS[a]] * cof[i, j])
-    return table
+    """d^2 W + p d^2 J (5, 5, ...) at F and the pressure p (``kinematics``)."""
+    return kin.energy_derivatives(F, law)[1] + p * kin.jacobian_derivatives(F)[1]
 
 
 def residual_u(law):
@@ -93,9 +60,8 @@ def residual_u(law):
     @LinearForm
     def form(v, w):
         F = _deformation(w)
-        S = kin.stress(F, law) + (np.asarray(w["p"]) + STABILIZATION * (kin.jacobian(F) - 1.0)) * kin.cofactor(F)
-        return np.einsum("a...,a...->...", np.array([S[i, j] for i, j in COMPONENTS]),
-                         components(v, w.x[0])) * 2.0 * np.pi * w.x[0]
+        stress = kin.energy_derivatives(F, law)[0] + np.asarray(w["p"]) * kin.jacobian_derivatives(F)[0]
+        return np.einsum("a...,a...->...", stress, components(v, w.x[0])) * 2.0 * np.pi * w.x[0]
 
     return form
 
@@ -118,9 +84,8 @@ def tangent_uu(du, v, w):
 @BilinearForm
 def coupling(du, q, w):
     """K_pu[du, q] = int q cof F : dF[du] 2 pi r (rows: pressure, columns: displacement); w holds ``u``."""
-    cof = kin.cofactor(_deformation(w))
-    return q * np.einsum("a...,a...->...", np.array([cof[i, j] for i, j in COMPONENTS]),
-                         components(du, w.x[0])) * 2.0 * np.pi * w.x[0]
+    cof = kin.components(kin.cofactor(_deformation(w)))
+    return q * np.einsum("a...,a...->...", cof, components(du, w.x[0])) * 2.0 * np.pi * w.x[0]
 
 
 def _surface(w):

@@ -35,6 +35,8 @@ def solve(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np
     n = model.basis_u.N
     for iteration in range(1, MAX_ITERATIONS + 1):
         res, jac, keep = system(model, y, control)
+        if not np.all(np.isfinite(res)):  # an iterate with J <= 0 somewhere: the isochoric invariants fail
+            raise ConvergenceError("an iterate turned an element inside out (det F <= 0)", iterations=iteration)
         try:
             step = spl.spsolve(jac, res)
         except RuntimeError as err:  # a singular factor

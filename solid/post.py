@@ -9,10 +9,10 @@ quadratic of its three nodes in each element, so a line's slope and integrals ar
   V_mid = int 2 pi rho eta rho' dr (the membrane's volume, under its mid-surface) by 3-point
   Gauss on each element (exact: the integrand is of degree 5).
 - Tensions: the membrane's stress resultants are the through-thickness integrals of the first
-  Piola stress, N_1 = int (P e_R) . t dZ (t the mid-surface's unit tangent) and N_2 = int P_thth dZ
+  Piola stress P = dW + p dJ (``kinematics``), N_1 = int (P e_R) . t dZ (t the mid-surface's unit tangent) and N_2 = int P_thth dZ
   (force per unit reference length); per unit deformed length T_1 = N_1 / lambda_2,
   T_2 = N_2 / lambda_1, in units of E T = 3 mu_0 t R. P is projected onto the biquadratic nodes
-  (L2) and integrated by Simpson's rule over the grid's heights (exact for the quadratic in z).
+  (L2) and integrated by Simpson's rule on each layer (exact for the quadratic in z).
 - Incompressibility: the largest |det F - 1| at the quadrature points (the Taylor-Hood constraint
   holds it in the mean against every bilinear pressure, not pointwise: it falls with the mesh).
 """
@@ -104,14 +104,14 @@ def fields(model: Model, y: np.ndarray) -> Fields:
     uq = model.basis_u.interpolate(u)
     F = kin.gradient(uq.grad, uq[0], model.basis_u.global_coordinates()[0])
     out.incompressibility = float(np.abs(kin.jacobian(F) - 1.0).max())
-    P = kin.stress(F, model.law) + np.asarray(model.basis_p.interpolate(p)) * kin.cofactor(F)
-    nodal = {key: scalar.project(P[i, j])[grid] for key, (i, j) in
-             {"rR": (0, 0), "zR": (1, 0), "hoop": (2, 2)}.items()}
-    simpson = np.zeros(z.size)
-    dz = z[1] - z[0]
-    simpson[0:-1:2] += dz / 3.0
-    simpson[1::2] += 4.0 * dz / 3.0
-    simpson[2::2] += dz / 3.0
+    pressure = np.asarray(model.basis_p.interpolate(p))
+    P = kin.energy_derivatives(F, model.law)[0] + pressure * kin.jacobian_derivatives(F)[0]
+    nodal = {key: scalar.project(P[a])[grid] for key, a in {"rR": 0, "zR": 2, "hoop": 4}.items()}
+    simpson = np.zeros(z.size)  # Simpson's rule on each layer [z_2k, z_2k+2], its midpoint z_2k+1
+    layer = z[2::2] - z[0:-2:2]
+    simpson[0:-2:2] += layer / 6.0
+    simpson[1::2] += 4.0 * layer / 6.0
+    simpson[2::2] += layer / 6.0
     tangent = np.array([d_rho, d_eta]) / out.stretch_1
     n1 = simpson @ (nodal["rR"] * tangent[0] + nodal["zR"] * tangent[1])
     n2 = simpson @ nodal["hoop"]
