@@ -9,8 +9,8 @@ quadratic of its three nodes in each element, so a line's slope and integrals ar
   V_mid = int 2 pi rho eta rho' dr (the membrane's volume, under its mid-surface) by 3-point
   Gauss on each element (exact: the integrand is of degree 5).
 - Tensions: the membrane's stress resultants are the through-thickness integrals of the first
-  Piola stress P = dW + p dJ (``kinematics``), N_1 = int (P e_R) . t dZ (t the mid-surface's unit tangent) and N_2 = int P_thth dZ
-  (force per unit reference length); per unit deformed length T_1 = N_1 / lambda_2,
+  Piola stress P = dW + p dJ (``kinematics``), N_1 = int (P e_R) . t dZ (t the mid-surface's unit
+  tangent) and N_2 = int P_thth dZ (force per unit reference length); per unit deformed length T_1 = N_1 / lambda_2,
   T_2 = N_2 / lambda_1, in units of E T = 3 mu_0 t R. P is projected onto the biquadratic nodes
   (L2) and integrated by Simpson's rule on each layer (exact for the quadratic in z).
 - Incompressibility: the largest |det F - 1| at the quadrature points (the Taylor-Hood constraint
