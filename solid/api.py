@@ -15,7 +15,18 @@ from pocket.core.indenters import as_indenter, formulation
 from pocket.core.inputs import check_force, check_positive
 from pocket.core.materials import as_material
 
-from . import SOLVER, compression, inflation, laws, mesh, model, results
+from . import (
+    DEFAULT_ELEMENTS,
+    DEFAULT_LAYERS,
+    DEFAULT_THICKNESS,
+    SOLVER,
+    compression,
+    inflation,
+    laws,
+    mesh,
+    model,
+    results,
+)
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "CONTACTS"]
 
@@ -33,7 +44,8 @@ def _model(material, thickness_ratio, layers, elements, tol):
     return material, model.discretize(t, mesh.section(t, elements, layers), law), tol
 
 
-def inflate(material, pressure, *, thickness_ratio=0.0125, layers=2, elements=96, tol=1e-10):
+def inflate(material, pressure, *, thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS,
+            elements=DEFAULT_ELEMENTS, tol=1e-10):
     """Inflated state at Phat = ``pressure`` (first branch) of the sheet of T/R = ``thickness_ratio``, meshed by
     ``elements`` along the radius and ``layers`` through the thickness; ``tol`` the Newton tolerance (R)."""
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
@@ -42,7 +54,8 @@ def inflate(material, pressure, *, thickness_ratio=0.0125, layers=2, elements=96
     return results.inflated(m, material, y, iterations, pressure=pressure)
 
 
-def inflate_volume(material, volume, *, thickness_ratio=0.0125, layers=2, elements=96, tol=1e-10):
+def inflate_volume(material, volume, *, thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS,
+                   elements=DEFAULT_ELEMENTS, tol=1e-10):
     """Inflated state of cavity volume V/R^3 = ``volume`` (options as ``inflate``)."""
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
     volume = check_positive("volume", volume)
@@ -63,7 +76,8 @@ def _setup(material, pressure_initial, fluid, indenter, thickness_ratio, layers,
 
 
 def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
-                      thickness_ratio=0.0125, layers=2, elements=96, tol=1e-10):
+                      thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS,
+                      tol=1e-10):
     """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
     before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); the flat plate
     only. Options as ``inflate``; ``progress(done, total)`` after each force."""
@@ -87,8 +101,8 @@ def compress(material, pressure_initial, force, *, fluid=None, indenter=None, **
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, **options)[0]
 
 
-def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, thickness_ratio=0.0125,
-                    layers=2, elements=96, tol=1e-10):
+def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None,
+                    thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS, tol=1e-10):
     """Compressed state with the plate at H/R = ``height`` above the clamp plane (options as
     ``compression_curve``); an OutOfRangeError above the inflated pocket's top."""
     height = check_positive("height", height)
