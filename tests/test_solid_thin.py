@@ -20,7 +20,8 @@ pytestmark = pytest.mark.slow
 
 RATIOS = np.array([0.04, 0.02, 0.01])
 #: the mesh: the differences at T/R = 0.01 are ~1e-3 in P/P_I, ~1e-2 in V; the mesh's own error (two layers)
-#: is ~3e-4 in V (measured against eight layers) and ~2e-4 in P/P_I (32 against 64 elements, four layers)
+#: is ~6e-4 in V (measured against four and eight layers) and ~2e-4 in P/P_I at 32 elements (against 64): the
+#: compression of the liquid, whose P/P_I is asserted, takes 64 elements
 ELEMENTS, LAYERS = 32, 2
 FORCE = 0.5
 
@@ -35,21 +36,20 @@ def _inflated(state, reference):
             "V": state.volume / reference.volume - 1.0}
 
 
-@pytest.mark.parametrize("name, material, pressure, fluid, printed", [
-    ("Mooney-Rivlin, liquid", mooney_rivlin(47 / 160), 0.31, None, ()),
-    # a gas at Phat_atm = 1 takes up most of the change: its P/P_I differs from the membrane's by < 1e-4,
+@pytest.mark.parametrize("name, material, pressure, fluid, elements, printed", [
+    ("Mooney-Rivlin, liquid", mooney_rivlin(47 / 160), 0.31, None, 64, ()),
+    # a gas at Phat_atm = 1 takes up most of the change: its P/P_I differs from the membrane's by ~1e-4,
     # below the mesh's error there (printed, not asserted)
-    ("Mooney-Rivlin, gas", mooney_rivlin(47 / 160), 0.31, gas(1.0), ("P/P_I",)),
+    ("Mooney-Rivlin, gas", mooney_rivlin(47 / 160), 0.31, gas(1.0), ELEMENTS, ("P/P_I",)),
 ])
-def test_compression_tends_to_the_membrane_at_first_order(name, material, pressure, fluid, printed):
-    """P/P_I and H/H0 at Fhat = 0.5 (and the inflated H0, V) differ from the membrane's by O(T/R): fitted rates
-    within [0.8, 1.3]. The upper bound leaves room for P/P_I, whose fitted rate is 1.21: its difference is
-    ~1e-3 at T/R = 0.01, where the contact edge, resolved by the upper surface's nodes, moves P/P_I by up
-    to ~3e-4 between meshes of 48 and 64 elements (measured)."""
+def test_compression_tends_to_the_membrane_at_first_order(name, material, pressure, fluid, elements, printed):
+    """P/P_I and H/H0 at Fhat = 0.5 (and the inflated H0, V) differ from the membrane's by O(T/R), each with one
+    sign: fitted rates within [0.8, 1.3] (measured 1.0 to 1.1 for the liquid at 64 elements; the bound above
+    1.2 leaves room for the mesh's ~2e-4 in a P/P_I difference of ~8e-4 at T/R = 0.01)."""
     reference = shooting.compress(material, pressure, FORCE, fluid=fluid)
     rows = []
     for t in RATIOS:
-        state = solid.compress(material, pressure, FORCE, fluid=fluid, thickness_ratio=t, elements=ELEMENTS,
+        state = solid.compress(material, pressure, FORCE, fluid=fluid, thickness_ratio=t, elements=elements,
                                layers=LAYERS)
         rows.append({**_inflated(state.inflated, reference.inflated),
                      "P/P_I": state.pressure_ratio / reference.pressure_ratio - 1.0,

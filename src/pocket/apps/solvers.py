@@ -18,8 +18,8 @@ from pocket.core.solver import Solver
 
 __all__ = ["SOLVERS", "record", "entry", "solver_options", "all_options"]
 
-#: name -> record
-SOLVERS: dict[str, Solver] = {s.SOLVER.name: s.SOLVER for s in (shooting, fem, solid, analytical)}
+#: name -> record (in the order of their codes in VTK files, ``vtkfiles.CODES``: a new solver goes last)
+SOLVERS: dict[str, Solver] = {s.SOLVER.name: s.SOLVER for s in (shooting, fem, analytical, solid)}
 
 
 def record(name: str) -> Solver:
