@@ -198,7 +198,7 @@ def test_inflate_by_volume_where_a_solver_has_none_or_with_a_pressure_is_one_lin
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--solver", "analytical")
     assert (status, out) == (2, "") and err == ("pocket: error: --volume: solver analytical has no volume-controlled "
                                                 "inflation (entry point inflate_volume; solvers that have it: "
-                                                "shooting, fem)\n")
+                                                "shooting, fem, solid)\n")
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--pressure", "0.3")
     assert (status, out) == (2, "") and "--pressure: not allowed with argument --volume" in err
 

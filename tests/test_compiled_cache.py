@@ -214,7 +214,7 @@ def _copy_repository(target: pathlib.Path) -> pathlib.Path:
     ``_version.py``, which an earlier build of the checkout wrote (it would lend the copy the checkout's commit)."""
     for name in ("pyproject.toml", "README.md"):
         shutil.copy(REPOSITORY / name, target / name)
-    for name in ("src", "shooting", "fem", "analytical", "meshes", "validation"):
+    for name in ("src", "shooting", "fem", "solid", "analytical", "meshes", "validation"):
         shutil.copytree(REPOSITORY / name, target / name,
                         ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "_version.py"))
     return target

@@ -19,8 +19,8 @@ import pytest
 
 from pocket.apps.provenance import DISTRIBUTION
 
-LAYERS = ["pocket.core", "pocket.meshes", "pocket.shooting | pocket.fem | pocket.analytical", "pocket.apps",
-          "pocket.validation", "pocket.cli"]
+LAYERS = ["pocket.core", "pocket.meshes", "pocket.shooting | pocket.fem | pocket.solid | pocket.analytical",
+          "pocket.apps", "pocket.validation", "pocket.cli"]
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 _IMPORT_WITH_BLOCKED = r"""

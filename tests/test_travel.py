@@ -43,8 +43,9 @@ def test_the_force_at_a_height_gives_back_that_height(capsys, indenter, solver):
 
 
 def test_every_solver_that_declares_height_control_is_reached():
-    """The CLI serves exactly the solvers whose record lists ``compress_height`` (both membrane solvers)."""
-    assert [n for n, s in SOLVERS.items() if s.serves("compress_height")] == ["shooting", "fem"]
+    """The CLI serves exactly the solvers whose record lists ``compress_height`` (both membrane solvers and the
+    solid)."""
+    assert [n for n, s in SOLVERS.items() if s.serves("compress_height")] == ["shooting", "fem", "solid"]
 
 
 GAS = gas(ambient=3.0)
@@ -85,7 +86,7 @@ def test_shooting_heights_end_where_the_range_ends():
 @pytest.mark.parametrize("args, message", [
     (["--height", "0.3", "--solver", "analytical"], "--height: solver analytical has no height-controlled "
                                                     "compression (entry point compress_height; solvers that "
-                                                    "have it: shooting, fem)"),
+                                                    "have it: shooting, fem, solid)"),
     (["--height", "5", *FEM], "height = 5.0 is above the inflated pocket (H0/R = "),
     (["--height", "5"], "height = 5.0 is above the inflated pocket (H0/R = "),
     (["--height", "0", *FEM], "--height = 0.0, but it must be > 0"),

@@ -12,14 +12,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from pocket import analytical, fem, shooting
+from pocket import analytical, fem, shooting, solid
 from pocket.core.errors import InputError
 from pocket.core.solver import Solver
 
 __all__ = ["SOLVERS", "record", "entry", "solver_options", "all_options"]
 
-#: name -> record
-SOLVERS: dict[str, Solver] = {s.SOLVER.name: s.SOLVER for s in (shooting, fem, analytical)}
+#: name -> record (in the order of their codes in VTK files, ``vtkfiles.CODES``: a new solver goes last)
+SOLVERS: dict[str, Solver] = {s.SOLVER.name: s.SOLVER for s in (shooting, fem, analytical, solid)}
 
 
 def record(name: str) -> Solver:

@@ -65,8 +65,9 @@ def number(text: str) -> float:
 
 
 def flag(name: str) -> str:
-    """The command-line spelling of an option name: ``--name``."""
-    return f"--{name}"
+    """The command-line spelling of an option name: ``--name``, its underscores as hyphens
+    (``thickness_ratio``: ``--thickness-ratio``; argparse stores it under the name again)."""
+    return "--" + name.replace("_", "-")
 
 
 _TYPES = {"float": number, "int": int, "path": str}

@@ -1,0 +1,114 @@
+"""Public entry points of the solid (``pocket.core.solver``): inflate, compress, and their input checks.
+
+Every input is checked before any work (one-line ``InputError``): the rubber (``as_material``; the
+solid has the laws of ``laws``), the pressures and forces, the fluid, the indenter (the flat plate
+only), the options of the record ``SOLVER`` (thickness ratio, layers, elements, tolerance).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pocket.core.errors import InputError, above_the_pocket
+from pocket.core.fluids import as_fluid
+from pocket.core.indenters import as_indenter, formulation
+from pocket.core.inputs import check_force, check_positive
+from pocket.core.materials import as_material
+
+from . import (
+    DEFAULT_ELEMENTS,
+    DEFAULT_LAYERS,
+    DEFAULT_THICKNESS,
+    SOLVER,
+    compression,
+    inflation,
+    laws,
+    mesh,
+    model,
+    results,
+)
+
+__all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "CONTACTS"]
+
+#: indenter kind -> contact formulations (the flat plate only)
+CONTACTS = {"flat": ("active set",)}
+
+
+def _model(material, thickness_ratio, layers, elements, tol):
+    material = as_material(material)
+    law = laws.derivatives(material.scaled())
+    t = SOLVER.check_option("thickness_ratio", thickness_ratio)
+    layers = SOLVER.check_option("layers", layers)
+    elements = SOLVER.check_option("elements", elements)
+    tol = SOLVER.check_option("tol", tol)
+    return material, model.discretize(t, mesh.section(t, elements, layers), law), tol
+
+
+def inflate(material, pressure, *, thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS,
+            elements=DEFAULT_ELEMENTS, tol=1e-10):
+    """Inflated state at Phat = ``pressure`` (first branch) of the sheet of T/R = ``thickness_ratio``, meshed by
+    ``elements`` along the radius and ``layers`` through the thickness; ``tol`` the Newton tolerance (R)."""
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
+    pressure = check_positive("pressure", pressure)
+    y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * pressure, tol)
+    return results.inflated(m, material, y, iterations, pressure=pressure)
+
+
+def inflate_volume(material, volume, *, thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS,
+                   elements=DEFAULT_ELEMENTS, tol=1e-10):
+    """Inflated state of cavity volume V/R^3 = ``volume`` (options as ``inflate``)."""
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
+    volume = check_positive("volume", volume)
+    y, iterations = inflation.to_volume(m, volume, tol)
+    return results.inflated(m, material, y, iterations, volume_given=volume)
+
+
+def _setup(material, pressure_initial, fluid, indenter, thickness_ratio, layers, elements, tol):
+    formulation(CONTACTS, "solid", as_indenter(indenter))
+    fluid = as_fluid(fluid)
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
+    p_i = check_positive("pressure_initial", pressure_initial)
+    y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * p_i, tol)
+    start = results.inflated(m, material, y, iterations, pressure=p_i)
+    fill = compression.fluid_control(m, fluid, p_i, start.volume)
+    y, control = compression.first_contact(m, y, fill)
+    return material, m, tol, fluid, start, y, control
+
+
+def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
+                      thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS,
+                      tol=1e-10):
+    """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
+    before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); the flat plate
+    only. Options as ``inflate``; ``progress(done, total)`` after each force."""
+    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
+    if not forces:
+        raise InputError("no force given")
+    material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter,
+                                                        thickness_ratio, layers, elements, tol)
+    unit = np.pi * 3.0 * m.thickness * start.pressure
+    out = []
+    for k, force in enumerate(forces):
+        y, control, iterations = compression.to_force(m, y, control, force * unit, unit, tol)
+        out.append(results.compressed(m, material, y, control.active, iterations, start, fluid, force=force))
+        if progress is not None:
+            progress(k + 1, len(forces))
+    return out
+
+
+def compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options):
+    """Compressed state at the force Fhat (``compression_curve``)."""
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, **options)[0]
+
+
+def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None,
+                    thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS, tol=1e-10):
+    """Compressed state with the plate at H/R = ``height`` above the clamp plane (options as
+    ``compression_curve``); an OutOfRangeError above the inflated pocket's top."""
+    height = check_positive("height", height)
+    material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter,
+                                                        thickness_ratio, layers, elements, tol)
+    if height >= start.height:
+        raise above_the_pocket(height, start.height)
+    y, control, iterations = compression.to_height(m, y, control, height, tol)
+    return results.compressed(m, material, y, control.active, iterations, start, fluid)

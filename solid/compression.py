@@ -1,0 +1,94 @@
+"""Step 2, compression: the inflated pocket pressed by the flat frictionless plate at fixed fluid.
+
+The fluid row holds the volume the fluid takes at its pressure (``fluids.Fluid.volume_ratio``:
+V_I for a liquid, the polytropic law for a gas sealed at P_I); the plate touches the upper
+surface's nodes of the active set (``newton.contact``). The first contact is the pole's node with
+the plate at the inflated pole's height and no force. Forces are reached in steps of at most
+``MAX_FORCE_STEP`` (Fhat), each seeded by the state before it, halved when Newton or the active
+set fails; a height target in steps of the plate's travel likewise.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from pocket.core.errors import ConvergenceError
+from pocket.core.fluids import Fluid
+
+from .equations import Control
+from .model import Model
+from .newton import contact
+
+__all__ = ["fluid_control", "first_contact", "to_force", "to_height", "MAX_FORCE_STEP"]
+
+#: the largest force step (Fhat)
+MAX_FORCE_STEP = 0.25
+#: the plate's first travel, in thicknesses, under height control (``to_force``)
+FIRST_TRAVEL = 0.05
+#: the smallest step, as a fraction of the first, before the path is declared lost
+MIN_FRACTION = 1e-3
+
+
+def fluid_control(model: Model, fluid: Fluid, pressure_initial: float, volume_initial: float) -> Control:
+    """The fluid's row: V(p_f) = V_I (V / V_I)(Phat), Phat = p_f / (3 t), and its slope dV/dp_f =
+    -V / (gamma (Phat + Phat_atm) 3 t) (zero for a liquid)."""
+    scale = 3.0 * model.thickness
+
+    def volume(pf):
+        ratio = fluid.volume_ratio(pf / scale, pressure_initial)
+        slope = 0.0 if not fluid.is_gas else -ratio / (fluid.gamma * (pf / scale + fluid.ambient)) / scale
+        return volume_initial * ratio, volume_initial * slope
+
+    return Control(volume=volume)
+
+
+def first_contact(model: Model, y_inflated: np.ndarray, fill: Control) -> tuple[np.ndarray, Control]:
+    """The inflated state touched by the plate at its pole: the plate's height and a zero force appended."""
+    height = 0.5 * model.thickness + y_inflated[model.top_z[0]]
+    y = np.concatenate([y_inflated, [height, 0.0]])
+    return y, dataclasses.replace(fill, active=np.array([0]), force=0.0)
+
+
+def _march(model, y, control, key, target, step, tol):
+    """From the state y of ``control``, the state at ``control.<key> = target`` in steps of at most ``step``."""
+    value, total, first = getattr(control, key), 0, step
+    while value < target if target > value else value > target:
+        delta = np.sign(target - value) * min(step, abs(target - value))
+        try:
+            new, new_control, iterations = contact(model, y, dataclasses.replace(control, **{key: value + delta}),
+                                                   tol)
+        except ConvergenceError:
+            step *= 0.5
+            if step < MIN_FRACTION * first:
+                raise
+            continue
+        y, control, value, total = new, new_control, value + delta, total + iterations
+        step = min(first, 1.5 * step)
+    return y, control, total
+
+
+def to_force(model: Model, y: np.ndarray, control: Control, force: float, unit: float, tol: float):
+    """The state at the plate force ``force`` (mu_0 R^2) from the state y of ``control`` (force control);
+    ``unit`` is the force of Fhat = 1. (y, control, Newton iterations).
+
+    From the first contact (no force yet) the plate is first pressed by ``FIRST_TRAVEL`` thicknesses
+    under height control: a force on the pole's node alone is a point load on a continuum, whose
+    indentation has no bound, and Newton on it fails; a travel spreads it over the nodes it reaches."""
+    total = 0
+    if control.force == 0.0:
+        travel = FIRST_TRAVEL * model.thickness
+        y, control, total = to_height(model, y, control, float(y[model.size + 1]) - travel, tol)
+        control = dataclasses.replace(control, height=None, force=float(np.sum(y[model.size + 2:])))
+    y, control, iterations = _march(model, y, control, "force", force, MAX_FORCE_STEP * unit, tol)
+    return y, control, total + iterations
+
+
+def to_height(model: Model, y: np.ndarray, control: Control, height: float, tol: float):
+    """The state with the plate at ``height`` (R) from the state y of ``control``: first the control turned
+    to the plate's height where it is, then the height marched in steps of a tenth of the travel."""
+    start = float(y[model.size + 1])
+    control = dataclasses.replace(control, force=None, height=start)
+    return _march(model, y, control, "height", height, min(0.1 * abs(start - height),
+                                                           FIRST_TRAVEL * model.thickness) + 1e-12, tol)

@@ -1,0 +1,90 @@
+r"""The bordered equations of a state: the rubber, the fluid's row and the plate's contact rows.
+
+Unknowns y = [u, p, p_f, h, lambda_1 .. lambda_m]: the displacement and the incompressibility
+pressure (``model``), the fluid's pressure p_f (units mu_0), and, in contact, the plate's height h
+(units R, above the clamp plane) and the contact forces lambda_k >= 0 at the upper-surface nodes
+k of the active set (units mu_0 R^2, the plate pushing down). With the Lagrangian
+
+    L = int [W + p (J - 1)] 2 pi r - p_f (V(u) - V_f) + sum_k lambda_k (z_k(u) - h),
+
+z_k = t/2 + u_z at node k, the equations are its stationarity in u and p, and
+
+    fluid:    p_f - P                    (pressure given), or
+              V(u) - V_f(p_f)            (the fluid's volume at its pressure: a constant for a liquid,
+                                          the polytropic law for a gas, ``pocket.core.fluids``);
+    contact:  z_k(u) - h = 0             for each active node k (no penalty: the nodes lie on the plate);
+    plate:    sum_k lambda_k - F = 0     (force control: the plate's reaction is the force), or
+              h - H = 0                  (height control).
+
+Without contact the plate's height is not an unknown (the vector stops at p_f). The Jacobian is the
+bordered matrix of these rows; the clamp's and the axis's dofs are removed (``Model.free``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+
+import numpy as np
+import scipy.sparse as sp
+
+from .model import Model, fluid, solid, split
+
+__all__ = ["Control", "system"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Control:
+    """What is held: the fluid's ``pressure`` (units mu_0), or its ``volume(p_f) -> (V, dV/dp_f)``; in contact,
+    the ``active`` upper-surface nodes (indices of ``Model.top_z``) and the plate's ``force`` (mu_0 R^2) or
+    ``height`` (R)."""
+
+    pressure: float | None = None
+    volume: Callable[[float], tuple[float, float]] | None = None
+    active: np.ndarray | None = None
+    force: float | None = None
+    height: float | None = None
+
+    @property
+    def contact(self) -> bool:
+        return self.active is not None
+
+
+def system(model: Model, y: np.ndarray, control: Control):
+    """The residual R(y) and the Jacobian (sparse, CSC) restricted to the free unknowns; the index of those."""
+    u, p = split(model, y)
+    n, size = model.basis_u.N, model.size
+    pf = y[size]
+    r_u, r_p, k_uu, k_pu = solid(model, u, p)
+    volume, dv, d2v = fluid(model, u)
+    r_u = r_u - pf * dv
+    k_uu = k_uu - pf * d2v
+    dv_col = sp.csc_matrix(dv[:, None])
+    if control.pressure is not None:
+        fluid_row, fluid_res, fluid_diag = sp.csr_matrix((1, n)), pf - control.pressure, 1.0
+    else:
+        assert control.volume is not None  # a Control holds the pressure or the volume
+        target, slope = control.volume(pf)
+        fluid_row, fluid_res, fluid_diag = sp.csr_matrix(dv[None, :]), volume - target, -slope
+    blocks = [[k_uu, k_pu.T, -dv_col], [k_pu, None, None], [fluid_row, None, sp.csr_matrix([[fluid_diag]])]]
+    residual = [r_u, r_p, [fluid_res]]
+    if control.active is not None:
+        m = len(control.active)
+        h, lam = y[size + 1], y[size + 2:]
+        dofs = model.top_z[control.active]
+        E = sp.csc_matrix((np.ones(m), (dofs, np.arange(m))), shape=(n, m))
+        residual[0] = residual[0] + E @ lam
+        residual.append([h - control.height] if control.force is None else [lam.sum() - control.force])
+        residual.append(0.5 * model.thickness + u[dofs] - h)
+        # the plate's row: d/dh and d/dlambda of h - H, or of sum lambda - F
+        plate = (sp.csr_matrix(np.r_[1.0, np.zeros(m)][None, :]) if control.force is None
+                 else sp.csr_matrix(np.r_[0.0, np.ones(m)][None, :]))
+        for row in blocks:
+            row.extend([None, None])
+        blocks[0][4] = E
+        blocks.append([None, None, None, plate[:, :1], plate[:, 1:]])
+        blocks.append([E.T, None, None, sp.csr_matrix(-np.ones((m, 1))), None])
+    jac = sp.bmat(blocks, format="csc")
+    res = np.concatenate([np.atleast_1d(np.asarray(part, dtype=float)) for part in residual])
+    keep = np.concatenate([model.free, np.arange(size, res.size)])
+    return res[keep], jac[keep][:, keep], keep

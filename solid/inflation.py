@@ -1,0 +1,86 @@
+"""Step 1, inflation: from the flat sheet, under volume control, to a given volume or pressure.
+
+The flat sheet is the start (the solid's tangent there is regular: it bends). The path is followed
+in log V under volume control (the pressure is the multiplier, so pressure maxima pass), from
+``V_START`` in steps of at most ``MAX_RATIO`` in V, each seeded by the secant through the two
+states before it and halved when Newton fails. A pressure target is bracketed on this path and
+landed on under pressure control from the interpolated bracket; a pressure that falls before
+reaching the target has passed its maximum: the target has no state on the first branch
+(OutOfRangeError).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pocket.core.errors import ConvergenceError, OutOfRangeError
+
+from .equations import Control
+from .model import Model
+from .newton import solve
+
+__all__ = ["to_volume", "to_pressure", "V_START", "MAX_RATIO"]
+
+#: the first volume (units R^3), solved from the flat sheet
+V_START = 1e-2
+#: largest volume ratio of one step
+MAX_RATIO = 2.0
+#: the shortest step (a ratio 1 + MIN_STEP) before the path is declared lost
+MIN_STEP = 1e-3
+#: the largest volume a pressure target is sought at (a sheet stretched ~10 times)
+V_MAX = 1e3
+
+
+def _volume(v: float) -> Control:
+    return Control(volume=lambda pf: (v, 0.0))
+
+
+def _path(model: Model, target_volume: float, tol: float, stop=None):
+    """States along log V up to ``target_volume``; yields (V, y, iterations). ``stop(y)`` ends it early."""
+    y = np.zeros(model.size + 1)
+    v0 = min(V_START, target_volume)
+    y, iterations = solve(model, y, _volume(v0), tol)
+    yield v0, y, iterations
+    log_v, previous, log_step = np.log(v0), None, np.log(MAX_RATIO)
+    while log_v < np.log(target_volume):
+        step = min(log_step, np.log(target_volume) - log_v)
+        guess = y if previous is None else y + (y - previous[1]) * step / (log_v - previous[0])
+        try:
+            new, iterations = solve(model, guess, _volume(np.exp(log_v + step)), tol)
+        except ConvergenceError:
+            log_step = 0.5 * step
+            if log_step < MIN_STEP:
+                raise
+            continue
+        previous, y, log_v = (log_v, y), new, log_v + step
+        log_step = min(np.log(MAX_RATIO), 1.5 * step)
+        yield np.exp(log_v), y, iterations
+
+
+def to_volume(model: Model, volume: float, tol: float) -> tuple[np.ndarray, int]:
+    """The inflated state of cavity volume ``volume`` (R^3); (y, Newton iterations)."""
+    total = 0
+    for _, y, iterations in _path(model, volume, tol):
+        total += iterations
+    return y, total
+
+
+def to_pressure(model: Model, pressure: float, tol: float) -> tuple[np.ndarray, int]:
+    """The inflated state at the fluid pressure ``pressure`` (units mu_0) on the first branch; (y, iterations)."""
+    total, before = 0, None
+    for v, y, iterations in _path(model, V_MAX, tol):
+        total += iterations
+        pf = y[model.size]
+        if pf >= pressure:
+            if before is None:
+                guess = y
+            else:
+                w = (pressure - before[1][model.size]) / (pf - before[1][model.size])
+                guess = before[1] + w * (y - before[1])
+            y, iterations = solve(model, guess, Control(pressure=pressure), tol)
+            return y, total + iterations
+        if before is not None and pf < before[1][model.size]:
+            raise OutOfRangeError(f"the solid's pressure has a maximum below Phat-equivalent {pressure:.6g} mu_0 "
+                                  f"(it falls past V/R^3 = {before[0]:.4g}): no inflated state on the first branch")
+        before = (v, y)
+    raise OutOfRangeError(f"the fluid pressure {pressure:.6g} mu_0 is not reached by V/R^3 = {V_MAX:g}")

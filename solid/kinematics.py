@@ -1,0 +1,146 @@
+r"""Axisymmetric kinematics and the rubber's energy derivatives through the isochoric invariants.
+
+Coordinates (r, z) of the flat sheet's cross-section, in units of R; the displacement
+u = (u_r, u_z)(r, z). The deformation gradient in the cylindrical basis is
+
+        [ 1 + du_r/dr    du_r/dz       0         ]
+    F = [ du_z/dr        1 + du_z/dz   0         ],      J = det F = F_33 (F_11 F_22 - F_12 F_21),
+        [ 0              0             1 + u_r/r ]
+
+and a variation du gives dF of the same pattern without the identity (dF_33 = du_r / r): five
+components a = (i, j) in ``COMPONENTS``, each the unit matrix E_a = e_i e_j^T.
+
+Energy. The rubber's W(I1, I2) is evaluated at the isochoric invariants of C = F^T F,
+
+    Ib1 = J^(-2/3) I1,   Ib2 = J^(-4/3) I2,   I1 = F : F,   I2 = (I1^2 - C : C) / 2,
+
+which equal I1, I2 at J = 1 (so W is the law's energy there) and do not change under a change of
+volume: the volume is the constraint's alone (``forms``). Evaluated at I1, I2 instead, W would
+have a concave volumetric part (3 C1 (J^(2/3) - 1) under F = s I), which Taylor-Hood's
+constraint, J = 1 only against bilinear pressures, does not control at the clamp's singular
+corners: elements there folded and Newton stalled.
+
+Derivatives, with j = ln J (dj[A] = tr(F^-1 A), d^2 j[A, B] = -tr(F^-1 B F^-1 A)) and
+dC[A] = A^T F + F^T A:
+
+    dI1[A] = 2 F : A,                    d^2 I1[A, B] = 2 A : B,
+    dI2[A] = 2 (I1 F - F C) : A,         d^2 I2[A, B] = dI1[A] dI1[B] + 2 I1 A : B - dC[A] : dC[B]
+                                                        - C : (A^T B + B^T A),
+    Ib = J^(-c) I (c = 2/3 for I1, 4/3 for I2):
+    dIb[A] = J^(-c) (dI[A] - c I dj[A]),
+    d^2 Ib[A, B] = J^(-c) (d^2 I[A, B] - c (dI[A] dj[B] + dI[B] dj[A]) - c I d^2 j[A, B] + c^2 I dj[A] dj[B]),
+
+    dW[A] = W_1 dIb1[A] + W_2 dIb2[A],
+    d^2 W[A, B] = W_1 d^2 Ib1 + W_2 d^2 Ib2 + W_11 dIb1 dIb1 + W_12 (dIb1[A] dIb2[B] + dIb2[A] dIb1[B])
+                  + W_22 dIb2 dIb2,
+
+and for the constraint dJ[A] = J dj[A] (cof F = J F^-T), d^2 J[A, B] = J (dj[A] dj[B] + d^2 j[A, B]).
+For the unit components: (A^T B)_{kl} = delta(i_a, i_b) delta(k, j_a) delta(l, j_b), so
+C : (A^T B + B^T A) = 2 delta(i_a, i_b) C_{j_a j_b}, and d^2 j[E_a, E_b] = -Finv_{j_a i_b} Finv_{j_b i_a}.
+
+Every array has its tensor or component indices first, then the quadrature points' shape.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["COMPONENTS", "gradient", "variation", "components", "jacobian", "cofactor", "energy_derivatives",
+           "jacobian_derivatives"]
+
+#: the nonzero components (i, j) of an axisymmetric F or dF
+COMPONENTS = ((0, 0), (0, 1), (1, 0), (1, 1), (2, 2))
+
+
+def _tensor(grad: np.ndarray, hoop: np.ndarray, identity: float) -> np.ndarray:
+    out = np.zeros((3, 3) + hoop.shape)
+    out[:2, :2] = grad
+    out[2, 2] = hoop
+    for k in range(3):
+        out[k, k] += identity
+    return out
+
+
+def gradient(grad: np.ndarray, u_r: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """F (3, 3, ...) from the displacement's in-plane gradient ``grad`` (2, 2, ...; grad[i, j] = du_i/dx_j),
+    its radial component ``u_r`` and the radius ``r`` (> 0, the quadrature points')."""
+    return _tensor(grad, u_r / r, 1.0)
+
+
+def variation(grad: np.ndarray, u_r: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """dF (3, 3, ...) of a displacement variation, as ``gradient`` without the identity."""
+    return _tensor(grad, u_r / r, 0.0)
+
+
+def components(T: np.ndarray) -> np.ndarray:
+    """The five components (5, ...) of an axisymmetric (3, 3, ...) tensor."""
+    return np.array([T[i, j] for i, j in COMPONENTS])
+
+
+def jacobian(F: np.ndarray) -> np.ndarray:
+    """J = det F (...), for the axisymmetric pattern of F."""
+    return F[2, 2] * (F[0, 0] * F[1, 1] - F[0, 1] * F[1, 0])
+
+
+def cofactor(F: np.ndarray) -> np.ndarray:
+    """dJ/dF = J F^-T (3, 3, ...), for the axisymmetric pattern of F."""
+    out = np.zeros_like(F)
+    out[0, 0], out[0, 1] = F[2, 2] * F[1, 1], -F[2, 2] * F[1, 0]
+    out[1, 0], out[1, 1] = -F[2, 2] * F[0, 1], F[2, 2] * F[0, 0]
+    out[2, 2] = F[0, 0] * F[1, 1] - F[0, 1] * F[1, 0]
+    return out
+
+
+def _log_jacobian(F):
+    """dj (5, ...) and d^2 j (5, 5, ...) of j = ln J, and Finv."""
+    inverse = np.swapaxes(cofactor(F), 0, 1) / jacobian(F)
+    dj = np.array([inverse[j, i] for i, j in COMPONENTS])
+    d2j = np.array([[-inverse[ja, ib] * inverse[jb, ia] for ib, jb in COMPONENTS] for ia, ja in COMPONENTS])
+    return dj, d2j
+
+
+def jacobian_derivatives(F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """dJ (5, ...) and d^2 J (5, 5, ...) in the components."""
+    J = jacobian(F)
+    dj, d2j = _log_jacobian(F)
+    return J * dj, J * (dj[:, None] * dj[None, :] + d2j)
+
+
+def _isochoric(value, first, second, c, J, dj, d2j):
+    with np.errstate(invalid="ignore"):  # J <= 0 (an inverted iterate): NaN, which Newton refuses
+        scale = J ** (-c)
+    d = scale * (first - c * value * dj)
+    dd = scale * (second - c * (first[:, None] * dj[None, :] + dj[:, None] * first[None, :]) - c * value * d2j
+                  + c * c * value * dj[:, None] * dj[None, :])
+    return scale * value, d, dd
+
+
+def energy_derivatives(F: np.ndarray, law) -> tuple[np.ndarray, np.ndarray]:
+    """dW (5, ...) and d^2 W (5, 5, ...) of W(Ib1, Ib2) at F, in the components; ``law`` is
+    (I1, I2) -> (W_1, W_2, W_11, W_12, W_22) (``laws.derivatives``)."""
+    C = np.einsum("ki...,kj...->ij...", F, F)
+    i1 = np.einsum("ij...,ij...->...", F, F)
+    i2 = 0.5 * (i1**2 - np.einsum("ij...,ij...->...", C, C))
+    FC = np.einsum("ik...,kj...->ij...", F, C)
+    d_i1 = np.array([2.0 * F[i, j] for i, j in COMPONENTS])
+    d_i2 = np.array([2.0 * (i1 * F[i, j] - FC[i, j]) for i, j in COMPONENTS])
+    # dC[E_a] = E_a^T F + F^T E_a: row j_a of the first is F's row i_a, column j_a of the second likewise
+    dC = np.zeros((5,) + C.shape)
+    for a, (i, j) in enumerate(COMPONENTS):
+        dC[a, j, :] += F[i]
+        dC[a, :, j] += F[i]
+    eye = np.eye(5).reshape((5, 5) + (1,) * F[0, 0].ndim)
+    d2_i1 = 2.0 * eye * np.ones_like(i1)
+    same_row = np.array([[float(ia == ib) for ib, _ in COMPONENTS] for ia, _ in COMPONENTS])
+    c_pairs = np.array([[C[ja, jb] for _, jb in COMPONENTS] for _, ja in COMPONENTS])
+    d2_i2 = (d_i1[:, None] * d_i1[None, :] + 2.0 * i1 * eye - np.einsum("aij...,bij...->ab...", dC, dC)
+             - 2.0 * same_row.reshape(same_row.shape + (1,) * i1.ndim) * c_pairs)
+    J = jacobian(F)
+    dj, d2j = _log_jacobian(F)
+    b1, db1, ddb1 = _isochoric(i1, d_i1, d2_i1, 2.0 / 3.0, J, dj, d2j)
+    b2, db2, ddb2 = _isochoric(i2, d_i2, d2_i2, 4.0 / 3.0, J, dj, d2j)
+    w1, w2, w11, w12, w22 = law(b1, b2)
+    first = w1 * db1 + w2 * db2
+    second = (w1 * ddb1 + w2 * ddb2 + w11 * db1[:, None] * db1[None, :]
+              + w12 * (db1[:, None] * db2[None, :] + db2[:, None] * db1[None, :]) + w22 * db2[:, None] * db2[None, :])
+    return first, second

@@ -1,0 +1,109 @@
+r"""The discretised sheet: Taylor-Hood bases on the cross-section, its constraints, the assembled system.
+
+Displacement u on biquadratic quadrilaterals (Q2, scikit-fem's ``ElementQuad2``), the pressure p
+of the incompressibility constraint on bilinear ones (Q1): the Taylor-Hood pair, stable (inf-sup)
+for incompressible elasticity, with errors O(h^2) in u and p in the energy norm (O(h^3) in u in L2).
+Constraints: the clamp r = 1 fixed through the thickness (u = 0), the axis r = 0 (u_r = 0).
+
+``solid`` returns the residual and the tangent of the rubber alone, ``fluid`` the cavity's volume
+and its first and second derivatives (``forms``); ``problem`` borders them with the fluid and the
+plate (``equations``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import Basis, ElementQuad1, ElementQuad2, ElementVector, FacetBasis, MeshQuad, asm
+
+from . import forms
+from . import kinematics as kin
+
+__all__ = ["Model", "discretize", "solid", "fluid", "split"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Model:
+    """The discretised sheet of thickness ``thickness`` (T/R) and rubber ``law`` (``laws.derivatives``, units
+    mu_0). ``top_z`` are the vertical displacement dofs of the upper surface's nodes, ordered by their
+    Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the same for the
+    mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p])."""
+
+    mesh: MeshQuad
+    thickness: float
+    law: object
+    basis_u: Basis
+    basis_p: Basis
+    bottom: FacetBasis
+    free: np.ndarray
+    top_r: np.ndarray
+    top_z: np.ndarray
+    mid_r: np.ndarray
+    mid_dofs: np.ndarray
+
+    @property
+    def size(self) -> int:
+        """Unknowns of [u, p]."""
+        return self.basis_u.N + self.basis_p.N
+
+
+def _line(basis: Basis, z: float) -> tuple[np.ndarray, np.ndarray]:
+    """The nodes of the displacement basis at height z: their radii (sorted) and their (u_r, u_z) dofs
+    ((2, n))."""
+    loc = basis.doflocs
+    on = [k[np.isclose(loc[1, k], z, rtol=0.0, atol=1e-12)] for k in basis.split_indices()]
+    on = [k[np.argsort(loc[0, k])] for k in on]
+    return loc[0, on[1]], np.array(on)
+
+
+def discretize(thickness: float, mesh: MeshQuad, law) -> Model:
+    """The model of ``mesh`` (``mesh.section``) for the sheet of T/R = ``thickness`` and the rubber ``law``."""
+    basis_u = Basis(mesh, ElementVector(ElementQuad2()))
+    basis_p = basis_u.with_element(ElementQuad1())
+    bottom = FacetBasis(mesh, basis_u.elem, facets="bottom")
+    fixed = np.concatenate([basis_u.get_dofs("right").all(), basis_u.get_dofs("left").all("u^1")])
+    free = np.setdiff1d(np.arange(basis_u.N + basis_p.N), fixed)
+    top_r, top = _line(basis_u, 0.5 * thickness)
+    mid_r, mid = _line(basis_u, 0.0)
+    return Model(mesh, thickness, law, basis_u, basis_p, bottom, free, top_r, top[1], mid_r, mid)
+
+
+def split(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The displacement and pressure parts of y = [u, p, ...]."""
+    n = model.basis_u.N
+    return y[:n], y[n:model.size]
+
+
+def solid(model: Model, u: np.ndarray, p: np.ndarray):
+    """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p) (``forms``)."""
+    bu, bp = model.basis_u, model.basis_p
+    uq, pq = bu.interpolate(u), bp.interpolate(p)
+    F = kin.gradient(uq.grad, uq[0], bu.global_coordinates()[0])
+    table = forms.tangent_table(F, np.asarray(pq), model.law)
+    r_u = asm(forms.residual_u(model.law), bu, u=uq, p=pq)
+    r_p = asm(forms.residual_p, bp, u=uq)
+    k_uu = _tangent(bu, table)
+    k_pu = asm(forms.coupling, bu, bp, u=uq)
+    return r_u, r_p, k_uu, k_pu
+
+
+def _tangent(basis: Basis, table: np.ndarray):
+    """K_uu = int dF[phi_j] : T : dF[phi_i] 2 pi r (``forms.tangent_uu``), each element's matrix by one
+    contraction over its basis functions and quadrature points instead of one form call per pair."""
+    r = basis.global_coordinates()[0]
+    comps = np.array([forms.components(phi[0], r) for phi in basis.basis])  # (basis functions, 5, e, q)
+    weight = basis.dx * 2.0 * np.pi * r
+    local = np.einsum("iaeq,abeq,jbeq,eq->eij", comps, table, comps, weight, optimize=True)
+    dofs = basis.element_dofs  # (basis functions, elements)
+    rows = np.broadcast_to(dofs.T[:, :, None], local.shape).ravel()
+    cols = np.broadcast_to(dofs.T[:, None, :], local.shape).ravel()
+    return sp.coo_matrix((local.ravel(), (rows, cols)), shape=(basis.N, basis.N)).tocsr()
+
+
+def fluid(model: Model, u: np.ndarray):
+    """The cavity's volume V (R^3) under the lower surface, V' (N_u,) and V'' (N_u x N_u) at u."""
+    uq = model.bottom.interpolate(u)
+    return (float(asm(forms.volume, model.bottom, u=uq)), asm(forms.volume_first, model.bottom, u=uq),
+            asm(forms.volume_second, model.bottom, u=uq))

@@ -1,0 +1,84 @@
+"""Newton's method on the bordered equations (``equations``), and the contact's active set around it.
+
+Converged when the largest displacement increment is below ``tol`` (units R) and the largest
+residual of the rubber's rows is below ``tol`` times the fluid's force scale (p_f + 1e-3) t: Newton
+converges quadratically here, so the last increment bounds the error. The active set (``contact``)
+is updated between Newton solves: a node whose force lambda_k < 0 leaves it, a free node above the
+plate (z_k > h) joins it, until neither happens.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import scipy.sparse.linalg as spl
+
+from pocket.core.errors import ConvergenceError
+
+from .equations import Control, system
+from .model import Model
+
+__all__ = ["solve", "contact", "MAX_ITERATIONS", "MAX_SWEEPS", "SWEEP_TOL"]
+
+MAX_ITERATIONS = 25
+#: active-set updates before giving up
+MAX_SWEEPS = 60
+#: Newton's tolerance while the active set changes (units R)
+SWEEP_TOL = 1e-7
+
+
+def solve(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np.ndarray, int]:
+    """The state solving the equations of ``control`` from the guess ``y``; (y, iterations). A
+    ConvergenceError if Newton does not converge."""
+    y = y.copy()
+    n = model.basis_u.N
+    for iteration in range(1, MAX_ITERATIONS + 1):
+        res, jac, keep = system(model, y, control)
+        if not np.all(np.isfinite(res)):  # an iterate with J <= 0 somewhere: the isochoric invariants fail
+            raise ConvergenceError("an iterate turned an element inside out (det F <= 0)", iterations=iteration)
+        try:
+            step = spl.spsolve(jac, res)
+        except RuntimeError as err:  # a singular factor
+            raise ConvergenceError(f"singular tangent: {err}", iterations=iteration) from err
+        if not np.all(np.isfinite(step)):
+            raise ConvergenceError("singular tangent", iterations=iteration, residual=float(np.abs(res).max()))
+        y[keep] -= step
+        du = np.abs(step[keep < n]).max()
+        if du < tol:
+            return y, iteration
+        if du > 1.0:  # a step longer than the sheet: diverging
+            break
+    raise ConvergenceError(f"Newton did not converge in {iteration} iterations (last displacement step "
+                           f"{du:.3g} R)", iterations=iteration, residual=float(np.abs(res).max()))
+
+
+def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np.ndarray, Control, int]:
+    """The state in contact with the plate and its active set, from the guess ``y`` whose contact forces are
+    those of ``control.active``; (y, control with the final active set, Newton iterations).
+
+    While the set changes, Newton stops at ``SWEEP_TOL`` (a set decided at 1e-7 R is the set at 1e-10 R
+    unless a node sits within 1e-7 R of the plate with a force of the order of the Newton error, which the
+    final solve's check catches); every node with a negative force leaves at once (but one, the pole's, if
+    all would), every node above the plate joins.
+    """
+    size, total, loose = model.size, 0, max(tol, SWEEP_TOL)
+    for sweep in range(MAX_SWEEPS):
+        y, iterations = solve(model, y, control, loose if sweep < MAX_SWEEPS - 1 else tol)
+        total += iterations
+        active, lam, h = np.asarray(control.active), y[size + 2:], y[size + 1]
+        z = 0.5 * model.thickness + y[model.top_z]
+        keep = lam >= 0.0
+        if not keep.any():
+            keep[np.argmax(lam)] = True
+        joining = np.setdiff1d(np.flatnonzero(z > h + loose), active)
+        if keep.all() and joining.size == 0:
+            if loose > tol:
+                y, iterations = solve(model, y, control, tol)
+                total += iterations
+            return y, control, total
+        new = np.union1d(active[keep], joining)
+        forces = dict(zip(active[keep], lam[keep], strict=True))
+        y = np.concatenate([y[:size + 2], [forces.get(k, 0.0) for k in new]])
+        control = dataclasses.replace(control, active=new)
+    raise ConvergenceError(f"the contact's active set did not settle in {MAX_SWEEPS} updates")

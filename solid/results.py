@@ -1,0 +1,82 @@
+"""The solid's states in the membrane solvers' containers (``pocket.core.states``), key by key comparable.
+
+Units as the membrane's: lengths / R, Phat = P R / (E T) = p_f / (3 t) (p_f in units mu_0, E = 3
+mu_0), Fhat = F / (P_I pi R^2). ``height`` is the upper surface's pole height (the plate's height
+in contact) above the clamp plane (the flat sheet's mid-plane), ``volume`` the cavity's under the
+lower surface (the fluid's). The profile is the mid-surface's, its tensions the through-thickness
+stress resultants (``post``). Extra keys: ``height_mid`` (the mid-surface's pole height),
+``volume_mid`` (the volume under the mid-surface, from its own flat plane: equal to ``volume`` up
+to the discrete incompressibility, for the sheet between them keeps its volume), ``incompressibility``
+(the largest |det F - 1| at the quadrature points), the mesh and the iterations.
+
+Contact on the plate: the Lagrangian contact radius is the outermost node of the active set (its
+error is below the upper surface's node spacing there), the deformed one its rho, the contact area
+pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact forces (``extra["reaction"]``, Fhat).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pocket.core.fluids import Fluid
+from pocket.core.materials import Material
+from pocket.core.states import CompressedState, InflatedState, Profile
+
+from .model import Model, split
+from .post import fields
+
+__all__ = ["inflated", "compressed"]
+
+
+def _profile(f, contact: np.ndarray) -> Profile:
+    return Profile(f.r, f.rho, f.eta, f.stretch_1, f.stretch_2, f.tension_1, f.tension_2, contact)
+
+
+def _extra(model: Model, f, iterations: int) -> dict:
+    return {"height_mid": float(f.eta[0]), "volume_mid": f.volume_mid, "incompressibility": f.incompressibility,
+            "thickness_ratio": model.thickness, "elements": model.mesh.t.shape[1] // _layers(model),
+            "layers": _layers(model), "iterations": iterations}
+
+
+def _layers(model: Model) -> int:
+    return np.unique(np.round(model.mesh.p[1], 12)).size - 1
+
+
+def volume(model: Model, y: np.ndarray) -> float:
+    """The cavity's volume (R^3) of the state y."""
+    from .model import fluid
+
+    return fluid(model, split(model, y)[0])[0]
+
+
+def inflated(model: Model, material: Material, y: np.ndarray, iterations: int, pressure=None, volume_given=None):
+    """The InflatedState of y; ``pressure`` or ``volume_given`` echoes what was asked."""
+    f = fields(model, y)
+    phat = float(y[model.size]) / (3.0 * model.thickness)
+    return InflatedState(
+        material=material, pressure=phat if pressure is None else pressure,
+        stretch_pole=float(f.stretch_1[0]), height=float(f.top_eta[0]),
+        volume=volume(model, y) if volume_given is None else volume_given,
+        stretch_clamp=float(f.stretch_1[-1]), profile=_profile(f, np.zeros(f.r.size, bool)), solver="solid",
+        extra=_extra(model, f, iterations))
+
+
+def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarray, iterations: int,
+               start: InflatedState, fluid: Fluid, force: float | None = None) -> CompressedState:
+    """The CompressedState of y in contact on the upper-surface nodes ``active``; ``force`` echoes the Fhat
+    asked (None under height control: the reaction)."""
+    f = fields(model, y)
+    scale = 3.0 * model.thickness
+    phat = float(y[model.size]) / scale
+    reaction = float(np.sum(y[model.size + 2:])) / (np.pi * start.pressure * scale)
+    edge = int(active.max())
+    r_c = float(model.top_r[edge])
+    rho_c = float(np.interp(r_c, f.r, f.top_rho))
+    height = float(y[model.size + 1])
+    extra = {**_extra(model, f, iterations), "reaction": reaction}
+    return CompressedState(
+        material=material, pressure_initial=start.pressure, force=reaction if force is None else force,
+        pressure=phat, pressure_ratio=phat / start.pressure, contact_area=rho_c**2, contact_radius=r_c,
+        stretch_contact=float(np.interp(r_c, f.r, f.stretch_2)), height=height, height_ratio=height / start.height,
+        volume=volume(model, y), profile=_profile(f, f.r <= r_c), inflated=start, solver="solid", extra=extra,
+        fluid=fluid, contact_radius_deformed=rho_c)
