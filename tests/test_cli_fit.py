@@ -13,11 +13,11 @@ R, T = 0.02, 1e-3
 TRUTH = check("mooney-rivlin", {"c1": 160e3, "c2": 47e3})
 
 
-def bulge_csv(path):
-    """A noise-free bulge test of TRUTH in kPa and mm, 8 pressures."""
+def bulge_csv(path, truth=TRUTH):
+    """A noise-free bulge test of ``truth`` in kPa and mm, 8 pressures."""
     phats = np.linspace(0.05, 0.6, 8)
-    tension = 3.0 * TRUTH.mu0 * T
-    heights = [shooting.inflate(TRUTH.scaled(), p).height * R for p in phats]
+    tension = 3.0 * truth.mu0 * T
+    heights = [shooting.inflate(truth.scaled(), p).height * R for p in phats]
     rows = [f"{float(p * tension / R / 1e3)!r},{float(h * 1e3)!r}" for p, h in zip(phats, heights, strict=True)]
     path.write_text("pressure [kPa],height [mm]\n" + "\n".join(rows) + "\n")
     return str(path)
@@ -91,3 +91,28 @@ def test_out_folder_case_file_round_trip(tmp_path, capsys):
     pressure = result["inflated"]["pressure_Pa"]
     expected = shooting.inflate(TRUTH.scaled(), pressure * R / (3.0 * TRUTH.mu0 * T)).height * R
     assert result["inflated"]["height_m"] == pytest.approx(expected, rel=1e-6)  # the fit's 1e-6
+
+
+def test_prestretch_held_or_fitted(tmp_path, capsys):
+    """Exact answer: the truth, a Mooney-Rivlin sheet clamped with a prestretch of 1.1 (noise-free data; 1e-6 as
+    above). --fix prestretch=1.1 holds it (reported as fixed, written to the fitted case file) and recovers C1 and
+    C2; --fit-prestretch fits it too; both at once, or a prestretch below 1, is one line and exit 2."""
+    import dataclasses
+
+    truth = dataclasses.replace(TRUTH, prestretch=1.1)
+    data = bulge_csv(tmp_path / "b.csv", truth)
+    base = ["fit", data, "--radius", "20 mm", "--thickness", "1 mm"]
+    assert main([*base, "--json", "--fix", "prestretch=1.1", "--out", str(tmp_path / "held")]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["fixed"] == {"prestretch": {"value": 1.1, "unit": "1"}}
+    for key in ("c1", "c2"):
+        assert out["parameters"][key]["value"] == pytest.approx(truth[key], rel=1e-6)
+    assert "prestretch = 1.1\n" in (tmp_path / "held" / "fitted.toml").read_text()
+    assert main([*base, "--json", "--fit-prestretch"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["parameters"]["prestretch"]["value"] == pytest.approx(1.1, rel=1e-6)
+    for bad, message in ((["--fit-prestretch", "--fix", "prestretch=1.1"], "give one of them"),
+                         (["--fix", "prestretch=0.9"], "--fix prestretch = 0.9, but a prestretch")):
+        assert main([*base, *bad]) == 2
+        out, err = capsys.readouterr()
+        assert out == "" and err.count("\n") == 1 and message in err, err

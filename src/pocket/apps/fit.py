@@ -13,7 +13,8 @@ a trial set with a datum without state (a residual ``PENALTY``), is taken backwa
 derivative is ever taken across the penalty.
 
 Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every
-datum are ranked by cost. For the laws with many parameters (``PROBED``), the best ``RUNS`` each
+datum are ranked by cost. For the laws with many parameters (``PROBED``) and for a fitted prestretch
+(whose starts are each shape at several prestretches, ``PRESTRETCHES``), the best ``RUNS`` each
 run ``_PROBE`` evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or
 Ogden start can lead into a valley or a local minimum where trust-region steps crawl) and the
 lowest of them runs on to convergence; the others run from their best start. Bounds make trf's
@@ -36,11 +37,11 @@ from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.materials import Material
 
 from . import fitstats
-from .fitkeys import Key, key_named, keys
+from .fitkeys import PRESTRETCH, Key, key_named, keys
 from .fitmodel import PENALTY, Setup, predict, residuals
 from .fitstart import starts
 
-__all__ = ["Fit", "fit", "RUNS", "PROBED"]
+__all__ = ["Fit", "fit", "RUNS", "PROBED", "PRESTRETCHES"]
 
 #: starts probed (the best by their cost), for the laws ``PROBED``
 RUNS = 4
@@ -50,6 +51,8 @@ _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring
 _TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
 _PROBE = 6  # evaluations each start runs before the best of them continues
+#: the prestretches each start shape is tried at when the prestretch is fitted (a slack sheet to a taut one)
+PRESTRETCHES = (1.0, 1.05, 1.2)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -97,7 +100,10 @@ class _Problem:
         x = np.asarray(x, dtype=float)
         if self._last is not None and self._last[0] == x.tobytes():
             return self._last[1]
-        values, calls = predict(self.setup, self.material(x))
+        try:
+            values, calls = predict(self.setup, self.material(x))
+        except InputError:  # a Gent prestretch past the trial Jm's locking: outside the admissible set
+            values, calls = predict(self.setup, None), 0
         r = residuals(self.setup, values)
         self.count["calls"] += calls
         self.count["penalised"] += bool(np.any(r == PENALTY))
@@ -131,28 +137,42 @@ def _fixed_material(material: Material, fixed: dict, all_keys) -> Material:
     return material
 
 
-def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, start: dict | None = None) -> Fit:
+def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, start: dict | None = None,
+        prestretch: bool = False) -> Fit:
     """Fit ``law`` (``terms`` terms for Ogden) to ``setup``'s data (``pocket.apps.fitmodel.Setup``).
 
     ``fixed``: key -> value held (stresses in the setup's unit); ``start``: key -> value that replaces
-    the start's (for every start). Raises InputError for fewer data than unknowns + 1 (before any
-    solve), ConvergenceError if no start or no result has a state for every datum.
+    the start's (for every start). The clamped sheet's prestretch (key ``prestretch``) is held at 1, or
+    at its value in ``fixed``, unless ``prestretch`` asks to fit it. Raises InputError for fewer data than
+    unknowns + 1 (before any solve), ConvergenceError if no start or no result has a state for every datum.
     """
     clock = time.perf_counter()
     fixed, start = dict(fixed or {}), dict(start or {})
     all_keys = keys(law, terms)
     for name in (*fixed, *start):
         key_named(all_keys, name, "--fix" if name in fixed else "start")
-    free = [k for k in all_keys if k.name not in fixed]
+    if prestretch and PRESTRETCH in fixed:
+        raise InputError(f"--fix {PRESTRETCH}={fixed[PRESTRETCH]!r} holds the prestretch that --fit-prestretch "
+                         "asks to fit: give one of them")
+    if PRESTRETCH in fixed and not fixed[PRESTRETCH] >= 1.0:
+        raise InputError(f"--fix {PRESTRETCH} = {fixed[PRESTRETCH]!r}, but a prestretch of the clamped sheet "
+                         "must be >= 1")
+    free = [k for k in all_keys if k.name not in fixed and (prestretch or k.name != PRESTRETCH)]
     if not free:
         raise InputError("--fix holds every parameter of the law: there is nothing left to fit")
     if setup.count <= len(free):
         raise InputError(f"{setup.count} data, but fitting {len(free)} parameters ({', '.join(k.name for k in free)}) "
                          f"needs at least {len(free) + 1}")
+    prestretches = (fixed[PRESTRETCH],) if PRESTRETCH in fixed else (start[PRESTRETCH],) if PRESTRETCH in start \
+        else PRESTRETCHES if prestretch else (1.0,)
+    probed = law in PROBED or prestretch
     ranked, count, tried = [], {"calls": 0, "penalised": 0}, 0
-    for shape in starts(setup, law, terms):
+    for shape in starts(setup, law, terms, prestretches):
         for material in shape:
-            material = _fixed_material(_fixed_material(material, start, all_keys), fixed, all_keys)
+            try:
+                material = _fixed_material(_fixed_material(material, start, all_keys), fixed, all_keys)
+            except InputError:  # a Gent start whose Jm the held prestretch exceeds: not a start
+                continue
             problem = _problem(setup, material, free, count)
             r = problem(problem.x(material))
             tried += 1
@@ -165,16 +185,16 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     ranked.sort(key=lambda pair: pair[0])
     count["penalised"] = 0  # from here on: trial sets of the runs (a start without all states is just skipped)
     probes = []
-    for _, material in ranked[:RUNS if law in PROBED else 1]:  # each start a few steps, where its basin shows
+    for _, material in ranked[:RUNS if probed else 1]:  # each start a few steps, where its basin shows
         problem = _problem(setup, material, free, count)
-        x = _run(problem, problem.x(material), _PROBE if law in PROBED else _MAX_EVALUATIONS)[0]
+        x = _run(problem, problem.x(material), _PROBE if probed else _MAX_EVALUATIONS)[0]
         r = problem(x)
         if not np.any(r == PENALTY):
             probes.append((float(r @ r), x, problem))
     if not probes:
         raise ConvergenceError(f"the {law} fit ended outside the model's range from every start")
     _, x, problem = min(probes, key=lambda probe: probe[0])
-    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if law in PROBED else (x, 1, 0)
+    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if probed else (x, 1, 0)
     r = problem(x)
     if np.any(r == PENALTY):
         raise ConvergenceError(f"the {law} fit ended outside the model's range")

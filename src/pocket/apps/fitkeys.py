@@ -3,13 +3,14 @@
 A law's keys are its parameters by name (``c1``, ``c10``, ``jm``), a listed parameter one key per
 term (Ogden's ``mu[0]``, ``exponents[0]``, ...). A key reads its value from a ``Material`` and
 returns a new ``Material`` with another value (``dataclasses``-style: the material is not changed),
-so that anything a material carries can be fitted by adding a key here (a prestretch of the
-clamped sheet would be one more, with bounds [1, inf)).
+so that anything a material carries can be fitted by adding a key here. The last key of every law is
+``prestretch``, the equibiaxial stretch lambda_p of the clamped flat sheet (``Material.prestretch``),
+bounds [1, inf): the fit holds it at 1 unless asked to fit it (``pocket.apps.fit``).
 
 Bounds are the box part of each law's admissible set: C1, mu, C10, Jm > 0. The rest of the set
 (C1 + C2 > 0, C30 >= 0 and a Yeoh slope that stays positive, mu_p alpha_p > 0, Jm above the data's
-largest I1 - 3) is not a box: a trial set outside it has no state, and the fit treats it as it
-treats a datum with no state (``pocket.apps.fitmodel``).
+largest I1 - 3, a Gent prestretch inside the locking) is not a box: a trial set outside it has no
+state, and the fit treats it as it treats a datum with no state (``pocket.apps.fitmodel``).
 """
 
 from __future__ import annotations
@@ -21,7 +22,10 @@ from collections.abc import Callable
 from pocket.core.errors import InputError
 from pocket.core.materials import LAWS, Material
 
-__all__ = ["Key", "keys", "key_named"]
+__all__ = ["Key", "PRESTRETCH", "keys", "key_named"]
+
+#: the key of the clamped sheet's prestretch (the case file's ``sheet.prestretch``)
+PRESTRETCH = "prestretch"
 
 #: (law, parameter name) -> its lower bound, where the law's admissible set bounds it alone
 _LOWER = {("mooney-rivlin", "c1"): 0.0, ("neo-hookean", "mu"): 0.0, ("yeoh", "c10"): 0.0,
@@ -61,13 +65,16 @@ def _term(name: str, k: int) -> tuple[Callable, Callable]:
 
 
 def keys(law: str, terms: int = 1) -> tuple[Key, ...]:
-    """The keys of ``law`` (a name of ``LAWS``), ``terms`` terms for a listed parameter (Ogden)."""
+    """The keys of ``law`` (a name of ``LAWS``), ``terms`` terms for a listed parameter (Ogden), then
+    ``PRESTRETCH``."""
     out = []
     for q in LAWS[law].parameters:
         names = [(f"{q.name}[{k}]", _term(q.name, k)) for k in range(terms)] if q.listed else \
             [(q.name, _plain(q.name))]
         for name, (get, put) in names:
             out.append(Key(name, q.unit, _LOWER.get((law, q.name), -math.inf), math.inf, get, put))
+    out.append(Key(PRESTRETCH, "dimensionless", 1.0, math.inf, lambda m: m.prestretch,
+                   lambda m, v: dataclasses.replace(m, prestretch=float(v))))
     return tuple(out)
 
 

@@ -128,11 +128,14 @@ def _compression(setup: Setup, test: Dataset, material: Material, tension: float
     return out
 
 
-def predict(setup: Setup, material: Material) -> tuple[list[dict], int]:
+def predict(setup: Setup, material: Material | None) -> tuple[list[dict], int]:
     """The model's value at each datum (per test, column name -> SI array of the test's shape, NaN where the
-    model has no state) for ``material`` (its stresses in the setup's unit), and the number of solver calls."""
+    model has no state) for ``material`` (its stresses in the setup's unit; None: a trial set outside the
+    law's admissible set), and the number of solver calls."""
     calls = [0]
     try:
+        if material is None:
+            raise InputError("outside the admissible set")
         check(material.law, {n: list(v) if isinstance(v, tuple) else v for n, v in material.params})
     except InputError:  # outside the law's admissible set: no state anywhere
         return [{n: np.full(t.control.shape, math.nan) for n in t.responses} for t in setup.tests], 0

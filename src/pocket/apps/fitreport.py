@@ -108,6 +108,8 @@ def case_text(fit: Fit) -> str:
             lines.append(f"{name} = [{', '.join(cells)}]")
         else:
             lines.append(f"{name} = {_quantity(value * factor, 'Pa') if name in stresses else f'{value:.10g}'}")
+    if material.prestretch != 1.0:
+        lines.append(f"prestretch = {material.prestretch:.10g}")
     lines += ["[clamp]", f"radius = {_quantity(setup.radius, 'm')}", "[initial]",
               f"pressure = {_quantity(pressure, 'Pa')}", "[loads]",
               f"forces = [{', '.join(_quantity(f, 'N') for f in forces)}]"]

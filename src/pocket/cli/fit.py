@@ -78,7 +78,8 @@ def _main(args) -> int:
         if not any(name in t.responses for t in tests):
             raise InputError(f"--sigma {name}: no test has {name} data")
     target = None if args.out is None else check_replaceable(pathlib.Path(args.out), KIND, "--out")
-    result = fit(Setup(tests, radius, thickness, args.solver, {}, sigma), args.law, terms=args.terms, fixed=fixed)
+    result = fit(Setup(tests, radius, thickness, args.solver, {}, sigma), args.law, terms=args.terms, fixed=fixed,
+                 prestretch=args.fit_prestretch)
     if target is not None:
         write(result, target)
     out = summary(result)
@@ -125,7 +126,11 @@ def register(subparsers) -> None:
     p.add_argument("--initial-pressure", help="initial pressure P_I of the compression tests, e.g. '5 kPa'")
     p.add_argument("--terms", type=int, default=1, help="Ogden terms (1 to 3; default 1)")
     p.add_argument("--fix", action="append", metavar="KEY=VALUE",
-                   help="hold a parameter: a stress with a unit ('c1=160 kPa'), a number plain ('jm=10')")
+                   help="hold a parameter: a stress with a unit ('c1=160 kPa'), a number plain ('jm=10', "
+                   "'prestretch=1.1')")
+    p.add_argument("--fit-prestretch", action="store_true",
+                   help="also fit the equibiaxial prestretch of the clamped sheet (key prestretch; otherwise "
+                   "held at 1, or at its --fix value)")
     p.add_argument("--sigma", action="append", metavar="COLUMN=VALUE",
                    help="a column's measurement uncertainty ('height=0.01 mm'): its residuals in units of it")
     p.add_argument("--solver", choices=("shooting", "fem"), default="shooting", help="the model's solver")
