@@ -116,3 +116,53 @@ def test_prestretch_held_or_fitted(tmp_path, capsys):
         assert main([*base, *bad]) == 2
         out, err = capsys.readouterr()
         assert out == "" and err.count("\n") == 1 and message in err, err
+
+
+CASE = """[sheet]
+material = "mooney-rivlin"
+thickness = "1 mm"
+[clamp]
+radius = "20 mm"
+[fit]
+data = ["b.csv"]
+"""
+
+
+def test_case_file_names_the_data(tmp_path, capsys):
+    """A case file with a [fit] table gives the same fit as the flags it replaces (the same computation: the same
+    numbers to the last bit), the data file relative to the case file's folder, run from elsewhere."""
+    bulge_csv(tmp_path / "b.csv")
+    assert main(["fit", str(tmp_path / "b.csv"), "--radius", "20 mm", "--thickness", "1 mm", "--json"]) == 0
+    flags = json.loads(capsys.readouterr().out)
+    (tmp_path / "case.toml").write_text(CASE)
+    assert main(["fit", str(tmp_path / "case.toml"), "--json"]) == 0
+    case = json.loads(capsys.readouterr().out)
+    assert case["parameters"] == flags["parameters"] and case["solver_calls"] == flags["solver_calls"]
+
+
+CASE_BAD = {
+    "no [fit] table": (CASE.split("[fit]")[0], [], "no [fit] table"),
+    "a flag the case gives": (CASE, ["--radius", "20 mm"], "--radius: the case file"),
+    "data not a list": (CASE.replace('["b.csv"]', '"b.csv"'), [], "fit.data = 'b.csv', but it must be a non-empty"),
+    "a parameter in [sheet]": (CASE.replace('thickness = "1 mm"', 'thickness = "1 mm"\nc1 = "1 kPa"'), [],
+                               "unknown key 'sheet.c1'"),
+    "an unknown key to hold": (CASE + 'fix = {c3 = "1 kPa"}\n', [], "fit.fix = 'c3', but the law's keys are"),
+    "a bad uncertainty": (CASE + 'sigma = {height = "-1 mm"}\n', [], "fit.sigma.height"),
+    "a prestretch held and fitted": (CASE.replace("[clamp]", "prestretch = 1.1\n[clamp]") + "prestretch = true\n", [],
+                                     "give one of them"),
+    "a missing data file": (CASE.replace("b.csv", "nothere.csv"), [], "nothere.csv"),
+}
+
+
+@pytest.mark.parametrize("case", list(CASE_BAD))
+def test_bad_case_file_one_line_exit_2_before_solving(case, tmp_path, capsys, monkeypatch):
+    """Each defect of a fit's case file is one line on stderr naming the key, exit 2, and no solve."""
+    import pocket.apps.fitmodel as model
+
+    monkeypatch.setattr(model, "entry", lambda *a: pytest.fail("solved"))
+    text, flags, message = CASE_BAD[case]
+    (tmp_path / "b.csv").write_text("pressure [kPa],height [mm]\n1,2\n2,3\n3,4\n")
+    (tmp_path / "case.toml").write_text(text)
+    status = main(["fit", str(tmp_path / "case.toml"), *flags])
+    out, err = capsys.readouterr()
+    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
