@@ -51,6 +51,7 @@ _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring
 _TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
 _PROBE = 6  # evaluations each start runs before the best of them continues
+_SAMPLE = 10  # rows per test where starts are ranked and probed: enough to show a curve's shape and its basin
 #: the prestretches each start shape is tried at when the prestretch is fitted (a slack sheet to a taut one)
 PRESTRETCHES = (1.0, 1.05, 1.2)
 
@@ -84,7 +85,8 @@ class _Problem:
         self.setup, self.base, self.free, self.scales, self.count = setup, base, free, scales, count
         self.lower = np.array([k.lower for k in free]) / scales
         self.upper = np.array([k.upper for k in free]) / scales
-        self._last: tuple[bytes, np.ndarray] | None = None
+        self._last: tuple[bytes, np.ndarray, list] | None = None  # the last evaluation: x, r, the model's values
+        self._jac: tuple[bytes, np.ndarray] | None = None  # the last Jacobian (least_squares' at its result)
 
     def x(self, material: Material) -> np.ndarray:
         """The scaled unknowns of ``material``."""
@@ -97,9 +99,13 @@ class _Problem:
         return m
 
     def __call__(self, x) -> np.ndarray:
+        return self.evaluate(x)[0]
+
+    def evaluate(self, x) -> tuple[np.ndarray, list]:
+        """The residuals at ``x`` and the model's values (``pocket.apps.fitmodel.predict``)."""
         x = np.asarray(x, dtype=float)
         if self._last is not None and self._last[0] == x.tobytes():
-            return self._last[1]
+            return self._last[1], self._last[2]
         try:
             values, calls = predict(self.setup, self.material(x))
         except InputError:  # a Gent prestretch past the trial Jm's locking: outside the admissible set
@@ -107,12 +113,14 @@ class _Problem:
         r = residuals(self.setup, values)
         self.count["calls"] += calls
         self.count["penalised"] += bool(np.any(r == PENALTY))
-        self._last = (x.tobytes(), r)
-        return r
+        self._last = (x.tobytes(), r, values)
+        return r, values
 
     def jacobian(self, x) -> np.ndarray:
         x = np.asarray(x, dtype=float)
-        r0 = self(x)
+        if self._jac is not None and self._jac[0] == x.tobytes():
+            return self._jac[1]
+        r0, values = self.evaluate(x)
         jac = np.empty((r0.size, x.size))
         for k in range(x.size):
             for h in (_STEP, -_STEP):
@@ -127,7 +135,7 @@ class _Problem:
                 raise ConvergenceError(f"the fit's Jacobian: {self.free[k].name} can be moved neither up nor down "
                                        "by a relative 1e-6 without leaving the model's range")
             jac[:, k] = (r - r0) / h
-        self._last = (x.tobytes(), r0)
+        self._last, self._jac = (x.tobytes(), r0, values), (x.tobytes(), jac)
         return jac
 
 
@@ -167,13 +175,16 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
         else PRESTRETCHES if prestretch else (1.0,)
     probed = law in PROBED or prestretch
     ranked, count, tried = [], {"calls": 0, "penalised": 0}, 0
+    sample = _thinned(setup) if probed else setup  # where the starts are ranked and probed
     for shape in starts(setup, law, terms, prestretches):
         for material in shape:
             try:
                 material = _fixed_material(_fixed_material(material, start, all_keys), fixed, all_keys)
             except InputError:  # a Gent start whose Jm the held prestretch exceeds: not a start
                 continue
-            problem = _problem(setup, material, free, count)
+            if any(material == seen for _, seen in ranked):  # shapes made one by the values given
+                break
+            problem = _problem(sample, material, free, count)
             r = problem(problem.x(material))
             tried += 1
             if not np.any(r == PENALTY):
@@ -186,28 +197,40 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     count["penalised"] = 0  # from here on: trial sets of the runs (a start without all states is just skipped)
     probes = []
     for _, material in ranked[:RUNS if probed else 1]:  # each start a few steps, where its basin shows
-        problem = _problem(setup, material, free, count)
-        x = _run(problem, problem.x(material), _PROBE if probed else _MAX_EVALUATIONS)[0]
+        problem = _problem(sample, material, free, count)
+        x, status, evaluations = _run(problem, problem.x(material), _PROBE if probed else _MAX_EVALUATIONS)
         r = problem(x)
         if not np.any(r == PENALTY):
-            probes.append((float(r @ r), x, problem))
+            probes.append((float(r @ r), x, problem, status, evaluations))
     if not probes:
         raise ConvergenceError(f"the {law} fit ended outside the model's range from every start")
-    _, x, problem = min(probes, key=lambda probe: probe[0])
-    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if probed else (x, 1, 0)
-    r = problem(x)
+    _, x, problem, status, evaluations = min(probes, key=lambda probe: probe[0])
+    if probed:  # the best probe runs on, on all the data
+        problem = _Problem(setup, problem.base, problem.free, problem.scales, count)
+        x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS)
+    r, values = problem.evaluate(x)
     if np.any(r == PENALTY):
         raise ConvergenceError(f"the {law} fit ended outside the model's range")
     notes = [] if status > 0 else [f"the fit stopped after {evaluations} evaluations without meeting its "
                                    "tolerances: the parameters may be ill-determined"]
     jac = problem.jacobian(x)
     material = problem.material(x)
-    values, calls = predict(setup, material)
     stats = fitstats.statistics(setup, material, free, x, problem.scales, r, jac)
     if notes:
         stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
-    return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"] + calls,
+    return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"],
                time.perf_counter() - clock, tried, count["penalised"])
+
+
+def _thinned(setup: Setup) -> Setup:
+    """``setup`` with each test thinned to at most ``_SAMPLE`` rows spread over its range (first and last kept)."""
+    tests = []
+    for test in setup.tests:
+        n = test.control.size
+        keep = np.unique(np.round(np.linspace(0, n - 1, min(n, _SAMPLE))).astype(int))
+        tests.append(dataclasses.replace(test, control=test.control[keep],
+                                         responses={k: v[keep] for k, v in test.responses.items()}))
+    return dataclasses.replace(setup, tests=tuple(tests))
 
 
 def _run(problem: _Problem, x, budget: int) -> tuple[np.ndarray, int, int]:

@@ -60,7 +60,7 @@ class Statistics:
 def statistics(setup, material: Material, free, x, scales, r, jac) -> Statistics:
     """The statistics (module docstring) of ``material``, the fit at scaled unknowns ``x`` (keys ``free``,
     ``scales`` s_k) with residuals ``r`` (n,) and Jacobian ``jac`` (n x p) in x."""
-    from scipy.stats import t as student
+    from scipy.special import stdtrit  # Student's t quantile; scipy.stats would add a second to a fit's start
 
     n, p = jac.shape
     dof = n - p
@@ -71,7 +71,7 @@ def statistics(setup, material: Material, free, x, scales, r, jac) -> Statistics
         corr = np.where(np.outer(se, se) > 0.0, cov / np.outer(se, se), 0.0)
     np.fill_diagonal(corr, 1.0)
     values = np.array([k.get(material) for k in free])
-    half = student.ppf(0.5 + 0.5 * _LEVEL, dof) * se
+    half = stdtrit(dof, 0.5 + 0.5 * _LEVEL) * se
     grad = np.array([(k.put(material, v + h).mu0 - material.mu0) / h
                      for k, v, h in zip(free, values, 1e-6 * scales, strict=True)])
     mu0_error = math.sqrt(max(float(grad @ cov @ grad), 0.0))
