@@ -176,3 +176,27 @@ def test_too_few_data_is_refused_before_solving(monkeypatch):
     data = Dataset("inflation", np.array([1e3, 2e3, 3e3]), {"height": np.array([1e-3, 2e-3, 3e-3])}, None, "few")
     with pytest.raises(InputError, match="3 data, but fitting 3 parameters"):
         fit(Setup((data,), R, T), "yeoh")
+
+
+def test_fem_solver_fits_as_shooting_does(monkeypatch):
+    """The finite-element solver as the fit's model (``Setup.solver = "fem"``): every solve of the fit goes to
+    its record (counted through ``pocket.apps.fitmodel.entry``), and it recovers the parameter the shooting fit
+    recovers from the same noise-free data, to 1e-8 relative: the FE heights' floor (~1e-10 relative to the
+    shooting solver's, its default P2 mesh) times the fit's conditioning (mu ~ H^-3 at small strain: 3)."""
+    import pocket.apps.fitmodel as model
+
+    used = []
+    original = model.entry
+    monkeypatch.setattr(model, "entry", lambda solver, name, purpose: used.append((solver.name, name)) or
+                        original(solver, name, purpose))
+    truth = check("neo-hookean", TRUTHS["neo-hookean"][0])
+    data = bulge(truth, np.linspace(0.1, 0.5, 5))
+    by_fem = fit(Setup((data,), R, T, "fem"), "neo-hookean")
+    assert by_fem.calls > 0 and set(used) == {("fem", "inflate")}, set(used)
+    used.clear()
+    by_shooting = fit(Setup((data,), R, T), "neo-hookean")
+    assert ("shooting", "inflation_curve") in used and {s for s, _ in used} == {"shooting"}
+    difference = abs(by_fem.material["mu"] / by_shooting.material["mu"] - 1.0)
+    print(f"mu by fem {by_fem.material['mu']:.12g}, by shooting {by_shooting.material['mu']:.12g}: {difference:.2e}; "
+          f"fem calls {by_fem.calls}")
+    assert difference < 1e-8
