@@ -207,7 +207,7 @@ def test_two_term_ogden_gives_mu0_and_the_curve():
     noise-free heights by the finite-element solver, fitted with two terms by the shooting solver: the fit ends
     (its evaluations are capped), mu_0 comes back to 1e-6 relative and the model meets every datum to 1e-6 (as
     the one-term recovery above), and the report says which parameters the data determine only together (the
-    second term's modulus and exponent: near the small strains of a bulge test, a stiffer exponent and a smaller
+    stiff term's modulus and exponent: near the small strains of a bulge test, a stiffer exponent and a smaller
     modulus give nearly the same curve)."""
     truth = check("ogden", {"mu": [150e3, 10e3], "exponents": [2.0, 5.0]})
     data = bulge(truth, np.linspace(0.06, 0.6, 10), inflate=fem.inflate)
@@ -216,4 +216,5 @@ def test_two_term_ogden_gives_mu0_and_the_curve():
     print({k: f"{v:.2e}" for k, v in relative_errors(result, truth).items()}, "calls", result.calls,
           f"{result.seconds:.1f} s", s.warnings)
     assert abs(s.mu0 / truth.mu0 - 1.0) < 1e-6 and np.max(np.abs(result.residuals)) < 1e-6
-    assert any("mu[1] and exponents[1] are correlated" in w for w in s.warnings), s.warnings
+    stiff = int(np.argmax(result.material["exponents"]))  # the terms come back in either order
+    assert any(f"mu[{stiff}] and exponents[{stiff}] are correlated" in w for w in s.warnings), s.warnings
