@@ -143,12 +143,10 @@ def describe(fits) -> str:
 
 def figure(fits) -> Figure:
     """The data, the fitted curves (a) and the residuals (b) of every law's fit."""
-    data = tuple(Series(f"{f.label}: FE data", "FEM P2", f.pressures, f.heights, k, f.label) for k, f in
-                 enumerate(fits))
-    curves = tuple(Series(f"{f.label}: fitted (shooting)", "shooting", *f.curve, k, f.label) for k, f in
-                   enumerate(fits))
-    residuals = tuple(Series(f"{f.label}: residual", "residual", f.pressures, f.residuals, k, f.label) for k, f in
-                      enumerate(fits))
+    # colours are laws here, not pockets: no series names a pocket (``Series.group``), so each panel has its legend
+    data = tuple(Series(f"{f.label}: FE data", "FEM P2", f.pressures, f.heights, k) for k, f in enumerate(fits))
+    curves = tuple(Series(f"{f.label}: fitted (shooting)", "shooting", *f.curve, k) for k, f in enumerate(fits))
+    residuals = tuple(Series(f"{f.label}", "residual", f.pressures, f.residuals, k) for k, f in enumerate(fits))
     return Figure("identification", f"Identifying a rubber from its bulge test: each law fitted by the shooting "
                   f"model to {POINTS} noise-free pole heights of a known rubber computed by the P2 FE model (the "
                   "truth: each law's example, Ogden's its own; colours are laws); (a) the data (crosses) and the "
