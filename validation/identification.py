@@ -150,8 +150,8 @@ def figure(fits) -> Figure:
     return Figure("identification", f"Identifying a rubber from its bulge test: each law fitted by the shooting "
                   f"model to {POINTS} noise-free pole heights of a known rubber computed by the P2 FE model (the "
                   "truth: each law's example, Ogden's its own; colours are laws); (a) the data (crosses) and the "
-                  "fitted curves (solid lines), (b) the residuals, model/data - 1 (the two solvers' difference: "
-                  "~1e-10).",
+                  "fitted curves (solid lines), (b) the residuals, model/data - 1 (the two solvers' difference, of "
+                  "the order of 1e-9).",
                   (Panel("(a) bulge test: pole height against pressure", "Phat = P R / (E T)", "H_0 / R",
                          data + curves),
                    Panel("(b) residuals", "Phat = P R / (E T)", "model / data - 1", residuals)))
