@@ -145,7 +145,8 @@ def _compression(setup: Setup, test: Dataset, material: Material, tension: float
 def predict(setup: Setup, material: Material | None) -> tuple[list[dict], int]:
     """The model's value at each datum (per test, column name -> SI array of the test's shape, NaN where the
     model has no state) for ``material`` (its stresses in the setup's unit; None: a trial set outside the
-    law's admissible set), and the number of solver calls."""
+    law's admissible set), and the number of solver calls (entry points called: an inflation test marched as one
+    curve is one call)."""
     calls = [0]
     try:
         if material is None:
