@@ -7,18 +7,21 @@ the dome's pole height and volume grow as the cube root of the pressure (Hencky'
     H0 / R = c_H Phat^(1/3),   V / R^3 = c_V Phat^(1/3),   Phat = P R / (E T),
 
 so each datum (P, H0) gives E T = P R (c_H R / H0)^3, and (P, V) gives E T = P R (c_V R^3 / V)^3.
-A prestretched sheet is taut: at small pressure it is the paraboloid of the flat sheet's tension N_0
-= n_0 E T, H0 = P R^2 / (4 N_0) and V = pi R^2 H0 / 2 (docs/theory.md), so (P, H0) gives E T = P R^2
-/ (4 n_0 H0), with n_0 = W_1(lambda_p, lambda_p) / (3 lambda_p) of the start's shape in units of
-mu_0 (W_1 by a central difference of the law's energy). Either regime's height is an upper bound on
-the sheet's (the slack dome is softer than the taut one; the taut paraboloid stiffens as it
-stretches), so the smaller of the two estimates is taken at each datum. The estimate is the median
-over the first ``SMALL`` rows (the lowest pressures) of each inflation test, and the zero-force row
-of a compression test with heights (the dome at P_I). At larger strains the estimate is biased (a
-stiffening rubber looks stiffer), which the fit corrects: the scale is the best-determined direction
-of every fit. Without such rows (a compression test of forces and pressures alone) the starts span
-Phat_I from 0.01 to 1. Each shape is tried at these scales in turn (``_STIFFER`` times the
-estimate), and starts from the first that has a state for every datum.
+A prestretched sheet is taut: at small pressure it is the paraboloid of the flat sheet's tension
+N_0 = n_0 E T (docs/theory.md),
+
+    H0 = P R^2 / (4 N_0),   V = pi R^2 H0 / 2,
+
+so (P, H0) gives E T = P R^2 / (4 n_0 H0), with n_0 = W_1(lambda_p, lambda_p) / (3 lambda_p) of the
+start's shape in units of mu_0 (W_1 by a central difference of the law's energy). Either regime's
+height is an upper bound on the sheet's (the slack dome is softer than the taut one; the taut
+paraboloid stiffens as it stretches), so the smaller of the two estimates is taken at each datum.
+The estimate is the median over the first ``SMALL`` rows (the lowest pressures) of each inflation
+test, and the zero-force row of a compression test with heights (the dome at P_I). At larger strains
+the estimate is biased (a stiffening rubber looks stiffer), which the fit corrects: the scale is the
+best-determined direction of every fit. Without such rows (a compression test of forces and
+pressures alone) the starts span Phat_I from 0.01 to 1. Each shape is tried at these scales in turn
+(``_STIFFER`` times the estimate), and starts from the first that has a state for every datum.
 
 Shape. In units of mu_0, each law's start shapes (``SHAPES``): neutral values (Yeoh's C20 and C30
 near 0, Mooney-Rivlin's alpha = C2/C1 small and moderate, Gent's Jm from little to much locking,
