@@ -3,9 +3,8 @@ r"""Identify a rubber law's parameters from a user's tests of the clamped sheet:
 The unknowns are the coordinates of the law's keys not held fixed (``pocket.apps.fitkeys``: the values,
 Ogden's terms in their shares of mu_0), scaled so that the problem is well conditioned: x_k =
 coordinate_k / s_k with s_k the start's mu_0 (times T: ``pocket.apps.fitmodel``) for a stress,
-max(|start value|, 1) for a number. scipy's ``least_squares`` (trust region
-reflective, within the keys' bounds) minimises (1/2) sum r_i(x)^2 over the residuals of
-``pocket.apps.fitmodel.residuals``.
+max(|start value|, 1) for a number. scipy's ``least_squares`` (trust region reflective, within the
+keys' bounds) minimises (1/2) sum r_i(x)^2 over the residuals of ``pocket.apps.fitmodel.residuals``.
 
 Jacobian. The solvers resolve their states to ~1e-10 relative, so J is taken by forward differences
 of step h = 1e-6 in x (truncation error O(h) ~ 1e-6, rounding O(1e-10 / h) ~ 1e-4 relative: ample
@@ -13,18 +12,18 @@ for a Gauss-Newton step and for the covariance). A forward step that leaves the 
 a trial set with a datum without state (a residual ``PENALTY``), is taken backward instead, so no
 derivative is ever taken across the penalty.
 
-Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every
-datum are ranked by cost. For the laws with many parameters (``PROBED``) and for a fitted prestretch
-(whose starts are each shape at several prestretches, ``PRESTRETCHES``), the best ``RUNS`` each
-run ``_PROBE`` evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or
-Ogden start can lead into a valley or a local minimum where trust-region steps crawl) and the
-lowest of them runs on to convergence on all the data; the others run from their best start. The
-starts are ranked and probed on each test thinned to ``_SAMPLE`` rows spread over its range (a
-curve's shape, which decides the basin, shows in ten points; a 30-point bulge test costs a third),
-and each run is capped at ``_MAX_EVALUATIONS`` evaluations (a fit that meets the cap says so). Bounds make trf's
-steps short near them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result
-with any datum without state is never reported: if no start has all its states, or the run ends
-outside the model's range, the fit is a ``ConvergenceError`` saying so.
+Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every datum
+are ranked by cost. For the laws with many parameters (``PROBED``) and for a fitted prestretch (whose
+starts are each shape at several prestretches, ``PRESTRETCHES``), the best ``RUNS`` each run ``_PROBE``
+evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or Ogden start can lead
+into a valley or a local minimum where trust-region steps crawl) and the lowest of them runs on to
+convergence on all the data; the other laws run from their best start. The starts are ranked and probed on
+each test thinned to ``_SAMPLE`` rows spread over its range (a curve's shape, which decides the basin,
+shows in ten points; a 30-point bulge test costs a third), and each run is capped at
+``_MAX_EVALUATIONS`` evaluations (a fit that meets the cap says so). Bounds make trf's steps short near
+them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result with any datum without
+state is never reported: if no start has all its states, or the run ends outside the model's range, the
+fit is a ``ConvergenceError`` saying so.
 
 The statistics of the result are in ``pocket.apps.fitstats``.
 """
