@@ -5,7 +5,8 @@
 Writes a bulge test of the Yeoh example rubber (30 heights with 0.2 % seeded noise, pole stretch up to
 2.3) to a temporary CSV, then times ``pocket fit bulge.csv --law yeoh ...`` as a new process each time
 (imports, numba's cached code, reading, the fit and its statistics): the median of a few runs after
-a first one that may compile, with the load average (the machine is shared), and the solver calls.
+a first one that may compile, with the load average (the machine is shared), and the solver calls
+(entry points called: an inflation test's 30 pressures are one ``inflation_curve`` call).
 """
 
 from __future__ import annotations

@@ -29,3 +29,29 @@ def test_fingertip_button_designs_for_the_sphere_and_writes_its_series(tmp_path)
     vtk = tmp_path / "vtk"
     steps = [len(re.findall(r'file="', (vtk / f"{part}.pvd").read_text())) for part in ("surface", "indenter")]
     assert steps[0] == steps[1] == len(list(vtk.glob("step_*_indenter.vtu"))) == 11
+
+
+def test_bulge_fit_recovers_the_rubber_and_presses_the_fitted_sheet(tmp_path):
+    """Exact answer: the rubber behind the example's made-up bulge test. Each fitted parameter lies within four
+    of its standard errors of the truth (the heights carry 0.2 % seeded noise: the fit's own error bars say how
+    far it may land; beyond four of them the chance is 6e-5 per parameter for honest errors), the figure and the
+    fitted sheet's case file are written, and the pressed sheet's rows are those of that case file solved afresh
+    by the shooting solver (printed to 6 digits)."""
+    from pocket.apps.cases import load
+
+    run = subprocess.run([sys.executable, str(EXAMPLES / "bulge_fit.py"), str(tmp_path)],
+                         capture_output=True, text=True, timeout=300, check=False)
+    assert run.returncode == 0 and not run.stderr, run.stderr
+    truth = {"c10": 85e3, "c20": -2e3, "c30": 0.2e3}
+    for name, value in truth.items():
+        fitted, error = (float(x) for x in re.search(rf"{name} = (\S+) Pa \+- (\S+)", run.stdout).groups())
+        assert abs(fitted - value) < 4.0 * error, (name, fitted, error)
+    assert (tmp_path / "fit" / "fit.png").stat().st_size > 0
+    case = load(tmp_path / "fit" / "fitted.toml")
+    states = shooting.compression_curve(case.material.scaled(), case.initial[1] * case.radius / (case.modulus *
+                                        case.thickness), [f / (case.initial[1] * 3.141592653589793 * case.radius**2)
+                                                          for f in case.loads])
+    rows = re.findall(r"^\s+(\S+)\s+(\S+)\s+(\S+)$", run.stdout.split("pressed by the plate")[1], re.M)[1:]
+    assert len(rows) == len(states) > 0
+    for (_, pressure, _), state in zip(rows, states, strict=True):
+        assert float(pressure) * 1e3 == pytest.approx(state.pressure_ratio * case.initial[1], rel=1e-5)

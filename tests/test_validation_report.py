@@ -411,13 +411,31 @@ def test_progress_bar_only_on_a_terminal():
 
 
 def test_timing_lists_every_task(report):
-    """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence)."""
+    """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence, the
+    fits to FE bulge data)."""
     results = report[2]
     rows = _rows(report[1] / "timing.csv")
     assert len(rows) == len(results.tasks) and {r["task"] for r in rows} == {"reference", "column", "convergence",
-                                                                             "evidence"}
+                                                                             "evidence", "fit"}
+    assert len([r for r in rows if r["task"] == "fit"]) == len(results.plan.fits)
     assert len([r for r in rows if r["task"] == "reference"]) == len(results.pockets)
     assert all(float(r["seconds"]) > 0 for r in rows)
+
+
+def test_identification_section(report, page):
+    """Exact answer: the truths. Every law of the plan is fitted to FE bulge data; each of its checks (the
+    parameters, mu_0, the curve, at the tolerance of TOLERANCES["fit"]) passes, one row of the section's table
+    per check, and the section's figure (data, fitted curves, residuals) is on the page."""
+    from pocket.validation import identification
+
+    results = report[2]
+    assert [(f.truth.law, len(f.truth["mu"]) if f.truth.law == "ogden" else 1) for f in results.fits] == \
+        list(results.plan.fits)
+    checks = [c for c in results.checks if c.step == "identification"]
+    assert checks and all(c.verdict in ("pass", "info") for c in checks)
+    assert len(identification.rows(results.fits)[1]) == len(checks)
+    assert {c.quantity for c in checks} >= {"mu_0", "curve (largest |model/data - 1|)", "c30", "jm"}
+    assert "identification.png" in page.images and (report[1] / "identification.png").stat().st_size > 0
 
 
 def test_refuses_a_folder_that_is_not_a_report(tmp_path, capsys, monkeypatch):

@@ -38,6 +38,7 @@ STYLES = {
     "FEM P2": dict(linestyle="none", marker="x", markersize=6),
     "analytical": dict(linestyle="--", marker="", linewidth=1.3),
     "theory": dict(linestyle="--", marker="", linewidth=0.9),
+    "residual": dict(linestyle=":", marker="o", markersize=4, linewidth=0.8),
 }
 #: solver column label -> how a caption names its style
 #: the solvers a curve figure may show, in legend order
@@ -200,8 +201,9 @@ def convergence_figure(results) -> Figure:
 
 def figures(results) -> list[Figure]:
     """The paper's figs 2-5, the other rubbers' and the gases' figures (``others``), the fingertips'
-    (``fingertips``) and the convergence study, from a run's results."""
+    (``fingertips``), the identification's (``identification``) and the convergence study, from a run's results."""
     from .fingertips import fingertip_figures
+    from .identification import figure as identification_figure
     from .others import other_figures
 
     head = headline(results.pockets)
@@ -218,6 +220,8 @@ def figures(results) -> list[Figure]:
     against = _against_force(results)
     out += [against["fig3a"], against["fig3b"], _fig4(results), against["fig5"]]
     out += other_figures(results) + fingertip_figures(results)
+    if results.fits:
+        out.append(identification_figure(results.fits))
     if results.sequences:
         out.append(convergence_figure(results))
     return [without_zeros(f) for f in out]

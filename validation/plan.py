@@ -13,8 +13,9 @@ inflated state, Fhat = 1 and near the end of the range: every law and fluid is
 cross-checked in both plans. The pockets pressed by a sphere (tag "sphere") get the P2
 column only (``Plan.columns_of``): the P2 FE model against shooting is the verdict under a
 curved indenter, and a P1 curve costs about five times a P2 one there; their forces include
-Fhat = 0.5, where the contact-pressure figure compares the two solvers. The
-report's timing table gives each task's seconds, to re-tune these numbers.
+Fhat = 0.5, where the contact-pressure figure compares the two solvers. Each law is
+fitted to FE bulge data (``Plan.fits``): Ogden with two terms by default (about 10 s of a
+worker), one term in ``--quick``. The report's timing table gives each task's seconds, to re-tune these numbers.
 
 A column is a solver of ``pocket.apps.solvers`` with options, checked by its
 record when the plan is built: the same checks as the command line's flags and
@@ -74,6 +75,7 @@ class Plan:
     convergence_sizes: element counts per order of the mesh-convergence study.
     fem_columns: the FE columns compared with the reference (shooting) on a pocket pressed by the plate.
     indenter_columns: those of a pocket pressed by a curved indenter.
+    fits: the laws (with their number of terms) fitted to FE bulge data (``identification``).
     """
 
     name: str
@@ -82,6 +84,7 @@ class Plan:
     convergence_sizes: dict
     fem_columns: tuple[Column, ...] = FEM_COLUMNS
     indenter_columns: tuple[Column, ...] = INDENTER_COLUMNS
+    fits: tuple[tuple[str, int], ...] = ()
 
     def fem_forces_of(self, pocket) -> tuple:
         """The FE forces of ``pocket`` (empty: no FE column for it in this plan)."""
@@ -101,6 +104,7 @@ DEFAULT = Plan(
     fem={"headline": (0.0, 0.05, 0.19, 0.5, 1.0, 2.0, 4.0, None), "fem": (0.0, 0.19, 1.0),
          "fem-range": (0.0, 0.19, 1.0, 4.0, None), "sphere": (0.19, 0.5, 1.0, None), "*": (0.0,)},
     convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
+    fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 2)),
 )
 
 QUICK = Plan(
@@ -108,4 +112,5 @@ QUICK = Plan(
     curve_points=20,
     fem={"headline": (0.0, 0.19, 1.0), "fem-range": (0.0, 1.0, None), "sphere": (0.5, None)},
     convergence_sizes={1: (32, 64, 128), 2: (16, 32, 64)},
+    fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 1)),
 )

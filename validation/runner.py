@@ -1,7 +1,8 @@
 """Run the validation suite: every solve on worker processes (one per usable CPU, at most 8), then the checks.
 
 The independent solves (a pocket's reference curves, its FE columns, the
-convergence sequences, the evidence about the paper) are tasks of a
+convergence sequences, the evidence about the paper, the fits of each law to FE
+bulge data) are tasks of a
 ``concurrent.futures.ProcessPoolExecutor``; an FE column waits for its pocket's
 reference, which finds the end of the range. The reference curves start first
 (headline first), the convergence sequences once no reference is pending. Any
@@ -29,7 +30,7 @@ from tqdm import tqdm
 from pocket.apps.provenance import cpus
 from pocket.apps.workers import local_executor, stop
 
-from . import compute, convergence, evidence, findings, verdicts
+from . import compute, convergence, evidence, findings, identification, verdicts
 from .plan import Plan
 from .suite import Button, headline
 
@@ -42,7 +43,7 @@ WORKERS = min(8, cpus())
 class Task:
     """One solve of a run and its wall time (in the worker)."""
 
-    kind: str  # "reference" | "column" | "convergence" | "evidence"
+    kind: str  # "reference" | "column" | "convergence" | "evidence" | "fit"
     case: str
     what: str
     seconds: float
@@ -57,6 +58,7 @@ class Results:
     columns: tuple  # compute.ColumnCurve, in pocket order then column order
     sequences: tuple  # convergence.Sequence
     evidence: evidence.Evidence | None
+    fits: tuple  # identification.Identification, in the plan's order
     checks: tuple  # verdicts.Check
     findings: tuple  # findings.Finding
     tasks: tuple  # Task, in order of submission
@@ -97,6 +99,8 @@ def _task(kind, key, pockets, args) -> Task:
     if kind == "convergence":
         _, study, order, mesh, sizes = args
         return Task(kind, args[0].case.name, f"{study} P{order} {mesh}, {len(sizes)} meshes", 0.0)
+    if kind == "fit":
+        return Task(kind, "", f"{args[0]} ({args[1]} terms) fitted to FE bulge data", 0.0)
     return Task(kind, "", "the paper's statements", 0.0)
 
 
@@ -111,7 +115,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
     bar = progress_bar(progress, label=label)
     main = headline(pockets)
     pending, tasks = {}, []  # future -> (kind, key, index into tasks)
-    done = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}}
+    done = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}}
 
     def submit(kind, key, function, *args):
         pending[pool.submit(_timed, function, *args)] = (kind, key, len(tasks))
@@ -124,6 +128,8 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
             for k in sorted(range(len(pockets)), key=lambda k: pockets[k] is not main):
                 submit("reference", k, compute.reference, pockets[k], plan)
             submit("evidence", None, evidence.collect, button)
+            for k, (law, terms) in enumerate(plan.fits):
+                submit("fit", k, identification.identify, law, terms)
         later = convergence_tasks(main, plan)
         while pending or later:
             if later and not any(kind == "reference" for kind, _, _ in pending.values()):
@@ -165,10 +171,12 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
         rows += verdicts.fem_checks(by_pocket[column.pocket], column)
         rows += verdicts.membrane_checks(column.pocket.case.name, column.column.label, column.states)
     rows += convergence.checks(sequences)
+    fits = tuple(done["fit"][k] for k in sorted(done["fit"]))
+    rows += identification.checks(fits)
     found = ()
     proof = done["evidence"].get(None)
     if proof is not None:
         head = by_pocket[headline(pockets)]
         found = tuple(findings.findings(button, proof, evidence.eq9_residuals(head.reference[0].inflated), head))
     return Results(plan=plan, pockets=pockets, button=button, curves=curves, columns=columns, sequences=sequences,
-                   evidence=proof, checks=tuple(rows), findings=found, tasks=tasks, seconds=seconds)
+                   evidence=proof, fits=fits, checks=tuple(rows), findings=found, tasks=tasks, seconds=seconds)

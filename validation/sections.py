@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from pocket.apps.provenance import environment
 
+from . import identification
 from .convergence import EXPECTED, FITTED_P2_FINEST, MESHES, RICHARDSON_FACTOR, richardson
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .figures import pocket_label
@@ -149,7 +150,7 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
                  "other pockets' lines carry dots of their colour, staggered so that curves lying on each other "
                  "all show.")]
     for fig in figs:
-        if fig.name != "convergence":
+        if fig.name not in ("convergence", "identification"):  # each in its own section
             out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
     out.append(("h", 2, "The pocket in 3-D"))
     if picture:
@@ -159,6 +160,25 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
     else:
         out.append(("p", f"No picture: {why}."))
     return out
+
+
+def _identification_blocks(results, figs) -> list:
+    header, rows = identification.rows(results.fits)
+    warned = [f"{f.label}: {w}" for f in results.fits for w in f.warnings]
+    caption = next(f.caption for f in figs if f.name == "identification")
+    return [("h", 2, "Identifying a rubber from its bulge test"),
+            ("p", f"pocket fit's library fits a law's parameters to a user's tests by least squares on the full "
+                  f"model. Here each law is fitted by the shooting model to {identification.POINTS} noise-free pole "
+                  f"heights of a known rubber (the truth, stresses in Pa: {identification.describe(results.fits)}) "
+                  f"computed by the P2 FE model at Phat = {identification.LOW:g} to {identification.HIGH:g}, "
+                  f"R = {identification.RADIUS * 1e3:g} mm, T = {identification.THICKNESS * 1e3:g} mm. The exact "
+                  f"answer is the truth; the tolerance is {TOLERANCES['fit'][0]:g}: {TOLERANCES['fit'][1]}. The "
+                  "verdicts are also in the table 'Verdicts' (comparison 'fit to FE data vs the truth'); each fit's "
+                  "seconds are in the timing table."),
+            ("table", header, rows),
+            ("p", "What the fits report the data do not determine (identifiability warnings): "
+                  + ("; ".join(warned) if warned else "nothing") + "."),
+            ("image", "identification.png", f"{caption} Data: identification.csv.")]
 
 
 def _pockets_blocks(results) -> list:
@@ -227,6 +247,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
         out += _figure_blocks(results, figs, picture, why) + _pockets_blocks(results)
     if results.findings:
         out += _findings_blocks(results)
+    if results.fits:
+        out += _identification_blocks(results, figs)
     if results.sequences:
         out += _convergence_blocks(results)
         out.append(("image", "convergence.png", "Error against element size (log-log), observed orders in the "

@@ -1,10 +1,10 @@
 r"""Identify a rubber law's parameters from a user's tests of the clamped sheet: least squares on the model.
 
-The unknowns are the law's keys not held fixed (``pocket.apps.fitkeys``), scaled so that the problem
-is well conditioned: x_k = value_k / s_k with s_k the start's mu_0 (times T: ``pocket.apps.fitmodel``)
-for a stress, max(|start value|, 1) for a number. scipy's ``least_squares`` (trust region
-reflective, within the keys' bounds) minimises (1/2) sum r_i(x)^2 over the residuals of
-``pocket.apps.fitmodel.residuals``.
+The unknowns are the coordinates of the law's keys not held fixed (``pocket.apps.fitkeys``: the values,
+Ogden's terms in their shares of mu_0), scaled so that the problem is well conditioned: x_k =
+coordinate_k / s_k with s_k the start's mu_0 (times T: ``pocket.apps.fitmodel``) for a stress,
+max(|start value|, 1) for a number. scipy's ``least_squares`` (trust region reflective, within the
+keys' bounds) minimises (1/2) sum r_i(x)^2 over the residuals of ``pocket.apps.fitmodel.residuals``.
 
 Jacobian. The solvers resolve their states to ~1e-10 relative, so J is taken by forward differences
 of step h = 1e-6 in x (truncation error O(h) ~ 1e-6, rounding O(1e-10 / h) ~ 1e-4 relative: ample
@@ -12,14 +12,18 @@ for a Gauss-Newton step and for the covariance). A forward step that leaves the 
 a trial set with a datum without state (a residual ``PENALTY``), is taken backward instead, so no
 derivative is ever taken across the penalty.
 
-Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every
-datum are ranked by cost. For the laws with many parameters (``PROBED``), the best ``RUNS`` each
-run ``_PROBE`` evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or
-Ogden start can lead into a valley or a local minimum where trust-region steps crawl) and the
-lowest of them runs on to convergence; the others run from their best start. Bounds make trf's
-steps short near them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result
-with any datum without state is never reported: if no start has all its states, or the run ends
-outside the model's range, the fit is a ``ConvergenceError`` saying so.
+Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every datum
+are ranked by cost. For the laws with many parameters (``PROBED``) and for a fitted prestretch (whose
+starts are each shape at several prestretches, ``PRESTRETCHES``), the best ``RUNS`` each run ``_PROBE``
+evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or Ogden start can lead
+into a valley or a local minimum where trust-region steps crawl) and the lowest of them runs on to
+convergence on all the data; the other laws run from their best start. The starts are ranked and probed on
+each test thinned to ``_SAMPLE`` rows spread over its range (a curve's shape, which decides the basin,
+shows in ten points; a 30-point bulge test costs a third), and each run is capped at
+``_MAX_EVALUATIONS`` evaluations (a fit that meets the cap says so). Bounds make trf's steps short near
+them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result with any datum without
+state is never reported: if no start has all its states, or the run ends outside the model's range, the
+fit is a ``ConvergenceError`` saying so.
 
 The statistics of the result are in ``pocket.apps.fitstats``.
 """
@@ -36,11 +40,11 @@ from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.materials import Material
 
 from . import fitstats
-from .fitkeys import Key, key_named, keys
+from .fitkeys import PRESTRETCH, Key, key_named, keys
 from .fitmodel import PENALTY, Setup, predict, residuals
 from .fitstart import starts
 
-__all__ = ["Fit", "fit", "RUNS", "PROBED"]
+__all__ = ["Fit", "fit", "RUNS", "PROBED", "PRESTRETCHES"]
 
 #: starts probed (the best by their cost), for the laws ``PROBED``
 RUNS = 4
@@ -50,6 +54,9 @@ _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring
 _TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
 _PROBE = 6  # evaluations each start runs before the best of them continues
+_SAMPLE = 10  # rows per test where starts are ranked and probed: enough to show a curve's shape and its basin
+#: the prestretches each start shape is tried at when the prestretch is fitted (a slack sheet to a taut one)
+PRESTRETCHES = (1.0, 1.05, 1.2)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -81,32 +88,56 @@ class _Problem:
         self.setup, self.base, self.free, self.scales, self.count = setup, base, free, scales, count
         self.lower = np.array([k.lower for k in free]) / scales
         self.upper = np.array([k.upper for k in free]) / scales
-        self._last: tuple[bytes, np.ndarray] | None = None
+        self._last: tuple[bytes, np.ndarray, list] | None = None  # the last evaluation: x, r, the model's values
+        self._jac: tuple[bytes, np.ndarray] | None = None  # the last Jacobian (least_squares' at its result)
 
     def x(self, material: Material) -> np.ndarray:
         """The scaled unknowns of ``material``."""
-        return np.array([k.get(material) for k in self.free]) / self.scales
+        return np.array([k.coordinate(material) for k in self.free]) / self.scales
 
     def material(self, x) -> Material:
         m = self.base
         for key, value in zip(self.free, np.asarray(x) * self.scales, strict=True):
-            m = key.put(m, value)
+            m = key.moved(m, value)
         return m
 
+    def gradient(self, x) -> np.ndarray:
+        """d(key values)/dx (p x p) at ``x``: diag(scales) where each key is its own coordinate, else by
+        central differences of the keys' values (the coordinates are smooth closed forms: error ~1e-10)."""
+        if all(k.unknown is None for k in self.free):
+            return np.diag(self.scales)
+        x = np.asarray(x, dtype=float)
+        out = np.empty((x.size, x.size))
+        for j in range(x.size):
+            step = np.zeros(x.size)
+            step[j] = 1e-6 * max(abs(x[j]), 1.0)
+            up, down = self.material(x + step), self.material(x - step)
+            out[:, j] = [(k.get(up) - k.get(down)) / (2.0 * step[j]) for k in self.free]
+        return out
+
     def __call__(self, x) -> np.ndarray:
+        return self.evaluate(x)[0]
+
+    def evaluate(self, x) -> tuple[np.ndarray, list]:
+        """The residuals at ``x`` and the model's values (``pocket.apps.fitmodel.predict``)."""
         x = np.asarray(x, dtype=float)
         if self._last is not None and self._last[0] == x.tobytes():
-            return self._last[1]
-        values, calls = predict(self.setup, self.material(x))
+            return self._last[1], self._last[2]
+        try:
+            values, calls = predict(self.setup, self.material(x))
+        except InputError:  # a Gent prestretch past the trial Jm's locking: outside the admissible set
+            values, calls = predict(self.setup, None), 0
         r = residuals(self.setup, values)
         self.count["calls"] += calls
         self.count["penalised"] += bool(np.any(r == PENALTY))
-        self._last = (x.tobytes(), r)
-        return r
+        self._last = (x.tobytes(), r, values)
+        return r, values
 
     def jacobian(self, x) -> np.ndarray:
         x = np.asarray(x, dtype=float)
-        r0 = self(x)
+        if self._jac is not None and self._jac[0] == x.tobytes():
+            return self._jac[1]
+        r0, values = self.evaluate(x)
         jac = np.empty((r0.size, x.size))
         for k in range(x.size):
             for h in (_STEP, -_STEP):
@@ -121,7 +152,7 @@ class _Problem:
                 raise ConvergenceError(f"the fit's Jacobian: {self.free[k].name} can be moved neither up nor down "
                                        "by a relative 1e-6 without leaving the model's range")
             jac[:, k] = (r - r0) / h
-        self._last = (x.tobytes(), r0)
+        self._last, self._jac = (x.tobytes(), r0, values), (x.tobytes(), jac)
         return jac
 
 
@@ -131,29 +162,46 @@ def _fixed_material(material: Material, fixed: dict, all_keys) -> Material:
     return material
 
 
-def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, start: dict | None = None) -> Fit:
+def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, start: dict | None = None,
+        prestretch: bool = False) -> Fit:
     """Fit ``law`` (``terms`` terms for Ogden) to ``setup``'s data (``pocket.apps.fitmodel.Setup``).
 
     ``fixed``: key -> value held (stresses in the setup's unit); ``start``: key -> value that replaces
-    the start's (for every start). Raises InputError for fewer data than unknowns + 1 (before any
-    solve), ConvergenceError if no start or no result has a state for every datum.
+    the start's (for every start). The clamped sheet's prestretch (key ``prestretch``) is held at 1, or
+    at its value in ``fixed``, unless ``prestretch`` asks to fit it. Raises InputError for fewer data than
+    unknowns + 1 (before any solve), ConvergenceError if no start or no result has a state for every datum.
     """
     clock = time.perf_counter()
     fixed, start = dict(fixed or {}), dict(start or {})
     all_keys = keys(law, terms)
     for name in (*fixed, *start):
         key_named(all_keys, name, "--fix" if name in fixed else "start")
-    free = [k for k in all_keys if k.name not in fixed]
+    if prestretch and PRESTRETCH in fixed:
+        raise InputError(f"--fix {PRESTRETCH}={fixed[PRESTRETCH]!r} holds the prestretch that --fit-prestretch "
+                         "asks to fit: give one of them")
+    if PRESTRETCH in fixed and not fixed[PRESTRETCH] >= 1.0:
+        raise InputError(f"--fix {PRESTRETCH} = {fixed[PRESTRETCH]!r}, but a prestretch of the clamped sheet "
+                         "must be >= 1")
+    free = [k for k in all_keys if k.name not in fixed and (prestretch or k.name != PRESTRETCH)]
     if not free:
         raise InputError("--fix holds every parameter of the law: there is nothing left to fit")
     if setup.count <= len(free):
         raise InputError(f"{setup.count} data, but fitting {len(free)} parameters ({', '.join(k.name for k in free)}) "
                          f"needs at least {len(free) + 1}")
+    prestretches = (fixed[PRESTRETCH],) if PRESTRETCH in fixed else (start[PRESTRETCH],) if PRESTRETCH in start \
+        else PRESTRETCHES if prestretch else (1.0,)
+    probed = law in PROBED or prestretch
     ranked, count, tried = [], {"calls": 0, "penalised": 0}, 0
-    for shape in starts(setup, law, terms):
+    sample = _thinned(setup) if probed else setup  # where the starts are ranked and probed
+    for shape in starts(setup, law, terms, prestretches):
         for material in shape:
-            material = _fixed_material(_fixed_material(material, start, all_keys), fixed, all_keys)
-            problem = _problem(setup, material, free, count)
+            try:
+                material = _fixed_material(_fixed_material(material, start, all_keys), fixed, all_keys)
+            except InputError:  # a Gent start whose Jm the held prestretch exceeds: not a start
+                continue
+            if any(material == seen for _, seen in ranked):  # shapes made one by the values given
+                break
+            problem = _problem(sample, material, free, count)
             r = problem(problem.x(material))
             tried += 1
             if not np.any(r == PENALTY):
@@ -165,29 +213,41 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     ranked.sort(key=lambda pair: pair[0])
     count["penalised"] = 0  # from here on: trial sets of the runs (a start without all states is just skipped)
     probes = []
-    for _, material in ranked[:RUNS if law in PROBED else 1]:  # each start a few steps, where its basin shows
-        problem = _problem(setup, material, free, count)
-        x = _run(problem, problem.x(material), _PROBE if law in PROBED else _MAX_EVALUATIONS)[0]
+    for _, material in ranked[:RUNS if probed else 1]:  # each start a few steps, where its basin shows
+        problem = _problem(sample, material, free, count)
+        x, status, evaluations = _run(problem, problem.x(material), _PROBE if probed else _MAX_EVALUATIONS)
         r = problem(x)
         if not np.any(r == PENALTY):
-            probes.append((float(r @ r), x, problem))
+            probes.append((float(r @ r), x, problem, status, evaluations))
     if not probes:
         raise ConvergenceError(f"the {law} fit ended outside the model's range from every start")
-    _, x, problem = min(probes, key=lambda probe: probe[0])
-    x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS) if law in PROBED else (x, 1, 0)
-    r = problem(x)
+    _, x, problem, status, evaluations = min(probes, key=lambda probe: probe[0])
+    if probed:  # the best probe runs on, on all the data
+        problem = _Problem(setup, problem.base, problem.free, problem.scales, count)
+        x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS)
+    r, values = problem.evaluate(x)
     if np.any(r == PENALTY):
         raise ConvergenceError(f"the {law} fit ended outside the model's range")
     notes = [] if status > 0 else [f"the fit stopped after {evaluations} evaluations without meeting its "
                                    "tolerances: the parameters may be ill-determined"]
     jac = problem.jacobian(x)
     material = problem.material(x)
-    values, calls = predict(setup, material)
-    stats = fitstats.statistics(setup, material, free, x, problem.scales, r, jac)
+    stats = fitstats.statistics(setup, material, free, problem.gradient(x), r, jac)
     if notes:
         stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
-    return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"] + calls,
+    return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"],
                time.perf_counter() - clock, tried, count["penalised"])
+
+
+def _thinned(setup: Setup) -> Setup:
+    """``setup`` with each test thinned to at most ``_SAMPLE`` rows spread over its range (first and last kept)."""
+    tests = []
+    for test in setup.tests:
+        n = test.control.size
+        keep = np.unique(np.round(np.linspace(0, n - 1, min(n, _SAMPLE))).astype(int))
+        tests.append(dataclasses.replace(test, control=test.control[keep],
+                                         responses={k: v[keep] for k, v in test.responses.items()}))
+    return dataclasses.replace(setup, tests=tuple(tests))
 
 
 def _run(problem: _Problem, x, budget: int) -> tuple[np.ndarray, int, int]:
@@ -203,7 +263,7 @@ def _run(problem: _Problem, x, budget: int) -> tuple[np.ndarray, int, int]:
 
 def _problem(setup: Setup, material: Material, free: list[Key], count: dict) -> _Problem:
     mu0 = abs(material.mu0)
-    scales = np.array([mu0 if k.unit == "stress" else max(abs(k.get(material)), 1.0) for k in free])
+    scales = np.array([mu0 if k.unit == "stress" else max(abs(k.coordinate(material)), 1.0) for k in free])
     if not np.all(np.isfinite(scales)) or not np.all(scales > 0.0) or not math.isfinite(mu0):
         raise ConvergenceError("the fit's start has no finite positive mu_0")
     return _Problem(setup, material, free, scales, count)

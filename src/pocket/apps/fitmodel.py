@@ -8,8 +8,10 @@ and the shape of the law (its stresses divided by mu_0). So a material here hold
 Pa when the thickness T is known, and the products stress * T in N/m when it is not (``Setup.scale``
 is then 1 m): the same numbers enter the model either way.
 
-Each datum is solved by the chosen solver (``pocket.apps.solvers``): an inflation test's pressures one
-by one (first branch), a compression test's forces as one curve (continuation). A datum the model
+Each datum is solved by the chosen solver (``pocket.apps.solvers``): an inflation test's pressures as one
+march along the first branch where the solver serves ``inflation_curve`` (else, and where that march
+fails or meets a pressure above the maximum, one by one), a compression test's forces as one curve
+(continuation). A datum the model
 has no state for at this trial set (``OutOfRangeError``: a pressure above the first branch's
 maximum, a force past the end of the range, a rubber that locks first; or a ``ConvergenceError``)
 gets NaN; so do all data of a trial set outside the law's admissible set. Pressures of an inflation
@@ -75,18 +77,30 @@ class Setup:
 
 
 def _inflation(setup: Setup, test: Dataset, material: Material, tension: float, calls: list) -> dict:
-    inflate = entry(record(setup.solver), "inflate", "an inflation test's data")
+    solver = record(setup.solver)
+    pressures = [float(p) * setup.radius / tension for p in test.control]
     out = {name: np.full(test.control.shape, math.nan) for name in test.responses}
-    for i, pressure in enumerate(test.control):
+    states: list = []
+    if solver.serves("inflation_curve"):
         calls[0] += 1
         try:
-            state = inflate(material, pressure * setup.radius / tension, **setup.options)
-        except OutOfRangeError:
-            break  # the pressures increase: the higher ones are above the maximum too
-        except ConvergenceError:
-            continue
+            states = entry(solver, "inflation_curve", "an inflation test's data")(material, pressures, **setup.options)
+        except _MISSED:  # a pressure above the maximum, or a failed march: each pressure on its own
+            states = []
+    if not states:
+        inflate = entry(solver, "inflate", "an inflation test's data")
+        for pressure in pressures:
+            calls[0] += 1
+            try:
+                states.append(inflate(material, pressure, **setup.options))
+            except OutOfRangeError:
+                break  # the pressures increase: the higher ones are above the maximum too
+            except ConvergenceError:
+                states.append(None)
+    for i, state in enumerate(states):
         for name in out:
-            out[name][i] = state.height * setup.radius if name == "height" else state.volume * setup.radius**3
+            if state is not None:
+                out[name][i] = state.height * setup.radius if name == "height" else state.volume * setup.radius**3
     return out
 
 
@@ -128,11 +142,15 @@ def _compression(setup: Setup, test: Dataset, material: Material, tension: float
     return out
 
 
-def predict(setup: Setup, material: Material) -> tuple[list[dict], int]:
+def predict(setup: Setup, material: Material | None) -> tuple[list[dict], int]:
     """The model's value at each datum (per test, column name -> SI array of the test's shape, NaN where the
-    model has no state) for ``material`` (its stresses in the setup's unit), and the number of solver calls."""
+    model has no state) for ``material`` (its stresses in the setup's unit; None: a trial set outside the
+    law's admissible set), and the number of solver calls (entry points called: an inflation test marched as one
+    curve is one call)."""
     calls = [0]
     try:
+        if material is None:
+            raise InputError("outside the admissible set")
         check(material.law, {n: list(v) if isinstance(v, tuple) else v for n, v in material.params})
     except InputError:  # outside the law's admissible set: no state anywhere
         return [{n: np.full(t.control.shape, math.nan) for n in t.responses} for t in setup.tests], 0

@@ -30,7 +30,7 @@ KIND = "fit result"
 NOMINAL_THICKNESS = 1e-3
 FIGURE, CASE = "fit.png", "fitted.toml"
 _CURVE = 60  # points of a fitted curve in the figure
-_SI = {"pressure": ("Pa", 1.0), "height": ("mm", 1e3), "volume": ("mL", 1e6), "force": ("N", 1.0)}
+_SI = {"pressure": ("kPa", 1e-3), "height": ("mm", 1e3), "volume": ("mL", 1e6), "force": ("N", 1.0)}
 
 
 def _unit(fit: Fit, key: str) -> str:
@@ -108,6 +108,8 @@ def case_text(fit: Fit) -> str:
             lines.append(f"{name} = [{', '.join(cells)}]")
         else:
             lines.append(f"{name} = {_quantity(value * factor, 'Pa') if name in stresses else f'{value:.10g}'}")
+    if material.prestretch != 1.0:
+        lines.append(f"prestretch = {material.prestretch:.10g}")
     lines += ["[clamp]", f"radius = {_quantity(setup.radius, 'm')}", "[initial]",
               f"pressure = {_quantity(pressure, 'Pa')}", "[loads]",
               f"forces = [{', '.join(_quantity(f, 'N') for f in forces)}]"]
@@ -161,10 +163,10 @@ def figure(fit: Fit, path: pathlib.Path) -> None:
         bottom.axhline(0.0, color="0.6", lw=0.8)
         bottom.plot(test.control[keep] * cf, r, "o", ms=3)
         bottom.set_xlabel(f"{control} [{cu}]")
-        bottom.set_ylabel("residual" if name not in fit.setup.sigma else "residual / sigma")
+        bottom.set_ylabel("model / data - 1" if name not in fit.setup.sigma else "(model - data) / sigma")
     fig.suptitle(f"{fit.material.law} fit: residual RMS {fit.statistics.rms:.3g}", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
 
 

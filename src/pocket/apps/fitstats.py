@@ -1,16 +1,18 @@
 r"""What a fit's data determine: standard errors, correlations, intervals and identifiability warnings.
 
-At the solution x (the scaled unknowns, x_k = value_k / s_k) with residuals r (n of them) and
+At the solution x (the scaled unknowns, x_k = coordinate_k / s_k) with residuals r (n of them) and
 Jacobian J = dr/dx (n x p), the linearised model gives, for residuals with a common unknown variance
 sigma^2 (relative residuals, or residuals in units of the stated uncertainties),
 
     s^2 = RSS / (n - p),   RSS = r . r,
-    Cov(x) = s^2 (J^T J)^-1,   Cov(value) = D Cov(x) D,   D = diag(s_k),
+    Cov(x) = s^2 (J^T J)^-1,   Cov(value) = G Cov(x) G^T,   G = d value / dx
 
-(the pseudo-inverse by SVD, so a rank-deficient J gives infinite-looking but finite numbers rather
-than an error), standard errors SE_k = sqrt(Cov_kk), correlations Cov_kl / (SE_k SE_l) and 95 %
-intervals value_k +- t_{0.975, n-p} SE_k (Student's t: s^2 is estimated from the same n - p degrees of
-freedom). mu_0 = mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov grad(mu_0).
+(G = diag(s_k) where each key is its own coordinate, Ogden's: ``pocket.apps.fitkeys``; the pseudo-
+inverse by SVD, so a rank-deficient J gives infinite-looking but finite numbers rather than an
+error), standard errors SE_k = sqrt(Cov_kk), correlations Cov_kl / (SE_k SE_l) and 95 % intervals
+value_k +- t_{0.975, n-p} SE_k (Student's t: s^2 is estimated from the same n - p degrees of
+freedom). mu_0 = mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov
+grad(mu_0).
 
 Identifiability. Non-uniqueness is real for these laws (Ogden, Saccomandi and Sgura, 2004): a
 parameter whose SE exceeds |value| is not determined, and two parameters correlated beyond
@@ -57,23 +59,25 @@ class Statistics:
     warnings: tuple[str, ...]
 
 
-def statistics(setup, material: Material, free, x, scales, r, jac) -> Statistics:
-    """The statistics (module docstring) of ``material``, the fit at scaled unknowns ``x`` (keys ``free``,
-    ``scales`` s_k) with residuals ``r`` (n,) and Jacobian ``jac`` (n x p) in x."""
-    from scipy.stats import t as student
+def statistics(setup, material: Material, free, gradient, r, jac) -> Statistics:
+    """The statistics (module docstring) of ``material``, the fit of keys ``free`` at scaled unknowns x with
+    residuals ``r`` (n,), Jacobian ``jac`` = dr/dx (n x p) and ``gradient`` G = d(key values)/dx (p x p)."""
+    from scipy.special import stdtrit  # Student's t quantile; scipy.stats would add a second to a fit's start
 
     n, p = jac.shape
     dof = n - p
     s2 = float(r @ r) / dof
-    cov = np.diag(scales) @ (s2 * np.linalg.pinv(jac.T @ jac)) @ np.diag(scales)
+    cov = gradient @ (s2 * np.linalg.pinv(jac.T @ jac)) @ gradient.T
     se = np.sqrt(np.maximum(np.diag(cov), 0.0))
     with np.errstate(invalid="ignore", divide="ignore"):
         corr = np.where(np.outer(se, se) > 0.0, cov / np.outer(se, se), 0.0)
     np.fill_diagonal(corr, 1.0)
     values = np.array([k.get(material) for k in free])
-    half = student.ppf(0.5 + 0.5 * _LEVEL, dof) * se
+    half = stdtrit(dof, 0.5 + 0.5 * _LEVEL) * se
+    steps = [1e-6 * max(abs(v), abs(material.mu0) if k.unit == "stress" else 1.0)
+             for k, v in zip(free, values, strict=True)]
     grad = np.array([(k.put(material, v + h).mu0 - material.mu0) / h
-                     for k, v, h in zip(free, values, 1e-6 * scales, strict=True)])
+                     for k, v, h in zip(free, values, steps, strict=True)])
     mu0_error = math.sqrt(max(float(grad @ cov @ grad), 0.0))
     names = tuple(k.name for k in free)
     warnings = _warnings(names, values, se, cov, corr)

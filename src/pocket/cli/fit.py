@@ -1,11 +1,12 @@
-"""``pocket fit DATA.csv [DATA2.csv ...] --law LAW --radius R [--thickness T]``: a law's parameters from tests."""
+"""``pocket fit DATA.csv [DATA2.csv ...] --law LAW --radius R [--thickness T]`` or ``pocket fit CASE.toml``: a
+law's parameters from tests."""
 
 from __future__ import annotations
 
 import json
+import pathlib
 import sys
 
-from pocket.apps.fitdata import QUANTITIES
 from pocket.core.errors import InputError
 from pocket.core.inputs import quote
 from pocket.core.materials import LAWS
@@ -25,60 +26,45 @@ def _pairs(values, flag: str) -> dict:
     return out
 
 
-def _fixed(args, thickness) -> dict:
-    """--fix KEY=VALUE: stresses with a unit (they need --thickness), numbers plain."""
-    from pocket.apps.fitkeys import key_named, keys
-    from pocket.core.units import quantity
-
-    all_keys = keys(args.law, args.terms)
-    out = {}
-    for name, text in _pairs(args.fix, "--fix").items():
-        key = key_named(all_keys, name, "--fix")
-        if key.unit == "stress":
-            if thickness is None:
-                raise InputError(f"--fix {name}={text}: a stress can be held only with --thickness (without it the "
-                                 "fit works with stress * T)")
-            out[name] = quantity(f"--fix {name}", text, "pressure")
-        else:
-            try:
-                out[name] = float(text)
-            except ValueError:
-                raise InputError(f"--fix {name} = {quote(text)} is not a number") from None
-    return out
+#: the flags a case file's tables replace, with the table that gives each
+_CASE_GIVES = {"law": "sheet.material", "radius": "clamp.radius", "thickness": "sheet.thickness",
+               "initial_pressure": "initial.pressure", "terms": "fit.terms", "fix": "fit.fix", "sigma": "fit.sigma",
+               "fit_prestretch": "fit.prestretch", "solver": "solver.name"}
 
 
-def _sigma(args) -> dict:
+def _request(args):
+    """What the user asks (``pocket.apps.fitcase.Request``): from a case file, or from the flags."""
+    from pocket.apps.fitcase import Request, held, load, uncertainties
+    from pocket.apps.rubbers import DEFAULT_LAW
     from pocket.core.units import positive
 
-    out = {}
-    for name, text in _pairs(args.sigma, "--sigma").items():
-        if name not in QUANTITIES:
-            raise InputError(f"--sigma {name}: not a column of test data ({', '.join(QUANTITIES)})")
-        out[name] = positive(f"--sigma {name}", text, QUANTITIES[name])
-    return out
-
-
-def _main(args) -> int:
-    import pathlib
-
-    from pocket.apps.fit import fit
-    from pocket.apps.fitdata import read
-    from pocket.apps.fitmodel import Setup
-    from pocket.apps.fitreport import KIND, summary, write
-    from pocket.apps.folders import check_replaceable
-    from pocket.core.units import positive
-
-    radius = positive("--radius", args.radius, "length")
+    if len(args.data) == 1 and args.data[0].endswith(".toml"):
+        for name, key in _CASE_GIVES.items():
+            if getattr(args, name) not in (None, False):
+                flag = "--" + name.replace("_", "-")
+                raise InputError(f"{flag}: the case file {args.data[0]} sets up the fit: give it there ({key})")
+        return load(args.data[0])
+    if args.radius is None:
+        raise InputError("--radius is missing: the fit needs the clamp radius (or a case file with a [fit] table)")
+    law, terms = args.law or DEFAULT_LAW, 1 if args.terms is None else args.terms
     thickness = None if args.thickness is None else positive("--thickness", args.thickness, "length")
     initial = None if args.initial_pressure is None else positive("--initial-pressure", args.initial_pressure,
                                                                   "pressure")
-    fixed, sigma = _fixed(args, thickness), _sigma(args)
-    tests = tuple(read(path, initial) for path in args.data)
-    for name in sigma:
-        if not any(name in t.responses for t in tests):
-            raise InputError(f"--sigma {name}: no test has {name} data")
+    return Request(tuple(pathlib.Path(p) for p in args.data), law, positive("--radius", args.radius, "length"),
+                   thickness, initial, terms, held(law, terms, _pairs(args.fix, "--fix"), thickness, "--fix"),
+                   uncertainties(_pairs(args.sigma, "--sigma"), "--sigma"), args.fit_prestretch,
+                   args.solver or "shooting")
+
+
+def _main(args) -> int:
+    from pocket.apps.fit import fit
+    from pocket.apps.fitreport import KIND, summary, write
+    from pocket.apps.folders import check_replaceable
+
+    request = _request(args)
+    setup = request.setup()
     target = None if args.out is None else check_replaceable(pathlib.Path(args.out), KIND, "--out")
-    result = fit(Setup(tests, radius, thickness, args.solver, {}, sigma), args.law, terms=args.terms, fixed=fixed)
+    result = fit(setup, request.law, terms=request.terms, fixed=request.fixed, prestretch=request.prestretch)
     if target is not None:
         write(result, target)
     out = summary(result)
@@ -89,8 +75,8 @@ def _main(args) -> int:
         return 0
     print(f"# {out['law']} fitted to {out['data']} data ({', '.join(out['files'])}), solver {out['solver']}: "
           f"{out['solver_calls']} solver calls, {out['seconds']:.2f} s")
-    if not thickness:
-        print("# no --thickness: the membrane model sees the rubber only through mu_0 T, so stresses are given "
+    if not request.thickness:
+        print("# no thickness: the membrane model sees the rubber only through mu_0 T, so stresses are given "
               "times T (N/m)")
     print(f"{'key':>14}  {'value':>14}  {'std. error':>11}  {'95 % interval':>31}  unit")
     for name, p in out["parameters"].items():
@@ -118,17 +104,23 @@ def register(subparsers) -> None:
         "units of a column's --sigma. Reports each parameter with its standard error (from the Jacobian and the "
         "residual variance), 95 %% interval, the correlations and warnings where the data do not determine a "
         "parameter.")
-    p.add_argument("data", nargs="+", metavar="DATA.csv", help="test data files")
-    p.add_argument("--law", choices=tuple(LAWS), default="mooney-rivlin", help="the law to fit")
-    p.add_argument("--radius", required=True, help="clamp radius R, e.g. '20 mm'")
+    p.add_argument("data", nargs="+", metavar="DATA.csv",
+                   help="test data files, or one case file (CASE.toml) whose [fit] table names them and whose "
+                   "[sheet], [clamp], [initial] and [solver] replace the flags")
+    p.add_argument("--law", choices=tuple(LAWS), help="the law to fit (default mooney-rivlin)")
+    p.add_argument("--radius", help="clamp radius R, e.g. '20 mm' (required without a case file)")
     p.add_argument("--thickness", help="sheet thickness T, e.g. '1 mm' (without it: stresses times T, N/m)")
     p.add_argument("--initial-pressure", help="initial pressure P_I of the compression tests, e.g. '5 kPa'")
-    p.add_argument("--terms", type=int, default=1, help="Ogden terms (1 to 3; default 1)")
+    p.add_argument("--terms", type=int, help="Ogden terms (1 to 3; default 1)")
     p.add_argument("--fix", action="append", metavar="KEY=VALUE",
-                   help="hold a parameter: a stress with a unit ('c1=160 kPa'), a number plain ('jm=10')")
+                   help="hold a parameter: a stress with a unit ('c1=160 kPa'), a number plain ('jm=10', "
+                   "'prestretch=1.1')")
+    p.add_argument("--fit-prestretch", action="store_true",
+                   help="also fit the equibiaxial prestretch of the clamped sheet (key prestretch; otherwise "
+                   "held at 1, or at its --fix value)")
     p.add_argument("--sigma", action="append", metavar="COLUMN=VALUE",
                    help="a column's measurement uncertainty ('height=0.01 mm'): its residuals in units of it")
-    p.add_argument("--solver", choices=("shooting", "fem"), default="shooting", help="the model's solver")
+    p.add_argument("--solver", choices=("shooting", "fem"), help="the model's solver (default shooting)")
     p.add_argument("--json", action="store_true", help="print the result as one JSON object")
     p.add_argument("--out", metavar="DIR", help="also write DIR/fit.png (data, fitted curve, residuals) and "
                    "DIR/fitted.toml (the fitted sheet, for pocket run)")

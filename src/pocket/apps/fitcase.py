@@ -1,0 +1,197 @@
+"""What a user asks a fit: from the command line's flags or from a case file with a ``[fit]`` table.
+
+A case file names the data instead of the flags (TOML, read as ``pocket.apps.cases`` reads a case):
+
+    [sheet]
+    material = "yeoh"                    # the law to fit (default mooney-rivlin)
+    thickness = "1 mm"                   # optional: without it stresses are fitted times T (N/m)
+    # prestretch = 1.1                   # optional: held at this value (default 1)
+    [clamp]
+    radius = "20 mm"
+    [initial]                            # optional: the initial pressure of the compression tests
+    pressure = "5 kPa"
+    [fit]
+    data = ["bulge.csv", "press.csv"]    # the tests, relative to the case file's folder
+    terms = 2                            # optional: Ogden's terms (default 1)
+    fix = {c30 = "0 kPa"}                # optional: parameters held, named and written as --fix takes them
+    sigma = {height = "0.02 mm"}         # optional: a column's measurement uncertainty, as --sigma
+    prestretch = true                    # optional: also fit the prestretch (default false)
+    [solver]                             # optional: "shooting" (default) or "fem"
+    name = "fem"
+
+The law's parameters are what the fit finds, so ``[sheet]`` names none (``[fit] fix`` holds some).
+Every problem is a one-line ``InputError`` naming the key, before any file of data is read; a case
+file without ``[fit]`` says that ``pocket fit`` needs one.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import pathlib
+from collections.abc import Callable
+
+from pocket.core.errors import InputError
+from pocket.core.inputs import quote
+from pocket.core.units import positive, quantity
+
+from .fitdata import QUANTITIES, read
+from .fitkeys import PRESTRETCH, key_named, keys
+from .fitmodel import Setup
+from .fitstart import MAX_TERMS
+from .rubbers import DEFAULT_LAW, law_name
+from .tomlfiles import read_toml
+
+__all__ = ["Request", "held", "uncertainties", "load", "parse"]
+
+_SECTIONS = {"name": None, "label": None, "sheet": ("material", "thickness", "prestretch"), "clamp": ("radius",),
+             "initial": ("pressure",), "fit": ("data", "terms", "fix", "sigma", "prestretch"), "solver": ("name",)}
+_SOLVERS = ("shooting", "fem")
+
+
+@dataclasses.dataclass(frozen=True)
+class Request:
+    """A fit asked for: the ``data`` files, the ``law`` with its Ogden ``terms``, the clamp ``radius`` (m), the
+    sheet's ``thickness`` (m, or None), the compression tests' ``initial_pressure`` (Pa, or None: each test's
+    zero-force row), the keys held (``fixed``: name -> value, stresses in Pa), the columns' stated uncertainties
+    (``sigma``: column -> SI value), whether to fit the ``prestretch``, and the ``solver`` by name."""
+
+    data: tuple[pathlib.Path, ...]
+    law: str = DEFAULT_LAW
+    radius: float = 0.0
+    thickness: float | None = None
+    initial_pressure: float | None = None
+    terms: int = 1
+    fixed: dict = dataclasses.field(default_factory=dict)
+    sigma: dict = dataclasses.field(default_factory=dict)
+    prestretch: bool = False
+    solver: str = "shooting"
+
+    def setup(self) -> Setup:
+        """The tests read (``pocket.apps.fitdata.read``; bad data is an InputError) and what the fit compares."""
+        tests = tuple(read(path, self.initial_pressure) for path in self.data)
+        for name in self.sigma:
+            if not any(name in t.responses for t in tests):
+                raise InputError(f"an uncertainty for {name} is stated, but no test has {name} data")
+        return Setup(tests, self.radius, self.thickness, self.solver, {}, self.sigma)
+
+
+def _spelling(flag: str) -> Callable[[str], str]:
+    """How a key under ``flag`` is named in errors: ``--fix c1`` on the command line, ``fit.fix.c1`` in a file."""
+    return (lambda name: f"{flag} {name}") if flag.startswith("--") else (lambda name: f"{flag}.{name}")
+
+
+def held(law: str, terms: int, given: dict, thickness: float | None, flag: str) -> dict:
+    """The keys of ``given`` (key name -> value as written: a stress with its unit, a number plain) in SI, each
+    checked against the law's keys; ``flag`` names them in errors (``--fix``, ``fit.fix``)."""
+    all_keys, spell = keys(law, terms), _spelling(flag)
+    out = {}
+    for name, value in given.items():
+        key = key_named(all_keys, name, flag)
+        if key.unit == "stress":
+            if thickness is None:
+                raise InputError(f"{spell(name)} = {quote(value)}: a stress can be held only with a thickness "
+                                 "(without it the fit works with stress * T)")
+            out[name] = quantity(spell(name), value, "pressure")
+        elif isinstance(value, bool) or not isinstance(value, (int, float, str)):
+            raise InputError(f"{spell(name)} = {quote(value)} is not a number")
+        else:
+            try:
+                out[name] = float(value)
+            except ValueError:
+                raise InputError(f"{spell(name)} = {quote(value)} is not a number") from None
+    return out
+
+
+def uncertainties(given: dict, flag: str) -> dict:
+    """The columns' stated uncertainties of ``given`` (column -> value with its unit) in SI; ``flag`` names them
+    in errors (``--sigma``, ``fit.sigma``)."""
+    out, spell = {}, _spelling(flag)
+    for name, value in given.items():
+        if name not in QUANTITIES:
+            raise InputError(f"{spell(name)}: not a column of test data ({', '.join(QUANTITIES)})")
+        out[name] = positive(spell(name), value, QUANTITIES[name])
+    return out
+
+
+def _table(data: dict, section: str, where: str, required: bool = True) -> dict:
+    if section not in data:
+        if required:
+            raise InputError(f"{where}: missing table [{section}]" if section != "fit" else
+                             f"{where}: no [fit] table, so no data to fit: name the tests in it "
+                             "(data = [\"bulge.csv\"]) or give the CSV files and --radius on the command line")
+        return {}
+    table = data[section]
+    if not isinstance(table, dict):
+        raise InputError(f"{where}: '{section}' must be a table ([{section}]), got {quote(table)}")
+    return table
+
+
+def _keys(data: dict, where: str) -> None:
+    for section, value in data.items():
+        if section not in _SECTIONS:
+            raise InputError(f"{where}: '{section}' is not a key of a fit's case file (known: {', '.join(_SECTIONS)})")
+        allowed = _SECTIONS[section]
+        for key in value if allowed is not None and isinstance(value, dict) else ():
+            if key not in allowed:
+                hint = " (the fit finds the law's parameters: hold one with [fit] fix)" if section == "sheet" else ""
+                raise InputError(f"{where}: unknown key '{section}.{key}' (known: {', '.join(allowed)}){hint}")
+
+
+def _data(table: dict, base: pathlib.Path) -> tuple[pathlib.Path, ...]:
+    files = table.get("data")
+    if not isinstance(files, list) or not files or not all(isinstance(f, str) and f for f in files):
+        raise InputError(f"fit.data = {quote(files)}, but it must be a non-empty list of CSV file names")
+    return tuple(base / f for f in files)
+
+
+def _terms(table: dict) -> int:
+    terms = table.get("terms", 1)
+    if isinstance(terms, bool) or not isinstance(terms, int) or not 1 <= terms <= MAX_TERMS:
+        raise InputError(f"fit.terms = {quote(terms)}, but it must be a whole number from 1 to {MAX_TERMS}")
+    return terms
+
+
+def _mapping(table: dict, key: str) -> dict:
+    value = table.get(key, {})
+    if not isinstance(value, dict):
+        raise InputError(f"fit.{key} = {quote(value)}, but it must be a table ({key} = {{name = value}})")
+    return value
+
+
+def parse(data: dict, where: str = "case", base=None) -> Request:
+    """The ``Request`` of the case table ``data`` (module docstring); ``base`` the folder the data files are
+    relative to (the case file's; by default the current folder)."""
+    if not isinstance(data, dict):
+        raise InputError(f"{where}: a case must be a table, got {quote(data)}")
+    fit_table = _table(data, "fit", where)
+    _keys(data, where)
+    sheet = _table(data, "sheet", where, required=False)
+    law = law_name(sheet.get("material", DEFAULT_LAW))
+    thickness = positive("sheet.thickness", sheet["thickness"], "length") if "thickness" in sheet else None
+    clamp = _table(data, "clamp", where)
+    if "radius" not in clamp:
+        raise InputError(f"{where}: missing key 'clamp.radius'")
+    radius = positive("clamp.radius", clamp["radius"], "length")
+    initial = _table(data, "initial", where, required=False)
+    pressure = positive("initial.pressure", initial["pressure"], "pressure") if "pressure" in initial else None
+    terms = _terms(fit_table)
+    fixed = held(law, terms, _mapping(fit_table, "fix"), thickness, "fit.fix")
+    fit_prestretch = fit_table.get("prestretch", False)
+    if not isinstance(fit_prestretch, bool):
+        raise InputError(f"fit.prestretch = {quote(fit_prestretch)}, but it must be true or false")
+    if "prestretch" in sheet:
+        if fit_prestretch or PRESTRETCH in fixed:
+            raise InputError(f"sheet.prestretch = {quote(sheet['prestretch'])} holds the prestretch that "
+                             f"{'fit.prestretch fits' if fit_prestretch else 'fit.fix holds too'}: give one of them")
+        fixed[PRESTRETCH] = held(law, terms, {PRESTRETCH: sheet["prestretch"]}, thickness, "sheet")[PRESTRETCH]
+    solver = _table(data, "solver", where, required=False).get("name", "shooting")
+    if solver not in _SOLVERS:
+        raise InputError(f"solver.name = {quote(solver)}, but a fit's solver is one of {', '.join(_SOLVERS)}")
+    return Request(_data(fit_table, pathlib.Path(base or ".")), law, radius, thickness, pressure, terms, fixed,
+                   uncertainties(_mapping(fit_table, "sigma"), "fit.sigma"), fit_prestretch,
+                   solver)
+
+
+def load(path) -> Request:
+    """Read and check the case file ``path`` (data files relative to its folder)."""
+    return parse(read_toml(path), where=str(path), base=pathlib.Path(path).parent)
