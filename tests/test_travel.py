@@ -7,6 +7,7 @@ control, a height above the pocket or not positive, and --height with --force ar
 import json
 
 import pytest
+from test_cases import BUTTON
 
 from pocket import fem, shooting
 from pocket.apps.solvers import SOLVERS
@@ -104,22 +105,8 @@ def test_a_vtk_series_refuses_a_height_given_twice(capsys, tmp_path):
     assert not (tmp_path / "vtk").exists()
 
 
-CASE = """
-name = "tip"
-[sheet]
-thickness = "0.25 mm"
-modulus = "1 MPa"
-alpha = 0.3
-[clamp]
-radius = "20 mm"
-[initial]
-height = "10 mm"
-[loads]
-heights = ["9 mm", "8 mm"]
-[indenter]
-shape = "sphere"
-radius = "8 mm"
-"""
+#: the button of ``test_cases`` (heights 9 and 8 mm below its 10 mm dome) pressed by an 8 mm fingertip
+CASE = BUTTON + '[indenter]\nshape = "sphere"\nradius = "8 mm"\n'
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
