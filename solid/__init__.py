@@ -17,9 +17,9 @@ paths), ``results`` (the states) and ``api`` (the entry points). ``SOLVER`` is i
 
 import importlib
 
-from pocket.core.errors import InputError
 from pocket.core.importname import require_import_name
-from pocket.core.inputs import check_count, check_finite, check_tolerance, quote
+from pocket.core.inputs import check_count, check_tolerance
+from pocket.core.offset import check_thickness
 from pocket.core.solver import Option, Solver
 
 require_import_name(__name__, "pocket.solid")
@@ -47,15 +47,6 @@ MAX_ELEMENTS = 2000
 #: ~1e-3 of the converged solid, below the membrane's O(T/R) difference the model is there to measure.
 DEFAULT_ELEMENTS = 64
 DEFAULT_LAYERS = 2
-
-
-def check_thickness(name: str, value) -> float:
-    """T/R in (0, 0.5): a thicker 'sheet' is a block, and the pocket's geometry assumes T < R / 2."""
-    t = check_finite(name, value)
-    if not 0.0 < t < 0.5:
-        raise InputError(f"{name} = {quote(value)}, but the thickness ratio T/R must lie in (0, 0.5)")
-    return t
-
 
 SOLVER = Solver(
     name="solid",

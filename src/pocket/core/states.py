@@ -33,6 +33,7 @@ import numpy as np
 from .fluids import LIQUID, Fluid
 from .indenters import FLAT, Indenter
 from .materials import Material
+from .offset import check_thickness, volume_correction
 
 __all__ = ["Profile", "InflatedState", "CompressedState", "CHECKS"]
 
@@ -112,6 +113,9 @@ class _Membrane:
     material: Material
     tension_1_min: float
     tension_2_min: float
+    volume: float
+    profile: Profile | None
+    solver: str
 
     def __post_init__(self):
         _complete(self)
@@ -126,6 +130,16 @@ class _Membrane:
     def wrinkled(self) -> bool:
         """A tension is not positive somewhere: outside membrane theory."""
         return min(self.tension_1_min, self.tension_2_min) <= 0.0
+
+    def volume_lower(self, thickness_ratio: float) -> float:
+        """V_lower / R^3, the fluid's volume under the sheet's lower surface (``pocket.core.offset``) for a sheet
+        of T/R = ``thickness_ratio`` (the unstretched rubber's, as ``pressure``'s T; a prestretched sheet is
+        clamped T / lambda_p^2 thick), from the clamp's lower plane: ``volume`` + O((T/R)^2). For a membrane
+        state; the solid's ``volume`` is already under its lower surface."""
+        t = check_thickness("thickness_ratio", thickness_ratio)
+        if self.profile is None:
+            raise ValueError(f"a {self.solver} state without a profile has no lower surface")
+        return self.volume + volume_correction(self.profile, t / self.material.prestretch**2)
 
 
 @dataclasses.dataclass(frozen=True)
