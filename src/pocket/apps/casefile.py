@@ -9,7 +9,8 @@ per load), both or neither. Each row holds the load as written (``load``: ``"0.2
 the SI values (``force_N``, for a force load the force as parsed; ``pressure_Pa``,
 ``pressure_rise_Pa``, ``contact_pressure_pole_Pa`` and ``contact_pressure_edge_Pa`` (P on the flat
 plate, ``pocket.apps.contact``), ``contact_area_m2``, ``contact_radius_m``, ``height_m``,
-``travel_m`` = H0 - H, ``volume_m3``), the dimensionless keys of
+``travel_m`` = H0 - H, ``volume_m3``, and for a membrane solver ``volume_lower_m3``: the fluid's
+volume under the sheet's lower surface, ``pocket.core.offset``), the dimensionless keys of
 ``CompressedState.KEYS`` (the inputs as asked, not a solver's echo; ``alpha`` only for a
 Mooney-Rivlin rubber), the smallest tensions ``tension_1_min``, ``tension_2_min`` (units
 E T) and ``wrinkled``, the rubber (``material`` and its law's parameters in units of mu_0),

@@ -207,13 +207,27 @@ def forces(pocket: Pocket) -> list[float]:
     return out
 
 
+def _lower(pocket: Pocket, state) -> tuple[dict, list[str]]:
+    """({"volume_lower_m3": V_lower R^3}, []): the fluid's volume under the sheet's lower surface, the state's
+    ``volume_lower`` at the case's T/R. Nothing for the solid, whose ``volume`` is under its lower surface
+    already; nothing and a warning where the lower surface would fold (an OutOfRangeError of its own)."""
+    if pocket.case.solver == "solid":
+        return {}, []
+    try:
+        v = state.volume_lower(pocket.case.thickness / pocket.case.radius)
+    except OutOfRangeError as err:
+        return {}, [f"no volume_lower: {err}"]
+    return {"volume_lower_m3": v * pocket.case.radius**3}, []
+
+
 def inflated_row(pocket: Pocket, state) -> dict:
     """The inflated state in SI units, then its dimensionless keys and its ``warnings`` (a list: the case's,
-    then the state's)."""
+    then the state's). ``volume_lower_m3`` follows ``volume_m3`` (``_lower``)."""
     r = pocket.case.radius
+    lower, notes = _lower(pocket, state)
     return {"pressure_Pa": state.pressure * pocket.pressure_scale_Pa, "height_m": state.height * r,
-            "volume_m3": state.volume * r**3, **state.scalars(),
-            "warnings": [*pocket.case.warnings, *state.warnings]}
+            "volume_m3": state.volume * r**3, **lower, **state.scalars(),
+            "warnings": [*pocket.case.warnings, *state.warnings, *notes]}
 
 
 def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
@@ -227,9 +241,11 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     (``forces``), not values recomputed from the state. ``contact_pressure_pole_Pa`` and
     ``contact_pressure_edge_Pa`` follow the pressure where the state carries them (``pocket.apps.contact``:
     on the flat plate both are P); ``contact_area_m2`` is the curved area in contact, ``contact_radius_m``
-    the Lagrangian a_c R and ``height_m`` the indenter's lowest point above the clamp plane.
+    the Lagrangian a_c R and ``height_m`` the indenter's lowest point above the clamp plane;
+    ``volume_lower_m3`` follows ``volume_m3`` (``_lower``).
     """
     case, r, scale = pocket.case, pocket.case.radius, pocket.pressure_scale_Pa
+    lower, notes = _lower(pocket, state)
     asked = {"pressure_initial": pocket.pressure_initial}
     if pocket.alpha is not None:
         asked["alpha"] = pocket.alpha
@@ -244,5 +260,5 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
                 "contact_area_m2": state.contact_area * math.pi * r**2,
                 "contact_radius_m": state.contact_radius * r, "height_m": state.height * r,
                 "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
-                **state.scalars(), **asked, "warnings": [*case.warnings, *state.warnings]})
+                **lower, **state.scalars(), **asked, "warnings": [*case.warnings, *state.warnings, *notes]})
     return row

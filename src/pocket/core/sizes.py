@@ -8,8 +8,9 @@ A length is checked after ``pocket.core.units`` has made it SI:
   warning: pocket buttons are millimetres to centimetres across, so ``radius = 20`` was most likely
   meant as ``"20 mm"``.
 
-The sheet must be thin: membrane theory drops bending and the through-thickness position of the
-fluid, an error of order T/R (a solid model's volume is lower by about 1.0 T/R). Above
+The sheet must be thin: membrane theory drops bending and the clamp's hold through the thickness,
+an error of order T/R (a solid model's volume is lower by about 1.0 T/R; where the fluid's surface
+lies adds only O((T/R)^2), ``pocket.core.offset``). Above
 ``THIN_WARNING`` that error passes 10 % and a state draws a warning; at ``THIN_LIMIT`` and above the
 sheet is as thick as half its clamp radius, a plate rather than a membrane, and the model is refused.
 The four samples of the paper's Table 1 have T/R = 0.0125 to 0.08.
