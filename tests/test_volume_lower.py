@@ -108,7 +108,8 @@ def test_the_two_membrane_solvers_agree(states, which):
     reference, finite = states[which]
     t = 0.025
     a, b = reference.volume_lower(t) - reference.volume, finite.volume_lower(t) - finite.volume
-    message = f"{which}: shooting {a:.10g}, fem {b:.10g}, relative {b / a - 1:.3g}; V: {finite.volume - reference.volume:.3g}"
+    message = (f"{which}: shooting {a:.10g}, fem {b:.10g}, relative {b / a - 1:.3g}; "
+               f"V: {finite.volume - reference.volume:.3g}")
     # the finite elements' curvature errs by O(h^2) = 1.5e-5 at h = 1/256: measured 1.5e-5 and 1.7e-5
     assert abs(b / a - 1.0) < 1e-4, message
     # that 1.7e-5 of a 2e-5 correction, and V's own 1e-11: measured 3.5e-10
