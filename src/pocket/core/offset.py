@@ -41,10 +41,14 @@ less the triangle C P Q turned about the axis (area d_c sin(psi_c) t/4 at the me
                 = (pi t^2 / 4) [ int_0^1 lambda_3 (k_1 + k_2) r dr - lambda_3c sin(psi_c) ] + O(t^3).
 
 Measured from its own clamp plane, the fluid under the lower surface of an incompressible sheet has the
-mid-surface's volume to first order in T/R; only the curvature and clamp terms, O(t^2), separate them.
-(In a solid clamped through its thickness the two are equal exactly: its lower half keeps the volume
-pi t / 2 of the slab it came from.) A membrane's O(t) difference from the solid is not where its
-volume is measured: it is the solid's mid-surface itself, lower than the membrane's.
+mid-surface's volume to first order in T/R; only the curvature and clamp terms, O(t^2), separate them
+(they vanish at every order on a uniformly stretched spherical cap, whose offset is a concentric cap).
+Those terms are the offset's own: any incompressible sheet whose clamp holds its edge face keeps the
+volume pi t / 2 of its lower half, so the volume under its lower surface from z = -t/2 equals the
+volume under its material mid-surface from z = 0 exactly (the solid's ``volume`` and ``volume_mid``
+agree to its discrete incompressibility). An offset by lambda_3 t/2 along the normal, thickness taken
+at the mid-surface's stretches, holds that volume only to first order. A membrane's O(t) difference
+from the solid is therefore not where its volume is measured: it is the solid's mid-surface itself.
 
 Computed as written: the exact cancellation is kept by computing V_lower - V from the last formula's
 first line (the state's V is its solver's), with dA = pi t r dr / d exact from lambda_3; only the
