@@ -3,12 +3,13 @@
 import csv
 import json
 import math
+import tomllib
 
 import pytest
 import scipy
 
 from pocket import shooting
-from pocket.apps.cases import SAMPLES, load, sample
+from pocket.apps.cases import SAMPLES, load, parse, sample
 from pocket.cli import main
 
 BUTTON = """
@@ -99,6 +100,8 @@ def test_c1_c2_equals_modulus_alpha(tmp_path):
         ("alpha = 0.3", 'alpha = 0.3\nc1 = "1 MPa"', "give either sheet.c1 and sheet.c2 or sheet.modulus"),
         ('heights = ["9 mm", "8 mm"]', 'heights = ["9 mm"]\n[solver]\nelements = 10', "solver.elements does not apply"),
         ('radius = "20 mm"', 'radius = 20 mm', "not valid TOML"),
+        ('heights = ["9 mm", "8 mm"]', 'heights = ["9 mm"]\n[solver]\nname = "solid"\nthickness_ratio = 0.01',
+         "solver.thickness_ratio = 0.01, but a case's thickness ratio is sheet.thickness / clamp.radius"),
     ],
 )
 def test_bad_case_file(old, new, message, tmp_path, capsys):
@@ -258,3 +261,15 @@ def test_solver_options_are_given_as_written(tmp_path):
     assert main(["run", str(_write(tmp_path, text)), "--out", str(tmp_path)]) == 0
     given = json.loads((tmp_path / "case.json").read_text())["case"]["given"]
     assert given["solver.rtol"] == 1e-9 and "solver.name" not in given
+
+
+@pytest.mark.parametrize("number", sorted(SAMPLES))
+def test_the_solid_takes_its_thickness_ratio_from_the_sheet(number):
+    """A case solved as a solid gets T/R = sheet.thickness / clamp.radius (not the record's default); the
+    membrane solvers, which have no thickness, get no such option."""
+    case = sample(number)
+    assert "thickness_ratio" not in dict(case.options)
+    text = BUTTON.replace('thickness = "0.25 mm"', f'thickness = "{SAMPLES[number]}"') + '[solver]\nname = "solid"\n'
+    solid_case = parse(tomllib.loads(text))
+    assert dict(solid_case.options)["thickness_ratio"] == pytest.approx(solid_case.thickness / solid_case.radius,
+                                                                        rel=1e-15)

@@ -71,6 +71,39 @@ def test_the_reaction_is_the_force_and_the_contact_is_complementary(pressed):
     assert model.fluid(m, split(m, y)[0])[0] == pytest.approx(v_i, rel=1e-10)
 
 
+def test_the_contact_edge_lies_in_the_bracket_of_the_active_set(pressed):
+    """The state's contact radius lies between the outermost active node and the next (the bracket the active set
+    proves), and the deformed radius is the upper surface's there."""
+    from pocket.solid.results import contact_radius
+
+    m, y, control, _ = pressed
+    edge = int(np.max(control.active))
+    r_c = contact_radius(m, y, control.active)
+    assert m.top_r[edge] <= r_c <= m.top_r[edge + 1]
+
+
+@pytest.mark.parametrize("exponent", [2.0, 1.5])
+def test_the_contact_edge_from_the_gaps_beyond_it(exponent):
+    """Exact answer: a gap g = c (r - r_c)^2 beyond the edge gives r_c back to round-off (g^(1/2) is linear
+    in r there); a Hertz-like gap (r - r_c)^(3/2) gives r_c within the bracket and closer than the outermost
+    active node (the estimate's bias, not its exactness)."""
+    import types
+
+    from pocket.solid.results import contact_radius
+
+    r = np.linspace(0.0, 1.0, 41)
+    r_true, h, c = 0.4371, 0.3, 0.8
+    active = np.flatnonzero(r <= r_true)
+    z = h - c * np.maximum(r - r_true, 0.0) ** exponent  # the upper surface; on the plate inside the edge
+    fake = types.SimpleNamespace(top_r=r, top_z=np.arange(r.size), thickness=0.02, size=r.size)
+    y = np.concatenate([z - 0.01, [0.0, h]])  # u_z = z - t/2, then p_f and the plate's height
+    r_c = contact_radius(fake, y, active)
+    if exponent == 2.0:
+        assert r_c == pytest.approx(r_true, abs=1e-12)
+    else:
+        assert r[active[-1]] <= r_c <= r[active[-1] + 1] and abs(r_c - r_true) < r_true - r[active[-1]]
+
+
 def test_the_sheet_keeps_its_volume(pressed):
     """int (J - 1) 2 pi r dr dz = 0 to the Newton tolerance: the constant is in the bilinear pressure space."""
     m, y, _, _ = pressed

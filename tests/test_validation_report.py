@@ -412,11 +412,12 @@ def test_progress_bar_only_on_a_terminal():
 
 def test_timing_lists_every_task(report):
     """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence, the
-    fits to FE bulge data)."""
+    fits to FE bulge data, the samples solved as membrane and solid)."""
     results = report[2]
     rows = _rows(report[1] / "timing.csv")
     assert len(rows) == len(results.tasks) and {r["task"] for r in rows} == {"reference", "column", "convergence",
-                                                                             "evidence", "fit"}
+                                                                             "evidence", "fit", "solid"}
+    assert len([r for r in rows if r["task"] == "solid"]) == 4 * len(results.plan.thickness[0])
     assert len([r for r in rows if r["task"] == "fit"]) == len(results.plan.fits)
     assert len([r for r in rows if r["task"] == "reference"]) == len(results.pockets)
     assert all(float(r["seconds"]) > 0 for r in rows)
@@ -690,3 +691,40 @@ def test_contact_pressure_figure_follows_the_contact_zone(report):
         assert (line.y > 1.0).all() and scaled.x[-1] == pytest.approx(1.0, rel=1e-9)
         fe = next(s for s in fig.panels[0].series if s.group == line.group and s.solver == "FEM P2")
         assert fe.y == pytest.approx(np.interp(fe.x, line.x, line.y), rel=1e-4)
+
+
+def test_thickness_section(report, page):
+    """Exact answers: the table's errors are membrane / solid - 1 of its own values, its 'within 1%' column and the
+    verdict's sentences say the same, and the membrane's values are those of the shooting solver solved afresh.
+    Physics that could fail: the membrane's volume error grows with T/R across the four samples (the sheet's
+    thickness is what the membrane leaves out), and the solid's inflated V is below the membrane's for every
+    sample, as FElupe's independent solid finds for the headline pocket (benchmarks/bench_felupe.py: V about
+    0.9 T/R below the membrane's)."""
+    from pocket.validation import thickness
+
+    from pocket import shooting
+    from pocket.apps.cases import sample
+
+    results = report[2]
+    comparisons = results.thicknesses
+    pressures, forces = results.plan.thickness
+    assert [(c.sample, c.pressure_kpa) for c in comparisons] == [(n, p) for n in (1, 2, 3, 4) for p in pressures]
+    rows = _rows(report[1] / "membrane_vs_solid.csv")
+    assert len(rows) == len([c for c in results.checks if c.comparison == "membrane (shooting) vs solid"]) > 0
+    for r in rows:
+        error = float(r["membrane"]) / float(r["solid"]) - 1.0
+        assert float(r["membrane / solid - 1"]) == pytest.approx(error, rel=1e-2, abs=1e-5)  # printed to 3 digits
+        assert (r["within 1%"] == "yes") == (abs(float(r["membrane / solid - 1"])) <= thickness.LIMIT)
+    sentences = thickness.verdict(comparisons)
+    for quantity in thickness.QUANTITIES:
+        beyond = {int(r["sample"]) for r in rows if r["quantity"] == quantity and r["within 1%"] == "no"}
+        sentence = next(s for s in sentences if s.startswith(f"{quantity}: "))
+        assert all((f"sample {n} (" in sentence) == (n in beyond) for n in (1, 2, 3, 4)), sentence
+    first = comparisons[0]
+    case = sample(first.sample)
+    fresh = shooting.compress(case.material.scaled(), first.pressure, forces[0])
+    assert first.values["P/P_I", forces[0]][0] == pytest.approx(fresh.pressure_ratio, rel=1e-9)
+    assert first.values["V", None][0] == pytest.approx(fresh.inflated.volume, rel=1e-9)
+    volume = [abs(c.error("V")) for c in comparisons if c.pressure_kpa == pressures[-1]]
+    assert volume == sorted(volume) and all(c.error("V") > 0 for c in comparisons), volume
+    assert "thickness.png" in page.images and (report[1] / "thickness.png").stat().st_size > 0

@@ -201,10 +201,12 @@ def convergence_figure(results) -> Figure:
 
 def figures(results) -> list[Figure]:
     """The paper's figs 2-5, the other rubbers' and the gases' figures (``others``), the fingertips'
-    (``fingertips``), the identification's (``identification``) and the convergence study, from a run's results."""
+    (``fingertips``), the identification's (``identification``), the membrane's against the solid
+    (``thickness``) and the convergence study, from a run's results."""
     from .fingertips import fingertip_figures
     from .identification import figure as identification_figure
     from .others import other_figures
+    from .thickness import figure as thickness_figure
 
     head = headline(results.pockets)
     curves = results.curves_of(head)
@@ -222,6 +224,8 @@ def figures(results) -> list[Figure]:
     out += other_figures(results) + fingertip_figures(results)
     if results.fits:
         out.append(identification_figure(results.fits))
+    if results.thicknesses:
+        out.append(thickness_figure(results.thicknesses))
     if results.sequences:
         out.append(convergence_figure(results))
     return [without_zeros(f) for f in out]

@@ -76,6 +76,8 @@ class Plan:
     fem_columns: the FE columns compared with the reference (shooting) on a pocket pressed by the plate.
     indenter_columns: those of a pocket pressed by a curved indenter.
     fits: the laws (with their number of terms) fitted to FE bulge data (``identification``).
+    thickness: the pressures P_I (kPa) and the forces Fhat at which the paper's four samples are solved by the
+        membrane and the solid (``thickness``); empty: no such section.
     """
 
     name: str
@@ -85,6 +87,7 @@ class Plan:
     fem_columns: tuple[Column, ...] = FEM_COLUMNS
     indenter_columns: tuple[Column, ...] = INDENTER_COLUMNS
     fits: tuple[tuple[str, int], ...] = ()
+    thickness: tuple[tuple[float, ...], tuple[float, ...]] | tuple = ()
 
     def fem_forces_of(self, pocket) -> tuple:
         """The FE forces of ``pocket`` (empty: no FE column for it in this plan)."""
@@ -105,6 +108,7 @@ DEFAULT = Plan(
          "fem-range": (0.0, 0.19, 1.0, 4.0, None), "sphere": (0.19, 0.5, 1.0, None), "*": (0.0,)},
     convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 2)),
+    thickness=((2.0, 5.0), (0.2, 0.5, 1.0)),
 )
 
 QUICK = Plan(
@@ -113,4 +117,5 @@ QUICK = Plan(
     fem={"headline": (0.0, 0.19, 1.0), "fem-range": (0.0, 1.0, None), "sphere": (0.5, None)},
     convergence_sizes={1: (32, 64, 128), 2: (16, 32, 64)},
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 1)),
+    thickness=((5.0,), (0.5,)),
 )

@@ -21,7 +21,7 @@ import time
 from pocket.apps.folders import check_replaceable, staged
 from pocket.core.states import CHECKS, CompressedState
 
-from . import document, draw, figures, pockets, render, sections
+from . import document, draw, figures, pockets, render, sections, thickness
 from . import verdicts as checks_module
 from .suite import headline
 
@@ -70,10 +70,14 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
     _write_rows(directory / "cases.csv", *pockets.case_table(results))
     _write_rows(directory / "convergence_study.csv", *sections.sequence_rows(results))
     _write_rows(directory / "timing.csv", *sections.task_rows(results))
+    if results.thicknesses:
+        _write_rows(directory / "membrane_vs_solid.csv", *thickness.rows(results.thicknesses))
     names = ["checks.csv: every check (value, reference, error, tolerance, verdict)",
              "summary.csv: the verdicts per pocket, comparison and step",
              "cases.csv: the pockets, SI and dimensionless",
              "convergence_study.csv: every FE value of the convergence study", "timing.csv: each solve task's seconds"]
+    if results.thicknesses:
+        names.append("membrane_vs_solid.csv: the membrane against the solid for the paper's four samples, every value")
     if results.curves:
         _write_rows(directory / "states.csv", *_states_rows(results))
         names.append("states.csv: every state of every solver (the dimensionless keys)")

@@ -27,10 +27,11 @@ import time
 
 from tqdm import tqdm
 
+from pocket.apps.cases import SAMPLES
 from pocket.apps.provenance import cpus
 from pocket.apps.workers import local_executor, stop
 
-from . import compute, convergence, evidence, findings, identification, verdicts
+from . import compute, convergence, evidence, findings, identification, thickness, verdicts
 from .plan import Plan
 from .suite import Button, headline
 
@@ -43,7 +44,7 @@ WORKERS = min(8, cpus())
 class Task:
     """One solve of a run and its wall time (in the worker)."""
 
-    kind: str  # "reference" | "column" | "convergence" | "evidence" | "fit"
+    kind: str  # "reference" | "column" | "convergence" | "evidence" | "fit" | "solid"
     case: str
     what: str
     seconds: float
@@ -59,6 +60,7 @@ class Results:
     sequences: tuple  # convergence.Sequence
     evidence: evidence.Evidence | None
     fits: tuple  # identification.Identification, in the plan's order
+    thicknesses: tuple  # thickness.Comparison, by sample then pressure
     checks: tuple  # verdicts.Check
     findings: tuple  # findings.Finding
     tasks: tuple  # Task, in order of submission
@@ -101,6 +103,8 @@ def _task(kind, key, pockets, args) -> Task:
         return Task(kind, args[0].case.name, f"{study} P{order} {mesh}, {len(sizes)} meshes", 0.0)
     if kind == "fit":
         return Task(kind, "", f"{args[0]} ({args[1]} terms) fitted to FE bulge data", 0.0)
+    if kind == "solid":
+        return Task(kind, f"sample {args[0]}", f"membrane and solid at {args[1]:g} kPa, {len(args[2])} forces", 0.0)
     return Task(kind, "", "the paper's statements", 0.0)
 
 
@@ -115,7 +119,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
     bar = progress_bar(progress, label=label)
     main = headline(pockets)
     pending, tasks = {}, []  # future -> (kind, key, index into tasks)
-    done = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}}
+    done: dict = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}, "solid": {}}
 
     def submit(kind, key, function, *args):
         pending[pool.submit(_timed, function, *args)] = (kind, key, len(tasks))
@@ -127,6 +131,10 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
         if not convergence_only:
             for k in sorted(range(len(pockets)), key=lambda k: pockets[k] is not main):
                 submit("reference", k, compute.reference, pockets[k], plan)
+            if plan.thickness:  # the longest tasks: started early
+                pressures, forces = plan.thickness
+                for k, (number, pressure) in enumerate((n, p) for n in sorted(SAMPLES) for p in pressures):
+                    submit("solid", k, thickness.compare, number, pressure, forces)
             submit("evidence", None, evidence.collect, button)
             for k, (law, terms) in enumerate(plan.fits):
                 submit("fit", k, identification.identify, law, terms)
@@ -173,10 +181,13 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     rows += convergence.checks(sequences)
     fits = tuple(done["fit"][k] for k in sorted(done["fit"]))
     rows += identification.checks(fits)
+    thicknesses = tuple(done["solid"][k] for k in sorted(done["solid"]))
+    rows += thickness.checks(thicknesses)
     found = ()
     proof = done["evidence"].get(None)
     if proof is not None:
         head = by_pocket[headline(pockets)]
         found = tuple(findings.findings(button, proof, evidence.eq9_residuals(head.reference[0].inflated), head))
     return Results(plan=plan, pockets=pockets, button=button, curves=curves, columns=columns, sequences=sequences,
-                   evidence=proof, fits=fits, checks=tuple(rows), findings=found, tasks=tasks, seconds=seconds)
+                   evidence=proof, fits=fits, thicknesses=thicknesses, checks=tuple(rows), findings=found,
+                   tasks=tasks, seconds=seconds)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from pocket.apps.provenance import environment
 
-from . import identification
+from . import identification, thickness
 from .convergence import EXPECTED, FITTED_P2_FINEST, MESHES, RICHARDSON_FACTOR, richardson
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .figures import pocket_label
@@ -150,7 +150,7 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
                  "other pockets' lines carry dots of their colour, staggered so that curves lying on each other "
                  "all show.")]
     for fig in figs:
-        if fig.name not in ("convergence", "identification"):  # each in its own section
+        if fig.name not in ("convergence", "identification", "thickness"):  # each in its own section
             out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
     out.append(("h", 2, "The pocket in 3-D"))
     if picture:
@@ -179,6 +179,37 @@ def _identification_blocks(results, figs) -> list:
             ("p", "What the fits report the data do not determine (identifiability warnings): "
                   + ("; ".join(warned) if warned else "nothing") + "."),
             ("image", "identification.png", f"{caption} Data: identification.csv.")]
+
+
+def _thickness_blocks(results, figs) -> list:
+    comparisons = results.thicknesses
+    header, rows = thickness.rows(comparisons)
+    caption = next(f.caption for f in figs if f.name == "thickness")
+    slopes = ", ".join(f"{q} {s:.2f}" for q, s in thickness.slopes(comparisons).items())
+    seconds = sum(c.seconds for c in comparisons)
+    return [("h", 2, "How thick is too thick: the membrane against the solid"),
+            ("p", "Both solvers above, and the paper, treat the sheet as a membrane: a surface without thickness or "
+                  "bending stiffness, solved here to 1e-10. Whether those are the right equations for a sheet of "
+                  "thickness T is a question about the model, answered by a third one: pocket.solid solves the "
+                  "sheet's cross-section as an incompressible hyperelastic solid (Taylor-Hood quadrilaterals, the "
+                  "same strain energy, the clamp through the thickness, the fluid's pressure on the lower surface, "
+                  "the plate on the upper one). The paper's four samples (Table 1: C1 = 160 kPa, C2 = 47 kPa, "
+                  "R = 20 mm, a liquid) are solved by both at P_I = "
+                  f"{', '.join(f'{p:g}' for p in sorted({c.pressure_kpa for c in comparisons}))} kPa; the error is "
+                  "membrane / solid - 1. Heights of the mid-surface compare the same surface; the upper surface "
+                  "(what a plate meets) is lambda_3 T / 2 above it, which the rows 'upper surface' add to the "
+                  "membrane's answer. The fluid's volume is under the solid's lower surface; the membrane's under "
+                  "its mid-surface, which for an incompressible sheet is the same volume to first order in T/R "
+                  "(the thinned sheet's offset, int lambda_3 T/2 dA, is exactly the T/2 by which the lower clamp "
+                  "plane lies lower). The checks are informational: a model's error is a property of the model."),
+            ("p", "Verdict, where the membrane is within 1 % of the solid:"),
+            ("list", thickness.verdict(comparisons)),
+            ("p", f"Slope of log(largest error) against log(T/R) over the four samples: {slopes} (each sample at "
+                  "its own Phat_I, so these are not a clean order; the limit T/R -> 0 at one Phat_I is first order "
+                  f"in the solid's tests). The solid's solves took {seconds:.1f} s in all."),
+            ("table", header, rows),
+            ("image", "thickness.png",
+             f"{caption} Data: thickness.csv (plotted points), membrane_vs_solid.csv (every value).")]
 
 
 def _pockets_blocks(results) -> list:
@@ -249,6 +280,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
         out += _findings_blocks(results)
     if results.fits:
         out += _identification_blocks(results, figs)
+    if results.thicknesses:
+        out += _thickness_blocks(results, figs)
     if results.sequences:
         out += _convergence_blocks(results)
         out.append(("image", "convergence.png", "Error against element size (log-log), observed orders in the "

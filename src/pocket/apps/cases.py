@@ -29,9 +29,11 @@
     shape = "sphere"                     # "plate", "sphere" with radius = "8 mm", or "profile" with
     radius = "8 mm"                      # file = "tip.csv" (relative to the case file's folder)
     [solver]                             # optional, default shooting
-    name = "shooting"                    # or "fem" or "analytical", with that solver's options:
+    name = "shooting"                    # or "fem", "analytical" or "solid", with that solver's options:
                                          # rtol (shooting); elements, mesh, order, penalty, augmented, tol (fem);
-                                         # a mesh file name is relative to the case file's folder
+                                         # layers, elements, tol (solid: its thickness ratio T/R is
+                                         # sheet.thickness / clamp.radius); a mesh file name is relative
+                                         # to the case file's folder
 
 The rubber and the fluid are read by ``pocket.apps.rubbers``. E = 3 mu_0 (mu_0 the
 small-strain shear modulus; 6 (C1 + C2) for Mooney-Rivlin) makes pressures
@@ -79,6 +81,9 @@ from .solvers import SOLVERS, record
 from .tomlfiles import read_toml
 
 __all__ = ["Case", "SAMPLES", "MAX_LOADS", "load", "parse", "sample"]
+
+#: the option of a solver that models the sheet's thickness (``pocket.solid``): a case derives it from its sheet
+THICKNESS_RATIO = "thickness_ratio"
 
 #: most loads a case may list: a bound on the work a case can ask for (the file's size: ``tomlfiles``)
 MAX_LOADS = 10_000
@@ -222,6 +227,19 @@ def _solver(table, base, given) -> tuple[str, tuple]:
     return name, tuple(options.items())
 
 
+def _thickness_ratio(solver: str, options: tuple, thickness: float, radius: float, given: dict) -> tuple:
+    """``options`` with T/R = sheet.thickness / clamp.radius for a solver that models the thickness (an option
+    ``THICKNESS_RATIO``); an InputError if the case gives that option itself: the sheet says it already."""
+    option = record(solver).option(THICKNESS_RATIO)
+    if option is None:
+        return options
+    if f"solver.{THICKNESS_RATIO}" in given:
+        raise InputError(f"solver.{THICKNESS_RATIO} = {quote(given[f'solver.{THICKNESS_RATIO}'])}, but a case's "
+                         f"thickness ratio is sheet.thickness / clamp.radius (leave solver.{THICKNESS_RATIO} out)")
+    why = (f"sheet.thickness / clamp.radius = {quote(given['sheet.thickness'])} / {quote(given['clamp.radius'])}")
+    return (*options, (THICKNESS_RATIO, option.checked(thickness / radius, spell=lambda _: why)))
+
+
 def _text(data, key, where) -> str:
     value = data.get(key, "")
     if not isinstance(value, str):
@@ -283,6 +301,7 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     pressing: list[str] = []  # the indenter's size warnings
     indenter = indenters.parse(data["indenter"], radius, base, given, warnings=pressing) if "indenter" in data else FLAT
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
+    options = _thickness_ratio(solver, options, thickness, radius, given)
     warnings = _sizes(given, thickness, radius, initial=(kind, value), loads=(load_kind, loads)) + pressing
     return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
