@@ -18,11 +18,14 @@ the two free nodes beyond the active set, with gaps g_1 and g_2 at r_1 and r_2, 
 
     r_c = r_1 - g_1^(1/2) (r_2 - r_1) / (g_2^(1/2) - g_1^(1/2)),
 
-kept between the outermost active node and r_1 (the bracket the active set proves). Measured under the
-plate at Fhat = 0.5 (alpha = 47/160) from 32 to 256 elements: the exponent fitted through three free
-nodes is 1.5 to 2.1; this estimate scatters by about 1.5e-3 R at T/R = 0.0125 (Phat_I 0.32) and 6e-4 R
-at T/R = 0.08 (Phat_I 0.05), the outermost active node by 5e-3 R and 2.5e-3 R: about 0.7 % in A_c at
-the default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper surface's at r_c, the
+kept within a node of the active set's edge: between the last active node but one and the first free
+node (the contact acts on the nodes only, so between them the discrete surface may sit a little above or
+below the plate, and the last active node often carries a small force: the continuum's edge can lie
+before it). Measured under the plate at Fhat = 0.5 (alpha = 47/160) from 32 to 256 elements
+(``benchmarks/solid_contact_edge.py``): the exponent fitted through three free nodes is 1.5 to 2.1;
+this estimate spreads by about +-1.4e-3 R at T/R = 0.0125 (Phat_I 0.32) and +-6e-4 R at T/R = 0.08
+(Phat_I 0.05), the outermost active node by +-5e-3 R and +-2.5e-3 R: about 1 % in A_c at the
+default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper surface's at r_c, the
 contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact forces
 (``extra["reaction"]``, Fhat).
 """
@@ -70,7 +73,8 @@ def contact_radius(model: Model, y: np.ndarray, active: np.ndarray) -> float:
     q = np.maximum(gap, 0.0) ** (1.0 / GAP_EXPONENT)
     if q[1] <= q[0]:  # the gap does not grow: no edge to extrapolate to
         return float(r[edge])
-    return float(np.clip(r[edge + 1] - q[0] * (r[edge + 2] - r[edge + 1]) / (q[1] - q[0]), r[edge], r[edge + 1]))
+    low = r[edge - 1] if edge > 0 else r[edge]
+    return float(np.clip(r[edge + 1] - q[0] * (r[edge + 2] - r[edge + 1]) / (q[1] - q[0]), low, r[edge + 1]))
 
 
 def volume(model: Model, y: np.ndarray) -> float:
