@@ -39,12 +39,12 @@ MAX_LAYERS = 16
 MIN_ELEMENTS = 8
 MAX_ELEMENTS = 2000
 #: default elements along the radius and through the thickness. Measured on the inflated headline pocket
-#: (tests/test_solid_thin.py): along the radius V has converged to ~1e-6 at 32 elements (order ~4);
-#: through the thickness the clamp's singular corners converge slowly (order ~1): V moves by ~6e-4
-#: (relative) from two layers to four, by ~2e-4 from four to eight; P/P_I under the plate moves by ~2e-4
-#: from 32 to 64 elements (the contact edge at the nodes). Two layers, not four: with four, Newton
-#: stalled at T/R = 0.04, Fhat = 0.5 (a defect not yet understood). Either keeps every scalar within
-#: ~1e-3 of the converged solid, below the membrane's O(T/R) difference the model is there to measure.
+#: (tests/test_solid_thin.py): along the radius V has converged to ~1e-6 at 32 elements; through the
+#: thickness V moves by ~3e-4 (relative) from two layers to four, by ~4e-5 from four to eight (the clamp's
+#: corners are meshed at T/2 whatever the layers, ``mesh``; the corner size itself moves V by ~4e-4 when
+#: doubled); P/P_I under the plate moves by ~7e-5 from 32 to 64 elements (the contact edge at the nodes).
+#: Either keeps every scalar within ~1e-3 of the converged solid, below the membrane's O(T/R) difference
+#: the model is there to measure; two layers are the cheaper.
 DEFAULT_ELEMENTS = 64
 DEFAULT_LAYERS = 2
 
