@@ -45,7 +45,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["COMPONENTS", "gradient", "variation", "components", "jacobian", "cofactor", "energy_derivatives",
+__all__ = ["COMPONENTS", "tensor", "gradient", "variation", "components", "jacobian", "cofactor", "energy_derivatives",
            "jacobian_derivatives"]
 
 #: the nonzero components (i, j) of an axisymmetric F or dF
@@ -59,6 +59,12 @@ def _tensor(grad: np.ndarray, hoop: np.ndarray, identity: float) -> np.ndarray:
     for k in range(3):
         out[k, k] += identity
     return out
+
+
+def tensor(components: np.ndarray, identity: float) -> np.ndarray:
+    """identity I + sum_a components[a] E_a (3, 3, ...) from the five components (5, ...): F from those of
+    the displacement's gradient (identity 1), dF from a variation's (identity 0)."""
+    return _tensor(components[:4].reshape((2, 2) + components.shape[1:]), components[4], identity)
 
 
 def gradient(grad: np.ndarray, u_r: np.ndarray, r: np.ndarray) -> np.ndarray:
