@@ -12,6 +12,7 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
 from pocket.core.errors import ConvergenceError
@@ -26,6 +27,13 @@ MAX_ITERATIONS = 25
 MAX_SWEEPS = 60
 #: Newton's tolerance while the active set changes (units R)
 SWEEP_TOL = 1e-7
+#: the scale of the bordered unknowns (p_f, h, lambda) in the linear solve. Their rows (the contact's entries
+#: 1, the fluid's V') would otherwise win SuperLU's partial-pivoting choices over the rubber's small entries
+#: (the pressure's are ~ an element's volume) and break the fill-reducing order, which eliminates the dense
+#: border last. Exact: D J D (D^-1 step) = D R. Measured on the headline pocket (64 x 2 elements, 20 contact
+#: nodes): L + U hold 72k nonzeros instead of 387k, the solve takes a quarter of the time; scales 1e-6 and
+#: 1e-10 change neither.
+BORDER_SCALE = 1e-3
 
 
 def solve(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np.ndarray, int]:
@@ -38,7 +46,7 @@ def solve(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np
         if not np.all(np.isfinite(res)):  # an iterate with J <= 0 somewhere: the isochoric invariants fail
             raise ConvergenceError("an iterate turned an element inside out (det F <= 0)", iterations=iteration)
         try:
-            step = spl.spsolve(jac, res)
+            step = _linear_solve(jac, res, np.where(keep < model.size, 1.0, BORDER_SCALE))
         except RuntimeError as err:  # a singular factor
             raise ConvergenceError(f"singular tangent: {err}", iterations=iteration) from err
         if not np.all(np.isfinite(step)):
@@ -51,6 +59,12 @@ def solve(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np
             break
     raise ConvergenceError(f"Newton did not converge in {iteration} iterations (last displacement step "
                            f"{du:.3g} R)", iterations=iteration, residual=float(np.abs(res).max()))
+
+
+def _linear_solve(jac, res: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """The Newton step J^-1 R, solved as D J D x = D R with D = diag(``scale``) (``BORDER_SCALE``)."""
+    d = sp.diags(scale)
+    return scale * spl.spsolve((d @ jac @ d).tocsc(), scale * res, permc_spec="MMD_AT_PLUS_A")
 
 
 def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np.ndarray, Control, int]:
