@@ -67,6 +67,28 @@ def _linear_solve(jac, res: np.ndarray, scale: np.ndarray) -> np.ndarray:
     return scale * spl.spsolve((d @ jac @ d).tocsc(), scale * res, permc_spec="MMD_AT_PLUS_A")
 
 
+def _bisect(active: np.ndarray, new: np.ndarray, joining: np.ndarray, all_pressing: bool, bounds: list):
+    """The next active set: the disc of the nodes before n, n halfway between ``bounds`` (the largest disc
+    edge known too small, the smallest known too large, updated here from the set ``active`` just solved: too
+    small if a node beyond its edge is above the plate, too large if none is and a force in it is negative),
+    while ``active`` and the rules' set ``new`` are discs and the bounds leave an edge between them; else
+    ``new``. A disc is the nodes 1 .. n - 1 with or without the pole's (whose consistent force, at r = 0, is
+    zero to the discretisation: it may leave), which keeps its place in ``new``."""
+    def disc(nodes):
+        return np.array_equal(nodes[nodes > 0], np.arange(1, nodes.max() + 1))
+
+    if not (disc(active) and disc(new)):
+        return new
+    edge = active.max() + 1
+    if joining.size and joining.max() >= edge:
+        bounds[0] = max(bounds[0], edge)
+    elif not all_pressing:
+        bounds[1] = edge if bounds[1] is None else min(bounds[1], edge)
+    if bounds[1] is None or bounds[1] - bounds[0] < 2:
+        return new
+    return np.union1d(new[:1][new[:1] == 0], np.arange(1, (bounds[0] + bounds[1]) // 2))
+
+
 def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np.ndarray, Control, int]:
     """The state in contact with the plate and its active set, from the guess ``y`` whose contact forces are
     those of ``control.active``; (y, control with the final active set, Newton iterations).
@@ -74,9 +96,13 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     While the set changes, Newton stops at ``SWEEP_TOL`` (a set decided at 1e-7 R is the set at 1e-10 R
     unless a node sits within 1e-7 R of the plate with a force of the order of the Newton error, which the
     final solve's check catches); every node with a negative force leaves at once (but one, the pole's, if
-    all would), every node above the plate joins.
+    all would), every node above the plate joins. A flat plate's contact is a disc: while the sets tried are
+    the first n nodes from the pole, n is bisected between the largest set found too small (a node beyond it
+    above the plate) and the smallest found too large (a negative force in it), instead of the one or two
+    nodes the rules above remove per update after an overshoot (``_bisect``).
     """
     size, total, loose = model.size, 0, max(tol, SWEEP_TOL)
+    bounds = [0, None]
     for sweep in range(MAX_SWEEPS):
         y, iterations = solve(model, y, control, loose if sweep < MAX_SWEEPS - 1 else tol)
         total += iterations
@@ -91,7 +117,7 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
                 y, iterations = solve(model, y, control, tol)
                 total += iterations
             return y, control, total
-        new = np.union1d(active[keep], joining)
+        new = _bisect(active, np.union1d(active[keep], joining), joining, keep.all(), bounds)
         forces = dict(zip(active[keep], lam[keep], strict=True))
         y = np.concatenate([y[:size + 2], [forces.get(k, 0.0) for k in new]])
         control = dataclasses.replace(control, active=new)

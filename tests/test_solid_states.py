@@ -71,6 +71,23 @@ def test_the_reaction_is_the_force_and_the_contact_is_complementary(pressed):
     assert model.fluid(m, split(m, y)[0])[0] == pytest.approx(v_i, rel=1e-10)
 
 
+def test_the_bisected_active_set_is_the_update_rules_set(pressed, monkeypatch):
+    """Bisecting the contact disc's edge (``newton._bisect``) only shortens the search: with the plain update
+    rules (every negative force leaves, every node above the plate joins) the same force reaches the same active
+    set and the same state, to the Newton tolerance."""
+    from pocket.solid import newton
+
+    m, y, control, v_i = pressed
+    unit = np.pi * 3.0 * T * PHAT
+    start = compression.first_contact(m, inflation.to_pressure(m, 3.0 * T * PHAT, TOL)[0],
+                                      compression.fluid_control(m, solid_fluid(), PHAT, v_i))
+    monkeypatch.setattr(newton, "_bisect", lambda active, new, *rest: new)
+    y_plain, control_plain, _ = compression.to_force(m, *start, FORCE * unit, unit, TOL)
+    np.testing.assert_array_equal(control_plain.active, control.active)
+    # both converged to 1e-10 R in the displacement increment: states agree to a few times that
+    assert np.abs(y_plain[:m.size + 2] - y[:m.size + 2]).max() <= 1e-9 * max(1.0, np.abs(y).max())
+
+
 def test_the_sheet_keeps_its_volume(pressed):
     """int (J - 1) 2 pi r dr dz = 0 to the Newton tolerance: the constant is in the bilinear pressure space."""
     m, y, _, _ = pressed
