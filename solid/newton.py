@@ -117,7 +117,7 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
                 y, iterations = solve(model, y, control, tol)
                 total += iterations
             return y, control, total
-        new = _bisect(active, np.union1d(active[keep], joining), joining, keep.all(), bounds)
+        new = _bisect(active, np.union1d(active[keep], joining), joining, bool(keep.all()), bounds)
         forces = dict(zip(active[keep], lam[keep], strict=True))
         y = np.concatenate([y[:size + 2], [forces.get(k, 0.0) for k in new]])
         control = dataclasses.replace(control, active=new)
