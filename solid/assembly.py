@@ -16,8 +16,9 @@ one ``energy_derivatives`` call per Newton iteration gives both), the element ve
     R_u:  sum_q w s_a c_ia,       R_p:  sum_q w psi_k (J - 1),
     K_uu: sum_q w c_ia T_ab c_jb,  K_pu: sum_q w psi_k dJ_a c_ja,
 
-each one einsum over (basis functions, components, elements, points), added into the global arrays
-through the element dofs (``np.bincount``, and COO triplets whose duplicates sum). The fluid's forms
+each a batch of small matrix products over the elements (the tables stored element-major, (e, q, 5, 18),
+so that ``np.matmul`` runs them: K_e = B_e^T (w T B)_e with B_e the (5 q) x 18 matrix of the c_ia), added
+into the global arrays through the element dofs (``np.bincount``, and COO triplets whose duplicates sum). The fluid's forms
 (``forms.volume_first``, ``forms.volume_second``) are, with rho = r + u_r, zeta = u_z, rho' = 1 + du_r/dr,
 
     V' :  sum_q w g . d_i,          g = (zeta rho', rho rho', rho zeta),
@@ -43,14 +44,14 @@ __all__ = ["Tables", "tables", "fields", "solid", "fluid"]
 
 @dataclasses.dataclass(frozen=True)
 class Tables:
-    """A model's basis functions at its quadrature points (shapes in ``tables``)."""
+    """A model's basis functions at its quadrature points, element-major (e elements, q points each)."""
 
-    comps: np.ndarray         # (18, 5, e, q): dF[phi_i] components
+    comps: np.ndarray         # (e, q, 5, 18): the components c_ia of dF[phi_i]
     weight: np.ndarray        # (e, q): |e|_q 2 pi r
     dofs_u: np.ndarray        # (18, e)
-    psi: np.ndarray           # (4, e, q): the bilinear pressures
+    psi: np.ndarray           # (e, 4, q): the bilinear pressures
     dofs_p: np.ndarray        # (4, e)
-    facet: np.ndarray         # (18, 3, f, q): (phi_r, phi_z, d phi_r / dr) on the lower surface
+    facet: np.ndarray         # (f, q, 3, 18): (phi_r, phi_z, d phi_r / dr) on the lower surface
     facet_r: np.ndarray       # (f, q): the facets' radii
     facet_weight: np.ndarray  # (f, q): |f|_q 2 pi
     facet_dofs: np.ndarray    # (18, f)
@@ -61,18 +62,23 @@ class Tables:
 def tables(basis_u: Basis, basis_p: Basis, bottom: FacetBasis) -> Tables:
     """The tables of the displacement and pressure bases and of the lower surface's facet basis."""
     r = basis_u.global_coordinates()[0]
-    comps = np.array([forms.components(phi[0], r) for phi in basis_u.basis])
-    psi = np.array([np.asarray(phi[0]) for phi in basis_p.basis])
+    comps = np.array([forms.components(phi[0], r) for phi in basis_u.basis])  # (18, 5, e, q)
+    psi = np.array([np.asarray(phi[0]) for phi in basis_p.basis])  # (4, e, q)
     facet = np.array([[phi[0].value[0], phi[0].value[1], phi[0].grad[0, 0]] for phi in bottom.basis])
-    return Tables(comps, basis_u.dx * 2.0 * np.pi * r, basis_u.element_dofs, psi, basis_p.element_dofs, facet,
-                  bottom.global_coordinates()[0], bottom.dx * 2.0 * np.pi, bottom.element_dofs, basis_u.N,
-                  basis_p.N)
+    return Tables(np.ascontiguousarray(comps.transpose(2, 3, 1, 0)), basis_u.dx * 2.0 * np.pi * r,
+                  basis_u.element_dofs, np.ascontiguousarray(psi.transpose(1, 0, 2)), basis_p.element_dofs,
+                  np.ascontiguousarray(facet.transpose(2, 3, 1, 0)), bottom.global_coordinates()[0],
+                  bottom.dx * 2.0 * np.pi, bottom.element_dofs, basis_u.N, basis_p.N)
+
+
+def _at_points(table: np.ndarray, dofs: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """sum_i U_ei table_e,q,a,i: a field's components (a, e, q) from its element dofs."""
+    return np.moveaxis((table @ u[dofs].T[:, None, :, None])[..., 0], -1, 0)
 
 
 def fields(tab: Tables, u: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """F (3, 3, e, q) and the pressure p (e, q) at the quadrature points of the state (u, p)."""
-    dF = np.einsum("ie,iaeq->aeq", u[tab.dofs_u], tab.comps)
-    return kin.tensor(dF, 1.0), np.einsum("ke,keq->eq", p[tab.dofs_p], tab.psi)
+    return kin.tensor(_at_points(tab.comps, tab.dofs_u, u), 1.0), (p[tab.dofs_p].T[:, None, :] @ tab.psi)[:, 0]
 
 
 def _vector(local: np.ndarray, dofs: np.ndarray, size: int) -> np.ndarray:
@@ -88,31 +94,37 @@ def _matrix(local: np.ndarray, rows: np.ndarray, cols: np.ndarray, shape: tuple[
     return sp.coo_matrix((local.ravel(), (r, c)), shape=shape).tocsr()
 
 
+def _forms(B: np.ndarray, w: np.ndarray, vector: np.ndarray, matrix: np.ndarray):
+    """The element vectors sum_q w v_a B_ai (e, i) and matrices sum_q w B_ai M_ab B_bj (e, i, j) of the point
+    values v (a, e, q) and M (a, b, e, q), B the (e, q, a, i) table."""
+    e, q, a, n = B.shape
+    flat = B.reshape(e, q * a, n)
+    wv = (np.moveaxis(vector, 0, -1) * w[..., None]).reshape(e, 1, q * a)
+    wMB = (np.moveaxis(matrix, (0, 1), (-2, -1)) * w[..., None, None]) @ B
+    return (wv @ flat)[:, 0], np.swapaxes(flat, 1, 2) @ wMB.reshape(e, q * a, n)
+
+
 def solid(tab: Tables, law, u: np.ndarray, p: np.ndarray):
     """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p), the ``forms`` assembled."""
     F, pq = fields(tab, u, p)
     first, second = kin.energy_derivatives(F, law)
     d_j, d2_j = kin.jacobian_derivatives(F)
-    stress, table = first + pq * d_j, second + pq * d2_j
-    w, c = tab.weight, tab.comps
-    r_u = _vector(np.einsum("aeq,iaeq,eq->ei", stress, c, w, optimize=True), tab.dofs_u, tab.n_u)
-    r_p = _vector(np.einsum("keq,eq,eq->ek", tab.psi, kin.jacobian(F) - 1.0, w), tab.dofs_p, tab.n_p)
-    k_uu = _matrix(np.einsum("iaeq,abeq,jbeq,eq->eij", c, table, c, w, optimize=True), tab.dofs_u, tab.dofs_u,
-                   (tab.n_u, tab.n_u))
-    k_pu = _matrix(np.einsum("keq,aeq,jaeq,eq->ekj", tab.psi, d_j, c, w, optimize=True), tab.dofs_p, tab.dofs_u,
-                   (tab.n_p, tab.n_u))
+    r_e, k_e = _forms(tab.comps, tab.weight, first + pq * d_j, second + pq * d2_j)
+    r_u = _vector(r_e, tab.dofs_u, tab.n_u)
+    r_p = _vector((tab.psi @ ((kin.jacobian(F) - 1.0) * tab.weight)[..., None])[..., 0], tab.dofs_p, tab.n_p)
+    k_uu = _matrix(k_e, tab.dofs_u, tab.dofs_u, (tab.n_u, tab.n_u))
+    d_jb = (np.moveaxis(d_j, 0, -1)[..., None, :] @ tab.comps)[..., 0, :]  # dJ . dF[phi_j]: (e, q, 18)
+    k_pu = _matrix((tab.psi * tab.weight[:, None, :]) @ d_jb, tab.dofs_p, tab.dofs_u, (tab.n_p, tab.n_u))
     return r_u, r_p, k_uu, k_pu
 
 
 def fluid(tab: Tables, u: np.ndarray):
     """The cavity's volume V (R^3) under the lower surface, V' (N_u,) and V'' (N_u x N_u, CSR) at u."""
-    ur, uz, dur = np.einsum("if,iafq->afq", u[tab.facet_dofs], tab.facet)
+    ur, uz, dur = _at_points(tab.facet, tab.facet_dofs, u)
     rho, drho, w = tab.facet_r + ur, 1.0 + dur, tab.facet_weight
-    g = np.array([uz * drho, rho * drho, rho * uz])
     zero = np.zeros_like(rho)
+    g = np.array([uz * drho, rho * drho, rho * uz])
     M = np.array([[zero, drho, uz], [drho, zero, rho], [uz, rho, zero]])
-    d = tab.facet
-    first = _vector(np.einsum("afq,iafq,fq->fi", g, d, w, optimize=True), tab.facet_dofs, tab.n_u)
-    second = _matrix(np.einsum("iafq,abfq,jbfq,fq->fij", d, M, d, w, optimize=True), tab.facet_dofs,
-                     tab.facet_dofs, (tab.n_u, tab.n_u))
-    return float(np.sum(w * rho * uz * drho)), first, second
+    first, second = _forms(tab.facet, w, g, M)
+    return (float(np.sum(w * rho * uz * drho)), _vector(first, tab.facet_dofs, tab.n_u),
+            _matrix(second, tab.facet_dofs, tab.facet_dofs, (tab.n_u, tab.n_u)))
