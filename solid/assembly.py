@@ -18,8 +18,9 @@ one ``energy_derivatives`` call per Newton iteration gives both), the element ve
 
 each a batch of small matrix products over the elements (the tables stored element-major, (e, q, 5, 18),
 so that ``np.matmul`` runs them: K_e = B_e^T (w T B)_e with B_e the (5 q) x 18 matrix of the c_ia), added
-into the global arrays through the element dofs (``np.bincount``, and COO triplets whose duplicates sum). The fluid's forms
-(``forms.volume_first``, ``forms.volume_second``) are, with rho = r + u_r, zeta = u_z, rho' = 1 + du_r/dr,
+into the global arrays through the element dofs (``np.bincount``, and COO triplets whose duplicates sum).
+The fluid's forms (``forms.volume_first``, ``forms.volume_second``) are, with rho = r + u_r, zeta = u_z
+and rho' = 1 + du_r/dr,
 
     V' :  sum_q w g . d_i,          g = (zeta rho', rho rho', rho zeta),
     V'':  sum_q w d_i . M d_j,      M = [[0, rho', zeta], [rho', 0, rho], [zeta, rho, 0]],
