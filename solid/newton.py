@@ -100,10 +100,11 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
 
     While the set changes, Newton stops at ``SWEEP_STEP``; a set that holds there is solved to ``tol`` and
     checked again, so the set returned is the one the converged state satisfies. Every node with a negative
-    force leaves at once (but one, the pole's, if all would), every node above the plate joins. A flat plate's contact is a disc: while the sets tried are
-    the first n nodes from the pole, n is bisected between the largest set found too small (a node beyond it
-    above the plate) and the smallest found too large (a negative force in it), instead of the one or two
-    nodes the rules above remove per update after an overshoot (``_bisect``).
+    force leaves at once (but one, the pole's, if all would), every node above the plate joins. A flat
+    plate's contact is a disc: while the sets tried are the first n nodes from the pole, n is bisected between
+    the largest set found too small (a node beyond it above the plate) and the smallest found too large (a
+    negative force in it), instead of the one or two nodes the rules above remove per update after an
+    overshoot (``_bisect``).
     """
     size, total, loose = model.size, 0, max(tol, SWEEP_TOL)
     bounds, step = [0, None], max(tol, SWEEP_STEP)
