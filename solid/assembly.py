@@ -40,7 +40,7 @@ from skfem import Basis, FacetBasis
 from . import forms
 from . import kinematics as kin
 
-__all__ = ["Tables", "tables", "fields", "solid", "fluid"]
+__all__ = ["Tables", "tables", "fields", "pressure_moments", "solid", "fluid"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -95,6 +95,12 @@ def _matrix(local: np.ndarray, rows: np.ndarray, cols: np.ndarray, shape: tuple[
     return sp.coo_matrix((local.ravel(), (r, c)), shape=shape).tocsr()
 
 
+def pressure_moments(tab: Tables, f: np.ndarray) -> np.ndarray:
+    """int psi_k f 2 pi r dr dz for each bilinear pressure psi_k (N_p,) of the point values f (e, q): R_p for
+    f = J - 1, the pressures' own volumes for f = 1."""
+    return _vector((tab.psi @ (f * tab.weight)[..., None])[..., 0], tab.dofs_p, tab.n_p)
+
+
 def _forms(B: np.ndarray, w: np.ndarray, vector: np.ndarray, matrix: np.ndarray):
     """The element vectors sum_q w v_a B_ai (e, i) and matrices sum_q w B_ai M_ab B_bj (e, i, j) of the point
     values v (a, e, q) and M (a, b, e, q), B the (e, q, a, i) table."""
@@ -112,7 +118,7 @@ def solid(tab: Tables, law, u: np.ndarray, p: np.ndarray):
     d_j, d2_j = kin.jacobian_derivatives(F)
     r_e, k_e = _forms(tab.comps, tab.weight, first + pq * d_j, second + pq * d2_j)
     r_u = _vector(r_e, tab.dofs_u, tab.n_u)
-    r_p = _vector((tab.psi @ ((kin.jacobian(F) - 1.0) * tab.weight)[..., None])[..., 0], tab.dofs_p, tab.n_p)
+    r_p = pressure_moments(tab, kin.jacobian(F) - 1.0)
     k_uu = _matrix(k_e, tab.dofs_u, tab.dofs_u, (tab.n_u, tab.n_u))
     d_jb = (np.moveaxis(d_j, 0, -1)[..., None, :] @ tab.comps)[..., 0, :]  # dJ . dF[phi_j]: (e, q, 18)
     k_pu = _matrix((tab.psi * tab.weight[:, None, :]) @ d_jb, tab.dofs_p, tab.dofs_u, (tab.n_p, tab.n_u))
