@@ -74,21 +74,17 @@ def _linear_solve(jac, res: np.ndarray, scale: np.ndarray) -> np.ndarray:
 
 def _bisect(active: np.ndarray, new: np.ndarray, joining: np.ndarray, all_pressing: bool, bounds: list):
     """The next active set: the disc of the nodes before n, n halfway between ``bounds`` (the largest disc
-    edge known too small, the smallest known too large, updated here from the set ``active`` just solved: too
-    small if a node beyond its edge is above the plate, too large if none is and a force in it is negative),
-    while ``active`` and the rules' set ``new`` are discs and the bounds leave an edge between them; else
-    ``new``. A disc is the nodes 1 .. n - 1 with or without the pole's (whose consistent force, at r = 0, is
-    zero to the discretisation: it may leave), which keeps its place in ``new``."""
-    def disc(nodes):
-        return np.array_equal(nodes[nodes > 0], np.arange(1, nodes.max() + 1))
-
-    if not (disc(active) and disc(new)):
-        return new
-    edge = active.max() + 1
-    if joining.size and joining.max() >= edge:
-        bounds[0] = max(bounds[0], edge)
-    elif not all_pressing:
-        bounds[1] = edge if bounds[1] is None else min(bounds[1], edge)
+    edge known too small, the smallest known too large, updated here if the set ``active`` just solved is a
+    disc: too small if a node beyond its edge is above the plate, too large if none is and a force in it is
+    negative), while the bounds leave an edge between them; else the rules' set ``new``. A disc is the nodes
+    1 .. n - 1 with or without the pole's (whose consistent force, at r = 0, is zero to the discretisation: it
+    may leave), which keeps its place in ``new``. The bounds only close in, so the bisection ends."""
+    if np.array_equal(active[active > 0], np.arange(1, active.max() + 1)):
+        edge = active.max() + 1
+        if joining.size and joining.max() >= edge:
+            bounds[0] = max(bounds[0], edge)
+        elif not all_pressing:
+            bounds[1] = edge if bounds[1] is None else min(bounds[1], edge)
     if bounds[1] is None or bounds[1] - bounds[0] < 2:
         return new
     return np.union1d(new[:1][new[:1] == 0], np.arange(1, (bounds[0] + bounds[1]) // 2))
