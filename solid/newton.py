@@ -12,7 +12,6 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
-import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
 from pocket.core.errors import ConvergenceError
@@ -68,8 +67,9 @@ def solve(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np
 
 def _linear_solve(jac, res: np.ndarray, scale: np.ndarray) -> np.ndarray:
     """The Newton step J^-1 R, solved as D J D x = D R with D = diag(``scale``) (``BORDER_SCALE``)."""
-    d = sp.diags(scale)
-    return scale * spl.spsolve((d @ jac @ d).tocsc(), scale * res, permc_spec="MMD_AT_PLUS_A")
+    jac = jac.tocsc(copy=True)
+    jac.data *= scale[jac.indices] * np.repeat(scale, np.diff(jac.indptr))  # row scale times column scale
+    return scale * spl.spsolve(jac, scale * res, permc_spec="MMD_AT_PLUS_A")
 
 
 def _bisect(active: np.ndarray, new: np.ndarray, joining: np.ndarray, all_pressing: bool, bounds: list):
