@@ -49,7 +49,7 @@ MAX_ELEMENTS = 2000
 #: Under the plate (the 10-force headline curve, Fhat 0.1 .. 1, benchmarks/bench_solid.py) P/P_I moves by
 #: at most 7e-5 from 64 to 128 elements, but by 3.3e-4 from two layers to four and 2.2e-4 from four to
 #: eight (not monotone, order below one): through the thickness the default is not converged to 1e-4 in
-#: P/P_I, and no mesh measured is (128 x 4 stalls at Fhat 0.5; 64 x 8 costs ~13 times 64 x 2). The
+#: P/P_I, and no mesh measured is (128 x 4 stalls at Fhat 0.5; 64 x 8 costs 13-20 times 64 x 2). The
 #: change grows with the force, from 2e-5 at Fhat 0.1 to 3.3e-4 at 1: 3 % to 23 % of the membrane's own
 #: P/P_I difference there (5e-4 to 1.5e-3).
 DEFAULT_ELEMENTS = 64
