@@ -10,9 +10,10 @@ error. States in the membrane solvers' units (lengths / R, Phat = P R / (E T), E
 key comparable: their difference is the membrane's modelling error, O(T/R).
 
 Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``mesh`` (the
-cross-section), ``forms`` (weak forms), ``model`` (bases and assembly), ``equations`` (the
-bordered system), ``newton`` (Newton, active set), ``inflation`` and ``compression`` (the load
-paths), ``results`` (the states) and ``api`` (the entry points). ``SOLVER`` is its record.
+cross-section), ``forms`` (weak forms), ``assembly`` (their vectorised assembly), ``model`` (bases
+and constraints), ``equations`` (the bordered system), ``newton`` (Newton, active set),
+``inflation`` and ``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry
+points). ``SOLVER`` is its record.
 """
 
 import importlib

@@ -10,8 +10,9 @@ Lagrangian of the mixed displacement-pressure formulation is
     R_u[v] = int (dW + p dJ) . dF[v] 2 pi r,                 R_p[q] = int q (J - 1) 2 pi r,
     K_uu[du, v] = int dF[du] . (d^2 W + p d^2 J) . dF[v] 2 pi r,   K_pu[du, q] = int q dJ . dF[du] 2 pi r.
 
-The 5 x 5 tangent d^2 W + p d^2 J is tabulated once per Newton iteration at each quadrature point
-(``tangent_table``) and contracted in the bilinear form.
+These forms are the definitions: ``assembly`` evaluates the stress dW + p dJ and the 5 x 5 tangent
+d^2 W + p d^2 J once per Newton iteration at the quadrature points and assembles the same sums by array
+contractions (a test compares the two).
 
 Fluid. The fluid fills the cavity between the deformed lower surface (rho, zeta)(r), rho = r + u_r,
 zeta = -t/2 + u_z, and its flat reference plane zeta = -t/2; its volume is
@@ -36,7 +37,7 @@ from skfem import BilinearForm, Functional, LinearForm
 
 from . import kinematics as kin
 
-__all__ = ["components", "tangent_table", "residual_u", "residual_p", "tangent_uu", "coupling", "volume",
+__all__ = ["components", "residual_u", "residual_p", "tangent_uu", "coupling", "volume",
            "volume_first", "volume_second"]
 
 def components(field, r) -> np.ndarray:
@@ -47,11 +48,6 @@ def components(field, r) -> np.ndarray:
 
 def _deformation(w):
     return kin.gradient(w["u"].grad, w["u"][0], w.x[0])
-
-
-def tangent_table(F: np.ndarray, p: np.ndarray, law) -> np.ndarray:
-    """d^2 W + p d^2 J (5, 5, ...) at F and the pressure p (``kinematics``)."""
-    return kin.energy_derivatives(F, law)[1] + p * kin.jacobian_derivatives(F)[1]
 
 
 def residual_u(law):
@@ -74,8 +70,7 @@ def residual_p(q, w):
 
 @BilinearForm
 def tangent_uu(du, v, w):
-    """K_uu[du, v] with the tangent tabulated in w["table"] (``tangent_table``): the definition that
-    ``model`` assembles by one contraction per element (a test compares the two)."""
+    """K_uu[du, v] with the tangent d^2 W + p d^2 J tabulated in w["table"] (5, 5, e, q)."""
     r = w.x[0]
     table = np.asarray(w["table"])
     return np.einsum("ab...,a...,b...->...", table, components(du, r), components(v, r)) * 2.0 * np.pi * r

@@ -29,14 +29,18 @@ MAX_RATIO = 2.0
 MIN_STEP = 1e-3
 #: the largest volume a pressure target is sought at (a sheet stretched ~10 times)
 V_MAX = 1e3
+#: Newton's tolerance on the path's states (units R): they only seed the next, and the state returned is
+#: solved to the caller's tolerance from the last (a step below 1e-3 R leaves an error ~1e-6 R)
+PATH_TOL = 1e-3
 
 
 def _volume(v: float) -> Control:
     return Control(volume=lambda pf: (v, 0.0))
 
 
-def _path(model: Model, target_volume: float, tol: float, stop=None):
-    """States along log V up to ``target_volume``; yields (V, y, iterations). ``stop(y)`` ends it early."""
+def _path(model: Model, target_volume: float, tol: float):
+    """States along log V up to ``target_volume``, solved to ``PATH_TOL``; yields (V, y, iterations)."""
+    tol = max(tol, PATH_TOL)
     y = np.zeros(model.size + 1)
     v0 = min(V_START, target_volume)
     y, iterations = solve(model, y, _volume(v0), tol)
@@ -62,7 +66,8 @@ def to_volume(model: Model, volume: float, tol: float) -> tuple[np.ndarray, int]
     total = 0
     for _, y, iterations in _path(model, volume, tol):
         total += iterations
-    return y, total
+    y, iterations = solve(model, y, _volume(volume), tol)
+    return y, total + iterations
 
 
 def to_pressure(model: Model, pressure: float, tol: float) -> tuple[np.ndarray, int]:

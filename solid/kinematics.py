@@ -36,7 +36,10 @@ dC[A] = A^T F + F^T A:
 
 and for the constraint dJ[A] = J dj[A] (cof F = J F^-T), d^2 J[A, B] = J (dj[A] dj[B] + d^2 j[A, B]).
 For the unit components: (A^T B)_{kl} = delta(i_a, i_b) delta(k, j_a) delta(l, j_b), so
-C : (A^T B + B^T A) = 2 delta(i_a, i_b) C_{j_a j_b}, and d^2 j[E_a, E_b] = -Finv_{j_a i_b} Finv_{j_b i_a}.
+C : (A^T B + B^T A) = 2 delta(i_a, i_b) C_{j_a j_b}, d^2 j[E_a, E_b] = -Finv_{j_a i_b} Finv_{j_b i_a}, and
+with dC[E_a] = E_a^T F + F^T E_a, (E_a^T F) : (E_b^T F) = delta(j_a, j_b) (F F^T)_{i_a i_b} and
+(E_a^T F) : (F^T E_b) = F_{i_a j_b} F_{i_b j_a}, so dC[E_a] : dC[E_b] = 2 delta(j_a, j_b) (F F^T)_{i_a i_b}
++ 2 F_{i_a j_b} F_{i_b j_a}.
 
 Every array has its tensor or component indices first, then the quadrature points' shape.
 """
@@ -45,7 +48,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["COMPONENTS", "gradient", "variation", "components", "jacobian", "cofactor", "energy_derivatives",
+__all__ = ["COMPONENTS", "tensor", "gradient", "variation", "components", "jacobian", "cofactor", "energy_derivatives",
            "jacobian_derivatives"]
 
 #: the nonzero components (i, j) of an axisymmetric F or dF
@@ -59,6 +62,12 @@ def _tensor(grad: np.ndarray, hoop: np.ndarray, identity: float) -> np.ndarray:
     for k in range(3):
         out[k, k] += identity
     return out
+
+
+def tensor(components: np.ndarray, identity: float) -> np.ndarray:
+    """identity I + sum_a components[a] E_a (3, 3, ...) from the five components (5, ...): F from those of
+    the displacement's gradient (identity 1), dF from a variation's (identity 0)."""
+    return _tensor(components[:4].reshape((2, 2) + components.shape[1:]), components[4], identity)
 
 
 def gradient(grad: np.ndarray, u_r: np.ndarray, r: np.ndarray) -> np.ndarray:
@@ -106,41 +115,48 @@ def jacobian_derivatives(F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return J * dj, J * (dj[:, None] * dj[None, :] + d2j)
 
 
-def _isochoric(value, first, second, c, J, dj, d2j):
-    with np.errstate(invalid="ignore"):  # J <= 0 (an inverted iterate): NaN, which Newton refuses
-        scale = J ** (-c)
-    d = scale * (first - c * value * dj)
-    dd = scale * (second - c * (first[:, None] * dj[None, :] + dj[:, None] * first[None, :]) - c * value * d2j
-                  + c * c * value * dj[:, None] * dj[None, :])
-    return scale * value, d, dd
-
-
 def energy_derivatives(F: np.ndarray, law) -> tuple[np.ndarray, np.ndarray]:
     """dW (5, ...) and d^2 W (5, 5, ...) of W(Ib1, Ib2) at F, in the components; ``law`` is
-    (I1, I2) -> (W_1, W_2, W_11, W_12, W_22) (``laws.derivatives``)."""
+    (I1, I2) -> (W_1, W_2, W_11, W_12, W_22) (``laws.derivatives``).
+
+    With s_k = J^(-c_k) and the chain rule of the module docstring gathered by term, d^2 W is
+    sum_k W_k s_k (d^2 I_k - c_k (dI_k dj + dj dI_k) - c_k I_k d^2 j + c_k^2 I_k dj dj) + sum_kl W_kl dIb_k dIb_l:
+    five products of (5, 5) arrays instead of one chain per invariant (the W_kl terms skipped where zero)."""
     C = np.einsum("ki...,kj...->ij...", F, F)
     i1 = np.einsum("ij...,ij...->...", F, F)
     i2 = 0.5 * (i1**2 - np.einsum("ij...,ij...->...", C, C))
     FC = np.einsum("ik...,kj...->ij...", F, C)
-    d_i1 = np.array([2.0 * F[i, j] for i, j in COMPONENTS])
-    d_i2 = np.array([2.0 * (i1 * F[i, j] - FC[i, j]) for i, j in COMPONENTS])
-    # dC[E_a] = E_a^T F + F^T E_a: row j_a of the first is F's row i_a, column j_a of the second likewise
-    dC = np.zeros((5,) + C.shape)
-    for a, (i, j) in enumerate(COMPONENTS):
-        dC[a, j, :] += F[i]
-        dC[a, :, j] += F[i]
-    eye = np.eye(5).reshape((5, 5) + (1,) * F[0, 0].ndim)
-    d2_i1 = 2.0 * eye * np.ones_like(i1)
-    same_row = np.array([[float(ia == ib) for ib, _ in COMPONENTS] for ia, _ in COMPONENTS])
-    c_pairs = np.array([[C[ja, jb] for _, jb in COMPONENTS] for _, ja in COMPONENTS])
-    d2_i2 = (d_i1[:, None] * d_i1[None, :] + 2.0 * i1 * eye - np.einsum("aij...,bij...->ab...", dC, dC)
-             - 2.0 * same_row.reshape(same_row.shape + (1,) * i1.ndim) * c_pairs)
+    rows, cols = _INDEX
+    same_row, same_column, eye = (m.reshape((5, 5) + (1,) * i1.ndim) for m in (_SAME_ROW, _SAME_COLUMN, _EYE))
+    d_i1 = 2.0 * F[rows, cols]
+    d_i2 = 2.0 * (i1 * F[rows, cols] - FC[rows, cols])
+    # dC[E_a] : dC[E_b] = 2 delta(j_a, j_b) (F F^T)_{i_a i_b} + 2 F_{i_a j_b} F_{i_b j_a}
+    B = np.einsum("ik...,jk...->ij...", F, F)
+    dc_dc = 2.0 * same_column * B[rows[:, None], rows[None, :]] + 2.0 * F[rows[:, None], cols[None, :]] * F[
+        rows[None, :], cols[:, None]]
+    c_pairs = C[cols[:, None], cols[None, :]]
+    d2_i2 = d_i1[:, None] * d_i1[None, :] + 2.0 * i1 * eye - dc_dc - 2.0 * same_row * c_pairs
     J = jacobian(F)
     dj, d2j = _log_jacobian(F)
-    b1, db1, ddb1 = _isochoric(i1, d_i1, d2_i1, 2.0 / 3.0, J, dj, d2j)
-    b2, db2, ddb2 = _isochoric(i2, d_i2, d2_i2, 4.0 / 3.0, J, dj, d2j)
-    w1, w2, w11, w12, w22 = law(b1, b2)
+    with np.errstate(invalid="ignore"):  # J <= 0 (an inverted iterate): NaN, which Newton refuses
+        s1, s2 = J ** (-2.0 / 3.0), J ** (-4.0 / 3.0)
+    c1, c2 = 2.0 / 3.0, 4.0 / 3.0
+    db1, db2 = s1 * (d_i1 - c1 * i1 * dj), s2 * (d_i2 - c2 * i2 * dj)
+    w1, w2, w11, w12, w22 = law(s1 * i1, s2 * i2)
     first = w1 * db1 + w2 * db2
-    second = (w1 * ddb1 + w2 * ddb2 + w11 * db1[:, None] * db1[None, :]
-              + w12 * (db1[:, None] * db2[None, :] + db2[:, None] * db1[None, :]) + w22 * db2[:, None] * db2[None, :])
+    a1, a2 = w1 * s1, w2 * s2
+    mixed = -(a1 * c1 * d_i1 + a2 * c2 * d_i2)  # the dI_k dj terms
+    second = (2.0 * a1 * eye + a2 * d2_i2 + mixed[:, None] * dj[None, :] + dj[:, None] * mixed[None, :]
+              - (a1 * c1 * i1 + a2 * c2 * i2) * d2j
+              + (a1 * c1 * c1 * i1 + a2 * c2 * c2 * i2) * dj[:, None] * dj[None, :])
+    for w, x, y in ((w11, db1, db1), (w12, db1, db2), (w12, db2, db1), (w22, db2, db2)):
+        if np.any(w):
+            second = second + w * x[:, None] * y[None, :]
     return first, second
+
+
+#: the components' (row, column) indices as arrays, and the (5, 5) masks of equal rows, equal columns, a = b
+_INDEX = (np.array([i for i, _ in COMPONENTS]), np.array([j for _, j in COMPONENTS]))
+_SAME_ROW = (_INDEX[0][:, None] == _INDEX[0][None, :]).astype(float)
+_SAME_COLUMN = (_INDEX[1][:, None] == _INDEX[1][None, :]).astype(float)
+_EYE = np.eye(5)

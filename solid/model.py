@@ -6,8 +6,8 @@ for incompressible elasticity, with errors O(h^2) in u and p in the energy norm 
 Constraints: the clamp r = 1 fixed through the thickness (u = 0), the axis r = 0 (u_r = 0).
 
 ``solid`` returns the residual and the tangent of the rubber alone, ``fluid`` the cavity's volume
-and its first and second derivatives (``forms``); ``problem`` borders them with the fluid and the
-plate (``equations``).
+and its first and second derivatives (the forms of ``forms``, assembled by the contractions of
+``assembly`` on the tables each model keeps); ``equations`` borders them with the fluid and the plate.
 """
 
 from __future__ import annotations
@@ -15,11 +15,9 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
-import scipy.sparse as sp
-from skfem import Basis, ElementQuad1, ElementQuad2, ElementVector, FacetBasis, MeshQuad, asm
+from skfem import Basis, ElementQuad1, ElementQuad2, ElementVector, FacetBasis, MeshQuad
 
-from . import forms
-from . import kinematics as kin
+from . import assembly
 
 __all__ = ["Model", "discretize", "solid", "fluid", "split"]
 
@@ -29,7 +27,8 @@ class Model:
     """The discretised sheet of thickness ``thickness`` (T/R) and rubber ``law`` (``laws.derivatives``, units
     mu_0). ``top_z`` are the vertical displacement dofs of the upper surface's nodes, ordered by their
     Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the same for the
-    mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p])."""
+    mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p]); ``tables``
+    the bases at the quadrature points (``assembly``)."""
 
     mesh: MeshQuad
     thickness: float
@@ -42,6 +41,7 @@ class Model:
     top_z: np.ndarray
     mid_r: np.ndarray
     mid_dofs: np.ndarray
+    tables: assembly.Tables
 
     @property
     def size(self) -> int:
@@ -67,7 +67,8 @@ def discretize(thickness: float, mesh: MeshQuad, law) -> Model:
     free = np.setdiff1d(np.arange(basis_u.N + basis_p.N), fixed)
     top_r, top = _line(basis_u, 0.5 * thickness)
     mid_r, mid = _line(basis_u, 0.0)
-    return Model(mesh, thickness, law, basis_u, basis_p, bottom, free, top_r, top[1], mid_r, mid)
+    return Model(mesh, thickness, law, basis_u, basis_p, bottom, free, top_r, top[1], mid_r, mid,
+                 assembly.tables(basis_u, basis_p, bottom))
 
 
 def split(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -77,33 +78,11 @@ def split(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def solid(model: Model, u: np.ndarray, p: np.ndarray):
-    """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p) (``forms``)."""
-    bu, bp = model.basis_u, model.basis_p
-    uq, pq = bu.interpolate(u), bp.interpolate(p)
-    F = kin.gradient(uq.grad, uq[0], bu.global_coordinates()[0])
-    table = forms.tangent_table(F, np.asarray(pq), model.law)
-    r_u = asm(forms.residual_u(model.law), bu, u=uq, p=pq)
-    r_p = asm(forms.residual_p, bp, u=uq)
-    k_uu = _tangent(bu, table)
-    k_pu = asm(forms.coupling, bu, bp, u=uq)
-    return r_u, r_p, k_uu, k_pu
-
-
-def _tangent(basis: Basis, table: np.ndarray):
-    """K_uu = int dF[phi_j] : T : dF[phi_i] 2 pi r (``forms.tangent_uu``), each element's matrix by one
-    contraction over its basis functions and quadrature points instead of one form call per pair."""
-    r = basis.global_coordinates()[0]
-    comps = np.array([forms.components(phi[0], r) for phi in basis.basis])  # (basis functions, 5, e, q)
-    weight = basis.dx * 2.0 * np.pi * r
-    local = np.einsum("iaeq,abeq,jbeq,eq->eij", comps, table, comps, weight, optimize=True)
-    dofs = basis.element_dofs  # (basis functions, elements)
-    rows = np.broadcast_to(dofs.T[:, :, None], local.shape).ravel()
-    cols = np.broadcast_to(dofs.T[:, None, :], local.shape).ravel()
-    return sp.coo_matrix((local.ravel(), (rows, cols)), shape=(basis.N, basis.N)).tocsr()
+    """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p) (``forms``, assembled by
+    ``assembly``)."""
+    return assembly.solid(model.tables, model.law, u, p)
 
 
 def fluid(model: Model, u: np.ndarray):
     """The cavity's volume V (R^3) under the lower surface, V' (N_u,) and V'' (N_u x N_u) at u."""
-    uq = model.bottom.interpolate(u)
-    return (float(asm(forms.volume, model.bottom, u=uq)), asm(forms.volume_first, model.bottom, u=uq),
-            asm(forms.volume_second, model.bottom, u=uq))
+    return assembly.fluid(model.tables, u)

@@ -137,16 +137,29 @@ def test_the_jacobian_is_the_derivative_of_the_residual(contact):
     np.testing.assert_allclose(exact, quotient, rtol=1e-5, atol=1e-6 * np.abs(exact).max())
 
 
-def test_the_element_contraction_is_the_tangent_form():
-    """``model``'s tangent, one contraction per element, equals scikit-fem's assembly of ``forms.tangent_uu``."""
-    from pocket.solid import forms
+@pytest.mark.parametrize("name", ["gent", "mooney-rivlin"])
+def test_the_vectorised_assembly_is_the_skfem_forms(name):
+    """``assembly``'s contractions (R_u, R_p, K_uu, K_pu; V, V', V'') equal scikit-fem's assembly of the weak
+    forms of ``forms`` they replace, at a random displacement and pressure: the same sums over the same
+    quadrature points in another order, so to round-off (1e-12 of the largest entry)."""
+    from pocket.solid import assembly, forms
     from skfem import asm
 
     t = 0.05
-    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(_material("gent")))
+    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(_material(name)))
     rng = np.random.default_rng(3)
-    uq = m.basis_u.interpolate(1e-4 * rng.standard_normal(m.basis_u.N))  # small: J > 0 everywhere
+    u = 1e-3 * rng.standard_normal(m.basis_u.N)  # gradients ~ 1e-3 / (node spacing 0.0125) << 1: J > 0
+    p = 0.1 * rng.standard_normal(m.basis_p.N)
+    uq, pq = m.basis_u.interpolate(u), m.basis_p.interpolate(p)
     F = kin.gradient(uq.grad, uq[0], m.basis_u.global_coordinates()[0])
-    table = forms.tangent_table(F, np.asarray(m.basis_p.interpolate(0.1 * rng.standard_normal(m.basis_p.N))), m.law)
-    reference = asm(forms.tangent_uu, m.basis_u, table=table)
-    assert abs(model._tangent(m.basis_u, table) - reference).max() <= 1e-12 * abs(reference).max()
+    table = kin.energy_derivatives(F, m.law)[1] + np.asarray(pq) * kin.jacobian_derivatives(F)[1]
+    fq = m.bottom.interpolate(u)
+    reference = (asm(forms.residual_u(m.law), m.basis_u, u=uq, p=pq), asm(forms.residual_p, m.basis_p, u=uq),
+                 asm(forms.tangent_uu, m.basis_u, table=table), asm(forms.coupling, m.basis_u, m.basis_p, u=uq),
+                 asm(forms.volume, m.bottom, u=fq), asm(forms.volume_first, m.bottom, u=fq),
+                 asm(forms.volume_second, m.bottom, u=fq))
+    names = ("R_u", "R_p", "K_uu", "K_pu", "V", "V'", "V''")
+    for key, fast, slow in zip(names, assembly.solid(m.tables, m.law, u, p) + assembly.fluid(m.tables, u),
+                               reference, strict=True):
+        difference = abs(fast - slow).max()
+        assert np.isfinite(difference) and difference <= 1e-12 * abs(slow).max(), (key, difference, abs(slow).max())
