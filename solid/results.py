@@ -7,11 +7,10 @@ lower surface (the fluid's). The profile is the mid-surface's, its tensions the 
 stress resultants (``post``). Extra keys: ``height_mid`` (the mid-surface's pole height),
 ``volume_mid`` (the volume under the mid-surface, from its own flat plane: equal to ``volume`` up
 to the discrete incompressibility, for the sheet between them keeps its volume), the mesh and the
-iterations, and three measures of det F - 1 (``post``): ``incompressibility_weak`` (the residual of
+iterations, and two measures of det F - 1 (``post``): ``incompressibility_weak`` (the residual of
 Taylor-Hood's constraint int q (J - 1) dV = 0, max over the bilinear pressures q of |int q (J - 1) dV| /
-int q dV: at the Newton tolerance), ``incompressibility`` (the largest |det F - 1| at the quadrature
-points: ~0.4 at the clamp's singular corners) and ``incompressibility_mean`` (int |det F - 1| dV / int dV,
-falling under mesh refinement).
+int q dV: at the Newton tolerance) and ``incompressibility`` (the largest |det F - 1| at the quadrature
+points: ~0.4 at the clamp's singular corners, a discretisation error).
 
 Contact on the plate: the contact edge lies between the outermost node of the active set and the next
 node, which is free. Beyond the edge the sheet leaves the plate tangentially, its gap to the plate
@@ -54,7 +53,7 @@ def _profile(f, contact: np.ndarray) -> Profile:
 
 def _extra(model: Model, f, iterations: int) -> dict:
     return {"height_mid": float(f.eta[0]), "volume_mid": f.volume_mid, "incompressibility": f.incompressibility,
-            "incompressibility_weak": f.incompressibility_weak, "incompressibility_mean": f.incompressibility_mean,
+            "incompressibility_weak": f.incompressibility_weak,
             "thickness_ratio": model.thickness, "elements": model.mesh.t.shape[1] // _layers(model),
             "layers": _layers(model), "iterations": iterations}
 

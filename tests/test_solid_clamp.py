@@ -4,8 +4,9 @@ The upper surface beside the clamp lies on the inside of the sheet's bend there;
 much shorter than the thickness its node beside the corner sank below the corner (the discrete surface
 folded), det F in the corner element spread over 0.2 to 2.9, and Newton cycled there. The inflation
 below stalled with the former corner mesh (elements 0.15 T long and high: four layers) at Phat = 0.84
-(64 elements) and, after 30 s of halving, below Phat = 1 (16 elements); it must now converge unfolded. What the regularisation costs is
-measured against corner elements twice as long: a fraction of the membrane's own O(T/R) difference.
+(64 elements) and, after 30 s of halving, below Phat = 1 (16 elements); it must now converge unfolded.
+What the regularisation costs is measured against corner elements twice as long: a fraction of the
+membrane's own O(T/R) difference.
 """
 
 import numpy as np
