@@ -27,6 +27,8 @@ __all__ = ["fluid_control", "first_contact", "to_force", "to_height", "MAX_FORCE
 MAX_FORCE_STEP = 0.25
 #: the plate's first travel, in thicknesses, under height control (``to_force``)
 FIRST_TRAVEL = 0.05
+#: the largest travel of one step under height control, in thicknesses
+MAX_TRAVEL = 1.0
 #: the smallest step, as a fraction of the first, before the path is declared lost
 MIN_FRACTION = 1e-3
 
@@ -51,9 +53,11 @@ def first_contact(model: Model, y_inflated: np.ndarray, fill: Control) -> tuple[
     return y, dataclasses.replace(fill, active=np.array([0]), force=0.0)
 
 
-def _march(model, y, control, key, target, step, tol):
-    """From the state y of ``control``, the state at ``control.<key> = target`` in steps of at most ``step``."""
+def _march(model, y, control, key, target, step, tol, largest=None):
+    """From the state y of ``control``, the state at ``control.<key> = target``: the first step ``step``, each
+    next 1.5 times the last that converged, at most ``largest`` (default ``step``), halved when one fails."""
     value, total, first = getattr(control, key), 0, step
+    largest = step if largest is None else largest
     while value < target if target > value else value > target:
         delta = np.sign(target - value) * min(step, abs(target - value))
         try:
@@ -65,7 +69,7 @@ def _march(model, y, control, key, target, step, tol):
                 raise
             continue
         y, control, value, total = new, new_control, value + delta, total + iterations
-        step = min(first, 1.5 * step)
+        step = min(largest, 1.5 * step)
     return y, control, total
 
 
@@ -87,10 +91,12 @@ def to_force(model: Model, y: np.ndarray, control: Control, force: float, unit: 
 
 def to_height(model: Model, y: np.ndarray, control: Control, height: float, tol: float):
     """The state with the plate at ``height`` (R) from the state y of ``control``: first the control turned
-    to the plate's height where it is, then the height marched in steps of at most ``FIRST_TRAVEL``
+    to the plate's height where it is, then the height marched from a first step of ``FIRST_TRAVEL``
     thicknesses (the first travel in one step: in ten, the 10-force headline curve took 136 Newton iterations,
-    in one 110, to the same states)."""
+    in one 110, to the same states), growing to at most ``MAX_TRAVEL`` thicknesses (about the travel of a
+    force step of ``MAX_FORCE_STEP`` near Fhat = 1 on the headline pocket; held at the first step, a travel
+    of 12 T took 240 steps)."""
     start = float(y[model.size + 1])
     control = dataclasses.replace(control, force=None, height=start)
-    return _march(model, y, control, "height", height, min(abs(start - height), FIRST_TRAVEL * model.thickness)
-                  + 1e-12, tol)
+    first = min(abs(start - height), FIRST_TRAVEL * model.thickness) + 1e-12
+    return _march(model, y, control, "height", height, first, tol, largest=max(first, MAX_TRAVEL * model.thickness))

@@ -179,7 +179,8 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
 
 
 def forces(pocket: Pocket) -> list[float]:
-    """The case's loads as forces Fhat (heights of the indenter's lowest point solved for their force).
+    """The case's loads as forces Fhat (heights of the indenter's lowest point solved for their force: by the
+    solver's ``compress_height`` where its record lists it, else by a search on its forces, ``force_where``).
 
     A height above the inflated pocket, or below the lowest the model reaches, or a force past the
     end of the model's range (``pocket.apps.rangeend``), is an ``OutOfRangeError`` quoting the load as the
@@ -191,6 +192,7 @@ def forces(pocket: Pocket) -> list[float]:
         return [check_force(pocket, key, given, _inside(key, quote(given), "Fhat = F / (P_I pi R^2)",
                                                         f / pocket.force_scale_N)) for key, given, f in keys]
     solver, options = pocket.solver(), pocket.options()
+    travel = solver.serves("compress_height")  # the solver holds the height itself: one solve, not a search
     inflate = entry(solver, "inflate", "loads.heights")
     top = inflate(pocket.material, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
     out = []
@@ -200,8 +202,12 @@ def forces(pocket: Pocket) -> list[float]:
             raise OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket (H0 = "
                                   f"{written_like(top, given, 'length')}): the {_pressing(case)} would not touch it")
         try:
-            out.append(force_where(solver, pocket.material, pocket.pressure_initial, "height", height / case.radius,
-                                   increasing=False, **options))
+            if travel:
+                out.append(entry(solver, "compress_height", "loads.heights")(
+                    pocket.material, pocket.pressure_initial, height / case.radius, **options).force)
+            else:
+                out.append(force_where(solver, pocket.material, pocket.pressure_initial, "height",
+                                       height / case.radius, increasing=False, **options))
         except OutOfRangeError:
             raise _height_error(pocket, index, top) from None
     return out
