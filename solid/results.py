@@ -26,9 +26,9 @@ node (the contact acts on the nodes only, so between them the discrete surface m
 below the plate, and the last active node often carries a small force: the continuum's edge can lie
 before it). Measured under the plate at Fhat = 0.5 (alpha = 47/160) from 32 to 256 elements
 (``benchmarks/solid_contact_edge.py``): the exponent fitted through three free nodes is 1.5 to 2.1;
-this estimate spreads by about +-1.3e-3 R at T/R = 0.0125 (Phat_I 0.32) and +-6e-4 R at T/R = 0.08
-(Phat_I 0.05), the outermost active node by +-5e-3 R and +-2.5e-3 R: about 1 % in A_c at the
-default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper surface's at r_c, the
+this estimate spreads by about +-1.4e-3 R at T/R = 0.0125 (Phat_I 0.32) and +-4.5e-4 R at T/R = 0.08
+(Phat_I 0.05) on four layers, while the outermost active node spread by +-5e-3 R and +-2.5e-3 R (two
+layers): about 1 % in A_c at the default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper surface's at r_c, the
 contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact forces
 (``extra["reaction"]``, Fhat).
 """
