@@ -201,7 +201,10 @@ def _thickness_blocks(results, figs) -> list:
                   "membrane's answer. The fluid's volume is under the solid's lower surface; the membrane's under "
                   "its mid-surface, which for an incompressible sheet is the same volume to first order in T/R "
                   "(the thinned sheet's offset, int lambda_3 T/2 dA, is exactly the T/2 by which the lower clamp "
-                  "plane lies lower). The checks are informational: a model's error is a property of the model."),
+                  "plane lies lower): the rows 'V (membrane's lower surface)' show that the membrane's volume under "
+                  "its lower surface removes almost none of the difference, which comes from the clamp, where the "
+                  "solid bends over a few thicknesses and the membrane's slope jumps. The checks are "
+                  "informational: a model's error is a property of the model."),
             ("p", "Verdict, where the membrane is within 1 % of the solid:"),
             ("list", thickness.verdict(comparisons)),
             ("p", f"Slope of log(largest error) against log(T/R) over the four samples: {slopes} (each sample at "

@@ -205,5 +205,6 @@ def figure(comparisons) -> Figure:
                   f"(a) inflated, (b) pressed by the plate at F/(P_I pi R^2) = {forces}; the solid "
                   "(pocket.solid, an incompressible axisymmetric solid of the sheet's cross-section) is the "
                   "reference. Heights 'mid-surface' compare like with like; 'upper surface' adds lambda_3 T / 2 to "
-                  "the membrane (what a plate meets). Dotted horizontal line: 1 %; dashed: a slope-1 guide.",
+                  "the membrane (what a plate meets); the membrane's lower-surface volume lies on its V. Dotted "
+                  "horizontal line: 1 %; dashed: a slope-1 guide.",
                   tuple(panels))
