@@ -14,10 +14,10 @@ points: ~0.4 at the clamp's singular corners, a discretisation error).
 
 Contact on the plate: the contact edge lies between the outermost node of the active set and the next
 node, which is free. Beyond the edge the sheet leaves the plate tangentially, its gap to the plate
-growing as g ~ (r - r_c)^2 where its tension bends it (the membrane's edge, whose curvature jumps
-there) and as (r - r_c)^(3/2) very close to the edge, where the solid is locally a half-space (the
-Hertz asymptotics). So with exponent ``GAP_EXPONENT`` = 2, g^(1/2) is linear in r beyond the edge, and
-the two free nodes beyond the active set, with gaps g_1 and g_2 at r_1 and r_2, place the edge at
+growing as g ~ (r - r_c)^2 where its tension bends it (the membrane's edge, whose curvature jumps there)
+and as (r - r_c)^(3/2) very close to the edge, where the solid is locally a half-space (the Hertz
+asymptotics). So with exponent ``GAP_EXPONENT`` = 2, g^(1/2) is linear in r beyond the edge, and the two
+free nodes beyond the active set, with gaps g_1 and g_2 at r_1 and r_2, place the edge at
 
     r_c = r_1 - g_1^(1/2) (r_2 - r_1) / (g_2^(1/2) - g_1^(1/2)),
 
@@ -25,12 +25,12 @@ kept within a node of the active set's edge: between the last active node but on
 node (the contact acts on the nodes only, so between them the discrete surface may sit a little above or
 below the plate, and the last active node often carries a small force: the continuum's edge can lie
 before it). Measured under the plate at Fhat = 0.5 (alpha = 47/160) from 32 to 256 elements
-(``benchmarks/solid_contact_edge.py``): the exponent fitted through three free nodes is 1.5 to 2.1;
-this estimate spreads by about +-1.4e-3 R at T/R = 0.0125 (Phat_I 0.32) and +-4.5e-4 R at T/R = 0.08
-(Phat_I 0.05) on four layers, while the outermost active node spread by +-5e-3 R and +-2.5e-3 R (two
-layers): about 1 % in A_c at the default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper surface's at r_c, the
-contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact forces
-(``extra["reaction"]``, Fhat).
+(``benchmarks/solid_contact_edge.py``): the exponent fitted through three free nodes is 1.5 to 2.1; this
+estimate spreads by about +-1.4e-3 R at T/R = 0.0125 (Phat_I 0.32) and +-4.5e-4 R at T/R = 0.08 (Phat_I
+0.05) on four layers, while the outermost active node spread by +-5e-3 R and +-2.5e-3 R (two layers):
+about 1 % in A_c at the default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper
+surface's at r_c, the contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact
+forces (``extra["reaction"]``, Fhat).
 """
 
 from __future__ import annotations

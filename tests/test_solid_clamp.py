@@ -11,11 +11,11 @@ membrane's own O(T/R) difference.
 
 import numpy as np
 import pytest
+from pocket.solid import inflation, laws, mesh, model
+from pocket.solid.post import fields
 
 from pocket import shooting
 from pocket.core.materials import mooney_rivlin
-from pocket.solid import inflation, laws, mesh, model
-from pocket.solid.post import fields
 
 T = 0.0125
 

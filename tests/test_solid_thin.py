@@ -1,11 +1,11 @@
 """The solid tends to the membrane as T/R -> 0, at first order; and its own mesh convergence.
 
-Exact answers: the membrane (``pocket.shooting``, an independent solver) is the solid's limit as
-T/R -> 0, and a membrane of finite thickness differs from the continuum by O(T/R): the clamp's
-boundary layer, a few T wide, where the solid bends and the membrane's slope jumps, shifts the whole
-profile by O(T/R) (where the fluid's surface lies is a second-order matter: ``pocket.core.offset``).
-The fitted slope of log|solid / membrane - 1| against log(T/R) over T/R = 0.04, 0.02, 0.01 is printed
-and must be near 1. Mesh convergence: successive differences of the inflated state's scalars under halving fall at a fitted
+Exact answers: the membrane (``pocket.shooting``, an independent solver) is the solid's limit as T/R ->
+0, and a membrane of finite thickness differs from the continuum by O(T/R): the clamp's boundary layer,
+a few T wide, where the solid bends and the membrane's slope jumps, shifts the whole profile by O(T/R)
+(where the fluid's surface lies is a second-order matter: ``pocket.core.offset``). The fitted slope of
+log|solid / membrane - 1| against log(T/R) over T/R = 0.04, 0.02, 0.01 is printed and must be near 1.
+Mesh convergence: successive differences of the inflated state's scalars under halving fall at a fitted
 order (printed).
 """
 
