@@ -49,7 +49,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["COMPONENTS", "tensor", "gradient", "variation", "components", "jacobian", "cofactor", "energy_derivatives",
-           "jacobian_derivatives"]
+           "jacobian_derivatives", "log_jacobian_derivatives"]
 
 #: the nonzero components (i, j) of an axisymmetric F or dF
 COMPONENTS = ((0, 0), (0, 1), (1, 0), (1, 1), (2, 2))
@@ -100,8 +100,8 @@ def cofactor(F: np.ndarray) -> np.ndarray:
     return out
 
 
-def _log_jacobian(F):
-    """dj (5, ...) and d^2 j (5, 5, ...) of j = ln J, and Finv."""
+def log_jacobian_derivatives(F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """dj (5, ...) and d^2 j (5, 5, ...) of j = ln J, in the components."""
     inverse = np.swapaxes(cofactor(F), 0, 1) / jacobian(F)
     dj = np.array([inverse[j, i] for i, j in COMPONENTS])
     d2j = np.array([[-inverse[ja, ib] * inverse[jb, ia] for ib, jb in COMPONENTS] for ia, ja in COMPONENTS])
@@ -111,17 +111,20 @@ def _log_jacobian(F):
 def jacobian_derivatives(F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """dJ (5, ...) and d^2 J (5, 5, ...) in the components."""
     J = jacobian(F)
-    dj, d2j = _log_jacobian(F)
+    dj, d2j = log_jacobian_derivatives(F)
     return J * dj, J * (dj[:, None] * dj[None, :] + d2j)
 
 
 def energy_derivatives(F: np.ndarray, law) -> tuple[np.ndarray, np.ndarray]:
     """dW (5, ...) and d^2 W (5, 5, ...) of W(Ib1, Ib2) at F, in the components; ``law`` is
-    (I1, I2) -> (W_1, W_2, W_11, W_12, W_22) (``laws.derivatives``).
+    (I1, I2) -> (W_1, W_2, W_11, W_12, W_22) (``laws.derivatives``), or a law of the principal stretches
+    (``stretches.Ogden``), which has its own ``energy_derivatives(F)``.
 
     With s_k = J^(-c_k) and the chain rule of the module docstring gathered by term, d^2 W is
     sum_k W_k s_k (d^2 I_k - c_k (dI_k dj + dj dI_k) - c_k I_k d^2 j + c_k^2 I_k dj dj) + sum_kl W_kl dIb_k dIb_l:
     five products of (5, 5) arrays instead of one chain per invariant (the W_kl terms skipped where zero)."""
+    if hasattr(law, "energy_derivatives"):
+        return law.energy_derivatives(F)
     C = np.einsum("ki...,kj...->ij...", F, F)
     i1 = np.einsum("ij...,ij...->...", F, F)
     i2 = 0.5 * (i1**2 - np.einsum("ij...,ij...->...", C, C))
@@ -137,7 +140,7 @@ def energy_derivatives(F: np.ndarray, law) -> tuple[np.ndarray, np.ndarray]:
     c_pairs = C[cols[:, None], cols[None, :]]
     d2_i2 = d_i1[:, None] * d_i1[None, :] + 2.0 * i1 * eye - dc_dc - 2.0 * same_row * c_pairs
     J = jacobian(F)
-    dj, d2j = _log_jacobian(F)
+    dj, d2j = log_jacobian_derivatives(F)
     with np.errstate(invalid="ignore"):  # J <= 0 (an inverted iterate): NaN, which Newton refuses
         s1, s2 = J ** (-2.0 / 3.0), J ** (-4.0 / 3.0)
     c1, c2 = 2.0 / 3.0, 4.0 / 3.0

@@ -21,10 +21,13 @@ yeoh           C10 + 2 C20 x + 3 C30 x^2, 0            2 C20 + 6 C30 x, 0, 0
 gent           (mu / 2) / (1 - x / Jm), 0              (mu / 2) / (Jm (1 - x / Jm)^2), 0, 0
 =============  =====================================  ==========================================
 
-The Ogden law is a sum over the principal stretches, not a function of I1 and I2: the solid
-has no kernel for it, and refuses it in one line (``derivatives``). A test compares these
-derivatives with finite differences of ``pocket.core.materials.energy`` along uniaxial and
-equibiaxial paths.
+The Ogden law is a sum over the principal stretches, not a function of I1 and I2:
+``derivatives`` gives it as a ``stretches.Ogden``, which differentiates W in F's components
+through the isochoric principal stretches.
+
+A test compares the invariant laws' derivatives with finite differences of
+``pocket.core.materials.energy`` along uniaxial and equibiaxial paths; another, Ogden's with
+finite differences of its energy in F.
 """
 
 from __future__ import annotations
@@ -33,6 +36,8 @@ import numpy as np
 
 from pocket.core.errors import InputError
 from pocket.core.materials import Material
+
+from .stretches import Ogden
 
 __all__ = ["derivatives", "LAWS"]
 
@@ -65,9 +70,13 @@ LAWS = {"mooney-rivlin": _mooney_rivlin, "neo-hookean": _neo_hookean, "yeoh": _y
 
 def derivatives(material: Material):
     """The function (I1, I2) -> (W_1, W_2, W_11, W_12, W_22) of ``material`` (arrays broadcast; the
-    unit of its stresses); a one-line InputError for a law the solid has no kernel for."""
+    unit of its stresses), or for the Ogden law its ``stretches.Ogden``; a one-line InputError for a law
+    the solid has no kernel for."""
+    if material.law == "ogden":
+        params = dict(material.params)
+        return Ogden(tuple(params["mu"]), tuple(params["exponents"]))
     if material.law not in LAWS:
-        raise InputError(f"material = {material.law!r}: the solid solver has the laws {', '.join(LAWS)} "
-                         "(functions of I1 and I2), not this one")
+        raise InputError(f"material = {material.law!r}: the solid solver has the laws ogden, {', '.join(LAWS)}, "
+                         "not this one")
     law, params = LAWS[material.law], dict(material.params)
     return lambda i1, i2: law(params, np.asarray(i1) - 3.0, np.asarray(i2) - 3.0)
