@@ -32,6 +32,8 @@ finite differences of its energy in F.
 
 from __future__ import annotations
 
+from typing import cast
+
 import numpy as np
 
 from pocket.core.errors import InputError
@@ -73,10 +75,10 @@ def derivatives(material: Material):
     unit of its stresses), or for the Ogden law its ``stretches.Ogden``; a one-line InputError for a law
     the solid has no kernel for."""
     if material.law == "ogden":
-        params = dict(material.params)
-        return Ogden(tuple(params["mu"]), tuple(params["exponents"]))
+        params = dict(material.params)  # the listed parameters are tuples (``Material``)
+        return Ogden(cast(tuple, params["mu"]), cast(tuple, params["exponents"]))
     if material.law not in LAWS:
-        raise InputError(f"material = {material.law!r}: the solid solver has the laws ogden, {', '.join(LAWS)}, "
-                         "not this one")
+        raise InputError(f"the solid solver has no kernel for the {material.law} law (it has "
+                         f"{', '.join(LAWS)}, ogden)")
     law, params = LAWS[material.law], dict(material.params)
     return lambda i1, i2: law(params, np.asarray(i1) - 3.0, np.asarray(i2) - 3.0)

@@ -119,7 +119,7 @@ class Ogden:
         J = kin.jacobian(F)
         dj, d2j = kin.log_jacobian_derivatives(F)
         djdj = dj[:, None] * dj[None, :]
-        first, second = 0.0, 0.0
+        first, second = np.zeros_like(dj), np.zeros_like(d2j)
         with np.errstate(invalid="ignore"):  # J <= 0 (an inverted iterate): NaN, which Newton refuses
             for mu, a in zip(self.mu, self.exponents, strict=True):
                 S, dS, d2S = _stretch_sum(a, F, c, n, m)

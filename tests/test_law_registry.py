@@ -11,10 +11,11 @@ from pocket.fem import laws as fem_laws
 from pocket.fem import material as fem_material
 from pocket.shooting import laws as shooting_laws
 from pocket.shooting.tensions import GENT, YEOH, tensions, tensions_compiled
+from pocket.solid import laws as solid_laws
 from test_fem_laws import check_derivatives
 from test_shooting_laws import check_tensions
 
-from pocket import fem, shooting
+from pocket import fem, shooting, solid
 from pocket.cli import main
 from pocket.core.errors import InputError
 from pocket.core.materials import LAWS, Parameter, RubberLaw, check, register
@@ -47,20 +48,21 @@ def toy():
 
 
 def test_a_law_the_solvers_lack_is_refused_in_one_line_naming_the_law_and_the_solver(toy):
-    """Both solvers' tables lack the toy law: their kernels and entry points answer an InputError naming it
+    """The solvers' tables lack the toy law: their kernels and entry points answer an InputError naming it
     and the solver, never another law's numbers."""
-    for law_of, solver in ((shooting_laws.law_of, "shooting"), (fem_material.law_of, "finite-element")):
+    for law_of, solver in ((shooting_laws.law_of, "shooting"), (fem_material.law_of, "finite-element"),
+                           (solid_laws.derivatives, "solid")):
         with pytest.raises(InputError, match=f"the {solver} solver has no kernel for the toy law") as err:
             law_of(toy)
         assert "\n" not in str(err.value)
-    for call in (lambda: shooting.inflate(toy, 0.1), lambda: fem.inflate(toy, 0.1)):
+    for call in (lambda: shooting.inflate(toy, 0.1), lambda: fem.inflate(toy, 0.1), lambda: solid.inflate(toy, 0.1)):
         with pytest.raises(InputError, match="no kernel for the toy law"):
             call()
 
 
 def test_the_command_line_answers_a_law_a_solver_lacks_in_one_line_exit_2(toy, capsys):
     """``--law toy`` is offered (the choices come from the registry) and refused by each solver, exit 2."""
-    for solver, name in (("shooting", "shooting"), ("fem", "finite-element")):
+    for solver, name in (("shooting", "shooting"), ("fem", "finite-element"), ("solid", "solid")):
         status = main(["inflate", "--law", "toy", "--mu", "1", "--k", "0.5", "--pressure", "0.1",
                        "--solver", solver])
         out, err = capsys.readouterr()

@@ -190,7 +190,7 @@ def test_bad_input_is_one_line_and_exit_2(flags, text, capsys):
 
 
 def test_bad_input_in_python_before_any_work():
-    """The same checks from Python: InputError, one line, naming the keyword; the Ogden law refused."""
+    """The same checks from Python: InputError, one line, naming the keyword; the sphere refused."""
     for kwargs in ({"thickness_ratio": 0.0}, {"thickness_ratio": 0.7}, {"layers": 1}):
         with pytest.raises(InputError) as err:
             solid.inflate(0.3, 0.31, **kwargs)
