@@ -18,7 +18,8 @@ which equal I1, I2 at J = 1 (so W is the law's energy there) and do not change u
 volume: the volume is the constraint's alone (``forms``). Evaluated at I1, I2 instead, W would
 have a concave volumetric part (3 C1 (J^(2/3) - 1) under F = s I), which Taylor-Hood's
 constraint, J = 1 only against bilinear pressures, does not control at the clamp's singular
-corners: elements there folded and Newton stalled.
+corners: elements there folded and Newton stalled. The Ogden law, a function of the principal
+stretches, is evaluated at the isochoric stretches J^(-1/3) l_i for the same reason (``stretches``).
 
 Derivatives, with j = ln J (dj[A] = tr(F^-1 A), d^2 j[A, B] = -tr(F^-1 B F^-1 A)) and
 dC[A] = A^T F + F^T A:
