@@ -3,8 +3,8 @@
 Converged when the largest displacement increment is below ``tol`` (units R) and the largest
 residual of the rubber's rows is below ``tol`` times the fluid's force scale (p_f + 1e-3) t: Newton
 converges quadratically here, so the last increment bounds the error. The active set (``contact``)
-is updated between Newton solves: a node whose force lambda_k < 0 leaves it, a free node above the
-plate (z_k > h) joins it, until neither happens.
+is updated between Newton solves: a node whose force lambda_k < 0 leaves it, a free node inside the
+indenter (its gap g_k < 0, ``contact``) joins it, until neither happens.
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ import scipy.sparse.linalg as spl
 
 from pocket.core.errors import ConvergenceError
 
+from .contact import gaps
 from .equations import Control, system
 from .model import Model
 
@@ -107,12 +108,12 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     for sweep in range(MAX_SWEEPS):
         y, iterations = solve(model, y, control, step if sweep < MAX_SWEEPS - 1 else tol)
         total += iterations
-        active, lam, h = np.asarray(control.active), y[size + 2:], y[size + 1]
-        z = 0.5 * model.thickness + y[model.top_z]
+        active, lam = np.asarray(control.active), y[size + 2:]
+        gap = gaps(model, control.surface, y)
         keep = lam >= 0.0
         if not keep.any():
             keep[np.argmax(lam)] = True
-        joining = np.setdiff1d(np.flatnonzero(z > h + loose), active)
+        joining = np.setdiff1d(np.flatnonzero(gap < -loose), active)
         if keep.all() and joining.size == 0:
             if step <= tol:
                 return y, control, total
