@@ -4,16 +4,17 @@ The sheet's cross-section, r in [0, R] by the thickness T, as an incompressible 
 solid: Taylor-Hood quadrilaterals (biquadratic displacement, bilinear pressure) on scikit-fem,
 the rubber's own strain energy W(I1, I2) (``laws``), the clamp r = R fixed through the thickness.
 The fluid presses on the lower surface as a follower load, its pressure the multiplier of the
-cavity's volume (a liquid keeps it; a gas follows the polytropic law); the flat frictionless plate
-touches the upper surface's nodes through Lagrange multipliers on an active set, without a penalty
-error. States in the membrane solvers' units (lengths / R, Phat = P R / (E T), E = 3 mu_0), key by
-key comparable: their difference is the membrane's modelling error, O(T/R).
+cavity's volume (a liquid keeps it; a gas follows the polytropic law); the frictionless indenter
+(the flat plate or a sphere) touches the upper surface's nodes through Lagrange multipliers on an
+active set, without a penalty error. States in the membrane solvers' units (lengths / R, Phat =
+P R / (E T), E = 3 mu_0), key by key comparable: their difference is the membrane's modelling
+error, O(T/R).
 
 Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``mesh`` (the
 cross-section), ``forms`` (weak forms), ``assembly`` (their vectorised assembly), ``model`` (bases
-and constraints), ``equations`` (the bordered system), ``newton`` (Newton, active set),
-``inflation`` and ``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry
-points). ``SOLVER`` is its record.
+and constraints), ``contact`` (the indenter's gap and its derivatives), ``equations`` (the bordered
+system), ``newton`` (Newton, active set), ``inflation`` and ``compression`` (the load paths),
+``results`` (the states) and ``api`` (the entry points). ``SOLVER`` is its record.
 """
 
 import importlib

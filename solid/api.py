@@ -82,7 +82,8 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
                       tol=1e-10):
     """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
     before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); indenter None
-    (the flat plate) or ``pocket.core.indenters.sphere(K)``. Options as ``inflate``; ``progress(done, total)`` after each force."""
+    (the flat plate) or ``pocket.core.indenters.sphere(K)``. Options as ``inflate``; ``progress(done, total)``
+    after each force."""
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")

@@ -89,7 +89,8 @@ def to_force(model: Model, y: np.ndarray, control: Control, force: float, unit: 
     if control.force == 0.0:
         travel = FIRST_TRAVEL * model.thickness
         y, control, total = to_height(model, y, control, float(y[model.size + 1]) - travel, tol)
-        control = dataclasses.replace(control, height=None, force=force_of(model, control.surface, y, control.active))
+        pushed = force_of(model, control.surface, y, np.asarray(control.active))
+        control = dataclasses.replace(control, height=None, force=pushed)
     y, control, iterations = _march(model, y, control, "force", force, MAX_FORCE_STEP * unit, tol)
     return y, control, total + iterations
 

@@ -47,6 +47,7 @@ class Surface:
             grad = np.zeros((z.size, 2))
             grad[:, 1] = -1.0
             return h - z, grad, None
+        assert rho is not None  # a sphere's gap needs the radii (``_nodes``)
         d_rho, d_z = rho, z - (h + self.radius)
         d = np.hypot(d_rho, d_z)
         n = np.stack([d_rho / d, d_z / d], axis=1)

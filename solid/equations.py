@@ -18,8 +18,9 @@ node k; on a sphere the distance to its surface), the equations are its stationa
                                           plate dg_k/dh = 1), or
               h - H = 0                  (height control).
 
-The contact's terms, with a sphere's curvature, are derived in ``contact``. Without contact the plate's height is not an unknown (the vector stops at p_f). The Jacobian is the
-bordered matrix of these rows; the clamp's and the axis's dofs are removed (``Model.free``).
+The contact's terms, with a sphere's curvature, are derived in ``contact``. Without contact the plate's
+height is not an unknown (the vector stops at p_f). The Jacobian is the bordered matrix of these rows; the
+clamp's and the axis's dofs are removed (``Model.free``).
 """
 
 from __future__ import annotations

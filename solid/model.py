@@ -26,9 +26,9 @@ __all__ = ["Model", "discretize", "solid", "fluid", "split"]
 class Model:
     """The discretised sheet of thickness ``thickness`` (T/R) and rubber ``law`` (``laws.derivatives``, units
     mu_0). ``top_z`` and ``top_radial`` are the vertical and radial displacement dofs of the upper surface's
-    nodes, ordered by their Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the same for the
-    mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p]); ``tables``
-    the bases at the quadrature points (``assembly``)."""
+    nodes, ordered by their Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the
+    same for the mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p]);
+    ``tables`` the bases at the quadrature points (``assembly``)."""
 
     mesh: MeshQuad
     thickness: float

@@ -34,9 +34,9 @@ forces (``extra["reaction"]``, Fhat).
 
 Under a sphere of radius K (``contact``) the same, with the gaps to the sphere and the meanings of the
 membrane solvers: ``height`` the sphere's lowest point h, ``contact_area`` the curved area in contact
-over pi R^2, 2 K z(rho_c) (``cap_area``), ``contact_radius_deformed`` rho_c, ``stretch_contact`` the pole's stretch (the zone is
-not uniform), and the reaction the
-vertical part of the contact forces, sum_k lambda_k (-n_z,k).
+over pi R^2, 2 K z(rho_c) (``cap_area``), ``contact_radius_deformed`` rho_c, ``stretch_contact`` the
+pole's stretch (the zone is not uniform), and the reaction the vertical part of the contact forces,
+sum_k lambda_k (-n_z,k).
 """
 
 from __future__ import annotations
@@ -128,11 +128,12 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     r_c = contact_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
     area = rho_c**2 if surface.radius is None else cap_area(surface.radius, rho_c)
+    stretch = float(np.interp(r_c, f.r, f.stretch_2) if surface.radius is None else f.stretch_1[0])
     height = float(y[model.size + 1])
     extra = {**_extra(model, f, iterations), "reaction": reaction}
     return CompressedState(
         material=material, pressure_initial=start.pressure, force=reaction if force is None else force,
         pressure=phat, pressure_ratio=phat / start.pressure, contact_area=area, contact_radius=r_c,
-        stretch_contact=float(np.interp(r_c, f.r, f.stretch_2) if surface.radius is None else f.stretch_1[0]), height=height, height_ratio=height / start.height,
+        stretch_contact=stretch, height=height, height_ratio=height / start.height,
         volume=volume(model, y), profile=_profile(f, f.r <= r_c), inflated=start, solver="solid", extra=extra,
         fluid=fluid, contact_radius_deformed=rho_c)
