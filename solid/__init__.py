@@ -5,16 +5,18 @@ solid: Taylor-Hood quadrilaterals (biquadratic displacement, bilinear pressure) 
 the rubber's own strain energy at the isochoric invariants (the Ogden law's at the isochoric
 principal stretches: ``laws``), the clamp r = R fixed through the thickness.
 The fluid presses on the lower surface as a follower load, its pressure the multiplier of the
-cavity's volume (a liquid keeps it; a gas follows the polytropic law); the flat frictionless plate
-touches the upper surface's nodes through Lagrange multipliers on an active set, without a penalty
-error. States in the membrane solvers' units (lengths / R, Phat = P R / (E T), E = 3 mu_0), key by
-key comparable: their difference is the membrane's modelling error, O(T/R).
+cavity's volume (a liquid keeps it; a gas follows the polytropic law); the frictionless indenter
+(the flat plate or a sphere) touches the upper surface's nodes through Lagrange multipliers on an
+active set, without a penalty error. States in the membrane solvers' units (lengths / R, Phat =
+P R / (E T), E = 3 mu_0), key by key comparable: their difference is the membrane's modelling
+error, O(T/R).
 
 Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``stretches`` (the Ogden
 law's stress and tangent), ``mesh`` (the cross-section), ``forms`` (weak forms), ``assembly`` (their
-vectorised assembly), ``model`` (bases and constraints), ``equations`` (the bordered system),
-``newton`` (Newton, active set), ``inflation`` and ``compression`` (the load paths), ``results`` (the
-states) and ``api`` (the entry points). ``SOLVER`` is its record.
+vectorised assembly), ``model`` (bases and constraints), ``contact`` (the indenter's gap and its
+derivatives), ``equations`` (the bordered system), ``newton`` (Newton, active set), ``inflation`` and
+``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry points). ``SOLVER``
+is its record.
 """
 
 import importlib
@@ -65,7 +67,8 @@ SOLVER = Solver(
                lambda name, value: check_count(name, value, MIN_LAYERS, MAX_LAYERS)),
         Option("elements", "int", DEFAULT_ELEMENTS,
                f"elements along the radius, graded towards the clamp ({MIN_ELEMENTS} to {MAX_ELEMENTS}; "
-               f"default {DEFAULT_ELEMENTS})",
+               f"default {DEFAULT_ELEMENTS}); the clamp's corner elements, T/2 long, replace the nodes near it, "
+               "so a state's 'elements' (the mesh's count) can differ by a few",
                lambda name, value: check_count(name, value, MIN_ELEMENTS, MAX_ELEMENTS)),
         Option("tol", "float", 1e-10, "Newton tolerance on the displacement increment, units R (default 1e-10, "
                "at most 1e-4)", lambda name, value: check_tolerance(name, value, 1e-4)),

@@ -2,7 +2,7 @@
 
 Every input is checked before any work (one-line ``InputError``): the rubber (``as_material``; the
 solid has the laws of ``laws``), the pressures and forces, the fluid, the indenter (the flat plate
-only), the options of the record ``SOLVER`` (thickness ratio, layers, elements, tolerance).
+or a sphere), the options of the record ``SOLVER`` (thickness ratio, layers, elements, tolerance).
 """
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ from . import (
     DEFAULT_THICKNESS,
     SOLVER,
     compression,
+    contact,
     inflation,
     laws,
     mesh,
@@ -30,8 +31,8 @@ from . import (
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "CONTACTS"]
 
-#: indenter kind -> contact formulations (the flat plate only)
-CONTACTS = {"flat": ("active set",)}
+#: indenter kind -> contact formulations (the flat plate and the sphere, ``contact``)
+CONTACTS = {"flat": ("active set",), "sphere": ("active set",)}
 
 
 def _model(material, thickness_ratio, layers, elements, tol):
@@ -64,14 +65,15 @@ def inflate_volume(material, volume, *, thickness_ratio=DEFAULT_THICKNESS, layer
 
 
 def _setup(material, pressure_initial, fluid, indenter, thickness_ratio, layers, elements, tol):
-    formulation(CONTACTS, "solid", as_indenter(indenter))
+    indenter = as_indenter(indenter)
+    formulation(CONTACTS, "solid", indenter)
     fluid = as_fluid(fluid)
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
     p_i = check_positive("pressure_initial", pressure_initial)
     y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * p_i, tol)
     start = results.inflated(m, material, y, iterations, pressure=p_i)
     fill = compression.fluid_control(m, fluid, p_i, start.volume)
-    y, control = compression.first_contact(m, y, fill)
+    y, control = compression.first_contact(m, y, fill, contact.surface_of(indenter))
     return material, m, tol, fluid, start, y, control
 
 
@@ -79,8 +81,9 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
                       thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS,
                       tol=1e-10):
     """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
-    before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); the flat plate
-    only. Options as ``inflate``; ``progress(done, total)`` after each force."""
+    before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); indenter None
+    (the flat plate) or ``pocket.core.indenters.sphere(K)``. Options as ``inflate``; ``progress(done, total)``
+    after each force."""
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
@@ -90,7 +93,8 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     out = []
     for k, force in enumerate(forces):
         y, control, iterations = compression.to_force(m, y, control, force * unit, unit, tol)
-        out.append(results.compressed(m, material, y, control.active, iterations, start, fluid, force=force))
+        out.append(results.compressed(m, material, y, control.active, iterations, start, fluid, force=force,
+                                       surface=control.surface))
         if progress is not None:
             progress(k + 1, len(forces))
     return out
@@ -111,4 +115,4 @@ def compress_height(material, pressure_initial, height, *, fluid=None, indenter=
     if height >= start.height:
         raise above_the_pocket(height, start.height)
     y, control, iterations = compression.to_height(m, y, control, height, tol)
-    return results.compressed(m, material, y, control.active, iterations, start, fluid)
+    return results.compressed(m, material, y, control.active, iterations, start, fluid, surface=control.surface)

@@ -1,4 +1,5 @@
-"""Step 2, compression: the inflated pocket pressed by the flat frictionless plate at fixed fluid.
+"""Step 2, compression: the inflated pocket pressed by a frictionless indenter (the flat plate or a sphere,
+``contact``; "the plate" below) at fixed fluid.
 
 The fluid row holds the volume the fluid takes at its pressure (``fluids.Fluid.volume_ratio``:
 V_I for a liquid, the polytropic law for a gas sealed at P_I); the plate touches the upper
@@ -17,6 +18,8 @@ import numpy as np
 from pocket.core.errors import ConvergenceError
 from pocket.core.fluids import Fluid
 
+from .contact import FLAT, Surface
+from .contact import force as force_of
 from .equations import Control
 from .model import Model
 from .newton import contact
@@ -46,11 +49,13 @@ def fluid_control(model: Model, fluid: Fluid, pressure_initial: float, volume_in
     return Control(volume=volume)
 
 
-def first_contact(model: Model, y_inflated: np.ndarray, fill: Control) -> tuple[np.ndarray, Control]:
-    """The inflated state touched by the plate at its pole: the plate's height and a zero force appended."""
+def first_contact(model: Model, y_inflated: np.ndarray, fill: Control,
+                  surface: Surface = FLAT) -> tuple[np.ndarray, Control]:
+    """The inflated state touched by the indenter ``surface`` (default the flat plate) at its pole, its lowest
+    point there: its height and a zero force appended."""
     height = 0.5 * model.thickness + y_inflated[model.top_z[0]]
     y = np.concatenate([y_inflated, [height, 0.0]])
-    return y, dataclasses.replace(fill, active=np.array([0]), force=0.0)
+    return y, dataclasses.replace(fill, active=np.array([0]), force=0.0, surface=surface)
 
 
 def _march(model, y, control, key, target, step, tol, largest=None):
@@ -84,7 +89,8 @@ def to_force(model: Model, y: np.ndarray, control: Control, force: float, unit: 
     if control.force == 0.0:
         travel = FIRST_TRAVEL * model.thickness
         y, control, total = to_height(model, y, control, float(y[model.size + 1]) - travel, tol)
-        control = dataclasses.replace(control, height=None, force=float(np.sum(y[model.size + 2:])))
+        pushed = force_of(model, control.surface, y, np.asarray(control.active))
+        control = dataclasses.replace(control, height=None, force=pushed)
     y, control, iterations = _march(model, y, control, "force", force, MAX_FORCE_STEP * unit, tol)
     return y, control, total + iterations
 

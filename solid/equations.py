@@ -5,19 +5,22 @@ pressure (``model``), the fluid's pressure p_f (units mu_0), and, in contact, th
 (units R, above the clamp plane) and the contact forces lambda_k >= 0 at the upper-surface nodes
 k of the active set (units mu_0 R^2, the plate pushing down). With the Lagrangian
 
-    L = int [W + p (J - 1)] 2 pi r - p_f (V(u) - V_f) + sum_k lambda_k (z_k(u) - h),
+    L = int [W + p (J - 1)] 2 pi r - p_f (V(u) - V_f) - sum_k lambda_k g_k(u, h),
 
-z_k = t/2 + u_z at node k, the equations are its stationarity in u and p, and
+g_k the gap of node k to the indenter (``contact``: on the flat plate g_k = h - z_k, z_k = t/2 + u_z at
+node k; on a sphere the distance to its surface), the equations are its stationarity in u and p, and
 
     fluid:    p_f - P                    (pressure given), or
               V(u) - V_f(p_f)            (the fluid's volume at its pressure: a constant for a liquid,
                                           the polytropic law for a gas, ``pocket.core.fluids``);
-    contact:  z_k(u) - h = 0             for each active node k (no penalty: the nodes lie on the plate);
-    plate:    sum_k lambda_k - F = 0     (force control: the plate's reaction is the force), or
+    contact:  -g_k(u, h) = 0             for each active node k (no penalty: the nodes lie on the indenter);
+    plate:    sum_k lambda_k dg_k/dh - F (force control: the indenter's reaction is the force; on the
+                                          plate dg_k/dh = 1), or
               h - H = 0                  (height control).
 
-Without contact the plate's height is not an unknown (the vector stops at p_f). The Jacobian is the
-bordered matrix of these rows; the clamp's and the axis's dofs are removed (``Model.free``).
+The contact's terms, with a sphere's curvature, are derived in ``contact``. Without contact the plate's
+height is not an unknown (the vector stops at p_f). The Jacobian is the bordered matrix of these rows; the
+clamp's and the axis's dofs are removed (``Model.free``).
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ from collections.abc import Callable
 import numpy as np
 import scipy.sparse as sp
 
+from . import contact
 from .model import Model, fluid, solid, split
 
 __all__ = ["Control", "system"]
@@ -37,13 +41,14 @@ __all__ = ["Control", "system"]
 class Control:
     """What is held: the fluid's ``pressure`` (units mu_0), or its ``volume(p_f) -> (V, dV/dp_f)``; in contact,
     the ``active`` upper-surface nodes (indices of ``Model.top_z``) and the plate's ``force`` (mu_0 R^2) or
-    ``height`` (R)."""
+    ``height`` (R); the indenter's ``surface`` (``contact``: the flat plate or a sphere)."""
 
     pressure: float | None = None
     volume: Callable[[float], tuple[float, float]] | None = None
     active: np.ndarray | None = None
     force: float | None = None
     height: float | None = None
+    surface: contact.Surface = contact.FLAT
 
     @property
     def contact(self) -> bool:
@@ -69,21 +74,22 @@ def system(model: Model, y: np.ndarray, control: Control):
     blocks = [[k_uu, k_pu.T, -dv_col], [k_pu, None, None], [fluid_row, None, sp.csr_matrix([[fluid_diag]])]]
     residual = [r_u, r_p, [fluid_res]]
     if control.active is not None:
+        c = contact.rows(model, control.surface, y, control.active)
         m = len(control.active)
-        h, lam = y[size + 1], y[size + 2:]
-        dofs = model.top_z[control.active]
-        E = sp.csc_matrix((np.ones(m), (dofs, np.arange(m))), shape=(n, m))
-        residual[0] = residual[0] + E @ lam
-        residual.append([h - control.height] if control.force is None else [lam.sum() - control.force])
-        residual.append(0.5 * model.thickness + u[dofs] - h)
-        # the plate's row: d/dh and d/dlambda of h - H, or of sum lambda - F
+        residual[0] = residual[0] + c.E @ y[size + 2:]
+        residual.append([y[size + 1] - control.height] if control.force is None else [c.force - control.force])
+        residual.append(c.residual)
+        # the plate's row: d/dh and d/dlambda of h - H, or of F - F_given
         plate = (sp.csr_matrix(np.r_[1.0, np.zeros(m)][None, :]) if control.force is None
-                 else sp.csr_matrix(np.r_[0.0, np.ones(m)][None, :]))
+                 else sp.csr_matrix(np.r_[c.f_h, c.dgdh][None, :]))
         for row in blocks:
             row.extend([None, None])
-        blocks[0][4] = E
-        blocks.append([None, None, None, plate[:, :1], plate[:, 1:]])
-        blocks.append([E.T, None, None, sp.csr_matrix(-np.ones((m, 1))), None])
+        blocks[0][4] = c.E
+        if c.k_uu is not None:  # a curved indenter: its normal turns with the node and with h
+            blocks[0][0] = blocks[0][0] + c.k_uu
+            blocks[0][3] = c.k_uh
+        blocks.append([None if control.force is None else c.f_u, None, None, plate[:, :1], plate[:, 1:]])
+        blocks.append([c.E.T, None, None, sp.csr_matrix(-c.dgdh[:, None]), None])
     jac = sp.bmat(blocks, format="csc")
     res = np.concatenate([np.atleast_1d(np.asarray(part, dtype=float)) for part in residual])
     keep = np.concatenate([model.free, np.arange(size, res.size)])

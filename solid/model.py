@@ -25,10 +25,10 @@ __all__ = ["Model", "discretize", "solid", "fluid", "split"]
 @dataclasses.dataclass(frozen=True)
 class Model:
     """The discretised sheet of thickness ``thickness`` (T/R) and rubber ``law`` (``laws.derivatives``, units
-    mu_0). ``top_z`` are the vertical displacement dofs of the upper surface's nodes, ordered by their
-    Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the same for the
-    mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p]); ``tables``
-    the bases at the quadrature points (``assembly``)."""
+    mu_0). ``top_z`` and ``top_radial`` are the vertical and radial displacement dofs of the upper surface's
+    nodes, ordered by their Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the
+    same for the mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p]);
+    ``tables`` the bases at the quadrature points (``assembly``)."""
 
     mesh: MeshQuad
     thickness: float
@@ -39,6 +39,7 @@ class Model:
     free: np.ndarray
     top_r: np.ndarray
     top_z: np.ndarray
+    top_radial: np.ndarray
     mid_r: np.ndarray
     mid_dofs: np.ndarray
     tables: assembly.Tables
@@ -67,7 +68,7 @@ def discretize(thickness: float, mesh: MeshQuad, law) -> Model:
     free = np.setdiff1d(np.arange(basis_u.N + basis_p.N), fixed)
     top_r, top = _line(basis_u, 0.5 * thickness)
     mid_r, mid = _line(basis_u, 0.0)
-    return Model(mesh, thickness, law, basis_u, basis_p, bottom, free, top_r, top[1], mid_r, mid,
+    return Model(mesh, thickness, law, basis_u, basis_p, bottom, free, top_r, top[1], top[0], mid_r, mid,
                  assembly.tables(basis_u, basis_p, bottom))
 
 

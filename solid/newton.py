@@ -3,8 +3,8 @@
 Converged when the largest displacement increment is below ``tol`` (units R) and the largest
 residual of the rubber's rows is below ``tol`` times the fluid's force scale (p_f + 1e-3) t: Newton
 converges quadratically here, so the last increment bounds the error. The active set (``contact``)
-is updated between Newton solves: a node whose force lambda_k < 0 leaves it, a free node above the
-plate (z_k > h) joins it, until neither happens.
+is updated between Newton solves: a node whose force lambda_k < 0 leaves it, a free node inside the
+indenter (its gap g_k < 0, ``contact``) joins it, until neither happens.
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ import scipy.sparse.linalg as spl
 
 from pocket.core.errors import ConvergenceError
 
+from .contact import gaps
 from .equations import Control, system
 from .model import Model
 
@@ -24,7 +25,8 @@ __all__ = ["solve", "contact", "MAX_ITERATIONS", "MAX_SWEEPS", "SWEEP_TOL", "SWE
 MAX_ITERATIONS = 25
 #: active-set updates before giving up
 MAX_SWEEPS = 60
-#: how far above the plate a free node must be to join the active set (units R)
+#: how far inside the indenter (above the plate: a gap below minus this) a free node must be to join the
+#: active set (units R)
 SWEEP_TOL = 1e-7
 #: Newton's tolerance while the active set changes (units R): the last step below 1e-3 R leaves an error
 #: ~1e-6 R (quadratic convergence), enough to choose the next set; each set that holds is then solved to the
@@ -96,23 +98,23 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
 
     While the set changes, Newton stops at ``SWEEP_STEP``; a set that holds there is solved to ``tol`` and
     checked again, so the set returned is the one the converged state satisfies. Every node with a negative
-    force leaves at once (but one, the pole's, if all would), every node above the plate joins. A flat
-    plate's contact is a disc: while the sets tried are the first n nodes from the pole, n is bisected between
-    the largest set found too small (a node beyond it above the plate) and the smallest found too large (a
-    negative force in it), instead of the one or two nodes the rules above remove per update after an
-    overshoot (``_bisect``).
+    force leaves at once (but one, the pole's, if all would), every node inside the indenter (above the plate)
+    joins. The contact of a flat plate or a sphere is a disc: while the sets tried are the first n nodes
+    from the pole, n is bisected between the largest set found too small (a node beyond it inside the
+    indenter) and the smallest found too large (a negative force in it), instead of the one or two nodes the
+    rules above remove per update after an overshoot (``_bisect``).
     """
     size, total, loose = model.size, 0, max(tol, SWEEP_TOL)
     bounds, step = [0, None], max(tol, SWEEP_STEP)
     for sweep in range(MAX_SWEEPS):
         y, iterations = solve(model, y, control, step if sweep < MAX_SWEEPS - 1 else tol)
         total += iterations
-        active, lam, h = np.asarray(control.active), y[size + 2:], y[size + 1]
-        z = 0.5 * model.thickness + y[model.top_z]
+        active, lam = np.asarray(control.active), y[size + 2:]
+        gap = gaps(model, control.surface, y)
         keep = lam >= 0.0
         if not keep.any():
             keep[np.argmax(lam)] = True
-        joining = np.setdiff1d(np.flatnonzero(z > h + loose), active)
+        joining = np.setdiff1d(np.flatnonzero(gap < -loose), active)
         if keep.all() and joining.size == 0:
             if step <= tol:
                 return y, control, total

@@ -31,20 +31,29 @@ estimate spreads by about +-1.4e-3 R at T/R = 0.0125 (Phat_I 0.32) and +-4.5e-4 
 about 1 % in A_c at the default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper
 surface's at r_c, the contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact
 forces (``extra["reaction"]``, Fhat).
+
+Under a sphere of radius K (``contact``) the same, with the gaps to the sphere and the meanings of the
+membrane solvers: ``height`` the sphere's lowest point h, ``contact_area`` the curved area in contact
+over pi R^2, 2 K z(rho_c) (``cap_area``), ``contact_radius_deformed`` rho_c, ``stretch_contact`` the
+pole's stretch (the zone is not uniform), and the reaction the vertical part of the contact forces,
+sum_k lambda_k (-n_z,k).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from pocket.core.errors import OutOfRangeError
 from pocket.core.fluids import Fluid
 from pocket.core.materials import Material
 from pocket.core.states import CompressedState, InflatedState, Profile
 
+from .contact import FLAT, Surface, gaps
+from .contact import force as force_of
 from .model import Model, split
 from .post import fields
 
-__all__ = ["inflated", "compressed", "contact_radius", "GAP_EXPONENT"]
+__all__ = ["inflated", "compressed", "contact_radius", "cap_area", "GAP_EXPONENT"]
 
 
 def _profile(f, contact: np.ndarray) -> Profile:
@@ -66,19 +75,27 @@ def _layers(model: Model) -> int:
 GAP_EXPONENT = 2.0
 
 
-def contact_radius(model: Model, y: np.ndarray, active: np.ndarray) -> float:
-    """The Lagrangian contact radius r_c / R of the state y in contact on the upper-surface nodes ``active``,
-    extrapolated from the gaps of the two nodes beyond them (module docstring)."""
+def contact_radius(model: Model, y: np.ndarray, active: np.ndarray, surface: Surface = FLAT) -> float:
+    """The Lagrangian contact radius r_c / R of the state y in contact on the upper-surface nodes ``active``
+    with the indenter ``surface`` (default the flat plate), extrapolated from the gaps of the two nodes beyond
+    them (module docstring)."""
     edge = int(np.max(active))
     r = model.top_r
     if edge + 2 >= r.size:
         return float(r[edge])
-    gap = y[model.size + 1] - (0.5 * model.thickness + y[model.top_z[edge + 1:edge + 3]])
+    gap = gaps(model, surface, y, np.arange(edge + 1, edge + 3))
     q = np.maximum(gap, 0.0) ** (1.0 / GAP_EXPONENT)
     if q[1] <= q[0]:  # the gap does not grow: no edge to extrapolate to
         return float(r[edge])
     low = r[edge - 1] if edge > 0 else r[edge]
     return float(np.clip(r[edge + 1] - q[0] * (r[edge + 2] - r[edge + 1]) / (q[1] - q[0]), low, r[edge + 1]))
+
+
+def cap_area(radius: float, rho_c: float) -> float:
+    """The curved area (over pi R^2) of a sphere of radius K = ``radius`` below the circle of radius rho_c:
+    2 K z(rho_c), z = K - sqrt(K^2 - rho_c^2) the cap's height (Archimedes), as the membrane solvers report
+    it; written 2 K rho_c^2 / (K + sqrt(K^2 - rho_c^2)) to keep its digits when rho_c << K."""
+    return 2.0 * radius * rho_c**2 / (radius + np.sqrt(radius**2 - rho_c**2))
 
 
 def volume(model: Model, y: np.ndarray) -> float:
@@ -101,20 +118,26 @@ def inflated(model: Model, material: Material, y: np.ndarray, iterations: int, p
 
 
 def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarray, iterations: int,
-               start: InflatedState, fluid: Fluid, force: float | None = None) -> CompressedState:
-    """The CompressedState of y in contact on the upper-surface nodes ``active``; ``force`` echoes the Fhat
-    asked (None under height control: the reaction)."""
+               start: InflatedState, fluid: Fluid, force: float | None = None,
+               surface: Surface = FLAT) -> CompressedState:
+    """The CompressedState of y in contact on the upper-surface nodes ``active`` with the indenter ``surface``
+    (default the flat plate); ``force`` echoes the Fhat asked (None under height control: the reaction)."""
     f = fields(model, y)
     scale = 3.0 * model.thickness
     phat = float(y[model.size]) / scale
-    reaction = float(np.sum(y[model.size + 2:])) / (np.pi * start.pressure * scale)
-    r_c = contact_radius(model, y, active)
+    reaction = force_of(model, surface, y, active) / (np.pi * start.pressure * scale)
+    r_c = contact_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
+    if surface.radius is not None and rho_c >= surface.radius:
+        raise OutOfRangeError(f"the sheet would wrap past the sphere's equator (its contact reaches rho = {rho_c:.6g} "
+                              f"R, the sphere's radius {surface.radius:.6g} R)")
+    area = rho_c**2 if surface.radius is None else cap_area(surface.radius, rho_c)
+    stretch = float(np.interp(r_c, f.r, f.stretch_2) if surface.radius is None else f.stretch_1[0])
     height = float(y[model.size + 1])
     extra = {**_extra(model, f, iterations), "reaction": reaction}
     return CompressedState(
         material=material, pressure_initial=start.pressure, force=reaction if force is None else force,
-        pressure=phat, pressure_ratio=phat / start.pressure, contact_area=rho_c**2, contact_radius=r_c,
-        stretch_contact=float(np.interp(r_c, f.r, f.stretch_2)), height=height, height_ratio=height / start.height,
+        pressure=phat, pressure_ratio=phat / start.pressure, contact_area=area, contact_radius=r_c,
+        stretch_contact=stretch, height=height, height_ratio=height / start.height,
         volume=volume(model, y), profile=_profile(f, f.r <= r_c), inflated=start, solver="solid", extra=extra,
         fluid=fluid, contact_radius_deformed=rho_c)

@@ -1,0 +1,121 @@
+r"""The indenter's contact rows: the gap of the upper surface's nodes to a flat plate or a sphere.
+
+An upper-surface node k sits at x_k = (rho_k, z_k), rho_k = r_k + u_r, z_k = t/2 + u_z (units R). The
+indenter's lowest point is at the height h; its gap g_k(x_k, h) >= 0 is
+
+    flat plate:  g = h - z                      grad_x g = (0, -1),  d2g/dx2 = 0;
+    sphere K:    g = |x - c| - K, c = (0, h + K)  grad_x g = n = (x - c) / d,  d2g/dx2 = (I - n n^T) / d,
+
+d = |x - c|, n the sphere's outward normal at the node. Both depend on h only through z - h (a
+vertical translation of the pair), so dg/dh = -dg/dz and d/dh (grad_x g) = -(d2g/dx2) e_z. The contact
+row of an active node is c_k = -g_k = 0 (the plate's z_k - h), its multiplier lambda_k >= 0 the force
+pushing the node along -grad_x g (into the sheet), entering the Lagrangian as + lambda_k c_k; hence in
+the equations (``equations``):
+
+    r_u      += E lambda,                 E = -dg/du        (n x m: the node's (u_r, u_z) columns)
+    K_uu     += -sum_k lambda_k d2g_k/du2                  (the curvature: the normal turns with the node)
+    dr_u/dh   = sum_k lambda_k (d2g_k/dx2) e_z              (on the node's dofs)
+    row c_k:    d/du = E^T,  d/dh = -dg_k/dh.
+
+The force on the indenter is the vertical part of the contact forces, F = sum_k lambda_k (-n_z,k) =
+sum_k lambda_k dg_k/dh (the plate's sum lambda_k); under force control its row F - F_given has
+dF/dlambda_k = dg_k/dh, dF/du = -sum_k lambda_k e_z^T d2g_k/dx2 and dF/dh = sum_k lambda_k (d2g_k/dx2)_zz.
+The flat plate has no curvature terms: its rows are those of a linear constraint, assembled exactly
+as before there was a sphere (the same entries, the same sparsity).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import scipy.sparse as sp
+
+__all__ = ["Surface", "FLAT", "surface_of", "Rows", "rows", "gaps", "force"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Surface:
+    """The indenter's surface: the flat plate (``radius`` None) or a sphere of radius K = R_s / R."""
+
+    radius: float | None = None
+
+    def local(self, rho: np.ndarray | None, z: np.ndarray, h: float):
+        """At nodes (rho, z) (m,) with the lowest point at h: the gap g (m,), grad_x g (m, 2) and d2g/dx2
+        (m, 2, 2) (None on the flat plate)."""
+        if self.radius is None:
+            grad = np.zeros((z.size, 2))
+            grad[:, 1] = -1.0
+            return h - z, grad, None
+        assert rho is not None  # a sphere's gap needs the radii (``_nodes``)
+        d_rho, d_z = rho, z - (h + self.radius)
+        d = np.hypot(d_rho, d_z)
+        n = np.stack([d_rho / d, d_z / d], axis=1)
+        hess = (np.eye(2)[None] - n[:, :, None] * n[:, None, :]) / d[:, None, None]
+        return d - self.radius, n, hess
+
+
+#: the flat plate
+FLAT = Surface()
+
+
+def surface_of(indenter) -> Surface:
+    """The ``Surface`` of a ``pocket.core.indenters.Indenter`` of kind flat or sphere."""
+    return FLAT if indenter.kind == "flat" else Surface(indenter.number("radius"))
+
+
+def _nodes(model, surface: Surface, y: np.ndarray, nodes):
+    """(rho, z) of the upper-surface nodes ``nodes`` of the state y (rho None on the flat plate, which needs
+    none)."""
+    z = 0.5 * model.thickness + y[model.top_z[nodes]]
+    return (None if surface.radius is None else model.top_r[nodes] + y[model.top_radial[nodes]]), z
+
+
+def gaps(model, surface: Surface, y: np.ndarray, nodes=slice(None)) -> np.ndarray:
+    """The gaps g (R) of the upper-surface nodes ``nodes`` (default all) to the indenter of the state y, its
+    lowest point at y[size + 1]."""
+    rho, z = _nodes(model, surface, y, nodes)
+    return surface.local(rho, z, float(y[model.size + 1]))[0]
+
+
+def force(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> float:
+    """The indenter's force sum_k lambda_k dg_k/dh (mu_0 R^2) of the state y in contact on ``active``."""
+    rho, z = _nodes(model, surface, y, active)
+    return float(np.sum(y[model.size + 2:] * -surface.local(rho, z, float(y[model.size + 1]))[1][:, 1]))
+
+
+@dataclasses.dataclass(frozen=True)
+class Rows:
+    """The contact's terms at a state (module docstring): ``residual`` c = -g (m,), ``E`` = -dg/du (n x m,
+    CSC), ``dgdh`` (m,); ``force`` F; and the curvature terms (None on the flat plate): ``k_uu`` (n x n),
+    ``k_uh`` = dr_u/dh (n x 1), ``f_u`` = dF/du (1 x n), ``f_h`` = dF/dh."""
+
+    residual: np.ndarray
+    E: sp.csc_matrix
+    dgdh: np.ndarray
+    force: float
+    k_uu: sp.csc_matrix | None
+    k_uh: sp.csc_matrix | None
+    f_u: sp.csr_matrix | None
+    f_h: float
+
+
+def rows(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> Rows:
+    """The contact's ``Rows`` of the state y on the upper-surface nodes ``active``."""
+    n, m = model.basis_u.N, len(active)
+    lam = y[model.size + 2:]
+    rho, z = _nodes(model, surface, y, active)
+    g, grad, hess = surface.local(rho, z, float(y[model.size + 1]))
+    dgdh = -grad[:, 1]
+    cols = np.arange(m)
+    if hess is None:
+        E = sp.csc_matrix((-grad[:, 1], (model.top_z[active], cols)), shape=(n, m))
+        return Rows(-g, E, dgdh, float(np.sum(lam * dgdh)), None, None, None, 0.0)
+    dofs = np.stack([model.top_radial[active], model.top_z[active]], axis=1)  # (m, 2)
+    E = sp.csc_matrix((-grad.ravel(), (dofs.ravel(), np.repeat(cols, 2))), shape=(n, m))
+    weighted = lam[:, None, None] * hess
+    k_uu = sp.csc_matrix((-weighted.ravel(), (np.repeat(dofs, 2, axis=1).ravel(), np.tile(dofs, 2).ravel())),
+                         shape=(n, n))
+    k_uh = sp.csc_matrix((weighted[:, :, 1].ravel(), (dofs.ravel(), np.zeros(2 * m, int))), shape=(n, 1))
+    f_u = sp.csr_matrix((-weighted[:, 1, :].ravel(), (np.zeros(2 * m, int), dofs.ravel())), shape=(1, n))
+    return Rows(-g, E, dgdh, float(np.sum(lam * dgdh)), k_uu, k_uh, f_u, float(weighted[:, 1, 1].sum()))
