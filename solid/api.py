@@ -31,8 +31,8 @@ from . import (
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "CONTACTS"]
 
-#: indenter kind -> contact formulations (the flat plate and the sphere, ``contact``)
-CONTACTS = {"flat": ("active set",), "sphere": ("active set",)}
+#: indenter kind -> contact formulations (the flat plate, the sphere and a profile, ``contact``)
+CONTACTS = {"flat": ("active set",), "sphere": ("active set",), "profile": ("active set",)}
 
 
 def _model(material, thickness_ratio, layers, elements, tol):

@@ -1,12 +1,17 @@
-r"""The indenter's contact rows: the gap of the upper surface's nodes to a flat plate or a sphere.
+r"""The indenter's contact rows: the gap of the upper surface's nodes to a flat plate, a sphere or a profile.
 
 An upper-surface node k sits at x_k = (rho_k, z_k), rho_k = r_k + u_r, z_k = t/2 + u_z (units R). The
 indenter's lowest point is at the height h; its gap g_k(x_k, h) >= 0 is
 
     flat plate:  g = h - z                      grad_x g = (0, -1),  d2g/dx2 = 0;
     sphere K:    g = |x - c| - K, c = (0, h + K)  grad_x g = n = (x - c) / d,  d2g/dx2 = (I - n n^T) / d,
+    profile f:   g = h + f(rho) - z             grad_x g = (f', -1),  d2g/dx2 = [[f'', 0], [0, 0]],
 
-d = |x - c|, n the sphere's outward normal at the node. Both depend on h only through z - h (a
+d = |x - c|, n the sphere's outward normal at the node. The profile's gap is vertical, not the
+distance to the surface: its zero set is the surface all the same, and its gradient is normal to it,
+so the contact force lambda grad_x g is normal (frictionless) and the active set's test (g < 0 inside
+the indenter) is the same; only lambda's scale differs from a distance gap's (by |grad_x g|), which
+no reported number depends on. All three depend on h only through z - h (a
 vertical translation of the pair), so dg/dh = -dg/dz and d/dh (grad_x g) = -(d2g/dx2) e_z. The contact
 row of an active node is c_k = -g_k = 0 (the plate's z_k - h), its multiplier lambda_k >= 0 the force
 pushing the node along -grad_x g (into the sheet), entering the Lagrangian as + lambda_k c_k; hence in
@@ -31,51 +36,115 @@ import dataclasses
 import numpy as np
 import scipy.sparse as sp
 
-__all__ = ["Surface", "FLAT", "surface_of", "Rows", "rows", "gaps", "force"]
+from pocket.core.errors import OutOfRangeError
+from pocket.core.profiles import Shape
+
+__all__ = ["Surface", "FLAT", "surface_of", "cap_area", "Rows", "rows", "gaps", "force"]
 
 
 @dataclasses.dataclass(frozen=True)
 class Surface:
-    """The indenter's surface: the flat plate (``radius`` None) or a sphere of radius K = R_s / R."""
+    """The indenter's surface: the flat plate (``radius`` and ``shape`` None), a sphere of radius K = R_s / R
+    (``radius``) or a profile (``shape``: a ``pocket.core.profiles.Shape``, z(rho) with its slope and second
+    derivative, units R)."""
 
     radius: float | None = None
+    shape: Shape | None = None
+
+    @property
+    def flat(self) -> bool:
+        return self.radius is None and self.shape is None
+
+    @property
+    def reach(self) -> float | None:
+        """The largest radius the surface has (a sphere's equator, a profile's last radius; None: the plate)."""
+        return self.radius if self.shape is None else float(self.shape.extent)
+
+    def _sphere(self) -> float:
+        assert self.radius is not None  # a surface that is neither flat nor a profile is a sphere
+        return self.radius
+
+    @property
+    def rim(self) -> float:
+        """The surface's height above its lowest point at its reach (a sphere's K; a profile's last height)."""
+        if self.shape is None:
+            return self._sphere()
+        return float(self.shape.height(np.array([float(self.shape.extent)]))[0])
+
+    def area(self, rho_c: float) -> float:
+        """The area in contact within the deformed radius rho_c, over pi R^2: rho_c^2 on the plate, the curved
+        area int_0^rho_c 2 rho (1 + z'^2)^(1/2) drho on a sphere (``cap_area``) or a profile."""
+        if self.flat:
+            return rho_c**2
+        if self.shape is None:
+            return cap_area(self._sphere(), rho_c)
+        from scipy.integrate import quad
+
+        def band(rho):
+            return 2.0 * rho * np.sqrt(1.0 + float(self.shape.slope(np.asarray(rho))) ** 2)
+
+        return float(quad(band, 0.0, rho_c, epsabs=0.0, epsrel=1e-12, limit=200)[0])
 
     def local(self, rho: np.ndarray | None, z: np.ndarray, h: float):
         """At nodes (rho, z) (m,) with the lowest point at h: the gap g (m,), grad_x g (m, 2) and d2g/dx2
         (m, 2, 2) (None on the flat plate)."""
-        if self.radius is None:
+        if self.flat:
             grad = np.zeros((z.size, 2))
             grad[:, 1] = -1.0
             return h - z, grad, None
-        assert rho is not None  # a sphere's gap needs the radii (``_nodes``)
-        d_rho, d_z = rho, z - (h + self.radius)
+        assert rho is not None  # a curved indenter's gap needs the radii (``_nodes``)
+        if self.shape is not None:
+            grad = np.stack([self.shape.slope(rho), -np.ones_like(z)], axis=1)
+            hess = np.zeros((z.size, 2, 2))
+            hess[:, 0, 0] = self.shape.second(rho)
+            return h + self.shape.height(rho) - z, grad, hess
+        k = self._sphere()
+        d_rho, d_z = rho, z - (h + k)
         d = np.hypot(d_rho, d_z)
         n = np.stack([d_rho / d, d_z / d], axis=1)
         hess = (np.eye(2)[None] - n[:, :, None] * n[:, None, :]) / d[:, None, None]
-        return d - self.radius, n, hess
+        return d - k, n, hess
 
 
 #: the flat plate
 FLAT = Surface()
 
 
+def cap_area(radius: float, rho_c: float) -> float:
+    """The curved area (over pi R^2) of a sphere of radius K = ``radius`` below the circle of radius rho_c:
+    2 K z(rho_c), z = K - sqrt(K^2 - rho_c^2) the cap's height (Archimedes), as the membrane solvers report
+    it; written 2 K rho_c^2 / (K + sqrt(K^2 - rho_c^2)) to keep its digits when rho_c << K."""
+    return 2.0 * radius * rho_c**2 / (radius + np.sqrt(radius**2 - rho_c**2))
+
+
 def surface_of(indenter) -> Surface:
-    """The ``Surface`` of a ``pocket.core.indenters.Indenter`` of kind flat or sphere."""
-    return FLAT if indenter.kind == "flat" else Surface(indenter.number("radius"))
+    """The ``Surface`` of a ``pocket.core.indenters.Indenter`` of kind flat, sphere or profile."""
+    if indenter.kind == "flat":
+        return FLAT
+    if indenter.kind == "sphere":
+        return Surface(indenter.number("radius"))
+    return Surface(shape=dict(indenter.params)["shape"])
 
 
 def _nodes(model, surface: Surface, y: np.ndarray, nodes):
     """(rho, z) of the upper-surface nodes ``nodes`` of the state y (rho None on the flat plate, which needs
     none)."""
     z = 0.5 * model.thickness + y[model.top_z[nodes]]
-    return (None if surface.radius is None else model.top_r[nodes] + y[model.top_radial[nodes]]), z
+    return (None if surface.flat else model.top_r[nodes] + y[model.top_radial[nodes]]), z
 
 
 def gaps(model, surface: Surface, y: np.ndarray, nodes=slice(None)) -> np.ndarray:
     """The gaps g (R) of the upper-surface nodes ``nodes`` (default all) to the indenter of the state y, its
-    lowest point at y[size + 1]."""
+    lowest point at y[size + 1]. Past the surface's reach (a sphere's equator, a profile's last radius) the
+    gap is to the plane of its rim, z = h + z(reach): a node there that rises above it joins the active set,
+    whose rows then say the contact left the indenter's surface (``rows``)."""
     rho, z = _nodes(model, surface, y, nodes)
-    return surface.local(rho, z, float(y[model.size + 1]))[0]
+    h = float(y[model.size + 1])
+    g = surface.local(rho, z, h)[0]
+    if surface.reach is not None:
+        past = rho >= surface.reach
+        g[past] = h + surface.rim - z[past]
+    return g
 
 
 def force(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> float:
@@ -105,6 +174,10 @@ def rows(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> Rows:
     n, m = model.basis_u.N, len(active)
     lam = y[model.size + 2:]
     rho, z = _nodes(model, surface, y, active)
+    if surface.reach is not None and np.any(rho >= surface.reach):
+        end = "the sphere's equator" if surface.shape is None else "the end of the indenter's profile"
+        raise OutOfRangeError(f"the sheet would wrap past {end} (a node in contact at rho = {rho.max():.6g} R, the "
+                              f"indenter's surface ends at {surface.reach:.6g} R)")
     g, grad, hess = surface.local(rho, z, float(y[model.size + 1]))
     dgdh = -grad[:, 1]
     cols = np.arange(m)

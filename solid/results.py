@@ -32,11 +32,12 @@ about 1 % in A_c at the default 64 elements instead of 2-4 %. The deformed radiu
 surface's at r_c, the contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact
 forces (``extra["reaction"]``, Fhat).
 
-Under a sphere of radius K (``contact``) the same, with the gaps to the sphere and the meanings of the
-membrane solvers: ``height`` the sphere's lowest point h, ``contact_area`` the curved area in contact
-over pi R^2, 2 K z(rho_c) (``cap_area``), ``contact_radius_deformed`` rho_c, ``stretch_contact`` the
-pole's stretch (the zone is not uniform), and the reaction the vertical part of the contact forces,
-sum_k lambda_k (-n_z,k).
+Under a sphere of radius K or a profile (``contact``) the same, with the gaps to the indenter and the
+meanings of the membrane solvers: ``height`` the indenter's lowest point h, ``contact_area`` the curved
+area in contact over pi R^2 (``contact.Surface.area``: 2 K z(rho_c) on a sphere), ``contact_radius_deformed``
+rho_c, ``stretch_contact`` the pole's stretch (the zone is not uniform), and the reaction the vertical part
+of the contact forces, sum_k lambda_k dg_k/dh. A contact reaching the sphere's equator or the profile's
+last radius is an OutOfRangeError.
 """
 
 from __future__ import annotations
@@ -53,7 +54,7 @@ from .contact import force as force_of
 from .model import Model, split
 from .post import fields
 
-__all__ = ["inflated", "compressed", "contact_radius", "cap_area", "GAP_EXPONENT"]
+__all__ = ["inflated", "compressed", "contact_radius", "GAP_EXPONENT"]
 
 
 def _profile(f, contact: np.ndarray) -> Profile:
@@ -91,13 +92,6 @@ def contact_radius(model: Model, y: np.ndarray, active: np.ndarray, surface: Sur
     return float(np.clip(r[edge + 1] - q[0] * (r[edge + 2] - r[edge + 1]) / (q[1] - q[0]), low, r[edge + 1]))
 
 
-def cap_area(radius: float, rho_c: float) -> float:
-    """The curved area (over pi R^2) of a sphere of radius K = ``radius`` below the circle of radius rho_c:
-    2 K z(rho_c), z = K - sqrt(K^2 - rho_c^2) the cap's height (Archimedes), as the membrane solvers report
-    it; written 2 K rho_c^2 / (K + sqrt(K^2 - rho_c^2)) to keep its digits when rho_c << K."""
-    return 2.0 * radius * rho_c**2 / (radius + np.sqrt(radius**2 - rho_c**2))
-
-
 def volume(model: Model, y: np.ndarray) -> float:
     """The cavity's volume (R^3) of the state y."""
     from .model import fluid
@@ -128,11 +122,12 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     reaction = force_of(model, surface, y, active) / (np.pi * start.pressure * scale)
     r_c = contact_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
-    if surface.radius is not None and rho_c >= surface.radius:
-        raise OutOfRangeError(f"the sheet would wrap past the sphere's equator (its contact reaches rho = {rho_c:.6g} "
-                              f"R, the sphere's radius {surface.radius:.6g} R)")
-    area = rho_c**2 if surface.radius is None else cap_area(surface.radius, rho_c)
-    stretch = float(np.interp(r_c, f.r, f.stretch_2) if surface.radius is None else f.stretch_1[0])
+    if surface.reach is not None and rho_c >= surface.reach:
+        end = "the sphere's equator" if surface.shape is None else "the end of the indenter's profile"
+        raise OutOfRangeError(f"the sheet would wrap past {end} (its contact reaches rho = {rho_c:.6g} R, the "
+                              f"indenter's surface ends at {surface.reach:.6g} R)")
+    area = surface.area(rho_c)
+    stretch = float(np.interp(r_c, f.r, f.stretch_2) if surface.flat else f.stretch_1[0])
     height = float(y[model.size + 1])
     extra = {**_extra(model, f, iterations), "reaction": reaction}
     return CompressedState(

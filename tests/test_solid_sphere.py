@@ -171,7 +171,7 @@ def test_the_command_line_presses_with_a_sphere(capsys):
     """``pocket compress --solver solid --indenter sphere --indenter-radius K`` solves and reports the sphere's
     states: the curved contact area is the cap's 2 K z(rho_c) of the reported rho_c, and the reaction the
     force asked."""
-    from pocket.solid.results import cap_area
+    from pocket.solid.contact import cap_area
 
     status = main(["compress", "--alpha", "47/160", "--pressure", "0.31", "--force", "0.3", "--solver", "solid",
                    "--thickness-ratio", "0.02", "--elements", "32", "--layers", "2", "--indenter", "sphere",
@@ -190,7 +190,7 @@ def test_the_cap_area_is_the_spheres_surface_integral(radius):
     """Exact answer: the curved contact area, int_0^rho_c 2 pi rho sqrt(1 + z'^2) d rho / (pi R^2) with the
     sphere's own slope (``Indenter.slope``), integrated by Gauss-Legendre (the integrand is smooth below the
     equator: 40 points reach round-off), is ``cap_area``; not the disc's rho_c^2."""
-    from pocket.solid.results import cap_area
+    from pocket.solid.contact import cap_area
 
     rho_c = 0.3 * radius
     x, w = np.polynomial.legendre.leggauss(40)

@@ -190,14 +190,8 @@ def test_bad_input_is_one_line_and_exit_2(flags, text, capsys):
 
 
 def test_bad_input_in_python_before_any_work():
-    """The same checks from Python: InputError, one line, naming the keyword; a profile indenter refused."""
+    """The same checks from Python: InputError, one line, naming the keyword."""
     for kwargs in ({"thickness_ratio": 0.0}, {"thickness_ratio": 0.7}, {"layers": 1}):
         with pytest.raises(InputError) as err:
             solid.inflate(0.3, 0.31, **kwargs)
         assert "\n" not in str(err.value) and next(iter(kwargs)) in str(err.value)
-    with pytest.raises(InputError, match="profile"):
-        from pocket.core.indenters import profile
-        from pocket.core.profiles import table
-
-        tip = table([0.0, 0.1, 0.2, 0.3], [0.0, 0.005, 0.02, 0.045])  # z = rho^2 / 2: a convex profile
-        solid.compress(0.3, 0.31, 0.2, indenter=profile(tip))
