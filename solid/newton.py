@@ -1,8 +1,7 @@
 """Newton's method on the bordered equations (``equations``), and the contact's active set around it.
 
-Converged when the largest displacement increment is below ``tol`` (units R) and the largest
-residual of the rubber's rows is below ``tol`` times the fluid's force scale (p_f + 1e-3) t: Newton
-converges quadratically here, so the last increment bounds the error. The active set (``contact``)
+Converged when the largest displacement increment is below ``tol`` (units R): Newton converges
+quadratically here, so the last increment bounds the error. The active set (``contact``)
 is updated between Newton solves: a node whose force lambda_k < 0 leaves it, a free node inside the
 indenter (its gap g_k < 0, ``contact``) joins it, until neither happens.
 """
@@ -99,8 +98,8 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     While the set changes, Newton stops at ``SWEEP_STEP``; a set that holds there is solved to ``tol`` and
     checked again, so the set returned is the one the converged state satisfies. Every node with a negative
     force leaves at once (but one, the pole's, if all would), every node inside the indenter (above the plate)
-    joins. The contact of a flat plate or a sphere is a disc: while the sets tried are the first n nodes
-    from the pole, n is bisected between the largest set found too small (a node beyond it inside the
+    joins. The contact of a flat plate, a sphere or a convex profile is a disc: while the sets tried are the
+    first n nodes from the pole, n is bisected between the largest set found too small (a node beyond it inside the
     indenter) and the smallest found too large (a negative force in it), instead of the one or two nodes the
     rules above remove per update after an overshoot (``_bisect``).
     """

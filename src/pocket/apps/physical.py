@@ -24,7 +24,7 @@ from pocket.core.inputs import MAGNITUDES, quote
 from pocket.core.materials import Material, mooney_rivlin
 from pocket.core.units import written_like
 
-from .cases import Case
+from .cases import THICKNESS_RATIO, Case
 from .contact import contact_pressures
 from .inverse import force_where, pressure_for_height, range_end
 from .rangeend import check_force
@@ -215,9 +215,10 @@ def forces(pocket: Pocket) -> list[float]:
 
 def _lower(pocket: Pocket, state) -> tuple[dict, list[str]]:
     """({"volume_lower_m3": V_lower R^3}, []): the fluid's volume under the sheet's lower surface, the state's
-    ``volume_lower`` at the case's T/R. Nothing for the solid, whose ``volume`` is under its lower surface
-    already; nothing and a warning where the lower surface would fold (an OutOfRangeError of its own)."""
-    if pocket.case.solver == "solid":
+    ``volume_lower`` at the case's T/R. Nothing for a solver that models the thickness (its record has the
+    option ``THICKNESS_RATIO``: the solid), whose ``volume`` is under its lower surface already; nothing and a
+    warning where the lower surface would fold (an OutOfRangeError of its own)."""
+    if pocket.solver().option(THICKNESS_RATIO) is not None:
         return {}, []
     try:
         v = state.volume_lower(pocket.case.thickness / pocket.case.radius)
