@@ -252,7 +252,9 @@ def test_rows_carry_the_loads_as_written(tmp_path):
                                        "clamp.radius": "20 mm", "initial.height": "10 mm",
                                        "loads.forces[0]": "0.2 N", "loads.forces[1]": "0.67 N",
                                        "loads.forces[2]": 0.1}
-    assert all(s["warnings"] == [] for s in result["states"]) and {r["warnings"] for r in rows} == {""}
+    # the plain force is read as newtons and said so, in every row (pocket.core.units.plain_warnings)
+    plain = "loads.forces[2] = 0.1 has no unit and is read as 0.1 N; write it with its unit ('0.1 N') to say so"
+    assert all(s["warnings"] == [plain] for s in result["states"]) and {r["warnings"] for r in rows} == {plain}
 
 
 def test_solver_options_are_given_as_written(tmp_path):

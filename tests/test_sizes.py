@@ -8,7 +8,7 @@ import pytest
 from pocket.apps.cases import SAMPLES, parse, sample
 from pocket.apps.design import design
 from pocket.cli import main
-from pocket.core.sizes import PLAIN_LENGTH_WARNING, SIZES, THIN_LIMIT, THIN_WARNING
+from pocket.core.sizes import SIZES, THIN_LIMIT, THIN_WARNING
 from pocket.core.units import is_plain, quantity
 
 CASE = """
@@ -79,9 +79,8 @@ def test_a_thick_sheet_warns_on_stderr_and_in_every_row(tmp_path, capsys):
 
 
 def test_a_plain_radius_warns_and_the_failure_names_it(tmp_path, capsys):
-    """radius = 20 is 20 m (> PLAIN_LENGTH_WARNING): a warning first, then the pressure it makes too large
-    (Phat_I = P_I R / (E T) = 4800 * 20 / (1.242e6 * 2.5e-4)) is an error naming the radius."""
-    assert 20 > PLAIN_LENGTH_WARNING
+    """radius = 20 is 20 m (20000 mm: most likely meant in mm): a warning first, then the pressure it makes too
+    large (Phat_I = P_I R / (E T) = 4800 * 20 / (1.242e6 * 2.5e-4)) is an error naming the radius."""
     status, err = _run(tmp_path, capsys, CASE.replace('radius = "20 mm"', "radius = 20"))
     lines = err.splitlines()
     assert status == 2 and len(lines) == 2, err
@@ -90,6 +89,22 @@ def test_a_plain_radius_warns_and_the_failure_names_it(tmp_path, capsys):
     phat = 4800 * 20 / (6 * (160e3 + 47e3) * 0.25e-3)
     assert lines[1].startswith(f"pocket: error: initial.pressure = '4.8 kPa' with sheet.thickness = '0.25 mm', "
                                f"clamp.radius = 20 (E = 1.242e+06 Pa) gives Phat_I = P_I R / (E T) = {phat:.6g}: ")
+
+
+def test_plain_metres_and_pascals_in_a_case_warn_whatever_their_size():
+    """A plain number where a unit is expected is SI and always said so, also when it is plausible in SI
+    (0.02 m, 4800 Pa, 0.5 N): each key named once, with the value written in the usual unit; with units, none."""
+    import tomllib
+
+    text = (CASE.replace('radius = "20 mm"', "radius = 0.02").replace('pressure = "4.8 kPa"', "pressure = 4800")
+            .replace('forces = ["0.5 N"]', 'forces = [0, 0.5]').replace('c2 = "47 kPa"', "c2 = 47e3"))
+    case = parse(tomllib.loads(text))
+    assert case.warnings == (
+        "clamp.radius = 0.02 has no unit and is read as 0.02 m; write it with its unit ('20 mm') to say so",
+        "sheet.c2 = 47000.0 has no unit and is read as 47000 Pa; write it with its unit ('47 kPa') to say so",
+        "initial.pressure = 4800 has no unit and is read as 4800 Pa; write it with its unit ('4.8 kPa') to say so",
+        "loads.forces[1] = 0.5 has no unit and is read as 0.5 N; write it with its unit ('0.5 N') to say so")
+    assert parse(tomllib.loads(CASE)).warnings == ()
 
 
 def test_plain_plate_heights_warn_each_key():

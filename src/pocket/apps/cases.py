@@ -71,9 +71,9 @@ from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
 from pocket.core.indenters import FLAT, Indenter
 from pocket.core.inputs import quote
-from pocket.core.materials import Material
+from pocket.core.materials import LAWS, Material
 from pocket.core.sizes import length_warnings, thin_sheet
-from pocket.core.units import positive, quantity
+from pocket.core.units import plain_warnings, positive, quantity
 
 from . import indenters
 from .rubbers import PARAMETERS, fluid, sheet
@@ -254,8 +254,27 @@ def _tags(data, where) -> tuple[str, ...]:
     return tuple(value)
 
 
+#: the keys of a case that are stresses (every law's, and Mooney-Rivlin's modulus) or other pressures
+_PRESSURES = {f"sheet.{n}" for law in LAWS.values() for n in law.stresses} | {"sheet.modulus", "fluid.ambient",
+                                                                               "initial.pressure"}
+
+
+def _quantities(given) -> list[tuple[str, object, str]]:
+    """(key, value as written, kind) of every pressure, volume and force of a case (its lengths are
+    ``_sizes``'s), one entry per element of a list."""
+    out = []
+    for key, value in given.items():
+        kind = "pressure" if key in _PRESSURES else "volume" if key == "initial.volume" else \
+            "force" if key.startswith("loads.forces[") else None
+        if kind is not None:
+            values = value if isinstance(value, list) else [value]
+            out += [(f"{key}[{i}]" if isinstance(value, list) else key, v, kind) for i, v in enumerate(values)]
+    return out
+
+
 def _sizes(given, thickness, radius, initial, loads) -> list[str]:
-    """The warnings on the case's lengths and on its sheet's thinness (``pocket.core.sizes``); an
+    """The warnings on the case's plain numbers (``pocket.core.units.plain_warnings``) and its sheet's thinness
+    (``pocket.core.sizes``); an
     ``InputError`` naming the key for a length no pocket has or a sheet too thick for a membrane."""
     lengths = [("sheet.thickness", thickness), ("clamp.radius", radius)]
     if initial[0] == "height":
@@ -263,6 +282,7 @@ def _sizes(given, thickness, radius, initial, loads) -> list[str]:
     if loads[0] == "heights":
         lengths += [(f"loads.heights[{i}]", h) for i, h in enumerate(loads[1])]
     warnings = [w for key, si in lengths for w in length_warnings(key, given[key], si)]
+    warnings += [w for key, value, kind in _quantities(given) for w in plain_warnings(key, value, kind)]
     why = f"sheet.thickness = {quote(given['sheet.thickness'])} on clamp.radius = {quote(given['clamp.radius'])}"
     return warnings + thin_sheet(thickness, radius, why)
 

@@ -4,9 +4,10 @@ A length is checked after ``pocket.core.units`` has made it SI:
 
 - outside ``SIZES`` it is refused (``InputError`` naming the key): a sheet thinner than a molecule or a
   pocket wider than a building is a typo, not a pocket;
-- written as a plain number (no unit, so metres) and above ``PLAIN_LENGTH_WARNING``, it draws a
-  warning: pocket buttons are millimetres to centimetres across, so ``radius = 20`` was most likely
-  meant as ``"20 mm"``.
+- written as a plain number (no unit, so metres) it draws a warning naming the key, whatever its size
+  (``pocket.core.units.plain_warnings``): pocket buttons are millimetres to centimetres across, so
+  ``radius = 20`` was most likely meant as ``"20 mm"``, and ``radius = 0.02`` is right only if it was
+  meant in metres.
 
 The sheet must be thin: membrane theory drops bending and the clamp's hold through the thickness,
 an error of order T/R (a solid model's volume is lower by about 1.0 T/R; where the fluid's surface
@@ -20,14 +21,12 @@ from __future__ import annotations
 
 from .errors import InputError
 from .inputs import quote
-from .units import is_plain
+from .units import plain_warnings
 
-__all__ = ["SIZES", "PLAIN_LENGTH_WARNING", "THIN_WARNING", "THIN_LIMIT", "length_warnings", "thin_sheet"]
+__all__ = ["SIZES", "THIN_WARNING", "THIN_LIMIT", "length_warnings", "thin_sheet"]
 
 #: smallest and largest length (m) pocket accepts: 1 nm (a few molecules) to 1 km
 SIZES = (1e-9, 1e3)
-#: a plain length (m) above which the number was probably meant in millimetres
-PLAIN_LENGTH_WARNING = 1.0
 #: T/R above which membrane theory's O(T/R) error passes 10 %: a warning
 THIN_WARNING = 0.1
 #: T/R at and above which the sheet is a plate, not a membrane: refused
@@ -41,10 +40,7 @@ def length_warnings(key: str, value, si: float) -> list[str]:
     if si != 0.0 and not low <= si <= high:
         raise InputError(f"{key} = {quote(value)} is {si:.6g} m, outside the sizes of a pocket "
                          f"({low:g} to {high:g} m)")
-    if si > PLAIN_LENGTH_WARNING and is_plain(value):
-        return [f"{key} = {quote(value)} has no unit and is read as {si:.6g} m; write '{value} mm' if "
-                "millimetres were meant"]
-    return []
+    return plain_warnings(key, value, "length")
 
 
 def thin_sheet(thickness: float, radius: float, why: str) -> list[str]:

@@ -21,7 +21,7 @@ import math
 from .errors import InputError
 from .inputs import quote
 
-__all__ = ["KINDS", "MAGNITUDES", "quantity", "positive", "written_like", "is_plain"]
+__all__ = ["KINDS", "MAGNITUDES", "SUGGESTED", "quantity", "positive", "written_like", "is_plain", "plain_warnings"]
 
 #: kind -> (pint dimensionality, SI unit)
 KINDS = {
@@ -31,6 +31,9 @@ KINDS = {
     "volume": ("[volume]", "m**3"),
 }
 
+
+#: kind -> the unit a pocket's values of that kind are usually written in (the plain-number warning's hint)
+SUGGESTED = {"length": "mm", "pressure": "kPa", "force": "N", "volume": "mL"}
 
 #: smallest and largest nonzero |value| in SI units
 MAGNITUDES = (1e-20, 1e20)
@@ -95,6 +98,42 @@ def is_plain(value) -> bool:
         return bool(_registry().Quantity(value).dimensionless)
     except Exception:  # pint's parser raises many types; such text is refused by quantity first
         return False
+
+
+def plain_warnings(key: str, value, kind: str) -> list[str]:
+    """The warning on ``value``, a valid quantity of ``kind`` given as ``key``, if it was written without a unit:
+    a list of one line, or empty for a value with a unit or a plain zero (zero is zero in every unit).
+
+    This is pocket's one rule for plain numbers where a unit is expected, in case files and on the command
+    line alike: the number is read as SI (metres, pascals, newtons, cubic metres), and the reader is told so,
+    whatever its size, since ``15`` is as likely millimetres as ``0.015`` is metres.
+
+    Examples
+    --------
+    >>> plain_warnings("--radius", "15", "length")
+    ["--radius = '15' has no unit and is read as 15 m; write '15 mm' if millimetres were meant"]
+    >>> plain_warnings("--radius", "0.015", "length")
+    ["--radius = '0.015' has no unit and is read as 0.015 m; write it with its unit ('15 mm') to say so"]
+    >>> plain_warnings("--radius", "15 mm", "length")
+    []
+    """
+    if not is_plain(value):
+        return []
+    si = quantity(key, value, kind)
+    if si == 0.0:
+        return []
+    unit, hint = KINDS[kind][1], SUGGESTED[kind]
+    meant = float(_registry().Quantity(si, unit).to(hint).magnitude)
+    text = f"{key} = {quote(value)} has no unit and is read as {si:.6g} {unit.replace('**3', '^3')}"
+    if abs(meant) >= _LARGE:  # 15 m is 15000 mm: the number was most likely written in the usual unit
+        return [f"{text}; write '{value} {hint}' if {_NAMES[hint]} were meant"]
+    return [f"{text}; write it with its unit ('{meant:.6g} {hint}') to say so"]
+
+
+#: a plain value this many times the usual unit (15 m = 15000 mm) was most likely meant in that unit
+_LARGE = 1000.0
+#: a suggested unit's name in the warning's sentence
+_NAMES = {"mm": "millimetres", "kPa": "kilopascals", "N": "newtons", "mL": "millilitres"}
 
 
 def written_like(value: float, given, kind: str) -> str:
