@@ -65,7 +65,7 @@ def tables(basis_u: Basis, basis_p: Basis, bottom: FacetBasis) -> Tables:
     r = basis_u.global_coordinates()[0]
     comps = np.array([forms.components(phi[0], r) for phi in basis_u.basis])  # (18, 5, e, q)
     psi = np.array([np.asarray(phi[0]) for phi in basis_p.basis])  # (4, e, q)
-    facet = np.array([[phi[0].value[0], phi[0].value[1], phi[0].grad[0, 0]] for phi in bottom.basis])
+    facet = np.array([[*np.asarray(phi[0])[:2], phi[0].grad[0, 0]] for phi in bottom.basis])
     return Tables(np.ascontiguousarray(comps.transpose(2, 3, 1, 0)), basis_u.dx * 2.0 * np.pi * r,
                   basis_u.element_dofs, np.ascontiguousarray(psi.transpose(1, 0, 2)), basis_p.element_dofs,
                   np.ascontiguousarray(facet.transpose(2, 3, 1, 0)), bottom.global_coordinates()[0],

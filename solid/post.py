@@ -15,9 +15,9 @@ quadratic of its three nodes in each element, so a line's slope and integrals ar
   (L2) and integrated by Simpson's rule on each layer (exact for the quadratic in z).
 - Incompressibility, two measures of J - 1 = det F - 1. Taylor-Hood holds the weak constraint
   R_p[psi_k] = int psi_k (J - 1) dV = 0 against each bilinear pressure psi_k, which Newton solves
-  to its tolerance: ``incompressibility_weak`` is max_k |R_p[psi_k]| / int psi_k dV, the
+  to its tolerance: ``det_f_constraint_residual`` is max_k |R_p[psi_k]| / int psi_k dV, the
   pressure-weighted mean of J - 1 around node k (relative, like J - 1 itself). Pointwise J - 1 is a
-  discretisation error: ``incompressibility`` is its largest |.| at the quadrature points (~0.4 at
+  discretisation error: ``mesh_det_f_error_peak`` is its largest |.| at the quadrature points (~0.4 at
   the clamp's singular corners, whose elements are half a thickness long whatever the mesh, so it
   does not fall with the mesh there; away from the clamp it falls at order ~2, a test shows).
 """
@@ -49,8 +49,8 @@ class Fields:
     top_rho: np.ndarray    # (2n+1,) the upper surface's deformed radius and height
     top_eta: np.ndarray
     volume_mid: float
-    incompressibility: float
-    incompressibility_weak: float
+    mesh_det_f_error_peak: float
+    det_f_constraint_residual: float
 
 
 def _slope(r: np.ndarray, f: np.ndarray) -> np.ndarray:
@@ -111,10 +111,10 @@ def fields(model: Model, y: np.ndarray) -> Fields:
     uq = model.basis_u.interpolate(u)
     F = kin.gradient(uq.grad, uq[0], model.basis_u.global_coordinates()[0])
     change = kin.jacobian(F) - 1.0
-    out.incompressibility = float(np.abs(change).max())
+    out.mesh_det_f_error_peak = float(np.abs(change).max())
     tab = model.tables
     weak = assembly.pressure_moments(tab, change) / assembly.pressure_moments(tab, np.ones_like(change))
-    out.incompressibility_weak = float(np.abs(weak).max())
+    out.det_f_constraint_residual = float(np.abs(weak).max())
     pressure = np.asarray(model.basis_p.interpolate(p))
     P = kin.energy_derivatives(F, model.law)[0] + pressure * kin.jacobian_derivatives(F)[0]
     nodal = {key: scalar.project(P[a])[grid] for key, a in {"rR": 0, "zR": 2, "hoop": 4}.items()}

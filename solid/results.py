@@ -6,11 +6,17 @@ in contact) above the clamp plane (the flat sheet's mid-plane), ``volume`` the c
 lower surface (the fluid's). The profile is the mid-surface's, its tensions the through-thickness
 stress resultants (``post``). Extra keys: ``height_mid`` (the mid-surface's pole height),
 ``volume_mid`` (the volume under the mid-surface, from its own flat plane: equal to ``volume`` up
-to the discrete incompressibility, for the sheet between them keeps its volume), the mesh and the
-iterations, and two measures of det F - 1 (``post``): ``incompressibility_weak`` (the residual of
-Taylor-Hood's constraint int q (J - 1) dV = 0, max over the bilinear pressures q of |int q (J - 1) dV| /
-int q dV: at the Newton tolerance) and ``incompressibility`` (the largest |det F - 1| at the quadrature
-points: ~0.4 at the clamp's singular corners, a discretisation error).
+to the discrete incompressibility, for the sheet between them keeps its volume), the mesh
+(``mesh_elements`` along the radius, as built: the clamp's corner elements replace a few of the
+elements asked for; ``mesh_layers`` through the thickness) and the iterations, and two measures of
+det F - 1 (``post``), named for what they are, not a volume error: ``det_f_constraint_residual`` (the
+residual of Taylor-Hood's constraint int q (J - 1) dV = 0, max over the bilinear pressures q of
+|int q (J - 1) dV| / int q dV: at the Newton tolerance) and ``mesh_det_f_error_peak`` (the largest
+|det F - 1| at one quadrature point: ~0.4 at the clamp's singular corners, a local discretisation
+error of the mesh; the sheet's volume is kept to the constraint's residual).
+
+The states are the solid's, not a membrane's (``membrane`` false): a compressive stress resultant is
+carried by the solid, and its warning says what that means for it (``pocket.core.states``).
 
 Contact on the plate: the contact edge lies between the outermost node of the active set and the next
 node, which is free. Beyond the edge the sheet leaves the plate tangentially, its gap to the plate
@@ -62,10 +68,10 @@ def _profile(f, contact: np.ndarray) -> Profile:
 
 
 def _extra(model: Model, f, iterations: int) -> dict:
-    return {"height_mid": float(f.eta[0]), "volume_mid": f.volume_mid, "incompressibility": f.incompressibility,
-            "incompressibility_weak": f.incompressibility_weak,
-            "thickness_ratio": model.thickness, "elements": model.mesh.t.shape[1] // _layers(model),
-            "layers": _layers(model), "iterations": iterations}
+    return {"height_mid": float(f.eta[0]), "volume_mid": f.volume_mid,
+            "det_f_constraint_residual": f.det_f_constraint_residual, "mesh_det_f_error_peak": f.mesh_det_f_error_peak,
+            "thickness_ratio": model.thickness, "mesh_elements": model.mesh.t.shape[1] // _layers(model),
+            "mesh_layers": _layers(model), "iterations": iterations}
 
 
 def _layers(model: Model) -> int:
@@ -108,7 +114,7 @@ def inflated(model: Model, material: Material, y: np.ndarray, iterations: int, p
         stretch_pole=float(f.stretch_1[0]), height=float(f.top_eta[0]),
         volume=volume(model, y) if volume_given is None else volume_given,
         stretch_clamp=float(f.stretch_1[-1]), profile=_profile(f, np.zeros(f.r.size, bool)), solver="solid",
-        extra=_extra(model, f, iterations))
+        extra=_extra(model, f, iterations), membrane=False)
 
 
 def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarray, iterations: int,
@@ -135,4 +141,4 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
         pressure=phat, pressure_ratio=phat / start.pressure, contact_area=area, contact_radius=r_c,
         stretch_contact=stretch, height=height, height_ratio=height / start.height,
         volume=volume(model, y), profile=_profile(f, f.r <= r_c), inflated=start, solver="solid", extra=extra,
-        fluid=fluid, contact_radius_deformed=rho_c)
+        fluid=fluid, contact_radius_deformed=rho_c, membrane=False)

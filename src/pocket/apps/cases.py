@@ -272,9 +272,10 @@ def _quantities(given) -> list[tuple[str, object, str]]:
     return out
 
 
-def _sizes(given, thickness, radius, initial, loads) -> list[str]:
-    """The warnings on the case's plain numbers (``pocket.core.units.plain_warnings``) and its sheet's thinness
-    (``pocket.core.sizes``); an
+def _sizes(given, thickness, radius, initial, loads, membrane: bool) -> list[str]:
+    """The warnings on the case's plain numbers (``pocket.core.units.plain_warnings``) and, for a ``membrane``
+    solver, its sheet's thinness (``pocket.core.sizes``; a solver that models the thickness checks its own T/R
+    and speaks for itself); an
     ``InputError`` naming the key for a length no pocket has or a sheet too thick for a membrane."""
     lengths = [("sheet.thickness", thickness), ("clamp.radius", radius)]
     if initial[0] == "height":
@@ -284,7 +285,7 @@ def _sizes(given, thickness, radius, initial, loads) -> list[str]:
     warnings = [w for key, si in lengths for w in length_warnings(key, given[key], si)]
     warnings += [w for key, value, kind in _quantities(given) for w in plain_warnings(key, value, kind)]
     why = f"sheet.thickness = {quote(given['sheet.thickness'])} on clamp.radius = {quote(given['clamp.radius'])}"
-    return warnings + thin_sheet(thickness, radius, why)
+    return warnings + thin_sheet(thickness, radius, why) if membrane else warnings
 
 
 def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=None) -> Case:
@@ -322,7 +323,8 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     indenter = indenters.parse(data["indenter"], radius, base, given, warnings=pressing) if "indenter" in data else FLAT
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
     options = _thickness_ratio(solver, options, thickness, radius, given)
-    warnings = _sizes(given, thickness, radius, initial=(kind, value), loads=(load_kind, loads)) + pressing
+    membrane = record(solver).option(THICKNESS_RATIO) is None
+    warnings = _sizes(given, thickness, radius, (kind, value), (load_kind, loads), membrane) + pressing
     return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
                 label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()),

@@ -90,8 +90,12 @@ def _complete(state) -> None:
         if profile is not None:
             i = int(np.argmin(getattr(profile, f"tension_{which}")))
             where = f" at r = {profile.r[i]:.4g} R"
-        note = (f"compressive tension: T_{which} = {low:.4g} E T{where}; membrane theory needs T_1, T_2 > 0 "
-                "(the sheet would wrinkle there)")
+        if state.membrane:
+            note = (f"compressive tension: T_{which} = {low:.4g} E T{where}; membrane theory needs T_1, T_2 > 0 "
+                    "(the sheet would wrinkle there)")
+        else:  # a solid carries compression; what it cannot show is a wrinkle out of its axisymmetric plane
+            note = (f"compressive stress resultant: T_{which} = {low:.4g} E T{where}; the axisymmetric solid "
+                    "carries it, but a real sheet may wrinkle or buckle out of axisymmetry there")
         if note not in state.warnings:
             object.__setattr__(state, "warnings", (*state.warnings, note))
 
@@ -116,6 +120,7 @@ class _Membrane:
     volume: float
     profile: Profile | None
     solver: str
+    membrane: bool
 
     def __post_init__(self):
         _complete(self)
@@ -153,6 +158,8 @@ class InflatedState(_Membrane):
     tension); the command line prints them and JSON carries them. ``material``
     is the rubber as given (``mooney_rivlin(alpha)`` for an alpha); the smallest
     tensions (default: from the profile) are filled in when not given.
+    ``membrane`` is false for a state of a model of the sheet's thickness (the solid),
+    whose warnings speak of its stress resultants rather than of membrane theory.
     """
 
     material: Material
@@ -167,6 +174,7 @@ class InflatedState(_Membrane):
     warnings: tuple[str, ...] = ()
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
+    membrane: bool = True
 
     KEYS = ("alpha", "pressure", "stretch_pole", "height", "volume", "stretch_clamp")
 
@@ -217,6 +225,7 @@ class CompressedState(_Membrane):
     contact_pressure_pole: float = math.nan
     contact_pressure_edge: float = math.nan
     contact_pressure: np.ndarray | None = None
+    membrane: bool = True
 
     #: reported after KEYS where given (finite)
     CONTACT_KEYS = ("contact_radius_deformed", "contact_pressure_pole", "contact_pressure_edge")
