@@ -263,3 +263,12 @@ def test_fitted_modulus_no_rubber_warns():
     bare = Setup((), R, None)
     assert fitchecks.modulus_warnings(bare, TRUTH.mu0 * T) == []
     assert "even for a sheet as thick" in fitchecks.modulus_warnings(bare, 1e9 * R)[0]
+
+
+def test_fit_prestretched_sheet_on_a_large_clamp_not_refused(tmp_path, capsys, stop_fit):
+    """A prestretched sheet is taut: its dome at small pressure is P R^2 / (4 N_0), so millimetres on a 15 m clamp
+    are no contradiction, and with the prestretch held the plain radius is said but the data are not refused (the
+    slack sheet's modulus bound does not apply)."""
+    status, _, err = _run([bulge_csv(tmp_path / "b.csv"), "--radius", "15", "--fix", "prestretch=1.1"], capsys)
+    assert status == 2 and "stopped before the fit" in err.splitlines()[-1], err
+    assert err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in plain_warnings("--radius", "15", "length")]

@@ -87,7 +87,7 @@ class Request:
                                  "uncertainty to weight")
             raise InputError(f"{spell(name)}: an uncertainty for {name} is stated, but no test has {name} data")
         setup = Setup(tests, self.radius, self.thickness, self.solver, {}, self.sigma)
-        fitchecks.check(setup, spell)
+        fitchecks.check(setup, spell, slack=not self.prestretch and self.fixed.get(PRESTRETCH, 1.0) == 1.0)
         return setup
 
 

@@ -21,7 +21,9 @@ stiffer than any solid, or below ``MIN_MODULUS``, softer than any gel that holds
 is wrong (the pressures', the heights' or R's); without T, a membrane is thinner than its clamp radius,
 so E >= E T / R, refused above ``MAX_MODULUS`` too. The estimate is biased at the larger strains of a
 test's first rows by a factor of a few (``pocket.apps.fitstart``), far inside these bounds (a rubber's E
-is about 1e6 Pa).
+is about 1e6 Pa). It holds for a slack sheet only: a prestretched one is taut, its height at small
+pressure P R^2 / (4 N_0) set by the flat sheet's tension N_0, so a tiny dome on a large clamp is no
+contradiction; where the prestretch is held above 1 or fitted, the modulus is not checked.
 
 Uncertainties. A stated uncertainty larger than every value of its column (``--sigma height=0.02``,
 20 mm, beside heights of a few mm) is no measurement's: refused.
@@ -106,13 +108,14 @@ def _uncertainties(setup: Setup, spell: Callable[[str], str]) -> None:
                              "unit is wrong")
 
 
-def check(setup: Setup, spell: Callable[[str], str] = lambda name: f"--sigma {name}") -> None:
+def check(setup: Setup, spell: Callable[[str], str] = lambda name: f"--sigma {name}", slack: bool = True) -> None:
     """Refuse ``setup`` where its data beside the clamp radius, the thickness and the stated uncertainties
     can only be in a wrong unit (module docstring): an InputError naming the file and column, or the
-    uncertainty (a column's, named by ``spell(column)``)."""
+    uncertainty (a column's, named by ``spell(column)``). ``slack``: the sheet is fitted without prestretch
+    (else the modulus is not checked)."""
     for test in setup.tests:
         _columns(test, setup.radius)
-    for test in setup.tests:
+    for test in setup.tests if slack else ():
         _modulus(setup, test)
     _uncertainties(setup, spell)
 
@@ -125,11 +128,11 @@ def modulus_warnings(setup: Setup, mu0: float) -> list[str]:
         modulus = 3.0 * mu0
         if low <= modulus <= high:
             return []
-        return [f"the fitted E = 3 mu_0 = {modulus:.3g} Pa is no rubber's ({low:g} to {high:g} Pa): check the units "
-                "of the data, the clamp radius and the thickness"]
+        return [f"the fitted E = 3 mu_0 = {modulus:.3g} Pa is no rubber's ({low:.0e} to {high:.0e} Pa): check the "
+                "units of the data, the clamp radius and the thickness"]
     bound = 3.0 * mu0 / setup.radius
     if bound <= high:
         return []
     return [f"the fitted E T = 3 mu_0 T = {3.0 * mu0:.3g} N/m gives E >= {bound:.3g} Pa even for a sheet as thick "
-            f"as the clamp radius, no rubber's ({low:g} to {high:g} Pa): check the units of the data and the clamp "
+            f"as the clamp radius, no rubber's ({low:.0e} to {high:.0e} Pa): check the units of the data and the clamp "
             "radius"]

@@ -115,7 +115,8 @@ def register(subparsers) -> None:
         "or the pressure of its row at zero force. Several files are fitted jointly. Residuals are relative, or in "
         "units of a column's --sigma. Reports each parameter with its standard error (from the Jacobian and the "
         "residual variance), 95 %% interval, the correlations and warnings where the data do not determine a "
-        "parameter.")
+        "parameter. A value without a unit ('--radius 15') is read in SI (15 m) and said so; data that make such a "
+        "reading absurd are refused before solving.")
     p.add_argument("data", nargs="+", metavar="DATA.csv",
                    help="test data files, or one case file (CASE.toml) whose [fit] table names them and whose "
                    "[sheet], [clamp], [initial] and [solver] replace the flags")
