@@ -272,3 +272,14 @@ def test_fit_prestretched_sheet_on_a_large_clamp_not_refused(tmp_path, capsys, s
     status, _, err = _run([bulge_csv(tmp_path / "b.csv"), "--radius", "15", "--fix", "prestretch=1.1"], capsys)
     assert status == 2 and "stopped before the fit" in err.splitlines()[-1], err
     assert err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in plain_warnings("--radius", "15", "length")]
+
+
+def test_fit_case_file_plain_values_warn(tmp_path, capsys, stop_fit):
+    """A fit's case file follows the same rule: ``radius = 0.02`` (a TOML number) and ``sigma = {height =
+    0.00002}`` are read in SI and said, each named by its key (the plain_warnings lines, in the file's order)."""
+    bulge_csv(tmp_path / "b.csv")
+    (tmp_path / "case.toml").write_text('[sheet]\nthickness = "1 mm"\n[clamp]\nradius = 0.02\n[fit]\ndata = ["b.csv"]\n'
+                                        "sigma = {height = 0.00002}\n")
+    status, _, err = _run([str(tmp_path / "case.toml")], capsys)
+    expected = [*plain_warnings("clamp.radius", 0.02, "length"), *plain_warnings("fit.sigma.height", 2e-5, "length")]
+    assert status == 2 and err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in expected], err

@@ -17,10 +17,10 @@ would drop it, and report a parameter the data do not determine with a standard 
 mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov grad(mu_0), and its
 interval as the keys'.
 
-At a bound. A parameter within its standard error, or within the fit's Jacobian step (a relative 1e-6,
-``pocket.apps.fit``), of a bound of its admissible set (C1 > 0, Jm > 0, a prestretch >= 1: the keys'
-``lower``) sits there: the data pull it past the bound, the least squares stop at it, and its standard
-error is of a one-sided fit (it can be tiny, or 0). Each such parameter is a warning saying so.
+At a bound. A parameter within the fit's Jacobian step (a relative 1e-6, ``pocket.apps.fit``) of a bound
+of its admissible set (C1 > 0, Jm > 0, a prestretch >= 1: the keys' ``lower``) sits there: the data pull
+it past the bound, the least squares stop at it, and its standard error is of a one-sided fit (it can be
+tiny). Each such parameter is a warning saying so.
 
 Identifiability. Non-uniqueness is real for these laws (Ogden, Saccomandi and Sgura, 2004): a
 parameter whose SE exceeds |value| is not determined, and two parameters correlated beyond
@@ -108,7 +108,7 @@ def _at_bounds(free, values, se, mu0: float) -> list[str]:
     """A warning for each parameter that sits at a bound of its admissible set (module docstring)."""
     out = []
     for key, v, e in zip(free, values, se, strict=True):
-        near = max(e, _NEAR * (mu0 if key.unit == "stress" else max(abs(v), 1.0)))
+        near = _NEAR * (mu0 if key.unit == "stress" else max(abs(v), 1.0))
         for bound in (key.lower, key.upper):
             if math.isfinite(bound) and abs(v - bound) <= near:
                 out.append(f"{key.name} = {v:.6g} +- {e:.2g} sits at {bound:g}, a bound of its admissible set: the "

@@ -32,8 +32,9 @@ _HEADING = re.compile(r"^\s*(?P<name>[^\[\]]*?)\s*\[(?P<unit>[^\[\]]*)\]\s*$")
 
 
 def rows(path, what: str) -> list[list[str]]:
-    """The non-blank rows of the CSV file ``path`` as lists of cells; an unreadable, oversized or non-UTF-8
-    file is an InputError naming ``path`` and ``what`` the file should be ("a profile table")."""
+    """The non-blank rows of the CSV file ``path`` as lists of cells, read as a spreadsheet saves it (module
+    docstring: a byte-order mark dropped, the header's separator, decimal commas); an unreadable, oversized or
+    non-UTF-8 file is an InputError naming ``path`` and ``what`` the file should be ("a profile table")."""
     path = pathlib.Path(path)
     try:
         if path.stat().st_size > MAX_BYTES:
