@@ -110,9 +110,24 @@ def test_fit_height_many_radii_refused(tmp_path, capsys, no_solve):
         setup = Setup((test,), top / (fitchecks.MAX_STRETCH * factor), None)
         if refused:
             with pytest.raises(InputError, match="above 20 R"):
-                fitchecks._columns(test, setup.radius)
+                fitchecks.check(setup, slack=False)
         else:
-            fitchecks._columns(test, setup.radius)
+            fitchecks.check(setup, slack=False)  # the height bound alone (slack=False: no modulus bound)
+
+
+def test_fit_volume_past_any_sphere_refused():
+    """A volume column is bounded by the isoperimetric inequality: no closed surface of area (20^2 + 1) pi R^2 (the
+    dome at 20 times stretch and the clamp disc) holds more than the sphere's (401 pi R^2)^(3/2) / (6 sqrt(pi)) =
+    401^(3/2) pi R^3 / 6; 1 % past it is refused, 1 % inside it is not (a volume in m^3 for mL data is 1e6 past)."""
+    bound = 401.0**1.5 * math.pi / 6.0 * R**3
+    for factor, refused in ((1.01, True), (0.99, False)):
+        test = fitdata.Dataset("inflation", np.array([1e3, 2e3]), {"volume": np.array([0.5, 1.0]) * bound * factor},
+                               None, "v.csv")
+        if refused:
+            with pytest.raises(InputError, match="v.csv: the volume column"):
+                fitchecks.check(Setup((test,), R, T), slack=False)
+        else:
+            fitchecks.check(Setup((test,), R, T), slack=False)
 
 
 def test_fit_furlong_column_refused(tmp_path, capsys, no_solve):
