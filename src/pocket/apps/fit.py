@@ -39,7 +39,7 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.materials import Material
 
-from . import fitstats
+from . import fitchecks, fitstats
 from .fitkeys import PRESTRETCH, Key, key_named, keys
 from .fitmodel import PENALTY, Setup, predict, residuals
 from .fitstart import starts
@@ -126,7 +126,7 @@ class _Problem:
         try:
             values, calls = predict(self.setup, self.material(x))
         except InputError:  # a Gent prestretch past the trial Jm's locking: outside the admissible set
-            values, calls = predict(self.setup, None), 0
+            values, calls = predict(self.setup, None)  # no state anywhere, no solver called
         r = residuals(self.setup, values)
         self.count["calls"] += calls
         self.count["penalised"] += bool(np.any(r == PENALTY))
@@ -230,6 +230,7 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
         raise ConvergenceError(f"the {law} fit ended outside the model's range")
     notes = [] if status > 0 else [f"the fit stopped after {evaluations} evaluations without meeting its "
                                    "tolerances: the parameters may be ill-determined"]
+    notes += fitchecks.modulus_warnings(setup, problem.material(x).mu0)
     jac = problem.jacobian(x)
     material = problem.material(x)
     stats = fitstats.statistics(setup, material, free, problem.gradient(x), r, jac)

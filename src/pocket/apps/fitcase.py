@@ -21,7 +21,9 @@ A case file names the data instead of the flags (TOML, read as ``pocket.apps.cas
 
 The law's parameters are what the fit finds, so ``[sheet]`` names none (``[fit] fix`` holds some).
 Every problem is a one-line ``InputError`` naming the key, before any file of data is read; a case
-file without ``[fit]`` says that ``pocket fit`` needs one.
+file without ``[fit]`` says that ``pocket fit`` needs one. A dimensional value written without a unit,
+in a case file or on the command line, is read as SI and said so (``pocket.core.units.plain_warnings``:
+``Request.warnings``); the data read then bound what such a value can be (``pocket.apps.fitchecks``).
 """
 
 from __future__ import annotations
@@ -32,16 +34,17 @@ from collections.abc import Callable
 
 from pocket.core.errors import InputError
 from pocket.core.inputs import quote
-from pocket.core.units import positive, quantity
+from pocket.core.units import plain_warnings, positive, quantity
 
-from .fitdata import QUANTITIES, read
+from . import fitchecks
+from .fitdata import CONTROLS, QUANTITIES, read
 from .fitkeys import PRESTRETCH, key_named, keys
 from .fitmodel import Setup
 from .fitstart import MAX_TERMS
 from .rubbers import DEFAULT_LAW, law_name
 from .tomlfiles import read_toml
 
-__all__ = ["Request", "held", "uncertainties", "load", "parse"]
+__all__ = ["Request", "held", "uncertainties", "unit_warnings", "load", "parse"]
 
 _SECTIONS = {"name": None, "label": None, "sheet": ("material", "thickness", "prestretch"), "clamp": ("radius",),
              "initial": ("pressure",), "fit": ("data", "terms", "fix", "sigma", "prestretch"), "solver": ("name",)}
@@ -53,7 +56,8 @@ class Request:
     """A fit asked for: the ``data`` files, the ``law`` with its Ogden ``terms``, the clamp ``radius`` (m), the
     sheet's ``thickness`` (m, or None), the compression tests' ``initial_pressure`` (Pa, or None: each test's
     zero-force row), the keys held (``fixed``: name -> value, stresses in Pa), the columns' stated uncertainties
-    (``sigma``: column -> SI value), whether to fit the ``prestretch``, and the ``solver`` by name."""
+    (``sigma``: column -> SI value), whether to fit the ``prestretch``, the ``solver`` by name, the ``warnings``
+    on its inputs (one line each) and the ``case`` file it was read from (None: the command line's flags)."""
 
     data: tuple[pathlib.Path, ...]
     law: str = DEFAULT_LAW
@@ -65,14 +69,26 @@ class Request:
     sigma: dict = dataclasses.field(default_factory=dict)
     prestretch: bool = False
     solver: str = "shooting"
+    warnings: tuple[str, ...] = ()
+    case: str | None = None
 
     def setup(self) -> Setup:
-        """The tests read (``pocket.apps.fitdata.read``; bad data is an InputError) and what the fit compares."""
+        """The tests read (``pocket.apps.fitdata.read``) and what the fit compares; bad data, or data that make
+        a unit absurd (``pocket.apps.fitchecks.check``), is an InputError."""
         tests = tuple(read(path, self.initial_pressure) for path in self.data)
+        spell = _spelling("--sigma" if self.case is None else "fit.sigma")
         for name in self.sigma:
-            if not any(name in t.responses for t in tests):
-                raise InputError(f"an uncertainty for {name} is stated, but no test has {name} data")
-        return Setup(tests, self.radius, self.thickness, self.solver, {}, self.sigma)
+            if any(name in t.responses for t in tests):
+                continue
+            controlled = sorted({t.kind for t in tests if CONTROLS[t.kind] == name})
+            if controlled:
+                raise InputError(f"{spell(name)}: {name} is the controlled variable of {' and '.join(controlled)} "
+                                 f"tests (the model is solved at each {name} given), so it has no residual for an "
+                                 "uncertainty to weight")
+            raise InputError(f"{spell(name)}: an uncertainty for {name} is stated, but no test has {name} data")
+        setup = Setup(tests, self.radius, self.thickness, self.solver, {}, self.sigma)
+        fitchecks.check(setup, spell, slack=not self.prestretch and self.fixed.get(PRESTRETCH, 1.0) == 1.0)
+        return setup
 
 
 def _spelling(flag: str) -> Callable[[str], str]:
@@ -111,6 +127,20 @@ def uncertainties(given: dict, flag: str) -> dict:
             raise InputError(f"{spell(name)}: not a column of test data ({', '.join(QUANTITIES)})")
         out[name] = positive(spell(name), value, QUANTITIES[name])
     return out
+
+
+def unit_warnings(law: str, terms: int, values: dict, fix: dict, fix_flag: str, sigma: dict,
+                  sigma_flag: str) -> tuple[str, ...]:
+    """The warnings on a fit's dimensional inputs written without a unit (``pocket.core.units.plain_warnings``):
+    ``values`` (key -> (value as written or None, kind)), the stresses held by ``fix`` and the uncertainties
+    ``sigma`` (name -> value as written, already checked by ``held`` and ``uncertainties``), named with
+    ``fix_flag`` and ``sigma_flag``."""
+    all_keys, spell_fix, spell_sigma = keys(law, terms), _spelling(fix_flag), _spelling(sigma_flag)
+    given = [(key, value, kind) for key, (value, kind) in values.items() if value is not None]
+    given += [(spell_fix(name), value, "pressure") for name, value in fix.items()
+              if key_named(all_keys, name, fix_flag).unit == "stress"]
+    given += [(spell_sigma(name), value, QUANTITIES[name]) for name, value in sigma.items()]
+    return tuple(w for key, value, kind in given for w in plain_warnings(key, value, kind))
 
 
 def _table(data: dict, section: str, where: str, required: bool = True) -> dict:
@@ -187,9 +217,14 @@ def parse(data: dict, where: str = "case", base=None) -> Request:
     solver = _table(data, "solver", where, required=False).get("name", "shooting")
     if solver not in _SOLVERS:
         raise InputError(f"solver.name = {quote(solver)}, but a fit's solver is one of {', '.join(_SOLVERS)}")
+    sigma = _mapping(fit_table, "sigma")
+    sigma_si = uncertainties(sigma, "fit.sigma")
+    warnings = unit_warnings(law, terms, {"clamp.radius": (clamp["radius"], "length"),
+                                          "sheet.thickness": (sheet.get("thickness"), "length"),
+                                          "initial.pressure": (initial.get("pressure"), "pressure")},
+                             _mapping(fit_table, "fix"), "fit.fix", sigma, "fit.sigma")
     return Request(_data(fit_table, pathlib.Path(base or ".")), law, radius, thickness, pressure, terms, fixed,
-                   uncertainties(_mapping(fit_table, "sigma"), "fit.sigma"), fit_prestretch,
-                   solver)
+                   sigma_si, fit_prestretch, solver, warnings, where)
 
 
 def load(path) -> Request:

@@ -9,9 +9,10 @@ Each file is one test of the clamped sheet, its header naming each column's quan
   the plate, the sheet's top); the force is the control (>= 0, no force twice), at the initial
   pressure P_I given (``initial_pressure``), or else read from the row at zero force.
 
-Any other column, a column without a unit or of the wrong dimension, a cell that is not a finite
-number, or a response that is not > 0 (a relative residual divides by it) is a one-line
-``InputError`` naming the file, the row or the column. The fluid is a liquid (the volume is fixed
+The file is read as a spreadsheet saves it (``pocket.core.tables``: a byte-order mark ignored, ``;``
+with decimal commas). Any other column, a column without a unit or of the wrong dimension, a cell
+that is not a finite number, or a response that is not > 0 (a relative residual divides by it) is a
+one-line ``InputError`` naming the file, the row or the column. The fluid is a liquid (the volume is fixed
 under compression, so a volume column there says nothing and is refused).
 """
 

@@ -55,7 +55,8 @@ def summary(fit: Fit) -> dict:
                               "unit": _unit(fit, name)}
                        for name, v, e, (a, b) in zip(s.names, s.values, s.standard_errors, s.intervals, strict=True)},
         "fixed": {name: {"value": float(v), "unit": _unit(fit, name)} for name, v in fit.fixed.items()},
-        "mu0": {"value": s.mu0, "standard_error": s.mu0_error, "unit": "Pa" if fit.setup.thickness else "N/m"},
+        "mu0": {"value": s.mu0, "standard_error": s.mu0_error, "interval_95": [float(v) for v in s.mu0_interval],
+                "unit": "Pa" if fit.setup.thickness else "N/m"},
         "thickness_m": fit.setup.thickness,
         "radius_m": fit.setup.radius,
         "tension_scale": "the membrane model sees the rubber only through mu_0 T" +

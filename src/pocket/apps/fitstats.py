@@ -7,12 +7,20 @@ sigma^2 (relative residuals, or residuals in units of the stated uncertainties),
     s^2 = RSS / (n - p),   RSS = r . r,
     Cov(x) = s^2 (J^T J)^-1,   Cov(value) = G Cov(x) G^T,   G = d value / dx
 
-(G = diag(s_k) where each key is its own coordinate, Ogden's: ``pocket.apps.fitkeys``; the pseudo-
-inverse by SVD, so a rank-deficient J gives infinite-looking but finite numbers rather than an
-error), standard errors SE_k = sqrt(Cov_kk), correlations Cov_kl / (SE_k SE_l) and 95 % intervals
-value_k +- t_{0.975, n-p} SE_k (Student's t: s^2 is estimated from the same n - p degrees of
-freedom). mu_0 = mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov
-grad(mu_0).
+(G = diag(s_k) where each key is its own coordinate, Ogden's: ``pocket.apps.fitkeys``), standard
+errors SE_k = sqrt(Cov_kk), correlations Cov_kl / (SE_k SE_l) and 95 % intervals value_k +- t_{0.975,
+n-p} SE_k (Student's t: s^2 is estimated from the same n - p degrees of freedom), cut at the key's
+bounds (a value outside the admissible set is no rubber). (J^T J)^-1 is taken from the SVD of J,
+J = U S V^T: (J^T J)^-1 = V S^-2 V^T, each singular value floored at ``_RCOND`` times the largest, so
+that a direction the data do not see gets a huge variance, never a zero one (a pseudo-inverse of J^T J
+would drop it, and report a parameter the data do not determine with a standard error of 0). mu_0 =
+mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov grad(mu_0), and its
+interval as the keys'.
+
+At a bound. A parameter within the fit's Jacobian step (a relative 1e-6, ``pocket.apps.fit``) of a bound
+of its admissible set (C1 > 0, Jm > 0, a prestretch >= 1: the keys' ``lower``) sits there: the data pull
+it past the bound, the least squares stop at it, and its standard error is of a one-sided fit (it can be
+tiny). Each such parameter is a warning saying so.
 
 Identifiability. Non-uniqueness is real for these laws (Ogden, Saccomandi and Sgura, 2004): a
 parameter whose SE exceeds |value| is not determined, and two parameters correlated beyond
@@ -37,6 +45,8 @@ __all__ = ["CORRELATED", "Statistics", "statistics"]
 #: |correlation| above which two parameters are reported as determined only together
 CORRELATED = 0.99
 _LEVEL = 0.95  # the intervals' confidence
+_RCOND = 1e-12  # the smallest singular value of J kept, relative to the largest (the solvers' noise is ~1e-10)
+_NEAR = 1e-6  # a parameter this close to a bound (relative, as the fit's Jacobian step) sits at it
 
 
 @dataclasses.dataclass(frozen=True)
@@ -44,7 +54,8 @@ class Statistics:
     """A fit's statistics: ``names`` of the p free keys, their ``values``, ``standard_errors``,
     ``covariance`` (p x p), ``correlation`` (p x p) and 95 % ``intervals`` (p x 2), all in the
     material's units; ``mu0`` and ``mu0_error`` (same unit); the residual ``rms``, the degrees of
-    freedom ``dof`` = n - p; and the identifiability ``warnings`` (one line each)."""
+    freedom ``dof`` = n - p; and the identifiability ``warnings`` (one line each). ``mu0_interval`` is mu_0's
+    95 % interval (2,)."""
 
     names: tuple[str, ...]
     values: np.ndarray
@@ -57,6 +68,7 @@ class Statistics:
     rms: float
     dof: int
     warnings: tuple[str, ...]
+    mu0_interval: np.ndarray
 
 
 def statistics(setup, material: Material, free, gradient, r, jac) -> Statistics:
@@ -67,25 +79,42 @@ def statistics(setup, material: Material, free, gradient, r, jac) -> Statistics:
     n, p = jac.shape
     dof = n - p
     s2 = float(r @ r) / dof
-    cov = gradient @ (s2 * np.linalg.pinv(jac.T @ jac)) @ gradient.T
+    _, singular, vt = np.linalg.svd(jac, full_matrices=False)
+    singular = np.maximum(singular, _RCOND * max(float(singular[0]), np.finfo(float).tiny))
+    cov = gradient @ (s2 * (vt.T / singular**2) @ vt) @ gradient.T
     se = np.sqrt(np.maximum(np.diag(cov), 0.0))
     with np.errstate(invalid="ignore", divide="ignore"):
         corr = np.where(np.outer(se, se) > 0.0, cov / np.outer(se, se), 0.0)
     np.fill_diagonal(corr, 1.0)
     values = np.array([k.get(material) for k in free])
-    half = stdtrit(dof, 0.5 + 0.5 * _LEVEL) * se
+    t = stdtrit(dof, 0.5 + 0.5 * _LEVEL)
+    lower, upper = np.array([k.lower for k in free]), np.array([k.upper for k in free])
+    intervals = np.clip(np.stack([values - t * se, values + t * se], axis=1), lower[:, None], upper[:, None])
     steps = [1e-6 * max(abs(v), abs(material.mu0) if k.unit == "stress" else 1.0)
              for k, v in zip(free, values, strict=True)]
     grad = np.array([(k.put(material, v + h).mu0 - material.mu0) / h
                      for k, v, h in zip(free, values, steps, strict=True)])
     mu0_error = math.sqrt(max(float(grad @ cov @ grad), 0.0))
     names = tuple(k.name for k in free)
-    warnings = _warnings(names, values, se, cov, corr)
+    warnings = _at_bounds(free, values, se, abs(material.mu0)) + _warnings(names, values, se, cov, corr)
     if warnings:
         warnings.append(f"what the data do determine: mu_0 = {material.mu0:.6g} +- {mu0_error:.2g}"
                         f"{'' if setup.thickness else ' (times T, N/m)'}, the small-strain shear modulus")
-    return Statistics(names, values, se, cov, corr, np.stack([values - half, values + half], axis=1),
-                      material.mu0, mu0_error, math.sqrt(float(r @ r) / n), dof, tuple(warnings))
+    return Statistics(names, values, se, cov, corr, intervals, material.mu0, mu0_error, math.sqrt(float(r @ r) / n),
+                      dof, tuple(warnings), np.array([material.mu0 - t * mu0_error, material.mu0 + t * mu0_error]))
+
+
+def _at_bounds(free, values, se, mu0: float) -> list[str]:
+    """A warning for each parameter that sits at a bound of its admissible set (module docstring)."""
+    out = []
+    for key, v, e in zip(free, values, se, strict=True):
+        near = _NEAR * (mu0 if key.unit == "stress" else max(abs(v), 1.0))
+        for bound in (key.lower, key.upper):
+            if math.isfinite(bound) and abs(v - bound) <= near:
+                out.append(f"{key.name} = {v:.6g} +- {e:.2g} sits at {bound:g}, a bound of its admissible set: the "
+                           "data pull it there and the fit stops at it, so its standard error is of a one-sided fit "
+                           "and its interval is cut at the bound")
+    return out
 
 
 def _warnings(names, values, se, cov, corr) -> list[str]:

@@ -1,4 +1,8 @@
-"""TOML files as case files are read: bounded in size, UTF-8, well formed, or a one-line ``InputError``."""
+"""TOML files as case files are read: bounded in size, UTF-8, well formed, or a one-line ``InputError``.
+
+A UTF-8 byte-order mark at the start (some Windows editors write one) is dropped: TOML forbids it, but it
+says nothing a reader needs.
+"""
 
 from __future__ import annotations
 
@@ -26,7 +30,7 @@ def read_toml(path) -> dict:
     except OSError as err:
         raise InputError(f"{path}: cannot read the file ({err.strerror})") from None
     try:
-        text = raw.decode("utf-8")
+        text = raw.decode("utf-8").removeprefix("\ufeff")
     except UnicodeDecodeError as err:
         raise InputError(f"{path}: not a UTF-8 text file (byte {err.start}), so not a TOML case file") from None
     try:

@@ -34,7 +34,7 @@ _CASE_GIVES = {"law": "sheet.material", "radius": "clamp.radius", "thickness": "
 
 def _request(args):
     """What the user asks (``pocket.apps.fitcase.Request``): from a case file, or from the flags."""
-    from pocket.apps.fitcase import Request, held, load, uncertainties
+    from pocket.apps.fitcase import Request, held, load, uncertainties, unit_warnings
     from pocket.apps.rubbers import DEFAULT_LAW
     from pocket.core.units import positive
 
@@ -50,10 +50,14 @@ def _request(args):
     thickness = None if args.thickness is None else positive("--thickness", args.thickness, "length")
     initial = None if args.initial_pressure is None else positive("--initial-pressure", args.initial_pressure,
                                                                   "pressure")
-    return Request(tuple(pathlib.Path(p) for p in args.data), law, positive("--radius", args.radius, "length"),
-                   thickness, initial, terms, held(law, terms, _pairs(args.fix, "--fix"), thickness, "--fix"),
-                   uncertainties(_pairs(args.sigma, "--sigma"), "--sigma"), args.fit_prestretch,
-                   args.solver or "shooting")
+    fix, sigma = _pairs(args.fix, "--fix"), _pairs(args.sigma, "--sigma")
+    radius = positive("--radius", args.radius, "length")
+    fixed, sigma_si = held(law, terms, fix, thickness, "--fix"), uncertainties(sigma, "--sigma")
+    given = {"--radius": (args.radius, "length"), "--thickness": (args.thickness, "length"),
+             "--initial-pressure": (args.initial_pressure, "pressure")}
+    warnings = unit_warnings(law, terms, given, fix, "--fix", sigma, "--sigma")
+    return Request(tuple(pathlib.Path(p) for p in args.data), law, radius, thickness, initial, terms, fixed, sigma_si,
+                   args.fit_prestretch, args.solver or "shooting", warnings)
 
 
 def _main(args) -> int:
@@ -62,6 +66,8 @@ def _main(args) -> int:
     from pocket.apps.folders import check_replaceable
 
     request = _request(args)
+    for text in request.warnings:  # before the data are read: a refusal of them may be the plain number's doing
+        print(f"pocket: warning: {text}", file=sys.stderr)
     setup = request.setup()
     target = None if args.out is None else check_replaceable(pathlib.Path(args.out), KIND, "--out")
     result = fit(setup, request.law, terms=request.terms, fixed=request.fixed, prestretch=request.prestretch)
@@ -84,8 +90,14 @@ def _main(args) -> int:
         print(f"{name:>14}  {p['value']:>14.8g}  {p['standard_error']:>11.3g}  [{lo:>14.8g}, {hi:>14.8g}]  {p['unit']}")
     for name, p in out["fixed"].items():
         print(f"{name:>14}  {p['value']:>14.8g}  {'(fixed)':>11}  {'':>31}  {p['unit']}")
-    print(f"{'mu_0':>14}  {out['mu0']['value']:>14.8g}  {out['mu0']['standard_error']:>11.3g}  {'':>31}  "
-          f"{out['mu0']['unit']}")
+    lo, hi = out["mu0"]["interval_95"]
+    print(f"{'mu_0':>14}  {out['mu0']['value']:>14.8g}  {out['mu0']['standard_error']:>11.3g}  [{lo:>14.8g}, "
+          f"{hi:>14.8g}]  {out['mu0']['unit']}")
+    names = out["correlation"]["keys"]
+    if len(names) > 1:
+        print(f"{'correlation':>14}  " + "  ".join(f"{n:>11}" for n in names))
+        for name, row in zip(names, out["correlation"]["matrix"], strict=True):
+            print(f"{name:>14}  " + "  ".join(f"{c:>+11.4f}" for c in row))
     print(f"residual RMS {out['residual_rms']:.4g} ({out['residuals']})")
     if target is not None:
         print(f"wrote {target}")
@@ -103,7 +115,8 @@ def register(subparsers) -> None:
         "or the pressure of its row at zero force. Several files are fitted jointly. Residuals are relative, or in "
         "units of a column's --sigma. Reports each parameter with its standard error (from the Jacobian and the "
         "residual variance), 95 %% interval, the correlations and warnings where the data do not determine a "
-        "parameter.")
+        "parameter. A value without a unit ('--radius 15') is read in SI (15 m) and said so; data that make such a "
+        "reading absurd are refused before solving.")
     p.add_argument("data", nargs="+", metavar="DATA.csv",
                    help="test data files, or one case file (CASE.toml) whose [fit] table names them and whose "
                    "[sheet], [clamp], [initial] and [solver] replace the flags")
