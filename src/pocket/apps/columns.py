@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pocket.core.materials import LAWS, Material
 
-__all__ = ["PER_MU0", "STRESSES", "parameter_column", "rubber_columns"]
+__all__ = ["PER_MU0", "STRESSES", "parameter_column", "in_mu0", "rubber_columns"]
 
 #: the suffix of a law's stress given in units of mu_0
 PER_MU0 = "_per_mu0"
@@ -32,9 +32,13 @@ def parameter_column(name: str) -> str:
     return name + PER_MU0 if name in STRESSES else name
 
 
+def in_mu0(material: Material) -> Material:
+    """``material`` with its stresses in units of mu_0: as given if they are already (mu_0 = 1 to rounding),
+    else ``Material.scaled``."""
+    return material if abs(material.mu0 - 1.0) <= _UNIT else material.scaled()
+
+
 def rubber_columns(material: Material) -> dict:
     """``material.describe()`` with its parameters under their columns (``parameter_column``), the stresses in
-    units of mu_0 (``Material.scaled`` for a rubber given in another unit; as given for one already in it)."""
-    if abs(material.mu0 - 1.0) > _UNIT:
-        material = material.scaled()
-    return {parameter_column(name): value for name, value in material.describe().items()}
+    units of mu_0 (``in_mu0``)."""
+    return {parameter_column(name): value for name, value in in_mu0(material).describe().items()}

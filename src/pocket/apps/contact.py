@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["KEYS", "contact_pressures", "deformed_radius"]
+__all__ = ["KEYS", "contact_pressures", "deformed_radius", "contact_patch"]
 
 #: the ``CompressedState`` fields that carry the contact pressure at the pole and at the edge (units Phat)
 KEYS = ("contact_pressure_pole", "contact_pressure_edge")
@@ -44,3 +44,10 @@ def deformed_radius(state) -> float | None:
     if state.indenter.pressure_area:
         return math.sqrt(state.contact_area)
     return None
+
+
+def contact_patch(state) -> dict[str, float]:
+    """{"contact_radius_deformed": rho_c / R (``deformed_radius``), then ``contact_pressures``} for the
+    ``CompressedState`` ``state``, each where it has one (the keys of pocket's outputs, dimensionless)."""
+    rho_c = deformed_radius(state)
+    return {**({} if rho_c is None else {"contact_radius_deformed": rho_c}), **contact_pressures(state)}

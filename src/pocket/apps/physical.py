@@ -26,7 +26,8 @@ from pocket.core.units import written_like
 
 from .cases import THICKNESS_RATIO, Case
 from .columns import rubber_columns
-from .contact import contact_pressures, deformed_radius
+from .contact import KEYS as CONTACT_PRESSURES
+from .contact import contact_patch
 from .inverse import force_where, pressure_for_height, range_end
 from .rangeend import check_force
 from .solvers import entry, record
@@ -266,7 +267,7 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     (``forces``), not values recomputed from the state. ``contact_pressure_pole_Pa`` and
     ``contact_pressure_edge_Pa`` follow the pressure where the state carries them (``pocket.apps.contact``:
     on the flat plate both are P); ``contact_area_m2`` is the curved area in contact,
-    ``contact_radius_deformed_m`` the radius of the contact patch, rho_c R (``contact.deformed_radius``: on
+    ``contact_radius_deformed_m`` the radius of the contact patch, rho_c R (``contact.contact_patch``: on
     the plate sqrt(A_c / pi)), ``contact_radius_lagrangian_m`` the Lagrangian a_c R (where the contact edge
     was in the flat sheet) and ``height_m`` the indenter's lowest point above the clamp plane;
     ``volume_lower_m3`` follows ``volume_m3`` (``_lower``). The dimensionless keys (``_scalars``) carry
@@ -282,15 +283,14 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
         row = {"load": case.as_given(f"loads.{case.load_kind}[{load}]"), **row}
         if case.load_kind == "forces":
             row["force_N"], asked["force"] = case.loads[load], case.loads[load] / pocket.force_scale_N
-    rho_c, pressures = deformed_radius(state), contact_pressures(state)
-    patch = {} if rho_c is None else {"contact_radius_deformed": rho_c}
+    patch = contact_patch(state)
     row.update({"pressure_Pa": state.pressure * scale,
                 "pressure_rise_Pa": (state.pressure - pocket.pressure_initial) * scale,
-                **{f"{k}_Pa": v * scale for k, v in pressures.items()},
+                **{f"{k}_Pa": v * scale for k, v in patch.items() if k in CONTACT_PRESSURES},
                 "contact_area_m2": state.contact_area * math.pi * r**2,
-                **{f"{k}_m": v * r for k, v in patch.items()},
+                **{f"{k}_m": v * r for k, v in patch.items() if k not in CONTACT_PRESSURES},
                 "contact_radius_lagrangian_m": state.contact_radius * r, "height_m": state.height * r,
                 "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
-                **lower, **_scalars(state, {**patch, **pressures}), **asked,
+                **lower, **_scalars(state, patch), **asked,
                 "warnings": [*case.warnings, *state.warnings, *notes]})
     return row
