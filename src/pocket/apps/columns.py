@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pocket.core.materials import LAWS, Material
 
-__all__ = ["PER_MU0", "STRESSES", "parameter_column", "in_mu0", "rubber_columns"]
+__all__ = ["PER_MU0", "STRESSES", "parameter_column", "in_mu0", "rubber_columns", "row_scalars"]
 
 #: the suffix of a law's stress given in units of mu_0
 PER_MU0 = "_per_mu0"
@@ -42,3 +42,20 @@ def rubber_columns(material: Material) -> dict:
     """``material.describe()`` with its parameters under their columns (``parameter_column``), the stresses in
     units of mu_0 (``in_mu0``)."""
     return {parameter_column(name): value for name, value in in_mu0(material).describe().items()}
+
+
+def row_scalars(state, contact: dict | None = None) -> dict:
+    """The dimensionless keys of the state ``state`` (its ``scalars``) as a row names them: the rubber's
+    parameters under their columns (``rubber_columns``), and ``contact`` (the contact patch of a compressed
+    state, ``pocket.apps.contact.contact_patch``), if given, after the state's KEYS in place of its own."""
+    contact = contact or {}
+    rubber, last = state.material.describe(), state.KEYS[-1]
+    out = {}
+    for key, value in state.scalars().items():
+        if key == "material":
+            out.update(rubber_columns(state.material))
+        elif key not in rubber and key not in contact:
+            out[key] = value
+        if key == last:
+            out.update(contact)
+    return out

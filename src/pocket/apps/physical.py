@@ -25,7 +25,7 @@ from pocket.core.materials import Material, mooney_rivlin
 from pocket.core.units import written_like
 
 from .cases import THICKNESS_RATIO, Case
-from .columns import rubber_columns
+from .columns import row_scalars
 from .contact import KEYS as CONTACT_PRESSURES
 from .contact import contact_patch
 from .inverse import force_where, pressure_for_height, range_end
@@ -229,30 +229,14 @@ def _lower(pocket: Pocket, state) -> tuple[dict, list[str]]:
     return {"volume_lower_m3": v * pocket.case.radius**3}, []
 
 
-def _scalars(state, contact: dict | None = None) -> dict:
-    """The state's dimensionless keys (``scalars``) as a row names them (``pocket.apps.columns``): the rubber's
-    parameters under their columns (its stresses ``_per_mu0``), and ``contact`` (if given) after the state's
-    KEYS, in place of the state's own contact keys."""
-    contact = contact or {}
-    rubber, last = state.material.describe(), state.KEYS[-1]
-    out = {}
-    for key, value in state.scalars().items():
-        if key == "material":
-            out.update(rubber_columns(state.material))
-        elif key not in rubber and key not in contact:
-            out[key] = value
-        if key == last:
-            out.update(contact)
-    return out
-
-
 def inflated_row(pocket: Pocket, state) -> dict:
-    """The inflated state in SI units, then its dimensionless keys (``_scalars``) and its ``warnings`` (a list:
-    the case's, then the state's). ``volume_lower_m3`` follows ``volume_m3`` (``_lower``)."""
+    """The inflated state in SI units, then its dimensionless keys (``columns.row_scalars``) and its
+    ``warnings`` (a list: the case's, then the state's). ``volume_lower_m3`` follows ``volume_m3``
+    (``_lower``)."""
     r = pocket.case.radius
     lower, notes = _lower(pocket, state)
     return {"pressure_Pa": state.pressure * pocket.pressure_scale_Pa, "height_m": state.height * r,
-            "volume_m3": state.volume * r**3, **lower, **_scalars(state),
+            "volume_m3": state.volume * r**3, **lower, **row_scalars(state),
             "warnings": [*pocket.case.warnings, *state.warnings, *notes]}
 
 
@@ -270,8 +254,9 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     ``contact_radius_deformed_m`` the radius of the contact patch, rho_c R (``contact.contact_patch``: on
     the plate sqrt(A_c / pi)), ``contact_radius_lagrangian_m`` the Lagrangian a_c R (where the contact edge
     was in the flat sheet) and ``height_m`` the indenter's lowest point above the clamp plane;
-    ``volume_lower_m3`` follows ``volume_m3`` (``_lower``). The dimensionless keys (``_scalars``) carry
-    ``contact_radius_deformed`` (rho_c / R) and the contact pressures (Phat) after the state's KEYS.
+    ``volume_lower_m3`` follows ``volume_m3`` (``_lower``). The dimensionless keys
+    (``columns.row_scalars``) carry ``contact_radius_deformed`` (rho_c / R) and the contact pressures
+    (Phat) after the state's KEYS.
     """
     case, r, scale = pocket.case, pocket.case.radius, pocket.pressure_scale_Pa
     lower, notes = _lower(pocket, state)
@@ -291,6 +276,6 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
                 **{f"{k}_m": v * r for k, v in patch.items() if k not in CONTACT_PRESSURES},
                 "contact_radius_lagrangian_m": state.contact_radius * r, "height_m": state.height * r,
                 "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
-                **lower, **_scalars(state, patch), **asked,
+                **lower, **row_scalars(state, patch), **asked,
                 "warnings": [*case.warnings, *state.warnings, *notes]})
     return row
