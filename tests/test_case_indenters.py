@@ -105,8 +105,9 @@ def test_a_plate_table_runs_end_to_end_with_the_contact_pressure_p(tmp_path, cap
     for old, new in zip(before["states"], after["states"], strict=True):
         assert new["contact_pressure_pole_Pa"] == new["contact_pressure_edge_Pa"] == new["pressure_Pa"]
         assert new == old
-        assert new["contact_area_m2"] == pytest.approx(new["contact_radius_m"] ** 2 * math.pi * new["stretch_contact"]
-                                                       ** 2, rel=1e-12, abs=1e-18)  # flat: A = pi (lambda_c a_c)^2
+        assert new["contact_area_m2"] == pytest.approx(new["contact_radius_lagrangian_m"] ** 2 * math.pi
+                                                       * new["stretch_contact"] ** 2, rel=1e-12, abs=1e-18)
+        # flat: A = pi (lambda_c a_c)^2
     assert after["case"]["indenter"] == before["case"]["indenter"] == "plate"
     assert after["case"]["given"]["indenter.shape"] == "plate"
 
@@ -133,7 +134,8 @@ def test_a_sphere_runs_end_to_end_with_its_contact_pressure_and_curved_area(tmp_
         cap = 2 * math.pi * radius * (radius - math.sqrt(radius**2 - rho_c**2))
         assert row["contact_area_m2"] == pytest.approx(cap, rel=1e-12)
         assert row["contact_area_m2"] > math.pi * rho_c**2  # curved, not its flat projection
-        assert row["contact_radius_m"] == pytest.approx(state.contact_radius * clamp, rel=1e-12)
+        assert row["contact_radius_lagrangian_m"] == pytest.approx(state.contact_radius * clamp, rel=1e-12)
+        assert row["contact_radius_deformed_m"] == pytest.approx(rho_c, rel=1e-12)
 
 
 def test_a_sphere_reaches_the_analytical_solver_which_refuses_it_in_one_line(tmp_path, capsys):

@@ -10,6 +10,7 @@ from pocket.apps.sweep import COLUMNS
 from pocket.cli import main
 from pocket.core.fluids import gas
 from pocket.core.materials import check
+from pocket.core.states import CompressedState
 
 OGDEN = ["--law", "ogden", "--mu", "630", "1.2", "-10", "--exponents", "1.3", "5", "-2"]
 
@@ -126,8 +127,8 @@ def test_sweep_with_a_law_and_a_gas(tmp_path, capsys):
         assert float(row["pressure_ratio"]) == state.pressure_ratio and float(row["height"]) == state.height
         assert float(row["tension_2_min"]) == state.tension_2_min and row["wrinkled"] == "False"
         assert (row["alpha"], row["material"], row["exponents"]) == ("", "ogden", "1.3 5.0 -2.0")
-        assert [float(x) for x in row["mu"].split()] == list(rubber["mu"])
-        assert (row["fluid"], row["ambient"], row["gamma"], row["c1"]) == ("gas", "6.5", "1.4", "")
+        assert [float(x) for x in row["mu_per_mu0"].split()] == list(rubber["mu"])
+        assert (row["fluid"], row["ambient"], row["gamma"], row["c1_per_mu0"]) == ("gas", "6.5", "1.4", "")
     mooney = ["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.5", "--out", str(path), "--workers", "1"]
     assert main(mooney) == 0
     rows = list(csv.DictReader(path.open()))
@@ -141,7 +142,7 @@ def test_sweep_with_a_law_and_a_gas(tmp_path, capsys):
 def test_sweep_refuses_an_earlier_file(tmp_path, capsys):
     """A sweep file written before the rubber and fluid columns: refused untouched, saying why."""
     path = tmp_path / "old.csv"
-    old = ",".join((*COLUMNS[:COLUMNS.index("solver") + 1], "status", "message")) + "\n"
+    old = ",".join((*CompressedState.KEYS, "solver", "status", "message")) + "\n"
     path.write_text(old)
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.5", "--out", str(path)]) == 2
     assert "is a sweep file of an earlier pocket (0 points), whose rows do not record the solver's options, the " \

@@ -6,8 +6,8 @@ from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 import pytest
 
 from pocket import analytical, shooting
+from pocket.apps.rubbers import PARAMETERS
 from pocket.apps.sweep import COLUMNS, run_sweep
-from pocket.apps.sweepfile import IDENTITY
 from pocket.cli import main
 from pocket.core.errors import InputError
 from pocket.core.materials import mooney_rivlin
@@ -446,10 +446,15 @@ def test_another_solver_or_options_computes_its_own_points(tmp_path, capsys):
         assert "0 points computed, 2 reused" in capsys.readouterr().out
 
 
+OLD_RUBBER_FLUID = ("material", *PARAMETERS, "fluid", "ambient", "gamma")  # the parameters' names before _per_mu0
+
+
 @pytest.mark.parametrize("columns, lacks", [
-    ((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *IDENTITY[2:-1], *CHECKS),
+    ((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *OLD_RUBBER_FLUID, "indenter",
+      *CHECKS), "the contact patch's deformed radius and contact pressures"),
+    ((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *OLD_RUBBER_FLUID, *CHECKS),
      "the indenter (they were all pressed by the flat plate)"),
-    ((*CompressedState.KEYS, "solver", "status", "message", *IDENTITY[2:-1], *CHECKS),
+    ((*CompressedState.KEYS, "solver", "status", "message", *OLD_RUBBER_FLUID, *CHECKS),
      "the solver's options and the indenter"),
     ((*CompressedState.KEYS, "solver", "status", "message"), "the solver's options, the rubber and the fluid")])
 def test_a_sweep_file_of_an_earlier_pocket_is_refused_saying_what_it_holds(tmp_path, capsys, columns, lacks):

@@ -17,6 +17,7 @@ import pytest
 
 from pocket import shooting
 from pocket.apps import folders, resampling, vtkfiles
+from pocket.apps.contact import KEYS as CONTACT
 from pocket.core.errors import InputError
 from pocket.core.materials import mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState, InflatedState, Profile
@@ -443,6 +444,10 @@ def _numbers(state) -> dict:
     its solver, law and fluid by name (None for a solver outside pocket), the solver's numeric
     diagnostics and its contact method by name."""
     out = {k: [float(getattr(state, k))] for k in (*state.KEYS, *CHECKS) if getattr(state, k) is not None}
+    if hasattr(state, "indenter"):  # the contact patch: on the plate a flat disc of area A_c, pressed at P
+        flat = state.indenter.pressure_area
+        out["contact_radius_deformed"] = [math.sqrt(state.contact_area) if flat else state.contact_radius_deformed]
+        out.update({k: [state.pressure if flat else getattr(state, k)] for k in CONTACT})
     params = dict(state.material.params)
     if hasattr(state, "fluid") and state.fluid.is_gas:
         params.update(ambient=state.fluid.ambient, gamma=state.fluid.gamma)
@@ -467,7 +472,8 @@ def _read(field_data) -> dict:
 
 def test_field_data_round_trip(tmp_path):
     """Exact answer: each step carries its state's scalars (force, pressure, P/P_I, height, volume,
-    contact radius, ..., the smallest tensions, the wrinkling flag as 0 or 1, the rubber's
+    contact radius, ..., the contact patch: on the plate its deformed radius sqrt(A_c / (pi R^2)) and the
+    contact pressure P at the pole and the edge; the smallest tensions, the wrinkling flag as 0 or 1, the rubber's
     parameters c1 and c2 in units of mu_0) as field data; meshio and pyvista's PVD reader give them
     back exactly."""
     states, forces = series()
@@ -476,7 +482,8 @@ def test_field_data_round_trip(tmp_path):
         for part in ("profile", "surface"):
             back = meshio.read(out / f"step_{k:04d}_{part}.vtu")
             expected = _numbers(state)
-            assert set(expected) == {*CompressedState.KEYS, *CHECKS, "c1", "c2", *CODES} - {"contact_code"}
+            assert set(expected) == {*CompressedState.KEYS, "contact_radius_deformed", *CONTACT, *CHECKS, "c1", "c2",
+                                     *CODES} - {"contact_code"}
             assert _read(back.field_data) == expected
             assert back.field_data["wrinkled"].tolist() == [0.0]
     pv = pytest.importorskip("pyvista")

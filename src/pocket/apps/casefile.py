@@ -5,18 +5,26 @@ The case (``pocket.apps.cases``) is resolved to the dimensionless model
 written as ``DIR/<stem>.json`` (the case: SI values and, under ``given``, every
 input as the file wrote it; the inflated state, the compressed states, and the
 provenance: pocket's and its libraries' versions) and ``DIR/<stem>.csv`` (one row
-per load), both or neither. Each row holds the load as written (``load``: ``"0.2 N"``),
+per load), both or neither. A column's name says its unit (``pocket.apps.columns``): SI values
+end in their unit, names without one are dimensionless, and the rubber's stresses in units of mu_0
+end in ``_per_mu0``. Each row holds the load as written (``load``: ``"0.2 N"``),
 the SI values (``force_N``, for a force load the force as parsed; ``pressure_Pa``,
 ``pressure_rise_Pa``, ``contact_pressure_pole_Pa`` and ``contact_pressure_edge_Pa`` (P on the flat
-plate, ``pocket.apps.contact``), ``contact_area_m2``, ``contact_radius_m``, ``height_m``,
-``travel_m`` = H0 - H, ``volume_m3``, and for a membrane solver ``volume_lower_m3``: the fluid's
-volume under the sheet's lower surface, ``pocket.core.offset``), the dimensionless keys of
-``CompressedState.KEYS`` (the inputs as asked, not a solver's echo; ``alpha`` only for a
-Mooney-Rivlin rubber), the smallest tensions ``tension_1_min``, ``tension_2_min`` (units
-E T) and ``wrinkled``, the rubber (``material`` and its law's parameters in units of mu_0),
-the fluid (``fluid``, and a gas's ``ambient`` as Phat_atm and ``gamma``), the solver and
-the state's ``warnings`` (a list in JSON, joined by "; " in CSV, as are Ogden's lists). The
-JSON's case holds the rubber and the fluid in SI (``c10_Pa``, ``ambient_Pa``, ...).
+plate, ``pocket.apps.contact``), ``contact_area_m2`` (the curved area in contact under a sphere),
+``contact_radius_deformed_m`` (the contact patch's radius as a camera or a print measures it: the
+contact edge's distance from the axis in the deformed sheet, sqrt(A_c / pi) on the plate),
+``contact_radius_lagrangian_m`` (where the contact edge was in the flat sheet, a_c R: smaller by the
+hoop stretch there), ``height_m``, ``travel_m`` = H0 - H, ``volume_m3``, and for a membrane solver
+``volume_lower_m3``: the fluid's volume under the sheet's lower surface, ``pocket.core.offset``), the
+dimensionless keys of ``CompressedState.KEYS`` (the inputs as asked, not a solver's echo; ``alpha``
+only for a Mooney-Rivlin rubber; ``contact_radius`` the Lagrangian a_c / R), then
+``contact_radius_deformed`` (rho_c / R), ``contact_pressure_pole`` and ``contact_pressure_edge``
+(Phat), the smallest tensions ``tension_1_min``, ``tension_2_min`` (units E T) and ``wrinkled``,
+the rubber (``material`` and its law's parameters: ``c1_per_mu0``, ``mu_per_mu0``, ... in units of
+mu_0, Gent's ``jm`` and Ogden's ``exponents`` as numbers), the fluid (``fluid``, and a gas's
+``ambient`` as Phat_atm = P_atm R / (E T) and ``gamma``), the solver and the state's ``warnings``
+(a list in JSON, joined by "; " in CSV, as are Ogden's lists). The JSON's inflated state has the
+same names, and its case holds the rubber and the fluid in SI (``c10_Pa``, ``ambient_Pa``, ...).
 
 ``results_paths`` names both files and says which existing ones a rerun may replace:
 a JSON file only if it is pocket's results (its keys and its provenance naming pocket),

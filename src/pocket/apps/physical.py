@@ -25,7 +25,9 @@ from pocket.core.materials import Material, mooney_rivlin
 from pocket.core.units import written_like
 
 from .cases import THICKNESS_RATIO, Case
-from .contact import contact_pressures
+from .columns import row_scalars
+from .contact import KEYS as CONTACT_PRESSURES
+from .contact import contact_patch
 from .inverse import force_where, pressure_for_height, range_end
 from .rangeend import check_force
 from .solvers import entry, record
@@ -228,12 +230,13 @@ def _lower(pocket: Pocket, state) -> tuple[dict, list[str]]:
 
 
 def inflated_row(pocket: Pocket, state) -> dict:
-    """The inflated state in SI units, then its dimensionless keys and its ``warnings`` (a list: the case's,
-    then the state's). ``volume_lower_m3`` follows ``volume_m3`` (``_lower``)."""
+    """The inflated state in SI units, then its dimensionless keys (``columns.row_scalars``) and its
+    ``warnings`` (a list: the case's, then the state's). ``volume_lower_m3`` follows ``volume_m3``
+    (``_lower``)."""
     r = pocket.case.radius
     lower, notes = _lower(pocket, state)
     return {"pressure_Pa": state.pressure * pocket.pressure_scale_Pa, "height_m": state.height * r,
-            "volume_m3": state.volume * r**3, **lower, **state.scalars(),
+            "volume_m3": state.volume * r**3, **lower, **row_scalars(state),
             "warnings": [*pocket.case.warnings, *state.warnings, *notes]}
 
 
@@ -247,9 +250,13 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     force load's ``force_N`` is the force as parsed and its ``force`` the Fhat given to the solver
     (``forces``), not values recomputed from the state. ``contact_pressure_pole_Pa`` and
     ``contact_pressure_edge_Pa`` follow the pressure where the state carries them (``pocket.apps.contact``:
-    on the flat plate both are P); ``contact_area_m2`` is the curved area in contact, ``contact_radius_m``
-    the Lagrangian a_c R and ``height_m`` the indenter's lowest point above the clamp plane;
-    ``volume_lower_m3`` follows ``volume_m3`` (``_lower``).
+    on the flat plate both are P); ``contact_area_m2`` is the curved area in contact,
+    ``contact_radius_deformed_m`` the radius of the contact patch, rho_c R (``contact.contact_patch``: on
+    the plate sqrt(A_c / pi)), ``contact_radius_lagrangian_m`` the Lagrangian a_c R (where the contact edge
+    was in the flat sheet) and ``height_m`` the indenter's lowest point above the clamp plane;
+    ``volume_lower_m3`` follows ``volume_m3`` (``_lower``). The dimensionless keys
+    (``columns.row_scalars``) carry ``contact_radius_deformed`` (rho_c / R) and the contact pressures
+    (Phat) after the state's KEYS.
     """
     case, r, scale = pocket.case, pocket.case.radius, pocket.pressure_scale_Pa
     lower, notes = _lower(pocket, state)
@@ -261,11 +268,14 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
         row = {"load": case.as_given(f"loads.{case.load_kind}[{load}]"), **row}
         if case.load_kind == "forces":
             row["force_N"], asked["force"] = case.loads[load], case.loads[load] / pocket.force_scale_N
+    patch = contact_patch(state)
     row.update({"pressure_Pa": state.pressure * scale,
                 "pressure_rise_Pa": (state.pressure - pocket.pressure_initial) * scale,
-                **{f"{k}_Pa": v * scale for k, v in contact_pressures(state).items()},
+                **{f"{k}_Pa": v * scale for k, v in patch.items() if k in CONTACT_PRESSURES},
                 "contact_area_m2": state.contact_area * math.pi * r**2,
-                "contact_radius_m": state.contact_radius * r, "height_m": state.height * r,
+                **{f"{k}_m": v * r for k, v in patch.items() if k not in CONTACT_PRESSURES},
+                "contact_radius_lagrangian_m": state.contact_radius * r, "height_m": state.height * r,
                 "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
-                **lower, **state.scalars(), **asked, "warnings": [*case.warnings, *state.warnings, *notes]})
+                **lower, **row_scalars(state, patch), **asked,
+                "warnings": [*case.warnings, *state.warnings, *notes]})
     return row

@@ -16,7 +16,8 @@ or a dask.distributed cluster (``Client(address).get_executor()``, with
 ``--scheduler ADDRESS``) run the same code.
 
 The results are one tidy CSV, one row per point: the keys of a compressed
-state (``CompressedState.KEYS``), the solver and its options, a ``status`` (``ok``;
+state (``CompressedState.KEYS``), the contact patch's deformed radius and contact
+pressures (``pocket.apps.contact``), the solver and its options, a ``status`` (``ok``;
 ``out_of_range`` past the model's range; ``failed`` when the solver did not
 converge), a one-line ``message`` (the reason, or the state's warnings), the
 rubber, the fluid and the smallest tensions with the wrinkling flag
@@ -63,6 +64,7 @@ from pocket.core.inputs import check_force, check_positive
 from pocket.core.materials import Material, as_material, mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState
 
+from .contact import contact_patch
 from .folders import write_whole
 from .rubbers import prestretched
 from .solvers import entry, record
@@ -84,6 +86,7 @@ def _row(solver: str, material, pressure_initial: float, force: float, options: 
         row.update(status="failed", message=line(error))
     else:
         row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS if key != "alpha"})
+        row.update(contact_patch(state))
         row.update({key: float(getattr(state, key)) for key in CHECKS[:2]}, wrinkled=state.wrinkled)
         row.update(status="ok", message=line("; ".join(state.warnings)))
     row.update(identity(solver, options, material, as_fluid(options.get("fluid")),

@@ -1,18 +1,21 @@
 """The sweep file: one CSV row per grid point, appended while a sweep runs (``pocket.apps.sweep``).
 
-Columns (``COLUMNS``): the keys of a compressed state (``CompressedState.KEYS``),
-the solver and its options (``solver_options``: ``name=value`` separated by spaces,
-in name order, as given; empty for the solver's defaults), a ``status``
-(``STATUSES``) and a one-line ``message``; then the rubber
-(``material``, the law's name, and a column per parameter of every law, empty where
-the law has no such parameter: Mooney-Rivlin's is ``alpha``, so its rows leave
-``c1`` and ``c2`` empty; Ogden's lists are numbers separated by spaces; a sheet clamped with a
-prestretch lambda_p != 1 has ``material`` = ``<law> prestretch=<lambda_p>``, so the files of sheets
-without one keep their columns and cells), the fluid
-(``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), the indenter (``indenter``: ``plate``,
-``sphere K=...`` with K = R_s / R, or ``profile sha256=...`` for a profile table), and the membrane's
-checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``). Floats are written exactly (``repr``), so
-a point reads back equal to the number asked.
+Columns (``COLUMNS``), named as ``pocket.apps.columns`` says (all dimensionless): the keys of a
+compressed state (``CompressedState.KEYS``; ``contact_radius`` the Lagrangian a_c / R), the contact
+patch (``CONTACT``: ``contact_radius_deformed`` rho_c / R, the contact edge's distance from the axis
+in the deformed sheet, and the contact pressure at the pole and at the edge, ``contact_pressure_pole``
+and ``contact_pressure_edge`` in units of Phat, P on the flat plate; ``pocket.apps.contact``), the
+solver and its options (``solver_options``: ``name=value`` separated by spaces, in name order, as
+given; empty for the solver's defaults), a ``status`` (``STATUSES``) and a one-line ``message``; then
+the rubber (``material``, the law's name, and a column per parameter of every law, empty where the
+law has no such parameter, its stresses in units of mu_0: ``c1_per_mu0``, ``mu_per_mu0``, ...;
+Mooney-Rivlin's is ``alpha``, so its rows leave ``c1_per_mu0`` and ``c2_per_mu0`` empty; Ogden's
+lists are numbers separated by spaces; a sheet clamped with a prestretch lambda_p != 1 has
+``material`` = ``<law> prestretch=<lambda_p>``, so the files of sheets without one keep their
+columns and cells), the fluid (``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), the
+indenter (``indenter``: ``plate``, ``sphere K=...`` with K = R_s / R, or ``profile sha256=...`` for
+a profile table), and the membrane's checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``).
+Floats are written exactly (``repr``), so a point reads back equal to the number asked.
 
 A point is its solver and options, rubber, fluid, indenter, Phat_I and Fhat (``key``): a file
 may hold points of several sweeps, of several solvers and indenters, and a rerun recognises its own. A
@@ -45,6 +48,8 @@ from pocket.core.indenters import FLAT, Indenter
 from pocket.core.materials import Material
 from pocket.core.states import CHECKS, CompressedState
 
+from .columns import in_mu0, parameter_column
+from .contact import KEYS
 from .folders import created_parents, remove_created
 from .rubbers import PARAMETERS
 
@@ -53,13 +58,15 @@ try:
 except ImportError:  # not a POSIX system: no lock
     fcntl = None
 
-__all__ = ["COLUMNS", "IDENTITY", "STATUSES", "Journal", "identity", "indenter_text", "key", "line", "options_text",
-           "rows_csv"]
+__all__ = ["COLUMNS", "CONTACT", "IDENTITY", "STATUSES", "Journal", "identity", "indenter_text", "key", "line",
+           "options_text", "rows_csv"]
 
 #: what identifies a point besides alpha, Phat_I and Fhat: its solver, rubber, fluid and indenter
-IDENTITY = ("solver", "solver_options", "material", *PARAMETERS, "fluid", "ambient", "gamma", "indenter")
-_RUBBER_FLUID = IDENTITY[2:-1]
-COLUMNS = (*CompressedState.KEYS, "solver", "solver_options", "status", "message", *IDENTITY[2:], *CHECKS)
+IDENTITY = ("solver", "solver_options", "material", *map(parameter_column, PARAMETERS), "fluid", "ambient", "gamma",
+            "indenter")
+#: the contact patch of a point: its deformed radius and contact pressures (``pocket.apps.contact``)
+CONTACT = ("contact_radius_deformed", *KEYS)
+COLUMNS = (*CompressedState.KEYS, *CONTACT, "solver", "solver_options", "status", "message", *IDENTITY[2:], *CHECKS)
 STATUSES = ("ok", "out_of_range", "failed")
 _NUMBERS = ("alpha", "pressure_initial", "force")
 
@@ -106,14 +113,14 @@ def indenter_text(indenter: Indenter) -> str:
 
 def identity(solver: str, options: dict, material: Material, fluid: Fluid, indenter: Indenter = FLAT) -> dict:
     """The IDENTITY cells (text) of a point: ``solver`` its name and ``options`` its options (as
-    ``options_text``), ``material`` a ``Material`` (a Mooney-Rivlin rubber given by its alpha: that
-    alpha has its own column, and the parameters' cells stay empty), ``fluid`` a ``Fluid``, ``indenter``
-    as ``indenter_text``."""
+    ``options_text``), ``material`` a ``Material`` (its stresses written in units of mu_0, ``in_mu0``; a
+    Mooney-Rivlin rubber given by its alpha: that alpha has its own column, and the parameters' cells stay
+    empty), ``fluid`` a ``Fluid``, ``indenter`` as ``indenter_text``."""
     cells = dict.fromkeys(IDENTITY, "")
     law = material.law if material.prestretch == 1.0 else f"{material.law} prestretch={material.prestretch!r}"
     cells.update(solver=solver, solver_options=options_text(options), material=law, indenter=indenter_text(indenter))
     if material.exact_alpha is None:
-        cells.update({name: _cell(value) for name, value in material.params})
+        cells.update({parameter_column(name): _cell(value) for name, value in in_mu0(material).params})
     cells.update({k: v if isinstance(v, str) else repr(v) for k, v in fluid.describe().items()})
     return cells
 
@@ -137,6 +144,7 @@ def rows_csv(rows, *, header=False) -> bytes:
 
 
 _HEADER = rows_csv([], header=True)
+_RUBBER_FLUID = ("material", *PARAMETERS, "fluid", "ambient", "gamma")  # as earlier pockets named them
 #: headers of earlier pockets, and what their rows lack
 _EARLIER = {
     ",".join((*CompressedState.KEYS, "solver", "status", "message")).encode() + b"\n":
@@ -145,6 +153,8 @@ _EARLIER = {
         "the solver's options and the indenter",
     ",".join((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *_RUBBER_FLUID,
               *CHECKS)).encode() + b"\n": "the indenter (they were all pressed by the flat plate)",
+    ",".join((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *_RUBBER_FLUID, "indenter",
+              *CHECKS)).encode() + b"\n": "the contact patch's deformed radius and contact pressures",
 }
 
 

@@ -52,7 +52,11 @@ pocket: ``pocket.core.states``): for a compressed state ``alpha``,
 ``pressure_initial`` (Phat_I), ``force`` (Fhat = F / (P_I pi R^2)), ``pressure``
 (Phat = P R / (E T)), ``pressure_ratio`` (P / P_I), ``contact_area``
 (A_c / (pi R^2)), ``contact_radius`` (Lagrangian a_c / R), ``stretch_contact``,
-``height`` (H / R), ``height_ratio`` (H / H0), ``volume`` (V / R^3); for an
+``height`` (H / R), ``height_ratio`` (H / H0), ``volume`` (V / R^3), then the contact patch
+(``pocket.apps.contact``): ``contact_radius_deformed`` (rho_c / R, the contact edge's distance from the
+axis in the deformed sheet: the patch a camera sees), ``contact_pressure_pole`` and
+``contact_pressure_edge`` (the contact pressure at the pole and at the contact edge, Phat; P on the
+flat plate, larger under a sphere or a profile); for an
 inflated state ``alpha``, ``pressure``, ``stretch_pole``, ``height``, ``volume``,
 ``stretch_clamp`` (``alpha`` only for a Mooney-Rivlin rubber given by it); then
 for both the smallest tensions ``tension_1_min`` and ``tension_2_min`` (units E T)
@@ -105,6 +109,7 @@ from pocket.core.inputs import check_count
 from pocket.core.materials import LAWS
 from pocket.core.states import CHECKS
 
+from .contact import contact_patch
 from .folders import check_replaceable, staged
 from .resampling import resample, series_radii
 from .revolve import revolve
@@ -138,6 +143,8 @@ def field_data(state) -> dict[str, np.ndarray]:
     """The state's numeric scalars (module docstring): float64 arrays of one value each (an Ogden
     parameter: one per term)."""
     out = {key: np.array([float(getattr(state, key))]) for key in state.KEYS if getattr(state, key) is not None}
+    if hasattr(state, "indenter"):  # a compressed state: its contact patch
+        out.update({key: np.array([value]) for key, value in contact_patch(state).items()})
     out.update({key: np.array([float(getattr(state, key))]) for key in CHECKS})  # wrinkled: 1.0 or 0.0
     described = {**state.material.describe(), **(state.fluid.describe() if hasattr(state, "fluid") else {})}
     for key, value in described.items():
