@@ -226,10 +226,11 @@ def remove_created(folders: list[pathlib.Path]) -> None:
             folder.rmdir()
 
 
-def write_files(texts: dict, *, of: str | None = None) -> None:
-    """Write each ``{path: text}`` whole, all or none (each through a hidden sibling renamed onto it), and
-    record them as pocket's output for ``of`` (the case they are computed for, or None) in the ledger of
-    their folder (``pocket.apps.ledger``), renamed into place last.
+def write_files(texts: dict, *, of: str | None = None, record: bool = True) -> None:
+    """Write each ``{path: text}`` whole, all or none (each through a hidden sibling renamed onto it), and,
+    if ``record``, record them as pocket's output for ``of`` (the case they are computed for, or None) in
+    the ledger of their folder (``pocket.apps.ledger``), renamed into place last. Only a file whose
+    reader keeps all it holds (a sweep file) goes unrecorded.
 
     Every text is written to its sibling before any is renamed, so an error while
     writing (``OutputError``: a full disk, a folder made read-only) or an interrupt
@@ -240,7 +241,8 @@ def write_files(texts: dict, *, of: str | None = None) -> None:
     folders = {path.parent: {} for path in texts}
     for path, text in texts.items():
         folders[path.parent][path.name] = text
-    texts.update({folder / LEDGER: updated(folder, names, of) for folder, names in folders.items()})
+    if record:
+        texts.update({folder / LEDGER: updated(folder, names, of) for folder, names in folders.items()})
     paths = list(texts)
     made = list(dict.fromkeys(folder for path in paths for folder in created_parents(path)))
     partials = {path: _partial(path) for path in paths}
@@ -261,9 +263,10 @@ def write_files(texts: dict, *, of: str | None = None) -> None:
         raise
 
 
-def write_whole(path, text: str, *, of: str | None = None) -> None:
-    """Write ``text`` to the file ``path`` whole or not at all, recorded as of ``of`` (``write_files``)."""
-    write_files({path: text}, of=of)
+def write_whole(path, text: str, *, of: str | None = None, record: bool = True) -> None:
+    """Write ``text`` to the file ``path`` whole or not at all, recorded as of ``of`` if ``record``
+    (``write_files``)."""
+    write_files({path: text}, of=of, record=record)
 
 
 def _replace(source: pathlib.Path, target: pathlib.Path) -> None:

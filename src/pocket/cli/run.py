@@ -81,8 +81,8 @@ def _main(args) -> int:
         print(f"pocket: warning: {text}", file=sys.stderr)
     missed = result["unreachable"]
     if missed:
-        print(f"pocket: warning: {missed[0]['warnings'][0]}; the results hold the {len(result['states'])} loads the "
-              f"model reaches and list the {len(missed)} it does not", file=sys.stderr)
+        print(f"pocket: warning: {missed[0]['warnings'][0]}; the results hold the {len(result['states'])} of "
+              f"{len(case.loads)} loads the model reaches, and list the others with the reason", file=sys.stderr)
     rows = result["states"]
     fluid = case.fluid.kind if not case.fluid.is_gas else \
         f"gas (ambient {case.fluid.ambient:.6g} Pa, gamma {case.fluid.gamma:g})"
