@@ -178,6 +178,16 @@ def test_run_vtk_writes_surface_series(tmp_path, capsys):
         assert plate.points[:, 2].min() * 0.02 == pytest.approx(row["height_m"], rel=1e-12)
 
 
+@pytest.mark.parametrize("out, vtk", [("D", "D"), ("V/D", "V")])
+def test_run_vtk_into_its_out_folder_is_refused(out, vtk, tmp_path, capsys, no_solve, monkeypatch):
+    """``--vtk`` the --out folder (or a folder holding it): the series, written as a folder of its own, would
+    mix with the results; refused before any solve, exit 2, nothing written."""
+    monkeypatch.chdir(tmp_path)
+    no_solve()
+    _refused(["run", "--sample", "1", "--out", out, "--vtk", vtk], tmp_path, capsys,
+             f"--vtk {vtk}: holds the --out folder {out}")
+
+
 def test_case_past_range_end_writes_reachable_part(tmp_path, capsys):
     """Forces 1 N and 61 N, the range ending at about 60 N: exit 0, the 1 N state written; stderr warns
     with the one message of a force past the end (the end by the shooting, in N); the JSON lists 61 N as

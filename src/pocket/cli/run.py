@@ -65,12 +65,15 @@ def _main(args) -> int:
     case, stem = case_from_args(args)
     of = case_source(args)
     warn_case(case)
-    check_output_dir(args.out, "--out")
+    out = check_output_dir(args.out, "--out").resolve()
     paths = [check_output_file(path, "--out", of=of) for path in results_paths(args.out, stem)]
     if args.vtk is not None:
         from pocket.apps.vtkfiles import KIND
 
-        check_replaceable(args.vtk, KIND, "--vtk", of=of)
+        vtk = check_replaceable(args.vtk, KIND, "--vtk", of=of)
+        if out == vtk or vtk in out.parents:
+            raise InputError(f"--vtk {args.vtk}: holds the --out folder {args.out}, but a series is written as a "
+                             "folder of its own; give --vtk another folder, e.g. OUT/vtk")
     with progress_bar(case.name, " loads") as progress:
         result, pocket, states = solved(case, progress)
     if args.vtk is not None:
