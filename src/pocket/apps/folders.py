@@ -88,9 +88,10 @@ def check_output_file(path, what: str = "output", *, of: str | None = None, resu
     if target.exists() and not os.access(target, os.W_OK):
         raise InputError(f"{what} {path}: the file is not writable")
     _writable_parent(target, what, path)
-    check_ledger(target.parent, what, path)
-    if target.exists() and not resumed:
-        check_recorded(target, of, what, path)
+    if not resumed:  # a resumed file is not recorded (``write_files``' ``record``)
+        check_ledger(target.parent, what, path)
+        if target.exists():
+            check_recorded(target, of, what, path)
     return target
 
 
