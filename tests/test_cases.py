@@ -203,15 +203,16 @@ def test_a_mesh_file_is_relative_to_the_case_file(tmp_path, monkeypatch, capsys)
 @pytest.mark.parametrize(
     "heights, message",
     [
-        ('["9 mm", "20 mm"]', "loads.heights[1] = '20 mm' is above the inflated pocket (H0 = 10 mm): the plate "
+        ('["20 mm", "1 mm"]', "loads.heights[0] = '20 mm' is above the inflated pocket (H0 = 10 mm): the plate "
                               "would not touch it"),
         ('["2 cm"]', "loads.heights[0] = '2 cm' is above the inflated pocket (H0 = 1 cm)"),
-        ('["9 mm", "1 mm"]', "loads.heights[1] = '1 mm' is below the lowest plate height the model reaches (4.7"),
+        ('["1 mm"]', "loads.heights[0] = '1 mm' is below the lowest plate height the model reaches (4.7"),
     ],
 )
 def test_plate_height_errors_quote_the_case(tmp_path, capsys, heights, message):
-    """A plate height the model has no state for: exit 2, the height as written and the bound in its
-    unit (H0 = 10 mm is the case's own initial height; the lowest height is the model's range end)."""
+    """A case none of whose plate heights the model has a state for: exit 2, the first height as written and
+    the bound in its unit (H0 = 10 mm is the case's own initial height; the lowest height is the model's
+    range end). A case reaching some of its loads writes those (test_user_files_safe)."""
     text = BUTTON.replace('heights = ["9 mm", "8 mm"]', f"heights = {heights}")
     status, err = _run_case(tmp_path, capsys, text)
     assert status == 2 and message in err and "height = 1 " not in err, err

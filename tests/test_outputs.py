@@ -18,6 +18,7 @@ import pytest
 
 from pocket.apps import folders
 from pocket.apps.folders import check_output_dir, check_output_file, staged, write_files, write_whole
+from pocket.apps.ledger import LEDGER
 from pocket.cli import main
 from pocket.core.errors import InputError, OutputError
 
@@ -81,8 +82,8 @@ def test_bad_output_path_before_any_work(argv, message, tmp_path, monkeypatch, c
 
 
 def test_a_link_to_a_file_is_followed(tmp_path):
-    """The file a link names is the one replaced; the link stays a link."""
-    (tmp_path / "real.csv").write_text("old\n")
+    """The file a link names (one pocket wrote) is the one replaced; the link stays a link."""
+    write_whole(tmp_path / "real.csv", "old\n")
     (tmp_path / "link.csv").symlink_to(tmp_path / "real.csv")
     target = check_output_file(tmp_path / "link.csv")
     write_whole(target, "new\n")
@@ -143,14 +144,14 @@ def test_folder_made_read_only_during_the_solve(tmp_path, monkeypatch, capsys):
     out = tmp_path / "out"
     out.mkdir()
     state = contextlib.ExitStack()
-    real = run.solve
+    real = run.solved
 
     def solve_then_lock(case, progress=None):
         result = real(case, progress)
         state.enter_context(read_only(out))
         return result
 
-    monkeypatch.setattr(run, "solve", solve_then_lock)
+    monkeypatch.setattr(run, "solved", solve_then_lock)
     with state:
         assert main(["run", "--sample", "1", "--out", str(out)]) == 1
     err = _one_line(capsys)
@@ -263,7 +264,7 @@ def test_two_writers_of_one_file(fixed, tmp_path, monkeypatch):
         thread.start()
     for thread in threads:
         thread.join()
-    whole = target.read_text() in texts and [p.name for p in tmp_path.iterdir()] == ["shared.csv"]
+    whole = target.read_text() in texts and sorted(p.name for p in tmp_path.iterdir()) == [LEDGER, "shared.csv"]
     assert (not errors and whole) != fixed, (len(errors), whole)
 
 
@@ -280,5 +281,6 @@ def test_run_json_is_valid_after_a_rerun(tmp_path, capsys):
     """A second run over the first replaces both files whole (valid JSON, same keys)."""
     for _ in range(2):
         assert main(["run", "--sample", "2", "--out", str(tmp_path)]) == 0
-    assert set(json.loads((tmp_path / "sample2.json").read_text())) == {"case", "inflated", "states", "provenance"}
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["sample2.csv", "sample2.json"]
+    assert set(json.loads((tmp_path / "sample2.json").read_text())) == {"case", "inflated", "states", "unreachable",
+                                                                        "provenance"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == [LEDGER, "sample2.csv", "sample2.json"]

@@ -124,8 +124,8 @@ def test_case_file_heights_under_a_sphere(tmp_path, capsys, solver):
 
 def test_case_file_height_above_the_pocket_names_the_indenter(tmp_path, capsys):
     case = tmp_path / "tip.toml"
-    case.write_text(CASE.replace('"8 mm"]', '"11 mm"]'))
+    case.write_text(CASE.replace('"9 mm", "8 mm"]', '"11 mm"]'))
     assert main(["run", str(case), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
-    assert "loads.heights[1] = '11 mm' is above the inflated pocket (H0 = 10 mm): the indenter would not touch " \
+    assert "loads.heights[0] = '11 mm' is above the inflated pocket (H0 = 10 mm): the indenter would not touch " \
            "it" in err and err.count("\n") == 1, err

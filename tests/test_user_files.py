@@ -15,6 +15,7 @@ from pocket.validation import runner
 import pocket
 from pocket.apps import vtkfiles
 from pocket.apps.folders import MARKER, check_replaceable, staged
+from pocket.apps.ledger import LEDGER
 from pocket.cli import main
 from pocket.core.errors import InputError
 
@@ -170,16 +171,22 @@ def test_a_report_of_the_same_kind_passes_the_check(command, kind, tmp_path, cap
 
 
 def test_run_replaces_its_own_results(tmp_path, capsys):
-    """``run --out`` twice: the second replaces the files the first wrote (its JSON names pocket)."""
+    """``run --out`` twice: the second replaces the files the first wrote (recorded in the folder's
+    ledger), and nothing else is left."""
     for _ in range(2):
         assert main(["run", "--sample", "2", "--out", str(tmp_path)]) == 0
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["sample2.csv", "sample2.json"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == [LEDGER, "sample2.csv", "sample2.json"]
 
 
 def test_sense_replaces_its_own_table(tmp_path, capsys):
-    """``sense --table`` twice: the second replaces the table the first wrote; a copy under another
-    name is recognised too."""
+    """``sense --table`` twice: the second replaces the table the first wrote; a copy the user made under
+    another name is the user's file, refused (exit 2) and kept byte for byte."""
     argv = ["sense", "--sample", "1", "--ratio", "1.2", "--points", "3", "--table"]
     assert main([*argv, str(tmp_path / "t.csv")]) == 0
+    assert main([*argv, str(tmp_path / "t.csv")]) == 0
     shutil.copy(tmp_path / "t.csv", tmp_path / "u.csv")
-    assert main([*argv, str(tmp_path / "u.csv")]) == 0
+    before = _tree(tmp_path)
+    capsys.readouterr()
+    assert main([*argv, str(tmp_path / "u.csv")]) == 2
+    assert "u.csv: the file exists and pocket did not write it" in capsys.readouterr().err
+    assert _tree(tmp_path) == before

@@ -588,20 +588,27 @@ def test_fluids_figure_compares_gas_and_liquid_at_one_force(report):
 
 def test_a_rerun_replaces_the_report_pocket_wrote(report, tmp_path, capsys, monkeypatch):
     """A copy of the quick run's report (its marker says: validation report) is replaced whole by a
-    rerun of ``validate`` (the results reused, nothing solved), and refused by ``converge``, whose
-    report is another kind: exit 2, one line, the folder unchanged."""
+    rerun of ``validate`` (the results reused, nothing solved: a new folder, renamed into place), and
+    refused by ``converge``, whose report is another kind: exit 2, one line, the folder unchanged. Once
+    the user edits its report.md, ``validate`` refuses it too, naming the file."""
     out = tmp_path / "report"
     shutil.copytree(report[1], out)
-    (out / "report.md").write_text("stale")
     monkeypatch.setattr(runner, "run", lambda *a, **k: report[2])
+    folder = out.stat().st_ino
     assert main(["validate", "--quick", "--out", str(out)]) == 0
-    assert (out / "report.md").read_text().startswith("# pocket validation report\n")  # not "stale"
+    assert out.stat().st_ino != folder and (out / "report.md").read_text().startswith("# pocket validation report\n")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]  # no temporary or old copy left
     before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
     capsys.readouterr()
     assert main(["converge", "--quick", "--out", str(out)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "holds a pocket validation report, not a convergence report" in err, err
+    assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
+    (out / "report.md").write_text("my own notes on the run")
+    before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
+    assert main(["validate", "--quick", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "report.md changed after pocket wrote its validation report" in err, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
 
 

@@ -8,5 +8,6 @@ pressure), ``sweep`` (parameter grids on any executor) with ``sweepfile`` (its
 CSV journal), ``workers`` (local processes that die with their parent) and ``cluster`` (a dask
 cluster that says when it cannot run the sweep),
 ``slopes``, ``vtkfiles`` (ParaView output), ``folders`` (outputs checked first,
-written whole or not at all), ``provenance`` and ``solvers`` (the solvers by name).
+written whole or not at all) with ``ledger`` (the checksums of what pocket wrote), ``provenance``
+and ``solvers`` (the solvers by name).
 """

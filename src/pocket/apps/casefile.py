@@ -26,9 +26,14 @@ mu_0, Gent's ``jm`` and Ogden's ``exponents`` as numbers), the fluid (``fluid``,
 (a list in JSON, joined by "; " in CSV, as are Ogden's lists). The JSON's inflated state has the
 same names, and its case holds the rubber and the fluid in SI (``c10_Pa``, ``ambient_Pa``, ...).
 
-``results_paths`` names both files and says which existing ones a rerun may replace:
-a JSON file only if it is pocket's results (its keys and its provenance naming pocket),
-a CSV file only beside such a JSON file (the two are written together).
+A load the model does not reach (a force past the end of its range, a height below the lowest it
+reaches, ``pocket.apps.physical.load_forces``) is left out of the solve: the JSON's ``unreachable``
+lists each such load as the case gives it, with its SI value and the reason (``warnings``), and the CSV
+ends with a row for each, holding those cells only. A case none of whose loads is reached is refused
+(the first load's ``OutOfRangeError``).
+
+``results_paths`` names both files; whether existing ones may be replaced is
+``pocket.apps.folders.check_output_file``'s rule: only results pocket wrote for the same case, unchanged.
 """
 
 from __future__ import annotations
@@ -38,55 +43,64 @@ import io
 import json
 import pathlib
 
+from pocket.core.errors import OutOfRangeError
+
 from .cases import Case
 from .folders import write_files
-from .physical import compressed_row, forces, inflated_row, resolve
+from .physical import Pocket, compressed_row, inflated_row, load_forces, resolve
 from .provenance import environment
 from .solvers import entry
 
-__all__ = ["solve", "write", "results_paths"]
-
-_KEYS = {"case", "inflated", "states", "provenance"}
+__all__ = ["solve", "solved", "write", "results_paths"]
 
 
-def _is_results(path: pathlib.Path) -> bool:
-    """``path`` is a results JSON file that pocket wrote."""
-    try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return False
-    return isinstance(data, dict) and set(data) == _KEYS and "pocket" in data["provenance"]
-
-
-def results_paths(directory, stem: str) -> dict:
-    """{path: ours} for ``stem.json`` and ``stem.csv`` in ``directory``: ``ours(path)`` is true if
-    ``path`` holds results that pocket wrote (for ``pocket.apps.folders.check_output_file``)."""
+def results_paths(directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
+    """``stem.json`` and ``stem.csv`` in ``directory``."""
     directory = pathlib.Path(directory)
-    json_path = directory / f"{stem}.json"
-    return {json_path: _is_results, directory / f"{stem}.csv": lambda path: _is_results(json_path)}
+    return directory / f"{stem}.json", directory / f"{stem}.csv"
+
+
+def _unreached(case: Case, index: int, error: OutOfRangeError) -> dict:
+    """The row of load ``index``, which the model does not reach: the load as given, its SI value, the reason."""
+    kind = case.load_kind
+    return {"load": case.as_given(f"loads.{kind}[{index}]"), "force_N" if kind == "forces" else "height_m":
+            case.loads[index], "warnings": [str(error)]}
+
+
+def solved(case: Case, progress=None) -> tuple[dict, Pocket, list]:
+    """The case solved: ({"case": SI inputs, "inflated": row, "states": [rows], "unreachable": [rows],
+    "provenance": {...}} (JSON-ready), the case resolved (``pocket.apps.physical.Pocket``: its scales),
+    [compressed states of the reached loads]). ``progress(done, total)``, if given, goes to the solver's
+    compression curve."""
+    pocket = resolve(case)
+    loads = load_forces(pocket)
+    reached = [i for i, load in enumerate(loads) if not isinstance(load, OutOfRangeError)]
+    if not reached:
+        raise loads[0]
+    extra = {} if progress is None else {"progress": progress}
+    curve = entry(pocket.solver(), "compression_curve", f"the loads of case {case.name}")
+    states = curve(pocket.material, pocket.pressure_initial, [loads[i] for i in reached],
+                   **pocket.options(), **extra)
+    result = {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
+              "states": [compressed_row(pocket, s, i) for i, s in zip(reached, states, strict=True)],
+              "unreachable": [_unreached(case, i, e) for i, e in enumerate(loads) if isinstance(e, OutOfRangeError)],
+              "provenance": environment()}
+    return result, pocket, states
 
 
 def solve(case: Case, progress=None) -> dict:
-    """The case solved: {"case": SI inputs, "inflated": row, "states": [rows], "provenance": {...}}
-    (JSON-ready). ``progress(done, total)``, if given, goes to the solver's compression curve."""
-    pocket = resolve(case)
-    loads = forces(pocket)
-    extra = {} if progress is None else {"progress": progress}
-    curve = entry(pocket.solver(), "compression_curve", f"the loads of case {case.name}")
-    states = curve(pocket.material, pocket.pressure_initial, loads,
-                                               **pocket.options(), **extra)
-    return {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
-            "states": [compressed_row(pocket, s, i) for i, s in enumerate(states)], "provenance": environment()}
+    """The results of the case (the first part of ``solved``)."""
+    return solved(case, progress)[0]
 
 
-def write(result: dict, directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
-    """Write ``stem.json`` and ``stem.csv`` into ``directory``, both or neither; returns their paths."""
-    json_path, csv_path = results_paths(directory, stem)
-    fields = list(dict.fromkeys(k for row in result["states"] for k in row))
+def write(result: dict, paths, of: str | None = None) -> None:
+    """Write ``result`` to ``paths`` (``results_paths``: the JSON and the CSV file), both or neither,
+    recorded as pocket's results for ``of`` (``pocket.apps.folders.write_files``)."""
+    json_path, csv_path = paths
+    rows = [*result["states"], *result["unreachable"]]
+    fields = list(dict.fromkeys(k for row in rows for k in row))
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, fields, restval="")
     writer.writeheader()
-    writer.writerows({k: "; ".join(map(str, v)) if isinstance(v, list) else v for k, v in row.items()}
-                     for row in result["states"])
-    write_files({json_path: json.dumps(result, indent=2) + "\n", csv_path: text.getvalue()})
-    return json_path, csv_path
+    writer.writerows({k: "; ".join(map(str, v)) if isinstance(v, list) else v for k, v in row.items()} for row in rows)
+    write_files({json_path: json.dumps(result, indent=2) + "\n", csv_path: text.getvalue()}, of=of)

@@ -6,15 +6,20 @@ result can go where the user asked: not onto a folder (for a file) or a file
 Each failure is a one-line ``InputError`` (exit status 2) raised before any
 work.
 
-What pocket did not write it never deletes or overwrites. Every folder it writes
-whole (a VTK series, a validation or convergence report) holds a marker file,
-``.pocket-output.json``, naming its kind, pocket's version and every entry
-written. ``check_replaceable`` lets a result replace an existing folder only if
-that marker names the same kind and the folder holds nothing else; anything
-else is refused, naming what was found. The current folder, pocket's own
-install and every folder above them are never replaced. A file is replaced
-only if it is not there yet or ``check_output_file``'s ``ours`` recognises it
-as pocket's.
+What pocket did not write it never deletes or overwrites, and what it wrote it
+replaces only while it is unchanged. Every folder it writes whole (a VTK series,
+a validation or convergence report, a fit's plots) holds a marker file,
+``.pocket-output.json``, naming its kind, what it is of (the case of ``pocket run
+--vtk``), pocket's version, every entry written and the SHA-256 of each file.
+``check_replaceable`` lets a result replace an existing folder only if that
+marker names the same kind and case, the folder holds nothing else and every
+file still has its checksum; anything else is refused, naming what was found.
+The current folder, pocket's own install and every folder above them are never
+replaced. A file is replaced only if it is not there yet or the ledger of its
+folder records that pocket wrote it, unchanged, for the same case
+(``pocket.apps.ledger``: ``write_files`` records every file it writes); a sweep
+file, which a rerun resumes, is read and kept row by row instead
+(``pocket.apps.sweepfile``).
 
 A result (a file, a VTK series, a report folder) is then written into a hidden
 sibling ``.NAME.XXXXXXXXXXXX.partial`` (a random name, so that two writers of one
@@ -37,12 +42,14 @@ from collections.abc import Iterator
 
 from pocket.core.errors import InputError, OutputError
 
+from .ledger import LEDGER, changed, check_ledger, check_recorded, digest, updated
 from .provenance import version
 
 __all__ = ["MARKER", "check_output_file", "check_output_dir", "check_replaceable", "staged", "write_whole",
            "write_files", "created_parents", "remove_created"]
 
-#: the file pocket writes into every folder it writes whole: {"written by", "kind", "version", "entries"}
+#: the file pocket writes into every folder it writes whole: {"written by", "kind", "of", "version", "entries",
+#: "sha256": {file: checksum}}
 MARKER = ".pocket-output.json"
 
 
@@ -60,13 +67,14 @@ def _writable_parent(target: pathlib.Path, what: str, path) -> None:
             raise InputError(f"{what} {path}: {parent} is a broken link")
 
 
-def check_output_file(path, what: str = "output", *, ours=None) -> pathlib.Path:
+def check_output_file(path, what: str = "output", *, of: str | None = None, resumed: bool = False) -> pathlib.Path:
     """The absolute path of a file that may be created or replaced; InputError (before any work) if not.
 
     An existing link is followed: the path returned is its target's, which is written (the
     link stays). Only a regular file is replaced: not a device, a pipe or ``/dev/stdout``;
-    and, given ``ours`` (a function of the path, true for a file pocket wrote), only one it
-    recognises.
+    and only one that pocket wrote for ``of`` (the case the output is computed for) and no one
+    changed since (``pocket.apps.ledger.check_recorded``), unless ``resumed``: the caller reads
+    the existing file and keeps all it holds (a sweep file).
     """
     target = pathlib.Path(path).absolute()
     if target.is_symlink():
@@ -79,9 +87,11 @@ def check_output_file(path, what: str = "output", *, ours=None) -> pathlib.Path:
         raise InputError(f"{what} {path}: is not a regular file (a device or a pipe), so it cannot be replaced")
     if target.exists() and not os.access(target, os.W_OK):
         raise InputError(f"{what} {path}: the file is not writable")
-    if ours is not None and target.exists() and not ours(target):
-        raise InputError(f"{what} {path}: the file exists and pocket did not write it; choose another name")
     _writable_parent(target, what, path)
+    if not resumed:  # a resumed file is not recorded (``write_files``' ``record``)
+        check_ledger(target.parent, what, path)
+        if target.exists():
+            check_recorded(target, of, what, path)
     return target
 
 
@@ -124,13 +134,16 @@ def _listed(names: set[str]) -> str:
     return ", ".join(shown) + (f" and {len(names) - len(shown)} more" if len(names) > len(shown) else "")
 
 
-def check_replaceable(path, kind: str, what: str = "output", *, overwrite: bool = True) -> pathlib.Path:
+def check_replaceable(path, kind: str, what: str = "output", *, overwrite: bool = True,
+                      of: str | None = None) -> pathlib.Path:
     """The absolute, resolved path of a folder that a result of ``kind`` (``"VTK series"``,
-    ``"validation report"``, ...) may be written to whole (``staged``); InputError (before any work) if not.
+    ``"validation report"``, ...) for ``of`` (a case, or None) may be written to whole (``staged``);
+    InputError (before any work) if not.
 
     A new or empty folder may be written; an existing one only if pocket wrote it as a ``kind``
-    (its ``MARKER`` says so), it holds nothing the marker does not list, and ``overwrite``. Never
-    the current folder, pocket's install or a folder above them.
+    for ``of`` (its ``MARKER`` says so), it holds nothing the marker does not list, every file has
+    the checksum the marker records, and ``overwrite``. Never the current folder, pocket's install
+    or a folder above them.
     """
     target = check_output_dir(path, what).resolve()
     if target in _protected():
@@ -148,6 +161,16 @@ def check_replaceable(path, kind: str, what: str = "output", *, overwrite: bool 
     if others:
         raise InputError(f"{what} {path}: holds {_listed(others)}, which pocket did not write, besides its {kind}; "
                          "choose another folder")
+    if not isinstance(marker.get("sha256"), dict):
+        raise InputError(f"{what} {path}: holds a {kind} of an earlier pocket, which kept no checksums to show it "
+                         "is unchanged; remove it yourself or choose another folder")
+    edited = changed(target, marker["sha256"])
+    if edited:
+        raise InputError(f"{what} {path}: {_listed(edited)} changed after pocket wrote its {kind}; pocket keeps it: "
+                         "choose another folder")
+    if marker.get("of") != of:
+        raise InputError(f"{what} {path}: holds pocket's {kind} for {marker.get('of') or 'the command line'}, not "
+                         f"for {of or 'the command line'}; choose another folder")
     if not overwrite:
         raise InputError(f"{what} {path}: holds a previous {kind} (--overwrite replaces it)")
     return target
@@ -158,12 +181,13 @@ def _partial(target: pathlib.Path) -> pathlib.Path:
 
 
 @contextlib.contextmanager
-def staged(target: pathlib.Path, kind: str) -> Iterator[pathlib.Path]:
+def staged(target: pathlib.Path, kind: str, of: str | None = None) -> Iterator[pathlib.Path]:
     """Yield an empty sibling folder of ``target`` to fill; on leaving it replaces ``target``.
 
     ``target`` must be an absolute path (``.`` has no name for a sibling), checked by
-    ``check_replaceable`` for the same ``kind``. Once filled the folder gets its ``MARKER``
-    (``kind``, pocket's version, the entries written). A previous ``target`` is removed only
+    ``check_replaceable`` for the same ``kind`` and ``of``. Once filled the folder gets its ``MARKER``
+    (``kind``, ``of``, pocket's version, the entries written and each file's SHA-256). A previous
+    ``target`` is removed only
     after the new one is in place; on any exception the sibling and the folders made for it
     are deleted and ``target`` is left as it was.
     """
@@ -177,7 +201,10 @@ def staged(target: pathlib.Path, kind: str) -> Iterator[pathlib.Path]:
         raise OutputError(f"cannot write {target}: {err.strerror or err}") from None
     try:
         yield partial
-        marker = {"written by": "pocket", "kind": kind, "version": version(), "entries": sorted(_entries(partial))}
+        entries = sorted(_entries(partial))
+        sha256 = {name: digest((partial / name).read_bytes()) for name in entries if (partial / name).is_file()}
+        marker = {"written by": "pocket", "kind": kind, "of": of, "version": version(), "entries": entries,
+                  "sha256": sha256}
         (partial / MARKER).write_text(json.dumps(marker, indent=1) + "\n", encoding="utf-8")
         _replace(partial, target)
     except BaseException as err:
@@ -200,15 +227,24 @@ def remove_created(folders: list[pathlib.Path]) -> None:
             folder.rmdir()
 
 
-def write_files(texts: dict) -> None:
-    """Write each ``{path: text}`` whole, all or none (each through a hidden sibling renamed onto it).
+def write_files(texts: dict, *, of: str | None = None, record: bool = True) -> None:
+    """Write each ``{path: text}`` whole, all or none (each through a hidden sibling renamed onto it), and,
+    if ``record``, record them as pocket's output for ``of`` (the case they are computed for, or None) in
+    the ledger of their folder (``pocket.apps.ledger``), renamed into place last. Only a file whose
+    reader keeps all it holds (a sweep file) goes unrecorded.
 
     Every text is written to its sibling before any is renamed, so an error while
     writing (``OutputError``: a full disk, a folder made read-only) or an interrupt
     leaves none of the files, no sibling and no folder it created. Only the renames
     at the end, which need no space, come one after the other.
     """
-    paths = [pathlib.Path(path).absolute() for path in texts]
+    texts = {pathlib.Path(path).absolute(): text for path, text in texts.items()}
+    folders = {path.parent: {} for path in texts}
+    for path, text in texts.items():
+        folders[path.parent][path.name] = text
+    if record:
+        texts.update({folder / LEDGER: updated(folder, names, of) for folder, names in folders.items()})
+    paths = list(texts)
     made = list(dict.fromkeys(folder for path in paths for folder in created_parents(path)))
     partials = {path: _partial(path) for path in paths}
     target = paths[0]
@@ -228,9 +264,10 @@ def write_files(texts: dict) -> None:
         raise
 
 
-def write_whole(path, text: str) -> None:
-    """Write ``text`` to the file ``path`` whole or not at all (``write_files``)."""
-    write_files({path: text})
+def write_whole(path, text: str, *, of: str | None = None, record: bool = True) -> None:
+    """Write ``text`` to the file ``path`` whole or not at all, recorded as of ``of`` if ``record``
+    (``write_files``)."""
+    write_files({path: text}, of=of, record=record)
 
 
 def _replace(source: pathlib.Path, target: pathlib.Path) -> None:

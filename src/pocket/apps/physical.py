@@ -32,7 +32,7 @@ from .inverse import force_where, pressure_for_height, range_end
 from .rangeend import check_force
 from .solvers import entry, record
 
-__all__ = ["Pocket", "resolve", "forces", "inflated_row", "compressed_row"]
+__all__ = ["Pocket", "resolve", "forces", "load_forces", "inflated_row", "compressed_row"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -181,28 +181,46 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
 
 
 def forces(pocket: Pocket) -> list[float]:
-    """The case's loads as forces Fhat (heights of the indenter's lowest point solved for their force: by the
-    solver's ``compress_height`` where its record lists it, else by a search on its forces, ``force_where``).
+    """The case's loads as forces Fhat (``load_forces``); the first load the model does not reach is its
+    ``OutOfRangeError``."""
+    out = load_forces(pocket)
+    for value in out:
+        if isinstance(value, OutOfRangeError):
+            raise value
+    return out
+
+
+def load_forces(pocket: Pocket) -> list:
+    """Each of the case's loads as a force Fhat (heights of the indenter's lowest point solved for their force: by
+    the solver's ``compress_height`` where its record lists it, else by a search on its forces, ``force_where``),
+    or, for a load the model does not reach, the ``OutOfRangeError`` saying why.
 
     A height above the inflated pocket, or below the lowest the model reaches, or a force past the
-    end of the model's range (``pocket.apps.rangeend``), is an ``OutOfRangeError`` quoting the load as the
+    end of the model's range (``pocket.apps.rangeend``), is not reached; its error quotes the load as the
     case gives it, with the bound in its unit.
     """
     case = pocket.case
+    out = []
     if case.load_kind == "forces":
-        keys = [(f"loads.forces[{i}]", case.as_given(f"loads.forces[{i}]"), f) for i, f in enumerate(case.loads)]
-        return [check_force(pocket, key, given, _inside(key, quote(given), "Fhat = F / (P_I pi R^2)",
-                                                        f / pocket.force_scale_N)) for key, given, f in keys]
+        for index, force in enumerate(case.loads):
+            key, given = f"loads.forces[{index}]", case.as_given(f"loads.forces[{index}]")
+            fhat = _inside(key, quote(given), "Fhat = F / (P_I pi R^2)", force / pocket.force_scale_N)
+            try:
+                out.append(check_force(pocket, key, given, fhat))
+            except OutOfRangeError as err:
+                out.append(err)
+        return out
     solver, options = pocket.solver(), pocket.options()
     travel = solver.serves("compress_height")  # the solver holds the height itself: one solve, not a search
     inflate = entry(solver, "inflate", "loads.heights")
     top = inflate(pocket.material, pocket.pressure_initial, **pocket.options("inflate")).height * case.radius
-    out = []
     for index, height in enumerate(case.loads):
         if height > top:
             given = case.as_given(f"loads.heights[{index}]")
-            raise OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket (H0 = "
-                                  f"{written_like(top, given, 'length')}): the {_pressing(case)} would not touch it")
+            out.append(OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket (H0 = "
+                                       f"{written_like(top, given, 'length')}): the {_pressing(case)} would not "
+                                       "touch it"))
+            continue
         try:
             if travel:
                 out.append(entry(solver, "compress_height", "loads.heights")(
@@ -211,7 +229,7 @@ def forces(pocket: Pocket) -> list[float]:
                 out.append(force_where(solver, pocket.material, pocket.pressure_initial, "height",
                                        height / case.radius, increasing=False, **options))
         except OutOfRangeError:
-            raise _height_error(pocket, index, top) from None
+            out.append(_height_error(pocket, index, top))
     return out
 
 

@@ -58,7 +58,7 @@ from .rangeend import check_force
 from .slopes import curve_with_slopes
 from .solvers import entry
 
-__all__ = ["Reading", "sense", "calibration", "is_table", "MAX_POINTS", "sensitivity_at_rest", "linearity",
+__all__ = ["Reading", "sense", "calibration", "MAX_POINTS", "sensitivity_at_rest", "linearity",
            "force_range", "range_linearity"]
 
 #: most rows of a calibration table (a bound on the work it asks for)
@@ -84,18 +84,6 @@ class Reading:
         """The reading as a flat dict (JSON- and CSV-ready): its numbers, then the rubber and the fluid."""
         out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name != "rubber"}
         return {**out, **dict(self.rubber)}
-
-
-def is_table(path) -> bool:
-    """``path`` is a calibration table pocket wrote: a CSV file whose header starts with ``Reading``'s
-    numeric columns (``Reading.row``)."""
-    names = [f.name for f in dataclasses.fields(Reading) if f.name != "rubber"]
-    try:
-        with open(path, encoding="utf-8", newline="") as handle:
-            header = handle.readline().rstrip("\r\n").split(",")
-    except (OSError, UnicodeDecodeError):
-        return False
-    return header[:len(names)] == names
 
 
 def _readings(pocket: Pocket, fhats) -> list[Reading]:

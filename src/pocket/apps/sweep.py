@@ -215,7 +215,7 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
                 progress(done, len(todo))
         rows = journal.rows
         ordered = [rows[k] for k in keys] + [rows[k] for k in sorted(set(rows) - set(keys), key=_order)]
-        write_whole(journal.path, rows_csv(ordered, header=True).decode("utf-8"))
+        write_whole(journal.path, rows_csv(ordered, header=True).decode("utf-8"), record=False)  # kept by rows
         failed = False
     finally:
         journal.close(failed=failed)

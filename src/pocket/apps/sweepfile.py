@@ -18,9 +18,10 @@ a profile table), and the membrane's checks (``tension_1_min``, ``tension_2_min`
 Floats are written exactly (``repr``), so a point reads back equal to the number asked.
 
 A point is its solver and options, rubber, fluid, indenter, Phat_I and Fhat (``key``): a file
-may hold points of several sweeps, of several solvers and indenters, and a rerun recognises its own. A
-file of an earlier pocket, whose rows lack some of these columns, is refused, saying
-what it holds.
+may hold points of several sweeps, of several solvers and indenters, and a rerun recognises its own
+and keeps every row it reads, so nothing of the file is lost: a line that is not a row of one, or a
+second row of one point, is refused before any work. A file of an earlier pocket, whose rows lack
+some of these columns, is refused, saying what it holds.
 
 ``Journal`` opens a sweep file for a sweep: it refuses, untouched, a file that
 is not a sweep file (``InputError``), takes an advisory POSIX lock so that one
@@ -176,7 +177,7 @@ def _parse(data: bytes, path) -> tuple[dict, int]:
         raise _not_a_sweep(path, "it is not UTF-8 text") from None
     lines = csv.reader(io.StringIO(text, newline=""))
     next(lines)  # the header, checked by Journal
-    rows = {}
+    rows, lines_of = {}, {}
     for number, values in enumerate(lines, start=2):
         row = dict(zip(COLUMNS, values, strict=False))
         try:
@@ -185,7 +186,10 @@ def _parse(data: bytes, path) -> tuple[dict, int]:
             point = key(row)
         except ValueError:
             raise _not_a_sweep(path, f"line {number} is not a row of one") from None
-        rows[point] = row
+        if point in rows:
+            raise InputError(f"{path}: line {number} repeats the point of line {lines_of[point]} (pocket writes each "
+                             "point once, and a rerun would keep one of them only); give another --out file")
+        rows[point], lines_of[point] = row, number
     return rows, end
 
 

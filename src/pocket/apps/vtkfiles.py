@@ -232,11 +232,18 @@ def _write_vtu(path: pathlib.Path, mesh: meshio.Mesh) -> None:
     path.write_text(text)
 
 
-def write_state(directory, state, *, stem="state", segments=64, radii=None) -> list[pathlib.Path]:
+def _fields(fields) -> dict[str, np.ndarray]:
+    """Field data of one value each from ``fields`` ({name: number}, or None)."""
+    return {name: np.array([float(value)]) for name, value in (fields or {}).items()}
+
+
+def write_state(directory, state, *, stem="state", segments=64, radii=None, fields=None) -> list[pathlib.Path]:
     """Write ``{stem}_profile.vtu`` and ``{stem}_surface.vtu`` into ``directory`` (profiles at ``radii``
-    if given)."""
+    if given; ``fields``, {name: value}, added to the field data of both)."""
     meshes = {"profile": profile_mesh(state, radii=radii), "surface": surface_mesh(state, segments=segments,
                                                                                    radii=radii)}
+    for mesh in meshes.values():
+        mesh.field_data.update(_fields(fields))
     directory = pathlib.Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     paths = []
@@ -266,15 +273,17 @@ def _pvd(path: pathlib.Path, files: list[str], times: np.ndarray) -> None:
 
 
 def write_series(directory, states, *, times=None, segments=64, points=SERIES_POINTS,
-                 overwrite=False) -> pathlib.Path:
+                 overwrite=False, fields=None, of=None) -> pathlib.Path:
     """Write one profile and one surface per state plus ``profile.pvd`` and ``surface.pvd``; for compressed
     states (with an ``indenter``) also the indenter's surface per state and ``indenter.pvd``.
 
     ``times`` (default: the step index) label the steps. Every step has the same
-    points: the profiles are resampled on ``series_radii(states, points)``. An
-    existing non-empty ``directory`` is replaced as a whole only if it is a series
-    pocket wrote and ``overwrite`` (``pocket.apps.folders.check_replaceable``);
-    anything else is refused. Returns the directory (as an absolute path).
+    points: the profiles are resampled on ``series_radii(states, points)``. ``fields``
+    ({name: value}) are added to the field data of every file (the scales of a case).
+    An existing non-empty ``directory`` is replaced as a whole only if it is a series
+    pocket wrote for ``of`` (a case, or None) and ``overwrite``
+    (``pocket.apps.folders.check_replaceable``); anything else is refused. Returns the
+    directory (as an absolute path).
     """
     states = list(states)
     if not states:
@@ -283,18 +292,20 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
     segments = _segments(segments)
     points = check_count("points", points, 2, 100_000)
     radii = series_radii([_profile(s) for s in states], points)
-    target = check_replaceable(directory, KIND, "VTK folder", overwrite=overwrite)
-    with staged(target, KIND) as partial:
+    target = check_replaceable(directory, KIND, "VTK folder", overwrite=overwrite, of=of)
+    with staged(target, KIND, of) as partial:
         width = max(4, len(str(len(states) - 1)))
         pressed = all(hasattr(s, "indenter") for s in states)
         files = {"profile": [], "surface": [], **({"indenter": []} if pressed else {})}
         reach = reach_of([_profile(s) for s in states])
         for k, state in enumerate(states):
             stem = f"step_{k:0{width}d}"
-            paths = write_state(partial, state, stem=stem, segments=segments, radii=radii)
+            paths = write_state(partial, state, stem=stem, segments=segments, radii=radii, fields=fields)
             if pressed:
                 paths.append(partial / f"{stem}_indenter.vtu")
-                _write_vtu(paths[-1], indenter_mesh(state.indenter, state.height, reach, segments=segments))
+                mesh = indenter_mesh(state.indenter, state.height, reach, segments=segments)
+                mesh.field_data.update(_fields(fields))
+                _write_vtu(paths[-1], mesh)
             for part, path in zip(files, paths, strict=True):
                 files[part].append(path.name)
         for part, names in files.items():

@@ -1,18 +1,18 @@
-"""``pocket run CASE.toml | --sample N [--out DIR]``: solve a case file in physical units."""
+"""``pocket run CASE.toml | --sample N [--out DIR] [--vtk DIR]``: solve a case file in physical units."""
 
 from __future__ import annotations
 
 import pathlib
 import sys
 
-from pocket.apps.casefile import results_paths, solve, write
+from pocket.apps.casefile import results_paths, solved, write
 from pocket.apps.cases import Case, load, sample
-from pocket.apps.folders import check_output_dir, check_output_file
+from pocket.apps.folders import check_output_dir, check_output_file, check_replaceable
 from pocket.core.errors import InputError
 
 from .common import EXIT_CODES, progress_bar
 
-__all__ = ["register", "add_case_arguments", "case_from_args", "warn_case"]
+__all__ = ["register", "add_case_arguments", "case_from_args", "case_source", "warn_case"]
 
 _SHOWN = ("load", "force_N", "pressure_Pa", "contact_area_m2", "height_m", "force", "pressure_ratio",
           "height_ratio")
@@ -34,24 +34,58 @@ def case_from_args(args) -> tuple[Case, str]:
     return load(args.case), pathlib.Path(args.case).stem
 
 
+def case_source(args) -> str:
+    """What the outputs of the command line's case are of, as pocket's records of them name it: the case file
+    (its absolute path) or the built-in sample."""
+    if args.sample is not None:
+        return f"built-in sample {args.sample}"
+    return f"case file {pathlib.Path(args.case).resolve()}"
+
+
 def warn_case(case: Case) -> None:
     """Print the case's warnings on its inputs on stderr, before any solve: they may explain why one fails."""
     for text in case.warnings:
         print(f"pocket: warning: {text}", file=sys.stderr)
 
 
+def _write_vtk(directory, pocket, states: list, of: str) -> None:
+    """The compressed ``states`` as a ParaView series in ``directory`` (``pocket.apps.vtkfiles``), a step per
+    force in increasing order (one for loads of equal force), the time of each its force in newtons, with the
+    case's scales in every file's field data."""
+    from pocket.apps.vtkfiles import write_series
+
+    steps = list({s.force: s for s in sorted(states, key=lambda s: s.force)}.values())
+    scales = {"length_scale_m": pocket.case.radius, "pressure_scale_Pa": pocket.pressure_scale_Pa,
+              "force_scale_N": pocket.force_scale_N}
+    write_series(directory, steps, times=[s.force * pocket.force_scale_N for s in steps], overwrite=True,
+                 fields=scales, of=of)
+
+
 def _main(args) -> int:
     case, stem = case_from_args(args)
+    of = case_source(args)
     warn_case(case)
-    check_output_dir(args.out, "--out")
-    for path, ours in results_paths(args.out, stem).items():
-        check_output_file(path, "--out", ours=ours)
+    out = check_output_dir(args.out, "--out").resolve()
+    paths = [check_output_file(path, "--out", of=of) for path in results_paths(args.out, stem)]
+    if args.vtk is not None:
+        from pocket.apps.vtkfiles import KIND
+
+        vtk = check_replaceable(args.vtk, KIND, "--vtk", of=of)
+        if out == vtk or vtk in out.parents:
+            raise InputError(f"--vtk {args.vtk}: holds the --out folder {args.out}, but a series is written as a "
+                             "folder of its own; give --vtk another folder, e.g. OUT/vtk")
     with progress_bar(case.name, " loads") as progress:
-        result = solve(case, progress)
-    paths = write(result, args.out, stem)
+        result, pocket, states = solved(case, progress)
+    if args.vtk is not None:
+        _write_vtk(args.vtk, pocket, states, of)
+    write(result, paths, of)
     for text in dict.fromkeys(w for row in (result["inflated"], *result["states"]) for w in row["warnings"]
                               if w not in case.warnings):
         print(f"pocket: warning: {text}", file=sys.stderr)
+    missed = result["unreachable"]
+    if missed:
+        print(f"pocket: warning: {missed[0]['warnings'][0]}; the results hold the {len(result['states'])} of "
+              f"{len(case.loads)} loads the model reaches, and list the others with the reason", file=sys.stderr)
     rows = result["states"]
     fluid = case.fluid.kind if not case.fluid.is_gas else \
         f"gas (ambient {case.fluid.ambient:.6g} Pa, gamma {case.fluid.gamma:g})"
@@ -60,7 +94,7 @@ def _main(args) -> int:
     print("  ".join(f"{k:>15}" for k in _SHOWN))
     for row in rows:
         print("  ".join(f"{row[k]:>15.8g}" if isinstance(row[k], float) else f"{row[k]!s:>15}" for k in _SHOWN))
-    print("wrote " + ", ".join(map(str, paths)))
+    print("wrote " + ", ".join(map(str, paths)) + ("" if args.vtk is None else f", {args.vtk}"))
     return 0
 
 
@@ -69,7 +103,17 @@ def register(subparsers) -> None:
     text = "solve a case file (physical units): inflate, compress at each load, write JSON and CSV"
     p = subparsers.add_parser("run", help=text, description=f"{text}. The results are DIR/STEM.json (the case, "
                               "the inflated state, every compressed state, SI and dimensionless, and the "
-                              "provenance) and DIR/STEM.csv (one row per load).", epilog=EXIT_CODES)
+                              "provenance) and DIR/STEM.csv (one row per load). A rerun replaces only results "
+                              "pocket wrote for the same case file and no one changed since (it keeps checksums "
+                              "in DIR/.pocket-files.json); anything else is refused before any work (exit 2). "
+                              "Loads the model does not reach (a force past the end of its range) are left "
+                              "out: a warning names the first, the results list each with the reason, and the "
+                              "exit status is 0; if no load is reached, exit 2.", epilog=EXIT_CODES)
     add_case_arguments(p)
     p.add_argument("--out", default=".", metavar="DIR", help="folder for the results (default: ., the current folder)")
+    p.add_argument("--vtk", metavar="DIR", help="also write the compressed states as a ParaView series (as "
+                   "compress --vtk does: surface.pvd, profile.pvd, indenter.pvd), the time of each step its "
+                   "force in N; lengths are in units of the clamp radius, and every file's field data holds "
+                   "length_scale_m (R), pressure_scale_Pa (E T / R) and force_scale_N (P_I pi R^2) to turn "
+                   "them into SI")
     p.set_defaults(handler=_main)

@@ -12,7 +12,6 @@ from pocket.apps.sense import (
     MAX_POINTS,
     calibration,
     force_range,
-    is_table,
     range_linearity,
     sense,
     sensitivity_at_rest,
@@ -22,7 +21,7 @@ from pocket.core.inputs import check_count
 from pocket.core.units import positive, quantity
 
 from .common import EXIT_CODES, number
-from .run import add_case_arguments, case_from_args, warn_case
+from .run import add_case_arguments, case_from_args, case_source, warn_case
 
 __all__ = ["register"]
 
@@ -32,7 +31,7 @@ def _main(args) -> int:
     warn_case(case)
     if args.pressure is None and args.ratio is None and args.table is None:
         raise InputError("give a measured --pressure or --ratio, or --table FILE.csv")
-    table = None if args.table is None else check_output_file(args.table, "--table", ours=is_table)
+    table = None if args.table is None else check_output_file(args.table, "--table", of=case_source(args))
     if args.max_force is not None:
         positive("--max-force", args.max_force, "force")
     points = check_count("--points", args.points, 2, MAX_POINTS)
@@ -58,7 +57,7 @@ def _main(args) -> int:
         writer.writeheader()
         writer.writerows({k: "; ".join(map(str, v)) if isinstance(v, list) else v for k, v in row.items()}
                          for row in rows)
-        write_whole(table, text.getvalue())
+        write_whole(table, text.getvalue(), of=case_source(args))
         out["table"] = args.table
     if args.json:
         print(json.dumps(out))

@@ -31,7 +31,7 @@ def _executor(args):
 
 
 def _main(args) -> int:
-    check_output_file(args.out, "--out")
+    check_output_file(args.out, "--out", resumed=True)  # the journal reads the file and keeps its rows
     options = solver_flags(args, args.solver, "compress")
     rubber = material_of(args)
     alphas, material = (rubber, None) if isinstance(rubber, list) else (None, rubber)
