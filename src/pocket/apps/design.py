@@ -113,9 +113,9 @@ def _target(height_ratio, pressed, name, given, warnings):
     return "height_ratio", value
 
 
-def _thin(thickness, radius, given: dict) -> list[str]:
-    """``pocket.core.sizes.thin_sheet`` of the ``thickness`` (m), naming the inputs it comes from."""
-    inputs = ", ".join(f"{key} = {quote(value)}" for key, value in given.items())
+def _thin(thickness, radius, given: dict, name) -> list[str]:
+    """``pocket.core.sizes.thin_sheet`` of the designed ``thickness`` (m), naming the inputs it comes from."""
+    inputs = ", ".join(f"{name(key)} = {quote(value)}" for key, value in given.items())
     return thin_sheet(thickness, radius, f"{inputs} give T = {thickness:.6g} m")
 
 
@@ -208,7 +208,8 @@ def design(radius, height, modulus, material, force, height_ratio=None, *, thick
                                f"{name('radius')} = {quote(given['radius'])}")
         height, phat_i, solved = _pressure_for_sheet(model, rubber, lengths, given, name, key, target, force,
                                                      modulus, sealed(fluid, modulus * thickness / radius), pressing)
-        fhat = force / (math.pi * radius * modulus * thickness * phat_i)
+        p_i = phat_i * modulus * thickness / radius
+        fhat = force / (p_i * math.pi * radius**2)
     else:
         height = lengths["height"]
         ratio = target if key == "height_ratio" else target / height
@@ -220,11 +221,12 @@ def design(radius, height, modulus, material, force, height_ratio=None, *, thick
         if fluid.is_gas:
             fhat = _gas_force(entry(model, "compress", "a design"), rubber, phat_i, ratio, fluid,
                               fluid.ambient * phat_i * math.pi * radius**2 / force, fhat, pressing)
-        thickness = force / (math.pi * radius * modulus * phat_i * fhat)  # steps 3 and 4
-        warnings += _thin(thickness, radius, given)
+        p_i = force / (math.pi * radius**2 * fhat)  # steps 3 and 4
+        thickness = p_i * radius / (modulus * phat_i)
+        warnings += _thin(thickness, radius, given, name)
         solved = ("pressure_initial", "thickness")
     return finish(model, rubber, fluid, pressing, radius=radius, height=height, thickness=thickness,
-                   modulus=modulus, force=force, phat_i=phat_i, fhat=fhat, points=points, solved=solved,
+                   modulus=modulus, force=force, p_i=p_i, phat_i=phat_i, fhat=fhat, points=points, solved=solved,
                    warnings=warnings)
 
 

@@ -92,13 +92,12 @@ def sealed(fluid: Fluid, scale: float) -> dict:
     return {"fluid": fluid.scaled(scale)} if fluid.is_gas else {}
 
 
-def finish(model, rubber, fluid, pressing, *, radius, height, thickness, modulus, force, phat_i, fhat, points,
+def finish(model, rubber, fluid, pressing, *, radius, height, thickness, modulus, force, p_i, phat_i, fhat, points,
             solved, warnings) -> Design:
-    """The ``Design`` of the pocket found (``height`` None: the inflated one's): the paper's answer and what it
-    gives in the full model, and the feel."""
+    """The ``Design`` of the pocket found, SI values (``height`` None: the inflated one's) and the model's
+    (``phat_i``, ``fhat``): the paper's answer and what it gives in the full model, and the feel."""
     compress = entry(model, "compress", "a design")
     gas = sealed(fluid, modulus * thickness / radius)
-    p_i = phat_i * modulus * thickness / radius
     if "thickness" in solved or "height_ratio" in solved:
         paper_p, paper_t = paper_rules(radius, height, modulus, force)
         paper_h = height
