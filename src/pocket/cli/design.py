@@ -3,6 +3,7 @@ paper's rules and the full model, every dimensional value with its unit."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import sys
 
@@ -37,8 +38,8 @@ def _main(args) -> int:
     result = design(args.radius, args.height, args.modulus, material, args.force, args.height_ratio,
                     thickness=args.thickness, pressed_height=args.pressed_height, fluid=fluid, solver=args.solver,
                     indenter=indenter_table(args), name=_name)
-    warnings += [w for w in result.warnings if w not in warnings]
-    for text in warnings:
+    result = dataclasses.replace(result, warnings=(*warnings, *(w for w in result.warnings if w not in warnings)))
+    for text in result.warnings:
         print(f"pocket: warning: {text}", file=sys.stderr)
     if args.json:
         print(json.dumps(result.report()))
