@@ -255,3 +255,13 @@ def test_given_sheet_path_rises_with_pressure(button):
         values = [getattr(s, key) for s in states]
         assert np.all(np.diff(values) > 0), (key, values)
 
+
+
+def test_design_given_thickness_target_below_the_sheets_reach_is_one_line(capsys):
+    """A 0.15 mm sheet of the section 6 button asked for H/H0 = 0.05 at 0.67 N: along the path of a known sheet,
+    H/H0 tends to a limit near 0.5 as the pressure falls (test above, and pressure_for_sheet's docstring),
+    so no pressure gives 0.05: exit 2, one line naming the flag and the value, no solver failure."""
+    argv = ["design", "--radius", "20 mm", "--thickness", "0.15 mm", "--modulus", "1 MPa", "--alpha", "0.3",
+            "--force", "0.67 N", "--height-ratio", "0.05"]
+    assert main(argv) == 2
+    assert "pocket: error: --height-ratio = 0.05 is not reached on this sheet: it is still 0.5" in _one_line(capsys)

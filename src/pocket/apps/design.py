@@ -151,8 +151,10 @@ def _pressure_for_sheet(model, rubber, lengths, given, name, key, target, force,
         phat_i = _inflated(model, rubber, lengths["height"], radius, given, name, options)
         return lengths["height"], phat_i, ("pressure_initial", "height_ratio")
     per = force / (math.pi * radius * modulus * thickness)
-    phat_i = pressure_for_sheet(model, rubber, per, key, target / radius if key == "height" else target, **gas,
-                                **pressing)
+    spelled = "pressed_height" if key == "height" else "height_ratio"
+    what = f"{name(spelled)} = {quote(given.get(spelled, target))}"
+    phat_i = pressure_for_sheet(model, rubber, per, key, target / radius if key == "height" else target, what=what,
+                                **gas, **pressing)
     return None, phat_i, ("pressure_initial", "height")
 
 
