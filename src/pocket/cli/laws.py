@@ -83,8 +83,9 @@ def add_rubber_flags(parser, *, command: str | None = None, alphas: bool = False
             kind, unit = model_value(command, _MODEL_STRESS), _MODEL_STRESS
         else:
             kind, unit = str, physical_help("pressure", "20 kPa", noun="stress")
+        text = _help(uses)
         group.add_argument(_flag(name), type=kind, nargs="+" if listed else None, metavar=name.upper(),
-                           help=f"{_help(uses)}: {unit}")
+                           help=text if unit in text else f"{text}: {unit}")
     group.add_argument("--prestretch", type=number, metavar="LAMBDA_P",
                        help="equibiaxial stretch of the sheet as clamped, >= 1 (default 1: none); the law's "
                        "parameters and the thickness are the unstretched rubber's")

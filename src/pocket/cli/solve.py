@@ -1,7 +1,8 @@
 """``pocket inflate`` and ``pocket compress``: one state or a compression curve, dimensionless.
 
 Quantities (the model's own units): Phat = P R / (E T), Fhat = F / (P_I pi R^2),
-lengths in R. Output: a table (or ``--json``, with each state's ``warnings``) of
+lengths in R; a value with a unit is refused, naming the unit the option wants
+(``pocket.cli.common.model_value``). Output: a table (or ``--json``, with each state's ``warnings``) of
 the reported keys of ``pocket.core.states``; the warnings also go to stderr as
 ``pocket: warning: ...`` lines; ``--vtk DIR`` writes the states for ParaView. A
 curve shows a progress bar on a terminal (``progress`` of ``compression_curve``).
