@@ -84,10 +84,10 @@ def _rubber(modulus, material, name):
     """(E in Pa, the rubber in units of mu_0): E is ``modulus`` if given, else that of ``material``'s stresses
     in Pa; a rubber given by alpha needs ``modulus``."""
     rubber = as_material(material)
+    by_alpha = rubber.exact_alpha is not None  # in units of mu_0 already (mooney_rivlin)
     if modulus is not None:
-        return positive(name("modulus"), modulus, "pressure"), rubber if rubber.exact_alpha is not None \
-            else rubber.scaled()
-    if rubber.exact_alpha is not None:  # a rubber given by alpha is in units of mu_0 already (mooney_rivlin)
+        return positive(name("modulus"), modulus, "pressure"), rubber if by_alpha else rubber.scaled()
+    if by_alpha:
         raise InputError(f"{name('modulus')} is missing: a Mooney-Rivlin rubber given by alpha = C2/C1 needs the "
                          "modulus E")
     return rubber.modulus, rubber.scaled()

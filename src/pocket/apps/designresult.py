@@ -54,8 +54,9 @@ class Design:
     solved: tuple[str, ...] = ("pressure_initial", "thickness")
 
     def report(self) -> dict:
-        """JSON-ready: the full model's answer, the paper's, their ratios, the rubber (units of mu_0) and
-        the fluid (``ambient_Pa``, and ``ambient`` as Phat_atm of the design), the warnings (a list), the curve."""
+        """JSON-ready: the full model's answer, the paper's, their ratios, what was ``solved`` (a list), the rubber
+        (units of mu_0) and the fluid (``ambient_Pa``, and ``ambient`` as Phat_atm of the design), the warnings (a
+        list), the curve."""
         skip = ("material", "fluid", "ambient", "warnings", "solved")
         out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)
                if not f.name.startswith("curve_") and f.name not in skip}
@@ -119,8 +120,8 @@ def finish(model, rubber, fluid, pressing, *, radius, height, thickness, modulus
     scale = p_i * math.pi * radius**2
     stiffness = -scale / (height * slopes["height_ratio"])
     return Design(pressure_initial_Pa=p_i, thickness_m=thickness, height_m=height,
-                  height_ratio=states[0].height_ratio, paper_pressure_initial_Pa=paper_p, paper_thickness_m=paper_t,
-                  paper_height_m=paper_h, paper_model_height_m=paper_model[0],
+                  height_ratio=float(states[0].height_ratio), paper_pressure_initial_Pa=paper_p,
+                  paper_thickness_m=paper_t, paper_height_m=paper_h, paper_model_height_m=paper_model[0],
                   paper_model_height_ratio=paper_model[1], pressure_initial=phat_i, force=fhat,
                   stiffness_N_per_m=float(stiffness[0]), curve_force_N=forces * scale,
                   curve_travel_m=np.array([height * (1.0 - s.height_ratio) for s in states[1:]]),
