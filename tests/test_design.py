@@ -79,7 +79,7 @@ def test_cli_json(example, capsys):
     "option, value, message",
     [
         ("--modulus", "1 mm", "modulus = '1 mm' has dimension [length], but a pressure"),
-        ("--height-ratio", "1.2", "height_ratio = 1.2, but a pressed button needs 0 < H/H0 < 1"),
+        ("--height-ratio", "1.2", "--height-ratio = 1.2, but a pressed button needs 0 < H/H0 < 1"),
         ("--radius", "-20 mm", "radius = '-20 mm', but it must be > 0"),
         ("--alpha", "-2", "alpha = -2.0, but the Mooney-Rivlin model needs alpha > -1"),
         ("--height", "100 mm", "height = '100 mm': no inflated state of the model's first branch is that high"),
@@ -173,20 +173,21 @@ def test_gas_button_is_softer_and_its_root_unique(example, gas_designs):
 
 
 def test_another_law_and_cli(capsys):
-    """Exact: a Yeoh button (parameters in any unit, E = --modulus) by the command line, fed back to the
-    forward solver with the rubber in units of mu_0 and the gas's Phat_atm: H0 and H/H0 = 0.8 at F."""
+    """Exact: a Yeoh button (stresses with units, which set E = 6 C10 = 510 kPa) by the command line, fed back
+    to the forward solver with the rubber in units of mu_0 and the gas's Phat_atm: H0 and H/H0 = 0.8 at F."""
     from pocket.core.fluids import gas
     from pocket.core.materials import check
 
-    argv = ["design", "--radius", "20 mm", "--height", "10 mm", "--modulus", "1 MPa", "--law", "yeoh", "--c10", "85",
-            "--c20", "2", "--c30", "0.1", "--force", "0.67 N", "--fluid", "gas", "--gamma", "1.4", "--json"]
+    argv = ["design", "--radius", "20 mm", "--height", "10 mm", "--law", "yeoh", "--c10", "85 kPa",
+            "--c20", "2 kPa", "--c30", "0.1 kPa", "--force", "0.67 N", "--fluid", "gas", "--gamma", "1.4", "--json"]
     assert main(argv) == 0
     out = json.loads(capsys.readouterr().out)
     assert (out["material"], out["c10"], out["fluid"], out["ambient_Pa"]) == ("yeoh", 0.5, "gas", 101325.0)
     p_i, t = out["pressure_initial_Pa"], out["thickness_m"]
     rubber = check("yeoh", {"c10": 85.0, "c20": 2.0, "c30": 0.1}).scaled()
-    state = shooting.compress(rubber, p_i * R / (E * t), F / (p_i * math.pi * R**2),
-                              fluid=gas(101325.0 * R / (E * t), 1.4))
+    modulus = 6 * 85e3  # E = 3 mu_0, mu_0 = 2 C10
+    state = shooting.compress(rubber, p_i * R / (modulus * t), F / (p_i * math.pi * R**2),
+                              fluid=gas(101325.0 * R / (modulus * t), 1.4))
     assert state.inflated.height * R == pytest.approx(H0, rel=1e-6)
     assert state.height_ratio == pytest.approx(RATIO, rel=1e-6)
 

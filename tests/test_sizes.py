@@ -131,7 +131,7 @@ def test_design_in_plain_metres_warns_naming_radius_and_height(capsys):
     assert main([*args, "--radius", "20", "--height", "10"]) == 0
     out, err = capsys.readouterr()
     assert err.splitlines() == [f"pocket: warning: {key} = '{v}' has no unit and is read as {v} m; write '{v} mm' if "
-                                "millimetres were meant" for key, v in (("radius", 20), ("height", 10))]
+                                "millimetres were meant" for key, v in (("--radius", 20), ("--height", 10))]
     assert len(json.loads(out)["warnings"]) == 2
     assert main([*args, "--radius", "20 mm", "--height", "10 mm"]) == 0
     assert capsys.readouterr().err == ""
@@ -146,7 +146,7 @@ def test_design_of_a_thick_sheet(capsys, modulus, factor):
     status = main(["design", "--alpha", "0.3", "--radius", "20 mm", "--height", "10 mm", "--modulus", modulus,
                    "--force", "0.67 N"])
     err = capsys.readouterr().err
-    assert f"radius = '20 mm', height = '10 mm', modulus = '{modulus}', force = '0.67 N' give T = " in err
+    assert f"--radius = '20 mm', --height = '10 mm', --modulus = '{modulus}', --force = '0.67 N' give T = " in err
     assert f"the sheet's thickness is {ratio:.3g} times the clamp radius" in err
     assert err.count("\n") == 1
     if ratio >= THIN_LIMIT:

@@ -7,7 +7,10 @@ So each inverse problem is one scalar root, bracketed and then solved by
 Brent's method on the forward solver:
 
 - ``pressure_for_height``: Phat_I with inflate(material, Phat_I).height = H0/R;
-- ``force_where``: Fhat with compress(material, Phat_I, Fhat).<key> = target.
+- ``force_where``: Fhat with compress(material, Phat_I, Fhat).<key> = target;
+- ``pressure_for_sheet``: Phat_I with compress(material, Phat_I, c / Phat_I).<key> = target, a sheet of
+  known thickness T pressed by a known force F (``design``), so that Fhat = F / (P_I pi R^2) = c / Phat_I,
+  c = F / (pi R E T).
 
 The bracket starts at load 0, where the value is known (height 0; the
 uncompressed state). For a force, a solver that knows the end of its range
@@ -26,15 +29,18 @@ its parser, and every ``pocket`` command would otherwise pay for it.
 
 from __future__ import annotations
 
+import math
+
 from pocket.core.errors import OutOfRangeError
 from pocket.core.solver import Solver
 
 from .solvers import entry
 
-__all__ = ["pressure_for_height", "force_where", "range_end"]
+__all__ = ["pressure_for_height", "force_where", "pressure_for_sheet", "range_end"]
 
 _XTOL, _RTOL = 1e-15, 1e-13  # the forward solvers resolve their values to ~1e-10
 _EDGE = 1e-9  # relative width at which the range edge is located
+_WIDEST = 2.0**16  # how far a bracket in Phat_I may grow from its start, each way (a factor ~6.6e4)
 
 
 def _bracket(fun, start, what, reached):
@@ -111,6 +117,69 @@ def force_where(solver: Solver, material, pressure_initial, key, target, *, incr
     else:
         lo, hi = 0.0, end
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
+
+
+def pressure_for_sheet(solver: Solver, material, per_pressure, key, target, *, what=None, **options) -> float:
+    """Phat_I at which ``solver``'s compress(material, Phat_I, ``per_pressure`` / Phat_I).<key> equals ``target``
+    (``key``: ``height_ratio`` H/H0 or ``height`` H/R, both growing with Phat_I on this path); ``what`` names
+    the target in messages (by default ``key = target``).
+
+    Along it a higher pressure is both a stiffer pocket and a smaller Fhat, so the pressed height and its
+    ratio to the inflated one grow with Phat_I (the design's tests check it). The model's range bounds the
+    path on both sides: at a low Phat_I the force presses the free part onto the clamp plane (a state
+    below every target), at a high one there may be no inflated state (above every target). The bracket
+    doubles or halves from Phat_I = 5.7 ``per_pressure`` (Fhat = 1/5.7, the paper's rule), then closes on
+    the range's edge until both its ends are states; a target past the edge is an OutOfRangeError. So is
+    one not reached within a factor ``_WIDEST`` of the start: as Phat_I falls at fixed Phat_I Fhat, H/H0
+    tends to a limit above 0 (about 0.53 for alpha = 0.3 and the section 6 button's F / (pi R E T)), so a
+    low target may lie below every state of the path.
+    """
+    from scipy.optimize import brentq
+
+    compress = entry(solver, "compress", f"a compressed state of {key} = {target:.10g}")
+    inflate = entry(solver, "inflate", f"a compressed state of {key} = {target:.10g}")
+
+    def miss(p):
+        try:
+            return getattr(compress(material, p, per_pressure / p, **options), key) - target
+        except OutOfRangeError:
+            try:
+                inflate(material, p, **{k: v for k, v in options.items() if k not in ("fluid", "indenter")})
+            except OutOfRangeError:
+                return math.inf  # no inflated state so high: above every target
+            return -math.inf  # pressed past the end of the range: below every target
+
+    lo, hi = _sheet_bracket(miss, 5.7 * per_pressure, what or f"{key} = {target:.10g}", target)
+    return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
+
+
+def _sheet_bracket(miss, start, what, target) -> tuple[float, float]:
+    """[lo, hi] with finite miss(lo) < 0 <= miss(hi), miss growing, from ``start`` (``pressure_for_sheet``)."""
+    lo = hi = start
+    low = high = miss(start)
+    while not (low < 0.0 <= high and lo < hi):
+        if high < 0.0:
+            if hi > start * _WIDEST:
+                raise OutOfRangeError(f"{what} is not reached on this sheet: it is {high + target:.10g} at "
+                                      f"Phat_I = {hi:.6g}, {_WIDEST:g} times the paper's rule's")
+            lo, low, hi = hi, high, 2.0 * hi
+            high = miss(hi)
+        else:
+            if lo < start / _WIDEST:  # Phat_I -> 0 at fixed Phat_I Fhat tends to a limit, not to the range's end
+                raise OutOfRangeError(f"{what} is not reached on this sheet: it is still {low + target:.10g} at "
+                                      f"Phat_I = {lo:.6g}, 1/{_WIDEST:g} of the paper's rule's")
+            hi, high, lo = lo, low, 0.5 * lo
+            low = miss(lo)
+    while not (math.isfinite(low) and math.isfinite(high)):  # close on the range's edge
+        if hi - lo <= _EDGE * hi:
+            side = "its compression range (the free part reaching the clamp plane)" if math.isinf(low) else \
+                "its inflated states"
+            raise OutOfRangeError(f"{what} is beyond the model's range: the pocket reaches the end of {side} at "
+                                  f"Phat_I = {lo:.10g} first")
+        mid = 0.5 * (lo + hi)
+        value = miss(mid)
+        lo, low, hi, high = (mid, value, hi, high) if value < 0.0 else (lo, low, mid, value)
+    return lo, hi
 
 
 def _own_end(solver: Solver, material, pressure_initial, options):

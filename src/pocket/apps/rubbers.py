@@ -62,9 +62,11 @@ def _only(law: str, given, allowed, spell: Callable[[str], str], listed: str | N
         raise InputError(f"{spell(extra[0])} is not a parameter of the {law} law (its parameters: {listed})")
 
 
-def rubber(law, params: dict, spell: Callable[[str], str] = lambda name: f"--{name}") -> Material:
+def rubber(law, params: dict, spell: Callable[[str], str] = lambda name: f"--{name}", *,
+           scaled: bool = True) -> Material:
     """The rubber ``law`` with ``params`` (name -> number, a list of numbers for Ogden's mu and exponents),
-    all stresses in one unit, checked and rescaled to units of mu_0 (mu_0 = 1).
+    all stresses in one unit, checked and rescaled to units of mu_0 (mu_0 = 1), or left in their unit if
+    not ``scaled`` (stresses in Pa, which set E = 3 mu_0).
 
     Only the ratios of the stresses enter the dimensionless model (Phat = P R / (E T), E = 3 mu_0 of these
     same parameters), so any unit gives the same rubber. Errors name a parameter as ``spell(name)``.
@@ -79,7 +81,7 @@ def rubber(law, params: dict, spell: Callable[[str], str] = lambda name: f"--{na
         material = check(law, params, _WHERE)
     except InputError as err:  # spelled as the user wrote the names
         raise InputError(_respelled(str(err), spell)) from None
-    return material.scaled()
+    return material.scaled() if scaled else material
 
 
 def _respelled(message: str, spell) -> str:

@@ -16,8 +16,10 @@ from fractions import Fraction
 
 from pocket.apps.solvers import all_options, solver_options
 from pocket.core.inputs import quote
+from pocket.core.units import KINDS, has_unit
 
-__all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "add_solver_flags", "solver_flags", "flag",
+__all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "model_value", "physical_help", "MODEL_UNITS",
+           "PHYSICAL_UNITS", "add_solver_flags", "solver_flags", "flag",
            "progress_bar", "warn", "report"]
 
 EXIT_CODES = ("exit status: 0 success (also when the reader of the output stops early, as `| head` does); "
@@ -56,12 +58,48 @@ class Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
+#: what the help of a command in physical units says of its values
+PHYSICAL_UNITS = ("Dimensional values carry their unit ('20 mm', '1 MPa', '0.67 N'); a plain number is read as SI "
+                  "(m, Pa, N) and a warning naming the option says so.")
+#: what the help of a command in the model's units says of its values
+MODEL_UNITS = ("Every value is a number in the model's units (each option names its own); a value with a unit "
+               "('8 mm') is refused: pocket run, design and sense take physical values.")
+
+#: kind -> an example with its unit, for the help of an option in physical units
+_EXAMPLES = {"length": "20 mm", "pressure": "1 MPa", "force": "0.67 N"}
+
+
 def number(text: str) -> float:
-    """A float or a fraction such as 47/160 (one too large for a double is no number)."""
+    """A float or a fraction such as 47/160 (one too large for a double is no number); text with a unit is
+    refused as such (the option is a plain number)."""
     try:
         return float(Fraction(text)) if "/" in text else float(text)
     except (ValueError, ZeroDivisionError, OverflowError):
+        if has_unit(text):
+            raise argparse.ArgumentTypeError(f"{quote(text)} has a unit, but this option is a plain number") from None
         raise argparse.ArgumentTypeError(f"{quote(text)} is not a number") from None
+
+
+def model_value(command: str, wants: str):
+    """The argparse type of a dimensional option of ``pocket command``, which works in the model's units:
+    a ``number`` in the unit ``wants`` names (``"R_s/R"``); a value with a unit (``"8 mm"``) is refused in one
+    line naming ``wants`` and the command that takes physical values."""
+
+    def parse(text: str) -> float:
+        if has_unit(text):
+            raise argparse.ArgumentTypeError(f"{quote(text)} has a unit, but pocket {command} works in the model's "
+                                             f"units: give {wants} (a number); pocket run takes physical values in "
+                                             "a case file")
+        return number(text)
+
+    return parse
+
+
+def physical_help(kind: str, example: str | None = None, noun: str | None = None) -> str:
+    """The end of the help of an option in physical units, a quantity of ``kind`` (``noun``: another name for
+    it, "stress"): ``"a length, e.g. '20 mm' (plain: m, with a warning)"``."""
+    unit = KINDS[kind][1]
+    return f"a {noun or kind}, e.g. '{example or _EXAMPLES[kind]}' (plain: {unit}, with a warning)"
 
 
 def flag(name: str) -> str:

@@ -1,9 +1,11 @@
 """The indenter flags of ``pocket compress`` (the model's units) and ``pocket design`` (physical units).
 
 ``--indenter {plate,sphere,profile}`` (default plate, the flat plate), ``--indenter-radius`` for a sphere
-and ``--indenter-file FILE.csv`` for a profile. In ``compress`` the radius is K = R_s / R (> 0) and the
-profile's header is in units of R, ``radius [R],height [R]`` (``pocket.core.profiles``); in ``design``, which
-knows R, the radius is a length ('8 mm') and the profile's header in any length unit (``radius [mm],...``).
+and ``--indenter-file FILE.csv`` for a profile. In the commands of the model's units (``compress``, ``sweep``)
+the radius is K = R_s / R (> 0; a value with a unit is refused) and the profile's header is in units of R,
+``radius [R],height [R]`` (``pocket.core.profiles``); in ``design``, which knows R, the radius is a length
+('8 mm'; a plain number is metres, with a warning) and the profile's header in any length unit
+(``radius [mm],...``).
 A flag the shape does not take, a missing one, a radius that is not positive or a bad profile file is a
 one-line error before any solving.
 """
@@ -15,24 +17,27 @@ from pocket.core.errors import InputError
 from pocket.core.indenters import FLAT, Indenter, profile, sphere
 from pocket.core.profiles import read_csv
 
-from .common import number
+from .common import model_value, physical_help
 
 __all__ = ["add_indenter_flags", "indenter_of", "indenter_table", "flag"]
 
 _FLAGS = {"shape": "--indenter", "radius": "--indenter-radius", "file": "--indenter-file"}
 
 
-def add_indenter_flags(parser, *, physical: bool = False) -> None:
-    """Add ``--indenter``, ``--indenter-radius`` and ``--indenter-file`` to ``parser`` (a length and a file in any
-    length unit if ``physical``, else in units of R)."""
+def add_indenter_flags(parser, *, command: str | None = None) -> None:
+    """Add ``--indenter``, ``--indenter-radius`` and ``--indenter-file`` to ``parser``: in units of R for
+    ``command``, the name of a command in the model's units; a length and a file in any length unit if None
+    (``design``)."""
     parser.add_argument("--indenter", choices=tuple(SHAPES), default="plate",
                         help="what presses: the flat plate (default), a sphere (a fingertip) or a profile")
-    if physical:
-        parser.add_argument(_FLAGS["radius"], metavar="LENGTH", help="a sphere's radius R_s ('8 mm')")
+    if command is None:
+        parser.add_argument(_FLAGS["radius"], metavar="LENGTH",
+                            help=f"a sphere's radius R_s: {physical_help('length', '8 mm')}")
         parser.add_argument(_FLAGS["file"], metavar="FILE.csv", help="a profile's table: a header 'radius [mm],"
                             "height [mm]' (any length unit) and rows of two numbers, from the axis outwards")
         return
-    parser.add_argument(_FLAGS["radius"], type=number, metavar="K", help="a sphere's radius K = R_s / R")
+    parser.add_argument(_FLAGS["radius"], type=model_value(command, "R_s/R"), metavar="K",
+                        help="a sphere's radius as K = R_s/R (a number)")
     parser.add_argument(_FLAGS["file"], metavar="FILE.csv", help="a profile's table: a header 'radius [R],height "
                         "[R]' (units of the clamp radius R) and rows of two numbers, from the axis outwards")
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import sys
 
 from pocket.apps.folders import check_output_file, write_whole
 from pocket.apps.physical import forces, resolve
@@ -18,9 +19,9 @@ from pocket.apps.sense import (
 )
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_count
-from pocket.core.units import positive, quantity
+from pocket.core.units import plain_warnings, positive, quantity
 
-from .common import EXIT_CODES, number
+from .common import EXIT_CODES, PHYSICAL_UNITS, number, physical_help
 from .run import add_case_arguments, case_from_args, case_source, warn_case
 
 __all__ = ["register"]
@@ -39,6 +40,7 @@ def _main(args) -> int:
         quantity("--pressure", args.pressure, "pressure")
     if args.range is not None:
         span = list(force_range(*args.range, key="--range"))
+    _warn_plain(args)
     pocket = resolve(case)
     out = {}
     if args.pressure is not None or args.ratio is not None:
@@ -67,6 +69,15 @@ def _main(args) -> int:
     return 0
 
 
+def _warn_plain(args) -> None:
+    """A ``pocket: warning:`` line on stderr for each value given without a unit (read as SI)."""
+    given = [("--pressure", args.pressure, "pressure"), ("--max-force", args.max_force, "force"),
+             *((f"--range[{i}]", v, "force") for i, v in enumerate(args.range or ()))]
+    for key, value, kind in given:
+        for text in [] if value is None else plain_warnings(key, value, kind):
+            print(f"pocket: warning: {text}", file=sys.stderr)
+
+
 def register(subparsers) -> None:
     """Add ``pocket sense``."""
     text = "force sensing: force, contact area, travel and sensitivity from a measured pressure"
@@ -80,16 +91,18 @@ def register(subparsers) -> None:
                               "descent from the top of the inflated dome), sensitivity_at_rest_kPa_per_N (dP/dF as "
                               "F -> 0, from the inflated pocket by reciprocity) and, with --range, "
                               "linearity_percent_fs: the largest deviation of P(F) from its best straight line over "
-                              "the range, in % of the full-scale pressure change.",
+                              f"the range, in % of the full-scale pressure change. {PHYSICAL_UNITS}",
                               epilog=EXIT_CODES)
     add_case_arguments(p)
-    p.add_argument("--pressure", help="measured gauge pressure P ('5.2 kPa', SI if plain)")
-    p.add_argument("--ratio", type=number, help="measured pressure rise P/P_I")
+    p.add_argument("--pressure", metavar="PRESSURE", help="measured gauge pressure P: "
+                   f"{physical_help('pressure', '5.2 kPa')}")
+    p.add_argument("--ratio", type=number, metavar="P/P_I", help="measured pressure rise P/P_I, a number")
     p.add_argument("--table", metavar="FILE.csv", help="write a calibration table over the force range")
-    p.add_argument("--max-force", help="top of the table's force range (default: the case's largest load)")
+    p.add_argument("--max-force", metavar="FORCE", help="top of the table's force range (default: the case's "
+                   f"largest load): {physical_help('force', '2 N')}")
     p.add_argument("--points", type=int, default=21, help=f"rows of the table, and forces of --range's curve "
                    f"(2 to {MAX_POINTS})")
     p.add_argument("--range", nargs=2, metavar=("LOW", "HIGH"), help="report the linearity of P(F) over this "
-                   "force range ('0 N' '2 N', SI if plain)")
+                   f"force range, LOW and HIGH each {physical_help('force', '2 N')}")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(handler=_main)

@@ -1,7 +1,8 @@
 """``pocket inflate`` and ``pocket compress``: one state or a compression curve, dimensionless.
 
 Quantities (the model's own units): Phat = P R / (E T), Fhat = F / (P_I pi R^2),
-lengths in R. Output: a table (or ``--json``, with each state's ``warnings``) of
+lengths in R; a value with a unit is refused, naming the unit the option wants
+(``pocket.cli.common.model_value``). Output: a table (or ``--json``, with each state's ``warnings``) of
 the reported keys of ``pocket.core.states``; the warnings also go to stderr as
 ``pocket: warning: ...`` lines; ``--vtk DIR`` writes the states for ParaView. A
 curve shows a progress bar on a terminal (``progress`` of ``compression_curve``).
@@ -18,12 +19,11 @@ from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.indenters import FLAT
 from pocket.core.inputs import check_positive
 
-from .common import EXIT_CODES, add_solver_flags, number, progress_bar, report, solver_flags, warn
+from .common import EXIT_CODES, MODEL_UNITS, add_solver_flags, model_value, progress_bar, report, solver_flags, warn
 from .indenters import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
-
 
 
 def register(subparsers) -> None:
@@ -31,20 +31,24 @@ def register(subparsers) -> None:
     for name, text in (("inflate", "step 1: inflate the pocket at pressure Phat"),
                        ("compress", "step 2: press the inflated pocket with a flat plate or another indenter, its "
                                     "fluid sealed in (a liquid keeps its volume, a gas is compressed)")):
-        p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}.", epilog=EXIT_CODES)
+        p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}. {MODEL_UNITS}",
+                                  epilog=EXIT_CODES)
         if name == "inflate":
             control = p.add_mutually_exclusive_group(required=True)
-            control.add_argument("--pressure", type=number, help="Phat = P R / (E T) (pressure control)")
-            control.add_argument("--volume", type=number, help="enclosed volume V / R^3 (volume control: passes "
-                                 "a pressure maximum; solvers shooting and fem)")
+            control.add_argument("--pressure", type=model_value(name, "Phat = P R / (E T)"), metavar="PHAT",
+                                 help="pressure control, Phat = P R / (E T)")
+            control.add_argument("--volume", type=model_value(name, "V/R^3"), metavar="V/R^3",
+                                 help="volume control: the enclosed volume in V/R^3 (passes a pressure maximum; "
+                                 "solvers shooting and fem)")
         else:
-            p.add_argument("--pressure", type=number, required=True, help="initial Phat_I = P_I R / (E T)")
+            p.add_argument("--pressure", type=model_value(name, "Phat_I = P_I R / (E T)"), required=True,
+                           metavar="PHAT_I", help="initial pressure, Phat_I = P_I R / (E T)")
             load = p.add_mutually_exclusive_group(required=True)
-            load.add_argument("--force", type=number, nargs="+",
-                              help="Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
-            load.add_argument("--height", type=number, nargs="+", metavar="H",
-                              help="travel control: the indenter's lowest point at H/R above the clamp plane, "
-                                   "at most the inflated height H0/R (solvers shooting and fem)")
+            load.add_argument("--force", type=model_value(name, "Fhat = F / (P_I pi R^2)"), nargs="+", metavar="FHAT",
+                              help="force, Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
+            load.add_argument("--height", type=model_value(name, "H/R"), nargs="+", metavar="H/R",
+                              help="travel control: the indenter's lowest point at a height in H/R above the clamp "
+                                   "plane, at most the inflated height H0/R (solvers shooting and fem)")
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                        help="shooting (the reference, default), fem or analytical")
         p.add_argument("--json", action="store_true",
@@ -53,10 +57,10 @@ def register(subparsers) -> None:
                        "in order of force, the time of each its force)")
         p.add_argument("--overwrite", action="store_true",
                        help="replace a VTK series pocket wrote in --vtk DIR (any other non-empty folder is refused)")
-        add_rubber_flags(p)
+        add_rubber_flags(p, command=name)
         if name == "compress":
-            add_fluid_flags(p, physical=False)
-            add_indenter_flags(p)
+            add_fluid_flags(p, command=name)
+            add_indenter_flags(p, command=name)
         add_solver_flags(p, "inflate" if name == "inflate" else "compress")
         p.set_defaults(handler=_main)
 
@@ -120,7 +124,7 @@ def _main(args) -> int:
     options = solver_flags(args, args.solver, step)
     material = material_of(args)
     if step == "compress":
-        fluid = fluid_of(args, physical=False)
+        fluid = fluid_of(args)
         options.update({} if fluid is None else {"fluid": fluid})
         indenter = indenter_of(args)
         options.update({} if indenter == FLAT else {"indenter": indenter})

@@ -11,7 +11,7 @@ from pocket.apps.workers import local_executor, max_workers, stop
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_positive
 
-from .common import EXIT_CODES, add_solver_flags, number, progress_bar, solver_flags
+from .common import EXIT_CODES, MODEL_UNITS, add_solver_flags, model_value, number, progress_bar, solver_flags
 from .indenters import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
@@ -35,7 +35,7 @@ def _main(args) -> int:
     options = solver_flags(args, args.solver, "compress")
     rubber = material_of(args)
     alphas, material = (rubber, None) if isinstance(rubber, list) else (None, rubber)
-    fluid = fluid_of(args, physical=False)
+    fluid = fluid_of(args)
     indenter = indenter_of(args)
     executor = _executor(args)
     try:
@@ -61,9 +61,12 @@ def register(subparsers) -> None:
         "sphere K=... with K = R_s/R, or profile sha256=... naming a profile table by its content; sweeps of several "
         "indenters can share a file); rerun the same command to "
         "compute only the missing points. While it runs the file collects finished points; at the end it is "
-        "rewritten in grid order. Stopped early (interrupt, error), the file keeps its complete rows only.")
-    p.add_argument("--pressure", type=number, nargs="+", required=True, help="values of Phat_I = P_I R/(E T)")
-    p.add_argument("--force", type=number, nargs="+", required=True, help="values of Fhat = F/(P_I pi R^2)")
+        "rewritten in grid order. Stopped early (interrupt, error), the file keeps its complete rows only. "
+        f"{MODEL_UNITS}")
+    p.add_argument("--pressure", type=model_value("sweep", "Phat_I = P_I R / (E T)"), nargs="+", required=True,
+                   metavar="PHAT_I", help="values of the initial pressure, Phat_I = P_I R / (E T)")
+    p.add_argument("--force", type=model_value("sweep", "Fhat = F / (P_I pi R^2)"), nargs="+", required=True,
+                   metavar="FHAT", help="values of the force, Fhat = F / (P_I pi R^2)")
     p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
     p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting", help="solver of every point")
     p.add_argument("--workers", type=int, help=f"local worker processes (default: one per usable CPU; at most "
@@ -72,8 +75,8 @@ def register(subparsers) -> None:
                    "workers need the same pocket installed")
     p.add_argument("--patience", type=number, metavar="SECONDS", help=f"with --scheduler: how long to wait "
                    f"while no worker is connected before stopping (default {PATIENCE:g})")
-    add_rubber_flags(p, alphas=True)
-    add_fluid_flags(p, physical=False)
-    add_indenter_flags(p)
+    add_rubber_flags(p, command="sweep", alphas=True)
+    add_fluid_flags(p, command="sweep")
+    add_indenter_flags(p, command="sweep")
     add_solver_flags(p, "compress")
     p.set_defaults(handler=_main)

@@ -21,7 +21,8 @@ import math
 from .errors import InputError
 from .inputs import quote
 
-__all__ = ["KINDS", "MAGNITUDES", "SUGGESTED", "quantity", "positive", "written_like", "is_plain", "plain_warnings"]
+__all__ = ["KINDS", "MAGNITUDES", "SUGGESTED", "quantity", "positive", "written_like", "is_plain", "has_unit",
+           "plain_warnings"]
 
 #: kind -> (pint dimensionality, SI unit)
 KINDS = {
@@ -97,6 +98,17 @@ def is_plain(value) -> bool:
     try:
         return bool(_registry().Quantity(value).dimensionless)
     except Exception:  # pint's parser raises many types; such text is refused by quantity first
+        return False
+
+
+def has_unit(text) -> bool:
+    """Whether ``text`` is a quantity written with a unit (``"8 mm"``, ``"20 kPa"``): a command in the model's
+    units refuses it, where a number (``"0.4"``) or text that is no quantity at all (``"x"``) is not one."""
+    if not isinstance(text, str):
+        return False
+    try:
+        return not _registry().Quantity(text).dimensionless
+    except Exception:  # pint's parser raises many types on text that is no quantity
         return False
 
 
