@@ -63,7 +63,7 @@ def _mesh(name, value):
 
 SOLVER = Solver(
     name="fem",
-    summary="finite elements: P1/P2 membrane, volume multiplier, plate contact on an edge-fitted mesh",
+    summary="membrane finite elements on a mesh that follows the contact edge: the independent check of shooting",
     module=__name__,
     entry_points=("inflate", "inflate_volume", "compress", "compression_curve", "compress_height"),
     options=(

@@ -56,7 +56,8 @@ DEFAULT_LAYERS = 4
 
 SOLVER = Solver(
     name="solid",
-    summary="axisymmetric incompressible solid (Taylor-Hood Q2/Q1 on the cross-section): the membrane's O(T/R) error",
+    summary="the sheet's cross-section as an incompressible solid: the membrane's own O(T/R) error for a thick "
+            "sheet (seconds a curve)",
     module=__name__,
     entry_points=("inflate", "inflate_volume", "compress", "compression_curve", "compress_height"),
     options=(

@@ -67,3 +67,17 @@ def test_solid_compressive_resultant_speaks_of_the_solid_not_membrane_theory():
     assert "membrane theory needs T_1, T_2 > 0" in membrane.warnings[0]
     assert len(solid.warnings) == 1 and "membrane theory" not in solid.warnings[0]
     assert "T_2 = -0.25 E T at r = 0.5 R; the axisymmetric solid carries it" in solid.warnings[0]
+
+
+def test_help_says_what_each_solver_is_for(capsys):
+    """Every command that takes a solver lists each of its solvers on a line of its own in --help, with the
+    record's summary of what it is for (the solid among them where it serves)."""
+    from pocket.apps.solvers import SOLVERS
+
+    for command, names in (("compress", tuple(SOLVERS)), ("run", tuple(SOLVERS)), ("sweep", tuple(SOLVERS)),
+                           ("fit", ("shooting", "fem")), ("design", ("shooting", "fem"))):
+        assert main([command, "--help"]) == 0
+        lines = capsys.readouterr().out.splitlines()
+        for name in names:
+            start = " ".join(SOLVERS[name].summary.split()[:4])
+            assert any(line.startswith(f"  {name}: {start}") for line in lines), (command, name)

@@ -14,13 +14,13 @@ import sys
 import textwrap
 from fractions import Fraction
 
-from pocket.apps.solvers import all_options, solver_options
+from pocket.apps.solvers import SOLVERS, all_options, solver_options
 from pocket.core.inputs import quote
 from pocket.core.units import KINDS, has_unit
 
 __all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "model_value", "physical_help", "MODEL_UNITS",
            "PHYSICAL_UNITS", "add_solver_flags", "solver_flags", "flag",
-           "progress_bar", "warn", "report"]
+           "progress_bar", "warn", "report", "solvers_epilog"]
 
 EXIT_CODES = ("exit status: 0 success (also when the reader of the output stops early, as `| head` does); "
               "1 a solver failed (the message says where), output could not be "
@@ -36,8 +36,15 @@ class HelpFormatter(argparse.HelpFormatter):
         return textwrap.wrap(" ".join(text.split()), width, break_on_hyphens=False)
 
     def _fill_text(self, text, width, indent):
-        return textwrap.fill(" ".join(text.split()), width, initial_indent=indent, subsequent_indent=indent,
-                             break_on_hyphens=False)
+        """Each line of ``text`` filled on its own (a list such as ``solvers_epilog``'s keeps its lines), an
+        indented line's continuation indented further."""
+        out = []
+        for line in text.split("\n"):
+            lead = indent + line[:len(line) - len(line.lstrip())]
+            out.append(textwrap.fill(" ".join(line.split()), width, initial_indent=lead,
+                                     subsequent_indent=lead + ("    " if lead != indent else ""),
+                                     break_on_hyphens=False))
+        return "\n".join(out)
 
     def _get_help_string(self, action):
         text = action.help or ""
@@ -100,6 +107,13 @@ def physical_help(kind: str, example: str | None = None, noun: str | None = None
     it, "stress"): ``"a length, e.g. '20 mm' (plain: m, with a warning)"``."""
     unit = KINDS[kind][1]
     return f"a {noun or kind}, e.g. '{example or _EXAMPLES[kind]}' (plain: {unit}, with a warning)"
+
+
+def solvers_epilog(names=None, chosen_by: str = "--solver") -> str:
+    """A command's epilog: what each solver of ``names`` (default all of ``SOLVERS``) is for, one line each from
+    its record's summary, then ``EXIT_CODES``; ``chosen_by`` says how a user picks one."""
+    names = tuple(names or SOLVERS)
+    return "\n".join([f"solvers ({chosen_by}):", *(f"  {n}: {SOLVERS[n].summary}" for n in names), "", EXIT_CODES])
 
 
 def flag(name: str) -> str:

@@ -13,7 +13,7 @@ from pocket.core.errors import InputError
 from pocket.core.inputs import quote
 from pocket.core.materials import LAWS
 
-from .common import EXIT_CODES, PHYSICAL_UNITS, flag, number, physical_help
+from .common import PHYSICAL_UNITS, flag, number, physical_help, solvers_epilog
 from .indenters import add_indenter_flags, indenter_table
 from .indenters import flag as indenter_flag
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
@@ -80,7 +80,7 @@ def register(subparsers) -> None:
                               "(pi R^2), T = 0.216 P_I R^4 / (E H0^3)) and by the full model, with the "
                               "force-travel curve to 2 F and its stiffness. Give --height H0 to find T, or "
                               "--thickness T (a sheet you have) to find H0, or both to find H/H0 at F. "
-                              f"{PHYSICAL_UNITS}", epilog=EXIT_CODES)
+                              f"{PHYSICAL_UNITS}", epilog=solvers_epilog(("shooting", "fem")))
     p.add_argument("--radius", required=True, metavar="LENGTH", help=f"clamp radius R: {physical_help('length')}")
     p.add_argument("--height", metavar="LENGTH", help="inflated height H0 (T is found): "
                    f"{physical_help('length', '10 mm')}")
@@ -96,7 +96,7 @@ def register(subparsers) -> None:
     target.add_argument("--pressed-height", metavar="LENGTH", help="target height H at F instead: "
                         f"{physical_help('length', '8 mm')}")
     p.add_argument("--solver", choices=("shooting", "fem"), default="shooting",
-                   help="solver of the full model (default shooting)")
+                   help="solver of the full model (each is listed below; default shooting)")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     add_rubber_flags(p)
     add_fluid_flags(p)

@@ -11,7 +11,7 @@ from pocket.core.errors import InputError
 from pocket.core.inputs import quote
 from pocket.core.materials import LAWS
 
-from .common import EXIT_CODES
+from .common import solvers_epilog
 
 __all__ = ["register"]
 
@@ -108,7 +108,7 @@ def register(subparsers) -> None:
     """Add ``pocket fit``."""
     text = "fit a rubber law's parameters to bulge (inflation) and compression test data, with uncertainties"
     p = subparsers.add_parser(
-        "fit", help=text, epilog=EXIT_CODES,
+        "fit", help=text, epilog=solvers_epilog(("shooting", "fem")),
         description=f"{text}. Each CSV file is one test; its header names each column's quantity and unit. An "
         "inflation test: 'pressure [kPa],height [mm]' (and/or 'volume [mL]'), pressures increasing. A compression "
         "test by the flat plate: 'force [N],pressure [kPa]' (and optionally 'height [mm]'), at --initial-pressure "
@@ -133,7 +133,8 @@ def register(subparsers) -> None:
                    "held at 1, or at its --fix value)")
     p.add_argument("--sigma", action="append", metavar="COLUMN=VALUE",
                    help="a column's measurement uncertainty ('height=0.01 mm'): its residuals in units of it")
-    p.add_argument("--solver", choices=("shooting", "fem"), help="the model's solver (default shooting)")
+    p.add_argument("--solver", choices=("shooting", "fem"),
+                   help="the model's solver (each is listed below; default shooting)")
     p.add_argument("--json", action="store_true", help="print the result as one JSON object")
     p.add_argument("--out", metavar="DIR", help="also write DIR/fit.png (data, fitted curve, residuals) and "
                    "DIR/fitted.toml (the fitted sheet, for pocket run)")

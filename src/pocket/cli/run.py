@@ -10,7 +10,7 @@ from pocket.apps.cases import Case, load, sample
 from pocket.apps.folders import check_output_dir, check_output_file, check_replaceable
 from pocket.core.errors import InputError
 
-from .common import EXIT_CODES, progress_bar
+from .common import progress_bar, solvers_epilog
 
 __all__ = ["register", "add_case_arguments", "case_from_args", "case_source", "warn_case"]
 
@@ -108,7 +108,8 @@ def register(subparsers) -> None:
                               "in DIR/.pocket-files.json); anything else is refused before any work (exit 2). "
                               "Loads the model does not reach (a force past the end of its range) are left "
                               "out: a warning names the first, the results list each with the reason, and the "
-                              "exit status is 0; if no load is reached, exit 2.", epilog=EXIT_CODES)
+                              "exit status is 0; if no load is reached, exit 2.",
+                              epilog=solvers_epilog(chosen_by="a case file's [solver] name; default shooting"))
     add_case_arguments(p)
     p.add_argument("--out", default=".", metavar="DIR", help="folder for the results (default: ., the current folder)")
     p.add_argument("--vtk", metavar="DIR", help="also write the compressed states as a ParaView series (as "

@@ -19,7 +19,16 @@ from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.indenters import FLAT
 from pocket.core.inputs import check_positive
 
-from .common import EXIT_CODES, MODEL_UNITS, add_solver_flags, model_value, progress_bar, report, solver_flags, warn
+from .common import (
+    MODEL_UNITS,
+    add_solver_flags,
+    model_value,
+    progress_bar,
+    report,
+    solver_flags,
+    solvers_epilog,
+    warn,
+)
 from .indenters import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
@@ -32,7 +41,7 @@ def register(subparsers) -> None:
                        ("compress", "step 2: press the inflated pocket with a flat plate or another indenter, its "
                                     "fluid sealed in (a liquid keeps its volume, a gas is compressed)")):
         p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}. {MODEL_UNITS}",
-                                  epilog=EXIT_CODES)
+                                  epilog=solvers_epilog())
         if name == "inflate":
             control = p.add_mutually_exclusive_group(required=True)
             control.add_argument("--pressure", type=model_value(name, "Phat = P R / (E T)"), metavar="PHAT",
@@ -50,7 +59,7 @@ def register(subparsers) -> None:
                               help="travel control: the indenter's lowest point at a height in H/R above the clamp "
                                    "plane, at most the inflated height H0/R (solvers shooting and fem)")
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
-                       help="shooting (the reference, default), fem or analytical")
+                       help="which model solves (each is listed below)")
         p.add_argument("--json", action="store_true",
                        help="print JSON (a list for several forces)" if name == "compress" else "print JSON")
         p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView (the steps "

@@ -11,7 +11,15 @@ from pocket.apps.workers import local_executor, max_workers, stop
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_positive
 
-from .common import EXIT_CODES, MODEL_UNITS, add_solver_flags, model_value, number, progress_bar, solver_flags
+from .common import (
+    MODEL_UNITS,
+    add_solver_flags,
+    model_value,
+    number,
+    progress_bar,
+    solver_flags,
+    solvers_epilog,
+)
 from .indenters import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
@@ -55,7 +63,7 @@ def register(subparsers) -> None:
     """Add ``pocket sweep``."""
     text = "parameter sweep over alpha (or one rubber of another law), Phat_I and Fhat (parallel, resumable)"
     p = subparsers.add_parser(
-        "sweep", help=text, epilog=EXIT_CODES,
+        "sweep", help=text, epilog=solvers_epilog(),
         description=f"{text}: one compressed state per grid point (at most {MAX_POINTS}), one CSV row each, "
         "with a status (ok, out_of_range, failed) and a message, and the indenter that pressed it (plate, or "
         "sphere K=... with K = R_s/R, or profile sha256=... naming a profile table by its content; sweeps of several "
@@ -68,7 +76,8 @@ def register(subparsers) -> None:
     p.add_argument("--force", type=model_value("sweep", "Fhat = F / (P_I pi R^2)"), nargs="+", required=True,
                    metavar="FHAT", help="values of the force, Fhat = F / (P_I pi R^2)")
     p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
-    p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting", help="solver of every point")
+    p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
+                   help="solver of every point (each is listed below)")
     p.add_argument("--workers", type=int, help=f"local worker processes (default: one per usable CPU; at most "
                    f"{max_workers()}, 4 per CPU)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786; its "
