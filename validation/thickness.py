@@ -37,7 +37,8 @@ from pocket.apps.cases import SAMPLES, sample
 from .figures import Figure, Panel, Series
 from .verdicts import Check
 
-__all__ = ["Comparison", "compare", "checks", "rows", "figure", "verdict", "slopes", "LIMIT", "QUANTITIES"]
+__all__ = ["Comparison", "COMPARISON", "compare", "checks", "rows", "figure", "verdict", "slopes", "LIMIT",
+           "QUANTITIES"]
 
 #: the error a user may accept from the membrane: the report says where it holds
 LIMIT = 0.01
@@ -45,7 +46,8 @@ LIMIT = 0.01
 INFLATION = ("V", "V (membrane's lower surface)", "H0 (mid-surface)", "H0 (upper surface)")
 COMPRESSION = ("P/P_I", "H/H0 (mid-surface)", "H/H0 (upper surface)", "A_c")
 QUANTITIES = INFLATION + COMPRESSION
-_COMPARISON = "membrane (shooting) vs solid"
+#: the comparison name of its checks
+COMPARISON = "membrane (shooting) vs solid"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -119,7 +121,7 @@ def checks(comparisons) -> list[Check]:
     for c in comparisons:
         for quantity, force in _keys(c):
             membrane, solid = c.values[quantity, force]
-            out.append(Check(f"sample {c.sample}", _COMPARISON, "inflation" if force is None else "compression",
+            out.append(Check(f"sample {c.sample}", COMPARISON, "inflation" if force is None else "compression",
                              quantity, _where(c, force), float(membrane), float(solid),
                              abs(c.error(quantity, force)), None, "info"))
     return out
