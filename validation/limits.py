@@ -161,7 +161,7 @@ def wrinkling(checks) -> tuple[str, str]:
     if not rows:
         return "info", ""
     if not failed:
-        return "pass", (f"Both tensions stay positive ({MEMBRANE}) at every state of the {len(rows)} curves checked, "
+        return "pass", (f"Both tensions T_1, T_2 stay positive at every state of the {len(rows)} curves checked, "
                         "every solver's: a state that would wrinkle is not a state of the membrane model.")
     where = "; ".join(f"{c.case}: {c.where}" for c in failed)
     return "fail", (f"A tension falls to zero or below (the sheet would wrinkle: not a state of the membrane model) "

@@ -246,7 +246,7 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
                  "Richardson extrapolations, and each law fitted to known data against the truth."),
            *_membrane_theory(results),
            ("p", "The models' limits, measured in this run (facts about the models, not pass/fail; each model "
-                 f"against the more complete one, within {limits.LIMIT:.0%} or not):"),
+                 f"against the more complete one, within {100 * limits.LIMIT:g} % or not):"),
            ("list", limit_sentences(results)),
            ("p", f"Plan '{results.plan.name}', {len(results.curves) or 'the headline'} pocket"
                  f"{'s' if len(results.curves) > 1 else ''}, {wall:.1f} s wall time in all, the report's "
