@@ -18,8 +18,8 @@ from . import thickness
 from .plan import APPROXIMATE, REFERENCE
 from .verdicts import ANALYTICAL_RANGE, MEMBRANE
 
-__all__ = ["LIMIT", "MODEL_COMPARISONS", "is_numerics", "tally", "membrane_vs_solid", "analytical_vs_membrane",
-           "wrinkling"]
+__all__ = ["LIMIT", "MODEL_COMPARISONS", "is_numerics", "tally", "blocks", "sentences", "membrane_vs_solid",
+           "analytical_vs_membrane", "wrinkling"]
 
 #: within this relative error a model counts as the more complete one's equal
 LIMIT = thickness.LIMIT
@@ -150,8 +150,9 @@ def analytical_vs_membrane(curves) -> str:
         if paper:
             text += f", up to {_pct(max(paper))} % for Fhat <= {ANALYTICAL_RANGE:g}"
         parts.append(text + f", up to {_pct(max(_worst(p, key) for p in pairs))} % over the curves)")
-    return (f"The analytical model against the membrane (shooting) on the {len(posed)} pockets pressed by the "
-            f"plate: inflated, off by {_and(inflated)}; pressed, " + "; ".join(parts) + ".")
+    plural = "s" if len(posed) > 1 else ""
+    return (f"The analytical model against the membrane (shooting) on the {len(posed)} pocket{plural} pressed by "
+            f"the plate: inflated, off by {_and(inflated)}; pressed, " + "; ".join(parts) + ".")
 
 
 def wrinkling(checks) -> tuple[str, str]:
@@ -166,3 +167,31 @@ def wrinkling(checks) -> tuple[str, str]:
     where = "; ".join(f"{c.case}: {c.where}" for c in failed)
     return "fail", (f"A tension falls to zero or below (the sheet would wrinkle: not a state of the membrane model) "
                     f"on {len(failed)} of the {len(rows)} curves checked: {where}.")
+
+
+def sentences(results) -> list[str]:
+    """The models' limits in sentences, from the run's own data (``results``: a ``runner.Results``)."""
+    out = []
+    if results.thicknesses:
+        out.append(membrane_vs_solid(results.thicknesses))
+    if results.curves:
+        out.append(analytical_vs_membrane(results.curves))
+    return out or ["None measured in this run."]
+
+
+def blocks(results) -> list:
+    """The report's headline as ``document`` blocks: the verdict on the numerics, the one on the membrane
+    theory's own condition (if any curve was checked), and the models' limits."""
+    numerics = tally(c for c in results.checks if is_numerics(c))
+    out = [("p", f"Numerics: {'FAIL' if numerics['fail'] else 'PASS'}. The solvers agree with each other and "
+                 f"converge: {numerics['pass']} checks pass, {numerics['fail']} fail ({numerics['info']} more are "
+                 "reported without a tolerance): the finite-element model (P1, P2) against the shooting solver, "
+                 "each solver's own consistency (the fluid's law, the indenter's reaction), the observed orders of "
+                 "the mesh-convergence study and its Richardson extrapolations, and each law fitted to known data "
+                 "against the truth.")]
+    verdict, sentence = wrinkling(results.checks)
+    if sentence:
+        out.append(("p", f"Membrane theory's condition: {verdict.upper()}. {sentence}"))
+    return out + [("p", "The models' limits, measured in this run (facts about the models, not pass/fail; each "
+                        f"model against the more complete one, {_WITHIN} or not):"),
+                  ("list", sentences(results))]

@@ -1,9 +1,9 @@
 """The content of the report, as ``document`` blocks and plain table rows.
 
-Order, for a reader: the overall verdict and one line per comparison, then the
-figures, the pockets, the paper's statements, the convergence study, and only
-then the long tables (verdicts per pocket, every check), the timings, the
-tolerances and the provenance.
+Order, for a reader: the two verdicts and the models' limits (``limits``), one
+line per comparison, then the figures, the pockets, the paper's statements, the
+convergence study, the tolerances, the timings, the provenance, and last the
+failing checks with a link to the page of every check (``checkpage``).
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from .runner import WORKERS
 from .suite import headline
 from .verdicts import MEMBRANE, TOLERANCES
 
-__all__ = ["blocks", "sequence_rows", "counts", "glance", "task_rows", "limit_sentences"]
+__all__ = ["blocks", "sequence_rows", "counts", "glance", "task_rows"]
 
 #: the paper, cited where the report refers to it
 PAPER = "Bouremel et al., \"Compression of pressurised elastic pockets\""
@@ -235,19 +235,8 @@ def _files_block(figs, tables, vtk) -> tuple:
 def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall: float) -> list:
     """All blocks of the report, under the heading ``title``; ``wall`` is the run's wall time in seconds,
     writing included."""
-    numerics = limits.tally(c for c in results.checks if limits.is_numerics(c))
-    verdict = "FAIL" if numerics["fail"] else "PASS"
     header, rows = glance(results)
-    out = [("h", 1, title),
-           ("p", f"Numerics: {verdict}. The solvers agree with each other and converge: {numerics['pass']} checks "
-                 f"pass, {numerics['fail']} fail ({numerics['info']} more are reported without a tolerance): the "
-                 "finite-element model (P1, P2) against the shooting solver, each solver's own consistency (the "
-                 "fluid's law, the indenter's reaction), the observed orders of the mesh-convergence study and its "
-                 "Richardson extrapolations, and each law fitted to known data against the truth."),
-           *_membrane_theory(results),
-           ("p", "The models' limits, measured in this run (facts about the models, not pass/fail; each model "
-                 f"against the more complete one, within {100 * limits.LIMIT:g} % or not):"),
-           ("list", limit_sentences(results)),
+    out = [("h", 1, title), *limits.blocks(results),
            ("p", f"Plan '{results.plan.name}', {len(results.curves) or 'the headline'} pocket"
                  f"{'s' if len(results.curves) > 1 else ''}, {wall:.1f} s wall time in all, the report's "
                  f"writing included (the solves {results.seconds:.1f} s on {WORKERS} processes). The model and "
@@ -256,7 +245,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
            ("toc",),
            ("h", 2, "Verdicts"),
            ("p", "One line per comparison over all pockets: a comparison fails if any of its checks fails; "
-                 "'info' checks have no tolerance that should hold (the analytical model outside its range). "
+                 "'info' checks have no tolerance that should hold (a model's own error against a more complete "
+                 "one: the analytical model's, the membrane's against the solid; the orders reported, not checked). "
                  f"'{MEMBRANE}' is the wrinkling verdict: per pocket and solver it covers every state of the curve "
                  "(each state's smallest tensions and wrinkled flag are in states.csv), and fails if any state has "
                  "a tension <= 0 anywhere. "
@@ -289,19 +279,3 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
             ("h", 2, "Files"),
             _files_block(figs, tables, vtk)]
     return out + checkpage.failing_blocks(results.checks)
-
-
-def limit_sentences(results) -> list[str]:
-    """The headline's sentences on the models' limits, from the run's own data."""
-    out = []
-    if results.thicknesses:
-        out.append(limits.membrane_vs_solid(results.thicknesses))
-    if results.curves:
-        out.append(limits.analytical_vs_membrane(results.curves))
-    return out or ["None measured in this run."]
-
-
-def _membrane_theory(results) -> list:
-    """The headline's verdict on the membrane theory's own condition (none if no curve was checked)."""
-    verdict, sentence = limits.wrinkling(results.checks)
-    return [("p", f"Membrane theory's condition: {verdict.upper()}. {sentence}")] if sentence else []

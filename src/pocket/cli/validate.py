@@ -110,7 +110,7 @@ def _setup(args):
 
 def _finish(results, args, watch, pool, name) -> int:
     """Write the report (saying so on a terminal), print the summary; the exit status."""
-    from pocket.validation import limits, sections
+    from pocket.validation import limits
     from pocket.validation.report import write_report
     from pocket.validation.sections import counts
 
@@ -125,7 +125,7 @@ def _finish(results, args, watch, pool, name) -> int:
           f"the models' limits: {n['info'] - numerics['info']} measured errors (not verdicts), "
           f"{n['pass'] + n['fail'] - numerics['pass'] - numerics['fail']} membrane-theory verdicts "
           f"({watch.seconds:.1f} s wall time, the report's writing included; plan {results.plan.name})")
-    for sentence in sections.limit_sentences(results):
+    for sentence in limits.sentences(results):
         print(f"  {sentence}")
     for check in results.failed[:10]:
         print(f"  fail: {check.case} {check.comparison} {check.quantity} ({check.where}): error {check.error:.3g} "
