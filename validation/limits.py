@@ -49,7 +49,8 @@ _WITHIN = f"within {100 * LIMIT:g} %"
 
 
 def _pct(x: float) -> str:
-    return f"{100 * x:.2g}"
+    """A fraction as a percentage to two significant digits, never an exponent: 0.54, 3.9, 26, 118."""
+    return f"{100 * x:.0f}" if x >= 0.1 else f"{100 * x:.2g}"
 
 
 def _span(errors) -> str:
