@@ -25,7 +25,7 @@ def test_membrane_sentence_names_each_sample_and_its_errors():
     V and 28-53 % in A_c', within 1 % in the rest. The numbers are the ones built in, to two digits."""
     samples = [_sample(1, 0.0125), _sample(2, 0.025), _sample(3, 0.04, area=(0.005, 0.02, 0.003)),
                _sample(4, 0.08, volume=0.26, area=(0.527, 0.346, 0.277))]
-    text = limits.membrane_vs_solid(samples)
+    text = limits.sentence(*limits.membrane_vs_solid(samples))
     assert "P_I = 5 kPa, pressed to Fhat = 0.2, 0.5 and 1;" in text
     assert "): samples 1 and 2 within 1 % in every quantity; " in text
     assert "sample 3 (T/R = 0.04) within 1 % in V, H0, P/P_I and H/H0, off by up to 2 % in A_c; " in text
@@ -49,7 +49,7 @@ def test_analytical_sentence_says_up_to_which_force_it_is_within():
                             approximate=[_state(f, 1.0 + e, height=1.1, volume=1.2)
                                          for f, e in zip(forces, errors, strict=True)])
     sphere = SimpleNamespace(reference=[_state(f, 1.0) for f in forces], approximate=[None] * len(forces))
-    text = limits.analytical_vs_membrane([plate, sphere])
+    text = limits.sentence(*limits.analytical_vs_membrane([plate, sphere]))
     assert text.startswith("The analytical model against the membrane (shooting) on the 1 pocket pressed by the "
                            "plate: inflated, off by 10 % in H0 and 20 % in V; ")
     assert ("P/P_I within 1 % up to Fhat = 0.05 for 1 of 1 pockets (up to 0.5 % at Fhat = 0.005, up to 0.8 % for "

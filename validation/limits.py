@@ -75,8 +75,13 @@ def _numbers(numbers) -> str:
     return _and(map(str, numbers))
 
 
-def membrane_vs_solid(comparisons) -> str:
-    """One sentence: per sample, the quantities in which the membrane is within LIMIT of the solid at every
+def sentence(lead: str, clauses) -> str:
+    """A limit (``membrane_vs_solid``, ``analytical_vs_membrane``) as one sentence."""
+    return f"{lead}: {'; '.join(clauses)}."
+
+
+def membrane_vs_solid(comparisons) -> tuple[str, list[str]]:
+    """(lead, clauses): per sample, the quantities in which the membrane is within LIMIT of the solid at every
     pressure and force of the run, and by how much it differs in the others."""
     from pocket.solid import DEFAULT_ELEMENTS, DEFAULT_LAYERS
 
@@ -90,7 +95,7 @@ def membrane_vs_solid(comparisons) -> str:
     parts = []
     for n in sorted(errors):
         text = f"sample {n} (T/R = {ratio[n]:g}) "
-        text += f"{_WITHIN} in {_and(_SOLID[q] for q in within[n])}" if within[n] else f"{_WITHIN} in none"
+        text += f"{_WITHIN} in {_and(_SOLID[q] for q in within[n])}" if within[n] else f"{_WITHIN} in no quantity"
         beyond = [f"{_span(e)} in {_SOLID[q]}" for q, e in errors[n].items() if q not in within[n]]
         parts.append(text + (f", off by {_and(beyond)}" if beyond else ""))
     everywhere = [n for n in sorted(errors) if len(within[n]) == len(_SOLID)]
@@ -102,7 +107,7 @@ def membrane_vs_solid(comparisons) -> str:
         parts = [p for p in parts if not any(p.startswith(f"sample {n} ") for n in everywhere)]
     return (f"The membrane against the solid (the paper's samples at P_I = {pressures} kPa, pressed to Fhat = "
             f"{forces}; the solid at its default mesh, {DEFAULT_ELEMENTS} elements along the radius and "
-            f"{DEFAULT_LAYERS} through the thickness): " + "; ".join(parts) + ".")
+            f"{DEFAULT_LAYERS} through the thickness)", parts)
 
 
 def _upto(pairs, key) -> float | None:
@@ -121,19 +126,19 @@ def _worst(pairs, key, limit=None) -> float | None:
     return max(chosen) if chosen else None
 
 
-def analytical_vs_membrane(curves) -> str:
-    """One sentence: over the pockets the analytical model poses (a flat plate), its inflated H0 and V against
+def analytical_vs_membrane(curves) -> tuple[str, list[str]]:
+    """(lead, clauses): over the pockets the analytical model poses (a flat plate), its inflated H0 and V against
     the membrane's (shooting), and per compressed quantity the Fhat up to which it is within LIMIT, its error at
     the smallest force, below the paper's ANALYTICAL_RANGE and over the whole curve."""
     posed = [c for c in curves if c.approximate and c.approximate[0] is not None]
     if not posed:
-        return "The analytical model poses none of the pockets (a curved indenter presses each)."
-    inflated = []
+        return "The analytical model", ["it poses none of the pockets (a curved indenter presses each)"]
+    inflated = []  # its H0 and V
     for key, name in _INFLATED.items():
         errors = [abs(getattr(c.approximate[0].inflated, key) / getattr(c.reference[0].inflated, key) - 1.0)
                   for c in posed]
         inflated.append(f"{_span(errors)} in {name}")
-    parts = []
+    parts = []  # a clause per compressed quantity
     for key, name in _PRESSED.items():
         pairs = [[(a, s) for a, s in zip(c.approximate[1:], c.reference[1:], strict=True) if a is not None]
                  for c in posed]
@@ -153,7 +158,7 @@ def analytical_vs_membrane(curves) -> str:
         parts.append(text + f", up to {_pct(max(_worst(p, key) for p in pairs))} % over the curves)")
     plural = "s" if len(posed) > 1 else ""
     return (f"The analytical model against the membrane (shooting) on the {len(posed)} pocket{plural} pressed by "
-            f"the plate: inflated, off by {_and(inflated)}; pressed, " + "; ".join(parts) + ".")
+            "the plate", [f"inflated, off by {_and(inflated)}", *parts])
 
 
 def wrinkling(checks) -> tuple[str, str]:
@@ -170,14 +175,18 @@ def wrinkling(checks) -> tuple[str, str]:
                     f"on {len(failed)} of the {len(rows)} curves checked: {where}.")
 
 
-def sentences(results) -> list[str]:
-    """The models' limits in sentences, from the run's own data (``results``: a ``runner.Results``)."""
+def _limits(results) -> list[tuple[str, list[str]]]:
     out = []
     if results.thicknesses:
         out.append(membrane_vs_solid(results.thicknesses))
     if results.curves:
         out.append(analytical_vs_membrane(results.curves))
-    return out or ["None measured in this run."]
+    return out
+
+
+def sentences(results) -> list[str]:
+    """The models' limits in sentences, from the run's own data (``results``: a ``runner.Results``)."""
+    return [sentence(*limit) for limit in _limits(results)]
 
 
 def blocks(results) -> list:
@@ -193,6 +202,9 @@ def blocks(results) -> list:
     verdict, sentence = wrinkling(results.checks)
     if sentence:
         out.append(("p", f"Membrane theory's condition: {verdict.upper()}. {sentence}"))
-    return out + [("p", "The models' limits, measured in this run (facts about the models, not pass/fail; each "
-                        f"model against the more complete one, {_WITHIN} or not):"),
-                  ("list", sentences(results))]
+    measured = _limits(results)
+    out.append(("p", "The models' limits, measured in this run (facts about the models, not pass/fail; each model "
+                     f"against the more complete one, {_WITHIN} or not)" + (":" if measured else ": none.")))
+    for lead, clauses in measured:
+        out += [("p", f"{lead}:"), ("list", clauses)]
+    return out

@@ -45,7 +45,8 @@ def glance(results) -> tuple[list, list]:
         n = {v: sum(c.verdict == v for c in group) for v in ("pass", "fail", "info")}
         scored = [c for c in group if c.tolerance]
         worst = max(scored, key=lambda c: c.error / c.tolerance) if scored else None
-        where = f"{worst.case}: {worst.quantity} ({worst.where})" if worst else ""
+        where = (f"{worst.case}: {worst.quantity} ({worst.where})" if worst
+                 else "no tolerance: a model's own error (the models' limits, above)" if n["info"] else "")
         rows.append([comparison, len({c.case for c in group}), len(group), n["pass"], n["fail"], n["info"],
                      cell(worst.error / worst.tolerance, 2) if worst else "", where,
                      "fail" if n["fail"] else "pass" if n["pass"] else "info"])
