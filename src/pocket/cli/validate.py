@@ -37,8 +37,9 @@ reference), the finite-element model (P1 and P2) and the paper's analytical
 model compared on the pockets of the cases file (the paper's Table 1 samples,
 alpha = 0 and 1, a Yeoh silicone, an Ogden natural rubber, a Gent rubber near
 its lock, and the headline pocket filled with air, isothermal and adiabatic),
-each comparison with a tolerance and a pass/fail verdict, and a wrinkling
-verdict (both tensions positive) for every state; the paper's figures 2-5
+each comparison of the solvers with a tolerance and a pass/fail verdict, the
+analytical model's error reported (a model's error, not a verdict), and a
+wrinkling verdict (both tensions positive) for every state; the paper's figures 2-5
 recomputed, a liquid against a gas in one pocket, the other rubbers; a
 mesh-convergence study of the FE model; the paper's statements checked against
 the full model; a 3-D picture (with the 'render' extra) and the headline
