@@ -19,6 +19,7 @@ import pathlib
 import time
 
 from pocket.apps.folders import check_replaceable, staged
+from pocket.core.errors import InputError
 from pocket.core.states import CHECKS, CompressedState
 
 from . import checkpage, document, draw, figures, pockets, render, sections, thickness
@@ -115,11 +116,13 @@ def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None, vtk=
     keeps the folder a few MB, small enough to mail; "all" adds about 0.5 MB per force.
 
     The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
-    else here. ``watch`` (a ``clock.Stopwatch``, started with the run) is stopped once all but the two
-    text files are written, and the report quotes its seconds as the run's wall time; without it the
-    time is counted from the solves' start.
+    else here. ``watch`` (a ``clock.Stopwatch``, started with the run) is stopped once all but the
+    report's pages (report.md, index.html, checks.md, checks.html) are written, and the report quotes its
+    seconds as the run's wall time; without it the time is counted from the solves' start.
     """
     begun = time.perf_counter()
+    if vtk not in VTK:
+        raise InputError(f"vtk = {vtk!r}, but the VTK series is one of {', '.join(VTK)}")
     target = check_target(out, kind)
     with staged(target, kind) as partial:
         if results.curves:
