@@ -113,7 +113,7 @@ def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None, vtk=
 
     ``kind`` (one of ``KINDS``) marks the folder and titles the report. ``vtk`` (one of ``VTK``) says how
     many states of the headline pocket's compression path the VTK series holds (``vtk_steps``): the default
-    keeps the folder a few MB, small enough to mail; "all" adds about 0.5 MB per force.
+    keeps the folder a few MB, small enough to mail; "all" adds about 0.6 MB per force.
 
     The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
     else here. ``watch`` (a ``clock.Stopwatch``, started with the run) is stopped once all but the

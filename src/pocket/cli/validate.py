@@ -88,7 +88,7 @@ def register(subparsers) -> None:
             p.add_argument("--vtk", choices=VTK, default=VTK[0],
                            help=f"the headline pocket's compression path as VTK files for ParaView: {VTK[0]} "
                                 f"(default) {VTK_STEPS} of its forces, spread along it, a few MB; all: every force "
-                                "of its curve (about 0.5 MB each: tens of MB); none: no VTK")
+                                "of its curve (about 0.6 MB each: tens of MB); none: no VTK")
         p.set_defaults(handler=handler)
 
 
