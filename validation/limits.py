@@ -18,7 +18,7 @@ from . import thickness
 from .plan import APPROXIMATE, REFERENCE
 from .verdicts import ANALYTICAL_RANGE, MEMBRANE
 
-__all__ = ["LIMIT", "MODEL_COMPARISONS", "is_numerics", "tally", "blocks", "sentences", "membrane_vs_solid",
+__all__ = ["LIMIT", "MODEL_COMPARISONS", "is_numerics", "tally", "blocks", "sentence", "sentences", "membrane_vs_solid",
            "analytical_vs_membrane", "wrinkling"]
 
 #: within this relative error a model counts as the more complete one's equal
