@@ -3,6 +3,7 @@
 import argparse
 import contextlib
 import csv
+import dataclasses
 import errno
 import html.parser
 import io
@@ -70,14 +71,21 @@ def test_figure_csvs_hold_the_plotted_numbers(report):
     assert float(clamp["x"]) == pytest.approx(1.0, abs=1e-9) and float(clamp["y"]) == pytest.approx(0.0, abs=1e-9)
 
 
+def _pvd_files(folder):
+    pvd = (folder / "surface.pvd").read_text()
+    return [line.split('file="')[1].split('"')[0] for line in pvd.splitlines() if "file=" in line]
+
+
 def test_vtk_series_opens(report):
-    """Exact answer: the .pvd lists every shooting state of the headline pocket; every step has one point
-    count and the state's scalars as field data (states.csv's numbers)."""
+    """Exact answer: by default the .pvd lists VTK_STEPS shooting states of the headline pocket, the first and
+    the last among them; every step has one point count and the state's scalars as field data (states.csv's
+    numbers)."""
+    from pocket.validation.plan import VTK_STEPS
+
     out = report[1]
-    pvd = (out / "vtk" / "surface.pvd").read_text()
-    files = [line.split('file="')[1].split('"')[0] for line in pvd.splitlines() if "file=" in line]
+    files = _pvd_files(out / "vtk")
     shooting = [r for r in _rows(out / "states.csv") if r["case"] == "sample1-headline" and r["solver"] == "shooting"]
-    assert len(files) == len(shooting) > 10
+    assert len(shooting) > len(files) == VTK_STEPS
     meshes = [meshio.read(out / "vtk" / name) for name in (files[0], files[-1])]
     assert len(meshes[0].points) == len(meshes[1].points)
     for mesh, row in zip(meshes, (shooting[0], shooting[-1]), strict=True):
@@ -132,7 +140,7 @@ def test_html_and_markdown_are_complete(report, page):
     assert page.images and all((out / src).is_file() and not pathlib.Path(src).is_absolute() for src in page.images)
     markdown = (out / "report.md").read_text()
     for heading in ("Verdicts", "Figures", "Mesh convergence", "Where the paper and the model disagree",
-                    "Verdicts per pocket", "Timing", "Provenance", "All checks"):
+                    "Timing", "Provenance", "All checks"):
         assert heading in page.headings and f"## {heading}" in markdown
     import numpy
 
@@ -143,14 +151,13 @@ def test_html_and_markdown_are_complete(report, page):
 
 
 def test_figures_come_before_the_long_tables(page):
-    """Exact answer (layout): at most 20 table rows stand between the title and the first figure; the
-    per-pocket verdicts and all checks come after every figure."""
+    """Exact answer (layout): at most 20 table rows stand between the title and the first figure; the section
+    on the checks comes after every figure."""
     first = next(k for k, (kind, _) in enumerate(page.order) if kind == "img")
     assert sum(kind == "tr" for kind, _ in page.order[:first]) <= 20
     last_image = max(k for k, (kind, _) in enumerate(page.order) if kind == "img")
-    long_tables = [k for k, item in enumerate(page.order) if item in (("h2", "Verdicts per pocket"),
-                                                                        ("h2", "All checks"))]
-    assert len(long_tables) == 2 and min(long_tables) > last_image
+    long_tables = [k for k, item in enumerate(page.order) if item == ("h2", "All checks")]
+    assert len(long_tables) == 1 and min(long_tables) > last_image
 
 
 def test_numbers_never_wrap(page):
@@ -280,12 +287,11 @@ def test_fig4_caption_explains_every_style_of_its_legend(report):
 
 
 class _Anchors(html.parser.HTMLParser):
-    """The page's ids, its links to '#...', its h2/h3 ids, and its table rows inside and outside <details>."""
+    """The page's ids, its links to '#...', its h2/h3 ids."""
 
     def __init__(self):
         super().__init__()
-        self.ids, self.links, self.sections, self.rows = [], [], [], {True: 0, False: 0}
-        self._folded = 0
+        self.ids, self.links, self.sections = [], [], []
 
     def handle_starttag(self, tag, attrs):
         attrs = dict(attrs)
@@ -295,29 +301,49 @@ class _Anchors(html.parser.HTMLParser):
             self.sections.append(attrs.get("id"))
         elif tag == "a" and attrs.get("href", "").startswith("#"):
             self.links.append(attrs["href"][1:])
-        elif tag == "details":
-            self._folded += 1
-        elif tag == "tr" and self.ids:
-            self.rows[self._folded > 0] += 1
-
-    def handle_endtag(self, tag):
-        if tag == "details":
-            self._folded -= 1
 
 
-def test_contents_link_every_section_and_the_checks_are_folded(report):
+def test_contents_link_every_section(report):
     """Exact answer: the page has a table of contents whose every link resolves to one id, every section
-    (h2, h3) has an id and is linked; the table of all checks (one row per check, the longest part of the
-    page) is folded under <details>, and fewer rows than checks stay open."""
+    (h2, h3) has an id and is linked."""
     page = _Anchors()
     page.feed((report[1] / "index.html").read_text())
     assert len(page.ids) == len(set(page.ids))
     assert page.links and all(link in page.ids for link in page.links)
     assert None not in page.sections and set(page.sections) <= set(page.links)
-    checks = len(report[2].checks)
-    assert page.rows[True] >= checks > page.rows[False]
-    markdown = (report[1] / "report.md").read_text()
-    assert "- [All checks](#all-checks)" in markdown and "<details><summary>" in markdown
+    assert "- [All checks](#all-checks)" in (report[1] / "report.md").read_text()
+
+
+def _table_rows(path, after: str) -> int:
+    """The number of body rows of the first table after the heading ``after`` in an HTML page."""
+    text = path.read_text()
+    table = text[text.index(f">{after}</h2>"):]
+    table = table[:table.index("</table>")]
+    return table.count("<tr>") - 1  # less the header row
+
+
+def test_checks_table_in_own_page(report):
+    """Exact answers: every check has one row on a page of its own (checks.html, and checks.md with the same
+    rows), failing first, with the verdicts per pocket; the report itself holds no row of a passing check (it
+    once carried all of them, 1573 rows of report.md) and links that page, which links back. The counts are
+    the run's own: len(results.checks), summary() rows."""
+    from pocket.validation.verdicts import summary
+
+    out, results = report[1], report[2]
+    checks = len(results.checks)
+    assert _table_rows(out / "checks.html", "Every check") == checks
+    assert _table_rows(out / "checks.html", "Verdicts per pocket") == len(summary(results.checks))
+    markdown = (out / "checks.md").read_text()
+    assert sum(line.startswith("| ") for line in markdown.splitlines()) == checks + len(summary(results.checks)) + 2
+    report_md = (out / "report.md").read_text()
+    assert not any(line.startswith(f"| {c.case} | {c.comparison} | {c.step} | {c.quantity} | {c.where} |")
+                   for c in results.checks for line in report_md.splitlines())
+    assert "[every check (checks.html, also checks.md)](checks.md)" in report_md
+    assert '<a href="checks.html">' in (out / "index.html").read_text()
+    assert '<a href="index.html">' in (out / "checks.html").read_text() and "](report.md)" in markdown
+    assert len(report_md.splitlines()) < checks
+    rows = _rows(out / "checks.csv")
+    assert len(rows) == checks
 
 
 def test_console_and_report_quote_one_wall_time(report):
@@ -508,6 +534,7 @@ def test_help(capsys, command, default):
     text = " ".join(capsys.readouterr().out.split())
     for option in ("--out DIR", "--quick", "--cases FILE"):
         assert option in text
+    assert ("--vtk {few,all,none}" in text) == (command == "validate")
     assert f"(default: {default})" in text and "default: the suite's own cases.toml" in text
     assert "exit status: 0" in text and "; 1 " in text and "; 2 bad input" in text and "; 130 interrupted" in text
     assert ("shooting solver" in text) and len(text) > 600
@@ -735,3 +762,105 @@ def test_thickness_section(report, page):
     volume = [abs(c.error("V")) for c in comparisons if c.pressure_kpa == pressures[-1]]
     assert volume == sorted(volume) and all(c.error("V") > 0 for c in comparisons), volume
     assert "thickness.png" in page.images and (report[1] / "thickness.png").stat().st_size > 0
+
+
+def _model_comparisons(results) -> set:
+    """The comparisons of a model with a more complete one, named as the run names them (not from
+    pocket.validation.limits): the analytical model's, the membrane's against the solid, the wrinkling verdict."""
+    from pocket.validation.verdicts import MEMBRANE
+
+    return {c.comparison for c in results.checks if c.comparison.startswith(("analytical vs", "membrane (shooting)"))} \
+        | {MEMBRANE}
+
+
+def test_headline_separates_numerics_from_model_limits(report):
+    """Exact answers: the report opens with the numerics' verdict, counting the checks of the solvers against
+    each other and of their convergence only (checks.csv's rows less the models' comparisons); then the
+    membrane theory's condition; then the models' limits as sentences, whose numbers are the run's: for each
+    sample the largest |membrane / solid - 1| of V (membrane_vs_solid.csv, to two digits). A numerics check
+    that fails turns the numerics' verdict to FAIL and leaves the models' sentences as they were; every model
+    check but the wrinkling verdict is informational."""
+    from pocket.validation import limits
+
+    out, results = report[1], report[2]
+    models = _model_comparisons(results)
+    rows = [r for r in _rows(out / "checks.csv") if r["comparison"] not in models]
+    passing = sum(r["verdict"] == "pass" for r in rows)
+    text = (out / "report.md").read_text()
+    opening = text.split("\n\n")[1]
+    assert opening.startswith(f"Numerics: PASS. The solvers agree with each other and converge: {passing} checks "
+                              "pass, 0 fail")
+    assert text.index("Membrane theory's condition: PASS") < text.index("The models' limits") < text.index("- [")
+    assert all(c.verdict == "info" for c in results.checks if c.comparison in models - {limits.MEMBRANE})
+    assert "\n\nThe membrane against the solid (the paper's samples at P_I = " in text
+    solid = _rows(out / "membrane_vs_solid.csv")
+    for n in (1, 2, 3, 4):
+        worst = max(abs(float(r["membrane"]) / float(r["solid"]) - 1) for r in solid
+                    if r["sample"] == str(n) and r["quantity"] == "V")
+        clause = next(line for line in text.splitlines() if line.startswith(f"- sample {n} ("))
+        percent = f"{100 * worst:.0f}" if worst >= 0.1 else f"{100 * worst:.2g}"
+        assert (f"{percent} % in V" in clause) == (worst > limits.LIMIT), clause
+    assert "\n\nThe analytical model against the membrane (shooting) on the " in text
+    broken = [dataclasses.replace(c, verdict="fail") if c.comparison == "FEM P2 vs shooting" else c
+              for c in results.checks]
+    blocks = limits.blocks(dataclasses.replace(results, checks=tuple(broken)))
+    assert blocks[0][1].startswith("Numerics: FAIL.") and blocks[-1] == limits.blocks(results)[-1]
+
+
+def test_analytical_tolerance_not_tuned_to_error(report):
+    """Exact answers: no tolerance of the analytical model remains (it passed once with a bound of 6 % over a
+    measured 5.9 %): each of its checks is informational and states its error, |analytical / shooting - 1| of
+    its own value and reference; the headline says where it is within 1 % instead. The sphere's tension
+    tolerance is the theory's O(h^2), h the largest element of the P2 default mesh (meshes.polar(256) graded
+    as fem.default_mesh grades it), not a measured 2.7e-5 rounded up."""
+    from pocket.validation.verdicts import TOLERANCES
+
+    from pocket import fem
+
+    results = report[2]
+    assert not [name for name in TOLERANCES if name.startswith("analytical")]
+    rows = [c for c in results.checks if c.comparison == "analytical vs shooting"]
+    assert rows and all(c.tolerance is None and c.verdict == "info" for c in rows)
+    for c in rows:
+        assert c.error == pytest.approx(abs(c.value / c.reference - 1.0), rel=1e-12)
+    assert max(c.error for c in rows if c.quantity == "height_ratio") > 0.01  # an error the headline must state
+    h = float(np.diff(fem.default_mesh(order=2)).max())
+    assert TOLERANCES["fem_sphere_tension"][0] == h**2 and 5e-3 < h < 7e-3
+
+
+def test_report_folder_small_without_vtk_option(report, tmp_path):
+    """Exact answers: without --vtk the folder fits in a mail: its files add up to less than 18.75 MB (a 25 MB
+    attachment limit less base64's 4/3), the VTK series holding VTK_STEPS states spread along the path, both
+    ends included; --vtk all writes every state of the path (the folder then grows past that bound with the
+    full plan's path), none writes no series."""
+    from pocket.validation import report as writer
+    from pocket.validation.plan import VTK_STEPS
+    from pocket.validation.suite import headline
+
+    out, results = report[1], report[2]
+    size = sum(f.stat().st_size for f in out.rglob("*") if f.is_file())
+    assert size < 25e6 * 3 / 4, size
+    head = results.curves_of(headline(results.pockets))
+    count = len(head.forces)
+    steps = writer.vtk_steps(count, "few")
+    assert len(steps) == VTK_STEPS < count and steps[0] == 0 and steps[-1] == count - 1
+    gaps = np.diff(steps)
+    assert gaps.max() - gaps.min() <= 1  # evenly spread
+    assert writer.vtk_steps(count, "all") == list(range(count)) and writer.vtk_steps(count, "none") == []
+    assert writer.vtk_steps(5, "few") == [0, 1, 2, 3, 4]
+    times = [float(t.split('timestep="')[1].split('"')[0]) for t in (out / "vtk" / "surface.pvd").read_text()
+             .splitlines() if "timestep=" in t]
+    assert times == [float(head.forces[k]) for k in steps]
+    writer._write_vtk(head, tmp_path, writer.vtk_steps(count, "all"))
+    assert len(_pvd_files(tmp_path / "vtk")) == count
+    everything = sum(f.stat().st_size for f in (tmp_path / "vtk").iterdir())
+    default = sum(f.stat().st_size for f in (out / "vtk").iterdir())
+    assert everything > default * (count - 1) / VTK_STEPS
+
+
+def test_vtk_option_is_checked(capsys):
+    """Exact answer: --vtk takes few, all or none; another word is bad input (exit 2, one line naming the
+    choices), before any work."""
+    assert main(["validate", "--vtk", "some"]) == 2
+    err = capsys.readouterr().err
+    assert "--vtk" in err and "'few', 'all', 'none'" in err

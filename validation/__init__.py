@@ -12,10 +12,11 @@ Modules: ``suite`` (the pockets of cases.toml, read as case files, and the
 button of the paper's section 6), ``plan`` (what a run computes, the solver
 columns), ``compute`` / ``convergence`` / ``evidence`` (the solves),
 ``verdicts`` and ``findings`` (tolerances, verdicts, the paper's statements),
+``limits`` (the headline: the numerics' verdict and the models' limits),
 ``failures`` (a solver failure re-raised naming its case, study, mesh and force),
 ``runner`` (the parallel run), ``figures`` / ``others`` / ``draw`` / ``render`` (the
 paper's figures, the gas and other-law figures, plots, 3-D picture), ``pockets`` /
-``sections`` / ``document`` / ``report`` (the report folder).
+``sections`` / ``checkpage`` / ``document`` / ``report`` (the report folder).
 """
 
 import importlib

@@ -4,7 +4,10 @@ Blocks: ``("h", level, text)``, ``("p", text)``, ``("list", items)``,
 ``("table", header, rows)``, ``("image", file, caption)`` (a file beside the
 report, referenced relatively), ``("code", text)``, ``("toc",)`` (a table of
 contents linking every heading of level 2 and 3), ``("details", summary,
-blocks)`` (blocks folded under a one-line summary, HTML ``<details>``). Both
+blocks)`` (blocks folded under a one-line summary, HTML ``<details>``),
+``("link", html_file, md_file, text)`` (a paragraph linking another page of
+the report, which is written in both formats: the Markdown links ``md_file``,
+the HTML ``html_file``). Both
 writers get the same blocks, so the two files hold the same content. Every
 heading gets an anchor (``anchors``): GitHub's for the Markdown, the same as
 an ``id`` in the HTML.
@@ -77,6 +80,8 @@ def _markdown(blocks, page) -> list:
                        + "\n\n".join(_markdown(block[2], page)) + "\n\n</details>")
         elif kind == "p":
             out.append(block[1])
+        elif kind == "link":
+            out.append(f"[{block[3]}]({block[2]})")
         elif kind == "list":
             out.append("\n".join(f"- {item}" for item in block[1]))
         elif kind == "table":
@@ -135,6 +140,8 @@ def _html(blocks, page, ids) -> list:
             out.append("</details>")
         elif kind == "p":
             out.append(f"<p>{html.escape(block[1])}</p>")
+        elif kind == "link":
+            out.append(f'<p><a href="{html.escape(block[1], quote=True)}">{html.escape(block[3])}</a></p>')
         elif kind == "list":
             out.append("<ul>" + "".join(f"<li>{html.escape(str(i))}</li>" for i in block[1]) + "</ul>")
         elif kind == "table":

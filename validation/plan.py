@@ -1,4 +1,5 @@
-"""How much a validation run computes: the default run and ``--quick``, and the solver columns.
+"""How much a validation run computes: the default run and ``--quick``, the solver columns, and how much of
+the headline path the report writes as VTK (``VTK``).
 
 Budgets on 2 cores: the default under 60 s, ``--quick`` under 20 s. The
 shooting and analytical columns are cheap (a compression curve in well under a
@@ -31,10 +32,15 @@ from pocket.apps.solvers import record, solver_options
 from .suite import on_plate
 
 __all__ = ["Column", "Plan", "DEFAULT", "QUICK", "RANGE_FRACTION", "REFERENCE", "APPROXIMATE", "FEM_COLUMNS",
-           "INDENTER_COLUMNS"]
+           "INDENTER_COLUMNS", "VTK", "VTK_STEPS"]
 
 #: curves run to this fraction of the end of the shooting model's range
 RANGE_FRACTION = 0.95
+#: how much of the headline pocket's compression path the report writes as VTK: VTK_STEPS of its forces (the
+#: default: the folder stays a few MB, small enough to mail), every one, none
+VTK = ("few", "all", "none")
+#: the states of the default ("few") VTK series, spread evenly along the path, both ends included
+VTK_STEPS = 12
 
 
 @dataclasses.dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""Write a validation run as one folder: index.html, report.md, PNGs, CSVs, the VTK series.
+"""Write a validation run as one folder: index.html, report.md, checks.html, checks.md, PNGs, CSVs, the VTK series.
 
 ``check_target`` runs before any solve (``pocket validate`` and ``pocket
 converge`` call it first): the folder must be one this process may create or
@@ -19,13 +19,15 @@ import pathlib
 import time
 
 from pocket.apps.folders import check_replaceable, staged
+from pocket.core.errors import InputError
 from pocket.core.states import CHECKS, CompressedState
 
-from . import document, draw, figures, pockets, render, sections, thickness
+from . import checkpage, document, draw, figures, pockets, render, sections, thickness
 from . import verdicts as checks_module
+from .plan import VTK, VTK_STEPS
 from .suite import headline
 
-__all__ = ["write_report", "check_target", "KINDS"]
+__all__ = ["write_report", "check_target", "vtk_steps", "KINDS"]
 
 #: the kinds of report folder: the whole suite's and the convergence study's alone
 KINDS = ("validation report", "convergence report")
@@ -84,11 +86,21 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
     return names
 
 
-def _write_vtk(curves, directory: pathlib.Path) -> None:
-    """The headline pocket's reference compression path as a VTK series, time = Fhat."""
+def vtk_steps(count: int, vtk: str) -> list[int]:
+    """The indices of a path of ``count`` states that the VTK series ``vtk`` (one of ``VTK``) writes:
+    ``VTK_STEPS`` spread evenly along it, both ends included ("few"), every one ("all"), none."""
+    if vtk == "none":
+        return []
+    if vtk == "all" or count <= VTK_STEPS:
+        return list(range(count))
+    return sorted({round(k * (count - 1) / (VTK_STEPS - 1)) for k in range(VTK_STEPS)})
+
+
+def _write_vtk(curves, directory: pathlib.Path, steps) -> None:
+    """The headline pocket's reference compression path at the indices ``steps`` as a VTK series, time = Fhat."""
     from pocket.apps.vtkfiles import write_series
 
-    write_series(directory / "vtk", curves.reference, times=curves.forces)
+    write_series(directory / "vtk", [curves.reference[k] for k in steps], times=curves.forces[steps])
 
 
 def _picture(curves, directory):
@@ -96,17 +108,21 @@ def _picture(curves, directory):
     return render.render_pocket(curves.reference[0].inflated, curves.reference[k], directory / "pocket3d.png")
 
 
-def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None) -> pathlib.Path:
+def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None, vtk=VTK[0]) -> pathlib.Path:
     """Write the report of ``results`` (a ``run.Results``) to the folder ``out``; returns its path.
 
-    ``kind`` (one of ``KINDS``) marks the folder and titles the report.
+    ``kind`` (one of ``KINDS``) marks the folder and titles the report. ``vtk`` (one of ``VTK``) says how
+    many states of the headline pocket's compression path the VTK series holds (``vtk_steps``): the default
+    keeps the folder a few MB, small enough to mail; "all" adds about 0.6 MB per force.
 
     The figures, the 3-D picture and the VTK series are made on ``executor`` (an Executor) if given,
-    else here. ``watch`` (a ``clock.Stopwatch``, started with the run) is stopped once all but the two
-    text files are written, and the report quotes its seconds as the run's wall time; without it the
-    time is counted from the solves' start.
+    else here. ``watch`` (a ``clock.Stopwatch``, started with the run) is stopped once all but the
+    report's pages (report.md, index.html, checks.md, checks.html) are written, and the report quotes its
+    seconds as the run's wall time; without it the time is counted from the solves' start.
     """
     begun = time.perf_counter()
+    if vtk not in VTK:
+        raise InputError(f"vtk = {vtk!r}, but the VTK series is one of {', '.join(VTK)}")
     target = check_target(out, kind)
     with staged(target, kind) as partial:
         if results.curves:
@@ -115,21 +131,26 @@ def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None) -> p
             figs = [figures.convergence_figure(results)]
         submit = executor.submit if executor is not None else _Now
         head = results.curves_of(headline(results.pockets)) if results.curves else None
+        steps = vtk_steps(len(head.forces), vtk) if head else []
         # the longest jobs first: the VTK series (seconds of zlib), then the 3-D picture (pyvista's start)
-        extra = [submit(_write_vtk, head, partial), submit(_picture, head, partial)] if head else []
-        jobs = extra + [submit(draw.draw, fig, partial) for fig in figs]
+        extra = [submit(_picture, head, partial)] if head else []
+        series = [submit(_write_vtk, head, partial, steps)] if steps else []
+        jobs = series + extra + [submit(draw.draw, fig, partial) for fig in figs]
         for fig in figs:
             draw.write_csv(fig, partial)
         tables = _write_tables(results, partial)
         for job in jobs:
             job.result()
         picture, why = extra[-1].result() if extra else (None, "")
-        vtk = "vtk" if extra else None
         title = f"pocket {kind}"
         wall = watch.stop() if watch is not None else results.seconds + (time.perf_counter() - begun)
-        blocks = sections.blocks(results, figs, picture is not None, why, tables, vtk, title, wall)
+        written = (len(steps), len(head.forces)) if steps else None
+        blocks = sections.blocks(results, figs, picture is not None, why, tables, written, title, wall)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))
+        page = checkpage.blocks(results.checks, title)
+        (partial / checkpage.PAGE[0]).write_text(document.html_page(f"{title}: every check", page))
+        (partial / checkpage.PAGE[1]).write_text(document.markdown(page))
     return target
 
 

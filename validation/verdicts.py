@@ -1,7 +1,8 @@
 """Every comparison of a validation run as a row with a tolerance and a verdict.
 
-Verdicts: ``pass`` / ``fail`` against a tolerance, ``info`` where no tolerance is
-expected to hold (the analytical model outside its range): reported, never failed.
+Verdicts: ``pass`` / ``fail`` against a tolerance, ``info`` where no tolerance
+should hold (a model's own error against a more complete model, the
+analytical model's among them): reported, never failed.
 Errors are relative (|x / x_ref - 1|) unless the row says otherwise. The
 tolerances and their reasons:
 """
@@ -12,13 +13,17 @@ import dataclasses
 
 import numpy as np
 
+from pocket import fem
 from pocket.core.states import CHECKS, CompressedState
 
 from .plan import APPROXIMATE, REFERENCE
 from .suite import on_plate
 
-__all__ = ["Check", "TOLERANCES", "MEMBRANE", "fem_checks", "analytical_checks", "reference_checks", "membrane_checks",
-           "summary"]
+__all__ = ["Check", "TOLERANCES", "MEMBRANE", "ANALYTICAL_RANGE", "fem_checks", "analytical_checks",
+           "reference_checks", "membrane_checks", "summary"]
+
+#: the largest element of the P2 FE model's default mesh (graded towards the axis), in R
+P2_ELEMENT = float(np.diff(fem.default_mesh(order=2)).max())
 
 #: name -> (tolerance, reason)
 TOLERANCES = {
@@ -38,9 +43,11 @@ TOLERANCES = {
                          "5e-8 of the shooting solver: the P2 elements' O(h^4) on a curved contact is above 1e-8 at "
                          "256 elements (measured <= 3.4e-8, the pole's stretch and contact pressure under the "
                          "smallest sphere, and 16-fold less at 512 elements)"),
-    "fem_sphere_tension": (3e-5, "under a sphere, the smallest tensions: the FE samples an interior minimum at its "
-                                 "nodes and quadrature points, to O(h^2), where shooting refines it (measured "
-                                 "<= 2.7e-5, 1.4e-5 at 256 and 3.5e-6 at 512 elements for the Yeoh sheet)"),
+    "fem_sphere_tension": (P2_ELEMENT**2, "under a sphere, the smallest tensions: the FE samples an interior minimum "
+                                          "at its nodes and quadrature points, to O(h^2) (a smooth function's "
+                                          "minimum missed by a point spaced h from it is off by f'' h^2 / 2), "
+                                          "where shooting refines it: h^2, h the largest element of the default "
+                                          f"P2 mesh ({P2_ELEMENT:.2g} R)"),
     "fem_sphere_profile": (5e-5, "under a sphere, the meridians' largest distance in R, measured by interpolating the "
                                  "FE nodes linearly as under the plate (fem_profile): measured <= 2.3e-5 on the "
                                  "suite's spheres, where every scalar of the same states agrees to 3.4e-8. The "
@@ -63,24 +70,10 @@ TOLERANCES = {
                   "conditioning (up to ~1e3: Yeoh's C30 the least determined), far inside 1e-6; for Ogden, whose "
                   "parameters are not unique, mu_0 and the curve (every datum) are checked and the parameters "
                   "reported"),
-    "analytical_inflation": ({"height": 0.10, "volume": 0.15, "stretch_pole": 0.20},
-                             "small-strain model, checked where lambda_0 - 1 <= 0.04 (measured: its assumed "
-                             "shape, lambda_1 uniform, leaves H0 4 %, V 7 % and lambda_0 - 1 5 % low even as "
-                             "Phat -> 0, growing like (lambda_0 - 1)^(1/2)); stretch_pole compares lambda_0 - 1"),
-    "analytical_height": (0.06, "H/H0 is the robust output of the model (paper, fig. 3b): within 6 % for "
-                                "Fhat <= 2, a bound on a known approximation, not a convergence bar (measured "
-                                "5.3-5.9 %: near Fhat = 0.12, and for sample 4 at 2 kPa near Fhat = 1.6; "
-                                "each pocket's worst is in its verdicts). Checked for the paper's rubber "
-                                "(Mooney-Rivlin) and fluid (a liquid), where it was measured; for another law or "
-                                "a gas it is reported: the model sees the rubber only through mu_0, and its gas "
-                                "law at small strain (measured 7.7 % for Ogden's natural rubber near Fhat = 2, "
-                                "6.6 % for the isothermal gas near Fhat = 0.17)"),
-    "analytical_small_force": (0.08, "P/P_I and A_c/(pi R^2) within 8 % for Fhat <= 0.05 (paper: good for "
-                                     "Fhat < 0.1; eq (26) is singular as a_c -> 0, so P/P_I -> 1.02 there)"),
 }
-_SMALL_STRAIN = 0.04  # lambda_0 - 1 up to which the analytical inflation is checked
-_HEIGHT_FORCE = 2.0  # Fhat up to which the analytical H/H0 is checked
-_SMALL_FORCE = 0.05  # Fhat up to which the analytical P/P_I and A_c are checked
+#: Fhat below which the paper calls its analytical model good (its section 5): its errors are reported up to it
+#: and beyond it
+ANALYTICAL_RANGE = 0.1
 #: the comparison name of the wrinkling verdicts
 MEMBRANE = "membrane theory (T_1, T_2 > 0)"
 _INFLATION_KEYS = ("stretch_pole", "height", "volume", "stretch_clamp")
@@ -199,37 +192,36 @@ def membrane_checks(name: str, label: str, states) -> list[Check]:
 
 
 def analytical_checks(curves) -> list[Check]:
-    """The analytical model against shooting: checked in its range, else informational (worst error); none
-    for a pocket it does not pose (a curved indenter)."""
+    """The analytical model against shooting, informational: its inflated H0, V and lambda_0 - 1, and per
+    compressed quantity its largest error up to the paper's ANALYTICAL_RANGE and beyond it; none for a pocket
+    it does not pose (a curved indenter).
+
+    No tolerance: the model's error is a fact about the model, not about the software. Its assumed shape
+    (lambda_1 uniform along the meridian) leaves an error that does not vanish with the strain (H0 and V
+    several per cent off even as Phat -> 0), so no bound of order the strain holds; the report's headline says
+    where it is within 1 % of the full model (``limits.analytical_vs_membrane``)."""
     name, label = curves.pocket.case.name, f"{APPROXIMATE.label} vs {REFERENCE.label}"
     if curves.approximate[0] is None:  # a curved indenter: the model is the flat plate's
         return []
     ref_i, ana_i = curves.reference[0].inflated, curves.approximate[0].inflated
-    strain = ref_i.stretch_pole - 1.0
-    tols = TOLERANCES["analytical_inflation"][0]
+    where = f"lambda_0 - 1 = {ref_i.stretch_pole - 1.0:.3g}"
     rows = []
     for key in ("height", "volume", "stretch_pole"):
         shift = 1.0 if key == "stretch_pole" else 0.0
         value, reference = getattr(ana_i, key) - shift, getattr(ref_i, key) - shift
-        tol = tols[key] if strain <= _SMALL_STRAIN else None
-        where = f"lambda_0 - 1 = {strain:.3g}"
         rows.append(_row(name, label, "inflation", key if not shift else "lambda_0 - 1", where, value, reference,
-                         _rel(value, reference), tol))
+                         _rel(value, reference), None))
     pairs = [(a, s) for a, s in zip(curves.approximate[1:], curves.reference[1:], strict=True) if a is not None]
-    case = curves.pocket.case
-    paper = case.material.law == "mooney-rivlin" and not case.fluid.is_gas  # where the H/H0 bound was measured
-    ranges = {"height_ratio": (_HEIGHT_FORCE, TOLERANCES["analytical_height"][0] if paper else None),
-              "pressure_ratio": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0]),
-              "contact_area": (_SMALL_FORCE, TOLERANCES["analytical_small_force"][0])}
-    for key, (limit, tol) in ranges.items():
-        for inside, tolerance in ((True, tol), (False, None)):
-            chosen = [(a, s) for a, s in pairs if (s.force <= limit) == inside]
+    for key in ("height_ratio", "pressure_ratio", "contact_area"):
+        for inside in (True, False):
+            chosen = [(a, s) for a, s in pairs if (s.force <= ANALYTICAL_RANGE) == inside]
             if not chosen:
                 continue
             a, s = max(chosen, key=lambda p: _rel(getattr(p[0], key), getattr(p[1], key)))
-            span = f"Fhat <= {limit:g}" if inside else f"{limit:g} < Fhat <= {chosen[-1][1].force:.3g}"
+            span = (f"Fhat <= {ANALYTICAL_RANGE:g}" if inside
+                    else f"{ANALYTICAL_RANGE:g} < Fhat <= {chosen[-1][1].force:.3g}")
             rows.append(_row(name, label, "compression", key, f"worst at Fhat = {s.force:.3g} ({span})",
-                             getattr(a, key), getattr(s, key), _rel(getattr(a, key), getattr(s, key)), tolerance))
+                             getattr(a, key), getattr(s, key), _rel(getattr(a, key), getattr(s, key)), None))
     return rows
 
 

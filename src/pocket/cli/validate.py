@@ -1,6 +1,6 @@
 """``pocket validate`` and ``pocket converge``: the validation suite and its report (``pocket.validation``).
 
-    pocket validate [--out DIR] [--quick] [--cases FILE]
+    pocket validate [--out DIR] [--quick] [--cases FILE] [--vtk {few,all,none}]
     pocket converge [--out DIR] [--quick] [--cases FILE]
 
 The report folder and the cases file are checked before any solve (a bad one
@@ -37,14 +37,19 @@ reference), the finite-element model (P1 and P2) and the paper's analytical
 model compared on the pockets of the cases file (the paper's Table 1 samples,
 alpha = 0 and 1, a Yeoh silicone, an Ogden natural rubber, a Gent rubber near
 its lock, and the headline pocket filled with air, isothermal and adiabatic),
-each comparison with a tolerance and a pass/fail verdict, and a wrinkling
-verdict (both tensions positive) for every state; the paper's figures 2-5
+each comparison of the solvers with a tolerance and a pass/fail verdict, the
+analytical model's error reported (a model's error, not a verdict), and a
+wrinkling verdict (both tensions positive) for every state; the paper's figures 2-5
 recomputed, a liquid against a gas in one pocket, the other rubbers; a
 mesh-convergence study of the FE model; the paper's statements checked against
 the full model; a 3-D picture (with the 'render' extra) and the headline
-pocket's compression path as VTK files for ParaView. The report folder holds
-index.html and report.md (the same content), the PNGs and a CSV of every
-number. Progress shows on a terminal."""
+pocket's compression path as VTK files for ParaView. The report opens with two
+verdicts: the numerics (the solvers agree and converge: pass or fail) and the
+models' limits (where the membrane is within 1 % of the solid, the analytical
+model within 1 % of the membrane: measured, not judged). The report folder
+holds index.html and report.md (the same content), checks.html and checks.md
+(every check), the PNGs and a CSV of every number. Progress shows on a
+terminal."""
 
 _CONVERGE = """\
 Run the mesh-convergence study alone: the FE model (P1 and P2, uniform meshes
@@ -56,6 +61,8 @@ writes them as a report folder (index.html, report.md, CSVs, the plot)."""
 
 def register(subparsers) -> None:
     """Add the ``validate`` and ``converge`` parsers."""
+    from pocket.validation.plan import VTK, VTK_STEPS
+
     for name, handler, text, description, out in (
             ("validate", _validate, "run the validation suite and write its report", _VALIDATE,
              "validation-report"),
@@ -77,6 +84,11 @@ def register(subparsers) -> None:
                             "else the first), [case.fluid] and [case.indenter]; no [case.loads] or [case.solver]; "
                             "and one [design] table (the paper's soft button) with exactly radius, height (H0), "
                             "modulus (E), force, alpha and height_ratio (0 < H/H0 < 1), as in cases.toml")
+        if name == "validate":
+            p.add_argument("--vtk", choices=VTK, default=VTK[0],
+                           help=f"the headline pocket's compression path as VTK files for ParaView: {VTK[0]} "
+                                f"(default) {VTK_STEPS} of its forces, spread along it, a few MB; all: every force "
+                                "of its curve (about 0.6 MB each: tens of MB); none: no VTK")
         p.set_defaults(handler=handler)
 
 
@@ -99,15 +111,23 @@ def _setup(args):
 
 def _finish(results, args, watch, pool, name) -> int:
     """Write the report (saying so on a terminal), print the summary; the exit status."""
+    from pocket.validation import limits
     from pocket.validation.report import write_report
     from pocket.validation.sections import counts
 
     if sys.stderr.isatty():
         print(f"{name}: writing the report to {args.out} ...", file=sys.stderr, flush=True)
-    path = write_report(results, args.out, kind=_kind(args), executor=pool, watch=watch)
+    path = write_report(results, args.out, kind=_kind(args), executor=pool, watch=watch,
+                        vtk=getattr(args, "vtk", "none"))
     n = counts(results)
-    print(f"{'FAIL' if n['fail'] else 'PASS'}: {n['pass']} checks pass, {n['fail']} fail, {n['info']} informational "
+    numerics = limits.tally(c for c in results.checks if limits.is_numerics(c))
+    print(f"{'FAIL' if n['fail'] else 'PASS'}: numerics {'FAIL' if numerics['fail'] else 'PASS'}, "
+          f"{numerics['pass']} checks pass, {numerics['fail']} fail, {numerics['info']} informational; "
+          f"the models' limits: {n['info'] - numerics['info']} measured errors (not verdicts), "
+          f"{n['pass'] + n['fail'] - numerics['pass'] - numerics['fail']} membrane-theory verdicts "
           f"({watch.seconds:.1f} s wall time, the report's writing included; plan {results.plan.name})")
+    for sentence in limits.sentences(results):
+        print(f"  {sentence}")
     for check in results.failed[:10]:
         print(f"  fail: {check.case} {check.comparison} {check.quantity} ({check.where}): error {check.error:.3g} "
               f"> {check.tolerance:.3g}")
