@@ -18,7 +18,7 @@ __all__ = ["SOLVER", "inflate", "compress", "compression_curve", "range_end", "s
 
 SOLVER = Solver(
     name="analytical",
-    summary="the paper's small-strain model: approximate, for small stretches and small forces",
+    summary="the paper's small-strain model: approximate, good only where the stretches stay small",
     module=__name__,
     entry_points=("inflate", "compress", "compression_curve", "range_end"),
 )
