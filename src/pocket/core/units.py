@@ -91,25 +91,23 @@ def positive(key: str, value, kind: str) -> float:
     return magnitude
 
 
+def _dimensionless(text: str) -> bool | None:
+    """Whether pint reads ``text`` as a dimensionless quantity; None for text that is no quantity at all."""
+    try:
+        return bool(_registry().Quantity(text).dimensionless)
+    except Exception:  # pint's parser raises many types on text that is no quantity
+        return None
+
+
 def is_plain(value) -> bool:
     """Whether ``value``, a valid ``quantity``, was written without a unit (a number, or text like ``"20"``)."""
-    if not isinstance(value, str):
-        return True
-    try:
-        return bool(_registry().Quantity(value).dimensionless)
-    except Exception:  # pint's parser raises many types; such text is refused by quantity first
-        return False
+    return not isinstance(value, str) or _dimensionless(value) is True
 
 
 def has_unit(text) -> bool:
     """Whether ``text`` is a quantity written with a unit (``"8 mm"``, ``"20 kPa"``): a command in the model's
     units refuses it, where a number (``"0.4"``) or text that is no quantity at all (``"x"``) is not one."""
-    if not isinstance(text, str):
-        return False
-    try:
-        return not _registry().Quantity(text).dimensionless
-    except Exception:  # pint's parser raises many types on text that is no quantity
-        return False
+    return isinstance(text, str) and _dimensionless(text) is False
 
 
 def plain_warnings(key: str, value, kind: str) -> list[str]:
