@@ -192,7 +192,8 @@ def test_legends_name_pockets_and_solvers_once(report):
     solver; the headline pocket comes first, broad and beneath the others (lower zorder), so that a curve
     lying on it shows inside it."""
     from pocket.validation.draw import _style
-    from pocket.validation.figures import figures, paper_pockets
+    from pocket.validation.figures import figures
+    from pocket.validation.plotdata import paper_pockets
 
     results = report[2]
     fig = next(f for f in figures(results) if f.name == "fig3a")
@@ -234,7 +235,8 @@ def test_one_colour_per_pocket_in_every_figure(report):
 def test_log_axes_leave_out_zero_and_say_so(report):
     """Exact answer: no point at x <= 0 on a log-x axis (nor y <= 0 on a log-y one), where a log scale would
     clip it to the edge and draw a false plateau; a figure that left F = 0 out says so in its caption."""
-    from pocket.validation.figures import NO_ZERO, figures
+    from pocket.validation.figures import figures
+    from pocket.validation.plotdata import NO_ZERO
 
     results = report[2]
     for fig in figures(results):
@@ -595,7 +597,8 @@ def test_fluids_figure_compares_gas_and_liquid_at_one_force(report):
     at three of them the liquid solved there by shooting gives the same number to 1e-6 (the spline through
     the liquid's states is that close); the gas rises less at moderate force (negative near Fhat = 1) and the
     curves cross before the end of the liquid's range."""
-    from pocket.validation.figures import figures, pocket_label
+    from pocket.validation.figures import figures
+    from pocket.validation.plotdata import pocket_label
 
     from pocket import shooting
 
@@ -679,7 +682,8 @@ def test_fingertip_figure_plots_force_against_travel(report):
     """Exact answer: the fingertips figure holds the plate and the three spheres of the headline pocket; a
     point of its panel (a) is (H_0 - H, F) of the state shooting solves afresh at that force; at Fhat = 0.5
     a smaller sphere travels further and raises the pressure more, as the caption says."""
-    from pocket.validation.figures import figures, pocket_label
+    from pocket.validation.figures import figures
+    from pocket.validation.plotdata import pocket_label
 
     from pocket import shooting
 
@@ -707,7 +711,8 @@ def test_contact_pressure_figure_follows_the_contact_zone(report):
     """Exact answer: one shooting line per pocket pressed by a sphere, from the pole (rho = 0, p_c/P the
     state's contact_pressure_pole / P) to the contact edge (rho = rho_c, contact_pressure_edge / P), above 1
     all along; panel (b) ends at rho/rho_c = 1; the FE's markers lie on the shooting's line."""
-    from pocket.validation.figures import figures, pocket_label
+    from pocket.validation.figures import figures
+    from pocket.validation.plotdata import pocket_label
 
     from pocket import shooting
 

@@ -15,7 +15,7 @@ import math
 import pathlib
 import re
 
-from .figures import STYLES
+from .plotdata import STYLES
 
 __all__ = ["draw", "write_csv", "math_text", "PALETTE"]
 

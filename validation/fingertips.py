@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .figures import Figure, Panel, Series, curve_series, pocket_colors, pocket_label, solver_key
 from .plan import RANGE_FRACTION
+from .plotdata import Figure, Panel, Series, curve_series, pocket_colors, pocket_label, solver_key
 from .suite import headline, on_plate
 
 __all__ = ["fingertip_figures", "fingertip_pockets", "sphere_pockets", "CONTACT_FORCE"]

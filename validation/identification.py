@@ -23,7 +23,7 @@ from pocket.apps.fitdata import Dataset
 from pocket.apps.fitmodel import Setup
 from pocket.core.materials import LAWS, Material, check
 
-from .figures import Figure, Panel, Series
+from .plotdata import Figure, Panel, Series
 from .verdicts import TOLERANCES, Check
 
 __all__ = ["Identification", "identify", "truth_of", "checks", "figure", "rows", "describe", "OGDEN_ONE", "OGDEN_TWO",

@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .figures import Figure, Panel, Series, curve_series, paper_pockets, pocket_colors, pocket_label
 from .plan import RANGE_FRACTION
+from .plotdata import Figure, Panel, Series, curve_series, paper_pockets, pocket_colors, pocket_label
 from .suite import headline, on_plate
 
 __all__ = ["other_figures"]

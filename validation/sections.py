@@ -13,7 +13,7 @@ from pocket.apps.provenance import environment
 from . import checkpage, identification, limits, thickness
 from .convergence import EXPECTED, FITTED_P2_FINEST, MESHES, RICHARDSON_FACTOR, richardson
 from .convergence import FORCE as CONVERGENCE_FORCE
-from .figures import pocket_label
+from .plotdata import pocket_label
 from .pockets import case_table, cell
 from .runner import WORKERS
 from .suite import headline

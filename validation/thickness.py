@@ -37,7 +37,7 @@ import numpy as np
 
 from pocket.apps.cases import SAMPLES, sample
 
-from .figures import Figure, Panel, Series
+from .plotdata import Figure, Panel, Series
 from .verdicts import Check
 
 __all__ = ["Comparison", "COMPARISON", "compare", "checks", "rows", "figure", "verdict", "slopes", "LIMIT",
