@@ -12,7 +12,7 @@ P R / (E T), E = 3 mu_0), key by key comparable: their difference is the membran
 error, O(T/R).
 
 Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``stretches`` (the Ogden
-law's stress and tangent), ``mesh`` (the cross-section), ``forms`` (weak forms), ``assembly`` (their
+law's stress and tangent), ``mesh`` (the cross-section), ``assembly`` (the weak forms and their
 vectorised assembly), ``model`` (bases and constraints), ``contact`` (the indenter's gap and its
 derivatives), ``equations`` (the bordered system), ``newton`` (Newton, active set), ``inflation`` and
 ``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry points). ``SOLVER``

@@ -1,8 +1,37 @@
-r"""The weak forms of ``forms`` assembled by contractions over whole arrays instead of per-pair form calls.
+r"""The weak forms (the solid's residual and tangent, the fluid's volume with its derivatives), assembled by
+contractions over whole arrays.
 
-Everything that does not change between Newton iterations is tabulated once per model (``tables``):
+Solid (units: stresses of mu_0, lengths of R; the axisymmetric measure dV = 2 pi r dr dz). The
+Lagrangian of the mixed displacement-pressure formulation is
+
+    L(u, p) = int [W(Ib1, Ib2) + p (J - 1)] 2 pi r dr dz
+
+(W at the isochoric invariants, ``kinematics``), so that, in the five components of dF,
+
+    R_u[v] = int (dW + p dJ) . dF[v] 2 pi r,                 R_p[q] = int q (J - 1) 2 pi r,
+    K_uu[du, v] = int dF[du] . (d^2 W + p d^2 J) . dF[v] 2 pi r,   K_pu[du, q] = int q dJ . dF[du] 2 pi r.
+
+Below (Assembly), this module evaluates the stress dW + p dJ and the 5 x 5 tangent d^2 W + p d^2 J once per
+Newton iteration at the quadrature points and assembles these sums by array contractions.
+
+Fluid. The fluid fills the cavity between the deformed lower surface (rho, zeta)(r), rho = r + u_r,
+zeta = -t/2 + u_z, and its flat reference plane zeta = -t/2; its volume is
+
+    V(u) = int_0^1 2 pi rho u_z rho' dr       (rho' = d rho / dr = 1 + du_r/dr on the lower surface),
+
+the volume swept by the surface above the plane (rho = 1, u_z = 0 at the clamp, rho = 0 on the axis).
+Its variations (symmetric in dv, du, as a second derivative must be):
+
+    V'[v]     = int 2 pi (v_r u_z rho' + rho v_z rho' + rho u_z v_r') dr,
+    V''[v, w] = int 2 pi (v_r w_z rho' + v_r u_z w_r' + w_r v_z rho' + rho v_z w_r'
+                          + w_r u_z v_r' + rho w_z v_r') dr.
+
+The fluid at pressure p_f does the work p_f dV on the sheet (a follower load: exactly the
+derivative of p_f V), so its terms in the equilibrium are -p_f V'[v] and -p_f V''[v, w].
+
+Assembly. Everything that does not change between Newton iterations is tabulated once per model (``tables``):
 at each quadrature point x_q of each element e and for each displacement basis function phi_i, the five
-components c_ia = dF[phi_i]_a (``forms.components``), the bilinear pressures psi_k, the weights
+components c_ia = dF[phi_i]_a (``kinematics.field_components``), the bilinear pressures psi_k, the weights
 w_eq = |e|_q 2 pi r_q of the axisymmetric measure, and, on the lower surface's facets f, the three values
 d_i = (phi_i,r, phi_i,z, d phi_i,r / dr) the fluid's forms need, with w_fq = |f|_q 2 pi. A state's fields
 at the points are then the contractions of its element dofs U_ei = u[dofs_ie] with these tables:
@@ -19,14 +48,14 @@ one ``energy_derivatives`` call per Newton iteration gives both), the element ve
 each a batch of small matrix products over the elements (the tables stored element-major, (e, q, 5, 18),
 so that ``np.matmul`` runs them: K_e = B_e^T (w T B)_e with B_e the (5 q) x 18 matrix of the c_ia), added
 into the global arrays through the element dofs (``np.bincount``, and COO triplets whose duplicates sum).
-The fluid's forms (``forms.volume_first``, ``forms.volume_second``) are, with rho = r + u_r, zeta = u_z
+The fluid's V' and V'' are, with rho = r + u_r, zeta = u_z
 and rho' = 1 + du_r/dr,
 
     V' :  sum_q w g . d_i,          g = (zeta rho', rho rho', rho zeta),
     V'':  sum_q w d_i . M d_j,      M = [[0, rho', zeta], [rho', 0, rho], [zeta, rho, 0]],
 
 the six terms of V''[v, w] being the symmetric bilinear form of M in (v_r, v_z, v_r') and (w_r, w_z, w_r').
-Tests compare each with scikit-fem's assembly of the form it replaces.
+Tests compare each with scikit-fem's assembly of the weak form written as a scikit-fem form.
 """
 
 from __future__ import annotations
@@ -37,7 +66,6 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, FacetBasis
 
-from . import forms
 from . import kinematics as kin
 
 __all__ = ["Tables", "tables", "fields", "pressure_moments", "solid", "fluid"]
@@ -63,7 +91,7 @@ class Tables:
 def tables(basis_u: Basis, basis_p: Basis, bottom: FacetBasis) -> Tables:
     """The tables of the displacement and pressure bases and of the lower surface's facet basis."""
     r = basis_u.global_coordinates()[0]
-    comps = np.array([forms.components(phi[0], r) for phi in basis_u.basis])  # (18, 5, e, q)
+    comps = np.array([kin.field_components(phi[0], r) for phi in basis_u.basis])  # (18, 5, e, q)
     psi = np.array([np.asarray(phi[0]) for phi in basis_p.basis])  # (4, e, q)
     facet = np.array([[*np.asarray(phi[0])[:2], phi[0].grad[0, 0]] for phi in bottom.basis])
     return Tables(np.ascontiguousarray(comps.transpose(2, 3, 1, 0)), basis_u.dx * 2.0 * np.pi * r,
@@ -112,7 +140,7 @@ def _forms(B: np.ndarray, w: np.ndarray, vector: np.ndarray, matrix: np.ndarray)
 
 
 def solid(tab: Tables, law, u: np.ndarray, p: np.ndarray):
-    """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p), the ``forms`` assembled."""
+    """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p): the weak forms assembled."""
     F, pq = fields(tab, u, p)
     first, second = kin.energy_derivatives(F, law)
     d_j, d2_j = kin.jacobian_derivatives(F)

@@ -15,8 +15,8 @@ Energy. The rubber's W(I1, I2) is evaluated at the isochoric invariants of C = F
     Ib1 = J^(-2/3) I1,   Ib2 = J^(-4/3) I2,   I1 = F : F,   I2 = (I1^2 - C : C) / 2,
 
 which equal I1, I2 at J = 1 (so W is the law's energy there) and do not change under a change of
-volume: the volume is the constraint's alone (``forms``). Evaluated at I1, I2 instead, W would
-have a concave volumetric part (3 C1 (J^(2/3) - 1) under F = s I), which Taylor-Hood's
+volume: the volume is the constraint's alone (the weak forms, ``assembly``). Evaluated at I1, I2
+instead, W would have a concave volumetric part (3 C1 (J^(2/3) - 1) under F = s I), which Taylor-Hood's
 constraint, J = 1 only against bilinear pressures, does not control at the clamp's singular
 corners: elements there folded and Newton stalled. The Ogden law, a function of the principal
 stretches, is evaluated at the isochoric stretches J^(-1/3) l_i for the same reason (``stretches``).
@@ -80,6 +80,12 @@ def gradient(grad: np.ndarray, u_r: np.ndarray, r: np.ndarray) -> np.ndarray:
 def variation(grad: np.ndarray, u_r: np.ndarray, r: np.ndarray) -> np.ndarray:
     """dF (3, 3, ...) of a displacement variation, as ``gradient`` without the identity."""
     return _tensor(grad, u_r / r, 0.0)
+
+
+def field_components(field, r) -> np.ndarray:
+    """The five components (5, ...) of dF of a vector field (a scikit-fem DiscreteField) at radius r."""
+    g = field.grad
+    return np.array([g[0, 0], g[0, 1], g[1, 0], g[1, 1], field[0] / r])
 
 
 def components(T: np.ndarray) -> np.ndarray:

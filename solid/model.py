@@ -6,7 +6,7 @@ for incompressible elasticity, with errors O(h^2) in u and p in the energy norm 
 Constraints: the clamp r = 1 fixed through the thickness (u = 0), the axis r = 0 (u_r = 0).
 
 ``solid`` returns the residual and the tangent of the rubber alone, ``fluid`` the cavity's volume
-and its first and second derivatives (the forms of ``forms``, assembled by the contractions of
+and its first and second derivatives (the weak forms, assembled by the contractions of
 ``assembly`` on the tables each model keeps); ``equations`` borders them with the fluid and the plate.
 """
 
@@ -79,7 +79,7 @@ def split(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def solid(model: Model, u: np.ndarray, p: np.ndarray):
-    """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p) (``forms``, assembled by
+    """The rubber's residual (R_u, R_p) and tangent blocks (K_uu, K_pu) at (u, p) (the weak forms, assembled by
     ``assembly``)."""
     return assembly.solid(model.tables, model.law, u, p)
 
