@@ -140,8 +140,9 @@ def test_the_jacobian_is_the_derivative_of_the_residual(contact):
 @pytest.mark.parametrize("name", ["gent", "mooney-rivlin"])
 def test_the_vectorised_assembly_is_the_skfem_forms(name):
     """``assembly``'s contractions (R_u, R_p, K_uu, K_pu; V, V', V'') equal scikit-fem's assembly of the weak
-    forms they replace (``solidforms``, the forms written for scikit-fem), at a random displacement and pressure: the same sums over the same
-    quadrature points in another order, so to round-off (1e-12 of the largest entry)."""
+    forms they replace (``solidforms``, the forms written for scikit-fem), at a random displacement and
+    pressure: the same sums over the same quadrature points in another order, so to round-off (1e-12 of the
+    largest entry)."""
     import solidforms as forms
     from pocket.solid import assembly
     from skfem import asm
