@@ -30,7 +30,7 @@ def _summary_table(checks) -> tuple:
 def failing_blocks(checks) -> list:
     """The report's section on the checks: the failing ones in full, and a link to the page of all."""
     failing = [_row(c) for c in checks if c.verdict == "fail"]
-    out = [("h", 2, "All checks"),
+    out: list[tuple] = [("h", 2, "All checks"),
            ("p", f"{len(checks)} checks, {len(failing)} failing. Every one, with its value, reference, error, "
                  "tolerance and verdict, is in checks.csv and on a page of its own, with the verdicts per pocket, "
                  "comparison and step:"),

@@ -101,7 +101,8 @@ def sequence(case: Pocket, study: str, order: int, mesh: str, counts) -> Sequenc
         ref = shooting.inflate(rubber, pressure) if study == "inflation" else \
             shooting.compress(rubber, pressure, FORCE, **sealed)
     names = QUANTITIES[study]
-    values, sizes = {name: [] for name in names}, []
+    values: dict[str, list[float]] = {name: [] for name in names}
+    sizes = []
     for n in counts:
         grid = fem.default_mesh(n) if mesh == "fitted" else meshes.uniform(n)
         contact = "fitted" if mesh == "fitted" else "penalty"

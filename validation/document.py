@@ -47,7 +47,8 @@ def _headings(blocks):
 def anchors(blocks) -> dict:
     """Heading block's position among the headings -> its anchor, as GitHub makes it: lower case, only
     letters, digits, spaces, '-' and '_' kept, spaces as '-', a repeat suffixed -1, -2, ..."""
-    out, seen = {}, {}
+    out: dict[int, str] = {}
+    seen: dict[str, int] = {}
     for k, (_, _, text) in enumerate(_headings(blocks)):
         slug = re.sub(r"[^\w\- ]", "", text.lower()).replace(" ", "-")
         n = seen.get(slug, 0)

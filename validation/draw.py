@@ -14,8 +14,9 @@ import csv
 import math
 import pathlib
 import re
+from typing import Any
 
-from .plotdata import STYLES
+from .plotdata import STYLES, Series
 
 __all__ = ["draw", "write_csv", "math_text", "PALETTE"]
 
@@ -67,12 +68,13 @@ def _legends(fig, figure, colors) -> None:
     """The two shared legends below the panels: pockets by colour, solvers by style."""
     from matplotlib.lines import Line2D
 
-    groups, solvers = {}, {}
+    groups: dict[str, Series] = {}
+    solvers: dict[str, Series] = {}
     for panel in figure.panels:
         for s in panel.series:
             groups.setdefault(s.group, s)
             solvers.setdefault(s.solver, s)
-    lines = {"linestyle": "-", "marker": "", "linewidth": 1.4}
+    lines: dict[str, Any] = {"linestyle": "-", "marker": "", "linewidth": 1.4}
     pockets = [Line2D([], [], **{**lines, "color": _style(s, colors)["color"],
                                  **({"linewidth": _BROAD} if s.emphasis else _DOTS)}) for s in groups.values()]
     styles = [Line2D([], [], **{**STYLES.get(name, _FALLBACK), "color": "0.3"}) for name in solvers]

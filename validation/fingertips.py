@@ -14,6 +14,8 @@ Each figure is left out when the cases hold no pocket for it.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from .plan import RANGE_FRACTION
@@ -78,7 +80,7 @@ def _contact_series(results, pockets, scaled: bool) -> tuple:
     for layer, pocket in enumerate(pockets):
         curves = results.curves_of(pocket)
         shot = curves.reference[int(np.argmin(np.abs(curves.forces - CONTACT_FORCE)))]
-        runs = [("shooting", shot, None)]
+        runs: list[tuple[str, Any, int | None]] = [("shooting", shot, None)]
         runs += [(r.column.label, s, _MARKERS) for r in results.columns if r.pocket == pocket
                  for s in r.states if s.force == shot.force]
         for solver, state, markers in runs:

@@ -67,7 +67,7 @@ class Identification:
 def truth_of(law: str, terms: int) -> Material:
     """The rubber whose data a law is fitted to (module docstring)."""
     if law == "ogden":
-        return check("ogden", {1: OGDEN_ONE, 2: OGDEN_TWO}.get(terms, LAWS[law].example))
+        return check("ogden", {1: OGDEN_ONE, 2: OGDEN_TWO}.get(terms, dict(LAWS[law].example)))
     return check(law, dict(LAWS[law].example))
 
 
@@ -145,7 +145,8 @@ def figure(fits) -> Figure:
     """The data, the fitted curves (a) and the residuals (b) of every law's fit."""
     # colours are laws here, not pockets: no series names a pocket (``Series.group``), so each panel has its legend
     data = tuple(Series(f"{f.label}: FE data", "FEM P2", f.pressures, f.heights, k) for k, f in enumerate(fits))
-    curves = tuple(Series(f"{f.label}: fitted (shooting)", "shooting", *f.curve, k) for k, f in enumerate(fits))
+    curves = tuple(Series(f"{f.label}: fitted (shooting)", "shooting", f.curve[0], f.curve[1], k)
+                   for k, f in enumerate(fits))
     residuals = tuple(Series(f"{f.label}", "residual", f.pressures, f.residuals, k) for k, f in enumerate(fits))
     return Figure("identification", f"Identifying a rubber from its bulge test: each law fitted by the shooting "
                   f"model to {POINTS} noise-free pole heights of a known rubber computed by the P2 FE model (the "

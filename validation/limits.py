@@ -155,7 +155,8 @@ def analytical_vs_membrane(curves) -> tuple[str, list[str]]:
         paper = [w for w in (_worst(p, key, ANALYTICAL_RANGE) for p in pairs) if w is not None]
         if paper:
             text += f", up to {_pct(max(paper))} % for Fhat <= {ANALYTICAL_RANGE:g}"
-        parts.append(text + f", up to {_pct(max(_worst(p, key) for p in pairs))} % over the curves)")
+        whole = [w for w in (_worst(p, key) for p in pairs) if w is not None]
+        parts.append(text + f", up to {_pct(max(whole))} % over the curves)")
     plural = "s" if len(posed) > 1 else ""
     return (f"The analytical model against the membrane (shooting) on the {len(posed)} pocket{plural} pressed by "
             "the plate", [f"inflated, off by {_and(inflated)}", *parts])
@@ -193,12 +194,13 @@ def blocks(results) -> list:
     """The report's headline as ``document`` blocks: the verdict on the numerics, the one on the membrane
     theory's own condition (if any curve was checked), and the models' limits."""
     numerics = tally(c for c in results.checks if is_numerics(c))
-    out = [("p", f"Numerics: {'FAIL' if numerics['fail'] else 'PASS'}. The solvers agree with each other and "
+    out: list[tuple] = []
+    out.append(("p", f"Numerics: {'FAIL' if numerics['fail'] else 'PASS'}. The solvers agree with each other and "
                  f"converge: {numerics['pass']} checks pass, {numerics['fail']} fail ({numerics['info']} more are "
                  "reported without a tolerance): the finite-element model (P1, P2) against the shooting solver, "
                  "each solver's own consistency (the fluid's law, the indenter's reaction), the observed orders of "
                  "the mesh-convergence study and its Richardson extrapolations, and each law fitted to known data "
-                 "against the truth.")]
+                 "against the truth."))
     verdict, sentence = wrinkling(results.checks)
     if sentence:
         out.append(("p", f"Membrane theory's condition: {verdict.upper()}. {sentence}"))

@@ -57,8 +57,13 @@ class Column:
 
     def kwargs(self, step: str = "compress") -> dict:
         """The options that ``step`` ("inflate" or "compress") takes, as keyword arguments."""
-        solver = record(self.solver)
-        return {k: v for k, v in self.options if step in solver.option(k).steps}
+        solver, out = record(self.solver), {}
+        for name, value in self.options:
+            option = solver.option(name)
+            assert option is not None, name  # every option was checked against the record (__post_init__)
+            if step in option.steps:
+                out[name] = value
+        return out
 
 
 REFERENCE = Column("shooting", "shooting")

@@ -18,6 +18,7 @@ scale cannot place (``without_zeros``); the captions say so.
 from __future__ import annotations
 
 import dataclasses
+from typing import Any
 
 import numpy as np
 
@@ -27,7 +28,7 @@ __all__ = ["Series", "Panel", "Figure", "curve_series", "paper_pockets", "STYLES
            "pocket_label", "pocket_colors", "solver_key", "without_zeros", "NO_ZERO"]
 
 #: solver column label -> matplotlib style: line style, marker, marker face
-STYLES = {
+STYLES: dict[str, dict[str, Any]] = {
     "shooting": dict(linestyle="-", marker="", linewidth=1.4),
     "FEM P1": dict(linestyle="none", marker="o", markerfacecolor="none", markersize=7),
     "FEM P2": dict(linestyle="none", marker="x", markersize=6),

@@ -144,7 +144,7 @@ def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None, vtk=
         picture, why = extra[-1].result() if extra else (None, "")
         title = f"pocket {kind}"
         wall = watch.stop() if watch is not None else results.seconds + (time.perf_counter() - begun)
-        written = (len(steps), len(head.forces)) if steps else None
+        written = (len(steps), len(head.forces)) if steps and head else None
         blocks = sections.blocks(results, figs, picture is not None, why, tables, written, title, wall)
         (partial / "report.md").write_text(document.markdown(blocks))
         (partial / "index.html").write_text(document.html_page(title, blocks))

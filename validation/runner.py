@@ -118,7 +118,8 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
     pool = local_executor(WORKERS) if own else executor
     bar = progress_bar(progress, label=label)
     main = headline(pockets)
-    pending, tasks = {}, []  # future -> (kind, key, index into tasks)
+    pending: dict = {}  # future -> (kind, key, index into tasks)
+    tasks: list = []
     done: dict = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}, "solid": {}}
 
     def submit(kind, key, function, *args):
@@ -183,7 +184,7 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     rows += identification.checks(fits)
     thicknesses = tuple(done["solid"][k] for k in sorted(done["solid"]))
     rows += thickness.checks(thicknesses)
-    found = ()
+    found: tuple = ()
     proof = done["evidence"].get(None)
     if proof is not None:
         head = by_pocket[headline(pockets)]

@@ -96,7 +96,7 @@ def compare(number: int, pressure_kpa: float, forces: tuple[float, ...]) -> Comp
     seconds = time.perf_counter() - start
     m0, s0 = membrane[0].inflated, continuum[0].inflated
     m_top0 = m0.height + _half_thickness(m0, t)
-    values = {("V", None): (m0.volume, s0.volume),
+    values: dict[tuple[str, float | None], tuple[float, float]] = {("V", None): (m0.volume, s0.volume),
               ("V (membrane's lower surface)", None): (m0.volume_lower(t), s0.volume),
               ("H0 (mid-surface)", None): (m0.height, s0.extra["height_mid"]),
               ("H0 (upper surface)", None): (m_top0, s0.height)}

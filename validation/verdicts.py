@@ -142,12 +142,13 @@ def fem_checks(curves, fem) -> list[Check]:
     by_force = dict(zip(curves.forces.tolist(), curves.reference, strict=True))
     tol, tol_profile, tol_tension = _fem_tolerance(fem.column), TOLERANCES["fem_profile"][0], \
         TOLERANCES["fem_tension"][0]
-    compression_keys = _COMPRESSION_KEYS
+    compression_keys: tuple[str, ...] = _COMPRESSION_KEYS
     if not on_plate(curves.pocket):
         compression_keys += CompressedState.CONTACT_KEYS
         tol, tol_tension = TOLERANCES["fem_sphere"][0], TOLERANCES["fem_sphere_tension"][0]
         tol_profile = TOLERANCES["fem_sphere_profile"][0]
     rows = []
+    keys: tuple[str, ...]
     for state in fem.states:
         ref = by_force[state.force]
         if state.force == 0.0:
