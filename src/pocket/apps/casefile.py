@@ -76,7 +76,9 @@ def solved(case: Case, progress=None) -> tuple[dict, Pocket, list]:
     loads = load_forces(pocket)
     reached = [i for i, load in enumerate(loads) if not isinstance(load, OutOfRangeError)]
     if not reached:
-        raise loads[0]
+        first = loads[0]
+        assert isinstance(first, OutOfRangeError)  # no load reached: each is its error
+        raise first
     extra = {} if progress is None else {"progress": progress}
     curve = entry(pocket.solver(), "compression_curve", f"the loads of case {case.name}")
     states = curve(pocket.material, pocket.pressure_initial, [loads[i] for i in reached],

@@ -87,7 +87,7 @@ class ClusterExecutor(Executor):
         self._watcher.start()
 
     def submit(self, fn, /, *args, **kwargs) -> Future:
-        outer = Future()
+        outer: Future = Future()
         with self._lock:
             self._pending.add(outer)
         self._executor.submit(fn, *args, **kwargs).add_done_callback(lambda inner: self._settle(outer, inner))
@@ -95,14 +95,15 @@ class ClusterExecutor(Executor):
 
     def _settle(self, outer: Future, inner: Future) -> None:
         """Hand ``inner``'s outcome to ``outer``, in the words of this module."""
+        error = None if inner.cancelled() else inner.exception()
         if inner.cancelled():
             self._fail(outer, self._lost() if self.client.status != "running" else
                        ClusterError(f"the dask scheduler at {self.address} cancelled a task; {_RESUME}"))
-        elif isinstance(inner.exception(), ImportError):
-            self._fail(outer, ClusterError(f"a dask worker cannot run pocket ({_line(inner.exception())}): the "
+        elif isinstance(error, ImportError):
+            self._fail(outer, ClusterError(f"a dask worker cannot run pocket ({_line(error)}): the "
                                            f"workers need this pocket ({version()}) installed; {_RESUME}"))
-        elif inner.exception() is not None:
-            self._fail(outer, inner.exception())
+        elif error is not None:
+            self._fail(outer, error)
         else:
             with self._lock:
                 if outer not in self._pending:

@@ -214,6 +214,7 @@ def design(radius, height, modulus, material, force, height_ratio=None, *, thick
         fhat = force / (p_i * math.pi * radius**2)
     else:
         height = lengths["height"]
+        assert target is not None  # a height without a thickness: _target gave the pressed height's target
         ratio = target if key == "height_ratio" else target / height
         if not ratio < 1.0:
             raise InputError(f"{name('pressed_height')} = {quote(pressed_height)}, but it must be below the "

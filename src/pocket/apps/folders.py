@@ -239,7 +239,7 @@ def write_files(texts: dict, *, of: str | None = None, record: bool = True) -> N
     at the end, which need no space, come one after the other.
     """
     texts = {pathlib.Path(path).absolute(): text for path, text in texts.items()}
-    folders = {path.parent: {} for path in texts}
+    folders: dict[pathlib.Path, dict[str, str]] = {path.parent: {} for path in texts}
     for path, text in texts.items():
         folders[path.parent][path.name] = text
     if record:

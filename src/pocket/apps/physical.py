@@ -183,14 +183,15 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
 def forces(pocket: Pocket) -> list[float]:
     """The case's loads as forces Fhat (``load_forces``); the first load the model does not reach is its
     ``OutOfRangeError``."""
-    out = load_forces(pocket)
-    for value in out:
+    out = []
+    for value in load_forces(pocket):
         if isinstance(value, OutOfRangeError):
             raise value
+        out.append(value)
     return out
 
 
-def load_forces(pocket: Pocket) -> list:
+def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     """Each of the case's loads as a force Fhat (heights of the indenter's lowest point solved for their force: by
     the solver's ``compress_height`` where its record lists it, else by a search on its forces, ``force_where``),
     or, for a load the model does not reach, the ``OutOfRangeError`` saying why.
@@ -200,7 +201,7 @@ def load_forces(pocket: Pocket) -> list:
     case gives it, with the bound in its unit.
     """
     case = pocket.case
-    out = []
+    out: list[float | OutOfRangeError] = []
     if case.load_kind == "forces":
         for index, force in enumerate(case.loads):
             key, given = f"loads.forces[{index}]", case.as_given(f"loads.forces[{index}]")

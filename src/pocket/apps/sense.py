@@ -198,7 +198,7 @@ def linearity(forces, pressures) -> float:
     scale = y.max() - y.min()
     if not scale > 0.0:
         raise InputError("the pressure does not change over the force range, so it has no full scale")
-    slopes = set()
+    slopes: set[float] = set()
     for sign in (1, -1):
         hull = _hull(x, y, sign)
         slopes.update((y[b] - y[a]) / (x[b] - x[a]) for a, b in zip(hull[:-1], hull[1:], strict=True) if x[b] > x[a])

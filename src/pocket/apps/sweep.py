@@ -79,7 +79,7 @@ MAX_POINTS = 100_000
 def _row(solver: str, material, pressure_initial: float, force: float, options: dict, state=None,
          error: Exception | None = None) -> dict:
     """The CSV row (dict of COLUMNS) of one point: its ``state``, or the ``error`` that stopped it."""
-    row = dict.fromkeys(COLUMNS, "")
+    row: dict[str, object] = dict.fromkeys(COLUMNS, "")
     if isinstance(error, OutOfRangeError):
         row.update(status="out_of_range", message=line(error))
     elif error is not None:

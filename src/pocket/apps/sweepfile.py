@@ -57,7 +57,7 @@ from .rubbers import PARAMETERS
 try:
     import fcntl
 except ImportError:  # not a POSIX system: no lock
-    fcntl = None
+    fcntl = None  # type: ignore[assignment]
 
 __all__ = ["COLUMNS", "CONTACT", "IDENTITY", "STATUSES", "Journal", "identity", "indenter_text", "key", "line",
            "options_text", "rows_csv"]
@@ -177,7 +177,8 @@ def _parse(data: bytes, path) -> tuple[dict, int]:
         raise _not_a_sweep(path, "it is not UTF-8 text") from None
     lines = csv.reader(io.StringIO(text, newline=""))
     next(lines)  # the header, checked by Journal
-    rows, lines_of = {}, {}
+    rows: dict = {}
+    lines_of: dict = {}
     for number, values in enumerate(lines, start=2):
         row = dict(zip(COLUMNS, values, strict=False))
         try:
@@ -208,7 +209,8 @@ class Journal:
     point to its row, ``path`` is the file."""
 
     def __init__(self, path: pathlib.Path):
-        self.path, self.made, self.end, self.locked = path, created_parents(path), None, False
+        self.path, self.made, self.locked = path, created_parents(path), False
+        self.end: int | None = None  # bytes of complete rows, once the file is read (then never None)
         try:
             for folder in self.made:
                 folder.mkdir(exist_ok=True)
@@ -256,6 +258,7 @@ class Journal:
         self.locked = True
 
     def _write(self, data: bytes) -> None:
+        assert self.end is not None  # the file was read when it was opened
         try:
             self.file.truncate(self.end)  # a line cut by an earlier run
             self.file.seek(self.end)

@@ -296,7 +296,7 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
     with staged(target, KIND, of) as partial:
         width = max(4, len(str(len(states) - 1)))
         pressed = all(hasattr(s, "indenter") for s in states)
-        files = {"profile": [], "surface": [], **({"indenter": []} if pressed else {})}
+        files: dict[str, list] = {"profile": [], "surface": [], **({"indenter": []} if pressed else {})}
         reach = reach_of([_profile(s) for s in states])
         for k, state in enumerate(states):
             stem = f"step_{k:0{width}d}"
