@@ -24,6 +24,11 @@ would pass the dip and return a state of the second rising branch.
 A rubber that locks (Gent) stops the volume path at its locking stretch
 (``steps.near_locking``): a volume target past it is ``OutOfRangeError``.
 
+Every path stops at the pole stretch ``STRETCH_LIMIT`` (``pocket.core.errors``), as the shooting
+solver's marches do: a pressure or volume reached only past it, or not by it, is the one
+``OutOfRangeError`` both solvers give (``past_stretch_limit``), checked on the state the path
+lands on too. The path's range in log V (``LOG_V_RANGE``) is wide enough that it ends there first.
+
 Remembered: ``inflated_at`` solves a pressure target once per (law, mesh, Phat, tolerances)
 among the last ``REMEMBERED`` asked in the process. Every entry point starts from the
 inflated state, and the applications call them many times on one pocket (a design's or a
@@ -38,11 +43,12 @@ import collections
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError, OutOfRangeError, above_pressure_maximum
+from pocket.core.errors import STRETCH_LIMIT, ConvergenceError, above_pressure_maximum, past_stretch_limit
 
 from .continuation import follow
 from .model import FREE, Control, Model, forms
 from .newton import Tolerances
+from .post import pole_stretch
 from .steps import dome, land, near_locking, solve
 
 __all__ = ["to_pressure", "to_volume", "volume", "inflated_at", "forget", "REMEMBERED"]
@@ -52,10 +58,11 @@ REMEMBERED = 8
 _SOLVED: collections.OrderedDict = collections.OrderedDict()
 
 P_START = 1e-3
-#: how far past the start volume (V/R^3 ~ 0.1 at Phat_0 = 1e-3) a pressure target is sought: a rubber
-#: without a pressure maximum reaches Phat = 2 at V/R^3 ~ 1.6e3 (alpha = 0.1), far past 1e3 times the start
-LOG_V_RANGE = np.log(1e6)
-_FIRST_STEP, _MAX_STEP = 0.05, 0.1  # log V steps of 0.35 to 0.7
+#: how far past the start volume (V/R^3 ~ 0.1 at Phat_0 = 1e-3) a pressure target is sought: far past the
+#: pole stretch STRETCH_LIMIT, where the path stops (V/R^3 ~ 5e5 there for alpha = 0.0573)
+LOG_V_RANGE = np.log(1e12)
+#: the path's first, largest and smallest steps in log V
+_FIRST_STEP, _MAX_STEP, _MIN_STEP = 0.05 * np.log(1e6), 0.1 * np.log(1e6), 1e-5 * np.log(1e6)
 #: a step whose slope dP/dlog V is below this fraction of the step's before it is searched for a maximum
 #: inside it (a rubber without one flattens by a few per cent a step; at a maximum the slope goes to 0)
 FLATTENING = 0.25
@@ -85,6 +92,7 @@ def to_volume(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray,
     try:
         for _, y, iterations in follow(along, y, np.log(volume(model, y)), np.log(target), name="log(V/R^3)"):
             total += iterations
+            _within_limit(model, y, f"volume = {target!r}")
     except ConvergenceError as err:
         near_locking(model, y, FREE, err, f"volume = {target!r}", bounded=True)
         raise
@@ -105,26 +113,35 @@ def to_pressure(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
 
     log_v0 = np.log(volume(model, y))
     path = [(log_v0, y)]
+    what = f"Phat = {target!r}"
     try:
         for log_v, y, iterations in _states(along, y, log_v0):
             total += iterations
             if y[-1] >= target:
                 y, iterations = land(along, at_target, path[-1], (log_v, y), _pressure, target)
-                return y, total + iterations
+                return _within_limit(model, y, what), total + iterations
             if y[-1] < path[-1][1][-1] and len(path) >= 2:
                 peak, iterations = _pressure_peak(along, path[-2], path[-1], (log_v, y))
                 total += iterations
                 if peak[1][-1] < target:
                     raise above_pressure_maximum(target, peak[1][-1], float(np.exp(peak[0])), model.law.label)
                 y, iterations = land(along, at_target, path[-2], peak, _pressure, target)
-                return y, total + iterations
+                return _within_limit(model, y, what), total + iterations
+            _within_limit(model, y, what)
             path.append((log_v, y))
     except ConvergenceError as err:
         near_locking(model, path[-1][1], FREE, err, f"Phat = {target:.6g}", bounded=False)
         raise
-    raise OutOfRangeError(
-        f"Phat = {target:.6g} not reached up to V/R^3 = {np.exp(log_v):.4g} on the first branch"
-    )
+    raise ConvergenceError(f"the volume path to {what} ended at V/R^3 = {np.exp(log_v):.4g} before the pole "
+                           f"stretch {STRETCH_LIMIT:g}", load=float(np.exp(log_v)))
+
+
+def _within_limit(model: Model, y: np.ndarray, what: str) -> np.ndarray:
+    """``y``, a state on the way to (or at) the target ``what``, if its pole stretch is within ``STRETCH_LIMIT``;
+    else the refusal every solver gives."""
+    if pole_stretch(model, y, FREE) > STRETCH_LIMIT:
+        raise past_stretch_limit(what)
+    return y
 
 
 def _states(along, y, log_v0):
@@ -133,7 +150,8 @@ def _states(along, y, log_v0):
     (module docstring)."""
     last: list[tuple[float, np.ndarray]] = [(log_v0, y)]
     for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)",
-                                       first_step=_FIRST_STEP, max_step=_MAX_STEP):
+                                       first_step=_FIRST_STEP / LOG_V_RANGE, max_step=_MAX_STEP / LOG_V_RANGE,
+                                       min_step=_MIN_STEP / LOG_V_RANGE):
         if len(last) == 2:
             (s_a, y_a), (s_m, y_m) = last
             before, now = (y_m[-1] - y_a[-1]) / (s_m - s_a), (y[-1] - y_m[-1]) / (log_v - s_m)

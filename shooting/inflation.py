@@ -56,7 +56,14 @@ from __future__ import annotations
 import math
 
 from pocket.core import smallstrain
-from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError, above_pressure_maximum
+from pocket.core.errors import (
+    STRETCH_LIMIT,
+    ConvergenceError,
+    InputError,
+    OutOfRangeError,
+    above_pressure_maximum,
+    past_stretch_limit,
+)
 from pocket.core.inputs import check_positive
 from pocket.core.materials import as_material
 from pocket.core.states import InflatedState
@@ -70,7 +77,12 @@ from .tensions import inside, tensions
 __all__ = ["inflate", "inflation_curve", "inflate_volume", "pressure_of_stretch"]
 
 _GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
-_S_MAX = 20.0  # s beyond which the marches give up
+_S_MAX = STRETCH_LIMIT - 1.0  # s at which the marches stop (``pocket.core.errors.STRETCH_LIMIT``)
+#: a march step whose slope d log p / d log s is below this is searched for a maximum inside it: the slope is
+#: 1.5 at small strain and about 1 at large stretch, and it changes by at most 0.2 a step on the branches computed;
+#: a maximum with a minimum after it inside one step (a neo-Hookean-like dip) makes the step's slope about 0
+_FLAT = 0.1
+_SUBSTEPS = 8  # the points computed inside such a step
 _S_RTOL = 1e-13  # relative accuracy of the root in s
 _P_RTOL = 1e-14  # relative accuracy of the pressure p(s) where its value matters
 _MARCH_RTOL = 1e-9  # ... and where only its trend matters (the march)
@@ -204,40 +216,55 @@ def _first_branch(value, target, s, what, limit=math.inf, above=None):
     """s_lo < s_hi with value(s_lo) < target <= value(s_hi) on the first branch, and whether s_hi is
     a maximum of ``value`` (a pressure or a volume, None where there is none; ``value(s, True)``
     to full accuracy). Raises OutOfRangeError when value has a maximum below ``target`` (``above(s, peak)``
-    if given, the error to raise for the maximum ``peak`` at strain s), or when the march reaches the
-    law's locking strain ``limit`` (halving the way to it) without reaching it."""
+    if given, the error to raise for the maximum ``peak`` at strain s), when the march reaches the
+    law's locking strain ``limit`` (halving the way to it) without reaching it, or when it reaches the pole
+    stretch ``STRETCH_LIMIT`` without reaching it (``what``: the target's name, as ``"Phat"``)."""
+    s = min(s, _S_MAX)  # a start estimate past the limit (a large target's) is no state's
     while True:
         start = value(s)
         while start is None or start >= target:
             s /= _GROWTH**4
             start = value(s)
         history = [(s, start)]
-        while True:
+        falling = False
+        while not falling:
             if s >= _S_MAX:
-                raise OutOfRangeError(f"{what} = {target:.6g} is not reached for lambda_0 up to {1 + _S_MAX:g}")
+                raise past_stretch_limit(f"{what} = {target!r}")
             if s >= limit * (1.0 - _LOCK_RTOL):
                 raise OutOfRangeError(f"{what} = {target:.6g} is not reached below the rubber's locking stretch "
                                       f"(lambda_0 = {1 + limit:.10g}, where I1 - 3 = Jm)")
-            s = min(s * _GROWTH, _S_MAX, 0.5 * (s + limit))
-            current = value(s)
-            if current is not None and current >= target:
-                return history[-1][0], s, False
-            if current is not None and current >= history[-1][1]:
+            for s, current in _step(value, history, min(s * _GROWTH, _S_MAX, 0.5 * (s + limit))):
+                if current is not None and current >= target:
+                    return history[-1][0], s, False
+                if current is None or current < history[-1][1]:
+                    falling = True
+                    break
                 history.append((s, current))
-                continue
-            if len(history) == 1:  # falling from the start: it lies past a maximum; start lower
-                s = history[0][0] / _GROWTH**4
-                break
-            lo = history[-2][0]
-            peak_s, peak = brent.maximum(lambda x: _minus_inf(value(x, True)), lo, s, xtol=_PEAK_RTOL * s)
-            if peak < target and above is not None:
-                raise above(peak_s, peak)
-            if peak < target:
-                raise OutOfRangeError(
-                    f"no inflated state on the first branch: {what} = {target:.6g} is above "
-                    f"its maximum {peak:.6g} (reached at lambda_0 = {1 + peak_s:.6g})"
-                )
-            return lo, peak_s, True
+        if len(history) == 1:  # falling from the start: it lies past a maximum; start lower
+            s = history[0][0] / _GROWTH**4
+            continue
+        lo = history[-2][0]
+        peak_s, peak = brent.maximum(lambda x: _minus_inf(value(x, True)), lo, s, xtol=_PEAK_RTOL * s)
+        if peak < target and above is not None:
+            raise above(peak_s, peak)
+        if peak < target:
+            raise OutOfRangeError(
+                f"no inflated state on the first branch: {what} = {target:.6g} is above "
+                f"its maximum {peak:.6g} (reached at lambda_0 = {1 + peak_s:.6g})"
+            )
+        return lo, peak_s, True
+
+
+def _step(value, history, s):
+    """The march's points (s, value(s)) up to ``s`` from the last of ``history``: ``s`` alone, or with
+    ``_SUBSTEPS`` points before it where the branch is flat (its slope d log(value) / d log(s) over the step
+    below ``_FLAT``), which is where a maximum narrower than a step hides."""
+    current = value(s)
+    s_m, v_m = history[-1]
+    if current is None or current < v_m or math.log(current / v_m) >= _FLAT * math.log(s / s_m):
+        return [(s, current)]
+    inside = [s_m * (s / s_m) ** (k / (_SUBSTEPS + 1)) for k in range(1, _SUBSTEPS + 1)]
+    return [(x, value(x)) for x in inside] + [(s, current)]
 
 
 def _minus_inf(value):
@@ -315,7 +342,7 @@ def _inflated(material, law, pressure, rtol, tol, branch, start) -> tuple[Inflat
         _, y, _ = shot_pole(1.0 + s, law, law.pressure_factor * peak, tol)
         return above_pressure_maximum(pressure, peak, y[4], f"lambda_0 = {1 + s:.6g}")
 
-    lo, hi, peak = _first_branch(branch.phat, pressure, start, "pressure", law.stretch_limit - 1.0, above)
+    lo, hi, peak = _first_branch(branch.phat, pressure, start, "Phat", law.stretch_limit - 1.0, above)
 
     def miss(s):
         return _signed(_landing(s, law, p, tol, what))
