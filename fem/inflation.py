@@ -40,6 +40,7 @@ state is the one a fresh solve gives, bit for bit.
 from __future__ import annotations
 
 import collections
+import itertools
 
 import numpy as np
 
@@ -66,8 +67,12 @@ _FIRST_STEP, _MAX_STEP, _MIN_STEP = 0.05 * np.log(1e6), 0.1 * np.log(1e6), 1e-5 
 #: a step whose slope dP/dlog V is below this fraction of the step's before it is searched for a maximum
 #: inside it (a rubber without one flattens by a few per cent a step; at a maximum the slope goes to 0)
 FLATTENING = 0.25
+#: ... or where its slope d log P / d log V is below this (it is 3 at small strain, 1/3 at large stretch)
+FLAT = 0.03
 #: the states solved inside such a step
 SUBSTEPS = 8
+#: the step in log V of the slope d log P / d log V where it is least inside such a step (``_least_slope``)
+SLOPE_STEP = 1e-4
 _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
@@ -146,8 +151,7 @@ def _within_limit(model: Model, y: np.ndarray, what: str) -> np.ndarray:
 
 def _states(along, y, log_v0):
     """(log V, y, Newton iterations) along the volume path from ``y`` at log V = ``log_v0`` to
-    ``LOG_V_RANGE`` past it, with ``SUBSTEPS`` states more inside each step where the path flattens
-    (module docstring)."""
+    ``LOG_V_RANGE`` past it, with the states of ``_inside`` more where a step flattens (module docstring)."""
     last: list[tuple[float, np.ndarray]] = [(log_v0, y)]
     for log_v, y, iterations in follow(along, y, log_v0, log_v0 + LOG_V_RANGE, name="log(V/R^3)",
                                        first_step=_FIRST_STEP / LOG_V_RANGE, max_step=_MAX_STEP / LOG_V_RANGE,
@@ -155,13 +159,46 @@ def _states(along, y, log_v0):
         if len(last) == 2:
             (s_a, y_a), (s_m, y_m) = last
             before, now = (y_m[-1] - y_a[-1]) / (s_m - s_a), (y[-1] - y_m[-1]) / (log_v - s_m)
-            if 0.0 <= now < FLATTENING * before:
-                guess = y_m
-                for s in np.linspace(s_m, log_v, SUBSTEPS + 2)[1:-1]:
-                    guess, k = along(s, guess)
-                    yield s, guess, k
+            if 0.0 <= now < max(FLATTENING * before, FLAT * y[-1]):
+                yield from _inside(along, (s_m, y_m), log_v)
         yield log_v, y, iterations
         last = [*last, (log_v, y)][-2:]
+
+
+def _inside(along, start, stop):
+    """(log V, y, iterations) of ``SUBSTEPS`` states from ``start`` = (log V, y) to log V = ``stop``, and, where
+    they all rise but the least slope d log P / d log V near them is negative (a maximum narrower than a substep,
+    ``_least_slope``), up to the two states about that slope instead, the second below the first."""
+    states, guess = [], start[1]
+    for s in np.linspace(start[0], stop, SUBSTEPS + 2)[1:-1]:
+        guess, k = along(s, guess)
+        states.append((s, guess, k))
+    chain = [start, *[(s, y) for s, y, _ in states]]
+    if all(b[1][-1] >= a[1][-1] for a, b in itertools.pairwise(chain)):
+        s, slope, pair = _least_slope(along, chain)
+        if slope < 0.0:
+            states = [state for state in states if state[0] < s] + pair
+    yield from states
+
+
+def _least_slope(along, chain):
+    """(log V, the slope d log P / d log V there, the states at log V and log V + ``SLOPE_STEP`` as
+    (log V, y, iterations)) where the slope is least, near the least of the slopes between the states
+    (log V, y) of ``chain``: golden sections on the slope over ``SLOPE_STEP``, each state by Newton from the
+    nearest one of ``chain``."""
+    slopes = [np.log(b[1][-1] / a[1][-1]) / (b[0] - a[0]) for a, b in itertools.pairwise(chain)]
+    k = int(np.argmin(slopes))
+    lo, hi = chain[max(k - 1, 0)][0], chain[min(k + 2, len(chain) - 1)][0]
+    pairs = {}
+
+    def minus_slope(s):
+        y, k = along(s, min(chain, key=lambda item: abs(item[0] - s))[1])
+        y_up, k_up = along(s + SLOPE_STEP, y)
+        pairs[s] = [(s, y, k), (s + SLOPE_STEP, y_up, k_up)]
+        return -np.log(y_up[-1] / y[-1]) / SLOPE_STEP
+
+    s, minus = _golden_maximum(minus_slope, lo, hi, SLOPE_STEP)
+    return s, -minus, pairs[s]
 
 
 def inflated_at(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray, int]:
@@ -213,17 +250,29 @@ def _pressure_peak(along, a, m, b, rtol: float = 1e-7):
 
     Returns ((log V, y) at the peak, iterations).
     """
-    (lo, _), best, (hi, _) = a, m, b
-    known, total = [a, m, b], 0
-    while hi - lo > rtol:
-        s1, s2 = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
-        y1, k1 = _reach(along, known, s1)
-        y2, k2 = _reach(along, known, s2)
-        known += [(s1, y1), (s2, y2)]
-        total += k1 + k2
-        if y1[-1] >= y2[-1]:
-            hi, cand = s2, (s1, y1)
+    known, counts = [a, m, b], []
+
+    def pressure(s):
+        y, k = _reach(along, known, s)
+        known.append((s, y))
+        counts.append(k)
+        return y[-1]
+
+    _golden_maximum(pressure, a[0], b[0], rtol)
+    return max(known[1:], key=lambda item: item[1][-1]), sum(counts)
+
+
+def _golden_maximum(f, lo: float, hi: float, xtol: float) -> tuple[float, float]:
+    """(x, f(x)) at a local maximum of ``f`` on [lo, hi], located to within ``xtol`` by golden sections."""
+    x1, x2 = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
+    f1, f2 = f(x1), f(x2)
+    while hi - lo > xtol:
+        if f1 >= f2:
+            hi, x2, f2 = x2, x1, f1
+            x1 = hi - _GOLDEN * (hi - lo)
+            f1 = f(x1)
         else:
-            lo, cand = s1, (s2, y2)
-        best = cand if cand[1][-1] >= best[1][-1] else best
-    return best, total
+            lo, x1, f1 = x1, x2, f2
+            x2 = lo + _GOLDEN * (hi - lo)
+            f2 = f(x2)
+    return (x1, f1) if f1 >= f2 else (x2, f2)

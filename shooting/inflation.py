@@ -53,6 +53,7 @@ and so is a final shot that does not land on the clamp.
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from pocket.core import smallstrain
@@ -83,6 +84,7 @@ _S_MAX = STRETCH_LIMIT - 1.0  # s at which the marches stop (``pocket.core.error
 #: a maximum with a minimum after it inside one step (a neo-Hookean-like dip) makes the step's slope about 0
 _FLAT = 0.1
 _SUBSTEPS = 8  # the points computed inside such a step
+_SLOPE_STEP = 1e-4  # the relative step in s of the slope where it is least
 _S_RTOL = 1e-13  # relative accuracy of the root in s
 _P_RTOL = 1e-14  # relative accuracy of the pressure p(s) where its value matters
 _MARCH_RTOL = 1e-9  # ... and where only its trend matters (the march)
@@ -256,15 +258,43 @@ def _first_branch(value, target, s, what, limit=math.inf, above=None):
 
 
 def _step(value, history, s):
-    """The march's points (s, value(s)) up to ``s`` from the last of ``history``: ``s`` alone, or with
-    ``_SUBSTEPS`` points before it where the branch is flat (its slope d log(value) / d log(s) over the step
-    below ``_FLAT``), which is where a maximum narrower than a step hides."""
+    """The march's points (s, value(s)) up to ``s`` from the last of ``history``: ``s`` alone, or where the
+    branch is flat (its slope d log(value) / d log(s) over the step below ``_FLAT``), which is where a maximum
+    narrower than a step hides, ``_SUBSTEPS`` points before it and, if the least slope there (``_least_slope``)
+    is negative, the two points about it where the branch falls."""
     current = value(s)
     s_m, v_m = history[-1]
     if current is None or current < v_m or math.log(current / v_m) >= _FLAT * math.log(s / s_m):
         return [(s, current)]
-    inside = [s_m * (s / s_m) ** (k / (_SUBSTEPS + 1)) for k in range(1, _SUBSTEPS + 1)]
-    return [(x, value(x)) for x in inside] + [(s, current)]
+    chain = [(s_m, v_m)] + [(x, value(x)) for x in _between(s_m, s, _SUBSTEPS)] + [(s, current)]
+    if any(b is None or b < a for (_, a), (_, b) in itertools.pairwise(chain)):
+        return chain[1:]
+    x, slope = _least_slope(value, chain)
+    if slope >= 0.0:
+        return chain[1:]
+    x_up = x * (1.0 + _SLOPE_STEP)
+    return [point for point in chain[1:] if point[0] < x] + [(x, value(x, True)), (x_up, value(x_up, True))]
+
+
+def _between(a, b, n):
+    """``n`` points between a and b > a, evenly spaced in log."""
+    return [a * (b / a) ** (k / (n + 1)) for k in range(1, n + 1)]
+
+
+def _least_slope(value, chain):
+    """(s, the slope d log(value) / d log(s) there) where the slope is least, near the least of the slopes between
+    the points (s, value) of ``chain``: golden sections on the slope over ``_SLOPE_STEP``, from the full-accuracy
+    values (1e-14), which resolve a slope of ~1e-10 (a maximum 1e-9 above the minimum after it, on a branch
+    flat to 1e-4 in p: Mooney-Rivlin alpha within 1e-5 of where the maximum vanishes, ~0.0554)."""
+    slopes = [math.log(b / a) / math.log(y / x) for (x, a), (y, b) in itertools.pairwise(chain)]
+    k = slopes.index(min(slopes))
+    lo, hi = chain[max(k - 1, 0)][0], chain[min(k + 2, len(chain) - 1)][0]
+
+    def slope(x):
+        return math.log(value(x * (1.0 + _SLOPE_STEP), True) / value(x, True)) / math.log1p(_SLOPE_STEP)
+
+    x, minus = brent.maximum(lambda x: -slope(x), lo, hi, xtol=_SLOPE_STEP * lo)
+    return x, -minus
 
 
 def _minus_inf(value):
