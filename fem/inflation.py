@@ -17,9 +17,13 @@ just below the value where the maximum disappears, P(V) has a dip so shallow and
 narrow (alpha = 0.0547: Phat 0.73277 at V/R^3 = 8.2, 0.73246 at 12, back to
 0.73277 by 16) that the states on either side of it both rise. A local maximum
 flattens the path first, so where the slope dP/dlog V of a step falls below
-``FLATTENING`` times the step's before it, ``SUBSTEPS`` states are solved
-inside it and watched like the others (``_states``); without that the path
-would pass the dip and return a state of the second rising branch.
+``FLATTENING`` times the step's before it, or its slope d log P / d log V below
+``FLAT``, ``SUBSTEPS`` states are solved inside it and watched like the others
+(``_states``); without that the path would pass the dip and return a state of
+the second rising branch. Nearer the alpha where the dip vanishes (0.05544) it is
+narrower than a substep (alpha = 0.05542: 1.4e-9 of P deep): where the
+substeps all rise, the least slope among them is located by golden sections on the
+slope over ``SLOPE_STEP`` (``_least_slope``), and a negative one is a fall.
 
 A rubber that locks (Gent) stops the volume path at its locking stretch
 (``steps.near_locking``): a volume target past it is ``OutOfRangeError``.

@@ -22,8 +22,15 @@ golden sections locate it, and above it no first-branch state exists
 (``OutOfRangeError`` naming the maximum). For alpha < 0 the pole tension
 (1 - l^-6)(1 + alpha l^2) vanishes at l^2 = -1/alpha: p(s) exists only below, and
 the maximum lies there. A march that starts past a maximum (a target far above
-it) is restarted lower. A rubber that locks (Gent: I1 - 3 < Jm) has a largest pole
-stretch: the march halves its way to it instead of stepping past it, and a pressure or
+it) is restarted lower. A maximum can hide inside one step, with the minimum after it: for Mooney-Rivlin
+alpha from 0.0547 to 0.05544, p(s) has a dip so shallow and narrow (alpha = 0.05542: 1.4e-9 of p deep, over
+3% of s) that the points on either side of it both rise. The slope d log p / d log s of the step over it is then
+about 0, so a step of slope below ``_FLAT`` is marched in ``_SUBSTEPS`` smaller steps, and its least slope is
+located by golden sections on the slope over 1e-4 of s: a negative one is a fall, and the maximum before it is
+located as above. Without that the march passes the dip and returns a state of the second rising branch. The
+marches end at the pole stretch ``STRETCH_LIMIT`` (``pocket.core.errors``, the reason there): a target not reached
+by it is an OutOfRangeError, the one the finite-element solver gives. A rubber that locks (Gent: I1 - 3 < Jm)
+has a largest pole stretch: the march halves its way to it instead of stepping past it, and a pressure or
 volume not reached before it is an OutOfRangeError naming that stretch.
 
 A prestretched sheet (``Law.prestretch`` > 1) is taut before any pressure: at small pressure it is a
