@@ -20,12 +20,13 @@ __all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "
 #: what happens at the end of the compression range (unless the force has a maximum first)
 CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
 
-#: the largest pole stretch lambda_0 at which every solver seeks an inflated state. A rubber without a pressure
-#: maximum near it (Mooney-Rivlin alpha just above 0.055) reaches Phat = 2 only at lambda_0 ~ 28, V/R^3 ~ 1e4;
-#: those are states of the model and are solved. But a first branch may climb towards a pressure it never reaches,
-#: and a search must end somewhere that says why: at lambda_0 = 100 the pole has thinned 1e4-fold and the
-#: sheet at the clamp is stretched some 2000-fold, far past the break of any rubber (stretches of 5 to 10),
-#: where no strain-energy law fitted to one means anything. The solvers agree there still (to 1e-4 in V).
+#: the largest pole stretch lambda_0 at which the membrane solvers (shooting, FE) seek an inflated state. A rubber
+#: whose pressure maximum has just vanished (Mooney-Rivlin alpha just above 0.05544) reaches Phat = 2 only at
+#: lambda_0 ~ 28, V/R^3 ~ 1e4: those are states of the model and are solved. But a first branch may climb towards
+#: a pressure it never reaches, and a search must end somewhere that says why: at lambda_0 = 100 the pole has
+#: thinned 1e4-fold and the sheet at the clamp is stretched some 2000-fold, far past the break of any rubber
+#: (stretches of 5 to 10), where no strain-energy law fitted to one means anything. The two solvers agree there
+#: still (the FE on its default mesh to 1e-4 in V).
 STRETCH_LIMIT = 100.0
 
 
