@@ -22,8 +22,15 @@ golden sections locate it, and above it no first-branch state exists
 (``OutOfRangeError`` naming the maximum). For alpha < 0 the pole tension
 (1 - l^-6)(1 + alpha l^2) vanishes at l^2 = -1/alpha: p(s) exists only below, and
 the maximum lies there. A march that starts past a maximum (a target far above
-it) is restarted lower. A rubber that locks (Gent: I1 - 3 < Jm) has a largest pole
-stretch: the march halves its way to it instead of stepping past it, and a pressure or
+it) is restarted lower. A maximum can hide inside one step, with the minimum after it: for Mooney-Rivlin
+alpha from 0.0547 to 0.05544, p(s) has a dip so shallow and narrow (alpha = 0.05542: 1.4e-9 of p deep, over
+3% of s) that the points on either side of it both rise. The slope d log p / d log s of the step over it is then
+about 0, so a step of slope below ``_FLAT`` is marched in ``_SUBSTEPS`` smaller steps, and its least slope is
+located by golden sections on the slope over 1e-4 of s: a negative one is a fall, and the maximum before it is
+located as above. Without that the march passes the dip and returns a state of the second rising branch. The
+marches end at the pole stretch ``STRETCH_LIMIT`` (``pocket.core.errors``, the reason there): a target not reached
+by it is an OutOfRangeError, the one the finite-element solver gives. A rubber that locks (Gent: I1 - 3 < Jm)
+has a largest pole stretch: the march halves its way to it instead of stepping past it, and a pressure or
 volume not reached before it is an OutOfRangeError naming that stretch.
 
 A prestretched sheet (``Law.prestretch`` > 1) is taut before any pressure: at small pressure it is a
@@ -53,10 +60,18 @@ and so is a final shot that does not land on the clamp.
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from pocket.core import smallstrain
-from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError, above_pressure_maximum
+from pocket.core.errors import (
+    STRETCH_LIMIT,
+    ConvergenceError,
+    InputError,
+    OutOfRangeError,
+    above_pressure_maximum,
+    past_stretch_limit,
+)
 from pocket.core.inputs import check_positive
 from pocket.core.materials import as_material
 from pocket.core.states import InflatedState
@@ -70,7 +85,13 @@ from .tensions import inside, tensions
 __all__ = ["inflate", "inflation_curve", "inflate_volume", "pressure_of_stretch"]
 
 _GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
-_S_MAX = 20.0  # s beyond which the marches give up
+_S_MAX = STRETCH_LIMIT - 1.0  # s at which the marches stop (``pocket.core.errors.STRETCH_LIMIT``)
+#: a march step whose slope d log p / d log s is below this is searched for a maximum inside it: the slope is
+#: 1.5 at small strain and about 1 at large stretch, and it changes by at most 0.2 a step on the branches computed;
+#: a maximum with a minimum after it inside one step (a neo-Hookean-like dip) makes the step's slope about 0
+_FLAT = 0.1
+_SUBSTEPS = 8  # the points computed inside such a step
+_SLOPE_STEP = 1e-4  # the relative step in s of the slope where it is least
 _S_RTOL = 1e-13  # relative accuracy of the root in s
 _P_RTOL = 1e-14  # relative accuracy of the pressure p(s) where its value matters
 _MARCH_RTOL = 1e-9  # ... and where only its trend matters (the march)
@@ -204,40 +225,83 @@ def _first_branch(value, target, s, what, limit=math.inf, above=None):
     """s_lo < s_hi with value(s_lo) < target <= value(s_hi) on the first branch, and whether s_hi is
     a maximum of ``value`` (a pressure or a volume, None where there is none; ``value(s, True)``
     to full accuracy). Raises OutOfRangeError when value has a maximum below ``target`` (``above(s, peak)``
-    if given, the error to raise for the maximum ``peak`` at strain s), or when the march reaches the
-    law's locking strain ``limit`` (halving the way to it) without reaching it."""
+    if given, the error to raise for the maximum ``peak`` at strain s), when the march reaches the
+    law's locking strain ``limit`` (halving the way to it) without reaching it, or when it reaches the pole
+    stretch ``STRETCH_LIMIT`` without reaching it (``what``: the target's name, as ``"Phat"``)."""
+    s = min(s, _S_MAX)  # a start estimate past the limit (a large target's) is no state's
     while True:
         start = value(s)
         while start is None or start >= target:
             s /= _GROWTH**4
             start = value(s)
         history = [(s, start)]
-        while True:
+        falling = False
+        while not falling:
             if s >= _S_MAX:
-                raise OutOfRangeError(f"{what} = {target:.6g} is not reached for lambda_0 up to {1 + _S_MAX:g}")
+                raise past_stretch_limit(f"{what} = {target!r}")
             if s >= limit * (1.0 - _LOCK_RTOL):
                 raise OutOfRangeError(f"{what} = {target:.6g} is not reached below the rubber's locking stretch "
                                       f"(lambda_0 = {1 + limit:.10g}, where I1 - 3 = Jm)")
-            s = min(s * _GROWTH, _S_MAX, 0.5 * (s + limit))
-            current = value(s)
-            if current is not None and current >= target:
-                return history[-1][0], s, False
-            if current is not None and current >= history[-1][1]:
+            for s, current in _step(value, history, min(s * _GROWTH, _S_MAX, 0.5 * (s + limit))):
+                if current is not None and current >= target:
+                    return history[-1][0], s, False
+                if current is None or current < history[-1][1]:
+                    falling = True
+                    break
                 history.append((s, current))
-                continue
-            if len(history) == 1:  # falling from the start: it lies past a maximum; start lower
-                s = history[0][0] / _GROWTH**4
-                break
-            lo = history[-2][0]
-            peak_s, peak = brent.maximum(lambda x: _minus_inf(value(x, True)), lo, s, xtol=_PEAK_RTOL * s)
-            if peak < target and above is not None:
-                raise above(peak_s, peak)
-            if peak < target:
-                raise OutOfRangeError(
-                    f"no inflated state on the first branch: {what} = {target:.6g} is above "
-                    f"its maximum {peak:.6g} (reached at lambda_0 = {1 + peak_s:.6g})"
-                )
-            return lo, peak_s, True
+        if len(history) == 1:  # falling from the start: it lies past a maximum; start lower
+            s = history[0][0] / _GROWTH**4
+            continue
+        lo = history[-2][0]
+        peak_s, peak = brent.maximum(lambda x: _minus_inf(value(x, True)), lo, s, xtol=_PEAK_RTOL * s)
+        if peak < target and above is not None:
+            raise above(peak_s, peak)
+        if peak < target:
+            raise OutOfRangeError(
+                f"no inflated state on the first branch: {what} = {target:.6g} is above "
+                f"its maximum {peak:.6g} (reached at lambda_0 = {1 + peak_s:.6g})"
+            )
+        return lo, peak_s, True
+
+
+def _step(value, history, s):
+    """The march's points (s, value(s)) up to ``s`` from the last of ``history``: ``s`` alone, or where the
+    branch is flat (its slope d log(value) / d log(s) over the step below ``_FLAT``), which is where a maximum
+    narrower than a step hides, ``_SUBSTEPS`` points before it and, if the least slope there (``_least_slope``)
+    is negative, the two points about it where the branch falls."""
+    current = value(s)
+    s_m, v_m = history[-1]
+    if current is None or current < v_m or math.log(current / v_m) >= _FLAT * math.log(s / s_m):
+        return [(s, current)]
+    chain = [(s_m, v_m)] + [(x, value(x)) for x in _between(s_m, s, _SUBSTEPS)] + [(s, current)]
+    if any(b is None or b < a for (_, a), (_, b) in itertools.pairwise(chain)):
+        return chain[1:]
+    x, slope = _least_slope(value, chain)
+    if slope >= 0.0:
+        return chain[1:]
+    x_up = x * (1.0 + _SLOPE_STEP)
+    return [point for point in chain[1:] if point[0] < x] + [(x, value(x, True)), (x_up, value(x_up, True))]
+
+
+def _between(a, b, n):
+    """``n`` points between a and b > a, evenly spaced in log."""
+    return [a * (b / a) ** (k / (n + 1)) for k in range(1, n + 1)]
+
+
+def _least_slope(value, chain):
+    """(s, the slope d log(value) / d log(s) there) where the slope is least, near the least of the slopes between
+    the points (s, value) of ``chain``: golden sections on the slope over ``_SLOPE_STEP``, from the full-accuracy
+    values (1e-14), which resolve a slope of ~1e-10 (a maximum 1e-9 above the minimum after it, on a branch
+    flat to 1e-4 in p: Mooney-Rivlin alpha within 1e-5 of where the maximum vanishes, ~0.0554)."""
+    slopes = [math.log(b / a) / math.log(y / x) for (x, a), (y, b) in itertools.pairwise(chain)]
+    k = slopes.index(min(slopes))
+    lo, hi = chain[max(k - 1, 0)][0], chain[min(k + 2, len(chain) - 1)][0]
+
+    def slope(x):
+        return math.log(value(x * (1.0 + _SLOPE_STEP), True) / value(x, True)) / math.log1p(_SLOPE_STEP)
+
+    x, minus = brent.maximum(lambda x: -slope(x), lo, hi, xtol=_SLOPE_STEP * lo)
+    return x, -minus
 
 
 def _minus_inf(value):
@@ -315,7 +379,7 @@ def _inflated(material, law, pressure, rtol, tol, branch, start) -> tuple[Inflat
         _, y, _ = shot_pole(1.0 + s, law, law.pressure_factor * peak, tol)
         return above_pressure_maximum(pressure, peak, y[4], f"lambda_0 = {1 + s:.6g}")
 
-    lo, hi, peak = _first_branch(branch.phat, pressure, start, "pressure", law.stretch_limit - 1.0, above)
+    lo, hi, peak = _first_branch(branch.phat, pressure, start, "Phat", law.stretch_limit - 1.0, above)
 
     def miss(s):
         return _signed(_landing(s, law, p, tol, what))

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, event, given, settings
+from hypothesis import HealthCheck, assume, event, example, given, settings
 from hypothesis import strategies as st
 
 from pocket import analytical, fem, shooting
@@ -109,6 +109,8 @@ def _compressed_invariants(state, alpha, pressure, force, solver, volume_rtol):
 
 @guarded(60)
 @given(alpha=alphas, pressure=pressures)
+@example(0.0573, 1.855)  # no pressure maximum, lambda_0 = 24: once refused as "not reached for lambda_0 up to 21"
+@example(0.05543, 1.5)  # a maximum with a dip narrower than a march step: once a second-branch state
 def test_shooting_inflation(alpha, pressure):
     """Exact answers: the invariants above, or OutOfRangeError (pressure above the first-branch maximum),
     where the FE has no inflated state either."""

@@ -14,10 +14,20 @@ pocket, the scheduler lost). These exit with status 1.
 from __future__ import annotations
 
 __all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "ClusterError",
-           "above_pressure_maximum", "exit_status", "beyond_range", "CLAMP_PLANE"]
+           "above_pressure_maximum", "exit_status", "beyond_range", "CLAMP_PLANE", "STRETCH_LIMIT",
+           "past_stretch_limit"]
 
 #: what happens at the end of the compression range (unless the force has a maximum first)
 CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
+
+#: the largest pole stretch lambda_0 at which the membrane solvers (shooting, FE) seek an inflated state. A rubber
+#: whose pressure maximum has just vanished (Mooney-Rivlin alpha just above 0.05544) reaches Phat = 2 only at
+#: lambda_0 ~ 28, V/R^3 ~ 1e4: those are states of the model and are solved. But a first branch may climb towards
+#: a pressure it never reaches, and a search must end somewhere that says why: at lambda_0 = 100 the pole has
+#: thinned 1e4-fold and the sheet at the clamp is stretched some 2000-fold, far past the break of any rubber
+#: (stretches of 5 to 10), where no strain-energy law fitted to one means anything. The two solvers agree there
+#: still (the FE on its default mesh to 1e-4 in V).
+STRETCH_LIMIT = 100.0
 
 
 class PocketError(Exception):
@@ -60,6 +70,14 @@ def above_pressure_maximum(pressure: float, maximum: float, volume: float, where
     return OutOfRangeError(f"no inflated state on the first branch: Phat = {pressure:.6g} is above its pressure "
                            f"maximum Phat = {maximum:.6g}, reached at V/R^3 = {volume:.6g} ({where}); volume "
                            "control passes the maximum (inflate_volume; pocket inflate --volume V)")
+
+
+def past_stretch_limit(asked: str) -> OutOfRangeError:
+    """The one wording, for every solver, of an inflation target (``asked``, e.g. ``"Phat = 7.5"``) that the
+    first branch does not reach by the pole stretch ``STRETCH_LIMIT``."""
+    return OutOfRangeError(f"no inflated state: {asked} is not reached on the first branch up to the pole stretch "
+                           f"lambda_0 = {STRETCH_LIMIT:g}, where the solvers stop (the sheet thinned 1e4-fold at the "
+                           "pole, far past any rubber's break)")
 
 
 def exit_status(err: PocketError) -> int:
