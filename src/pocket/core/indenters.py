@@ -203,13 +203,14 @@ def check_sphere_radius(name: str, value, shown: str | None = None) -> float:
     """A sphere's radius K = R_s / R within ``SPHERE_RADII``; otherwise an InputError naming ``name`` and quoting
     the value (``shown`` instead if given: a length as written with its K)."""
     number = check_finite(name, value)
+    shown = shown or f"{number:g}"
     if not number > 0.0:
-        raise InputError(f"{name} = {shown or quote(value)}, but a sphere's radius must be > 0")
+        raise InputError(f"{name} = {shown}, but a sphere's radius must be > 0")
     low, high = SPHERE_RADII
     if not low <= number <= high:
         why = ("a smaller one is finer than the solvers resolve at the pole" if number < low else
                "a larger one sags less than R/2000 over the pocket: use the flat plate")
-        raise InputError(f"{name} = {shown or quote(value)}, but a sphere's radius K = R_s/R must lie in "
+        raise InputError(f"{name} = {shown}, but a sphere's radius K = R_s/R must lie in "
                          f"[{low:g}, {high:g}] ({why})")
     return number
 
