@@ -408,13 +408,14 @@ register(RubberLaw(
     example={"c10": 85e3, "c20": -2e3, "c30": 0.2e3}))  # softens, then stiffens
 register(RubberLaw(
     "gent", (_stress("mu", "the shear modulus mu"),
-             Parameter("jm", "dimensionless", "Gent's locking parameter Jm (a number)")),
+             Parameter("jm", "dimensionless", "Gent's locking parameter Jm (a number, at least 1e-3)")),
     mu0=lambda p: p["mu"],
     energy=lambda p, l1, l2, l3, i1, i2: -0.5 * p["mu"] * p["jm"] * np.log1p(-(i1 - 3.0) / p["jm"]),
     admissible=_gent_admissible, example={"mu": 0.3e6, "jm": 10.0}, domain=lambda p: p["jm"]))
 register(RubberLaw(
     "ogden", (_stress("mu", "Ogden's mu_p, one per term", listed=True),
-              Parameter("exponents", "dimensionless", "Ogden's exponents alpha_p, one per term", listed=True)),
+              Parameter("exponents", "dimensionless", "Ogden's exponents alpha_p, one per term, each "
+                        "|alpha_p| from 0.01 to 50", listed=True)),
     mu0=lambda p: 0.5 * sum(m * a for m, a in zip(p["mu"], p["exponents"], strict=True)),
     energy=_ogden_energy, admissible=_ogden_admissible,
     example={"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}))  # Treloar's data, Ogden's fit
