@@ -72,8 +72,8 @@ PRESTRETCH_LIMIT = 10.0
 JM_RANGE = (1e-3, MAGNITUDES[1])
 #: |alpha_p| of an Ogden term: fitted exponents lie well inside (Treloar's rubber 1.3, 5, -2; brain tissue near
 #: -25). The principal stretches the model reaches lie within 1e-6 to 1e6 (a sheet prestretched 10-fold and
-#: stretched 100-fold more is thinned 1e6-fold), and l^alpha_p stays below the largest double (1.8e308) there
-#: for |alpha_p| <= 50 only; below 0.01 the term's tension, mu_p times a difference of powers l^alpha_p near 1,
+#: stretched 100-fold more is thinned 1e6-fold), where l^alpha_p stays below the largest double (1.8e308) while
+#: |alpha_p| <= 50 (1e6^50 = 1e300); below 0.01 the term's tension, mu_p times a difference of powers l^alpha_p near 1,
 #: keeps fewer digits than the solvers resolve at small strain
 EXPONENT_RANGE = (1e-2, 50.0)
 
