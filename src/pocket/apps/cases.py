@@ -70,7 +70,7 @@ import pathlib
 from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
 from pocket.core.indenters import FLAT, Indenter
-from pocket.core.inputs import quote
+from pocket.core.inputs import check_volume, quote
 from pocket.core.materials import LAWS, Material
 from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import plain_warnings, positive, quantity
@@ -316,6 +316,8 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     kind = _one_of(initial, ("pressure", "height", "volume"), "initial", where)
     value = positive(f"initial.{kind}", initial[kind], {"height": "length"}.get(kind, kind))
     given[f"initial.{kind}"] = initial[kind]
+    if kind == "volume":  # V/R^3 within the model's range before anything is solved
+        check_volume("initial.volume", value / radius**3, f"{quote(initial[kind])} (V/R^3 = {value / radius**3:.3g})")
     load_kind, loads = "", ()
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)

@@ -7,8 +7,9 @@
 
 A sphere's radius becomes K = R_s / R; a profile's lengths are divided by R (a column in ``[R]`` is in units
 of R already; ``pocket.core.profiles``). The case-file name "plate" is the core's kind "flat". A key the
-shape does not take (a radius for a plate), a radius that is not a positive length or a profile file
-that is no profile is a one-line ``InputError`` naming the key, before any solving.
+shape does not take (a radius for a plate), a radius that is not a positive length or gives K outside
+1e-3 to 1e3 (``pocket.core.indenters.SPHERE_RADII``), or a profile file that is no profile is a one-line
+``InputError`` naming the key, before any solving.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from __future__ import annotations
 import pathlib
 
 from pocket.core.errors import InputError
-from pocket.core.indenters import FLAT, Indenter, profile, sphere
+from pocket.core.indenters import FLAT, Indenter, check_sphere_radius, profile, sphere
 from pocket.core.inputs import quote
 from pocket.core.profiles import read_csv
 from pocket.core.sizes import length_warnings
@@ -56,7 +57,9 @@ def parse(table: dict, clamp_radius: float, base=None, given: dict | None = None
         found = length_warnings(spell("radius"), table["radius"], radius)
         if warnings is not None:
             warnings.extend(found)
-        return sphere(radius / clamp_radius)
+        ratio = radius / clamp_radius
+        shown = f"{quote(table['radius'])} (K = R_s/R = {ratio:.3g})"
+        return sphere(check_sphere_radius(spell("radius"), ratio, shown))
     if shape == "profile":
         name = table["file"]
         if not isinstance(name, str) or not name:

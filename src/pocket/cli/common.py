@@ -18,8 +18,8 @@ from pocket.apps.solvers import SOLVERS, all_options, solver_options
 from pocket.core.inputs import quote
 from pocket.core.units import KINDS, has_unit
 
-__all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "model_value", "physical_help", "MODEL_UNITS",
-           "PHYSICAL_UNITS", "add_solver_flags", "solver_flags", "flag",
+__all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "model_value", "path_name", "physical_help",
+           "MODEL_UNITS", "PHYSICAL_UNITS", "add_solver_flags", "solver_flags", "flag",
            "progress_bar", "warn", "report", "solvers_epilog"]
 
 EXIT_CODES = ("exit status: 0 success (also when the reader of the output stops early, as `| head` does); "
@@ -87,6 +87,14 @@ def number(text: str) -> float:
         raise argparse.ArgumentTypeError(f"{quote(text)} is not a number") from None
 
 
+def path_name(text: str) -> str:
+    """A file or folder name as given (the argparse type of every option that names one): empty or blank text
+    names nothing (as a path it would be the current folder, which no option means) and is refused."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError(f"{quote(text)} is empty, but it must name a file or folder")
+    return text
+
+
 def model_value(command: str, wants: str):
     """The argparse type of a dimensional option of ``pocket command``, which works in the model's units:
     a ``number`` in the unit ``wants`` names (``"R_s/R"``); a value with a unit (``"8 mm"``) is refused in one
@@ -122,7 +130,7 @@ def flag(name: str) -> str:
     return "--" + name.replace("_", "-")
 
 
-_TYPES = {"float": number, "int": int, "path": str}
+_TYPES = {"float": number, "int": int, "path": path_name}
 
 
 def _shown(value) -> str:

@@ -2,22 +2,22 @@
 
 ``--indenter {plate,sphere,profile}`` (default plate, the flat plate), ``--indenter-radius`` for a sphere
 and ``--indenter-file FILE.csv`` for a profile. In the commands of the model's units (``compress``, ``sweep``)
-the radius is K = R_s / R (> 0; a value with a unit is refused) and the profile's header is in units of R,
+the radius is K = R_s / R (1e-3 to 1e3; a value with a unit is refused) and the profile's header is in units of R,
 ``radius [R],height [R]`` (``pocket.core.profiles``); in ``design``, which knows R, the radius is a length
 ('8 mm'; a plain number is metres, with a warning) and the profile's header in any length unit
 (``radius [mm],...``).
-A flag the shape does not take, a missing one, a radius that is not positive or a bad profile file is a
-one-line error before any solving.
+A flag the shape does not take, a missing one, a radius outside K = 1e-3 to 1e3
+(``pocket.core.indenters.SPHERE_RADII``) or a bad profile file is a one-line error before any solving.
 """
 
 from __future__ import annotations
 
 from pocket.apps.indenters import SHAPES
 from pocket.core.errors import InputError
-from pocket.core.indenters import FLAT, Indenter, profile, sphere
+from pocket.core.indenters import FLAT, Indenter, check_sphere_radius, profile, sphere
 from pocket.core.profiles import read_csv
 
-from .common import model_value, physical_help
+from .common import model_value, path_name, physical_help
 
 __all__ = ["add_indenter_flags", "indenter_of", "indenter_table", "flag"]
 
@@ -33,13 +33,15 @@ def add_indenter_flags(parser, *, command: str | None = None) -> None:
     if command is None:
         parser.add_argument(_FLAGS["radius"], metavar="LENGTH",
                             help=f"a sphere's radius R_s: {physical_help('length', '8 mm')}")
-        parser.add_argument(_FLAGS["file"], metavar="FILE.csv", help="a profile's table: a header 'radius [mm],"
-                            "height [mm]' (any length unit) and rows of two numbers, from the axis outwards")
+        parser.add_argument(_FLAGS["file"], type=path_name, metavar="FILE.csv",
+                            help="a profile's table: a header 'radius [mm],height [mm]' (any length unit) and rows of "
+                            "two numbers, from the axis outwards")
         return
     parser.add_argument(_FLAGS["radius"], type=model_value(command, "R_s/R"), metavar="K",
-                        help="a sphere's radius as K = R_s/R (a number)")
-    parser.add_argument(_FLAGS["file"], metavar="FILE.csv", help="a profile's table: a header 'radius [R],height "
-                        "[R]' (units of the clamp radius R) and rows of two numbers, from the axis outwards")
+                        help="a sphere's radius as K = R_s/R (a number), from 1e-3 to 1e3")
+    parser.add_argument(_FLAGS["file"], type=path_name, metavar="FILE.csv",
+                        help="a profile's table: a header 'radius [R],height [R]' (units of the clamp radius R) and "
+                        "rows of two numbers, from the axis outwards")
 
 
 def _given(args) -> dict:
@@ -60,9 +62,7 @@ def indenter_of(args) -> Indenter:
     """The indenter the dimensionless flags ``args`` give (``compress``)."""
     values = _given(args)
     if args.indenter == "sphere":
-        if not values["radius"] > 0.0:
-            raise InputError(f"--indenter-radius = {values['radius']:g}, but a sphere's radius must be > 0")
-        return sphere(values["radius"])
+        return sphere(check_sphere_radius(_FLAGS["radius"], values["radius"]))
     if args.indenter == "profile":
         return profile(read_csv(values["file"]))
     return FLAT

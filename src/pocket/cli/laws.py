@@ -87,7 +87,7 @@ def add_rubber_flags(parser, *, command: str | None = None, alphas: bool = False
         group.add_argument(_flag(name), type=kind, nargs="+" if listed else None, metavar=name.upper(),
                            help=text if unit in text else f"{text}: {unit}")
     group.add_argument("--prestretch", type=number, metavar="LAMBDA_P",
-                       help="equibiaxial stretch of the sheet as clamped, >= 1 (default 1: none); the law's "
+                       help="equibiaxial stretch of the sheet as clamped, from 1 to 10 (default 1: none); the law's "
                        "parameters and the thickness are the unstretched rubber's")
 
 

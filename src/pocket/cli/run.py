@@ -10,7 +10,7 @@ from pocket.apps.cases import Case, load, sample
 from pocket.apps.folders import check_output_dir, check_output_file, check_replaceable
 from pocket.core.errors import InputError
 
-from .common import progress_bar, solvers_epilog
+from .common import path_name, progress_bar, solvers_epilog
 
 __all__ = ["register", "add_case_arguments", "case_from_args", "case_source", "warn_case"]
 
@@ -20,7 +20,7 @@ _SHOWN = ("load", "force_N", "pressure_Pa", "contact_area_m2", "height_m", "forc
 
 def add_case_arguments(parser) -> None:
     """The pocket to use: a case file or a built-in sample of Table 1."""
-    parser.add_argument("case", nargs="?", metavar="CASE.toml",
+    parser.add_argument("case", nargs="?", type=path_name, metavar="CASE.toml",
                         help="case file in physical units (the format is in the README)")
     parser.add_argument("--sample", type=int, metavar="N", help="built-in sample N (1-4) of the paper's Table 1")
 
@@ -111,8 +111,10 @@ def register(subparsers) -> None:
                               "exit status is 0; if no load is reached, exit 2.",
                               epilog=solvers_epilog(chosen_by="a case file's [solver] name; default shooting"))
     add_case_arguments(p)
-    p.add_argument("--out", default=".", metavar="DIR", help="folder for the results (default: ., the current folder)")
-    p.add_argument("--vtk", metavar="DIR", help="also write the compressed states as a ParaView series (as "
+    p.add_argument("--out", default=".", type=path_name, metavar="DIR",
+                   help="folder for the results (default: ., the current folder)")
+    p.add_argument("--vtk", type=path_name, metavar="DIR",
+                   help="also write the compressed states as a ParaView series (as "
                    "compress --vtk does: surface.pvd, profile.pvd, indenter.pvd), the time of each step its "
                    "force in N; lengths are in units of the clamp radius, and every file's field data holds "
                    "length_scale_m (R), pressure_scale_Pa (E T / R) and force_scale_N (P_I pi R^2) to turn "

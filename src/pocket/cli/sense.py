@@ -21,7 +21,7 @@ from pocket.core.errors import InputError
 from pocket.core.inputs import check_count
 from pocket.core.units import plain_warnings, positive, quantity
 
-from .common import EXIT_CODES, PHYSICAL_UNITS, number, physical_help
+from .common import EXIT_CODES, PHYSICAL_UNITS, number, path_name, physical_help
 from .run import add_case_arguments, case_from_args, case_source, warn_case
 
 __all__ = ["register"]
@@ -97,7 +97,7 @@ def register(subparsers) -> None:
     p.add_argument("--pressure", metavar="PRESSURE", help="measured gauge pressure P: "
                    f"{physical_help('pressure', '5.2 kPa')}")
     p.add_argument("--ratio", type=number, metavar="P/P_I", help="measured pressure rise P/P_I, a number")
-    p.add_argument("--table", metavar="FILE.csv", help="write a calibration table over the force range")
+    p.add_argument("--table", type=path_name, metavar="FILE.csv", help="write a calibration table over the force range")
     p.add_argument("--max-force", metavar="FORCE", help="top of the table's force range (default: the case's "
                    f"largest load): {physical_help('force', '2 N')}")
     p.add_argument("--points", type=int, default=21, help=f"rows of the table, and forces of --range's curve "

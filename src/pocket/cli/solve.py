@@ -17,12 +17,13 @@ from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, entry
 from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.indenters import FLAT
-from pocket.core.inputs import check_positive
+from pocket.core.inputs import check_positive, check_volume
 
 from .common import (
     MODEL_UNITS,
     add_solver_flags,
     model_value,
+    path_name,
     progress_bar,
     report,
     solver_flags,
@@ -47,8 +48,9 @@ def register(subparsers) -> None:
             control.add_argument("--pressure", type=model_value(name, "Phat = P R / (E T)"), metavar="PHAT",
                                  help="pressure control, Phat = P R / (E T)")
             control.add_argument("--volume", type=model_value(name, "V/R^3"), metavar="V/R^3",
-                                 help="volume control: the enclosed volume in V/R^3 (passes a pressure maximum; "
-                                 "solvers shooting and fem)")
+                                 help="volume control: the enclosed volume in V/R^3, at most 5.2e5 (more needs the "
+                                 "sheet stretched past the model's limit of 100); passes a pressure maximum; "
+                                 "solvers shooting and fem")
         else:
             p.add_argument("--pressure", type=model_value(name, "Phat_I = P_I R / (E T)"), required=True,
                            metavar="PHAT_I", help="initial pressure, Phat_I = P_I R / (E T)")
@@ -62,8 +64,9 @@ def register(subparsers) -> None:
                        help="which model solves (each is listed below)")
         p.add_argument("--json", action="store_true",
                        help="print JSON (a list for several forces)" if name == "compress" else "print JSON")
-        p.add_argument("--vtk", metavar="DIR", help="also write the states as VTK files for ParaView (the steps "
-                       "in order of force, the time of each its force)")
+        p.add_argument("--vtk", type=path_name, metavar="DIR",
+                       help="also write the states as VTK files for ParaView (the steps in order of force, the time "
+                       "of each its force)")
         p.add_argument("--overwrite", action="store_true",
                        help="replace a VTK series pocket wrote in --vtk DIR (any other non-empty folder is refused)")
         add_rubber_flags(p, command=name)
@@ -132,12 +135,14 @@ def _main(args) -> int:
     step = "inflate" if args.command == "inflate" else "compress"
     options = solver_flags(args, args.solver, step)
     material = material_of(args)
+    if getattr(args, "volume", None) is not None:
+        check_volume("--volume", args.volume)
     if step == "compress":
         fluid = fluid_of(args)
         options.update({} if fluid is None else {"fluid": fluid})
         indenter = indenter_of(args)
         options.update({} if indenter == FLAT else {"indenter": indenter})
-    if args.vtk:
+    if args.vtk is not None:
         from pocket.apps.vtkfiles import KIND
 
         check_replaceable(args.vtk, KIND, "--vtk", overwrite=args.overwrite)
@@ -151,7 +156,7 @@ def _main(args) -> int:
     rows = [report(s) for s in states]
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
         raise ConvergenceError(f"solver {args.solver} returned a non-finite value")
-    if args.vtk:
+    if args.vtk is not None:
         from pocket.apps.vtkfiles import write_series
 
         steps = sorted(states, key=lambda s: getattr(s, "force", 0.0))  # the time is the force, increasing

@@ -16,6 +16,7 @@ from .common import (
     add_solver_flags,
     model_value,
     number,
+    path_name,
     progress_bar,
     solver_flags,
     solvers_epilog,
@@ -75,7 +76,8 @@ def register(subparsers) -> None:
                    metavar="PHAT_I", help="values of the initial pressure, Phat_I = P_I R / (E T)")
     p.add_argument("--force", type=model_value("sweep", "Fhat = F / (P_I pi R^2)"), nargs="+", required=True,
                    metavar="FHAT", help="values of the force, Fhat = F / (P_I pi R^2)")
-    p.add_argument("--out", required=True, metavar="FILE.csv", help="results; an existing sweep file is resumed")
+    p.add_argument("--out", required=True, type=path_name, metavar="FILE.csv",
+                   help="results; an existing sweep file is resumed")
     p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                    help="solver of every point (each is listed below)")
     p.add_argument("--workers", type=int, help=f"local worker processes (default: one per usable CPU; at most "

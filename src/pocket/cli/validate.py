@@ -23,6 +23,8 @@ import textwrap
 
 from pocket.apps.workers import local_executor, stop
 
+from .common import path_name
+
 __all__ = ["register", "EXIT_CODES_VALIDATE"]
 
 EXIT_CODES_VALIDATE = ("exit status: 0 every verdict passes; 1 a verdict fails, a solver failed or the report "
@@ -72,12 +74,12 @@ def register(subparsers) -> None:
         p = subparsers.add_parser(name, help=text, description=description,
                                   epilog=textwrap.fill(EXIT_CODES_VALIDATE, 79),
                                   formatter_class=argparse.RawDescriptionHelpFormatter)
-        p.add_argument("--out", default=out, metavar="DIR",
+        p.add_argument("--out", default=out, type=path_name, metavar="DIR",
                        help=f"report folder (default: {out}); a previous report of this command that pocket wrote "
                             "there is replaced, any other non-empty folder is refused")
         p.add_argument("--quick", action="store_true",
                        help="the quick plan: fewer forces, FE columns and meshes (for CI; default: the full plan)")
-        p.add_argument("--cases", metavar="FILE",
+        p.add_argument("--cases", type=path_name, metavar="FILE",
                        help="cases file (default: the suite's own cases.toml): [[case]] tables, each with a label "
                             "and a case file's [case.sheet], [case.clamp] and [case.initial]; optional name (not "
                             "repeated), tags ('headline' picks the pocket of figure 2 and the convergence study, "

@@ -51,7 +51,8 @@ from .profiles import Shape
 #: a kind's parameters by name: numbers (lengths in units of R), or a ``Shape`` for those in its ``shapes``
 Params = Mapping[str, "float | Shape"]
 
-__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "sphere", "profile"]
+__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "sphere", "profile",
+           "SPHERE_RADII", "check_sphere_radius"]
 
 T = TypeVar("T")
 
@@ -189,10 +190,33 @@ def _sphere_second(params: Params, rho: np.ndarray) -> np.ndarray:
         return np.square(_number(params, "radius")) / _root(params, rho) ** 3
 
 
+#: K = R_s / R of a sphere. From 1e-3: a smaller sphere is finer than the finite-element mesh resolves at the
+#: pole (with its default mesh the stretch at the contact is 0.4 % off the shooting solver's at K = 1e-3, 28 % at
+#: 1e-4) and nears the start of the shooting solver's pole series (an expansion in r / K from r = 1e-5); and the
+#: force it carries before the sheet wraps past its equator, about 4 K in Fhat (Phat_I = 0.3), is no finger's.
+#: To 1e3: a larger sphere sags less than R / 2000 over the pocket, which is then the flat plate's (use it), and
+#: its height R_s - sqrt(R_s^2 - rho^2) in doubles loses digits as K^2 grows
+SPHERE_RADII = (1e-3, 1e3)
+
+
+def check_sphere_radius(name: str, value, shown: str | None = None) -> float:
+    """A sphere's radius K = R_s / R within ``SPHERE_RADII``; otherwise an InputError naming ``name`` and quoting
+    the value (``shown`` instead if given: a length as written with its K)."""
+    number = check_finite(name, value)
+    shown = shown or f"{number:g}"
+    if not number > 0.0:
+        raise InputError(f"{name} = {shown}, but a sphere's radius must be > 0")
+    low, high = SPHERE_RADII
+    if not low <= number <= high:
+        why = ("a smaller one is finer than the solvers resolve at the pole" if number < low else
+               "a larger one sags less than R/2000 over the pocket: use the flat plate")
+        raise InputError(f"{name} = {shown}, but a sphere's radius K = R_s/R must lie in "
+                         f"[{low:g}, {high:g}] ({why})")
+    return number
+
+
 def _sphere_check(params: Params) -> None:
-    radius = _number(params, "radius")
-    if not radius > 0.0:
-        raise InputError(f"indenter.radius = {radius:g}, but a sphere's radius must be positive")
+    check_sphere_radius("indenter.radius", _number(params, "radius"))
 
 
 register(Kind("sphere", "a sphere of radius R_s (a fingertip), its lowest point on the axis", ("radius",), _sphere,

@@ -28,8 +28,12 @@ __all__ = [
     "check_flag",
     "check_choice",
     "check_file",
+    "check_range",
+    "check_volume",
     "quote",
     "MAGNITUDES",
+    "STRETCH_LIMIT",
+    "VOLUME_LIMIT",
     "MAX_FILE_BYTES",
 ]
 
@@ -40,6 +44,17 @@ TOLERANCE_FLOOR = 1e-14
 #: far outside what a rubber pocket is, and far from where the solvers' products of such numbers
 #: overflow or underflow a double (Phat = 1e300 or 1e-300 would, inside them)
 MAGNITUDES = (1e-12, 1e12)
+
+#: the largest stretch of the sheet, relative to its clamped flat form, that the model takes: at 100 each way the
+#: sheet has thinned 1e4-fold, far past the break of any rubber (stretches of 5 to 10), where no strain-energy law
+#: fitted to one means anything
+STRETCH_LIMIT = 100.0
+
+#: the largest volume V/R^3 a sheet within ``STRETCH_LIMIT`` encloses over its clamp circle. The sheet and the
+#: clamp's disc bound the fluid; the sheet's area is at most J pi R^2, J = STRETCH_LIMIT^2 its largest thinning
+#: (lambda_1 lambda_2), and the isoperimetric inequality (area^3 >= 36 pi V^2) gives V <= (pi / 6) (1 + J)^(3/2) R^3
+#: (5.24e5 R^3); a larger volume needs the sheet thinned more than J-fold somewhere
+VOLUME_LIMIT = math.pi / 6.0 * (1.0 + STRETCH_LIMIT**2) ** 1.5
 
 #: largest input file a solver option may name (a mesh file): a bound on the work it can ask for
 MAX_FILE_BYTES = 100_000_000
@@ -100,6 +115,32 @@ def check_positive(name, value) -> float:
     if number <= 0.0:
         raise InputError(f"{name} = {quote(value)}, but it must be > 0")
     return _magnitude(name, value, number)
+
+
+def check_range(name, value, low: float, high: float, why: str, shown: str | None = None) -> float:
+    """A finite number in [low, high]; otherwise an InputError naming ``name``, quoting the value (``shown``
+    instead if given: a case file's text with its dimensionless form) and saying ``why`` the range ends there."""
+    number = check_finite(name, value)
+    if not low <= number <= high:
+        raise InputError(f"{name} = {shown or quote(value)}, but it must lie in [{low:g}, {high:g}] ({why})")
+    return number
+
+
+def check_volume(name, value, shown: str | None = None) -> float:
+    """An enclosed volume V/R^3 (volume control): > 0 within ``MAGNITUDES`` and at most ``VOLUME_LIMIT``, the
+    most a sheet within ``STRETCH_LIMIT`` encloses (``shown``: the value as a message quotes it, e.g. a case
+    file's text with its V/R^3)."""
+    number, shown = check_finite(name, value), shown or quote(value)
+    if number <= 0.0:
+        raise InputError(f"{name} = {shown}, but it must be > 0")
+    if number < MAGNITUDES[0]:
+        raise InputError(f"{name} = {shown} is outside the magnitudes of the model's dimensionless inputs "
+                         f"({MAGNITUDES[0]:g} to {MAGNITUDES[1]:g})")
+    if number > VOLUME_LIMIT:
+        raise InputError(f"{name} = {shown}, but a state of the model encloses at most V/R^3 = {VOLUME_LIMIT:.3g}: "
+                         f"more needs the sheet thinned past {STRETCH_LIMIT**2:g}-fold somewhere (the isoperimetric "
+                         f"inequality), past the model's stretch limit of {STRETCH_LIMIT:g}")
+    return number
 
 
 def check_non_negative(name, value) -> float:

@@ -39,7 +39,9 @@ A ``Material`` holds the law's name and its parameters in any consistent unit
 stresses by mu_0). ``check`` refuses, in one line naming the parameter, what
 is not a stable rubber: a non-positive mu_0, Jm <= 0, a Yeoh polynomial whose
 slope dW/dI1 is not positive for every I1 >= 3, an Ogden term with
-mu_p alpha_p <= 0. The solvers derive their tensions, residuals and tangents
+mu_p alpha_p <= 0; and what lies outside the model's ranges: Jm outside
+``JM_RANGE``, an Ogden exponent outside ``EXPONENT_RANGE``, a prestretch past
+``PRESTRETCH_LIMIT``. The solvers derive their tensions, residuals and tangents
 from W each by its own route; tests compare them with finite differences of
 ``energy``.
 """
@@ -53,13 +55,27 @@ from collections.abc import Callable, Mapping
 import numpy as np
 
 from .errors import InputError
-from .inputs import check_alpha, check_finite, quote
+from .inputs import MAGNITUDES, check_alpha, check_finite, check_range, quote
 
 __all__ = ["Parameter", "RubberLaw", "LAWS", "register", "Material", "mooney_rivlin", "energy", "check",
-           "as_material", "check_prestretch"]
+           "as_material", "check_prestretch", "PRESTRETCH_LIMIT", "JM_RANGE", "EXPONENT_RANGE"]
 
 #: the units a parameter may have
 UNITS = ("stress", "dimensionless")
+
+#: the largest prestretch lambda_p of the clamped sheet: the sheet at rest, before any load, stretched 10-fold
+#: each way (thinned 100-fold) is past the break of rubbers (stretches of 5 to 10, less when equibiaxial)
+PRESTRETCH_LIMIT = 10.0
+#: Gent's Jm: from where the rubber locks at an equibiaxial strain of 1 % (I1 - 3 ~ 12 s^2: s = sqrt(Jm / 12)),
+#: stiffer than any rubber (Gent's fits: 20 to 120; soft tissues near 1), to the largest of ``MAGNITUDES``
+#: (larger Jm are the neo-Hookean rubber)
+JM_RANGE = (1e-3, MAGNITUDES[1])
+#: |alpha_p| of an Ogden term: fitted exponents lie well inside (Treloar's rubber 1.3, 5, -2; brain tissue near
+#: -25). The principal stretches the model reaches lie within 1e-6 to 1e6 (a sheet prestretched 10-fold and
+#: stretched 100-fold more is thinned 1e6-fold), where l^alpha_p stays below the largest double (1.8e308) while
+#: |alpha_p| <= 50 (1e6^50 = 1e300); below 0.01 the term's tension, mu_p times a difference of powers l^alpha_p near 1,
+#: keeps fewer digits than the solvers resolve at small strain
+EXPONENT_RANGE = (1e-2, 50.0)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -157,6 +173,8 @@ def _gent_admissible(v: dict, where: str) -> None:
     _shear_admissible(v, where)
     if v["jm"] <= 0.0:
         raise InputError(f"{where}.jm = {quote(v['jm'])}, but the locking parameter Jm must be > 0")
+    check_range(f"{where}.jm", v["jm"], *JM_RANGE, "below it the rubber locks at an equibiaxial strain under "
+                "1 %, sqrt(Jm / 12): no rubber; fitted Jm are 20 to 120 for rubbers, near 1 for soft tissues")
 
 
 def _yeoh_stable(c10: float, c20: float, c30: float) -> bool:
@@ -185,6 +203,11 @@ def _ogden_admissible(v: dict, where: str) -> None:
         if not m * a > 0.0:
             raise InputError(f"{where}.mu[{k}] = {m:g} with exponent {a:g}, but a stable Ogden term needs "
                              "mu_p alpha_p > 0")
+        low, high = EXPONENT_RANGE
+        if not low <= abs(a) <= high:
+            raise InputError(f"{where}.exponents[{k}] = {quote(a)}, but |alpha_p| must lie in [{low:g}, {high:g}] "
+                             "(fitted exponents lie well inside; past it l^alpha_p overflows at stretches the model "
+                             "reaches, below it the term's tension is a difference of numbers near 1)")
 
 
 def _yeoh_energy(p, l1, l2, l3, i1, i2):
@@ -289,6 +312,10 @@ def check_prestretch(value, material: Material, key: str = "prestretch") -> floa
     number = check_finite(key, value)
     if not number >= 1.0:
         raise InputError(f"{key} = {quote(value)}, but a prestretch of the clamped sheet must be >= 1")
+    if number > PRESTRETCH_LIMIT:
+        raise InputError(f"{key} = {quote(value)}, but a prestretch of the clamped sheet must be at most "
+                         f"{PRESTRETCH_LIMIT:g} (a sheet stretched {PRESTRETCH_LIMIT:g}-fold each way at rest is past "
+                         "the break of rubbers, stretches of 5 to 10)")
     bound = material.domain
     excess = 2.0 * number * number + number**-4 - 3.0  # I1 - 3 of the clamped flat sheet
     if not excess < bound:
@@ -381,13 +408,14 @@ register(RubberLaw(
     example={"c10": 85e3, "c20": -2e3, "c30": 0.2e3}))  # softens, then stiffens
 register(RubberLaw(
     "gent", (_stress("mu", "the shear modulus mu"),
-             Parameter("jm", "dimensionless", "Gent's locking parameter Jm (a number)")),
+             Parameter("jm", "dimensionless", "Gent's locking parameter Jm (a number, at least 1e-3)")),
     mu0=lambda p: p["mu"],
     energy=lambda p, l1, l2, l3, i1, i2: -0.5 * p["mu"] * p["jm"] * np.log1p(-(i1 - 3.0) / p["jm"]),
     admissible=_gent_admissible, example={"mu": 0.3e6, "jm": 10.0}, domain=lambda p: p["jm"]))
 register(RubberLaw(
     "ogden", (_stress("mu", "Ogden's mu_p, one per term", listed=True),
-              Parameter("exponents", "dimensionless", "Ogden's exponents alpha_p, one per term", listed=True)),
+              Parameter("exponents", "dimensionless", "Ogden's exponents alpha_p, one per term, each "
+                        "|alpha_p| from 0.01 to 50", listed=True)),
     mu0=lambda p: 0.5 * sum(m * a for m, a in zip(p["mu"], p["exponents"], strict=True)),
     energy=_ogden_energy, admissible=_ogden_admissible,
     example={"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}))  # Treloar's data, Ogden's fit
