@@ -39,7 +39,7 @@ from pocket import meshes
 from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.indenters import as_indenter, formulation
-from pocket.core.inputs import check_force, check_positive, quote
+from pocket.core.inputs import check_force, check_positive, check_volume, quote
 
 from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results, wrapping
 from .gas import sealed
@@ -148,7 +148,7 @@ def inflate(material, pressure, *, mesh=None, elements=None, order=2, tol=1e-10)
 def inflate_volume(material, volume, *, mesh=None, elements=None, order=2, tol=1e-10):
     """Inflated state of volume V/R^3 = ``volume``, by volume control (options as ``inflate``)."""
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
-    volume = check_positive("volume", volume)
+    volume = check_volume("volume", volume)
     y, iterations = inflation.to_volume(model, volume, _tolerances(tol))
     return results.inflated(model, y, iterations, volume=volume)
 

@@ -72,7 +72,7 @@ from pocket.core.errors import (
     above_pressure_maximum,
     past_stretch_limit,
 )
-from pocket.core.inputs import check_positive
+from pocket.core.inputs import check_positive, check_volume
 from pocket.core.materials import as_material
 from pocket.core.states import InflatedState
 
@@ -408,7 +408,7 @@ def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:
     ``material`` as for ``inflate``."""
     material = as_material(material)
     law = law_of(material)
-    volume = check_positive("volume", volume)
+    volume = check_volume("volume", volume)
     s_est = smallstrain.strain_of_volume(volume)
     if law.prestretch != 1.0:  # the paraboloid's volume pi H / 2 (units R^3)
         s_est = min(s_est, _taut_strain(law, 2.0 * volume / math.pi))

@@ -12,7 +12,7 @@ import numpy as np
 from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.indenters import as_indenter, formulation
-from pocket.core.inputs import check_force, check_positive
+from pocket.core.inputs import check_force, check_positive, check_volume
 from pocket.core.materials import as_material
 
 from . import (
@@ -59,7 +59,7 @@ def inflate_volume(material, volume, *, thickness_ratio=DEFAULT_THICKNESS, layer
                    elements=DEFAULT_ELEMENTS, tol=1e-10):
     """Inflated state of cavity volume V/R^3 = ``volume`` (options as ``inflate``)."""
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
-    volume = check_positive("volume", volume)
+    volume = check_volume("volume", volume)
     y, iterations = inflation.to_volume(m, volume, tol)
     return results.inflated(m, material, y, iterations, volume_given=volume)
 

@@ -18,9 +18,9 @@ from hypothesis import strategies as st
 
 from pocket.apps.cases import parse
 from pocket.cli import main, solve
-from pocket.core.errors import InputError
+from pocket.core.errors import STRETCH_LIMIT, InputError
 from pocket.core.indenters import SPHERE_RADII, sphere
-from pocket.core.inputs import STRETCH_LIMIT, VOLUME_LIMIT, check_volume
+from pocket.core.inputs import VOLUME_LIMIT, check_volume
 from pocket.core.materials import EXPONENT_RANGE, JM_RANGE, PRESTRETCH_LIMIT, Material
 
 INFLATE = ["inflate", "--pressure", "0.3"]

@@ -15,7 +15,7 @@ import pathlib
 import reprlib
 import stat
 
-from .errors import InputError
+from .errors import STRETCH_LIMIT, InputError
 
 __all__ = [
     "check_finite",
@@ -32,7 +32,6 @@ __all__ = [
     "check_volume",
     "quote",
     "MAGNITUDES",
-    "STRETCH_LIMIT",
     "VOLUME_LIMIT",
     "MAX_FILE_BYTES",
 ]
@@ -44,11 +43,6 @@ TOLERANCE_FLOOR = 1e-14
 #: far outside what a rubber pocket is, and far from where the solvers' products of such numbers
 #: overflow or underflow a double (Phat = 1e300 or 1e-300 would, inside them)
 MAGNITUDES = (1e-12, 1e12)
-
-#: the largest stretch of the sheet, relative to its clamped flat form, that the model takes: at 100 each way the
-#: sheet has thinned 1e4-fold, far past the break of any rubber (stretches of 5 to 10), where no strain-energy law
-#: fitted to one means anything
-STRETCH_LIMIT = 100.0
 
 #: the largest volume V/R^3 a sheet within ``STRETCH_LIMIT`` encloses over its clamp circle. The sheet and the
 #: clamp's disc bound the fluid; the sheet's area is at most J pi R^2, J = STRETCH_LIMIT^2 its largest thinning
