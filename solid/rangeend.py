@@ -9,11 +9,11 @@ first of these lengths (units R, positive inside the model: ``margins``) reaches
 
 - the mid-surface's lowest height over the contact zone (r <= r_c, ``results.contact_radius``): the sheet
   under the indenter reaching the clamp plane. The indenter touches the upper surface, half the sheet's
-  deformed thickness above the mid-surface, so its lowest point is still above the plane then. Every state
-  the solid returns has both its sheet (at its nodes) and the indenter's lowest point above the clamp
-  plane. (An end at the indenter's lowest point h = 0 would let the mid-surface, and the lower surface further, dip about half a
-  thickness below the plane; the two ends differ by that travel, O(T/R) like the solid's other differences
-  from the membrane.)
+  deformed thickness above the mid-surface, so its lowest point is still above the plane then. Every state the
+  solid returns has both its sheet (at its nodes) and the indenter's lowest point above the clamp plane. (An
+  end at the indenter's lowest point h = 0 would let the mid-surface, and the lower surface further, dip about
+  half a thickness below the plane; the two ends differ by that travel, O(T/R) like the solid's other
+  differences from the membrane.)
 - the mid-surface's lowest height over the free part (r_c < r < 1, the clamp's own node, fixed at z = 0,
   left out): the free part reaching the clamp plane;
 - the indenter's reach less the contact's deformed radius rho_c (its upper surface's at r_c): the contact
