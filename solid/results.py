@@ -44,13 +44,15 @@ area in contact over pi R^2 (``contact.Surface.area``: 2 K z(rho_c) on a sphere)
 rho_c, ``stretch_contact`` the pole's stretch (the zone is not uniform), and the reaction the vertical part
 of the contact forces, sum_k lambda_k dg_k/dh. A state whose contact reaches the sphere's equator or the
 profile's last radius, or whose mid-surface reaches the clamp plane, is past the end of the range and is
-refused on the load path (``rangeend``), before it gets here.
+refused on the load path (``rangeend``); one read here against a surface its contact passes (the sphere's
+equator, the profile's last radius) is an OutOfRangeError all the same, for it has no contact area.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from pocket.core.errors import OutOfRangeError
 from pocket.core.fluids import Fluid
 from pocket.core.materials import Material
 from pocket.core.states import CompressedState, InflatedState, Profile
@@ -128,6 +130,9 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     reaction = force_of(model, surface, y, active) / (np.pi * start.pressure * scale)
     r_c = contact_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
+    if surface.reach is not None and rho_c >= surface.reach:
+        raise OutOfRangeError(f"the sheet would wrap past {surface.end} (its contact reaches rho = {rho_c:.6g} R, "
+                              f"the indenter's surface ends at {surface.reach:.6g} R)")
     area = surface.area(rho_c)
     stretch = float(np.interp(r_c, f.r, f.stretch_2) if surface.flat else f.stretch_1[0])
     height = float(y[model.size + 1])
