@@ -83,7 +83,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
     before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); indenter None
     (the flat plate) or ``pocket.core.indenters.sphere(K)``. Options as ``inflate``; ``progress(done, total)``
-    after each force."""
+    after each force. A force past the end of the range is an OutOfRangeError naming the end (``rangeend``)."""
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
@@ -108,11 +108,13 @@ def compress(material, pressure_initial, force, *, fluid=None, indenter=None, **
 def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None,
                     thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS, tol=1e-10):
     """Compressed state with the plate at H/R = ``height`` above the clamp plane (options as
-    ``compression_curve``); an OutOfRangeError above the inflated pocket's top."""
+    ``compression_curve``); an OutOfRangeError above the inflated pocket's top, or below the end of the range
+    (``rangeend``)."""
     height = check_positive("height", height)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter,
                                                         thickness_ratio, layers, elements, tol)
     if height >= start.height:
         raise above_the_pocket(height, start.height)
-    y, control, iterations = compression.to_height(m, y, control, height, tol)
+    unit = np.pi * 3.0 * m.thickness * start.pressure
+    y, control, iterations = compression.to_height(m, y, control, height, unit, tol)
     return results.compressed(m, material, y, control.active, iterations, start, fluid, surface=control.surface)

@@ -6,7 +6,8 @@ V_I for a liquid, the polytropic law for a gas sealed at P_I); the plate touches
 surface's nodes of the active set (``newton.contact``). The first contact is the pole's node with
 the plate at the inflated pole's height and no force. Forces are reached in steps of at most
 ``MAX_FORCE_STEP`` (Fhat), each seeded by the state before it, halved when Newton or the active
-set fails; a height target in steps of the plate's travel likewise.
+set fails; a height target in steps of the plate's travel likewise. Every state on the way is checked
+against the end of the range (``rangeend``): a load past it is refused, naming the end.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ import dataclasses
 
 import numpy as np
 
-from pocket.core.errors import ConvergenceError
+from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.fluids import Fluid
 
 from .contact import FLAT, Surface
@@ -23,6 +24,7 @@ from .contact import force as force_of
 from .equations import Control
 from .model import Model
 from .newton import contact
+from .rangeend import margins, past_end
 
 __all__ = ["fluid_control", "first_contact", "to_force", "to_height", "MAX_FORCE_STEP"]
 
@@ -58,9 +60,11 @@ def first_contact(model: Model, y_inflated: np.ndarray, fill: Control,
     return y, dataclasses.replace(fill, active=np.array([0]), force=0.0, surface=surface)
 
 
-def _march(model, y, control, key, target, step, tol, largest=None):
+def _march(model, y, control, key, target, step, tol, unit, largest=None):
     """From the state y of ``control``, the state at ``control.<key> = target``: the first step ``step``, each
-    next 1.5 times the last that converged, at most ``largest`` (default ``step``), halved when one fails."""
+    next 1.5 times the last that converged, at most ``largest`` (default ``step``), halved when one fails. A
+    state past the end of the range (``rangeend.margins``) stops the march: the end is located between it and
+    the state before, and a ``target`` past it refused (``rangeend.past_end``; ``unit`` the force of Fhat = 1)."""
     value, total, first = getattr(control, key), 0, step
     largest = step if largest is None else largest
     while value < target if target > value else value > target:
@@ -68,11 +72,16 @@ def _march(model, y, control, key, target, step, tol, largest=None):
         try:
             new, new_control, iterations = contact(model, y, dataclasses.replace(control, **{key: value + delta}),
                                                    tol)
-        except ConvergenceError:
+        except (ConvergenceError, OutOfRangeError) as err:
             step *= 0.5
-            if step < MIN_FRACTION * first:
-                raise
-            continue
+            if step >= MIN_FRACTION * first:
+                continue
+            if isinstance(err, OutOfRangeError):  # the contact leaves the indenter's surface however short the step
+                raise past_end(model, (value, y, control), (value + delta, None), key, target, unit, tol) from err
+            raise
+        margin = margins(model, new, new_control)
+        if min(margin.values()) <= 0.0:
+            raise past_end(model, (value, y, control), (value + delta, margin), key, target, unit, tol)
         y, control, value, total = new, new_control, value + delta, total + iterations
         step = min(largest, 1.5 * step)
     return y, control, total
@@ -88,15 +97,16 @@ def to_force(model: Model, y: np.ndarray, control: Control, force: float, unit: 
     total = 0
     if control.force == 0.0:
         travel = FIRST_TRAVEL * model.thickness
-        y, control, total = to_height(model, y, control, float(y[model.size + 1]) - travel, tol)
+        y, control, total = to_height(model, y, control, float(y[model.size + 1]) - travel, unit, tol)
         pushed = force_of(model, control.surface, y, np.asarray(control.active))
         control = dataclasses.replace(control, height=None, force=pushed)
-    y, control, iterations = _march(model, y, control, "force", force, MAX_FORCE_STEP * unit, tol)
+    y, control, iterations = _march(model, y, control, "force", force, MAX_FORCE_STEP * unit, tol, unit)
     return y, control, total + iterations
 
 
-def to_height(model: Model, y: np.ndarray, control: Control, height: float, tol: float):
-    """The state with the plate at ``height`` (R) from the state y of ``control``: first the control turned
+def to_height(model: Model, y: np.ndarray, control: Control, height: float, unit: float, tol: float):
+    """The state with the plate at ``height`` (R) from the state y of ``control`` (``unit`` the force of
+    Fhat = 1, for a refusal past the end of the range: ``_march``): first the control turned
     to the plate's height where it is, then the height marched from a first step of ``FIRST_TRAVEL``
     thicknesses (the first travel in one step: in ten, the 10-force headline curve took 136 Newton iterations,
     in one 110, to the same states), growing to at most ``MAX_TRAVEL`` thicknesses (about the travel of a
@@ -105,4 +115,5 @@ def to_height(model: Model, y: np.ndarray, control: Control, height: float, tol:
     start = float(y[model.size + 1])
     control = dataclasses.replace(control, force=None, height=start)
     first = min(abs(start - height), FIRST_TRAVEL * model.thickness) + 1e-12
-    return _march(model, y, control, "height", height, first, tol, largest=max(first, MAX_TRAVEL * model.thickness))
+    return _march(model, y, control, "height", height, first, tol, unit,
+                  largest=max(first, MAX_TRAVEL * model.thickness))

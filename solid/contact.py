@@ -60,6 +60,13 @@ class Surface:
         """The largest radius the surface has (a sphere's equator, a profile's last radius; None: the plate)."""
         return self.radius if self.shape is None else float(self.shape.extent)
 
+    @property
+    def end(self) -> str:
+        """Where the surface ends, in words (a sphere's equator, a profile's last radius; "" on the plate)."""
+        if self.flat:
+            return ""
+        return "the sphere's equator" if self.shape is None else "the end of the indenter's profile"
+
     def _sphere(self) -> float:
         assert self.radius is not None  # a surface that is neither flat nor a profile is a sphere
         return self.radius
@@ -175,9 +182,8 @@ def rows(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> Rows:
     lam = y[model.size + 2:]
     rho, z = _nodes(model, surface, y, active)
     if surface.reach is not None and np.any(rho >= surface.reach):
-        end = "the sphere's equator" if surface.shape is None else "the end of the indenter's profile"
-        raise OutOfRangeError(f"the sheet would wrap past {end} (a node in contact at rho = {rho.max():.6g} R, the "
-                              f"indenter's surface ends at {surface.reach:.6g} R)")
+        raise OutOfRangeError(f"the sheet would wrap past {surface.end} (a node in contact at rho = {rho.max():.6g} "
+                              f"R, the indenter's surface ends at {surface.reach:.6g} R)")
     g, grad, hess = surface.local(rho, z, float(y[model.size + 1]))
     dgdh = -grad[:, 1]
     cols = np.arange(m)

@@ -42,8 +42,10 @@ Under a sphere of radius K or a profile (``contact``) the same, with the gaps to
 meanings of the membrane solvers: ``height`` the indenter's lowest point h, ``contact_area`` the curved
 area in contact over pi R^2 (``contact.Surface.area``: 2 K z(rho_c) on a sphere), ``contact_radius_deformed``
 rho_c, ``stretch_contact`` the pole's stretch (the zone is not uniform), and the reaction the vertical part
-of the contact forces, sum_k lambda_k dg_k/dh. A contact reaching the sphere's equator or the profile's
-last radius is an OutOfRangeError.
+of the contact forces, sum_k lambda_k dg_k/dh. A state whose contact reaches the sphere's equator or the
+profile's last radius, or whose mid-surface reaches the clamp plane, is past the end of the range and is
+refused on the load path (``rangeend``); one read here against a surface its contact passes (the sphere's
+equator, the profile's last radius) is an OutOfRangeError all the same, for it has no contact area.
 """
 
 from __future__ import annotations
@@ -129,9 +131,8 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     r_c = contact_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
     if surface.reach is not None and rho_c >= surface.reach:
-        end = "the sphere's equator" if surface.shape is None else "the end of the indenter's profile"
-        raise OutOfRangeError(f"the sheet would wrap past {end} (its contact reaches rho = {rho_c:.6g} R, the "
-                              f"indenter's surface ends at {surface.reach:.6g} R)")
+        raise OutOfRangeError(f"the sheet would wrap past {surface.end} (its contact reaches rho = {rho_c:.6g} R, "
+                              f"the indenter's surface ends at {surface.reach:.6g} R)")
     area = surface.area(rho_c)
     stretch = float(np.interp(r_c, f.r, f.stretch_2) if surface.flat else f.stretch_1[0])
     height = float(y[model.size + 1])
