@@ -176,13 +176,17 @@ class ProfileProblem(SphereProblem):
 
     def contact_area(self, edge) -> float:
         """The curved contact area over pi R^2, 2 int_0^rho_c rho sqrt(1 + z'^2) drho, for the contact edge's
-        state ``edge`` = [rho, eta, psi, lambda_1, v]. At the range end rho_c is the extent to the shots' error,
-        on either side: the integral stops at the extent, where the profile ends."""
+        state ``edge`` = [rho, eta, psi, lambda_1, v], summed between the table's rows (``Shape.knots``), where
+        the integrand is smooth (across a row its second derivative jumps, and one adaptive quadrature over many
+        rows stalls short of its tolerance). At the range end rho_c is the extent to the shots' error, on either
+        side: the integral stops at the extent, where the profile ends."""
         slope = self.shape.slope
+        top = min(float(edge[0]), self.shape.extent)
+        bounds = [0.0, *(k for k in self.shape.knots if 0.0 < k < top), top]
         from scipy.integrate import quad  # here: scipy stays off the plate's import path
 
-        return 2.0 * quad(lambda r: r * math.sqrt(1.0 + float(slope(r)) ** 2), 0.0,
-                          min(float(edge[0]), self.shape.extent), epsabs=0.0, epsrel=1e-12, limit=200)[0]
+        return 2.0 * sum(quad(lambda r: r * math.sqrt(1.0 + float(slope(r)) ** 2), lo, hi, epsabs=0.0,
+                              epsrel=1e-12, limit=200)[0] for lo, hi in zip(bounds[:-1], bounds[1:], strict=True))
 
     def end_margin(self, edge) -> float:
         """How far the contact edge ``edge`` stands from the profile's end, as a fraction: the smaller of
