@@ -23,7 +23,9 @@ clamp plane (``pocket.shooting.rangeend``; psi(1) = pi). A force above it is an
 OutOfRangeError quoting Fhat_end, the same number whatever force was asked; a
 force up to it is solved. Fhat_end is computed (once, cached) only when it can
 matter: when a step fails, or when a state's clamp angle psi(1) comes within
-1e-6 rad (or 1e4 rtol) of pi, or its indenter's lowest point lies below the clamp plane.
+1e-6 rad (or 1e4 rtol) of pi, or its indenter's lowest point lies below the clamp plane, or its
+contact edge comes within 1e-6 (or 1e4 rtol) of the end of a profile (``pocket.shooting.profile``:
+there the shots go on solving past the profile's last radius, so nothing else would stop them).
 """
 
 from __future__ import annotations
@@ -44,6 +46,7 @@ from .inflation import inflate
 from .integrator import OK, STATUS
 from .laws import law_of
 from .problem import Problem, contact_of
+from .profile import ProfileProblem
 from .rangeend import end_of
 from .shots import profile_from_steps, tension_minima
 
@@ -67,6 +70,15 @@ def _beyond(force, problem, seed):
                  f"the force has a maximum, with the sheet's angle at the clamp at {end.angle:.6g} rad")
         raise beyond_range(f"force = {force!r}", f"force = {end.force:.10g} ({problem.label})", where)
     return end
+
+
+def _past_the_profile(problem, force, x) -> None:
+    """OutOfRangeError (``_beyond``, its end sought from inside the range) if ``force`` is past the range end and
+    its solved state x has the contact edge at or past the end of a profile (``ProfileProblem.end_margin`` within
+    ``_band``). Past its extent a profile's curvature is read at the extent (``pocket.shooting.profile``), so such
+    a state solves with no failed step: this is what keeps it from being returned."""
+    if isinstance(problem, ProfileProblem) and problem.end_margin(problem.shoot(x, force)[3]) <= _band(problem.rtol):
+        _beyond(force, problem, None)
 
 
 def _on_branch(problem, force):
@@ -246,6 +258,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
             states[f] = _uncompressed(problem, f, fluid)
         else:
             branch = _advance(problem, branch, f)
+            _past_the_profile(problem, f, branch.points[-1][1])
             states[f], clamp_angle = problem.compressed(f, branch.points[-1][1], fluid)
             # a solved state past an end: an indenter's lowest point below the clamp plane (a taut, prestretched
             # sheet under a small sphere gets there with no failed step), or the free sheet at the clamp plane

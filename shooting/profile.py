@@ -50,8 +50,10 @@ Where the model ends (``pocket.shooting.sphereend``, the same search): the conta
 end of the profile (its last row or its ``extent``, or a slope turning vertical, theta_c -> pi/2), the
 indenter's lowest point would reach the clamp plane, the free sheet would reach the clamp plane, or it
 would touch the profile outside the contact zone. Past the profile's extent its curvature is read at
-the extent inside a trial step only, so that the margin (extent - rho_c) crosses zero smoothly; no
-returned state has its contact edge there.
+the extent inside a trial step only, so that the margin (extent - rho_c) crosses zero smoothly. Such a
+state solves with no failed step, so the compression checks every solved state's edge: one at or past the
+profile's end at a force past the range end is refused, naming the end (``compression.compression_curve``),
+and no returned state has its contact edge past the extent by more than the shots' error at the end.
 """
 
 from __future__ import annotations
@@ -174,12 +176,17 @@ class ProfileProblem(SphereProblem):
 
     def contact_area(self, edge) -> float:
         """The curved contact area over pi R^2, 2 int_0^rho_c rho sqrt(1 + z'^2) drho, for the contact edge's
-        state ``edge`` = [rho, eta, psi, lambda_1, v]."""
+        state ``edge`` = [rho, eta, psi, lambda_1, v], summed between the table's rows (``Shape.knots``), where
+        the integrand is smooth (across a row its second derivative jumps, and one adaptive quadrature over many
+        rows stalls short of its tolerance). At the range end rho_c is the extent to the shots' error, on either
+        side: the integral stops at the extent, where the profile ends."""
         slope = self.shape.slope
+        top = min(float(edge[0]), self.shape.extent)
+        bounds = [0.0, *(k for k in self.shape.knots if 0.0 < k < top), top]
         from scipy.integrate import quad  # here: scipy stays off the plate's import path
 
-        return 2.0 * quad(lambda r: r * math.sqrt(1.0 + float(slope(r)) ** 2), 0.0, float(edge[0]),
-                          epsabs=0.0, epsrel=1e-12, limit=200)[0]
+        return 2.0 * sum(quad(lambda r: r * math.sqrt(1.0 + float(slope(r)) ** 2), lo, hi, epsabs=0.0,
+                              epsrel=1e-12, limit=200)[0] for lo, hi in zip(bounds[:-1], bounds[1:], strict=True))
 
     def end_margin(self, edge) -> float:
         """How far the contact edge ``edge`` stands from the profile's end, as a fraction: the smaller of
