@@ -83,12 +83,17 @@ def _profile(params: dict) -> Surface:
         return (shape.second(hi) - shape.second(np.abs(rho - step))) / (hi - (rho - step))
 
     def area(rho_c: float) -> float:
+        """The curved area inside rho_c, summed between the table's rows (``shape.knots``), where the integrand
+        is smooth: across a row its second derivative jumps, and one adaptive quadrature over many rows stalls
+        short of its tolerance (and warns)."""
         from scipy.integrate import quad
 
         def band(rho):
             return 2.0 * np.pi * rho * np.sqrt(1.0 + float(shape.slope(np.asarray(rho))) ** 2)
 
-        return float(quad(band, 0.0, rho_c, epsabs=0.0, epsrel=AREA_RTOL, limit=200)[0])
+        bounds = [0.0, *(k for k in shape.knots if 0.0 < k < rho_c), rho_c]
+        return float(sum(quad(band, lo, hi, epsabs=0.0, epsrel=AREA_RTOL, limit=200)[0]
+                         for lo, hi in zip(bounds[:-1], bounds[1:], strict=True)))
 
     return Surface(height=shape.height, slope=shape.slope, second=shape.second, third=third, area=area,
                    reach=extent, end="the end of the indenter's profile")

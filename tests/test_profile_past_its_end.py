@@ -103,20 +103,22 @@ def test_a_curve_crossing_a_short_profiles_end_is_refused_whole():
     assert shooting.compress(ALPHA, PRESSURE, 0.5 * end, indenter=indenter).contact_radius_deformed < table[-1, 0]
 
 
-def test_the_contact_area_on_a_table_of_many_rows_warns_nothing():
+@pytest.mark.parametrize("solver", [shooting, fem], ids=["shooting", "fem"])
+def test_the_contact_area_on_a_table_of_many_rows_warns_nothing(solver):
     """A rounded cone z = sqrt(b^2 + s^2 rho^2) - b tabled in 37 rows to its end (b = 0.04, s = 0.8, rows b / (6 s)
     apart): at 0.99 of the range end the state's curved contact area, 2 int_0^rho_c rho sqrt(1 + z'^2) drho of the
     table's spline, is returned with no warning (one adaptive quadrature across the rows once stalled and warned),
     and equals the same integral by 20-point Gauss-Legendre on each row interval, where the spline is smooth
-    (exact there to round-off: the integrand is analytic on each interval, far from its singularities)."""
+    (exact there to round-off: the integrand is analytic on each interval, far from its singularities), for
+    each solver at its own contact edge."""
     b, s, extent = 0.04, 0.8, 0.3
     rho = np.linspace(0.0, extent, 37)
     shape = profiles.table(rho, np.sqrt(b * b + (s * rho) ** 2) - b)
     indenter = profile(shape)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        state = shooting.compress(ALPHA, PRESSURE, 0.99 * shooting.range_end(ALPHA, PRESSURE, indenter=indenter),
-                                  indenter=indenter)
+        state = solver.compress(ALPHA, PRESSURE, 0.99 * shooting.range_end(ALPHA, PRESSURE, indenter=indenter),
+                                indenter=indenter)
     assert not caught, [str(w.message) for w in caught]
     edge = state.contact_radius_deformed
     bounds = np.append(rho[rho < edge], edge)
