@@ -43,9 +43,9 @@ Tolerance of the contact zone. Its end state enters the residuals divided by s_0
 tensions, and so its shape, follow the strain lambda_1 - 1 ~ s_0, not lambda_1, and the clamp residual
 is (rho(1) - 1) / s_0. Integrated to rtol relative to lambda_1 ~ 1 (the free sheet's tolerance), a
 shallow dome's contact zone (s_0 ~ 1e-3 at Phat_I ~ 2e-4) would hand the free sheet an edge stretch
-whose strain is wrong by rtol / s_0, and not smoothly: the zone starts at the pole with steps so small
-that their error estimates are round-off, so its step sequence, and that error with it, jumps between
-neighbouring unknowns (measured: 1e-8 of noise in the residuals, 1000 times the Newton tolerance,
+whose strain is wrong by up to rtol / s_0 of itself, and not smoothly: the zone starts at the pole with
+steps so small that their error estimates are round-off, so its step sequence, and that error with it,
+jumps between neighbouring unknowns (measured: 2e-8 of noise in the residuals, about 1000 times the Newton tolerance,
 at Phat_I = 2.3e-4, K = 2.85, where the continuation in the force stalled). So the contact zone is
 integrated to rtol s_0 (and its absolute tolerances scaled alike): its error then enters the
 residuals at the relative size rtol, as the free sheet's does; never tighter than
