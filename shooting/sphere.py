@@ -39,6 +39,19 @@ exerts no line force, so the meridian has no kink), and so is T_1 (tangential eq
 edge); the meridional curvature jumps from -1/K to (p - t2 sin(psi) / rho) / t1. The free part
 a <= r <= 1 is integrated from the edge state with the fluid pressure, as under the plate.
 
+Tolerance of the contact zone. Its end state enters the residuals divided by s_0: the free sheet's
+tensions, and so its shape, follow the strain lambda_1 - 1 ~ s_0, not lambda_1, and the clamp residual
+is (rho(1) - 1) / s_0. Integrated to rtol relative to lambda_1 ~ 1 (the free sheet's tolerance), a
+shallow dome's contact zone (s_0 ~ 1e-3 at Phat_I ~ 2e-4) would hand the free sheet an edge stretch
+whose strain is wrong by up to rtol / s_0 of itself, and not smoothly: the zone starts at the pole with
+steps so small that their error estimates are round-off, so its step sequence, and that error with it,
+jumps between neighbouring unknowns (measured: 2e-8 of noise in the residuals, about 1000 times the Newton tolerance,
+at Phat_I = 2.3e-4, K = 2.85, where the continuation in the force stalled). So the contact zone is
+integrated to rtol s_0 (and its absolute tolerances scaled alike): its error then enters the
+residuals at the relative size rtol, as the free sheet's does; never tighter than
+``pocket.core.inputs.TOLERANCE_FLOOR``, a few ulps, below which no integration resolves lambda_1,
+and never looser than rtol (s_0 >= 1).
+
 Closure. Unknowns x = (q, e, c): q = P / P_I, e = (l_c - 1) / s_0 (the pole stretch relative to the
 inflated pole strain s_0, as under the plate), and c the contact radius relative to the plate's at
 the same force, a = c sqrt(Fhat / q) / l_c (under the plate c = 1). Residuals, all of order one:
@@ -72,12 +85,13 @@ import math
 import numpy as np
 
 from pocket.core.errors import CLAMP_PLANE, OutOfRangeError
+from pocket.core.inputs import TOLERANCE_FLOOR
 from pocket.core.states import CompressedState
 
 from .equations import pole_state
 from .integrator import OK, integrate
 from .problem import Problem
-from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, profile_from_steps, tension_minima
+from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, Tolerance, profile_from_steps, tension_minima
 from .tensions import tensions
 
 __all__ = ["SphereProblem", "EQUATOR", "POLE", "TOUCH"]
@@ -139,13 +153,21 @@ class SphereProblem(Problem):
             return None
         return q, lc, a, self.law.pressure_factor * self.inflated.pressure * q
 
+    @property
+    def contact_tolerance(self) -> Tolerance:
+        """The contact zone's integration tolerances: ``tolerance`` scaled by the pole strain s_0, to rtol s_0
+        within [``TOLERANCE_FLOOR``, rtol] (module docstring)."""
+        tol = self.tolerance
+        rtol = min(tol.rtol, max(tol.rtol * self.strain, TOLERANCE_FLOOR))
+        return Tolerance(rtol, tol.atol * (rtol / tol.rtol))
+
     def _contact(self, lc, a, store):
         """(status, y(a), steps) of the contact zone from the pole to the edge r = a."""
         start = self._pole(lc)[1]
         if a <= 2.0 * R_POLE:  # the series alone: its error O(a^3) is below the integration's
             y = pole_state(lc, self.law, start, a)
             return OK, y, np.array([[a, *y]])
-        tol = self.tolerance
+        tol = self.contact_tolerance
         status, _, y, steps = integrate(pole_state(lc, self.law, start, R_POLE), R_POLE, self.law, 0.0,
                                         rtol=tol.rtol, atol=tol.atol, store=store, r_end=a, wrap=1.0 / self.radius,
                                         max_step=PROFILE_STEP if store else np.inf)
