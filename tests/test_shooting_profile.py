@@ -24,6 +24,7 @@ from pocket import shooting
 from pocket.core import profiles
 from pocket.core.errors import OutOfRangeError
 from pocket.core.indenters import profile, sphere
+from pocket.core.materials import check
 
 ALPHA, PHAT = 0.1, 0.3
 K = 0.4  # a fingertip: R_s = 0.4 R
@@ -167,3 +168,18 @@ def test_a_table_is_integrated_compiled_as_scipy_integrates_it():
         for key in keys:
             assert getattr(a, key) == pytest.approx(getattr(b, key), rel=1e-8), key
             assert getattr(a, key) == pytest.approx(getattr(c, key), rel=1e-9), key
+
+
+def test_a_sphere_as_functions_on_a_shallow_dome_reproduces_the_sphere():
+    """The sphere given as exact profile functions on a shallow dome under a large sphere (Phat_I = 2.26e-4,
+    K = 1.379, Fhat = 0.472: a pole strain s_0 ~ 1e-3), where the contact zone's state enters the residuals
+    divided by s_0: the profile's contact zone is integrated to the same scaled tolerance as the sphere's, so
+    every scalar is the sphere's to 1e-8 (the shots' own error, rtol 1e-10 over s_0, with margin)."""
+    k, phat, force = 1.3790245400508674, 0.00022631090533322825, 0.47243114058787555
+    material = check("neo-hookean", {"mu": 1.0})
+    exact = profiles.functions(lambda r: k - np.sqrt(k * k - r * r), lambda r: r / np.sqrt(k * k - r * r),
+                               lambda r: np.full_like(r, 1.0 / k), 0.9 * k, source="a sphere")
+    ref = shooting.compress(material, phat, force, indenter=sphere(k))
+    got = shooting.compress(material, phat, force, indenter=profile(exact))
+    for key in SCALARS:
+        assert getattr(got, key) == pytest.approx(getattr(ref, key), rel=1e-8), key
