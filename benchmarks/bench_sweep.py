@@ -30,8 +30,8 @@ from timing import median_time
 
 from pocket import shooting
 from pocket.apps.provenance import cpus
-from pocket.apps.sweep import run_sweep, solve_point
-from pocket.apps.workers import local_executor
+from pocket.apps.sweep.grid import run_sweep, solve_point
+from pocket.apps.sweep.workers import local_executor
 
 ALPHAS = [0.1, 0.2, 0.3, 0.6, 1.2]
 PRESSURES = [float(p) for p in np.linspace(0.05, 0.3, 10)]

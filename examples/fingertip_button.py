@@ -19,7 +19,7 @@ import numpy as np
 
 from pocket import shooting
 from pocket.apps.design import design
-from pocket.apps.vtkfiles import write_series
+from pocket.apps.vtk.files import write_series
 from pocket.core.indenters import sphere
 
 RADIUS, HEIGHT, MODULUS, ALPHA = 0.020, 0.010, 1e6, 47 / 160  # m, m, Pa, C2/C1

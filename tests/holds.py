@@ -75,10 +75,10 @@ def _held(*args, **kwargs):
 curves._next_fitted = _held
 """
 
-#: every curve of a sweep (``pocket.apps.sweep.solve_curve``, run by the workers) says it arrived, then
+#: every curve of a sweep (``pocket.apps.sweep.grid.solve_curve``, run by the workers) says it arrived, then
 #: waits; a forked worker inherits the patch and the pipes
 SWEEP_CURVE = """
-import pocket.apps.sweep as sweep
+import pocket.apps.sweep.grid as sweep
 
 _solve = sweep.solve_curve
 

@@ -6,7 +6,7 @@ import json
 import pytest
 
 from pocket import shooting
-from pocket.apps.sweep import COLUMNS
+from pocket.apps.sweep.journal import COLUMNS
 from pocket.cli import main
 from pocket.core.fluids import gas
 from pocket.core.materials import check

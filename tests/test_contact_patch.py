@@ -16,9 +16,9 @@ import numpy as np
 import pytest
 
 from pocket import fem, shooting
-from pocket.apps import vtkfiles
 from pocket.apps.cases import sample
-from pocket.apps.sweep import run_sweep
+from pocket.apps.sweep.grid import run_sweep
+from pocket.apps.vtk import files
 from pocket.cli import main
 from pocket.core.indenters import sphere
 from pocket.core.materials import check
@@ -147,7 +147,7 @@ def test_vtk_field_data_has_deformed_radius_and_contact_pressures(tmp_path):
     points in contact (every step has a point at its contact edge: to 1e-9, the interpolation's rounding)."""
     forces = [0.1, 0.3, 0.6]
     states = fem.compression_curve(0.3, 0.3, forces, indenter=sphere(0.5))
-    out = vtkfiles.write_series(tmp_path / "vtk", states, times=forces, segments=6)
+    out = files.write_series(tmp_path / "vtk", states, times=forces, segments=6)
     for k, state in enumerate(states):
         mesh = meshio.read(out / f"step_{k:04d}_profile.vtu")
         fields = {key: values.tolist() for key, values in mesh.field_data.items()}

@@ -224,7 +224,7 @@ def test_the_contact_pressure_is_reported_as_the_shooting_solver_reports_it():
     its integral over the zone the force; the FE-only diagnostics stay in ``extra``."""
     from scipy.integrate import simpson
 
-    from pocket.apps.contact import contact_pressures
+    from pocket.apps.contactpatch import contact_pressures
 
     radius = 0.8
     state = fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(radius))

@@ -1,5 +1,5 @@
 """A force past the end of the model's range, refused in the user's unit and in one wording for every
-solver (``pocket.core.errors.beyond_range``, ``pocket.apps.rangeend``)."""
+solver (``pocket.core.errors.beyond_range``, ``pocket.apps.forcerange``)."""
 
 import math
 

@@ -7,7 +7,8 @@ import pytest
 
 from pocket import analytical, shooting
 from pocket.apps.rubbers import PARAMETERS
-from pocket.apps.sweep import COLUMNS, run_sweep
+from pocket.apps.sweep.grid import run_sweep
+from pocket.apps.sweep.journal import COLUMNS
 from pocket.cli import main
 from pocket.core.errors import InputError
 from pocket.core.materials import mooney_rivlin
@@ -83,7 +84,7 @@ def test_a_curve_task_gives_the_points(solver, options):
     residual of order 1; analytical: closed form, solved to round-off), so two solves of one
     point differ by a few of it: 100 times it bounds that, and is far below any physical digit."""
     from pocket.apps.solvers import record
-    from pocket.apps.sweep import solve_curve, solve_point
+    from pocket.apps.sweep.grid import solve_curve, solve_point
 
     tolerance = {"shooting": "rtol", "fem": "tol"}
     rel = 100 * (record(solver).option(tolerance[solver]).default if solver in tolerance else 1e-12)
@@ -170,7 +171,7 @@ def test_rows_record_the_grid_as_asked(tmp_path, monkeypatch):
     import dataclasses
     import math
 
-    import pocket.apps.sweep as sweep
+    import pocket.apps.sweep.grid as sweep
 
     def compress(material, pressure_initial, force, **options):
         state = shooting.compress(material, pressure_initial, force, **options)
@@ -398,7 +399,7 @@ def test_warnings_go_to_the_message_column(tmp_path, monkeypatch):
     """An ok point's message is its state's warnings, joined by '; ' on one line."""
     import dataclasses
 
-    import pocket.apps.sweep as sweep
+    import pocket.apps.sweep.grid as sweep
 
     def compress(*args, **options):
         return dataclasses.replace(shooting.compress(*args, **options), warnings=("first\nnote", "second"))

@@ -13,9 +13,9 @@ import pytest
 from pocket.validation import runner
 
 import pocket
-from pocket.apps import vtkfiles
 from pocket.apps.folders import MARKER, check_replaceable, staged
 from pocket.apps.ledger import LEDGER
+from pocket.apps.vtk import files
 from pocket.cli import main
 from pocket.core.errors import InputError
 
@@ -106,7 +106,7 @@ def test_pockets_install_and_its_parents_are_never_replaced():
     install = pathlib.Path(pocket.__file__).resolve().parent
     for folder in (install, *install.parents):
         with pytest.raises(InputError, match="pocket's install or a folder above"):
-            check_replaceable(folder, vtkfiles.KIND)
+            check_replaceable(folder, files.KIND)
 
 
 def test_a_series_pocket_wrote_is_replaced_by_a_rerun(tmp_path, monkeypatch, capsys):
@@ -117,7 +117,7 @@ def test_a_series_pocket_wrote_is_replaced_by_a_rerun(tmp_path, monkeypatch, cap
     argv = ["compress", "--alpha", "0.3", "--pressure", "0.1", "--vtk", "series", "--force"]
     assert main([*argv, "0.1"]) == 0
     marker = json.loads((tmp_path / "series" / MARKER).read_text())
-    assert marker["kind"] == vtkfiles.KIND and "surface.pvd" in marker["entries"]
+    assert marker["kind"] == files.KIND and "surface.pvd" in marker["entries"]
     before = _tree(tmp_path)
     capsys.readouterr()
     assert main([*argv, "0.2"]) == 2

@@ -16,8 +16,9 @@ import numpy as np
 import pytest
 
 from pocket import shooting
-from pocket.apps import folders, resampling, vtkfiles
-from pocket.apps.contact import KEYS as CONTACT
+from pocket.apps import folders
+from pocket.apps.contactpatch import KEYS as CONTACT
+from pocket.apps.vtk import files, resampling
 from pocket.core.errors import InputError
 from pocket.core.materials import mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState, InflatedState, Profile
@@ -119,7 +120,7 @@ STATES = {"cap": cap(0.5), "pressed": pressed()}
 def test_profile_mesh(kind):
     """Points (rho, 0, eta) in order, a chain of lines, the named point data."""
     state = STATES[kind]
-    mesh = vtkfiles.profile_mesh(state)
+    mesh = files.profile_mesh(state)
     np.testing.assert_array_equal(mesh.points[:, 0], state.profile.rho)
     np.testing.assert_array_equal(mesh.points[:, 2], state.profile.eta)
     assert mesh.cells[0].type == "line" and len(mesh.cells[0].data) == len(state.profile.r) - 1
@@ -134,7 +135,7 @@ def test_surface_topology(kind, segments):
     """The pole is one point with a fan of triangles; no duplicate points; quads elsewhere."""
     state = STATES[kind]
     n = len(state.profile.r)
-    mesh = vtkfiles.surface_mesh(state, segments=segments)
+    mesh = files.surface_mesh(state, segments=segments)
     assert len(mesh.points) == 1 + (n - 1) * segments
     assert len(np.unique(mesh.points.round(14), axis=0)) == len(mesh.points)
     blocks = {block.type: block.data for block in mesh.cells}
@@ -148,7 +149,7 @@ def test_surface_off_axis():
     state = cap(0.5)
     profile = Profile(*(getattr(state.profile, f)[1:] for f in ("r", "rho", "eta", "stretch_1", "stretch_2",
                                                                 "tension_1", "tension_2", "contact")))
-    mesh = vtkfiles.surface_mesh(dataclasses.replace(state, profile=profile), segments=8)
+    mesh = files.surface_mesh(dataclasses.replace(state, profile=profile), segments=8)
     assert [b.type for b in mesh.cells] == ["quad"] and len(mesh.points) == 8 * len(profile.r)
 
 
@@ -156,7 +157,7 @@ def test_surface_off_axis():
 def test_surface_point_data(kind):
     """Point data copied around each ring; deformed minus displacement is the flat sheet at radius r."""
     state = STATES[kind]
-    mesh = vtkfiles.surface_mesh(state, segments=12)
+    mesh = files.surface_mesh(state, segments=12)
     assert set(mesh.point_data) == NAMES
     reference = mesh.points - mesh.point_data["displacement"]
     np.testing.assert_allclose(np.hypot(reference[:, 0], reference[:, 1]), mesh.point_data["r"], atol=1e-15)
@@ -176,7 +177,7 @@ def test_volume_is_polygon_factor_times_polyline_volume(kind, segments):
     revolution of the profile's polyline (each sector is the circular one scaled by cos(pi/N)
     radially and cut to a triangle). Round-off only: rel 1e-12."""
     state = STATES[kind]
-    volume = enclosed_volume(vtkfiles.surface_mesh(state, segments=segments))
+    volume = enclosed_volume(files.surface_mesh(state, segments=segments))
     factor = segments * math.sin(2 * math.pi / segments) / (2 * math.pi)
     assert volume == pytest.approx(factor * polyline_volume(state), rel=1e-12)
 
@@ -189,7 +190,7 @@ def test_volume_converges_at_second_order(kind):
     far below the angular error of 128 segments (about 4e-4 relative)."""
     state = cap(0.5, n=4001) if kind == "cap" else pressed(n=4001)
     segments = np.array([8, 16, 32, 64, 128])
-    volumes = [enclosed_volume(vtkfiles.surface_mesh(state, segments=s)) for s in segments]
+    volumes = [enclosed_volume(files.surface_mesh(state, segments=s)) for s in segments]
     errors = np.abs(np.array(volumes) - state.volume)
     order = -np.polyfit(np.log(segments), np.log(errors), 1)[0]
     assert abs(order - 2) < 0.05, f"observed order {order!r}, errors {errors!r}"
@@ -203,9 +204,9 @@ def test_write_state_round_trip(tmp_path, kind):
     """meshio reads back the same points, cells and point data; the state is not changed."""
     state = STATES[kind]
     before = {f: np.copy(getattr(state.profile, f)) for f in ("r", "rho", "eta", "contact")}
-    paths = vtkfiles.write_state(tmp_path / "out", state, stem="s", segments=10)
+    paths = files.write_state(tmp_path / "out", state, stem="s", segments=10)
     assert [p.name for p in paths] == ["s_profile.vtu", "s_surface.vtu"]
-    expected = [vtkfiles.profile_mesh(state), vtkfiles.surface_mesh(state, segments=10)]
+    expected = [files.profile_mesh(state), files.surface_mesh(state, segments=10)]
     for path, mesh in zip(paths, expected, strict=True):
         back = meshio.read(path)
         np.testing.assert_array_equal(back.points, mesh.points)
@@ -223,11 +224,11 @@ def test_pyvista_reads_state(tmp_path):
     """pyvista (VTK's own reader) opens the surface with every point array."""
     pv = pytest.importorskip("pyvista")
     state = STATES["pressed"]
-    _, surface = vtkfiles.write_state(tmp_path, state, segments=10)
+    _, surface = files.write_state(tmp_path, state, segments=10)
     grid = pv.read(surface)
     assert grid.n_points == 1 + (len(state.profile.r) - 1) * 10
     assert NAMES <= set(grid.point_data.keys())
-    expected = vtkfiles.surface_mesh(state, segments=10)
+    expected = files.surface_mesh(state, segments=10)
     np.testing.assert_array_equal(grid.point_data["contact"], expected.point_data["contact"])
     np.testing.assert_array_equal(grid.points, expected.points)
 
@@ -249,7 +250,7 @@ def test_write_series(tmp_path):
     """One profile, one surface and (compressed states) one indenter per step; each .pvd lists every step with its
     time, relative names."""
     states, forces = series()
-    out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=8)
+    out = files.write_series(tmp_path / "path", states, times=forces, segments=8)
     names = sorted(p.name for p in out.iterdir())
     parts = ("profile", "surface", "indenter")
     steps = [f"step_{k:04d}_{part}.vtu" for k in range(3) for part in parts]
@@ -267,7 +268,7 @@ def test_pyvista_reads_series(tmp_path):
     """pyvista's PVD reader lists the times and reads each step's surface."""
     pv = pytest.importorskip("pyvista")
     states, forces = series()
-    out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=8)
+    out = files.write_series(tmp_path / "path", states, times=forces, segments=8)
     reader = pv.get_reader(out / "surface.pvd")
     assert reader.time_values == pytest.approx(forces, rel=1e-15)
     for state, force in zip(states, forces, strict=True):
@@ -277,14 +278,14 @@ def test_pyvista_reads_series(tmp_path):
         assert NAMES <= set(block.point_data.keys())
     assert [d.path for d in reader.datasets] == [f"step_{k:04d}_surface.vtu" for k in range(3)]
     first = pv.read(out / "profile.pvd")  # pyvista.read gives the first step as a MultiBlock
-    radii = resampling.series_radii([s.profile for s in states], vtkfiles.SERIES_POINTS)
+    radii = resampling.series_radii([s.profile for s in states], files.SERIES_POINTS)
     assert first[0].n_points == len(radii)
 
 
 def test_series_default_times(tmp_path):
     """Times default to the step index."""
     states, _ = series()
-    out = vtkfiles.write_series(tmp_path / "path", states, segments=4)
+    out = files.write_series(tmp_path / "path", states, segments=4)
     sets = ET.parse(out / "surface.pvd").getroot().iter("DataSet")
     assert [float(d.get("timestep")) for d in sets] == [0.0, 1.0, 2.0]
 
@@ -302,16 +303,16 @@ def test_series_is_atomic(tmp_path, monkeypatch):
 
     monkeypatch.setattr(meshio, "write", failing)
     with pytest.raises(OSError, match="disk full"):
-        vtkfiles.write_series(tmp_path / "path", states)
+        files.write_series(tmp_path / "path", states)
     assert list(tmp_path.iterdir()) == []
     # the same with overwrite: the old series survives untouched
     monkeypatch.setattr(meshio, "write", write)
-    vtkfiles.write_series(tmp_path / "path", states[:1])
+    files.write_series(tmp_path / "path", states[:1])
     old = sorted(p.name for p in (tmp_path / "path").iterdir())
     calls.clear()
     monkeypatch.setattr(meshio, "write", failing)
     with pytest.raises(OSError):
-        vtkfiles.write_series(tmp_path / "path", states, overwrite=True)
+        files.write_series(tmp_path / "path", states, overwrite=True)
     assert sorted(p.name for p in (tmp_path / "path").iterdir()) == old
     assert [p.name for p in tmp_path.iterdir()] == ["path"]
 
@@ -325,17 +326,17 @@ def test_series_refuses_non_empty(tmp_path):
     (target / "stale.txt").write_text("old")
     for overwrite in (False, True):
         with pytest.raises(InputError, match="holds stale.txt, which pocket did not write"):
-            vtkfiles.write_series(target, states, overwrite=overwrite)
+            files.write_series(target, states, overwrite=overwrite)
     (target / "stale.txt").unlink()
-    vtkfiles.write_series(target, states[:1])
+    files.write_series(target, states[:1])
     with pytest.raises(InputError, match="previous VTK series"):
-        vtkfiles.write_series(target, states)
-    vtkfiles.write_series(target, states, overwrite=True)
+        files.write_series(target, states)
+    files.write_series(target, states, overwrite=True)
     assert (target / "step_0002_surface.vtu").exists()
     assert [p.name for p in tmp_path.iterdir()] == ["path"]
     empty = tmp_path / "empty"
     empty.mkdir()
-    assert (vtkfiles.write_series(empty, states[:1]) / "profile.pvd").exists()
+    assert (files.write_series(empty, states[:1]) / "profile.pvd").exists()
 
 
 @pytest.mark.parametrize(
@@ -352,7 +353,7 @@ def test_series_bad_input(tmp_path, kwargs, message):
     """Bad times or segments: InputError before any file is written."""
     states, _ = series()
     with pytest.raises(InputError, match=message):
-        vtkfiles.write_series(tmp_path / "path", states, **kwargs)
+        files.write_series(tmp_path / "path", states, **kwargs)
     assert list(tmp_path.iterdir()) == []
 
 
@@ -360,9 +361,9 @@ def test_no_profile(tmp_path):
     """A state without a profile (and an empty series) is refused with one line."""
     state = dataclasses.replace(cap(0.5), profile=None)
     with pytest.raises(InputError, match="no profile"):
-        vtkfiles.write_state(tmp_path, state)
+        files.write_state(tmp_path, state)
     with pytest.raises(InputError, match="no states"):
-        vtkfiles.write_series(tmp_path / "path", [])
+        files.write_series(tmp_path / "path", [])
 
 
 def test_resample_keeps_the_flat_zone_and_the_kink():
@@ -420,7 +421,7 @@ def test_series_has_one_point_set(tmp_path):
     and the same Lagrangian radii r, so an index is one material point; each step has a point exactly at
     its own contact edge, in contact, and the next point is free (read back with meshio)."""
     states, forces = series()
-    out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=6)
+    out = files.write_series(tmp_path / "path", states, times=forces, segments=6)
     radii = None
     for k, state in enumerate(states):
         profile = meshio.read(out / f"step_{k:04d}_profile.vtu")
@@ -477,7 +478,7 @@ def test_field_data_round_trip(tmp_path):
     parameters c1 and c2 in units of mu_0) as field data; meshio and pyvista's PVD reader give them
     back exactly."""
     states, forces = series()
-    out = vtkfiles.write_series(tmp_path / "path", states, times=forces, segments=6)
+    out = files.write_series(tmp_path / "path", states, times=forces, segments=6)
     for k, state in enumerate(states):
         for part in ("profile", "surface"):
             back = meshio.read(out / f"step_{k:04d}_{part}.vtu")
@@ -498,7 +499,7 @@ def test_field_data_round_trip(tmp_path):
 def test_inflated_state_field_data():
     """Exact answer: an inflated state carries its own keys (pressure, stretch_pole, height, ...)."""
     state = cap(0.5)
-    mesh = vtkfiles.profile_mesh(state)
+    mesh = files.profile_mesh(state)
     assert _read(mesh.field_data) == _numbers(state)
     assert set(_numbers(state)) == {*InflatedState.KEYS, *CHECKS, "c1", "c2", *CODES} - {"contact_code"}
 
@@ -512,7 +513,7 @@ def test_other_law_and_gas_field_data(tmp_path):
 
     ogden = check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0, -2.0]}).scaled()
     state = shooting.compress(ogden, 0.3, 0.2, fluid=gas(6.5, 1.4))
-    paths = vtkfiles.write_state(tmp_path, state, segments=6)
+    paths = files.write_state(tmp_path, state, segments=6)
     back = meshio.read(paths[0])
     expected = _numbers(state)
     assert "alpha" not in expected and expected["exponents"] == [1.3, 5.0, -2.0] and expected["ambient"] == [6.5]

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from pocket import shooting
-from pocket.apps import vtkfiles, vtkindenter
+from pocket.apps.vtk import files, indentermesh
 from pocket.cli import main
 from pocket.core import profiles
 from pocket.core.indenters import FLAT, profile, sphere
@@ -38,26 +38,26 @@ def test_a_compression_series_has_the_plate_pressing_at_each_step(tmp_path, caps
         counts.add(len(mesh.points))
         np.testing.assert_allclose(mesh.points[:, 2], state.height, rtol=1e-9)  # the solver's resolution
         radius = np.hypot(mesh.points[:, 0], mesh.points[:, 1]).max()
-        assert radius == pytest.approx(vtkindenter.PLATE_MARGIN * widest, rel=1e-12) and radius > widest
+        assert radius == pytest.approx(indentermesh.PLATE_MARGIN * widest, rel=1e-12) and radius > widest
         assert mesh.field_data["height"][0] == pytest.approx(state.height, rel=1e-9)
     assert len(counts) == 1  # the same points at every step
 
 
 def test_an_inflation_path_has_no_indenter(tmp_path):
     states = [shooting.inflate(0.1, p) for p in (0.2, 0.3)]
-    out = vtkfiles.write_series(tmp_path / "vtk", states, segments=8)
+    out = files.write_series(tmp_path / "vtk", states, segments=8)
     assert not list(out.glob("*indenter*"))
 
 
 def _written(tmp_path, mesh) -> meshio.Mesh:
     path = tmp_path / "indenter.vtu"
-    vtkfiles._write_vtu(path, mesh)
+    files._write_vtu(path, mesh)
     return _read(path)
 
 
 def test_a_sphere_lies_on_the_sphere_with_its_lowest_point_at_the_height(tmp_path):
     radius, height = 0.4, 0.3
-    mesh = _written(tmp_path, vtkindenter.indenter_mesh(sphere(radius), height, reach=1.5, segments=16))
+    mesh = _written(tmp_path, indentermesh.indenter_mesh(sphere(radius), height, reach=1.5, segments=16))
     x, y, z = mesh.points.T
     np.testing.assert_allclose(np.hypot(np.hypot(x, y), z - height - radius), radius, rtol=1e-14)
     assert z.min() == height and np.hypot(x, y).max() == pytest.approx(radius, rel=1e-15)  # to its equator
@@ -69,14 +69,14 @@ def test_a_sphere_given_as_a_profile_draws_the_sphere(tmp_path):
     radius, height, top = 0.4, 0.3, 0.3
     rho = np.linspace(0.0, top, 40)
     tip = profile(profiles.table(rho, sphere(radius).height(rho)))
-    mesh = _written(tmp_path, vtkindenter.indenter_mesh(tip, height, reach=1.5, segments=16))
+    mesh = _written(tmp_path, indentermesh.indenter_mesh(tip, height, reach=1.5, segments=16))
     x, y, z = mesh.points.T
     assert np.hypot(x, y).max() == pytest.approx(top, rel=1e-15)  # drawn to the table's last radius
     np.testing.assert_allclose(z, height + sphere(radius).height(np.hypot(x, y)), atol=1e-7)
 
 
 def test_the_flat_plate_mesh_is_a_disc(tmp_path):
-    mesh = _written(tmp_path, vtkindenter.indenter_mesh(FLAT, 0.25, reach=1.5, segments=16))
+    mesh = _written(tmp_path, indentermesh.indenter_mesh(FLAT, 0.25, reach=1.5, segments=16))
     assert np.all(mesh.points[:, 2] == 0.25)
     assert np.hypot(mesh.points[:, 0], mesh.points[:, 1]).max() == pytest.approx(1.5, rel=1e-15)
     assert {c.type for c in mesh.cells} == {"triangle", "quad"}

@@ -87,7 +87,7 @@ def test_portable_watchdog_alone(tmp_path):
     script.write_text(textwrap.dedent("""
         import time
         from concurrent.futures import ProcessPoolExecutor
-        from pocket.apps.workers import _watch_parent
+        from pocket.apps.sweep.workers import _watch_parent
         pool = ProcessPoolExecutor(2, initializer=_watch_parent)
         futures = [pool.submit(time.sleep, 600) for _ in range(2)]
         print("started", flush=True)
@@ -137,7 +137,7 @@ DASK_SWEEP = [sys.executable, "-m", "pocket.cli", "sweep", "--alpha", "0.3", "--
 #: a dask --preload module: every curve task says it started (a file), then waits for the test's release file
 HOLD = """
 import os, pathlib, time
-import pocket.apps.sweep as sweep
+import pocket.apps.sweep.grid as sweep
 
 FOLDER = pathlib.Path({folder!r})
 solve = sweep.solve_curve

@@ -1,6 +1,6 @@
 """A 3-D picture of the pocket, inflated and compressed (pyvista offscreen, optional).
 
-The surfaces are ``pocket.apps.vtkfiles.surface_mesh`` of the states (the meridian
+The surfaces are ``pocket.apps.vtk.files.surface_mesh`` of the states (the meridian
 revolved about the axis), coloured by the meridional stretch lambda_1 on one
 colour scale; the compressed pocket is shown with its plate. pyvista renders
 each view without text; matplotlib sets the two views side by side with their
@@ -25,7 +25,7 @@ _COLORMAP = "viridis"
 
 def _view(pyvista, state, limits):
     """The image (array) of ``state``'s surface, clamp ring and plate."""
-    from pocket.apps.vtkfiles import surface_mesh
+    from pocket.apps.vtk.files import surface_mesh
 
     plotter = pyvista.Plotter(off_screen=True, window_size=_VIEW)
     try:

@@ -98,7 +98,7 @@ def vtk_steps(count: int, vtk: str) -> list[int]:
 
 def _write_vtk(curves, directory: pathlib.Path, steps) -> None:
     """The headline pocket's reference compression path at the indices ``steps`` as a VTK series, time = Fhat."""
-    from pocket.apps.vtkfiles import write_series
+    from pocket.apps.vtk.files import write_series
 
     write_series(directory / "vtk", [curves.reference[k] for k in steps], times=curves.forces[steps])
 

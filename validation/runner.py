@@ -10,8 +10,8 @@ reference, which finds the end of the range. The reference curves start first
 cluster). Each task's wall time is kept (``Results.tasks``) for re-tuning the plan.
 
 An interrupt (Ctrl-C) or any other exception ends the executor's workers at once
-(``pocket.apps.workers.stop``) and passes on. Local workers come from
-``pocket.apps.workers.local_executor``: they ignore SIGINT, which the terminal sends
+(``pocket.apps.sweep.workers.stop``) and passes on. Local workers come from
+``pocket.apps.sweep.workers.local_executor``: they ignore SIGINT, which the terminal sends
 to them too, so that only the main process answers it (one line), not every worker
 with a traceback.
 
@@ -29,7 +29,7 @@ from tqdm import tqdm
 
 from pocket.apps.cases import SAMPLES
 from pocket.apps.provenance import cpus
-from pocket.apps.workers import local_executor, stop
+from pocket.apps.sweep.workers import local_executor, stop
 
 from . import compute, convergence, evidence, findings, identification, thickness, verdicts
 from .plan import Plan

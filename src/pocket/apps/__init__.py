@@ -4,10 +4,11 @@
 and command lines give them, checked), ``physical`` (a case resolved to the dimensionless
 model and back to SI), ``inverse`` (the load that gives a target value),
 ``casefile`` (``pocket run``), ``design`` (soft buttons), ``sense`` (force from
-pressure), ``sweep`` (parameter grids on any executor) with ``sweepfile`` (its
-CSV journal), ``workers`` (local processes that die with their parent) and ``cluster`` (a dask
-cluster that says when it cannot run the sweep),
-``slopes``, ``vtkfiles`` (ParaView output), ``folders`` (outputs checked first,
+pressure), ``forcerange`` (a force past the end of the range, refused in the user's unit),
+``contactpatch`` (the contact patch a state reports), ``slopes``, ``folders`` (outputs checked first,
 written whole or not at all) with ``ledger`` (the checksums of what pocket wrote), ``provenance``
 and ``solvers`` (the solvers by name).
+
+Two subpackages, independent of each other: ``sweep`` (parameter grids on any executor, their CSV
+journal, local workers and dask clusters) and ``vtk`` (ParaView output).
 """

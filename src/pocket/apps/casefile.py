@@ -10,7 +10,7 @@ end in their unit, names without one are dimensionless, and the rubber's stresse
 end in ``_per_mu0``. Each row holds the load as written (``load``: ``"0.2 N"``),
 the SI values (``force_N``, for a force load the force as parsed; ``pressure_Pa``,
 ``pressure_rise_Pa``, ``contact_pressure_pole_Pa`` and ``contact_pressure_edge_Pa`` (P on the flat
-plate, ``pocket.apps.contact``), ``contact_area_m2`` (the curved area in contact under a sphere),
+plate, ``pocket.apps.contactpatch``), ``contact_area_m2`` (the curved area in contact under a sphere),
 ``contact_radius_deformed_m`` (the contact patch's radius as a camera or a print measures it: the
 contact edge's distance from the axis in the deformed sheet, sqrt(A_c / pi) on the plate),
 ``contact_radius_lagrangian_m`` (where the contact edge was in the flat sheet, a_c R: smaller by the

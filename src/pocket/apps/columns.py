@@ -47,7 +47,7 @@ def rubber_columns(material: Material) -> dict:
 def row_scalars(state, contact: dict | None = None) -> dict:
     """The dimensionless keys of the state ``state`` (its ``scalars``) as a row names them: the rubber's
     parameters under their columns (``rubber_columns``), and ``contact`` (the contact patch of a compressed
-    state, ``pocket.apps.contact.contact_patch``), if given, after the state's KEYS in place of its own."""
+    state, ``pocket.apps.contactpatch.contact_patch``), if given, after the state's KEYS in place of its own."""
     contact = contact or {}
     rubber, last = state.material.describe(), state.KEYS[-1]
     out = {}

@@ -19,7 +19,7 @@ replaced. A file is replaced only if it is not there yet or the ledger of its
 folder records that pocket wrote it, unchanged, for the same case
 (``pocket.apps.ledger``: ``write_files`` records every file it writes); a sweep
 file, which a rerun resumes, is read and kept row by row instead
-(``pocket.apps.sweepfile``).
+(``pocket.apps.sweep.journal``).
 
 A result (a file, a VTK series, a report folder) is then written into a hidden
 sibling ``.NAME.XXXXXXXXXXXX.partial`` (a random name, so that two writers of one

@@ -26,10 +26,10 @@ from pocket.core.units import written_like
 
 from .cases import THICKNESS_RATIO, Case
 from .columns import row_scalars
-from .contact import KEYS as CONTACT_PRESSURES
-from .contact import contact_patch
+from .contactpatch import KEYS as CONTACT_PRESSURES
+from .contactpatch import contact_patch
+from .forcerange import check_force
 from .inverse import force_where, pressure_for_height, range_end
-from .rangeend import check_force
 from .solvers import entry, record
 
 __all__ = ["Pocket", "resolve", "forces", "load_forces", "inflated_row", "compressed_row"]
@@ -197,7 +197,7 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     or, for a load the model does not reach, the ``OutOfRangeError`` saying why.
 
     A height above the inflated pocket, or below the lowest the model reaches, or a force past the
-    end of the model's range (``pocket.apps.rangeend``), is not reached; its error quotes the load as the
+    end of the model's range (``pocket.apps.forcerange``), is not reached; its error quotes the load as the
     case gives it, with the bound in its unit.
     """
     case = pocket.case
@@ -268,9 +268,9 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     index: the row starts with the load as the case gives it (``"0.2 N"``, ``"9 mm"``), and a
     force load's ``force_N`` is the force as parsed and its ``force`` the Fhat given to the solver
     (``forces``), not values recomputed from the state. ``contact_pressure_pole_Pa`` and
-    ``contact_pressure_edge_Pa`` follow the pressure where the state carries them (``pocket.apps.contact``:
+    ``contact_pressure_edge_Pa`` follow the pressure where the state carries them (``pocket.apps.contactpatch``:
     on the flat plate both are P); ``contact_area_m2`` is the curved area in contact,
-    ``contact_radius_deformed_m`` the radius of the contact patch, rho_c R (``contact.contact_patch``: on
+    ``contact_radius_deformed_m`` the radius of the contact patch, rho_c R (``contactpatch.contact_patch``: on
     the plate sqrt(A_c / pi)), ``contact_radius_lagrangian_m`` the Lagrangian a_c R (where the contact edge
     was in the flat sheet) and ``height_m`` the indenter's lowest point above the clamp plane;
     ``volume_lower_m3`` follows ``volume_m3`` (``_lower``). The dimensionless keys

@@ -52,9 +52,9 @@ from pocket.core.errors import InputError, OutOfRangeError, PocketError
 from pocket.core.inputs import check_count, check_finite, quote
 from pocket.core.units import quantity, written_like
 
+from .forcerange import check_force
 from .inverse import force_where, range_end
 from .physical import Pocket
-from .rangeend import check_force
 from .slopes import curve_with_slopes
 from .solvers import entry
 
@@ -143,7 +143,7 @@ def calibration(pocket: Pocket, max_force, points: int = 21, *, key: str = "max_
     """Readings at ``points`` forces evenly spaced from 0 to ``max_force`` (N, or a string with unit).
 
     A ``max_force`` past the end of the model's range is an ``OutOfRangeError`` naming ``key`` and quoting
-    the end in the unit of ``max_force`` (``pocket.apps.rangeend``).
+    the end in the unit of ``max_force`` (``pocket.apps.forcerange``).
     """
     points = check_count("points", points, 2, MAX_POINTS)
     top = quantity(key, max_force, "force")

@@ -49,10 +49,10 @@ def warn_case(case: Case) -> None:
 
 
 def _write_vtk(directory, pocket, states: list, of: str) -> None:
-    """The compressed ``states`` as a ParaView series in ``directory`` (``pocket.apps.vtkfiles``), a step per
+    """The compressed ``states`` as a ParaView series in ``directory`` (``pocket.apps.vtk.files``), a step per
     force in increasing order (one for loads of equal force), the time of each its force in newtons, with the
     case's scales in every file's field data."""
-    from pocket.apps.vtkfiles import write_series
+    from pocket.apps.vtk.files import write_series
 
     steps = list({s.force: s for s in sorted(states, key=lambda s: s.force)}.values())
     scales = {"length_scale_m": pocket.case.radius, "pressure_scale_Pa": pocket.pressure_scale_Pa,
@@ -68,7 +68,7 @@ def _main(args) -> int:
     out = check_output_dir(args.out, "--out").resolve()
     paths = [check_output_file(path, "--out", of=of) for path in results_paths(args.out, stem)]
     if args.vtk is not None:
-        from pocket.apps.vtkfiles import KIND
+        from pocket.apps.vtk.files import KIND
 
         vtk = check_replaceable(args.vtk, KIND, "--vtk", of=of)
         if out == vtk or vtk in out.parents:

@@ -143,7 +143,7 @@ def _main(args) -> int:
         indenter = indenter_of(args)
         options.update({} if indenter == FLAT else {"indenter": indenter})
     if args.vtk is not None:
-        from pocket.apps.vtkfiles import KIND
+        from pocket.apps.vtk.files import KIND
 
         check_replaceable(args.vtk, KIND, "--vtk", overwrite=args.overwrite)
         given = getattr(args, "height", None)
@@ -157,7 +157,7 @@ def _main(args) -> int:
     if any(isinstance(v, float) and not math.isfinite(v) for row in rows for v in row.values()):
         raise ConvergenceError(f"solver {args.solver} returned a non-finite value")
     if args.vtk is not None:
-        from pocket.apps.vtkfiles import write_series
+        from pocket.apps.vtk.files import write_series
 
         steps = sorted(states, key=lambda s: getattr(s, "force", 0.0))  # the time is the force, increasing
         write_series(args.vtk, steps, times=[getattr(s, "force", 0.0) for s in steps], overwrite=args.overwrite)

@@ -3,11 +3,11 @@ gas, pressed by the flat plate or a sphere, on local processes or a dask cluster
 
 from __future__ import annotations
 
-from pocket.apps.cluster import PATIENCE, connect
 from pocket.apps.folders import check_output_file
 from pocket.apps.solvers import SOLVERS
-from pocket.apps.sweep import MAX_POINTS, run_sweep
-from pocket.apps.workers import local_executor, max_workers, stop
+from pocket.apps.sweep.cluster import PATIENCE, connect
+from pocket.apps.sweep.grid import MAX_POINTS, run_sweep
+from pocket.apps.sweep.workers import local_executor, max_workers, stop
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_positive
 
@@ -28,7 +28,7 @@ __all__ = ["register"]
 
 
 def _executor(args):
-    """Local processes, or the executor of a dask.distributed cluster (``pocket.apps.cluster``)."""
+    """Local processes, or the executor of a dask.distributed cluster (``pocket.apps.sweep.cluster``)."""
     if args.scheduler is None:
         if args.patience is not None:
             raise InputError("--patience applies to --scheduler, not to local processes")

@@ -21,7 +21,7 @@ import contextlib
 import sys
 import textwrap
 
-from pocket.apps.workers import local_executor, stop
+from pocket.apps.sweep.workers import local_executor, stop
 
 from .common import path_name
 

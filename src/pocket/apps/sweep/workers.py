@@ -33,7 +33,7 @@ from concurrent.futures import Executor, ProcessPoolExecutor
 
 from pocket.core.inputs import check_count
 
-from .provenance import cpus
+from ..provenance import cpus
 
 __all__ = ["local_executor", "max_workers", "stop"]
 

@@ -11,17 +11,17 @@ a fluid, Phat_I, the solver and its options) are solved in one task by
 from a fresh inflation) to the solver's tolerance at a fraction of the cost.
 Both are top-level functions, so that they pickle to other processes and
 machines. ``run_sweep`` takes the executor as an argument: local
-processes (``pocket.apps.workers.local_executor``, the command line's default)
+processes (``pocket.apps.sweep.workers.local_executor``, the command line's default)
 or a dask.distributed cluster (``Client(address).get_executor()``, with
 ``--scheduler ADDRESS``) run the same code.
 
 The results are one tidy CSV, one row per point: the keys of a compressed
 state (``CompressedState.KEYS``), the contact patch's deformed radius and contact
-pressures (``pocket.apps.contact``), the solver and its options, a ``status`` (``ok``;
+pressures (``pocket.apps.contactpatch``), the solver and its options, a ``status`` (``ok``;
 ``out_of_range`` past the model's range; ``failed`` when the solver did not
 converge), a one-line ``message`` (the reason, or the state's warnings), the
 rubber, the fluid and the smallest tensions with the wrinkling flag
-(``pocket.apps.sweepfile``). A row's ``alpha`` (or the parameters of another
+(``pocket.apps.sweep.journal``). A row's ``alpha`` (or the parameters of another
 law), ``pressure_initial``, ``force`` and fluid are the grid point as
 asked, never the values a solver hands back, and every float is written
 exactly (``repr``), so a point reads back equal to the number asked: that is
@@ -64,11 +64,11 @@ from pocket.core.inputs import check_force, check_positive
 from pocket.core.materials import Material, as_material, mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState
 
-from .contact import contact_patch
-from .folders import write_whole
-from .rubbers import prestretched
-from .solvers import entry, record
-from .sweepfile import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
+from ..contactpatch import contact_patch
+from ..folders import write_whole
+from ..rubbers import prestretched
+from ..solvers import entry, record
+from .journal import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
 
 __all__ = ["COLUMNS", "STATUSES", "MAX_POINTS", "solve_point", "solve_curve", "run_sweep"]
 
@@ -176,7 +176,7 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     ``progress(done, total)`` is called after each curve, ``done`` counting points. The file's life,
     when the sweep finishes and when it stops early, is in the module docstring.
     A sweep that stops early leaves the curves not yet solved in ``executor``: its
-    owner ends them (``pocket.apps.workers.stop``; a ``ProcessPoolExecutor`` whose
+    owner ends them (``pocket.apps.sweep.workers.stop``; a ``ProcessPoolExecutor`` whose
     futures were cancelled cannot be stopped by killing its workers before Python
     3.12, its manager thread then fails on the cancelled futures).
     """

@@ -21,7 +21,7 @@ from concurrent.futures import Executor, Future
 
 from pocket.core.errors import ClusterError, InputError
 
-from .provenance import version
+from ..provenance import version
 
 __all__ = ["connect", "ClusterExecutor", "PATIENCE"]
 

@@ -53,7 +53,7 @@ pocket: ``pocket.core.states``): for a compressed state ``alpha``,
 (Phat = P R / (E T)), ``pressure_ratio`` (P / P_I), ``contact_area``
 (A_c / (pi R^2)), ``contact_radius`` (Lagrangian a_c / R), ``stretch_contact``,
 ``height`` (H / R), ``height_ratio`` (H / H0), ``volume`` (V / R^3), then the contact patch
-(``pocket.apps.contact``): ``contact_radius_deformed`` (rho_c / R, the contact edge's distance from the
+(``pocket.apps.contactpatch``): ``contact_radius_deformed`` (rho_c / R, the contact edge's distance from the
 axis in the deformed sheet: the patch a camera sees), ``contact_pressure_pole`` and
 ``contact_pressure_edge`` (the contact pressure at the pole and at the contact edge, Phat; P on the
 flat plate, larger under a sphere or a profile); for an
@@ -78,7 +78,7 @@ every force), and ParaView's temporal interpolation and point tracking need
 the same points at every step. So ``write_series`` resamples every profile on
 one fixed set of Lagrangian radii, ``points`` equally spaced radii plus the
 contact edge of every state of the series, each profile piecewise on either
-side of its own edge (``pocket.apps.resampling``): every step has a point
+side of its own edge (``pocket.apps.vtk.resampling``): every step has a point
 exactly at its contact edge, the kink of the meridian there is kept, and a
 point index is one material point throughout the series.
 
@@ -86,7 +86,7 @@ Load paths. ``write_series`` writes ``step_0000_profile.vtu``,
 ``step_0000_surface.vtu``, ... and the collections ``profile.pvd`` and
 ``surface.pvd`` (file names relative to them), so ParaView plays the path as a
 time series. A compression path also gets the indenter's surface at each step,
-``step_0000_indenter.vtu``, ... and ``indenter.pvd`` (``pocket.apps.vtkindenter``:
+``step_0000_indenter.vtu``, ... and ``indenter.pvd`` (``pocket.apps.vtk.indentermesh``:
 the flat plate a disc wider than the pocket, its lowest point at the state's height).
 The "time" of a step defaults to its index; a compression path should pass
 the force Fhat (an inflation path the pressure or the volume), strictly increasing.
@@ -109,12 +109,12 @@ from pocket.core.inputs import check_count
 from pocket.core.materials import LAWS
 from pocket.core.states import CHECKS
 
-from .contact import contact_patch
-from .folders import check_replaceable, staged
+from ..contactpatch import contact_patch
+from ..folders import check_replaceable, staged
+from ..solvers import SOLVERS
+from .indentermesh import indenter_mesh, reach_of
 from .resampling import resample, series_radii
 from .revolve import revolve
-from .solvers import SOLVERS
-from .vtkindenter import indenter_mesh, reach_of
 
 __all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS", "KIND",
            "CODES"]

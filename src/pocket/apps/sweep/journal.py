@@ -1,10 +1,10 @@
-"""The sweep file: one CSV row per grid point, appended while a sweep runs (``pocket.apps.sweep``).
+"""The sweep file: one CSV row per grid point, appended while a sweep runs (``pocket.apps.sweep.grid``).
 
 Columns (``COLUMNS``), named as ``pocket.apps.columns`` says (all dimensionless): the keys of a
 compressed state (``CompressedState.KEYS``; ``contact_radius`` the Lagrangian a_c / R), the contact
 patch (``CONTACT``: ``contact_radius_deformed`` rho_c / R, the contact edge's distance from the axis
 in the deformed sheet, and the contact pressure at the pole and at the edge, ``contact_pressure_pole``
-and ``contact_pressure_edge`` in units of Phat, P on the flat plate; ``pocket.apps.contact``), the
+and ``contact_pressure_edge`` in units of Phat, P on the flat plate; ``pocket.apps.contactpatch``), the
 solver and its options (``solver_options``: ``name=value`` separated by spaces, in name order, as
 given; empty for the solver's defaults), a ``status`` (``STATUSES``) and a one-line ``message``; then
 the rubber (``material``, the law's name, and a column per parameter of every law, empty where the
@@ -49,10 +49,10 @@ from pocket.core.indenters import FLAT, Indenter
 from pocket.core.materials import Material
 from pocket.core.states import CHECKS, CompressedState
 
-from .columns import in_mu0, parameter_column
-from .contact import KEYS
-from .folders import created_parents, remove_created
-from .rubbers import PARAMETERS
+from ..columns import in_mu0, parameter_column
+from ..contactpatch import KEYS
+from ..folders import created_parents, remove_created
+from ..rubbers import PARAMETERS
 
 try:
     import fcntl
@@ -65,7 +65,7 @@ __all__ = ["COLUMNS", "CONTACT", "IDENTITY", "STATUSES", "Journal", "identity", 
 #: what identifies a point besides alpha, Phat_I and Fhat: its solver, rubber, fluid and indenter
 IDENTITY = ("solver", "solver_options", "material", *map(parameter_column, PARAMETERS), "fluid", "ambient", "gamma",
             "indenter")
-#: the contact patch of a point: its deformed radius and contact pressures (``pocket.apps.contact``)
+#: the contact patch of a point: its deformed radius and contact pressures (``pocket.apps.contactpatch``)
 CONTACT = ("contact_radius_deformed", *KEYS)
 COLUMNS = (*CompressedState.KEYS, *CONTACT, "solver", "solver_options", "status", "message", *IDENTITY[2:], *CHECKS)
 STATUSES = ("ok", "out_of_range", "failed")

@@ -1,7 +1,7 @@
 """The indenter's lower surface as a VTK dataset, so that ParaView shows it pressing the sheet.
 
 The surface is z = h + z(rho) (``pocket.core.indenters``), revolved about the axis like the sheet
-(``pocket.apps.revolve``), h the height of the indenter's lowest point: a compressed state's ``height``
+(``pocket.apps.vtk.revolve``), h the height of the indenter's lowest point: a compressed state's ``height``
 (units R). Its meridian is sampled at ``RINGS`` radii rho_k = reach sin(pi k / (2 (RINGS - 1))), denser
 towards the rim where a sphere steepens, out to ``reach``: the flat plate is a disc of radius ``reach``
 (``write_series`` takes ``PLATE_MARGIN`` times the widest point of the sheet in the series, so the disc
