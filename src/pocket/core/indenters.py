@@ -123,6 +123,13 @@ class Indenter:
         """The numeric parameter ``name`` (a length in units of R); an InputError if it is a shape."""
         return _number(dict(self.params), name)
 
+    def shape(self) -> Shape:
+        """A profile's outline (its parameter ``shape``, ``pocket.core.profiles``); an InputError for a kind
+        that has none."""
+        if "shape" not in self.definition.shapes:
+            raise InputError(f"the {self.kind} indenter has no profile (only a profile indenter has)")
+        return _shape(dict(self.params))
+
     @property
     def pressure_area(self) -> bool:
         """F = P A_c holds as an identity (a flat plate), rather than F = the integral of the contact
