@@ -61,7 +61,7 @@ from __future__ import annotations
 import dataclasses
 import importlib
 from collections.abc import Callable, Iterable, Sequence
-from typing import Any, Protocol, TypeAlias
+from typing import Any, Literal, Protocol, TypeAlias, overload
 
 import numpy as np
 
@@ -289,12 +289,37 @@ class Solver:
             raise ValueError(f"{name!r} is not an entry point (they are {', '.join(ENTRY_POINTS)})")
         return name in self.entry_points
 
-    def entry(self, name: str, purpose: str, alternatives: Iterable[str] = ()) -> Callable:
+    @overload
+    def entry(self, name: Literal["inflate"], purpose: str,
+              alternatives: Iterable[str] = ()) -> Inflate: ...
+    @overload
+    def entry(self, name: Literal["inflate_volume"], purpose: str,
+              alternatives: Iterable[str] = ()) -> InflateVolume: ...
+    @overload
+    def entry(self, name: Literal["inflation_curve"], purpose: str,
+              alternatives: Iterable[str] = ()) -> InflationCurve: ...
+    @overload
+    def entry(self, name: Literal["compress"], purpose: str,
+              alternatives: Iterable[str] = ()) -> Compress: ...
+    @overload
+    def entry(self, name: Literal["compression_curve"], purpose: str,
+              alternatives: Iterable[str] = ()) -> CompressionCurve: ...
+    @overload
+    def entry(self, name: Literal["compress_height"], purpose: str,
+              alternatives: Iterable[str] = ()) -> CompressHeight: ...
+    @overload
+    def entry(self, name: Literal["range_end"], purpose: str,
+              alternatives: Iterable[str] = ()) -> RangeEnd: ...
+    @overload
+    def entry(self, name: str, purpose: str, alternatives: Iterable[str] = ()) -> Callable[..., Any]: ...
+
+    def entry(self, name: str, purpose: str, alternatives: Iterable[str] = ()) -> Callable[..., Any]:
         """The entry point ``name`` (a function of ``module``), asked for ``purpose``: what needs it, as the
         user gave it (``"initial.volume = '2 mL'"``, ``"--volume"``).
 
         A solver without it is a one-line ``InputError`` naming ``purpose``, the solver, what it lacks and
-        ``alternatives`` (the names of solvers that have it).
+        ``alternatives`` (the names of solvers that have it). Typed by name: ``entry("inflate", ...)`` is an
+        ``Inflate``, and so on.
         """
         if not self.serves(name):
             alternatives = ", ".join(alternatives)
