@@ -65,9 +65,10 @@ from scipy.optimize import brentq
 from pocket.core import smallstrain
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import LIQUID, as_fluid
-from pocket.core.indenters import as_indenter, formulation
-from pocket.core.inputs import check_force, check_positive
+from pocket.core.indenters import Indenter, posed
+from pocket.core.inputs import check_forces, check_positive
 from pocket.core.materials import as_material
+from pocket.core.solver import FluidLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState, Profile
 
 __all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT", "CONTACTS"]
@@ -118,7 +119,7 @@ def _profile(r, rho, eta, l1, l2, contact):
                    tension_1=t1, tension_2=t2, contact=contact)
 
 
-def inflate(material, pressure) -> InflatedState:
+def inflate(material: MaterialLike, pressure: float) -> InflatedState:
     """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``.
 
     ``material``: the rubber, any ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha,
@@ -210,17 +211,18 @@ def _contact_radius(force, s0, pressure_initial, a_max, fluid=LIQUID):
     return min(brentq(miss, 0.0, hi, xtol=1e-300, rtol=1e-14) * scale, a_max)
 
 
-def range_end(material, pressure_initial, *, fluid=None, indenter=None) -> float:
+def range_end(material: MaterialLike, pressure_initial: float, *, fluid: FluidLike = None,
+              indenter: Indenter | None = None) -> float:
     """The force Fhat at which the model's contact reaches the clamp (A_c = pi R^2): its range
     (``indenter`` as for ``compression_curve``)."""
-    formulation(CONTACTS, "analytical", as_indenter(indenter))
+    posed(CONTACTS, "analytical", indenter)
     inflated = inflate(material, pressure_initial)
     fluid = as_fluid(fluid)
     return float(_contact_limit(inflated.stretch_pole - 1.0, inflated.pressure, fluid)[1])
 
 
-def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None,
-                      progress=None) -> list[CompressedState]:
+def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
+                      indenter: Indenter | None = None, progress: Progress | None = None) -> list[CompressedState]:
     """Compressed states at each Fhat of ``forces``; OutOfRangeError past the model's maximum force.
 
     ``material`` as for ``inflate``; ``fluid``: None or "liquid", or a gas (``pocket.core.fluids.gas``,
@@ -228,13 +230,10 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     ``Indenter`` this model poses (``CONTACTS``; an InputError for another). ``progress(done, total)``,
     if given, is called after each force (``total`` = len(forces)).
     """
-    indenter = as_indenter(indenter)
-    compressed = formulation(CONTACTS, "analytical", indenter)
+    indenter, compressed = posed(CONTACTS, "analytical", indenter)
     inflated = inflate(material, pressure_initial)
     fluid = as_fluid(fluid)
-    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
-    if not forces:
-        raise InputError("no force given")
+    forces = check_forces(forces)
     s0 = inflated.stretch_pole - 1.0
     a_max, f_max = _contact_limit(s0, inflated.pressure, fluid)
     states = []
@@ -249,6 +248,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     return states
 
 
-def compress(material, pressure_initial, force, *, fluid=None, indenter=None) -> CompressedState:
+def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
+             indenter: Indenter | None = None) -> CompressedState:
     """Compression by eqs (19)-(26) (corrected) at Fhat = ``force`` (``compression_curve``)."""
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter)[0]

@@ -25,17 +25,21 @@ solution), ``newton``, ``continuation``, ``steps``, ``inflation``,
 below). ``SOLVER`` is its record (entry points and options,
 ``pocket.core.solver``).
 
-The entry points are imported on first use (scikit-fem's import is not free),
-so that reading ``SOLVER`` costs nothing.
+The entry points, with their types, are in ``pocket.fem.api``; they are imported on first use
+(scikit-fem's import is not free), so that reading ``SOLVER`` costs nothing.
 """
 
 import importlib
+from typing import TYPE_CHECKING
 
 from pocket.core.importname import require_import_name
 from pocket.core.inputs import check_choice, check_count, check_flag, check_positive, check_tolerance
 from pocket.core.solver import Option, Solver
 
 require_import_name(__name__, "pocket.fem")
+
+if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loaded on first use (__getattr__)
+    from .api import compress, compress_height, compression_curve, default_mesh, inflate, inflate_volume
 
 __all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height",
            "default_mesh", "DEFAULT_ELEMENTS", "DEFAULT_ELEMENTS_P1", "MAX_ELEMENTS", "MIN_ELEMENTS",
@@ -91,7 +95,7 @@ SOLVER = Solver(
 _LAZY = {"inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh"}
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> object:
     if name in _LAZY:
         return getattr(importlib.import_module(".api", __name__), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -32,20 +32,26 @@ from __future__ import annotations
 
 import pathlib
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 
 from pocket import meshes
 from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
-from pocket.core.indenters import as_indenter, formulation
-from pocket.core.inputs import check_force, check_positive, check_volume, quote
+from pocket.core.indenters import Indenter, posed
+from pocket.core.inputs import check_forces, check_positive, check_volume, quote
+from pocket.core.solver import FluidLike, MaterialLike, Numbers, Progress
+from pocket.core.states import CompressedState, InflatedState
 
 from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results, wrapping
 from .gas import sealed
 from .model import FITTED, PENALTY, Control, Model, discretize
 from .newton import Tolerances
 from .surfaces import SURFACES, surface
+
+#: a mesh argument: a mesh file's name, or the nodes of [0, 1] (shape (n+1,)); None for the default mesh
+Mesh = str | pathlib.PurePath | np.ndarray | None
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh",
            "DEFAULT_PENALTY", "POLAR_POWER", "CONTACTS"]
@@ -114,10 +120,9 @@ def _tolerances(tol) -> Tolerances:
     return Tolerances(tol, tol)
 
 
-def _contact(indenter, contact, penalty, augmented) -> tuple[str, float, bool]:
+def _contact(indenter, methods, contact, penalty, augmented) -> tuple[str, float, bool]:
     """The contact method and, for the penalty method, its penalty and augmentation (checked), for the
-    checked ``indenter``."""
-    methods = formulation(CONTACTS, "fem", indenter)
+    checked ``indenter`` and the ``methods`` that pose it."""
     contact = SOLVER.check_option("contact", contact)
     if contact not in methods:
         raise InputError(f"contact = {contact!r} does not apply to the {indenter.kind} indenter (its methods: "
@@ -132,7 +137,8 @@ def _contact(indenter, contact, penalty, augmented) -> tuple[str, float, bool]:
     return contact, penalty, augmented
 
 
-def inflate(material, pressure, *, mesh=None, elements=None, order=2, tol=1e-10):
+def inflate(material: MaterialLike, pressure: float, *, mesh: Mesh = None, elements: int | None = None, order: int = 2,
+            tol: float = 1e-10) -> InflatedState:
     """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
 
     material: the rubber (a Material, or a Mooney-Rivlin alpha: ``as_material``). mesh: nodes of [0, 1] (array, shape
@@ -145,7 +151,8 @@ def inflate(material, pressure, *, mesh=None, elements=None, order=2, tol=1e-10)
     return results.inflated(model, y, iterations, pressure=pressure)
 
 
-def inflate_volume(material, volume, *, mesh=None, elements=None, order=2, tol=1e-10):
+def inflate_volume(material: MaterialLike, volume: float, *, mesh: Mesh = None, elements: int | None = None,
+                   order: int = 2, tol: float = 1e-10) -> InflatedState:
     """Inflated state of volume V/R^3 = ``volume``, by volume control (options as ``inflate``)."""
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
     volume = check_volume("volume", volume)
@@ -156,8 +163,8 @@ def inflate_volume(material, volume, *, mesh=None, elements=None, order=2, tol=1
 def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, contact, penalty, augmented, tol):
     """Checked inputs, the model, the inflated state to compress and the fluid sealed in it with the
     indenter (the volume row's ``Control``)."""
-    indenter = as_indenter(indenter)
-    contact, penalty, augmented = _contact(indenter, contact, penalty, augmented)
+    indenter, methods = posed(CONTACTS, "fem", indenter)
+    contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
     model = _model(material, mesh, elements, order, penalty)
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
@@ -170,8 +177,10 @@ def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, c
     return model, contact, augmented, tol, y_i, state, fill
 
 
-def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None, mesh=None,
-                      elements=None, order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
+                      indenter: Indenter | None = None, progress: Progress | None = None, mesh: Mesh = None,
+                      elements: int | None = None, order: int = 2, contact: str = FITTED, penalty: float | None = None,
+                      augmented: bool | None = None, tol: float = 1e-10) -> list[CompressedState]:
     """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the states before it.
 
     fluid: None (a liquid: fixed volume) or a Fluid (a gas sealed at Phat_I). indenter: None (the flat
@@ -181,39 +190,42 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     default 1e5, with ``augmented`` Lagrangian updates, default true). ``progress(done, total)``
     is called after each force.
     """
-    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
-    if not forces:
-        raise InputError("no force given")
-    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter, mesh,
-                                                                 elements, order, contact, penalty, augmented, tol)
+    forces = check_forces(forces)
+    model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
+                                                                        mesh, elements, order, contact, penalty,
+                                                                        augmented, tol)
     if fill.indenter.kind in SURFACES and contact == FITTED:
-        return wrapping.curve(model, y_i, inflated, fill, forces, tol, progress)
+        return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
-        return curves.fitted_curve(model, y_i, inflated, fill, forces, tol, progress)
-    return curves.penalty_curve(model, y_i, inflated, fill, forces, tol, augmented, progress)
+        return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress)
+    return curves.penalty_curve(model, y_i, inflated, fill, forces, tolerances, augmented, progress)
 
 
-def compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options):
+def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
+             indenter: Indenter | None = None, **options: Any) -> CompressedState:
     """Compressed state at the force Fhat = F/(P_I pi R^2); fluid, indenter and options as ``compression_curve``."""
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, **options)[0]
 
 
-def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, mesh=None, elements=None,
-                    order=2, contact=FITTED, penalty=None, augmented=None, tol=1e-10):
+def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
+                    indenter: Indenter | None = None, mesh: Mesh = None, elements: int | None = None, order: int = 2,
+                    contact: str = FITTED, penalty: float | None = None, augmented: bool | None = None,
+                    tol: float = 1e-10) -> CompressedState:
     """Compressed state with the indenter's lowest point at height H/R = ``height`` (fluid, indenter and options
     as ``compression_curve``); an OutOfRangeError above the inflated pocket, where the indenter would not
     touch it (at its top: the uncompressed state, force 0)."""
     height = check_positive("height", height)
-    model, contact, augmented, tol, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter, mesh,
-                                                                 elements, order, contact, penalty, augmented, tol)
+    model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
+                                                                        mesh, elements, order, contact, penalty,
+                                                                        augmented, tol)
     if height > inflated.height:
         raise above_the_pocket(height, inflated.height)
     if height == inflated.height:
         return results.uncompressed(inflated, fill, contact)
     if fill.indenter.kind in SURFACES and contact == FITTED:
-        return wrapping.at_height(model, y_i, inflated, fill, height, tol)
+        return wrapping.at_height(model, y_i, inflated, fill, height, tolerances)
     if contact == FITTED:
-        return curves.fitted_height(model, y_i, inflated, fill, height, tol)
-    return curves.penalty_height(model, y_i, inflated, fill, height, tol, augmented)
+        return curves.fitted_height(model, y_i, inflated, fill, height, tolerances)
+    return curves.penalty_height(model, y_i, inflated, fill, height, tolerances, augmented)
 
 

@@ -15,17 +15,29 @@ initial pressure (``pocket.core.fluids``; ``pocket.shooting.problem``). The stat
 ``pocket.shooting.equations``, the range end in ``pocket.shooting.rangeend``. ``SOLVER`` is
 its record (entry points and options, ``pocket.core.solver``).
 
-The entry points are imported on first use, so that reading ``SOLVER`` (the
-command line does, to build its flags) costs nothing.
+The entry points, with their types, are in ``pocket.shooting.api``; they are imported on first use, so
+that reading ``SOLVER`` (the command line does, to build its flags) costs nothing.
 """
 
 import importlib
+from typing import TYPE_CHECKING
 
 from pocket.core.importname import require_import_name
 from pocket.core.inputs import check_tolerance
 from pocket.core.solver import Option, Solver
 
 require_import_name(__name__, "pocket.shooting")
+
+if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loaded on first use (__getattr__)
+    from .api import (
+        compress,
+        compress_height,
+        compression_curve,
+        inflate,
+        inflate_volume,
+        inflation_curve,
+        range_end,
+    )
 
 __all__ = ["SOLVER", "inflate", "inflation_curve", "inflate_volume", "compress", "compression_curve", "compress_height",
            "range_end"]
@@ -43,12 +55,11 @@ SOLVER = Solver(
                     f"at most {RTOL_MAX:g}", lambda name, value: check_tolerance(name, value, RTOL_MAX)),),
 )
 
-_HOMES = {"inflate": "inflation", "inflation_curve": "inflation", "inflate_volume": "inflation",
-          "compress": "compression", "compression_curve": "compression", "compress_height": "travel",
-          "range_end": "rangeend"}
+_LAZY = {"inflate", "inflation_curve", "inflate_volume", "compress", "compression_curve", "compress_height",
+         "range_end"}
 
 
-def __getattr__(name):
-    if name in _HOMES:
-        return getattr(importlib.import_module(f".{_HOMES[name]}", __name__), name)
+def __getattr__(name: str) -> object:
+    if name in _LAZY:
+        return getattr(importlib.import_module(".api", __name__), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -74,6 +74,7 @@ from pocket.core.errors import (
 )
 from pocket.core.inputs import check_positive, check_volume
 from pocket.core.materials import as_material
+from pocket.core.solver import MaterialLike, Numbers, Progress
 from pocket.core.states import InflatedState
 
 from . import brent
@@ -328,7 +329,7 @@ def _state(l0, law, p, tol, what, echo):
                          tension_2_min=low[1])
 
 
-def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
+def inflate(material: MaterialLike, pressure: float, *, rtol: float = 1e-10) -> InflatedState:
     """Inflate at pressure Phat = P R / (E T) (pressure control, first branch).
 
     material: the rubber, a ``pocket.core.materials.Material`` (any stress unit; a number is taken as the
@@ -343,7 +344,8 @@ def inflate(material, pressure, *, rtol=1e-10) -> InflatedState:
     return _inflated(material, law, pressure, rtol, tol, _Branch(law, tol), s_est)[0]
 
 
-def inflation_curve(material, pressures, *, rtol=1e-10, progress=None) -> list[InflatedState]:
+def inflation_curve(material: MaterialLike, pressures: Numbers, *, rtol: float = 1e-10,
+                    progress: Progress | None = None) -> list[InflatedState]:
     """Inflated states at each Phat of ``pressures`` (any order; pressure control, first branch), from one
     march along the branch: the pressures are taken in increasing order, each march starting at the pole
     strain of the state before it, the branch's computed points p(s) shared (about half the shots of as many
@@ -403,7 +405,7 @@ def _inflated(material, law, pressure, rtol, tol, branch, start) -> tuple[Inflat
     return _state(1.0 + s, law, p, tol, what, dict(material=material, pressure=pressure)), s
 
 
-def inflate_volume(material, volume, *, rtol=1e-10) -> InflatedState:
+def inflate_volume(material: MaterialLike, volume: float, *, rtol: float = 1e-10) -> InflatedState:
     """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima).
     ``material`` as for ``inflate``."""
     material = as_material(material)

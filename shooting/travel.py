@@ -23,7 +23,10 @@ from __future__ import annotations
 import math
 
 from pocket.core.errors import OutOfRangeError, above_the_pocket
+from pocket.core.indenters import Indenter
 from pocket.core.inputs import check_positive
+from pocket.core.solver import FluidLike, MaterialLike
+from pocket.core.states import CompressedState
 
 from . import brent
 from .compression import compress
@@ -35,7 +38,8 @@ __all__ = ["compress_height"]
 _FORCE_RTOL = 1e-14  # relative width of the force bracket at the root: far below the shots' height error
 
 
-def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, rtol=1e-10):
+def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
+                    indenter: Indenter | None = None, rtol: float = 1e-10) -> CompressedState:
     """The compressed state with the indenter's lowest point at H/R = ``height`` above the clamp plane.
 
     material, pressure_initial (Phat_I), fluid, indenter and rtol as ``compression_curve``. Returns a

@@ -15,11 +15,12 @@ Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``stre
 law's stress and tangent), ``mesh`` (the cross-section), ``assembly`` (the weak forms and their
 vectorised assembly), ``model`` (bases and constraints), ``contact`` (the indenter's gap and its
 derivatives), ``equations`` (the bordered system), ``newton`` (Newton, active set), ``inflation`` and
-``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry points). ``SOLVER``
-is its record.
+``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry points, with their types,
+imported on first use: scikit-fem's import is not free). ``SOLVER`` is its record.
 """
 
 import importlib
+from typing import TYPE_CHECKING
 
 from pocket.core.importname import require_import_name
 from pocket.core.inputs import check_count, check_tolerance
@@ -27,6 +28,9 @@ from pocket.core.offset import check_thickness
 from pocket.core.solver import Option, Solver
 
 require_import_name(__name__, "pocket.solid")
+
+if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loaded on first use (__getattr__)
+    from .api import compress, compress_height, compression_curve, inflate, inflate_volume
 
 __all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height",
            "DEFAULT_THICKNESS", "DEFAULT_ELEMENTS", "DEFAULT_LAYERS", "MIN_LAYERS", "MAX_LAYERS", "MIN_ELEMENTS",
@@ -79,7 +83,7 @@ SOLVER = Solver(
 _LAZY = {"inflate", "inflate_volume", "compress", "compression_curve", "compress_height"}
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> object:
     if name in _LAZY:
         return getattr(importlib.import_module(".api", __name__), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -7,13 +7,17 @@ or a sphere), the options of the record ``SOLVER`` (thickness ratio, layers, ele
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-from pocket.core.errors import InputError, above_the_pocket
-from pocket.core.fluids import as_fluid
-from pocket.core.indenters import as_indenter, formulation
-from pocket.core.inputs import check_force, check_positive, check_volume
-from pocket.core.materials import as_material
+from pocket.core.errors import above_the_pocket
+from pocket.core.fluids import Fluid, as_fluid
+from pocket.core.indenters import Indenter, posed
+from pocket.core.inputs import check_forces, check_positive, check_volume
+from pocket.core.materials import Material, as_material
+from pocket.core.solver import FluidLike, MaterialLike, Numbers, Progress
+from pocket.core.states import CompressedState, InflatedState
 
 from . import (
     DEFAULT_ELEMENTS,
@@ -35,7 +39,8 @@ __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compre
 CONTACTS = {"flat": ("active set",), "sphere": ("active set",), "profile": ("active set",)}
 
 
-def _model(material, thickness_ratio, layers, elements, tol):
+def _model(material, thickness_ratio, layers, elements, tol) -> tuple[Material, model.Model, float]:
+    """The checked rubber, the discretized sheet and the checked tolerance."""
     material = as_material(material)
     law = laws.derivatives(material.scaled())
     t = SOLVER.check_option("thickness_ratio", thickness_ratio)
@@ -45,8 +50,8 @@ def _model(material, thickness_ratio, layers, elements, tol):
     return material, model.discretize(t, mesh.section(t, elements, layers), law), tol
 
 
-def inflate(material, pressure, *, thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS,
-            elements=DEFAULT_ELEMENTS, tol=1e-10):
+def inflate(material: MaterialLike, pressure: float, *, thickness_ratio: float = DEFAULT_THICKNESS,
+            layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> InflatedState:
     """Inflated state at Phat = ``pressure`` (first branch) of the sheet of T/R = ``thickness_ratio``, meshed by
     ``elements`` along the radius and ``layers`` through the thickness; ``tol`` the Newton tolerance (R)."""
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
@@ -55,8 +60,8 @@ def inflate(material, pressure, *, thickness_ratio=DEFAULT_THICKNESS, layers=DEF
     return results.inflated(m, material, y, iterations, pressure=pressure)
 
 
-def inflate_volume(material, volume, *, thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS,
-                   elements=DEFAULT_ELEMENTS, tol=1e-10):
+def inflate_volume(material: MaterialLike, volume: float, *, thickness_ratio: float = DEFAULT_THICKNESS,
+                   layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> InflatedState:
     """Inflated state of cavity volume V/R^3 = ``volume`` (options as ``inflate``)."""
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
     volume = check_volume("volume", volume)
@@ -64,9 +69,11 @@ def inflate_volume(material, volume, *, thickness_ratio=DEFAULT_THICKNESS, layer
     return results.inflated(m, material, y, iterations, volume_given=volume)
 
 
-def _setup(material, pressure_initial, fluid, indenter, thickness_ratio, layers, elements, tol):
-    indenter = as_indenter(indenter)
-    formulation(CONTACTS, "solid", indenter)
+def _setup(material, pressure_initial, fluid, indenter, thickness_ratio, layers, elements,
+           tol) -> tuple[Material, model.Model, float, Fluid, InflatedState, np.ndarray, compression.Control]:
+    """The checked inputs, the inflated state to compress and the first contact from it (the state and its
+    control)."""
+    indenter, _ = posed(CONTACTS, "solid", indenter)
     fluid = as_fluid(fluid)
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol)
     p_i = check_positive("pressure_initial", pressure_initial)
@@ -77,16 +84,15 @@ def _setup(material, pressure_initial, fluid, indenter, thickness_ratio, layers,
     return material, m, tol, fluid, start, y, control
 
 
-def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
-                      thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS,
-                      tol=1e-10):
+def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
+                      indenter: Indenter | None = None, progress: Progress | None = None,
+                      thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
+                      elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> list[CompressedState]:
     """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
     before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); indenter None
     (the flat plate) or ``pocket.core.indenters.sphere(K)``. Options as ``inflate``; ``progress(done, total)``
     after each force. A force past the end of the range is an OutOfRangeError naming the end (``rangeend``)."""
-    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
-    if not forces:
-        raise InputError("no force given")
+    forces = check_forces(forces)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter,
                                                         thickness_ratio, layers, elements, tol)
     unit = np.pi * 3.0 * m.thickness * start.pressure
@@ -100,13 +106,16 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     return out
 
 
-def compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options):
+def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
+             indenter: Indenter | None = None, **options: Any) -> CompressedState:
     """Compressed state at the force Fhat (``compression_curve``)."""
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, **options)[0]
 
 
-def compress_height(material, pressure_initial, height, *, fluid=None, indenter=None,
-                    thickness_ratio=DEFAULT_THICKNESS, layers=DEFAULT_LAYERS, elements=DEFAULT_ELEMENTS, tol=1e-10):
+def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
+                    indenter: Indenter | None = None, thickness_ratio: float = DEFAULT_THICKNESS,
+                    layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
+                    tol: float = 1e-10) -> CompressedState:
     """Compressed state with the plate at H/R = ``height`` above the clamp plane (options as
     ``compression_curve``); an OutOfRangeError above the inflated pocket's top, or below the end of the range
     (``rangeend``)."""

@@ -359,13 +359,13 @@ def test_solver_options_and_magnitudes_through_the_cli(capsys, argv, message):
 
 
 def _with_warnings(monkeypatch):
-    """The shooting solver, patched so that every state carries two warnings (one of its inflated state)."""
+    """The shooting solver, patched so that every state carries two warnings (one of its inflated state): its
+    entry points as the package hands them out, from its ``api``."""
     import dataclasses
 
-    import pocket.shooting.compression as compression
-    import pocket.shooting.inflation as inflation
+    import pocket.shooting.api as api
 
-    real_inflate, real_curve = inflation.inflate, compression.compression_curve
+    real_inflate, real_curve = api.inflate, api.compression_curve
 
     def inflate(*args, **kwargs):
         return dataclasses.replace(real_inflate(*args, **kwargs), warnings=("inflated: note",))
@@ -375,8 +375,8 @@ def _with_warnings(monkeypatch):
                                     inflated=dataclasses.replace(s.inflated, warnings=("inflated: note",)))
                 for s in real_curve(*args, **kwargs)]
 
-    monkeypatch.setattr(inflation, "inflate", inflate)
-    monkeypatch.setattr(compression, "compression_curve", compression_curve)
+    monkeypatch.setattr(api, "inflate", inflate)
+    monkeypatch.setattr(api, "compression_curve", compression_curve)
 
 
 def test_warnings_on_stderr_and_in_json(capsys, monkeypatch, tmp_path):
@@ -409,9 +409,9 @@ class _Terminal(__import__("io").StringIO):
 
 def _curve_with_progress(monkeypatch, calls):
     """The shooting curve, patched to take ``progress`` as the entry-point protocol says, recording it."""
-    import pocket.shooting.compression as compression
+    import pocket.shooting.api as api
 
-    real = compression.compression_curve
+    real = api.compression_curve
 
     def compression_curve(alpha, pressure_initial, forces, *, progress=None, **options):
         calls.append(progress)
@@ -422,7 +422,7 @@ def _curve_with_progress(monkeypatch, calls):
                 progress(done, len(forces))
         return states
 
-    monkeypatch.setattr(compression, "compression_curve", compression_curve)
+    monkeypatch.setattr(api, "compression_curve", compression_curve)
 
 
 @pytest.mark.parametrize("terminal", [True, False])
@@ -481,12 +481,12 @@ def test_every_command_on_a_closed_pipe(argv, buffered, tmp_path):
 
 def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
     """Ctrl-C during a solve (KeyboardInterrupt in the solver): status 130, `pocket: interrupted`."""
-    import pocket.shooting.inflation as inflation
+    import pocket.shooting.api as api
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(inflation, "inflate", interrupted)
+    monkeypatch.setattr(api, "inflate", interrupted)
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--pressure", "0.3")
     assert status == 130 and out == "" and err == "pocket: interrupted\n"
 

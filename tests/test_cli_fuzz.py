@@ -182,12 +182,12 @@ def test_run_never_traces(drawn, folder, capsys):
 def test_an_unexpected_exception_is_one_line(capsys, monkeypatch):
     """A bug (an exception that is no PocketError) inside a command: one line naming it, status 1; with
     POCKET_TRACEBACK set it propagates, traceback and all, for whoever debugs it."""
-    import pocket.shooting.inflation as inflation
+    import pocket.shooting.api as api
 
     def broken(*args, **kwargs):
         raise ZeroDivisionError("float division by zero")
 
-    monkeypatch.setattr(inflation, "inflate", broken)
+    monkeypatch.setattr(api, "inflate", broken)
     assert main(["inflate", "--alpha", "0.3", "--pressure", "0.3"]) == 1
     err = capsys.readouterr().err
     assert err.startswith("pocket: internal error: ZeroDivisionError: float division by zero (a bug") and \

@@ -27,15 +27,13 @@ SWEEP = ["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--wo
 @pytest.fixture
 def no_work(monkeypatch):
     """Any solve or validation run fails the test: a refusal comes before the work."""
-    import pocket.shooting.compression as compression
-    import pocket.shooting.inflation as inflation
+    import pocket.shooting.api as api
 
     def solved(*args, **kwargs):
         raise AssertionError("work started before the output was checked")
 
-    for module, names in ((inflation, ("inflate", "inflate_volume")), (compression, ("compress", "compression_curve"))):
-        for name in names:
-            monkeypatch.setattr(module, name, solved)
+    for name in ("inflate", "inflate_volume", "compress", "compression_curve"):
+        monkeypatch.setattr(api, name, solved)
     monkeypatch.setattr(runner, "run", solved)
 
 

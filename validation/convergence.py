@@ -44,6 +44,7 @@ import time
 import numpy as np
 
 from pocket.apps.physical import Pocket
+from pocket.core.states import CompressedState, InflatedState
 
 from .failures import located
 
@@ -107,6 +108,7 @@ def sequence(case: Pocket, study: str, order: int, mesh: str, counts) -> Sequenc
         grid = fem.default_mesh(n) if mesh == "fitted" else meshes.uniform(n)
         contact = "fitted" if mesh == "fitted" else "penalty"
         where = f"{mesh} mesh of {n} elements" + ("" if study == "inflation" else f", {contact} contact")
+        state: InflatedState | CompressedState
         with located(case_name, what, where, force):
             if study == "inflation":
                 state = fem.inflate(rubber, pressure, mesh=grid, order=order)

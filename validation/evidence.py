@@ -74,6 +74,7 @@ def _pole_ratios() -> dict:
     out = {}
     for alpha in POLE_ALPHAS:
         state = shooting.inflate(mooney_rivlin(alpha), POLE_PRESSURE)
+        assert state.profile is not None  # a shooting state carries its profile
         out[alpha] = float(state.profile.tension_1[0] / (2.0 * (state.stretch_pole - 1.0)))
     return out
 

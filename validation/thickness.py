@@ -98,11 +98,11 @@ def compare(number: int, pressure_kpa: float, forces: tuple[float, ...]) -> Comp
     m_top0 = m0.height + _half_thickness(m0, t)
     values: dict[tuple[str, float | None], tuple[float, float]] = {("V", None): (m0.volume, s0.volume),
               ("V (membrane's lower surface)", None): (m0.volume_lower(t), s0.volume),
-              ("H0 (mid-surface)", None): (m0.height, s0.extra["height_mid"]),
+              ("H0 (mid-surface)", None): (m0.height, float(s0.extra["height_mid"])),
               ("H0 (upper surface)", None): (m_top0, s0.height)}
     for f, m, s in zip(forces, membrane, continuum, strict=True):
         values["P/P_I", f] = (m.pressure_ratio, s.pressure_ratio)
-        values["H/H0 (mid-surface)", f] = (m.height_ratio, s.extra["height_mid"] / s0.extra["height_mid"])
+        values["H/H0 (mid-surface)", f] = (m.height_ratio, float(s.extra["height_mid"]) / float(s0.extra["height_mid"]))
         values["H/H0 (upper surface)", f] = ((m.height + _half_thickness(m, t)) / m_top0, s.height_ratio)
         values["A_c", f] = (m.contact_area, s.contact_area)
     return Comparison(number, t, pressure_kpa, phat, tuple(forces), values, seconds)

@@ -149,7 +149,7 @@ class Case:
         ``ambient_Pa`` and ``gamma``; the indenter is ``indenter`` (plate, sphere or profile) and a sphere's
         ``indenter_radius_m`` or a profile's ``indenter_file`` (``pocket.apps.indenters.describe``).
         """
-        rubber = {"material": self.material.law}
+        rubber: dict[str, object] = {"material": self.material.law}
         stresses = self.material.definition.stresses
         for name, value in self.material.describe().items():
             if name != "material":
@@ -157,7 +157,7 @@ class Case:
         rubber["modulus_Pa"] = self.modulus
         if self.alpha is not None:
             rubber["alpha"] = self.alpha
-        fluid = {"fluid": self.fluid.kind}
+        fluid: dict[str, object] = {"fluid": self.fluid.kind}
         if self.fluid.is_gas:
             fluid.update(ambient_Pa=self.fluid.ambient, gamma=self.fluid.gamma)
         return {"name": self.name, "thickness_m": self.thickness, **rubber, "radius_m": self.radius, **fluid,
@@ -318,7 +318,8 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     given[f"initial.{kind}"] = initial[kind]
     if kind == "volume":  # V/R^3 within the model's range before anything is solved
         check_volume("initial.volume", value / radius**3, f"{quote(initial[kind])} (V/R^3 = {value / radius**3:.3g})")
-    load_kind, loads = "", ()
+    load_kind = ""
+    loads: tuple[float, ...] = ()
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)
     pressing: list[str] = []  # the indenter's size warnings

@@ -105,6 +105,7 @@ def finish(model, rubber, fluid, pressing, *, radius, height, thickness, modulus
     else:
         paper_p, paper_t = PAPER_FORCE_FACTOR * force / (math.pi * radius**2), thickness
         paper_h = paper_height(radius, thickness, modulus, force)
+    paper_model: tuple[float | None, float | None]
     try:
         paper_state = compress(rubber, paper_p * radius / (modulus * paper_t), force / (paper_p * math.pi * radius**2),
                                **sealed(fluid, modulus * paper_t / radius), **pressing)

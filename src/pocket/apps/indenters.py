@@ -75,7 +75,6 @@ def describe(indenter: Indenter, clamp_radius: float) -> dict:
     radius ``clamp_radius`` (m)."""
     if indenter.kind == "flat":
         return {"indenter": "plate"}
-    params = dict(indenter.params)
     if indenter.kind == "sphere":
-        return {"indenter": "sphere", "indenter_radius_m": params["radius"] * clamp_radius}
-    return {"indenter": indenter.kind, "indenter_file": params["shape"].source}
+        return {"indenter": "sphere", "indenter_radius_m": indenter.number("radius") * clamp_radius}
+    return {"indenter": indenter.kind, "indenter_file": indenter.shape().source}

@@ -11,10 +11,20 @@ shooting run does not pay for scikit-fem's import.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any, Literal, overload
 
 from pocket import analytical, fem, shooting, solid
 from pocket.core.errors import InputError
-from pocket.core.solver import Solver
+from pocket.core.solver import (
+    Compress,
+    CompressHeight,
+    CompressionCurve,
+    Inflate,
+    InflateVolume,
+    InflationCurve,
+    RangeEnd,
+    Solver,
+)
 
 __all__ = ["SOLVERS", "record", "entry", "solver_options", "all_options"]
 
@@ -29,7 +39,25 @@ def record(name: str) -> Solver:
     return SOLVERS[name]
 
 
-def entry(solver: Solver | str, name: str, purpose: str) -> Callable:
+@overload
+def entry(solver: Solver | str, name: Literal["inflate"], purpose: str) -> Inflate: ...
+@overload
+def entry(solver: Solver | str, name: Literal["inflate_volume"], purpose: str) -> InflateVolume: ...
+@overload
+def entry(solver: Solver | str, name: Literal["inflation_curve"], purpose: str) -> InflationCurve: ...
+@overload
+def entry(solver: Solver | str, name: Literal["compress"], purpose: str) -> Compress: ...
+@overload
+def entry(solver: Solver | str, name: Literal["compression_curve"], purpose: str) -> CompressionCurve: ...
+@overload
+def entry(solver: Solver | str, name: Literal["compress_height"], purpose: str) -> CompressHeight: ...
+@overload
+def entry(solver: Solver | str, name: Literal["range_end"], purpose: str) -> RangeEnd: ...
+@overload
+def entry(solver: Solver | str, name: str, purpose: str) -> Callable[..., Any]: ...
+
+
+def entry(solver: Solver | str, name: str, purpose: str) -> Callable[..., Any]:
     """The entry point ``name`` of ``solver`` (its record or its name), asked for ``purpose``
     (``Solver.entry``; the error offers the solvers of ``SOLVERS`` that have it)."""
     solver = record(solver) if isinstance(solver, str) else solver

@@ -27,7 +27,7 @@ def _name(key: str) -> str:
 
 
 def _main(args) -> int:
-    warnings = []
+    warnings: list[str] = []
     material = material_of(args, warnings)
     if args.law != DEFAULT_LAW and args.modulus is not None:
         stresses = ", ".join(f"--{q.name}" for q in LAWS[args.law].parameters if q.unit == "stress")

@@ -22,6 +22,8 @@ law's, a missing one, or a gas option without ``--fluid gas`` is a one-line erro
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from pocket.apps.rubbers import DEFAULT_LAW, FLUIDS, gas_of, prestretched, rubber
 from pocket.core.errors import InputError
 from pocket.core.fluids import AMBIENT
@@ -77,6 +79,7 @@ def add_rubber_flags(parser, *, command: str | None = None, alphas: bool = False
                        "required with --law mooney-rivlin, refused with another law")
     for name, uses in law_flags().items():
         listed = any(q.listed for _, q in uses)
+        kind: Callable[[str], object]  # how the flag's text is read: a number, a stress in the model's units, text
         if uses[0][1].unit != "stress":
             kind, unit = number, "a number"
         elif command:

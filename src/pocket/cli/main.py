@@ -41,7 +41,7 @@ def _parser() -> Parser:
     return parser
 
 
-def _interrupted(err: BaseException) -> bool:
+def _interrupted(err: BaseException | None) -> bool:
     """Whether ``err`` wraps a KeyboardInterrupt: a signal that arrives while numba's compiled code runs
     surfaces as "SystemError: ... returned a result with an exception set", caused by the interrupt."""
     seen = set()

@@ -39,7 +39,8 @@ def _main(args) -> int:
     if args.pressure is not None:
         quantity("--pressure", args.pressure, "pressure")
     if args.range is not None:
-        span = list(force_range(*args.range, key="--range"))
+        low, high = args.range
+        span = list(force_range(low, high, key="--range"))
     _warn_plain(args)
     pocket = resolve(case)
     out = {}
@@ -47,7 +48,7 @@ def _main(args) -> int:
         out = sense(pocket, pressure=args.pressure, ratio=args.ratio).row()
     out["sensitivity_at_rest_kPa_per_N"] = sensitivity_at_rest(pocket)
     if args.range is not None:
-        out["linearity_percent_fs"] = range_linearity(pocket, *args.range, points, key="--range")
+        out["linearity_percent_fs"] = range_linearity(pocket, low, high, points, key="--range")
         out["linearity_range_N"] = span
     if table is not None:
         if args.max_force is None:

@@ -51,7 +51,7 @@ from .profiles import Shape
 #: a kind's parameters by name: numbers (lengths in units of R), or a ``Shape`` for those in its ``shapes``
 Params = Mapping[str, "float | Shape"]
 
-__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "sphere", "profile",
+__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "posed", "sphere", "profile",
            "SPHERE_RADII", "check_sphere_radius"]
 
 T = TypeVar("T")
@@ -122,6 +122,13 @@ class Indenter:
     def number(self, name: str) -> float:
         """The numeric parameter ``name`` (a length in units of R); an InputError if it is a shape."""
         return _number(dict(self.params), name)
+
+    def shape(self) -> Shape:
+        """A profile's outline (its parameter ``shape``, ``pocket.core.profiles``); an InputError for a kind
+        that has none."""
+        if "shape" not in self.definition.shapes:
+            raise InputError(f"the {self.kind} indenter has no profile (only a profile indenter has)")
+        return _shape(dict(self.params))
 
     @property
     def pressure_area(self) -> bool:
@@ -275,3 +282,10 @@ def formulation(table: Mapping[str, T], solver: str, indenter: Indenter) -> T:
         raise InputError(f"solver {solver} does not implement the {indenter.kind} indenter "
                          f"(its indenters: {', '.join(table)})")
     return table[indenter.kind]
+
+
+def posed(table: Mapping[str, T], solver: str, value: Indenter | None) -> tuple[Indenter, T]:
+    """The indenter of ``value`` (``as_indenter``) and the formulation with which ``solver`` poses it
+    (``formulation``): the check every compression entry point makes of its ``indenter`` argument."""
+    indenter = as_indenter(value)
+    return indenter, formulation(table, solver, indenter)

@@ -14,6 +14,9 @@ import os
 import pathlib
 import reprlib
 import stat
+from collections.abc import Iterable
+
+import numpy as np
 
 from .errors import STRETCH_LIMIT, InputError
 
@@ -23,6 +26,7 @@ __all__ = [
     "check_positive",
     "check_non_negative",
     "check_force",
+    "check_forces",
     "check_count",
     "check_tolerance",
     "check_flag",
@@ -155,6 +159,15 @@ def check_force(force) -> float:
         raise InputError(f"force = {quote(force)} is outside the magnitudes of the model's dimensionless inputs "
                          f"(at most {MAGNITUDES[1]:g})")
     return number
+
+
+def check_forces(forces: Iterable[float] | np.ndarray | float) -> list[float]:
+    """Each force of ``forces`` (a number or several, in the order given) checked by ``check_force``; none at
+    all is an InputError ("no force given")."""
+    checked = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
+    if not checked:
+        raise InputError("no force given")
+    return checked
 
 
 def check_count(name, value, low: int, high: int) -> int:

@@ -26,6 +26,11 @@ dimensionless units of ``pocket.core.states``:
   -> CompressedState``: travel control, the indenter's lowest point at ``height`` = H/R above the clamp
   plane (optional: listed in ``entry_points`` by a solver that has it)
 
+Each has a ``Protocol`` here (``Inflate``, ``InflateVolume``, ``InflationCurve``, ``Compress``,
+``CompressionCurve``, ``CompressHeight``, ``RangeEnd``) that type checkers hold the solvers' ``api`` modules to:
+it fixes the positional arguments and the result, and leaves the keywords (``*args: Any, **options: Any``,
+which match any) to each solver's own annotated signature.
+
 A record lists the entry points its solver has (``entry_points``, keys of ``ENTRY_POINTS``), and callers
 get them from it (``Solver.entry``): a request a solver cannot serve is a one-line ``InputError`` naming
 the solver and what it lacks, never an ``AttributeError`` from its module.
@@ -55,12 +60,19 @@ from __future__ import annotations
 
 import dataclasses
 import importlib
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
+from typing import Any, Literal, Protocol, TypeAlias, overload
+
+import numpy as np
 
 from .errors import InputError
+from .fluids import Fluid
 from .inputs import check_file
+from .materials import Material
+from .states import CompressedState, InflatedState
 
-__all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS"]
+__all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS", "MaterialLike", "FluidLike", "Numbers", "Progress", "Inflate",
+           "InflateVolume", "InflationCurve", "Compress", "CompressionCurve", "CompressHeight", "RangeEnd"]
 
 #: the two steps of the problem
 STEPS = ("inflate", "compress")
@@ -70,6 +82,163 @@ ENTRY_POINTS = {"inflate": "pressure-controlled inflation", "inflate_volume": "v
                 "compress": "compression", "compression_curve": "compression curve",
                 "compress_height": "height-controlled compression",
                 "range_end": "end of the compression range"}
+
+#: what a ``material`` argument may be: a ``Material``, or a number taken as the Mooney-Rivlin alpha = C2/C1
+#: (``pocket.core.materials.as_material``)
+MaterialLike: TypeAlias = Material | float
+#: what a ``fluid`` argument may be: None or "liquid" (fixed volume), or a ``Fluid`` (``pocket.core.fluids.as_fluid``)
+FluidLike: TypeAlias = Fluid | str | None
+#: several dimensionless values (pressures, forces): a sequence of numbers or a 1-D array
+Numbers: TypeAlias = Sequence[float] | np.ndarray
+#: a curve's progress callback, called as ``progress(done, total)`` after each point
+Progress: TypeAlias = Callable[[int, int], object]
+
+
+class Inflate(Protocol):
+    """``inflate``: the inflated state at a pressure, on the first branch (pressure control).
+
+    Parameters
+    ----------
+    material : MaterialLike
+        The rubber.
+    pressure : float
+        Phat = P R / (E T), > 0 (dimensionless).
+    **options
+        The solver's options (its record's ``options``; each solver's own signature names them).
+
+    Returns
+    -------
+    InflatedState
+    """
+
+    def __call__(self, material: MaterialLike, pressure: float, *args: Any, **options: Any) -> InflatedState: ...
+
+
+class InflateVolume(Protocol):
+    """``inflate_volume``: the inflated state enclosing a volume (volume control).
+
+    Parameters
+    ----------
+    material : MaterialLike
+        The rubber.
+    volume : float
+        V / R^3, > 0 (dimensionless).
+    **options
+        As for ``Compress``.
+
+    Returns
+    -------
+    InflatedState
+    """
+
+    def __call__(self, material: MaterialLike, volume: float, *args: Any, **options: Any) -> InflatedState: ...
+
+
+class InflationCurve(Protocol):
+    """``inflation_curve``: the inflated states at several pressures, in the order given.
+
+    Parameters
+    ----------
+    material : MaterialLike
+        The rubber.
+    pressures : Numbers
+        Phat of each state, > 0 (dimensionless).
+    **options
+        ``progress`` (a ``Progress``, called after each pressure) and the solver's options.
+
+    Returns
+    -------
+    list of InflatedState
+    """
+
+    def __call__(self, material: MaterialLike, pressures: Numbers, *args: Any,
+                 **options: Any) -> list[InflatedState]: ...
+
+
+class Compress(Protocol):
+    """``compress``: the pocket inflated at ``pressure_initial``, sealed, and pressed by ``force``.
+
+    Parameters
+    ----------
+    material : MaterialLike
+        The rubber.
+    pressure_initial : float
+        Phat_I, the inflation pressure at which the fluid is sealed (dimensionless).
+    force : float
+        Fhat = F / (P_I pi R^2), >= 0 (dimensionless).
+    **options
+        ``fluid`` (a ``FluidLike``: the sealed fluid, None a liquid), ``indenter`` (an ``Indenter``, None the flat
+        plate) and the solver's options.
+
+    Returns
+    -------
+    CompressedState
+    """
+
+    def __call__(self, material: MaterialLike, pressure_initial: float, force: float, *args: Any,
+                 **options: Any) -> CompressedState: ...
+
+
+class CompressionCurve(Protocol):
+    """``compression_curve``: the compressed states at several forces, in the order given.
+
+    Parameters
+    ----------
+    material, pressure_initial
+        As for ``Compress``.
+    forces : Numbers
+        Fhat of each state, >= 0 (dimensionless); at least one.
+    **options
+        ``fluid``, ``indenter`` (as for ``Compress``), ``progress`` (a ``Progress``, called after each force) and
+        the solver's options.
+
+    Returns
+    -------
+    list of CompressedState
+    """
+
+    def __call__(self, material: MaterialLike, pressure_initial: float, forces: Numbers, *args: Any,
+                 **options: Any) -> list[CompressedState]: ...
+
+
+class CompressHeight(Protocol):
+    """``compress_height``: the compressed state with the indenter's lowest point at ``height`` (travel control).
+
+    Parameters
+    ----------
+    material, pressure_initial
+        As for ``Compress``.
+    height : float
+        H / R above the clamp plane, > 0 (dimensionless).
+    **options
+        As for ``Compress``.
+
+    Returns
+    -------
+    CompressedState
+    """
+
+    def __call__(self, material: MaterialLike, pressure_initial: float, height: float, *args: Any,
+                 **options: Any) -> CompressedState: ...
+
+
+class RangeEnd(Protocol):
+    """``range_end``: the force at which the model's compression range ends.
+
+    Parameters
+    ----------
+    material, pressure_initial
+        As for ``Compress``.
+    **options
+        As for ``Compress``.
+
+    Returns
+    -------
+    float
+        Fhat at the end (dimensionless); inf where the range has no end.
+    """
+
+    def __call__(self, material: MaterialLike, pressure_initial: float, *args: Any, **options: Any) -> float: ...
 
 
 @dataclasses.dataclass(frozen=True)
@@ -120,12 +289,37 @@ class Solver:
             raise ValueError(f"{name!r} is not an entry point (they are {', '.join(ENTRY_POINTS)})")
         return name in self.entry_points
 
-    def entry(self, name: str, purpose: str, alternatives: Iterable[str] = ()) -> Callable:
+    @overload
+    def entry(self, name: Literal["inflate"], purpose: str,
+              alternatives: Iterable[str] = ()) -> Inflate: ...
+    @overload
+    def entry(self, name: Literal["inflate_volume"], purpose: str,
+              alternatives: Iterable[str] = ()) -> InflateVolume: ...
+    @overload
+    def entry(self, name: Literal["inflation_curve"], purpose: str,
+              alternatives: Iterable[str] = ()) -> InflationCurve: ...
+    @overload
+    def entry(self, name: Literal["compress"], purpose: str,
+              alternatives: Iterable[str] = ()) -> Compress: ...
+    @overload
+    def entry(self, name: Literal["compression_curve"], purpose: str,
+              alternatives: Iterable[str] = ()) -> CompressionCurve: ...
+    @overload
+    def entry(self, name: Literal["compress_height"], purpose: str,
+              alternatives: Iterable[str] = ()) -> CompressHeight: ...
+    @overload
+    def entry(self, name: Literal["range_end"], purpose: str,
+              alternatives: Iterable[str] = ()) -> RangeEnd: ...
+    @overload
+    def entry(self, name: str, purpose: str, alternatives: Iterable[str] = ()) -> Callable[..., Any]: ...
+
+    def entry(self, name: str, purpose: str, alternatives: Iterable[str] = ()) -> Callable[..., Any]:
         """The entry point ``name`` (a function of ``module``), asked for ``purpose``: what needs it, as the
         user gave it (``"initial.volume = '2 mL'"``, ``"--volume"``).
 
         A solver without it is a one-line ``InputError`` naming ``purpose``, the solver, what it lacks and
-        ``alternatives`` (the names of solvers that have it).
+        ``alternatives`` (the names of solvers that have it). Typed by name: ``entry("inflate", ...)`` is an
+        ``Inflate``, and so on.
         """
         if not self.serves(name):
             alternatives = ", ".join(alternatives)
