@@ -37,11 +37,10 @@ def reach_of(profiles) -> float:
 
 def _extent(indenter: Indenter, reach: float) -> float:
     """The largest radius at which the indenter's surface exists, up to ``reach``."""
-    params = dict(indenter.params)
     if indenter.kind == "sphere":
-        return min(reach, params["radius"])
-    if "shape" in params:
-        return min(reach, params["shape"].extent)
+        return min(reach, indenter.number("radius"))
+    if "shape" in dict(indenter.params):
+        return min(reach, indenter.shape().extent)
     return reach
 
 
