@@ -39,7 +39,7 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.materials import Material
 
-from . import fitchecks, fitstats
+from . import fitchecks, fitprofile, fitstats
 from .fitkeys import PRESTRETCH, Key, key_named, keys
 from .fitmodel import PENALTY, Setup, predict, residuals
 from .fitstart import starts
@@ -54,6 +54,8 @@ _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring
 _TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
 _PROBE = 6  # evaluations each start runs before the best of them continues
+_PROFILE_EVALUATIONS = 20  # least_squares' evaluations of each re-fit with a key held (``pocket.apps.fitprofile``)
+_PROFILE_TOL = 1e-5  # their tolerances: tau^2 = (RSS(theta) - RSS) / s^2 needs RSS(theta) to ~1e-3 relative
 _SAMPLE = 10  # rows per test where starts are ranked and probed: enough to show a curve's shape and its basin
 #: the prestretches each start shape is tried at when the prestretch is fitted (a slack sheet to a taut one)
 PRESTRETCHES = (1.0, 1.05, 1.2)
@@ -234,10 +236,48 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     jac = problem.jacobian(x)
     material = problem.material(x)
     stats = fitstats.statistics(setup, material, free, problem.gradient(x), r, jac)
+    excess = _profile(problem, x, float(r @ r) / stats.dof, fitstats.normal_inverse(jac))
+    stats = fitprofile.intervals(stats, free, excess)
     if notes:
         stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
     return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"],
                time.perf_counter() - clock, tried, count["penalised"])
+
+
+def _profile(problem: _Problem, x, s2: float, inverse):
+    """The profile statistic (``pocket.apps.fitprofile``) of the fit ``problem`` at its optimum ``x``, residual
+    variance ``s2`` and (J^T J)^-1 ``inverse``: key index k -> (held value -> tau^2). Each held value re-fits the
+    other unknowns from the optimum moved along their regression on the held one, inverse[:, k] / inverse[k, k]
+    (the linearised conditional optimum), from the nearest held value already solved."""
+    rss = float(problem(x) @ problem(x))
+    base = problem.material(x)
+
+    def excess(k: int):
+        others = [j for j in range(x.size) if j != k]
+        key, regression = problem.free[k], inverse[others, k] / inverse[k, k]
+        solved = {x[k]: x[others]}  # held x_k -> the others' optimum
+
+        def tau2(value: float) -> float:
+            held = value / problem.scales[k]
+            sub = _Problem(problem.setup, key.put(base, value), [problem.free[j] for j in others],
+                           problem.scales[others], problem.count)
+            near = min(solved, key=lambda h: abs(h - held))
+            start = solved[near] + regression * (held - near)
+            if np.any(sub(start) == PENALTY):  # the shift left the model's range: the nearest optimum instead
+                start = solved[near]
+            try:
+                xo = _run(sub, start, _PROFILE_EVALUATIONS, _PROFILE_TOL)[0] if others else start
+            except ConvergenceError:  # no state on either side of the start: no re-fit from here
+                return math.inf
+            r = sub(xo)
+            if np.any(r == PENALTY):
+                return math.inf
+            solved[held] = xo
+            return (float(r @ r) - rss) / s2
+
+        return tau2
+
+    return excess
 
 
 def _thinned(setup: Setup) -> Setup:
@@ -251,14 +291,15 @@ def _thinned(setup: Setup) -> Setup:
     return dataclasses.replace(setup, tests=tuple(tests))
 
 
-def _run(problem: _Problem, x, budget: int) -> tuple[np.ndarray, int, int]:
-    """least_squares from ``x`` for at most ``budget`` evaluations: (x, its status, evaluations)."""
+def _run(problem: _Problem, x, budget: int, tol: float = _TOL) -> tuple[np.ndarray, int, int]:
+    """least_squares from ``x`` for at most ``budget`` evaluations, to ``tol`` (its ftol, xtol and gtol): (x, its
+    status, evaluations)."""
     from scipy.optimize import least_squares
 
     bounded = np.any(np.isfinite(problem.lower)) or np.any(np.isfinite(problem.upper))
     out = least_squares(problem, np.clip(x, problem.lower, problem.upper), jac=problem.jacobian,
-                        bounds=(problem.lower, problem.upper), method="trf" if bounded else "lm", ftol=_TOL,
-                        xtol=_TOL, gtol=_TOL, max_nfev=budget)
+                        bounds=(problem.lower, problem.upper), method="trf" if bounded else "lm", ftol=tol,
+                        xtol=tol, gtol=tol, max_nfev=budget)
     return out.x, out.status, out.nfev
 
 
