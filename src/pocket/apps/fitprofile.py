@@ -22,9 +22,9 @@ the first trial is the linearised end u_hat +- t SE_u (in u: for a bounded param
 symmetric), or a factor e from the optimum in theta - L where t SE_u is larger (the linearisation says
 nothing there: Jm = 776 +- 4400). If tau is still below t there, the step grows (by the secant through the
 optimum, at least 1.5 times, at most 4), up to a reach (u: ``_DECADES`` decades of theta - L, or 30 t SE_u
-for an unbounded parameter) or for ``_TRIALS`` trials; a profile that stays below t that far is not bounded by the data on
-that side, and the end is the bound (L below, infinite above; the fit warns). Once bracketed, the crossing
-is found by regula falsi (Illinois), or by bisection towards a held value at which some datum has no state
+for an unbounded parameter) or for ``_TRIALS`` trials; a profile that stays below t that far is not bounded
+by the data on that side, and the end is the bound (L below, infinite above; the fit warns). Once bracketed,
+the crossing is found by regula falsi (Illinois), or by bisection towards a held value at which some datum has no state
 (outside the model's range, such as a Jm below the data's I1 - 3: tau is infinite there), to
 ``_TOLERANCE`` in tau (an end at a level within about 0.3 % of 95 %), in at most ``_TRIALS`` more trials.
 An end is never past a trial with no state.

@@ -17,7 +17,7 @@ J = U S V^T: (J^T J)^-1 = V S^-2 V^T, each singular value floored at ``_RCOND`` 
 that a direction the data do not see gets a huge variance, never a zero one (a pseudo-inverse of J^T J
 would drop it, and report a parameter the data do not determine with a standard error of 0). mu_0 =
 mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov grad(mu_0), and its
-interval linearised in ln mu_0 (mu_0 > 0 in every law's admissible set), mu_0 exp(+-t SE / mu_0).
+interval as the keys' linearised ones.
 
 At a bound. A parameter within the fit's Jacobian step (a relative 1e-6, ``pocket.apps.fit``) of a bound
 of its admissible set (C1 > 0, Jm > 0, a prestretch >= 1: the keys' ``lower``) sits there: the data pull
@@ -123,9 +123,8 @@ def statistics(setup, material: Material, free, gradient, r, jac) -> Statistics:
     if warnings:
         warnings.append(f"what the data do determine: mu_0 = {material.mu0:.6g} +- {mu0_error:.2g}"
                         f"{'' if setup.thickness else ' (times T, N/m)'}, the small-strain shear modulus")
-    spread = math.exp(t * mu0_error / material.mu0) if material.mu0 > 0.0 else math.nan
     return Statistics(names, values, se, cov, corr, intervals, material.mu0, mu0_error, math.sqrt(float(r @ r) / n),
-                      dof, tuple(warnings), np.array([material.mu0 / spread, material.mu0 * spread]),
+                      dof, tuple(warnings), np.array([material.mu0 - t * mu0_error, material.mu0 + t * mu0_error]),
                       (LINEARISED,) * p)
 
 
