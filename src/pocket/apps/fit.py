@@ -25,7 +25,9 @@ them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result 
 state is never reported: if no start has all its states, or the run ends outside the model's range, the
 fit is a ``ConvergenceError`` saying so.
 
-The statistics of the result are in ``pocket.apps.fitstats``.
+The statistics of the result are in ``pocket.apps.fitstats``, its intervals by the profile likelihood in
+``pocket.apps.fitprofile`` (each trial of a profile a least-squares re-fit of the other unknowns with one held:
+``_Profile``).
 """
 
 from __future__ import annotations
@@ -66,9 +68,9 @@ class Fit:
     """A fit's result: the ``setup``, the fitted ``material`` (stresses in the setup's unit: Pa, or N/m
     without a thickness), the ``free`` keys' names, the ``fixed`` ones (name -> value), the
     ``statistics`` (``pocket.apps.fitstats.Statistics``), the model's ``values`` at the data (as
-    ``pocket.apps.fitmodel.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls``,
-    the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised`` trial sets of the least-squares
-    runs (some datum without state)."""
+    ``pocket.apps.fitmodel.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls`` (the
+    profile intervals' included), the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised``
+    trial sets of the least-squares runs (some datum without state; a profile's trials not counted)."""
 
     setup: Setup
     material: Material
@@ -236,48 +238,49 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     jac = problem.jacobian(x)
     material = problem.material(x)
     stats = fitstats.statistics(setup, material, free, problem.gradient(x), r, jac)
-    excess = _profile(problem, x, float(r @ r) / stats.dof, fitstats.normal_inverse(jac))
-    stats = fitprofile.intervals(stats, free, excess)
+    profile = _Profile(problem, x, float(r @ r) / stats.dof, fitstats.normal_inverse(jac))
+    stats = fitprofile.intervals(stats, free, profile)
     if notes:
         stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
     return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"],
                time.perf_counter() - clock, tried, count["penalised"])
 
 
-def _profile(problem: _Problem, x, s2: float, inverse):
+class _Profile:
     """The profile statistic (``pocket.apps.fitprofile``) of the fit ``problem`` at its optimum ``x``, residual
-    variance ``s2`` and (J^T J)^-1 ``inverse``: key index k -> (held value -> tau^2). Each held value re-fits the
-    other unknowns from the optimum moved along their regression on the held one, inverse[:, k] / inverse[k, k]
-    (the linearised conditional optimum), from the nearest held value already solved."""
-    rss = float(problem(x) @ problem(x))
-    base = problem.material(x)
+    variance ``s2`` and (J^T J)^-1 ``inverse``: called with a key's index k, the function held value -> tau^2.
+    Each held value re-fits the other unknowns from the nearest held value already solved, moved along their
+    regression on the held one, inverse[:, k] / inverse[k, k] (the linearised conditional optimum)."""
 
-    def excess(k: int):
-        others = [j for j in range(x.size) if j != k]
-        key, regression = problem.free[k], inverse[others, k] / inverse[k, k]
-        solved = {x[k]: x[others]}  # held x_k -> the others' optimum
+    def __init__(self, problem: _Problem, x, s2: float, inverse):
+        self.problem, self.x, self.s2, self.inverse = problem, x, s2, inverse
+        self.rss, self.base = float(problem(x) @ problem(x)), problem.material(x)
 
-        def tau2(value: float) -> float:
-            held = value / problem.scales[k]
-            sub = _Problem(problem.setup, key.put(base, value), [problem.free[j] for j in others],
-                           problem.scales[others], problem.count)
-            near = min(solved, key=lambda h: abs(h - held))
-            start = solved[near] + regression * (held - near)
+    def __call__(self, k: int):
+        solved = {self.x[k]: np.delete(self.x, k)}  # held x_k -> the others' optimum
+        return lambda value: self._tau2(k, value, solved)
+
+    def _tau2(self, k: int, value: float, solved: dict) -> float:
+        p, others = self.problem, [j for j in range(self.x.size) if j != k]
+        count = {"calls": 0, "penalised": 0}  # a profile reaches past the model's range by design: not counted
+        sub = _Problem(p.setup, p.free[k].put(self.base, value), [p.free[j] for j in others], p.scales[others],
+                       count)
+        held = value / p.scales[k]
+        near = min(solved, key=lambda h: abs(h - held))
+        start = solved[near] + self.inverse[others, k] / self.inverse[k, k] * (held - near)
+        try:
             if np.any(sub(start) == PENALTY):  # the shift left the model's range: the nearest optimum instead
                 start = solved[near]
-            try:
-                xo = _run(sub, start, _PROFILE_EVALUATIONS, _PROFILE_TOL)[0] if others else start
-            except ConvergenceError:  # no state on either side of the start: no re-fit from here
-                return math.inf
+            xo = _run(sub, start, _PROFILE_EVALUATIONS, _PROFILE_TOL)[0] if others else start
             r = sub(xo)
-            if np.any(r == PENALTY):
-                return math.inf
-            solved[held] = xo
-            return (float(r @ r) - rss) / s2
-
-        return tau2
-
-    return excess
+        except ConvergenceError:  # no state on either side of the start: no re-fit from here
+            return math.inf
+        finally:
+            p.count["calls"] += count["calls"]
+        if np.any(r == PENALTY):
+            return math.inf
+        solved[held] = xo
+        return (float(r @ r) - self.rss) / self.s2
 
 
 def _thinned(setup: Setup) -> Setup:
