@@ -1,4 +1,4 @@
-r"""A fit's 95 % intervals from the profile likelihood: where re-fitting with one parameter held costs too much.
+r"""A fit's 95 % intervals by the profile likelihood: each parameter held at trial values, the others re-fitted.
 
 The linearised interval (``pocket.apps.fitstats``) assumes the residuals are linear in the parameter over
 its interval. Where they are strongly nonlinear it fails: Gent's Jm enters through the locking term, the
@@ -24,8 +24,8 @@ nothing there: Jm = 776 +- 4400). If tau is still below t there, the step grows 
 optimum, at least 1.5 times, at most 4), up to a reach (u: ``_DECADES`` decades of theta - L, or 30 t SE_u
 for an unbounded parameter) or for ``_TRIALS`` trials; a profile that stays below t that far is not bounded
 by the data on that side, and the end is the bound (L below, infinite above; the fit warns). Once bracketed,
-the crossing is found by regula falsi (Illinois), or by bisection towards a held value at which some datum has no state
-(outside the model's range, such as a Jm below the data's I1 - 3: tau is infinite there), to
+the crossing is found by regula falsi (Illinois), or by bisection towards a held value at which some datum
+has no state (outside the model's range, such as a Jm below the data's I1 - 3: tau is infinite there), to
 ``_TOLERANCE`` in tau (an end at a level within about 0.3 % of 95 %), in at most ``_TRIALS`` more trials.
 An end is never past a trial with no state.
 
@@ -43,17 +43,18 @@ intervals are the linearised ones in u, mapped back (inside the bounds as well).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable
 
-import numpy as np
+from .fitstats import LINEARISED, Statistics, at_bound, quantile
 
-__all__ = ["FLOOR", "PROFILE", "LINEARISED", "LOG_LINEARISED", "intervals", "interval", "linearised"]
+__all__ = ["FLOOR", "PROFILE", "LOG_LINEARISED", "intervals", "interval", "linearised"]
 
 #: residual RMS below which a fit's intervals are not profiled (the solvers' noise, not the data's)
 FLOOR = 1e-8
-#: the methods, as the report names them
-PROFILE, LINEARISED, LOG_LINEARISED = "profile likelihood", "linearised", "linearised in log"
+#: the methods, as the report names them (and ``pocket.apps.fitstats.LINEARISED``)
+PROFILE, LOG_LINEARISED = "profile likelihood", "linearised in log"
 _TOLERANCE = 0.01  # |tau - t| / t at which an end is accepted: t +- 1 % is a level of 95 +- 0.3 %
 _TRIALS = 8  # held values tried per end
 _DECADES = 4.0  # reach of the search in theta - L, decades either way (a Jm 1e4 times the fitted one is neo-Hookean)
@@ -66,14 +67,10 @@ def _mapping(lower: float):
     return (lambda v: v), (lambda u: u)
 
 
-def intervals(statistics, free, excess: Callable[[int], Callable[[float], float]]):
+def intervals(statistics: Statistics, free, excess: Callable[[int], Callable[[float], float]]) -> Statistics:
     """``statistics`` (``pocket.apps.fitstats.Statistics``) of a fit of keys ``free`` with each interval made
     by the method the module docstring gives it, named in ``methods``, and a warning for each end the data do
     not bound. ``excess(k)`` is tau^2 of key k as a function of its held value."""
-    import dataclasses
-
-    from .fitstats import at_bound, quantile
-
     t, out, methods, warnings = quantile(statistics.dof), statistics.intervals.copy(), [], []
     for k, (key, value, error) in enumerate(zip(free, statistics.values, statistics.standard_errors, strict=True)):
         bounded = math.isfinite(key.lower)
@@ -158,6 +155,6 @@ def _crossing(gap: Callable[[float], float], t: float, first: float, reach: floa
 
 def _between(inside: float, g_in: float, outside: float, g_out: float) -> float:
     """The next trial within the bracket: regula falsi, or its midpoint where the outer end has no state."""
-    if not np.isfinite(g_out):
+    if not math.isfinite(g_out):
         return 0.5 * (inside + outside)
     return inside - g_in * (outside - inside) / (g_out - g_in)

@@ -42,12 +42,12 @@ import numpy as np
 
 from pocket.core.materials import Material
 
-from .fitprofile import LINEARISED
-
-__all__ = ["CORRELATED", "Statistics", "statistics", "quantile", "normal_inverse", "at_bound"]
+__all__ = ["CORRELATED", "LINEARISED", "Statistics", "statistics", "quantile", "normal_inverse", "at_bound"]
 
 #: |correlation| above which two parameters are reported as determined only together
 CORRELATED = 0.99
+#: the method of the intervals made here, as the report names it
+LINEARISED = "linearised"
 _LEVEL = 0.95  # the intervals' confidence
 _RCOND = 1e-12  # the smallest singular value of J kept, relative to the largest (the solvers' noise is ~1e-10)
 _NEAR = 1e-6  # a parameter this close to a bound (relative, as the fit's Jacobian step) sits at it
