@@ -25,7 +25,9 @@ them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result 
 state is never reported: if no start has all its states, or the run ends outside the model's range, the
 fit is a ``ConvergenceError`` saying so.
 
-The statistics of the result are in ``pocket.apps.fitstats``.
+The statistics of the result are in ``pocket.apps.fitstats``, its intervals by the profile likelihood in
+``pocket.apps.fitprofile`` (each trial of a profile a least-squares re-fit of the other unknowns with one held:
+``_Profile``).
 """
 
 from __future__ import annotations
@@ -39,7 +41,7 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.materials import Material
 
-from . import fitchecks, fitstats
+from . import fitchecks, fitprofile, fitstats
 from .fitkeys import PRESTRETCH, Key, key_named, keys
 from .fitmodel import PENALTY, Setup, predict, residuals
 from .fitstart import starts
@@ -54,6 +56,8 @@ _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring
 _TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
 _PROBE = 6  # evaluations each start runs before the best of them continues
+_PROFILE_EVALUATIONS = 20  # least_squares' evaluations of each re-fit with a key held (``pocket.apps.fitprofile``)
+_PROFILE_TOL = 1e-5  # their tolerances: tau^2 = (RSS(theta) - RSS) / s^2 needs RSS(theta) to ~1e-3 relative
 _SAMPLE = 10  # rows per test where starts are ranked and probed: enough to show a curve's shape and its basin
 #: the prestretches each start shape is tried at when the prestretch is fitted (a slack sheet to a taut one)
 PRESTRETCHES = (1.0, 1.05, 1.2)
@@ -64,9 +68,9 @@ class Fit:
     """A fit's result: the ``setup``, the fitted ``material`` (stresses in the setup's unit: Pa, or N/m
     without a thickness), the ``free`` keys' names, the ``fixed`` ones (name -> value), the
     ``statistics`` (``pocket.apps.fitstats.Statistics``), the model's ``values`` at the data (as
-    ``pocket.apps.fitmodel.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls``,
-    the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised`` trial sets of the least-squares
-    runs (some datum without state)."""
+    ``pocket.apps.fitmodel.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls`` (the
+    profile intervals' included), the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised``
+    trial sets of the least-squares runs (some datum without state; a profile's trials not counted)."""
 
     setup: Setup
     material: Material
@@ -234,10 +238,49 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     jac = problem.jacobian(x)
     material = problem.material(x)
     stats = fitstats.statistics(setup, material, free, problem.gradient(x), r, jac)
+    profile = _Profile(problem, x, float(r @ r) / stats.dof, fitstats.normal_inverse(jac))
+    stats = fitprofile.intervals(stats, free, profile)
     if notes:
         stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
     return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"],
                time.perf_counter() - clock, tried, count["penalised"])
+
+
+class _Profile:
+    """The profile statistic (``pocket.apps.fitprofile``) of the fit ``problem`` at its optimum ``x``, residual
+    variance ``s2`` and (J^T J)^-1 ``inverse``: called with a key's index k, the function held value -> tau^2.
+    Each held value re-fits the other unknowns from the nearest held value already solved, moved along their
+    regression on the held one, inverse[:, k] / inverse[k, k] (the linearised conditional optimum)."""
+
+    def __init__(self, problem: _Problem, x, s2: float, inverse):
+        self.problem, self.x, self.s2, self.inverse = problem, x, s2, inverse
+        self.rss, self.base = float(problem(x) @ problem(x)), problem.material(x)
+
+    def __call__(self, k: int):
+        solved = {self.x[k]: np.delete(self.x, k)}  # held x_k -> the others' optimum
+        return lambda value: self._tau2(k, value, solved)
+
+    def _tau2(self, k: int, value: float, solved: dict) -> float:
+        p, others = self.problem, [j for j in range(self.x.size) if j != k]
+        count = {"calls": 0, "penalised": 0}  # a profile reaches past the model's range by design: not counted
+        sub = _Problem(p.setup, p.free[k].put(self.base, value), [p.free[j] for j in others], p.scales[others],
+                       count)
+        held = value / p.scales[k]
+        near = min(solved, key=lambda h: abs(h - held))
+        start = solved[near] + self.inverse[others, k] / self.inverse[k, k] * (held - near)
+        try:
+            if np.any(sub(start) == PENALTY):  # the shift left the model's range: the nearest optimum instead
+                start = solved[near]
+            xo = _run(sub, start, _PROFILE_EVALUATIONS, _PROFILE_TOL)[0] if others else start
+            r = sub(xo)
+        except ConvergenceError:  # no state on either side of the start: no re-fit from here
+            return math.inf
+        finally:
+            p.count["calls"] += count["calls"]
+        if np.any(r == PENALTY):
+            return math.inf
+        solved[held] = xo
+        return (float(r @ r) - self.rss) / self.s2
 
 
 def _thinned(setup: Setup) -> Setup:
@@ -251,14 +294,15 @@ def _thinned(setup: Setup) -> Setup:
     return dataclasses.replace(setup, tests=tuple(tests))
 
 
-def _run(problem: _Problem, x, budget: int) -> tuple[np.ndarray, int, int]:
-    """least_squares from ``x`` for at most ``budget`` evaluations: (x, its status, evaluations)."""
+def _run(problem: _Problem, x, budget: int, tol: float = _TOL) -> tuple[np.ndarray, int, int]:
+    """least_squares from ``x`` for at most ``budget`` evaluations, to ``tol`` (its ftol, xtol and gtol): (x, its
+    status, evaluations)."""
     from scipy.optimize import least_squares
 
     bounded = np.any(np.isfinite(problem.lower)) or np.any(np.isfinite(problem.upper))
     out = least_squares(problem, np.clip(x, problem.lower, problem.upper), jac=problem.jacobian,
-                        bounds=(problem.lower, problem.upper), method="trf" if bounded else "lm", ftol=_TOL,
-                        xtol=_TOL, gtol=_TOL, max_nfev=budget)
+                        bounds=(problem.lower, problem.upper), method="trf" if bounded else "lm", ftol=tol,
+                        xtol=tol, gtol=tol, max_nfev=budget)
     return out.x, out.status, out.nfev
 
 

@@ -47,13 +47,18 @@ def _keys(fit: Fit):
 
 def summary(fit: Fit) -> dict:
     """The fit as one JSON-ready dict: ``parameters`` maps each fitted key to its value, standard error,
-    95 % interval and unit (Pa for stresses, N/m for stress * T without a thickness, 1 for numbers)."""
+    95 % interval (an end the data do not bound is None: JSON's null), the method that made the interval
+    (``pocket.apps.fitprofile``) and unit (Pa for stresses, N/m for stress * T without a thickness, 1 for
+    numbers)."""
     s = fit.statistics
     return {
         "law": fit.material.law,
-        "parameters": {name: {"value": float(v), "standard_error": float(e), "interval_95": [float(a), float(b)],
-                              "unit": _unit(fit, name)}
-                       for name, v, e, (a, b) in zip(s.names, s.values, s.standard_errors, s.intervals, strict=True)},
+        "parameters": {name: {"value": float(v), "standard_error": float(e),
+                              "interval_95": [float(a) if math.isfinite(a) else None,
+                                              float(b) if math.isfinite(b) else None],
+                              "interval_method": method, "unit": _unit(fit, name)}
+                       for name, v, e, (a, b), method in zip(s.names, s.values, s.standard_errors, s.intervals,
+                                                             s.methods, strict=True)},
         "fixed": {name: {"value": float(v), "unit": _unit(fit, name)} for name, v in fit.fixed.items()},
         "mu0": {"value": s.mu0, "standard_error": s.mu0_error, "interval_95": [float(v) for v in s.mu0_interval],
                 "unit": "Pa" if fit.setup.thickness else "N/m"},

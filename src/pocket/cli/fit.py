@@ -4,6 +4,7 @@ law's parameters from tests."""
 from __future__ import annotations
 
 import json
+import math
 import pathlib
 import sys
 
@@ -86,7 +87,7 @@ def _main(args) -> int:
               "times T (N/m)")
     print(f"{'key':>14}  {'value':>14}  {'std. error':>11}  {'95 % interval':>31}  unit")
     for name, p in out["parameters"].items():
-        lo, hi = p["interval_95"]
+        lo, hi = (math.inf * sign if end is None else end for end, sign in zip(p["interval_95"], (-1, 1), strict=True))
         print(f"{name:>14}  {p['value']:>14.8g}  {p['standard_error']:>11.3g}  [{lo:>14.8g}, {hi:>14.8g}]  {p['unit']}")
     for name, p in out["fixed"].items():
         print(f"{name:>14}  {p['value']:>14.8g}  {'(fixed)':>11}  {'':>31}  {p['unit']}")
@@ -98,6 +99,11 @@ def _main(args) -> int:
         print(f"{'correlation':>14}  " + "  ".join(f"{n:>11}" for n in names))
         for name, row in zip(names, out["correlation"]["matrix"], strict=True):
             print(f"{name:>14}  " + "  ".join(f"{c:>+11.4f}" for c in row))
+    methods = {}
+    for name, p in out["parameters"].items():
+        methods.setdefault(p["interval_method"], []).append(name)
+    print("95 % intervals: " + "; ".join(f"{method} for {', '.join(names)}" for method, names in methods.items()) +
+          "; linearised for mu_0")
     print(f"residual RMS {out['residual_rms']:.4g} ({out['residuals']})")
     if target is not None:
         print(f"wrote {target}")
@@ -114,7 +120,8 @@ def register(subparsers) -> None:
         "test by the flat plate: 'force [N],pressure [kPa]' (and optionally 'height [mm]'), at --initial-pressure "
         "or the pressure of its row at zero force. Several files are fitted jointly. Residuals are relative, or in "
         "units of a column's --sigma. Reports each parameter with its standard error (from the Jacobian and the "
-        "residual variance), 95 %% interval, the correlations and warnings where the data do not determine a "
+        "residual variance), 95 %% interval (by the profile likelihood where the fit can, else linearised: the "
+        "report says which), the correlations and warnings where the data do not determine a "
         "parameter. A value without a unit ('--radius 15') is read in SI (15 m) and said so; data that make such a "
         "reading absurd are refused before solving.")
     p.add_argument("data", nargs="+", metavar="DATA.csv",
