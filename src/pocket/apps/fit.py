@@ -195,7 +195,8 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     prestretches = (fixed[PRESTRETCH],) if PRESTRETCH in fixed else (start[PRESTRETCH],) if PRESTRETCH in start \
         else PRESTRETCHES if prestretch else (1.0,)
     probed = law in PROBED or prestretch
-    ranked, count, tried = [], {"calls": 0, "penalised": 0}, 0
+    ranked: list = []
+    count, tried = {"calls": 0, "penalised": 0}, 0
     sample = _thinned(setup) if probed else setup  # where the starts are ranked and probed
     for shape in starts(setup, law, terms, prestretches):
         for material in shape:

@@ -161,7 +161,9 @@ def _keys(data: dict, where: str) -> None:
         if section not in _SECTIONS:
             raise InputError(f"{where}: '{section}' is not a key of a fit's case file (known: {', '.join(_SECTIONS)})")
         allowed = _SECTIONS[section]
-        for key in value if allowed is not None and isinstance(value, dict) else ():
+        if allowed is None or not isinstance(value, dict):
+            continue
+        for key in value:
             if key not in allowed:
                 hint = " (the fit finds the law's parameters: hold one with [fit] fix)" if section == "sheet" else ""
                 raise InputError(f"{where}: unknown key '{section}.{key}' (known: {', '.join(allowed)}){hint}")

@@ -59,7 +59,7 @@ class Dataset:
 
 def _columns(path: pathlib.Path, header: list[str]) -> list[tuple[str, float]]:
     """(name, SI factor) of each header cell."""
-    out = []
+    out: list[tuple[str, float]] = []
     for i, text in enumerate(header, start=1):
         where = f"{path}: column {i} ({text.strip()!r})"
         name, unit = heading(where, text, _EXAMPLE)

@@ -127,6 +127,7 @@ def _curve(setup, material, pressure_initial, forces, calls):
 
 def _compression(setup: Setup, test: Dataset, material: Material, tension: float, calls: list) -> dict:
     pressure_initial = test.initial_pressure
+    assert pressure_initial is not None  # a compression test has its P_I (``fitdata.read``)
     order = np.argsort(test.control)
     forces = [float(f) for f in test.control[order] / (pressure_initial * math.pi * setup.radius**2)]
     try:

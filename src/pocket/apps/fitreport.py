@@ -96,6 +96,7 @@ def case_text(fit: Fit) -> str:
     compression = [t for t in setup.tests if t.kind == "compression"]
     if compression:
         pressure = compression[0].initial_pressure
+        assert pressure is not None  # a compression test has its P_I (``fitdata.read``)
         forces = sorted(float(f) for f in compression[0].control if f > 0.0)
     else:
         first = setup.tests[0].control

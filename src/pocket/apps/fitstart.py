@@ -111,8 +111,10 @@ def starts(setup: Setup, law: str, terms: int = 1, prestretches=(1.0,)) -> list[
             estimate = tension_estimate(setup, unit)
             if estimate is not None:
                 tensions = [estimate * f for f in _STIFFER]
-            else:
-                tensions = [t.initial_pressure * setup.radius / p for t in setup.tests[:1] for p in (0.01, 0.1, 1.0)]
+            else:  # no small-strain rows: only compression tests without a row at zero force, each with its P_I
+                first = setup.tests[0].initial_pressure
+                assert first is not None
+                tensions = [first * setup.radius / p for p in (0.01, 0.1, 1.0)]
             out.append([_times_stresses(unit, t / 3.0 / setup.scale / unit.mu0) for t in tensions])
     return out
 

@@ -99,7 +99,7 @@ def _main(args) -> int:
         print(f"{'correlation':>14}  " + "  ".join(f"{n:>11}" for n in names))
         for name, row in zip(names, out["correlation"]["matrix"], strict=True):
             print(f"{name:>14}  " + "  ".join(f"{c:>+11.4f}" for c in row))
-    methods = {}
+    methods: dict[str, list[str]] = {}
     for name, p in out["parameters"].items():
         methods.setdefault(p["interval_method"], []).append(name)
     print("95 % intervals: " + "; ".join(f"{method} for {', '.join(names)}" for method, names in methods.items()) +
