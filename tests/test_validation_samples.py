@@ -32,3 +32,13 @@ def test_quick_validation_of_one_sample_passes(tmp_path, capsys, sample, pressur
     out, err = capsys.readouterr()
     assert status == 0, err
     assert out.startswith("PASS")
+
+
+def test_a_run_without_the_four_samples_draws_no_empty_fig4(tmp_path, capsys):
+    """A cases file of one sample has none of the four Table 1 pockets fig. 4 compares: the report leaves
+    fig. 4 out (before, it drew an empty panel, and matplotlib warned of a legend with nothing in it)."""
+    cases = _cases_file(tmp_path, 2, "5 kPa")
+    assert main(["validate", "--quick", "--cases", str(cases), "--out", str(tmp_path / "report")]) == 0
+    capsys.readouterr()
+    drawn = {p.stem for p in (tmp_path / "report").glob("*.png")}
+    assert "fig3a" in drawn and "fig4" not in drawn, sorted(drawn)

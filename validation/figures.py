@@ -98,7 +98,8 @@ def figures(results) -> list[Figure]:
     out.append(Figure("fig2", f"Fig. 2: profiles of {pocket_label(head)}, inflated (a) and compressed (b); FE "
                       f"nodes subsampled to {_PROFILE_MARKERS} markers.", tuple(panels)))
     against = _against_force(results)
-    out += [against["fig3a"], against["fig3b"], _fig4(results), against["fig5"]]
+    four = [p for p in results.pockets if "fig4" in p.case.tags]  # the samples of Table 1 (none: no figure)
+    out += [against["fig3a"], against["fig3b"], *([_fig4(results, four)] if four else []), against["fig5"]]
     out += other_figures(results) + fingertip_figures(results)
     if results.fits:
         out.append(identification_figure(results.fits))
@@ -136,8 +137,7 @@ def _against_force(results) -> dict:
     return out
 
 
-def _fig4(results) -> Figure:
-    four = [p for p in results.pockets if "fig4" in p.case.tags]
+def _fig4(results, four) -> Figure:
     series = curve_series(results, "height", four, four, xkey="pressure_ratio")
     return Figure("fig4", "Fig. 4: height H/R against the pressure ratio P/P_I for the four samples of Table 1 "
                   f"at the same P_I, each to {RANGE_FRACTION:g} of the end of its range (log scale in P/P_I); "
