@@ -78,7 +78,7 @@ def test_annotated_entry_points_annotate_every_argument():
     assert checked >= len(_entry_points()) - 3  # all but shooting's compress, compression_curve and range_end
 
 
-@pytest.mark.parametrize("record", [s for s in SOLVERS.values() if s.serves("compression_curve")], ids=str)
+@pytest.mark.parametrize("record", [s for s in SOLVERS.values() if s.serves("compression_curve")], ids=lambda s: s.name)
 def test_a_curve_without_forces_is_refused_the_same_way_by_every_solver(record):
     """Exact answer: a compression curve asked for no force is the one-line InputError "no force given" in every
     solver (``pocket.core.inputs.check_forces``), before any solve."""
