@@ -53,6 +53,7 @@ def _compare(phat, force):
     return {k: getattr(a, k) / getattr(s, k) - 1 for k in keys}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("phat", [0.01, 0.05])
 def test_agrees_at_small_force(phat):
     """Exact answer: the shooting solver. Within 2 % at Fhat = 0.01 and 8 % at Fhat = 0.05.

@@ -112,6 +112,7 @@ def test_a_plate_table_runs_end_to_end_with_the_contact_pressure_p(tmp_path, cap
     assert after["case"]["given"]["indenter.shape"] == "plate"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
 def test_a_sphere_runs_end_to_end_with_its_contact_pressure_and_curved_area(tmp_path, solver):
     """A sphere of 8 mm on the 20 mm pocket: each compressed row carries the solver's contact pressure at the

@@ -449,6 +449,7 @@ def test_sweep_bar_on_a_terminal(monkeypatch, tmp_path, capsys):
     assert "2/2" in stderr.getvalue() and "points" in stderr.getvalue()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "argv",
     [
@@ -491,6 +492,7 @@ def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
     assert status == 130 and out == "" and err == "pocket: interrupted\n"
 
 
+@pytest.mark.slow
 def test_sigint_to_a_long_fe_solve(tmp_path):
     """A real SIGINT to an FE curve while it solves its second force inside compiled code (the solve
     waits there for the test): status 130, stderr exactly `pocket: interrupted`, nothing on stdout, no
@@ -514,6 +516,7 @@ def test_sigint_to_a_long_fe_solve(tmp_path):
     assert [p.name for p in tmp_path.iterdir()] == [hold.script.name]  # no --vtk folder
 
 
+@pytest.mark.slow
 def test_sigint_during_compilation_is_not_lost(tmp_path):
     """A real SIGINT while numba compiles (an empty compiled-code cache), delivered while llvmlite's
     object-cache callback runs, where the KeyboardInterrupt is ignored (the compiler waits there for the

@@ -73,6 +73,7 @@ def test_without_thickness_reports_products(tmp_path, capsys):
     assert out["parameters"]["c1"]["value"] == pytest.approx(TRUTH["c1"] * T, rel=1e-6)
 
 
+@pytest.mark.slow
 def test_out_folder_case_file_round_trip(tmp_path, capsys):
     """The fitted sheet's case file runs, and its inflated height at its initial pressure is the fitted
     curve's (the data's, noise-free) there; a folder pocket did not write is refused before solving."""
@@ -93,6 +94,7 @@ def test_out_folder_case_file_round_trip(tmp_path, capsys):
     assert result["inflated"]["height_m"] == pytest.approx(expected, rel=1e-6)  # the fit's 1e-6
 
 
+@pytest.mark.slow
 def test_prestretch_held_or_fitted(tmp_path, capsys):
     """Exact answer: the truth, a Mooney-Rivlin sheet clamped with a prestretch of 1.1 (noise-free data; 1e-6 as
     above). --fix prestretch=1.1 holds it (reported as fixed, written to the fitted case file) and recovers C1 and

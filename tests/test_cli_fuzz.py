@@ -163,6 +163,7 @@ def _fill(argv, root: pathlib.Path):
     return [a.replace("{tmp}", str(root)) for a in argv]
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture,
                                                                   HealthCheck.too_slow])
 @given(argv=_solve_argv())
@@ -170,6 +171,7 @@ def test_inflate_and_compress_never_trace(argv, folder, capsys):
     _check(_fill(argv, folder), capsys)
 
 
+@pytest.mark.slow
 @settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture,
                                                                   HealthCheck.too_slow])
 @given(drawn=_run_argv())

@@ -75,6 +75,7 @@ def test_cli_json(example, capsys):
     assert len(out["curve"]) == 20 and set(out["curve"][0]) == {"force_N", "travel_m", "stiffness_N_per_m"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "option, value, message",
     [

@@ -10,6 +10,8 @@ import pytest
 from pocket import shooting
 from pocket.core.indenters import sphere
 
+pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
+
 EXAMPLES = pathlib.Path(__file__).resolve().parent.parent / "examples"
 
 

@@ -14,6 +14,7 @@ to a fraction of a second; the identities hold on any mesh.
 import math
 
 import numpy as np
+import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from pocket.fem import fitted
@@ -72,6 +73,7 @@ def test_inflation_returns_a_consistent_state_or_a_named_error(alpha, pressure):
     assert state.height > 0 and state.volume > 0 and state.stretch_pole > 1
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(alphas, pressures, forces)
 def test_compression_returns_a_consistent_state_or_a_named_error(alpha, pressure, force):

@@ -30,6 +30,7 @@ def _order(sizes, errors):
     return np.polyfit(np.log(sizes), np.log(errors), 1)[0]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("order, meshes, reference, least, rubber, fluid", [
     # P2 on edge-fitted meshes: O(h^4) in the functionals (3.5 the bar); P1: O(h^2)
     (2, (8, 16, 32, 64, 128), 1024, 3.5, ALPHA, None),
@@ -81,6 +82,7 @@ def test_the_force_is_the_cap_balance_and_the_contact_pressure_integral(rubber, 
         assert state.contact_pressure_pole > state.contact_pressure_edge > state.pressure
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("fluid", [None, GAS])
 def test_the_force_is_the_virtual_work_of_the_stored_energy(fluid):
     """F = (-dU + P dV)/dh along compress_height (U the stored elastic energy): central differences
@@ -201,6 +203,7 @@ def test_a_failed_solve_is_a_convergence_error_saying_where(monkeypatch):
         fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0))
 
 
+@pytest.mark.slow
 def test_the_penalty_sphere_tends_to_the_edge_fitted_one():
     """Penalty contact on a fixed mesh, gap measured vertically to the sphere: with the augmented Lagrangian
     within 1e-5 of the edge-fitted state in P and h (measured 3e-6 at most: the edge inside an element), the

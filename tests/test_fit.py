@@ -15,6 +15,8 @@ from pocket.apps.fitdata import Dataset
 from pocket.apps.fitmodel import Setup
 from pocket.core.materials import Material, check
 
+pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
+
 R, T = 0.02, 1e-3  # clamp radius and thickness (m)
 
 #: law -> (truth in Pa, largest Phat of its inflation data): each reaches strains where its shape shows
@@ -89,7 +91,7 @@ def test_recovers_a_prestretch_and_ignoring_it_biases_the_fit():
     assert ignored.statistics.names == ("mu",) and bias["mu"] > 1e-3 and ignored.statistics.rms > 1e-3
 
 
-@pytest.mark.slow
+@pytest.mark.study  # 100 fits: minutes; the 25-fit counts of test_fit_intervals run in the slow lane
 def test_intervals_cover_the_truth():
     """Exact answer: a 95 % interval covers the truth in 95 % of repetitions. 100 seeded repetitions of a
     Mooney-Rivlin fit to 8 heights with 0.5 % Gaussian noise (6 degrees of freedom: Student's t, not the normal

@@ -124,8 +124,13 @@ def test_gent_intervals_cover_the_truth():
     assert all(s.intervals[s.names.index("jm")][0] > 0.0 for s in runs)
 
 
+#: laws whose 25 fits take many minutes (Yeoh's three parameters): a study run on demand, ``pytest -m study``
+_STUDIES = {"yeoh"}
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("law", [law for law in TRUTHS if law != "gent"])
+@pytest.mark.parametrize("law", [pytest.param(law, marks=pytest.mark.study) if law in _STUDIES else law
+                                 for law in TRUTHS if law != "gent"])
 def test_every_law_intervals_cover_the_truth(law):
     """Each law of ``test_fit.TRUTHS`` (Gent: above), N = 25 fits, noise 0.1 % to 3 %: each parameter's 95 %
     interval covers the truth in at least 21 of 25 (module docstring), and every interval lies in its key's

@@ -149,6 +149,7 @@ def test_fit_metre_column_for_mm_data_refused(tmp_path, capsys, no_solve):
     _refused(*_run([str(tmp_path / "m.csv"), *SHEET], capsys), str(tmp_path / "m.csv"), "height column", "R = 0.02 m")
 
 
+@pytest.mark.slow
 def test_fit_bom_reads_same_mu(tmp_path, capsys):
     """Excel's "CSV UTF-8" starts the file with a byte-order mark: the file is read as without it, and the fit
     gives the same mu_0 (to 1e-9: the same numbers, the same computation)."""
@@ -207,6 +208,7 @@ def test_profile_table_bom_and_semicolon_read(tmp_path):
         assert profiles.read_csv(tmp_path / name, clamp_radius=0.02).digest == digest
 
 
+@pytest.mark.slow
 def test_parameter_at_bound_says_so(tmp_path, capsys):
     """A sheet clamped without prestretch, fitted with ``--fit-prestretch``: the fit stops at the bound
     prestretch = 1 of the admissible set, and says so (its error is one-sided); its interval is cut at 1."""
@@ -232,6 +234,7 @@ def test_undetermined_parameter_has_no_zero_error():
     assert any(w.startswith("c2 = ") and "do not determine" in w for w in s.warnings)
 
 
+@pytest.mark.slow
 def test_fit_text_shows_correlations_and_mu0_interval(tmp_path, capsys):
     """The text report shows what the README promises: mu_0 with its 95 % interval, mu_0 +- t_(0.975, n-p) SE
     (Student's t from scipy.stats, independent of the report's), and the correlation matrix, as the JSON gives

@@ -111,6 +111,7 @@ def test_sense_plain_pressure_warns(capsys):
     assert err == "" and json.loads(plain) == json.loads(written)
 
 
+@pytest.mark.slow
 def test_design_mu_with_unit_taken(button, capsys):
     """``--law neo-hookean --mu '200 kPa'``: the stress is taken with its unit and sets E = 3 mu = 600 kPa. A
     neo-Hookean rubber is Mooney-Rivlin with alpha = 0, so the design is the library's for alpha = 0 and
@@ -257,6 +258,7 @@ def test_given_sheet_path_rises_with_pressure(button):
 
 
 
+@pytest.mark.slow
 def test_design_given_thickness_target_below_the_sheets_reach_is_one_line(capsys):
     """A 0.15 mm sheet of the section 6 button asked for H/H0 = 0.05 at 0.67 N: along the path of a known sheet,
     H/H0 tends to a limit near 0.5 as the pressure falls (test above, and pressure_for_sheet's docstring),

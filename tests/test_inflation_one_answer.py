@@ -67,6 +67,7 @@ def test_inflate_a_rubber_without_maximum_past_lambda_21(capsys):
     assert 21.0 < stretches[0] < STRETCH_LIMIT, stretches
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("control", ["pressure", "volume"])
 def test_a_target_past_the_stretch_limit_is_refused_alike(control):
     """Exact answer: the target the shooting solver's first branch reaches at lambda_0 = STRETCH_LIMIT (the
@@ -101,6 +102,7 @@ def test_a_maximum_narrower_than_a_march_step_is_found_by_both():
     _one_answer(shooting.inflate(0.05545, 1.5), fem.inflate(0.05545, 1.5), "pressure")
 
 
+@pytest.mark.slow
 @settings(max_examples=10, deadline=None)
 @given(alpha=st.floats(0.05, 0.07), pressure=st.floats(1.5, 2.0))
 def test_pressure_near_where_the_maximum_vanishes_has_one_answer(alpha, pressure):

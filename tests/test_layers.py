@@ -47,6 +47,7 @@ def _above(layer_index: int) -> list[str]:
     return [m.strip() for layer in LAYERS[layer_index + 1:] for m in layer.split("|")]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("index, module", [(i, m.strip()) for i, layer in enumerate(LAYERS)
                                            for m in layer.split("|")])
 def test_each_layer_imports_with_the_higher_ones_unavailable(index, module, tmp_path):
@@ -131,6 +132,7 @@ def test_no_second_copy_from_the_repository_root(name):
     assert proc.returncode == 0 and json.loads(proc.stdout)[0] is None, proc.stderr
 
 
+@pytest.mark.slow
 def test_generic_names_are_not_importable_and_do_not_shadow(tmp_path):
     """From a neutral folder, ``import fem`` (and the other former top-level names) fails, the
     subpackages import, and a user's own fem.py / validation.py beside the command cannot shadow them."""

@@ -204,6 +204,7 @@ def test_sense_table_on_a_full_disk(tmp_path, monkeypatch, capsys):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow
 def test_file_size_limit_in_a_real_process(tmp_path):
     """A real write failure (RLIMIT_FSIZE: writes past 2000 bytes fail with EFBIG, as on a full
     disk) in the installed command: exit 1, one line, no traceback, nothing left."""

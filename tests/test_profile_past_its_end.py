@@ -103,6 +103,7 @@ def test_a_curve_crossing_a_short_profiles_end_is_refused_whole():
     assert shooting.compress(ALPHA, PRESSURE, 0.5 * end, indenter=indenter).contact_radius_deformed < table[-1, 0]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", [shooting, fem], ids=["shooting", "fem"])
 def test_the_contact_area_on_a_table_of_many_rows_warns_nothing(solver):
     """A rounded cone z = sqrt(b^2 + s^2 rho^2) - b tabled in 37 rows to its end (b = 0.04, s = 0.8, rows b / (6 s)

@@ -107,6 +107,7 @@ def _compressed_invariants(state, alpha, pressure, force, solver, volume_rtol):
         assert state.profile.stretch_2[-1] == pytest.approx(1.0, abs=1e-7)
 
 
+@pytest.mark.slow
 @guarded(60)
 @given(alpha=alphas, pressure=pressures)
 @example(0.0573, 1.855)  # no pressure maximum, lambda_0 = 24: once refused as "not reached for lambda_0 up to 21"
@@ -124,6 +125,7 @@ def test_shooting_inflation(alpha, pressure):
     _inflated_invariants(state, alpha, pressure, "shooting")
 
 
+@pytest.mark.slow
 @guarded(100)
 @given(alpha=alphas, pressure=pressures, force=forces)
 def test_shooting_compression(alpha, pressure, force):
@@ -165,6 +167,7 @@ def test_analytical_model(alpha, pressure, force):
     assert (len(state.warnings) > 0) == (max(stretches) > analytical.model.STRETCH_LIMIT)
 
 
+@pytest.mark.slow
 @guarded(120)
 @given(rubber=rubbers, pressure=pressures, force=forces, fluid=fluids)
 def test_shooting_compression_any_rubber_and_fluid(rubber, pressure, force, fluid):

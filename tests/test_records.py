@@ -82,6 +82,7 @@ WALKED = (*SOLVERS, TOY.name)
 SOLID_SENSE = "sense (pressure, forces)"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", WALKED)
 def test_every_command_either_works_or_names_what_the_solver_lacks(solver, tmp_path, capsys, request):
     """Each (solver, command, case-file form): exit 0 where the record serves every entry point the

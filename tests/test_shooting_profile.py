@@ -88,6 +88,7 @@ def test_sphere_as_table_reproduces_the_sphere_to_the_interpolation_error():
     assert coarse.max() < 1e-3  # and the table of 40 rows is a usable sphere
 
 
+@pytest.mark.slow
 def test_force_two_ways_under_a_paraboloid():
     rc = 0.5  # z = rho^2 / (2 R_c): kappa_1 = (1/R_c) / (1 + rho^2/R_c^2)^(3/2), not constant
     shape = profiles.functions(lambda r: r * r / (2 * rc), lambda r: r / rc,
@@ -104,6 +105,7 @@ def test_force_two_ways_under_a_paraboloid():
         assert state.contact_pressure_pole == pytest.approx(pc[0], rel=1e-6)
 
 
+@pytest.mark.slow
 def test_range_ends_at_the_end_of_the_profile():
     shape = _sphere_functions()
     end = shooting.range_end(ALPHA, PHAT, indenter=profile(shape))
@@ -121,6 +123,7 @@ def test_contact_area_is_the_curved_area():
     assert state.contact_area == pytest.approx(2.0 * K * K * (1.0 - math.cos(phi)), rel=1e-10)
 
 
+@pytest.mark.slow
 def test_a_blunt_profile_ends_with_its_lowest_point_at_the_clamp_plane():
     rc = 0.5  # the paraboloid reaching rho = R: the pole meets the clamp plane before the profile ends
     shape = profiles.functions(lambda r: r * r / (2 * rc), lambda r: r / rc,
@@ -152,6 +155,7 @@ def test_a_flat_profile_reproduces_the_plate():
     assert ends[0] == pytest.approx(ends[1], rel=1e-9)
 
 
+@pytest.mark.slow
 def test_a_table_is_integrated_compiled_as_scipy_integrates_it():
     """Two integrations of one 40-row table: the compiled integrator, which evaluates the spline itself and ends
     a step on each row it would cross, and scipy's DOP853 on the table's Python functions, stopping at each row
@@ -170,6 +174,7 @@ def test_a_table_is_integrated_compiled_as_scipy_integrates_it():
             assert getattr(a, key) == pytest.approx(getattr(c, key), rel=1e-9), key
 
 
+@pytest.mark.slow
 def test_a_sphere_as_functions_on_a_shallow_dome_reproduces_the_sphere():
     """The sphere given as exact profile functions on a shallow dome under a large sphere (Phat_I = 2.26e-4,
     K = 1.379, Fhat = 0.472: a pole strain s_0 ~ 1e-3), where the contact zone's state enters the residuals

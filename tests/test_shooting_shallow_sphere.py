@@ -74,6 +74,7 @@ def test_shallow_dome_under_a_large_sphere_compresses_as_the_fem_does(capsys):
     _assert_agree(shooting.compress(NEO, PRESSURE, FORCE, **kwargs), fem.compress(NEO, PRESSURE, FORCE, **kwargs))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
 def test_force_past_a_shallow_domes_end_is_refused_in_one_line(capsys, solver):
     """A neo-Hookean pocket at Phat_I = 2.26e-4 under a sphere of K = 2.85 pressed 1 % past the shooting's range
@@ -101,6 +102,7 @@ def _fem_end(material, pressure, radius, fluid, near) -> float:
     return float(real[np.argmin(np.abs(real - near))])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("law, fluid, pressure, radius", [
     ("ogden", gas(1.0, 1.4), 0.00011495367582735362, 1.819833162634235),
     ("mooney-rivlin", None, 0.000903602415868002, 2.5384621337775046),

@@ -176,6 +176,7 @@ def test_a_state_with_negative_contact_pressure_or_penetration_is_refused_by_nam
         problem.check(inside, state.contact_pressure, state.height, 0.5)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("radius", [0.5, 2.0])
 def test_a_force_maximum_under_a_sphere_ends_the_range(radius):
     """A softening rubber (alpha = -0.5, Phat_I = 0.1; under the plate its range ends at a fold too) under a

@@ -106,6 +106,7 @@ def test_ogden_special_cases_are_the_invariant_laws(ogden, other):
         assert abs(x - y) < 1e-10, (key, x, y)
 
 
+@pytest.mark.slow
 def test_the_command_line_solves_an_ogden_rubber_as_a_solid(capsys):
     """Exact: ``pocket compress --solver solid --law ogden`` prints the library's state for the rubber in
     units of mu_0 (the parameters are rescaled: only their ratios matter)."""

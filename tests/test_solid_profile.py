@@ -54,6 +54,7 @@ def test_the_profile_jacobian_is_the_derivative_of_the_residual(held):
     assert np.abs(rows.k_uu @ direction[:m.basis_u.N]).max() > 1e3 * atol  # the curvature term matters here
 
 
+@pytest.mark.slow
 def test_a_table_of_a_sphere_presses_as_the_sphere():
     """The profile sampled from the sphere K = 0.4 (40 rows) against the sphere itself: the same pressure ratio,
     lowest point to the spline's error, the contact area to the edge estimate's."""
@@ -73,6 +74,7 @@ def test_a_table_of_a_sphere_presses_as_the_sphere():
     assert state.force == pytest.approx(FORCE, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_a_contact_past_the_profile_is_out_of_range():
     """A profile shorter than the contact zone it would need: an OutOfRangeError naming the profile's end."""
     from pocket.core.errors import OutOfRangeError

@@ -22,6 +22,8 @@ from pocket.core.errors import OutOfRangeError
 from pocket.core.indenters import sphere
 from pocket.core.materials import mooney_rivlin
 
+pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
+
 # the neo-Hookean pocket of the reproducer: Phat_I = 0.2 under a sphere of K = 0.5, whose membrane end (Fhat ~
 # 1.46) is the sphere's lowest point reaching the clamp plane; a coarse solid (two layers, 32 elements) keeps
 # each solve to seconds

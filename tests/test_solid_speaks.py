@@ -4,6 +4,7 @@ membrane's wrinkling sentence, and its discretisation measures are named for wha
 import json
 
 import numpy as np
+import pytest
 
 from pocket.cli import main
 from pocket.core.materials import mooney_rivlin
@@ -32,6 +33,7 @@ def _run(tmp_path, capsys, solver):
     return capsys.readouterr().err, json.loads((tmp_path / solver / f"{solver}.json").read_text())
 
 
+@pytest.mark.slow
 def test_thick_sheet_solved_by_the_solid_has_no_membrane_theory_warning(tmp_path, capsys):
     """The same thick case: the membrane (shooting) warns that its O(T/R) error is no longer small; the solid,
     which models the thickness, does not, and its rows carry no such warning."""
@@ -42,6 +44,7 @@ def test_thick_sheet_solved_by_the_solid_has_no_membrane_theory_warning(tmp_path
     assert not any("membrane theory" in w for row in (result["inflated"], *result["states"]) for w in row["warnings"])
 
 
+@pytest.mark.slow
 def test_solid_discretisation_measures_not_read_as_a_volume_error(tmp_path, capsys):
     """The solid's rows name the peak |det F - 1| as the mesh's local error and the constraint's residual as
     such (no bare 'incompressibility' an engineer reads as a volume error), and count the mesh as built: the

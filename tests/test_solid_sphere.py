@@ -114,6 +114,7 @@ def _state(indenter, thickness_ratio=T, elements=ELEMENTS, layers=2, force=FORCE
                           elements=elements, layers=layers)
 
 
+@pytest.mark.slow
 def test_a_large_sphere_is_the_flat_plate_to_first_order_in_1_over_k():
     """Limit: the sphere's surface deviates from the plate's by rho^2 / (2 K) over the contact zone, so a
     sphere of radius K gives the plate's state to O(1/K): the differences in P/P_I, the contact radius and the
@@ -148,6 +149,7 @@ def _against_membrane(radius):
     return rows
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("radius", [0.4, 2.0])
 def test_the_solid_tends_to_the_membrane_under_a_sphere(radius):
     """Limit: as T/R -> 0 the solid's P/P_I and contact area tend to the membrane's under the same sphere, the

@@ -36,6 +36,7 @@ def _inflated(state, reference):
             "V": state.volume / reference.volume - 1.0}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, material, pressure, fluid, elements, printed", [
     ("Mooney-Rivlin, liquid", mooney_rivlin(47 / 160), 0.31, None, 64, ()),
     # a gas at Phat_atm = 1 takes up most of the change: its P/P_I differs from the membrane's by ~1e-4,
@@ -83,6 +84,7 @@ def _order(values, sizes) -> float:
     return float(-np.polyfit(np.log(np.asarray(sizes[1:], float)), np.log(steps), 1)[0])
 
 
+@pytest.mark.slow
 def test_mesh_convergence_along_the_radius_and_through_the_thickness():
     """The inflated headline pocket (T/R = 0.0125): successive differences of H0 and V when the elements along
     the radius double (16 .. 64, four layers) and when the layers double (2 .. 8, 32 elements). The clamp's

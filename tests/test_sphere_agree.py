@@ -58,6 +58,7 @@ def test_shooting_and_fem_agree_on_every_scalar_under_a_sphere(rubber, fluid, ra
     assert max(minima.values()) < FLOOR_MINIMA, minima
 
 
+@pytest.mark.slow
 def test_the_difference_is_the_fems_discretisation_error():
     """On a finer mesh the difference falls at the P2 elements' order (16-fold per halving, > 8 asked):
     what separates the solvers is the FE's error, not a difference in the model they solve."""

@@ -102,6 +102,7 @@ def test_a_curve_task_gives_the_points(solver, options):
                         assert row[name] == pytest.approx(value, rel=rel, abs=rel), (name, row[name], value)
 
 
+@pytest.mark.slow
 def test_dask_cluster_same_csv(reference, tmp_path):
     """A local dask cluster of two worker processes, reached by --scheduler, writes the same bytes."""
     distributed = pytest.importorskip("dask.distributed")
@@ -376,6 +377,7 @@ def test_one_writer_at_a_time(tmp_path, capsys):
     assert path.read_text() == ",".join(COLUMNS) + "\n"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "extra, message",
     [

@@ -27,6 +27,7 @@ def _run(capsys, args):
     return json.loads(capsys.readouterr().out)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", [FEM, []], ids=["fem", "shooting"])
 @pytest.mark.parametrize("indenter", [[], SPHERE], ids=["plate", "sphere"])
 def test_the_force_at_a_height_gives_back_that_height(capsys, indenter, solver):
@@ -52,6 +53,7 @@ def test_every_solver_that_declares_height_control_is_reached():
 GAS = gas(ambient=3.0)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("indenter", [None, sphere(0.8), sphere(3.0)], ids=["plate", "sphere-0.8", "sphere-3"])
 @pytest.mark.parametrize("fluid", [None, GAS], ids=["liquid", "gas"])
 def test_shooting_and_fem_agree_at_a_height(indenter, fluid):
@@ -109,6 +111,7 @@ def test_a_vtk_series_refuses_a_height_given_twice(capsys, tmp_path):
 CASE = BUTTON + '[indenter]\nshape = "sphere"\nradius = "8 mm"\n'
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
 def test_case_file_heights_under_a_sphere(tmp_path, capsys, solver):
     """``[loads] heights`` under an 8 mm sphere: each state sits at its height (the force found for it), the

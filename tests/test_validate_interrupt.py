@@ -13,7 +13,10 @@ import subprocess
 import sys
 import time
 
+import pytest
 from pocket.validation.runner import WORKERS
+
+pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
 
 CHILD = """
 import os, pathlib, sys, time

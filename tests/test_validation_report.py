@@ -21,6 +21,8 @@ from pocket.validation.plan import RANGE_FRACTION
 
 from pocket.cli import main
 
+pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
+
 
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):

@@ -11,6 +11,8 @@ from pocket.validation.suite import CASES_FILE
 
 from pocket.cli import main
 
+pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
+
 TABLE_1 = {2: "0.5 mm", 3: "0.8 mm"}  # the paper's Table 1: T of samples 2 and 3 (C1, C2, R below)
 
 

@@ -215,6 +215,7 @@ def _sweep(folder, address, *extra):
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
+@pytest.mark.slow
 def test_a_lost_scheduler_is_one_line(cluster, tmp_path):
     """The scheduler killed while the sweep's task runs: exit 1, stderr one line saying the connection
     was lost and that the same command resumes, no traceback, and (no point finished) no file."""
@@ -230,6 +231,7 @@ def test_a_lost_scheduler_is_one_line(cluster, tmp_path):
     assert not (tmp_path / "s.csv").exists()
 
 
+@pytest.mark.slow
 def test_all_workers_gone_is_one_line(cluster, tmp_path):
     """The only worker killed while it runs the sweep's task: with --patience 1 the sweep stops (it
     used to wait for ever): exit 1, one line saying no worker is connected."""
@@ -245,6 +247,7 @@ def test_all_workers_gone_is_one_line(cluster, tmp_path):
     assert f"no dask worker has been connected to the scheduler at {address} for 1 s" in err, err
 
 
+@pytest.mark.slow
 def test_no_worker_at_all_is_one_line(cluster, tmp_path):
     """A scheduler without workers: the sweep waits --patience seconds, then exit 1, one line, no file."""
     _, address, started = cluster
@@ -256,6 +259,7 @@ def test_no_worker_at_all_is_one_line(cluster, tmp_path):
     assert not (tmp_path / "s.csv").exists()
 
 
+@pytest.mark.slow
 def test_a_worker_without_pocket_is_one_line(cluster, tmp_path):
     """A worker that cannot import pocket: refused before any task, exit 1, one line naming the worker
     and the missing module, no file."""
