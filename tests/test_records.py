@@ -161,3 +161,19 @@ def test_check_option_checks_by_the_record_and_refuses_an_undeclared_option():
     assert str(got.value) == str(expected.value)
     with pytest.raises(ValueError, match="solver toy declares no option 'tol'"):
         TOY.check_option("tol", 1e-8)
+
+
+@pytest.mark.parametrize(("command", "flag", "entry_point"), [("inflate", "--volume", "inflate_volume"),
+                                                               ("compress", "--height", "compress_height")])
+def test_a_flags_help_names_the_solvers_whose_records_serve_it(command, flag, entry_point, capsys):
+    """The help of a flag only some solvers serve names exactly the solvers whose records list its entry point
+    (it once named shooting and fem where the solid serves both too)."""
+    from pocket.apps.solvers import SOLVERS
+    from pocket.cli import main
+
+    assert main([command, "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    help_of = text.split(f"{flag} ")[-1]  # the flag's own help, after its mentions in the usage line
+    named = help_of.split("solvers ", 1)[1].split(")")[0].split(" --")[0]
+    serving = {n for n, s in SOLVERS.items() if s.serves(entry_point)}
+    assert set(named.replace(" and ", ", ").split(", ")) == serving, named

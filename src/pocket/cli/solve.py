@@ -38,6 +38,7 @@ __all__ = ["register"]
 
 def register(subparsers) -> None:
     """Add ``inflate`` and ``compress``."""
+
     for name, text in (("inflate", "step 1: inflate the pocket at pressure Phat"),
                        ("compress", "step 2: press the inflated pocket with a flat plate or another indenter, its "
                                     "fluid sealed in (a liquid keeps its volume, a gas is compressed)")):
@@ -50,7 +51,7 @@ def register(subparsers) -> None:
             control.add_argument("--volume", type=model_value(name, "V/R^3"), metavar="V/R^3",
                                  help="volume control: the enclosed volume in V/R^3, at most 5.2e5 (more needs the "
                                  "sheet stretched past the model's limit of 100); passes a pressure maximum; "
-                                 "solvers shooting and fem")
+                                 f"solvers {_serving('inflate_volume')}")
         else:
             p.add_argument("--pressure", type=model_value(name, "Phat_I = P_I R / (E T)"), required=True,
                            metavar="PHAT_I", help="initial pressure, Phat_I = P_I R / (E T)")
@@ -59,7 +60,7 @@ def register(subparsers) -> None:
                               help="force, Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
             load.add_argument("--height", type=model_value(name, "H/R"), nargs="+", metavar="H/R",
                               help="travel control: the indenter's lowest point at a height in H/R above the clamp "
-                                   "plane, at most the inflated height H0/R (solvers shooting and fem)")
+                                   f"plane, at most the inflated height H0/R (solvers {_serving('compress_height')})")
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                        help="which model solves (each is listed below)")
         p.add_argument("--json", action="store_true",
@@ -75,6 +76,12 @@ def register(subparsers) -> None:
             add_indenter_flags(p, command=name)
         add_solver_flags(p, "inflate" if name == "inflate" else "compress")
         p.set_defaults(handler=_main)
+
+
+def _serving(entry: str) -> str:
+    """The solvers whose records list the entry point ``entry``, as a help text names them ("a, b and c")."""
+    names = [n for n, s in SOLVERS.items() if s.serves(entry)]
+    return ", ".join(names[:-1]) + f" and {names[-1]}" if len(names) > 1 else names[0]
 
 
 def _units(step: str) -> str:
