@@ -15,14 +15,15 @@ which steps take it: a contact penalty means nothing to an inflation.
 Entry points (functions of the module ``Solver.module``), all in the
 dimensionless units of ``pocket.core.states``:
 
-- ``inflate(material, pressure, **options) -> InflatedState``
-- ``inflate_volume(material, volume, **options) -> InflatedState``
-- ``inflation_curve(material, pressures, *, progress=None, **options) -> list[InflatedState]``: the states at
-  several pressures (optional: a solver that can share work between them lists it)
-- ``compress(material, pressure_initial, force, *, fluid=None, indenter=None, **options) -> CompressedState``
-- ``compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, progress=None,
-  **options) -> list[CompressedState]``
-- ``compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, **options)
+- ``inflate(material, pressure, *, geometry=None, **options) -> InflatedState``
+- ``inflate_volume(material, volume, *, geometry=None, **options) -> InflatedState``
+- ``inflation_curve(material, pressures, *, geometry=None, progress=None, **options) -> list[InflatedState]``: the
+  states at several pressures (optional: a solver that can share work between them lists it)
+- ``compress(material, pressure_initial, force, *, fluid=None, indenter=None, geometry=None, **options)
+  -> CompressedState``
+- ``compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, geometry=None,
+  progress=None, **options) -> list[CompressedState]``
+- ``compress_height(material, pressure_initial, height, *, fluid=None, indenter=None, geometry=None, **options)
   -> CompressedState``: travel control, the indenter's lowest point at ``height`` = H/R above the clamp
   plane (optional: listed in ``entry_points`` by a solver that has it)
 
@@ -45,13 +46,17 @@ Phat_atm = P_atm R / (E T) (``pocket.core.fluids.as_fluid`` checks it). Inflatio
 gas is sealed once the pocket is inflated. ``indenter`` is what presses on the pocket: None (the flat
 plate, ``pocket.core.indenters.FLAT``) or an ``Indenter``; each solver maps the kinds it poses to its
 contact formulation in a table and refuses another kind in one line (``indenters.formulation``).
+``geometry`` is the membrane's reference surface (a ``GeometryLike``): None (the flat disc clamped at r = R,
+``pocket.core.geometries.DISC``), a ``Geometry`` or its name; each solver maps the surfaces it poses to its
+formulation in a table and refuses another in one line (``geometries.formulation``).
 States echo ``material`` as given (their ``alpha`` is derived from it: the alpha it was given by, else None),
-``fluid`` as given (``LIQUID`` for None) and ``indenter`` (``FLAT`` for None).
+``fluid`` as given (``LIQUID`` for None) and ``indenter`` (``FLAT`` for None); an inflated state carries its
+``geometry`` (``DISC`` for None), and a compressed state that of the inflated state it was pressed from.
 
 ``progress``, if given, is called as ``progress(done, total)`` after each force of a
 curve (a command line shows a bar with it); it is not an option of the record.
-A solver may also have ``range_end(material, pressure_initial, *, fluid=None, indenter=None, **options)
--> float``,
+A solver may also have ``range_end(material, pressure_initial, *, fluid=None, indenter=None, geometry=None,
+**options) -> float``,
 the force Fhat at which its model's range ends (listed in ``entry_points``; inf where the range has
 no end, as for a rubber that locks before the sheet reaches the clamp plane).
 """
@@ -67,12 +72,14 @@ import numpy as np
 
 from .errors import InputError
 from .fluids import Fluid
+from .geometries import Geometry
 from .inputs import check_file
 from .materials import Material
 from .states import CompressedState, InflatedState
 
-__all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS", "MaterialLike", "FluidLike", "Numbers", "Progress", "Inflate",
-           "InflateVolume", "InflationCurve", "Compress", "CompressionCurve", "CompressHeight", "RangeEnd"]
+__all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS", "MaterialLike", "FluidLike", "GeometryLike", "Numbers",
+           "Progress", "Inflate", "InflateVolume", "InflationCurve", "Compress", "CompressionCurve", "CompressHeight",
+           "RangeEnd"]
 
 #: the two steps of the problem
 STEPS = ("inflate", "compress")
@@ -88,6 +95,9 @@ ENTRY_POINTS = {"inflate": "pressure-controlled inflation", "inflate_volume": "v
 MaterialLike: TypeAlias = Material | float
 #: what a ``fluid`` argument may be: None or "liquid" (fixed volume), or a ``Fluid`` (``pocket.core.fluids.as_fluid``)
 FluidLike: TypeAlias = Fluid | str | None
+#: what a ``geometry`` argument may be: None (the flat clamped disc), a ``Geometry`` or its name
+#: (``pocket.core.geometries.as_geometry``)
+GeometryLike: TypeAlias = Geometry | str | None
 #: several dimensionless values (pressures, forces): a sequence of numbers or a 1-D array
 Numbers: TypeAlias = Sequence[float] | np.ndarray
 #: a curve's progress callback, called as ``progress(done, total)`` after each point
@@ -104,7 +114,8 @@ class Inflate(Protocol):
     pressure : float
         Phat = P R / (E T), > 0 (dimensionless).
     **options
-        The solver's options (its record's ``options``; each solver's own signature names them).
+        ``geometry`` (a ``GeometryLike``: the reference surface, None the flat clamped disc) and the solver's
+        options (its record's ``options``; each solver's own signature names them).
 
     Returns
     -------
@@ -144,7 +155,8 @@ class InflationCurve(Protocol):
     pressures : Numbers
         Phat of each state, > 0 (dimensionless).
     **options
-        ``progress`` (a ``Progress``, called after each pressure) and the solver's options.
+        ``geometry`` (as for ``Inflate``), ``progress`` (a ``Progress``, called after each pressure) and the
+        solver's options.
 
     Returns
     -------
@@ -168,7 +180,7 @@ class Compress(Protocol):
         Fhat = F / (P_I pi R^2), >= 0 (dimensionless).
     **options
         ``fluid`` (a ``FluidLike``: the sealed fluid, None a liquid), ``indenter`` (an ``Indenter``, None the flat
-        plate) and the solver's options.
+        plate), ``geometry`` (as for ``Inflate``) and the solver's options.
 
     Returns
     -------
@@ -189,8 +201,8 @@ class CompressionCurve(Protocol):
     forces : Numbers
         Fhat of each state, >= 0 (dimensionless); at least one.
     **options
-        ``fluid``, ``indenter`` (as for ``Compress``), ``progress`` (a ``Progress``, called after each force) and
-        the solver's options.
+        ``fluid``, ``indenter``, ``geometry`` (as for ``Compress``), ``progress`` (a ``Progress``, called after
+        each force) and the solver's options.
 
     Returns
     -------

@@ -31,6 +31,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from .fluids import LIQUID, Fluid
+from .geometries import DISC, Geometry
 from .indenters import FLAT, Indenter
 from .materials import Material
 from .offset import check_thickness, volume_correction
@@ -160,6 +161,8 @@ class InflatedState(_Membrane):
     tensions (default: from the profile) are filled in when not given.
     ``membrane`` is false for a state of a model of the sheet's thickness (the solid),
     whose warnings speak of its stress resultants rather than of membrane theory.
+    ``geometry`` is the reference surface it was solved on (``pocket.core.geometries``; the flat clamped
+    disc by default), not a reported key.
     """
 
     material: Material
@@ -175,6 +178,7 @@ class InflatedState(_Membrane):
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
     membrane: bool = True
+    geometry: Geometry = DISC
 
     KEYS = ("alpha", "pressure", "stretch_pole", "height", "volume", "stretch_clamp")
 
@@ -243,6 +247,11 @@ class CompressedState(_Membrane):
         "height_ratio",
         "volume",
     )
+
+    @property
+    def geometry(self) -> Geometry:
+        """The reference surface: that of the inflated state it was pressed from (one fact, held there)."""
+        return self.inflated.geometry
 
     def scalars(self) -> dict:
         """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars`` with the

@@ -1,0 +1,176 @@
+r"""Reference surfaces: the undeformed membrane a solver is given, as it is given a law and an indenter.
+
+A reference surface is what a solver needs to know of the membrane before any load: an axisymmetric
+surface whose meridian is described by the arc length S from the pole (S = 0, on the axis) to its end
+S = L, every length in units of R. A material point at S sits at the reference radius r0(S) and height
+z0(S); the meridian's end is held by a support that fixes where it lies. The undeformed surface
+encloses the volume V0 with the plane of its end.
+
+=======  ======================================  =====  ============  ==============  ====
+name     surface                                 L      r0(S), z0(S)  end             V0
+=======  ======================================  =====  ============  ==============  ====
+pocket   a flat disc, clamped at r = R           1      S, 0          clamp r=1, z=0  0
+=======  ======================================  =====  ============  ==============  ====
+
+The flat disc is today's only kind (``DISC``, every solver's default): its arc length is its radius, so
+S and r0 are one coordinate, which is why every solver writes the Lagrangian radius r for both.
+
+Each solver maps the surfaces it poses to its own formulation through an explicit table and asks
+``formulation`` (or ``posed``, the check every entry point makes of its ``geometry`` argument) for it,
+which refuses a surface the table lacks in one line naming the solver and the surface: a new surface
+is a new ``Geometry`` here and an entry in the tables of the solvers that pose it. An inflated state
+carries the surface it was solved on (``pocket.core.states.InflatedState.geometry``), and a compressed
+state the one of the inflated state it was pressed from.
+
+What a closed capsule (a sphere of radius R) will need beyond this seam: its meridian runs from the pole
+to the equator, S in [0, pi / 2] with r0 = sin S and z0 = cos S measured from the equatorial plane, and
+its end is no clamp but the equator's symmetry (the meridian vertical there, z = 0, r free), a second
+kind of ``Support``. The solvers then read r0(S) wherever they now take the Lagrangian radius for the
+reference radius: the hoop stretch lambda_2 = rho / r0 in the shooting equations and their pole series,
+and in the finite-element kernels; the shooting's closing condition (now rho(1) = 1 at the clamp) and
+the finite element's prescribed dofs (now rho and eta at S = 1) become the equator's; the volume and the
+end's stretch report that surface's. Its undeformed volume 4 pi / 3 is not zero, and its inflated state
+has a closed form (a sphere of uniform stretch).
+"""
+
+from __future__ import annotations
+
+import abc
+import dataclasses
+from collections.abc import Mapping
+from typing import ClassVar, TypeVar
+
+import numpy as np
+
+from .errors import InputError
+from .inputs import quote
+
+__all__ = ["Support", "Clamp", "Geometry", "Disc", "DISC", "GEOMETRIES", "as_geometry", "clamp_of", "formulation",
+           "posed"]
+
+T = TypeVar("T")
+
+
+class Support:
+    """What holds the end of the meridian: a subclass per way of holding it (``Clamp``)."""
+
+
+@dataclasses.dataclass(frozen=True)
+class Clamp(Support):
+    """The meridian's end held fixed at radius ``radius`` and height ``height`` (units R): the material point
+    there neither moves nor is free to turn the sheet about the clamp's line (a membrane carries no moment:
+    for it the clamp fixes the point only)."""
+
+    radius: float
+    height: float
+
+
+class Geometry(abc.ABC):
+    """An axisymmetric reference surface, in units of R (module docstring): ``name`` (the word a user
+    writes), ``description`` (one line), the meridian's ``length`` L, the reference ``radius`` r0(S) and
+    ``height`` z0(S) of the material point at arc length S from the pole, its ``end`` support and the
+    undeformed ``volume`` V0 it encloses."""
+
+    name: ClassVar[str]
+    description: ClassVar[str]
+
+    @property
+    @abc.abstractmethod
+    def length(self) -> float:
+        """L: the meridian's arc length from the pole to its end (units R)."""
+
+    @abc.abstractmethod
+    def radius(self, arc) -> np.ndarray:
+        """r0(S): the reference radius of the material points at arc lengths ``arc`` (units R, any shape in
+        [0, L]; the result has the same shape)."""
+
+    @abc.abstractmethod
+    def height(self, arc) -> np.ndarray:
+        """z0(S): the reference height of the material points at arc lengths ``arc`` above the plane of the
+        meridian's end (units R; any shape, the result has the same shape)."""
+
+    @property
+    @abc.abstractmethod
+    def end(self) -> Support:
+        """What holds the meridian's end S = L."""
+
+    @property
+    @abc.abstractmethod
+    def volume(self) -> float:
+        """V0 / R^3: the volume the undeformed surface encloses with the plane of its end."""
+
+
+@dataclasses.dataclass(frozen=True)
+class Disc(Geometry):
+    """The flat disc of radius R clamped at its rim: the pocket's sheet before inflation. Its arc length is
+    its radius, r0(S) = S, and it lies in the clamp plane, z0 = 0."""
+
+    name: ClassVar[str] = "pocket"
+    description: ClassVar[str] = "a flat sheet clamped at its rim r = R"
+
+    @property
+    def length(self) -> float:
+        return 1.0
+
+    def radius(self, arc) -> np.ndarray:
+        """r0(S) = S: ``arc`` itself (as a float array: the same array if it is one)."""
+        return np.asarray(arc, dtype=float)
+
+    def height(self, arc) -> np.ndarray:
+        """z0(S) = 0."""
+        return np.zeros_like(np.asarray(arc, dtype=float))
+
+    @property
+    def end(self) -> Clamp:
+        return _RIM
+
+    @property
+    def volume(self) -> float:
+        return 0.0
+
+
+_RIM = Clamp(radius=1.0, height=0.0)  # the disc's clamp
+
+#: the flat clamped disc (every solver's default)
+DISC = Disc()
+
+#: name -> the reference surface of that name (what ``--geometry`` will offer)
+GEOMETRIES: dict[str, Geometry] = {DISC.name: DISC}
+
+
+def as_geometry(value) -> Geometry:
+    """The reference surface of ``value``: None is the flat disc, a name of ``GEOMETRIES`` its surface, a
+    ``Geometry`` is returned as given; anything else is an InputError."""
+    if value is None:
+        return DISC
+    if isinstance(value, Geometry):
+        return value
+    if isinstance(value, str) and value in GEOMETRIES:
+        return GEOMETRIES[value]
+    raise InputError(f"geometry = {quote(value)}, but it must be one of {', '.join(GEOMETRIES)} "
+                     "or a Geometry (pocket.core.geometries)")
+
+
+def clamp_of(geometry: Geometry) -> Clamp:
+    """The clamp that holds the meridian's end of ``geometry``. A ValueError if it is held otherwise: a solver
+    that asks poses clamped surfaces only, and its table should have refused this one."""
+    end = geometry.end
+    if not isinstance(end, Clamp):
+        raise ValueError(f"the {geometry.name} geometry's meridian is not clamped at its end")
+    return end
+
+
+def formulation(table: Mapping[str, T], solver: str, geometry: Geometry) -> T:
+    """``table[geometry.name]``: the formulation with which ``solver`` poses the reference surface; an
+    InputError naming the solver and the surface if its table has no entry for it."""
+    if geometry.name not in table:
+        raise InputError(f"solver {solver} does not implement the {geometry.name} geometry "
+                         f"(its geometries: {', '.join(table)})")
+    return table[geometry.name]
+
+
+def posed(table: Mapping[str, T], solver: str, value: Geometry | str | None) -> tuple[Geometry, T]:
+    """The reference surface of ``value`` (``as_geometry``) and the formulation with which ``solver`` poses
+    it (``formulation``): the check every entry point makes of its ``geometry`` argument."""
+    geometry = as_geometry(value)
+    return geometry, formulation(table, solver, geometry)
