@@ -37,12 +37,13 @@ import numpy as np
 
 from pocket.core.errors import ConvergenceError, InputError, beyond_range
 from pocket.core.fluids import as_fluid
+from pocket.core.geometries import posed
 from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_force, check_positive
 from pocket.core.states import CompressedState
 
 from . import newton
-from .inflation import inflate
+from .inflation import GEOMETRIES, inflate
 from .integrator import OK, STATUS
 from .laws import law_of
 from .problem import Problem, contact_of
@@ -228,19 +229,21 @@ def _uncompressed(problem: Problem, force: float, fluid) -> CompressedState:
     )
 
 
-def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, rtol=1e-10,
+def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, geometry=None, rtol=1e-10,
                       progress=None) -> list[CompressedState]:
     """Compress at each force Fhat = F/(P_I pi R^2) of ``forces`` (any order), by continuation.
 
     material: the rubber, a ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha, ``as_material``). fluid: None
     or "liquid" (fixed volume), or a gas (``pocket.core.fluids.gas``, its ambient pressure as
     Phat_atm = P_atm R / (E T)), sealed at Phat_I. indenter: None (the flat plate) or a
-    ``pocket.core.indenters.Indenter`` this solver poses (an InputError for another). Returns the states
+    ``pocket.core.indenters.Indenter`` this solver poses (an InputError for another). geometry: the reference
+    surface, None (the flat clamped disc) or one this solver poses (``GEOMETRIES``). Returns the states
     in the order of ``forces``,
     each echoing its inputs exactly. ``progress(done, total)``, if given, is called after each force
     (``total`` = len(forces)). Raises OutOfRangeError for a force past the end of the model's range
     (``range_end``), ConvergenceError if a solve fails, InputError for invalid input.
     """
+    geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     law = law_of(material)
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
@@ -249,7 +252,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    problem = contact(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid, indenter)
+    problem = contact(inflate(material, pressure_initial, geometry=geometry, rtol=rtol), rtol, law, fluid, indenter)
     counts = {f: forces.count(f) for f in forces}
     states, done = {}, 0
     branch = _Branch(points=((0.0, problem.start()),))
@@ -272,6 +275,8 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     return [states[f] for f in forces]
 
 
-def compress(material, pressure_initial, force, *, fluid=None, indenter=None, rtol=1e-10) -> CompressedState:
+def compress(material, pressure_initial, force, *, fluid=None, indenter=None, geometry=None,
+             rtol=1e-10) -> CompressedState:
     """Compress the pocket inflated at Phat_I = ``pressure_initial`` by force Fhat (``compression_curve``)."""
-    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, rtol=rtol)[0]
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
+                             rtol=rtol)[0]

@@ -56,6 +56,11 @@ reaching it (the shot stops: axis, fold, vanishing tension). Only inside such a
 bracket is a shot that stops early read as "too much pressure for this stretch".
 A shot that fails for numerical reasons (too many steps) is a ConvergenceError,
 and so is a final shot that does not land on the clamp.
+
+The reference surface is the flat disc clamped at r = R (``pocket.core.geometries``, the only one in
+``GEOMETRIES``): the shots run from the pole S = 0 to the clamp S = 1 with the arc length S for the
+reference radius, and the final shot's landing is checked against the clamp's radius; each state carries
+the surface it was solved on.
 """
 
 from __future__ import annotations
@@ -72,9 +77,10 @@ from pocket.core.errors import (
     above_pressure_maximum,
     past_stretch_limit,
 )
+from pocket.core.geometries import Geometry, clamp_of, posed
 from pocket.core.inputs import check_positive, check_volume
 from pocket.core.materials import as_material
-from pocket.core.solver import MaterialLike, Numbers, Progress
+from pocket.core.solver import GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import InflatedState
 
 from . import brent
@@ -83,7 +89,10 @@ from .laws import as_law, law_of
 from .shots import Tolerance, profile_from_steps, shot_pole, tension_minima
 from .tensions import inside, tensions
 
-__all__ = ["inflate", "inflation_curve", "inflate_volume", "pressure_of_stretch"]
+__all__ = ["inflate", "inflation_curve", "inflate_volume", "pressure_of_stretch", "GEOMETRIES"]
+
+#: reference surface -> how this solver poses it (``pocket.core.geometries``)
+GEOMETRIES = {"pocket": "the membrane equations shot from the pole to the clamp at S = 1, r0 = S"}
 
 _GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
 _S_MAX = STRETCH_LIMIT - 1.0  # s at which the marches stop (``pocket.core.errors.STRETCH_LIMIT``)
@@ -309,11 +318,12 @@ def _minus_inf(value):
     return -math.inf if value is None else value
 
 
-def _state(l0, law, p, tol, what, echo):
+def _state(l0, law, p, tol, what, echo, geometry: Geometry):
     """The state at the root: scalars from the same shot as the root finder, the profile from a
-    finer-stepped shot of the same problem; ``echo`` the inputs as given (rubber, and pressure or volume)."""
+    finer-stepped shot of the same problem; ``echo`` the inputs as given (rubber, and pressure or volume);
+    ``geometry`` the reference surface, whose clamp the final shot must land on."""
     status, y, _ = shot_pole(l0, law, p, tol)
-    miss = y[0] - 1.0
+    miss = y[0] - clamp_of(geometry).radius
     # the miss against the material strain lambda_p lambda_0 - 1 (a taut sheet's is its prestretch's)
     if status != OK or abs(miss) > 1e-8 * (law.prestretch * l0 - 1.0) + 1e-13:
         raise ConvergenceError(f"inflation ({what}): the final shot from lambda_0 = {l0:.12g} "
@@ -326,26 +336,29 @@ def _state(l0, law, p, tol, what, echo):
     profile = profile_from_steps(steps, law, l0)
     low = tension_minima(profile, steps, law, p, tol)
     return InflatedState(**{**scalars, **echo}, profile=profile, solver="shooting", tension_1_min=low[0],
-                         tension_2_min=low[1])
+                         tension_2_min=low[1], geometry=geometry)
 
 
-def inflate(material: MaterialLike, pressure: float, *, rtol: float = 1e-10) -> InflatedState:
+def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None,
+            rtol: float = 1e-10) -> InflatedState:
     """Inflate at pressure Phat = P R / (E T) (pressure control, first branch).
 
     material: the rubber, a ``pocket.core.materials.Material`` (any stress unit; a number is taken as the
-    Mooney-Rivlin alpha = C2/C1, ``as_material``). pressure: Phat (> 0). rtol: ODE tolerance.
+    Mooney-Rivlin alpha = C2/C1, ``as_material``). pressure: Phat (> 0). geometry: the reference surface,
+    None (the flat clamped disc) or one of ``GEOMETRIES`` (an InputError for another). rtol: ODE tolerance.
     Raises OutOfRangeError if Phat exceeds the first-branch maximum of Phat(V).
     """
+    geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
     law = law_of(material)
     pressure = check_positive("pressure", pressure)
     s_est = _strain_of_pressure(law, pressure)
     tol = _tolerance(rtol, s_est)
-    return _inflated(material, law, pressure, rtol, tol, _Branch(law, tol), s_est)[0]
+    return _inflated(material, law, pressure, rtol, tol, _Branch(law, tol), s_est, geometry)[0]
 
 
-def inflation_curve(material: MaterialLike, pressures: Numbers, *, rtol: float = 1e-10,
-                    progress: Progress | None = None) -> list[InflatedState]:
+def inflation_curve(material: MaterialLike, pressures: Numbers, *, geometry: GeometryLike = None,
+                    rtol: float = 1e-10, progress: Progress | None = None) -> list[InflatedState]:
     """Inflated states at each Phat of ``pressures`` (any order; pressure control, first branch), from one
     march along the branch: the pressures are taken in increasing order, each march starting at the pole
     strain of the state before it, the branch's computed points p(s) shared (about half the shots of as many
@@ -353,7 +366,8 @@ def inflation_curve(material: MaterialLike, pressures: Numbers, *, rtol: float =
     are those of each pressure's own scale, the march's (which only guesses) those of the smallest.
     ``progress(done, total)``, if given, is called after each pressure. Returns the states in the order of
     ``pressures``; raises OutOfRangeError at the first pressure above the first branch's maximum (as
-    ``inflate``), InputError for invalid input."""
+    ``inflate``), InputError for invalid input. ``geometry`` as for ``inflate``."""
+    geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
     law = law_of(material)
     given = [check_positive("pressure", p) for p in pressures]
@@ -365,15 +379,16 @@ def inflation_curve(material: MaterialLike, pressures: Numbers, *, rtol: float =
     for done, pressure in enumerate(order, start=1):
         s_est = _strain_of_pressure(law, pressure)
         states[pressure], start = _inflated(material, law, pressure, rtol, _tolerance(rtol, s_est), branch,
-                                            s_est if start is None else start)
+                                            s_est if start is None else start, geometry)
         if progress is not None:
             progress(done, len(order))
     return [states[p] for p in given]
 
 
-def _inflated(material, law, pressure, rtol, tol, branch, start) -> tuple[InflatedState, float]:
+def _inflated(material, law, pressure, rtol, tol, branch, start, geometry) -> tuple[InflatedState, float]:
     """(the state at Phat = ``pressure``, its pole strain): the march along ``branch`` from pole strain
-    ``start``, then the root of the landing at that pressure (module docstring); ``tol`` the integration's."""
+    ``start``, then the root of the landing at that pressure (module docstring); ``tol`` the integration's,
+    ``geometry`` the reference surface."""
     p = law.pressure_factor * pressure
     what = f"Phat = {pressure!r}"
 
@@ -402,12 +417,14 @@ def _inflated(material, law, pressure, rtol, tol, branch, start) -> tuple[Inflat
     drift = 1e-7 if law.prestretch == 1.0 else 1e-7 + rtol / s
     if abs(branch.phat(s) / pressure - 1.0) > drift:  # a root of m on another branch: follow p(s) itself
         s = brent.root(lambda x: branch.phat(x, True) - pressure, lo, hi, rtol=_S_RTOL)
-    return _state(1.0 + s, law, p, tol, what, dict(material=material, pressure=pressure)), s
+    return _state(1.0 + s, law, p, tol, what, dict(material=material, pressure=pressure), geometry), s
 
 
-def inflate_volume(material: MaterialLike, volume: float, *, rtol: float = 1e-10) -> InflatedState:
+def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None,
+                   rtol: float = 1e-10) -> InflatedState:
     """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima).
-    ``material`` as for ``inflate``."""
+    ``material`` and ``geometry`` as for ``inflate``."""
+    geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
     law = law_of(material)
     volume = check_volume("volume", volume)
@@ -434,4 +451,5 @@ def inflate_volume(material: MaterialLike, volume: float, *, rtol: float = 1e-10
 
     lo, hi, _ = _first_branch(volume_of, volume, s_est, "volume", law.stretch_limit - 1.0)
     s = brent.root(lambda x: volume_of(x) - volume, lo, hi, rtol=_S_RTOL)
-    return _state(1.0 + s, law, branch.pressure(s, precise=True), tol, what, dict(material=material, volume=volume))
+    return _state(1.0 + s, law, branch.pressure(s, precise=True), tol, what, dict(material=material, volume=volume),
+                  geometry)

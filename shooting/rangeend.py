@@ -56,6 +56,7 @@ import numpy as np
 
 from pocket.core.errors import CLAMP_PLANE, ConvergenceError
 from pocket.core.fluids import as_fluid
+from pocket.core.geometries import posed
 from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_positive
 
@@ -89,12 +90,13 @@ class End:
 _ENDS: dict[tuple, End] = {}  # Problem.key (rubber, Phat_I, rtol, fluid, indenter) -> End
 
 
-def range_end(material, pressure_initial, *, fluid=None, indenter=None, rtol=1e-10) -> float:
+def range_end(material, pressure_initial, *, fluid=None, indenter=None, geometry=None, rtol=1e-10) -> float:
     """The largest force Fhat for which the pocket (its rubber ``material``, a ``Material`` or a Mooney-Rivlin
-    alpha; Phat_I; its ``fluid`` and the ``indenter``, as for ``compression_curve``) has a
+    alpha; Phat_I; its ``fluid``, the ``indenter`` and its ``geometry``, as for ``compression_curve``) has a
     compressed state (module docstring): forces up to and including it solve; above it, none do."""
-    from .inflation import inflate
+    from .inflation import GEOMETRIES, inflate
 
+    geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     law = law_of(material)
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
@@ -102,7 +104,7 @@ def range_end(material, pressure_initial, *, fluid=None, indenter=None, rtol=1e-
     contact = contact_of(indenter)
     key = (law.key, pressure_initial, rtol, fluid, indenter)
     if key not in _ENDS:
-        end_of(contact(inflate(material, pressure_initial, rtol=rtol), rtol, law, fluid, indenter))
+        end_of(contact(inflate(material, pressure_initial, geometry=geometry, rtol=rtol), rtol, law, fluid, indenter))
     return _ENDS[key].force
 
 

@@ -23,14 +23,15 @@ from __future__ import annotations
 import math
 
 from pocket.core.errors import OutOfRangeError, above_the_pocket
+from pocket.core.geometries import posed
 from pocket.core.indenters import Indenter
 from pocket.core.inputs import check_positive
-from pocket.core.solver import FluidLike, MaterialLike
+from pocket.core.solver import FluidLike, GeometryLike, MaterialLike
 from pocket.core.states import CompressedState
 
 from . import brent
 from .compression import compress
-from .inflation import inflate
+from .inflation import GEOMETRIES, inflate
 from .rangeend import range_end
 
 __all__ = ["compress_height"]
@@ -39,25 +40,28 @@ _FORCE_RTOL = 1e-14  # relative width of the force bracket at the root: far belo
 
 
 def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
-                    indenter: Indenter | None = None, rtol: float = 1e-10) -> CompressedState:
+                    indenter: Indenter | None = None, geometry: GeometryLike = None,
+                    rtol: float = 1e-10) -> CompressedState:
     """The compressed state with the indenter's lowest point at H/R = ``height`` above the clamp plane.
 
-    material, pressure_initial (Phat_I), fluid, indenter and rtol as ``compression_curve``. Returns a
+    material, pressure_initial (Phat_I), fluid, indenter, geometry and rtol as ``compression_curve``. Returns a
     ``CompressedState`` whose ``force`` is the Fhat found. Raises OutOfRangeError for a height above the
     inflated pocket or below the lowest the model reaches, InputError for invalid input,
     ConvergenceError if a solve fails.
     """
+    geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     height = check_positive("height", height)
-    top = inflate(material, pressure_initial, rtol=rtol).height
+    top = inflate(material, pressure_initial, geometry=geometry, rtol=rtol).height
 
     def solved(force):
-        return compress(material, pressure_initial, force, fluid=fluid, indenter=indenter, rtol=rtol)
+        return compress(material, pressure_initial, force, fluid=fluid, indenter=indenter, geometry=geometry,
+                        rtol=rtol)
 
     if height > top:
         raise above_the_pocket(height, top)
     if height == top:
         return solved(0.0)
-    end = range_end(material, pressure_initial, fluid=fluid, indenter=indenter, rtol=rtol)
+    end = range_end(material, pressure_initial, fluid=fluid, indenter=indenter, geometry=geometry, rtol=rtol)
     hi = end if math.isfinite(end) else 1.0
     low = solved(hi).height
     while not math.isfinite(end) and low > height:
