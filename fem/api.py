@@ -10,7 +10,9 @@ and converted once, by ``as_material``). The fluid of a compression is a keyword
 ``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
 units, Phat_atm = P_atm R / (E T) (``gas``); so is the indenter: None (the flat plate) or a
 ``pocket.core.indenters.Indenter`` whose kind ``CONTACTS`` maps to the contact methods that pose it
-(an InputError for another kind, or for a method that does not pose it). Every law's pressures are
+(an InputError for another kind, or for a method that does not pose it); and the reference surface,
+``geometry``: None (the flat clamped disc) or a ``pocket.core.geometries.Geometry`` of ``GEOMETRIES``
+(an InputError for another). Every law's pressures are
 Phat = P R / (E T) with E = 3 mu_0 its small-strain Young's modulus (for
 Mooney-Rivlin 6 (C1 + C2), as in the paper); forces are Fhat = F / (P_I pi R^2).
 
@@ -37,11 +39,13 @@ from typing import Any
 import numpy as np
 
 from pocket import meshes
+from pocket.core import geometries
 from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
+from pocket.core.geometries import Geometry
 from pocket.core.indenters import Indenter, posed
 from pocket.core.inputs import check_forces, check_positive, check_volume, quote
-from pocket.core.solver import FluidLike, MaterialLike, Numbers, Progress
+from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState
 
 from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results, wrapping
@@ -54,7 +58,7 @@ from .surfaces import SURFACES, surface
 Mesh = str | pathlib.PurePath | np.ndarray | None
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh",
-           "DEFAULT_PENALTY", "POLAR_POWER", "CONTACTS"]
+           "DEFAULT_PENALTY", "POLAR_POWER", "CONTACTS", "GEOMETRIES"]
 
 DEFAULT_PENALTY = 1e5
 #: grading exponent of the default mesh family towards the axis (``meshes.polar``)
@@ -67,6 +71,8 @@ MIN_LENGTH = 1e-10
 #: indenter kind -> the contact methods (the model's modes, ``model``) that pose it; a curved one
 #: (``surfaces.SURFACES``) is posed edge-fitted by ``obstacle``, by penalty with ``spherepenalty``
 CONTACTS = {"flat": (FITTED, PENALTY), "sphere": (FITTED, PENALTY), "profile": (FITTED, PENALTY)}
+#: reference surface -> how the model poses it (``pocket.core.geometries``, ``model``)
+GEOMETRIES = {"pocket": "the meridian meshed in r = S on [0, 1], clamped at its end"}
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
@@ -110,9 +116,9 @@ def _nodes(mesh, elements, order) -> np.ndarray:
     return _usable(nodes, "mesh" if not isinstance(mesh, (str, pathlib.PurePath)) else str(mesh))
 
 
-def _model(material, mesh, elements, order, penalty) -> Model:
+def _model(material, mesh, elements, order, penalty, geometry: Geometry = geometries.DISC) -> Model:
     order = SOLVER.check_option("order", order)
-    return discretize(material, _nodes(mesh, elements, order), order, penalty)
+    return discretize(material, _nodes(mesh, elements, order), order, penalty, geometry)
 
 
 def _tolerances(tol) -> Tolerances:
@@ -137,35 +143,39 @@ def _contact(indenter, methods, contact, penalty, augmented) -> tuple[str, float
     return contact, penalty, augmented
 
 
-def inflate(material: MaterialLike, pressure: float, *, mesh: Mesh = None, elements: int | None = None, order: int = 2,
-            tol: float = 1e-10) -> InflatedState:
+def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None, mesh: Mesh = None,
+            elements: int | None = None, order: int = 2, tol: float = 1e-10) -> InflatedState:
     """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
 
     material: the rubber (a Material, or a Mooney-Rivlin alpha: ``as_material``). mesh: nodes of [0, 1] (array, shape
     (n+1,)) or a mesh file; else the default mesh family of ``elements`` (default: DEFAULT_ELEMENTS with
-    P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or 2. tol: Newton tolerance.
+    P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or 2. tol: Newton tolerance. geometry: the reference surface
+    (``GEOMETRIES``; None: the flat clamped disc).
     """
-    model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
+    geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
+    model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
     pressure = check_positive("pressure", pressure)
     y, iterations = inflation.inflated_at(model, pressure, _tolerances(tol))
     return results.inflated(model, y, iterations, pressure=pressure)
 
 
-def inflate_volume(material: MaterialLike, volume: float, *, mesh: Mesh = None, elements: int | None = None,
-                   order: int = 2, tol: float = 1e-10) -> InflatedState:
-    """Inflated state of volume V/R^3 = ``volume``, by volume control (options as ``inflate``)."""
-    model = _model(material, mesh, elements, order, DEFAULT_PENALTY)
+def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None, mesh: Mesh = None,
+                   elements: int | None = None, order: int = 2, tol: float = 1e-10) -> InflatedState:
+    """Inflated state of volume V/R^3 = ``volume``, by volume control (geometry and options as ``inflate``)."""
+    geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
+    model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
     volume = check_volume("volume", volume)
     y, iterations = inflation.to_volume(model, volume, _tolerances(tol))
     return results.inflated(model, y, iterations, volume=volume)
 
 
-def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, contact, penalty, augmented, tol):
+def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented,
+           tol):
     """Checked inputs, the model, the inflated state to compress and the fluid sealed in it with the
     indenter (the volume row's ``Control``)."""
     indenter, methods = posed(CONTACTS, "fem", indenter)
     contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
-    model = _model(material, mesh, elements, order, penalty)
+    model = _model(material, mesh, elements, order, penalty, geometry)
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)
@@ -178,22 +188,24 @@ def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, c
 
 
 def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
-                      indenter: Indenter | None = None, progress: Progress | None = None, mesh: Mesh = None,
-                      elements: int | None = None, order: int = 2, contact: str = FITTED, penalty: float | None = None,
-                      augmented: bool | None = None, tol: float = 1e-10) -> list[CompressedState]:
+                      indenter: Indenter | None = None, geometry: GeometryLike = None,
+                      progress: Progress | None = None, mesh: Mesh = None, elements: int | None = None, order: int = 2,
+                      contact: str = FITTED, penalty: float | None = None, augmented: bool | None = None,
+                      tol: float = 1e-10) -> list[CompressedState]:
     """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the states before it.
 
     fluid: None (a liquid: fixed volume) or a Fluid (a gas sealed at Phat_I). indenter: None (the flat
-    plate) or an Indenter (``CONTACTS``). Options as ``inflate``,
+    plate) or an Indenter (``CONTACTS``). Geometry and options as ``inflate``,
     and ``contact``: "fitted" (default; the mesh follows the contact
     edge, contact exact) or "penalty" (fixed mesh, contact ``penalty`` in units E T / R^2,
     default 1e5, with ``augmented`` Lagrangian updates, default true). ``progress(done, total)``
     is called after each force.
     """
     forces = check_forces(forces)
+    geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
-                                                                        mesh, elements, order, contact, penalty,
-                                                                        augmented, tol)
+                                                                        geometry, mesh, elements, order, contact,
+                                                                        penalty, augmented, tol)
     if fill.indenter.kind in SURFACES and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
@@ -202,22 +214,25 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
 
 
 def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
-             indenter: Indenter | None = None, **options: Any) -> CompressedState:
-    """Compressed state at the force Fhat = F/(P_I pi R^2); fluid, indenter and options as ``compression_curve``."""
-    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, **options)[0]
+             indenter: Indenter | None = None, geometry: GeometryLike = None, **options: Any) -> CompressedState:
+    """Compressed state at the force Fhat = F/(P_I pi R^2); fluid, indenter, geometry and options as
+    ``compression_curve``."""
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
+                             **options)[0]
 
 
 def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
-                    indenter: Indenter | None = None, mesh: Mesh = None, elements: int | None = None, order: int = 2,
-                    contact: str = FITTED, penalty: float | None = None, augmented: bool | None = None,
-                    tol: float = 1e-10) -> CompressedState:
-    """Compressed state with the indenter's lowest point at height H/R = ``height`` (fluid, indenter and options
-    as ``compression_curve``); an OutOfRangeError above the inflated pocket, where the indenter would not
+                    indenter: Indenter | None = None, geometry: GeometryLike = None, mesh: Mesh = None,
+                    elements: int | None = None, order: int = 2, contact: str = FITTED, penalty: float | None = None,
+                    augmented: bool | None = None, tol: float = 1e-10) -> CompressedState:
+    """Compressed state with the indenter's lowest point at height H/R = ``height`` (fluid, indenter, geometry and
+    options as ``compression_curve``); an OutOfRangeError above the inflated pocket, where the indenter would not
     touch it (at its top: the uncompressed state, force 0)."""
     height = check_positive("height", height)
+    geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
-                                                                        mesh, elements, order, contact, penalty,
-                                                                        augmented, tol)
+                                                                        geometry, mesh, elements, order, contact,
+                                                                        penalty, augmented, tol)
     if height > inflated.height:
         raise above_the_pocket(height, inflated.height)
     if height == inflated.height:

@@ -33,7 +33,7 @@ solver's marches do: a pressure or volume reached only past it, or not by it, is
 ``OutOfRangeError`` both solvers give (``past_stretch_limit``), checked on the state the path
 lands on too. The path's range in log V (``LOG_V_RANGE``) is wide enough that it ends there first.
 
-Remembered: ``inflated_at`` solves a pressure target once per (law, mesh, Phat, tolerances)
+Remembered: ``inflated_at`` solves a pressure target once per (law, mesh, reference surface, Phat, tolerances)
 among the last ``REMEMBERED`` asked in the process. Every entry point starts from the
 inflated state, and the applications call them many times on one pocket (a design's or a
 sensor's inverse problem once per bracket step, a case file's checks and curve): the
@@ -206,13 +206,14 @@ def _least_slope(along, chain):
 
 
 def inflated_at(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray, int]:
-    """``to_pressure(model, target, tol)``, solved once per (law, mesh, target, tol) among the last
+    """``to_pressure(model, target, tol)``, solved once per (law, mesh, reference surface, target, tol) among the last
     ``REMEMBERED`` asked (module docstring); (y, Newton iterations of its solve), y a copy of its own.
 
     A target with no state is not remembered: its error is raised again by a fresh solve.
     """
     law = model.law
-    key = (law.code, law.params.tobytes(), law.jm, model.xi.tobytes(), model.order, float(target), tol)
+    key = (law.code, law.params.tobytes(), law.jm, model.xi.tobytes(), model.order, model.geometry, float(target),
+           tol)
     if key in _SOLVED:
         _SOLVED.move_to_end(key)
         y, iterations = _SOLVED[key]

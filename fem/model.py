@@ -2,8 +2,10 @@ r"""The discrete model: unknowns, equations and their bordered tangent, for the 
 
 Unknowns y = [U, s]: U all 2 (p n + 1) nodal values of x = (rho, eta) (node j
 holds U[2j] = rho, U[2j + 1] = eta), s the scalar unknowns. Prescribed dofs
-keep their values (rho(0) = 0, rho(1) = 1, eta(1) = 0); their rows are the
-identity in the tangent and zero in the residual.
+keep their values (rho(0) = 0, and rho(1), eta(1) those of the reference surface's clamp,
+``Model.clamp``: 1 and 0); their rows are the identity in the tangent and zero in the residual.
+The reference surface is the flat clamped disc (``pocket.core.geometries``, ``api.GEOMETRIES``), whose
+arc length is the reference radius: the mesh's coordinate r is both.
 
 ``FREE`` (no plate, inflation), s = [P]: the membrane rows R(U; P) = 0 and one
 control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
@@ -61,6 +63,7 @@ import dataclasses
 
 import numpy as np
 
+from pocket.core.geometries import DISC, Clamp, Geometry, clamp_of
 from pocket.core.indenters import FLAT, Indenter
 
 from . import banded, condensed, kernel, spherepenalty
@@ -103,7 +106,8 @@ class Control:
 @dataclasses.dataclass(frozen=True, eq=False)
 class Model:
     """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty;
-    ``obstacle``, the surface (``surfaces.Surface``) of a curved indenter posed by penalty (None: the plate).
+    ``obstacle``, the surface (``surfaces.Surface``) of a curved indenter posed by penalty (None: the plate);
+    ``geometry``, the reference surface (``pocket.core.geometries``; the flat clamped disc).
 
     ``workspace`` holds the large arrays of ``linearize`` from one call to the next (a system it
     returns is valid until the next call, which is how Newton uses it).
@@ -114,11 +118,17 @@ class Model:
     ref: Reference
     penalty: float
     obstacle: Surface | None = None
+    geometry: Geometry = DISC
     workspace: dict = dataclasses.field(default_factory=dict, repr=False)
 
     @property
     def order(self) -> int:
         return self.ref.order
+
+    @property
+    def clamp(self) -> Clamp:
+        """Where the reference surface's meridian ends, held fixed: the prescribed rho(1) and eta(1)."""
+        return clamp_of(self.geometry)
 
     @property
     def elements(self) -> int:
@@ -148,10 +158,11 @@ class Model:
         return 2 * np.arange(self.order + 1) + 1
 
 
-def discretize(material, nodes: np.ndarray, order: int, penalty: float) -> Model:
+def discretize(material, nodes: np.ndarray, order: int, penalty: float, geometry: Geometry = DISC) -> Model:
     """The model of the rubber ``material`` (a Material, or a Mooney-Rivlin alpha: ``material.law_of``) on
-    the reference vertices ``nodes`` (checked by the caller)."""
-    return Model(law_of(material), np.asarray(nodes, dtype=float), reference(order), penalty)
+    the reference vertices ``nodes`` (arc lengths from the pole, checked by the caller) of the reference
+    surface ``geometry`` (one ``api.GEOMETRIES`` poses)."""
+    return Model(law_of(material), np.asarray(nodes, dtype=float), reference(order), penalty, geometry=geometry)
 
 
 def edge(model: Model) -> int:
@@ -162,8 +173,8 @@ def edge(model: Model) -> int:
 def conform(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
     """A copy of y with the prescribed dofs at their values and (FITTED) the tied dofs at h."""
     out = np.array(y, dtype=float)
-    n = model.dofs
-    out[[0, n - 2, n - 1]] = 0.0, 1.0, 0.0
+    n, clamp = model.dofs, model.clamp
+    out[[0, n - 2, n - 1]] = 0.0, clamp.radius, clamp.height
     if mode == FITTED:
         out[model.tied()] = out[n + 1]
     return out

@@ -183,8 +183,8 @@ class Forms:
 def conform(model: Model, y: np.ndarray, surf: Surface) -> np.ndarray:
     """A copy of y with the prescribed dofs at their values and the zone's eta dofs on the surface."""
     out = np.array(y, dtype=float)
-    n, e = model.dofs, model.order * contact_elements(model.elements)
-    out[[0, n - 2, n - 1]] = 0.0, 1.0, 0.0
+    n, e, clamp = model.dofs, model.order * contact_elements(model.elements), model.clamp
+    out[[0, n - 2, n - 1]] = 0.0, clamp.radius, clamp.height
     out[1: 2 * e + 2: 2] = out[n + 1] + surf.height(out[0: 2 * e + 1: 2])
     return out
 

@@ -77,9 +77,12 @@ def _fail(where: str, what: str):
 
 
 def _echo(model: Model, fill: Control | None = None) -> dict:
-    """The inputs a state echoes as given: the material and (compressed) the fluid and the indenter."""
+    """The inputs a state echoes as given: the material, and the reference surface (inflated) or the fluid and
+    the indenter (compressed: its surface is its inflated state's)."""
     out: dict[str, object] = dict(material=model.law.material)
-    if fill is not None:
+    if fill is None:
+        out.update(geometry=model.geometry)
+    else:
         out.update(fluid=_fluid(fill), indenter=fill.indenter)
     return out
 
@@ -121,8 +124,8 @@ def _check_common(model: Model, y: np.ndarray, mode: str, state, where: str, vol
                    float(state.profile.stretch_2.min()))
     if smallest <= 0.0:
         _fail(where, f"a stretch {smallest:.3g} <= 0 (the meridian degenerate or through the axis)")
-    if abs(state.profile.rho[-1] - 1.0) > 1e-14:
-        _fail(where, f"rho(1) = {state.profile.rho[-1]!r}, not 1 (lambda_2(1) = 1)")
+    if abs(state.profile.rho[-1] - model.clamp.radius) > 1e-14:
+        _fail(where, f"rho(1) = {state.profile.rho[-1]!r}, not the clamp's {model.clamp.radius!r}")
     if abs(state.volume / volume_target - 1.0) > CONSISTENCY:
         _fail(where, f"volume {state.volume!r} against its target {volume_target!r}")
 
