@@ -38,6 +38,8 @@ from __future__ import annotations
 import numpy as np
 from skfem import MeshQuad
 
+from pocket.core.geometries import DISC, Geometry
+
 __all__ = ["section", "radial_nodes", "corner_nodes", "CLAMP_GRADING", "CORNER_SIZE"]
 
 #: grading exponent of the radial nodes towards the clamp
@@ -92,9 +94,12 @@ def corner_nodes(r: np.ndarray, smallest: float) -> np.ndarray:
     return np.concatenate([bulk, 1.0 - np.cumsum(steps)[::-1], [1.0]])
 
 
-def section(thickness: float, elements: int, layers: int, grading: float = CLAMP_GRADING) -> MeshQuad:
+def section(thickness: float, elements: int, layers: int, grading: float = CLAMP_GRADING,
+            geometry: Geometry = DISC) -> MeshQuad:
     """The quadrilateral mesh of [0, 1] x [-t/2, t/2], t = ``thickness`` (T/R), with the boundaries
-    ``left`` (the axis), ``right`` (the clamp), ``bottom`` (wetted by the fluid) and ``top``."""
+    ``left`` (the axis), ``right`` (the clamp), ``bottom`` (wetted by the fluid) and ``top``: the undeformed
+    sheet about the reference surface ``geometry`` (the flat clamped disc, whose radius r0(S) is its arc length
+    S; the only one ``api.GEOMETRIES`` poses), its radial nodes at r0 of the arc lengths graded as above."""
     z = heights(thickness, layers)
-    r = corner_nodes(radial_nodes(elements, grading), CORNER_SIZE * thickness)
+    r = geometry.radius(corner_nodes(radial_nodes(elements, grading), CORNER_SIZE * thickness))
     return MeshQuad.init_tensor(r, z).with_defaults()

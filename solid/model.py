@@ -17,6 +17,8 @@ import dataclasses
 import numpy as np
 from skfem import Basis, ElementQuad1, ElementQuad2, ElementVector, FacetBasis, MeshQuad
 
+from pocket.core.geometries import DISC, Geometry
+
 from . import assembly
 
 __all__ = ["Model", "discretize", "solid", "fluid", "split"]
@@ -28,7 +30,8 @@ class Model:
     mu_0). ``top_z`` and ``top_radial`` are the vertical and radial displacement dofs of the upper surface's
     nodes, ordered by their Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the
     same for the mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p]);
-    ``tables`` the bases at the quadrature points (``assembly``)."""
+    ``tables`` the bases at the quadrature points (``assembly``); ``geometry`` the reference surface
+    (``pocket.core.geometries``: the flat clamped disc)."""
 
     mesh: MeshQuad
     thickness: float
@@ -43,6 +46,7 @@ class Model:
     mid_r: np.ndarray
     mid_dofs: np.ndarray
     tables: assembly.Tables
+    geometry: Geometry = DISC
 
     @property
     def size(self) -> int:
@@ -59,8 +63,9 @@ def _line(basis: Basis, z: float) -> tuple[np.ndarray, np.ndarray]:
     return loc[0, on[1]], np.array(on)
 
 
-def discretize(thickness: float, mesh: MeshQuad, law) -> Model:
-    """The model of ``mesh`` (``mesh.section``) for the sheet of T/R = ``thickness`` and the rubber ``law``."""
+def discretize(thickness: float, mesh: MeshQuad, law, geometry: Geometry = DISC) -> Model:
+    """The model of ``mesh`` (``mesh.section`` of the reference surface ``geometry``) for the sheet of
+    T/R = ``thickness`` and the rubber ``law``."""
     basis_u = Basis(mesh, ElementVector(ElementQuad2()))
     basis_p = basis_u.with_element(ElementQuad1())
     bottom = FacetBasis(mesh, basis_u.elem, facets="bottom")
@@ -69,7 +74,7 @@ def discretize(thickness: float, mesh: MeshQuad, law) -> Model:
     top_r, top = _line(basis_u, 0.5 * thickness)
     mid_r, mid = _line(basis_u, 0.0)
     return Model(mesh, thickness, law, basis_u, basis_p, bottom, free, top_r, top[1], top[0], mid_r, mid,
-                 assembly.tables(basis_u, basis_p, bottom))
+                 assembly.tables(basis_u, basis_p, bottom), geometry)
 
 
 def split(model: Model, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

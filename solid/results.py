@@ -116,7 +116,7 @@ def inflated(model: Model, material: Material, y: np.ndarray, iterations: int, p
         stretch_pole=float(f.stretch_1[0]), height=float(f.top_eta[0]),
         volume=volume(model, y) if volume_given is None else volume_given,
         stretch_clamp=float(f.stretch_1[-1]), profile=_profile(f, np.zeros(f.r.size, bool)), solver="solid",
-        extra=_extra(model, f, iterations), membrane=False)
+        extra=_extra(model, f, iterations), membrane=False, geometry=model.geometry)
 
 
 def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarray, iterations: int,
