@@ -62,16 +62,17 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from pocket.core import smallstrain
+from pocket.core import geometries, smallstrain
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import LIQUID, as_fluid
 from pocket.core.indenters import Indenter, posed
 from pocket.core.inputs import check_forces, check_positive
 from pocket.core.materials import as_material
-from pocket.core.solver import FluidLike, MaterialLike, Numbers, Progress
+from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-__all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT", "CONTACTS"]
+__all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT", "CONTACTS",
+           "GEOMETRIES"]
 
 _N = 201  # profile points
 
@@ -119,11 +120,17 @@ def _profile(r, rho, eta, l1, l2, contact):
                    tension_1=t1, tension_2=t2, contact=contact)
 
 
-def inflate(material: MaterialLike, pressure: float) -> InflatedState:
+#: reference surface -> the model of it (``pocket.core.geometries``): the paper's is the flat clamped sheet's
+GEOMETRIES = {"pocket": "the small-strain dome over the flat sheet clamped at r = R, eqs (14)-(26)"}
+
+
+def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None) -> InflatedState:
     """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``.
 
     ``material``: the rubber, any ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha,
-    ``as_material``; only mu_0 enters, through Phat: module docstring); echoed by the state."""
+    ``as_material``; only mu_0 enters, through Phat: module docstring); echoed by the state. ``geometry``: the
+    reference surface, None (the flat clamped disc) or one of ``GEOMETRIES`` (an InputError for another)."""
+    geometry, _ = geometries.posed(GEOMETRIES, "analytical", geometry)
     material = as_material(material)
     if material.prestretch != 1.0:
         raise InputError(f"prestretch = {material.prestretch!r}, but the analytical model is that of a sheet "
@@ -136,7 +143,7 @@ def inflate(material: MaterialLike, pressure: float) -> InflatedState:
     profile = _profile(r, l2 * r, height * (1.0 - r * r), np.full_like(r, 1.0 + s), l2, np.zeros(r.size, bool))
     return InflatedState(material=material, pressure=pressure, stretch_pole=1.0 + s, height=height,
                          volume=smallstrain.volume_of_strain(s), stretch_clamp=1.0 + s,
-                         profile=profile, solver="analytical", warnings=_warnings(lambda_0=1.0 + s))
+                         profile=profile, solver="analytical", warnings=_warnings(lambda_0=1.0 + s), geometry=geometry)
 
 
 def _contact_strain(a, s0, pressure_initial=None, fluid=LIQUID):
@@ -212,26 +219,28 @@ def _contact_radius(force, s0, pressure_initial, a_max, fluid=LIQUID):
 
 
 def range_end(material: MaterialLike, pressure_initial: float, *, fluid: FluidLike = None,
-              indenter: Indenter | None = None) -> float:
+              indenter: Indenter | None = None, geometry: GeometryLike = None) -> float:
     """The force Fhat at which the model's contact reaches the clamp (A_c = pi R^2): its range
-    (``indenter`` as for ``compression_curve``)."""
+    (``indenter`` and ``geometry`` as for ``compression_curve``)."""
     posed(CONTACTS, "analytical", indenter)
-    inflated = inflate(material, pressure_initial)
+    inflated = inflate(material, pressure_initial, geometry=geometry)
     fluid = as_fluid(fluid)
     return float(_contact_limit(inflated.stretch_pole - 1.0, inflated.pressure, fluid)[1])
 
 
 def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
-                      indenter: Indenter | None = None, progress: Progress | None = None) -> list[CompressedState]:
+                      indenter: Indenter | None = None, geometry: GeometryLike = None,
+                      progress: Progress | None = None) -> list[CompressedState]:
     """Compressed states at each Fhat of ``forces``; OutOfRangeError past the model's maximum force.
 
     ``material`` as for ``inflate``; ``fluid``: None or "liquid", or a gas (``pocket.core.fluids.gas``,
     ambient pressure as Phat_atm), echoed by the states; ``indenter``: None (the flat plate) or an
-    ``Indenter`` this model poses (``CONTACTS``; an InputError for another). ``progress(done, total)``,
+    ``Indenter`` this model poses (``CONTACTS``; an InputError for another); ``geometry`` as for ``inflate``,
+    the inflated state's surface. ``progress(done, total)``,
     if given, is called after each force (``total`` = len(forces)).
     """
     indenter, compressed = posed(CONTACTS, "analytical", indenter)
-    inflated = inflate(material, pressure_initial)
+    inflated = inflate(material, pressure_initial, geometry=geometry)
     fluid = as_fluid(fluid)
     forces = check_forces(forces)
     s0 = inflated.stretch_pole - 1.0
@@ -249,6 +258,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
 
 
 def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
-             indenter: Indenter | None = None) -> CompressedState:
+             indenter: Indenter | None = None, geometry: GeometryLike = None) -> CompressedState:
     """Compression by eqs (19)-(26) (corrected) at Fhat = ``force`` (``compression_curve``)."""
-    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter)[0]
+    return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter,
+                             geometry=geometry)[0]
