@@ -6,6 +6,8 @@ in ``inflation``, ``compress`` and ``compression_curve`` in ``compression``, ``c
 one place to read what the solver offers. Those of ``compression`` and ``rangeend`` are declared here
 with the face ``pocket.core.solver`` gives every solver's (``Compress``, ``CompressionCurve``,
 ``RangeEnd``: the arguments before the keywords, and the result); the others carry their own types.
+Each takes the membrane's reference surface ``geometry`` (``pocket.core.solver.GeometryLike``; the surfaces
+this solver poses are ``inflation.GEOMETRIES``).
 """
 
 from pocket.core.solver import Compress, CompressionCurve, RangeEnd

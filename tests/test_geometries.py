@@ -134,7 +134,8 @@ def test_every_entry_point_refuses_a_geometry_its_solver_does_not_pose(no_work, 
     fn = SOLVERS[solver].entry(name, "a test")
     with pytest.raises(InputError) as caught:
         CALLS[name](fn, Hemisphere())
-    assert str(caught.value) == f"solver {solver} does not implement the toy-hemisphere geometry (its geometries: pocket)"
+    assert str(caught.value) == (f"solver {solver} does not implement the toy-hemisphere geometry "
+                                 "(its geometries: pocket)")
 
 
 #: solver -> (inflate, compress) with small meshes where a solver has one (the states' geometry is what is checked)
@@ -169,8 +170,8 @@ def test_a_compressed_state_reads_its_geometry_from_its_inflated_state():
     assert next(f for f in dataclasses.fields(InflatedState) if f.name == "geometry").default is DISC
 
 
-@pytest.mark.parametrize("argv", [["inflate", "--pressure", "0.1"], ["compress", "--pressure", "0.1", "--force", "0.5"]],
-                         ids=["inflate", "compress"])
+@pytest.mark.parametrize("argv", [["inflate", "--pressure", "0.1"],
+                                  ["compress", "--pressure", "0.1", "--force", "0.5"]], ids=["inflate", "compress"])
 def test_the_command_lines_json_is_the_states_on_the_disc(capsys, argv):
     """Exact answer: ``pocket inflate/compress --json`` (shooting) prints the scalars of the state the Python API
     solves with the disc given explicitly, every number equal to the last bit (float.hex), and no key
