@@ -30,8 +30,9 @@ reference radius: the hoop stretch lambda_2 = rho / r0 in the shooting equations
 and in the finite-element kernels; the shooting's closing condition (now rho(1) = 1 at the clamp) and
 the finite element's prescribed dofs (now rho and eta at S = 1) become the equator's; the volume and the
 end's stretch report that surface's; the shooting solver's remembered range ends, keyed on the pocket's
-problem, key on its inflated state's surface too. Its undeformed volume 4 pi / 3 is not zero, and its
-inflated state has a closed form (a sphere of uniform stretch).
+problem, key on its inflated state's surface too; the starting guesses (the small-strain dome of both
+solvers' marches) are the disc's. Its undeformed upper half encloses 2 pi / 3 with the equatorial plane (the
+whole capsule 4 pi / 3), and its inflated state has a closed form (a sphere of uniform stretch).
 """
 
 from __future__ import annotations
