@@ -9,8 +9,8 @@ stress unit (``material``; a number is taken as a Mooney-Rivlin alpha = C2/C1
 and converted once, by ``as_material``). The fluid of a compression is a keyword: None (a liquid) or a
 ``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
 units, Phat_atm = P_atm R / (E T) (``gas``); so is the indenter: None (the flat plate) or a
-``pocket.core.indenters.Indenter`` whose kind ``CONTACTS`` maps to the contact methods that pose it
-(an InputError for another kind, or for a method that does not pose it). Every law's pressures are
+``pocket.core.indenters.Indenter`` whose class ``CONTACTS`` maps to the contact methods that pose it
+(an InputError for another class, or for a method that does not pose it). Every law's pressures are
 Phat = P R / (E T) with E = 3 mu_0 its small-strain Young's modulus (for
 Mooney-Rivlin 6 (C1 + C2), as in the paper); forces are Fhat = F / (P_I pi R^2).
 
@@ -39,7 +39,7 @@ import numpy as np
 from pocket import meshes
 from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
-from pocket.core.indenters import Indenter, posed
+from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
 from pocket.core.inputs import check_forces, check_positive, check_volume, quote
 from pocket.core.solver import FluidLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState
@@ -48,7 +48,7 @@ from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, 
 from .gas import sealed
 from .model import FITTED, PENALTY, Control, Model, discretize
 from .newton import Tolerances
-from .surfaces import SURFACES, surface
+from .surfaces import surface
 
 #: a mesh argument: a mesh file's name, or the nodes of [0, 1] (shape (n+1,)); None for the default mesh
 Mesh = str | pathlib.PurePath | np.ndarray | None
@@ -64,9 +64,11 @@ MAX_RATIO = 1e3
 #: shortest usable element (units R): nodal values carry round-off of ~1e-16 R, so a shorter
 #: element's slope (the stretch) would carry a relative error above 1e-6
 MIN_LENGTH = 1e-10
-#: indenter kind -> the contact methods (the model's modes, ``model``) that pose it; a curved one
-#: (``surfaces.SURFACES``) is posed edge-fitted by ``obstacle``, by penalty with ``spherepenalty``
-CONTACTS = {"flat": (FITTED, PENALTY), "sphere": (FITTED, PENALTY), "profile": (FITTED, PENALTY)}
+#: indenter class -> the contact methods (the model's modes, ``model``) that pose it and whether it is curved: the
+#: plate is posed by ``curves``, a curved one by its surface (``surfaces.surface``), edge-fitted by ``obstacle``,
+#: by penalty with ``spherepenalty``
+CONTACTS: dict[type[Indenter], tuple[tuple[str, ...], bool]] = {
+    Plate: ((FITTED, PENALTY), False), Sphere: ((FITTED, PENALTY), True), Profile: ((FITTED, PENALTY), True)}
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
@@ -125,7 +127,7 @@ def _contact(indenter, methods, contact, penalty, augmented) -> tuple[str, float
     checked ``indenter`` and the ``methods`` that pose it."""
     contact = SOLVER.check_option("contact", contact)
     if contact not in methods:
-        raise InputError(f"contact = {contact!r} does not apply to the {indenter.kind} indenter (its methods: "
+        raise InputError(f"contact = {contact!r} does not apply to the {indenter.name} indenter (its methods: "
                          f"{', '.join(methods)})")
     if contact == FITTED:
         for name, value in (("penalty", penalty), ("augmented", augmented)):
@@ -161,9 +163,9 @@ def inflate_volume(material: MaterialLike, volume: float, *, mesh: Mesh = None, 
 
 
 def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, contact, penalty, augmented, tol):
-    """Checked inputs, the model, the inflated state to compress and the fluid sealed in it with the
-    indenter (the volume row's ``Control``)."""
-    indenter, methods = posed(CONTACTS, "fem", indenter)
+    """Checked inputs, the model, the inflated state to compress, the fluid sealed in it with the indenter (the
+    volume row's ``Control``) and whether the indenter is curved (``CONTACTS``)."""
+    indenter, (methods, curved) = posed(CONTACTS, "fem", indenter)
     contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
     model = _model(material, mesh, elements, order, penalty)
     p_i = check_positive("pressure_initial", pressure_initial)
@@ -172,9 +174,9 @@ def _setup(material, pressure_initial, fluid, indenter, mesh, elements, order, c
     y_i, iterations = inflation.inflated_at(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
     fill = Control(volume=state.volume, gas=sealed(fluid, p_i), indenter=indenter)
-    if contact == PENALTY and indenter.kind in SURFACES:
+    if contact == PENALTY and curved:
         model = replace(model, obstacle=surface(indenter))
-    return model, contact, augmented, tol, y_i, state, fill
+    return model, contact, augmented, tol, y_i, state, fill, curved
 
 
 def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
@@ -191,10 +193,9 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     is called after each force.
     """
     forces = check_forces(forces)
-    model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
-                                                                        mesh, elements, order, contact, penalty,
-                                                                        augmented, tol)
-    if fill.indenter.kind in SURFACES and contact == FITTED:
+    model, contact, augmented, tolerances, y_i, inflated, fill, curved = _setup(
+        material, pressure_initial, fluid, indenter, mesh, elements, order, contact, penalty, augmented, tol)
+    if curved and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
         return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress)
@@ -215,14 +216,13 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     as ``compression_curve``); an OutOfRangeError above the inflated pocket, where the indenter would not
     touch it (at its top: the uncompressed state, force 0)."""
     height = check_positive("height", height)
-    model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
-                                                                        mesh, elements, order, contact, penalty,
-                                                                        augmented, tol)
+    model, contact, augmented, tolerances, y_i, inflated, fill, curved = _setup(
+        material, pressure_initial, fluid, indenter, mesh, elements, order, contact, penalty, augmented, tol)
     if height > inflated.height:
         raise above_the_pocket(height, inflated.height)
     if height == inflated.height:
         return results.uncompressed(inflated, fill, contact)
-    if fill.indenter.kind in SURFACES and contact == FITTED:
+    if curved and contact == FITTED:
         return wrapping.at_height(model, y_i, inflated, fill, height, tolerances)
     if contact == FITTED:
         return curves.fitted_height(model, y_i, inflated, fill, height, tolerances)

@@ -130,7 +130,7 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     reaction = force_of(model, surface, y, active) / (np.pi * start.pressure * scale)
     r_c = contact_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
-    if surface.reach is not None and rho_c >= surface.reach:
+    if rho_c >= surface.reach:
         raise OutOfRangeError(f"the sheet would wrap past {surface.end} (its contact reaches rho = {rho_c:.6g} R, "
                               f"the indenter's surface ends at {surface.reach:.6g} R)")
     area = surface.area(rho_c)

@@ -31,7 +31,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from .fluids import LIQUID, Fluid
-from .indenters import FLAT, Indenter
+from .indenters import PLATE, Indenter
 from .materials import Material
 from .offset import check_thickness, volume_correction
 
@@ -220,7 +220,7 @@ class CompressedState(_Membrane):
     fluid: Fluid = LIQUID
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
-    indenter: Indenter = FLAT
+    indenter: Indenter = PLATE
     contact_radius_deformed: float = math.nan
     contact_pressure_pole: float = math.nan
     contact_pressure_edge: float = math.nan
