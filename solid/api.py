@@ -92,7 +92,8 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
     before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); indenter None
     (the flat plate) or an ``Indenter`` (``CONTACTS``: ``pocket.core.indenters.Sphere(K)``, say). Options as
-    ``inflate``; ``progress(done, total)`` after each force. A force past the end of the range is an OutOfRangeError naming the end (``rangeend``)."""
+    ``inflate``; ``progress(done, total)`` after each force. A force past the end of the range is an
+    OutOfRangeError naming the end (``rangeend``)."""
     forces = check_forces(forces)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter,
                                                         thickness_ratio, layers, elements, tol)
