@@ -71,7 +71,7 @@ def _sphere(indenter: Sphere) -> Surface:
 
     return Surface(height=lambda rho: k - root(rho), slope=lambda rho: rho / root(rho),
                    second=lambda rho: k * k / root(rho) ** 3, third=lambda rho: 3.0 * k * k * rho / root(rho) ** 5,
-                   area=lambda rho_c: 2.0 * np.pi * k * float(k - root(rho_c)), reach=k)
+                   area=lambda rho_c: 2.0 * np.pi * k * float(k - root(rho_c)), reach=indenter.reach)
 
 
 def _curved(indenter: Indenter) -> Surface:

@@ -170,7 +170,7 @@ def rows(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> Rows:
     n, m = model.basis_u.N, len(active)
     lam = y[model.size + 2:]
     rho, z = _nodes(model, surface, y, active)
-    if surface.reach is not None and np.any(rho >= surface.reach):
+    if not surface.flat and np.any(rho >= surface.reach):
         raise OutOfRangeError(f"the sheet would wrap past {surface.end} (a node in contact at rho = {rho.max():.6g} "
                               f"R, the indenter's surface ends at {surface.reach:.6g} R)")
     g, grad, hess = surface.local(rho, z, float(y[model.size + 1]))
