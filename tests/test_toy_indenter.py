@@ -132,7 +132,8 @@ def test_a_new_indenter_on_its_flank_carries_the_force_of_its_contact_pressure(r
     inner = profile.contact & (profile.r < state.contact_radius)
     rho, t1, t2 = profile.rho[inner], profile.tension_1[inner], profile.tension_2[inner]
     on_tip = rho <= cone.joint
-    expected = np.where(on_tip, state.pressure + (t1 + t2) / SMALL_TIP, state.pressure + t2 * math.sin(ANGLE) / np.maximum(rho, cone.joint))
+    flank = state.pressure + t2 * math.sin(ANGLE) / np.maximum(rho, cone.joint)
+    expected = np.where(on_tip, state.pressure + (t1 + t2) / SMALL_TIP, flank)
     assert np.any(on_tip) and not np.all(on_tip)
     assert pc[inner] == pytest.approx(expected, rel=1e-12)
     for key in ("force_cap", "force_reaction"):
