@@ -47,7 +47,7 @@ def test_a_sphere_as_a_table_reproduces_the_sphere_to_the_interpolation_error():
     errors = []
     for rows in (40, 79, 157):  # the spacing 0.9 R / (rows - 1) halves each time
         table = _sphere_table(rows)
-        shape = dict(table.params)["shape"]
+        shape = table.shape
         rho = np.linspace(0.0, max(s.contact_radius_deformed for s in exact), 2001)
         curvature = shape.second(rho) / (1.0 + shape.slope(rho) ** 2) ** 1.5
         interpolation = float(np.max(np.abs(curvature * RADIUS - 1.0)))
