@@ -59,6 +59,7 @@ class Plate(Indenter):
     pressure_area = True
 
     def height(self, rho) -> np.ndarray:
+        """0 at the radii ``rho`` (any shape): the plate, and so its slope, second derivative and curvature."""
         return np.zeros_like(np.asarray(rho, dtype=float))
 
     slope = second = curvature = height
