@@ -39,7 +39,7 @@ import scipy.sparse as sp
 from pocket.core.errors import OutOfRangeError
 from pocket.core.indenters import PLATE, Indenter, Plate, Sphere
 
-__all__ = ["Surface", "FLAT", "cap_area", "Rows", "rows", "gaps", "force"]
+__all__ = ["Surface", "PLATE_SURFACE", "cap_area", "Rows", "rows", "gaps", "force"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -112,7 +112,7 @@ class Surface:
 
 
 #: the flat plate
-FLAT = Surface()
+PLATE_SURFACE = Surface()
 
 
 def cap_area(radius: float, rho_c: float) -> float:
