@@ -58,6 +58,8 @@ the logarithm vanishes and u -> u_L: the liquid.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
@@ -65,7 +67,7 @@ from scipy.optimize import brentq
 from pocket.core import geometries, smallstrain
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import LIQUID, as_fluid
-from pocket.core.indenters import Indenter, posed
+from pocket.core.indenters import Indenter, Plate, posed
 from pocket.core.inputs import check_forces, check_positive
 from pocket.core.materials import as_material
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
@@ -195,8 +197,8 @@ def _compressed(inflated, force, a, fluid, indenter):
     )
 
 
-#: indenter kind -> the compressed state of its contact at a contact radius (the paper's model is the flat plate's)
-CONTACTS = {"flat": _compressed}
+#: indenter class -> the compressed state of its contact at a contact radius (the paper's model is the flat plate's)
+CONTACTS: dict[type[Indenter], Callable[..., CompressedState]] = {Plate: _compressed}
 
 
 def _contact_limit(s0, pressure_initial, fluid=LIQUID):

@@ -45,7 +45,7 @@ from timing import median_time
 
 from pocket import fem, shooting
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import check
 
 ALPHA, PHAT, FHAT = 47 / 160, 0.31, 0.19
@@ -227,7 +227,7 @@ def fingertip(points, repeat):
     print(f"\n{points}-point curve under a sphere against the plate's (default mesh, Fhat 0.02..0.8):")
     print(f"{'indenter':16s} | {'median s':>9s} ({'least':>6s}) | ratio to the plate | Newton its per state")
     plate = None
-    for label, indenter in (("plate", None), ("sphere R_s = 2R", sphere(2.0)), ("sphere R_s = R/2", sphere(0.5))):
+    for label, indenter in (("plate", None), ("sphere R_s = 2R", Sphere(2.0)), ("sphere R_s = R/2", Sphere(0.5))):
         fem.compression_curve(ALPHA, PHAT, forces[:2], indenter=indenter)
         states = fem.compression_curve(ALPHA, PHAT, forces, indenter=indenter)
         took = _times(lambda indenter=indenter: fem.compression_curve(ALPHA, PHAT, forces, indenter=indenter), repeat)

@@ -18,10 +18,10 @@ from timing import median_time
 
 from pocket import shooting
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 
 ALPHA, PHAT = 47 / 160, 0.31
-INDENTERS = {"plate": None, "sphere R_s/R = 0.8": sphere(0.8), "sphere R_s/R = 4": sphere(4.0)}
+INDENTERS = {"plate": None, "sphere R_s/R = 0.8": Sphere(0.8), "sphere R_s/R = 4": Sphere(4.0)}
 
 
 def main():

@@ -20,7 +20,7 @@ import numpy as np
 from pocket import shooting
 from pocket.apps.design import design
 from pocket.apps.vtk.files import write_series
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 
 RADIUS, HEIGHT, MODULUS, ALPHA = 0.020, 0.010, 1e6, 47 / 160  # m, m, Pa, C2/C1
 FORCE, HEIGHT_RATIO, FINGERTIP = 0.67, 0.8, 0.008  # N, H/H0 at that force, m
@@ -42,7 +42,7 @@ def main(out: pathlib.Path) -> None:
           f"K = R_s/R = {FINGERTIP / RADIUS:g}")
     forces = np.linspace(0.0, button.force, STEPS)
     states = shooting.compression_curve(button.material, button.pressure_initial, forces,
-                                        indenter=sphere(FINGERTIP / RADIUS))
+                                        indenter=Sphere(FINGERTIP / RADIUS))
     folder = write_series(out / "vtk", states, times=forces * button.pressure_initial_Pa * math.pi * RADIUS**2)
     print(f"  VTK series ({STEPS} steps, time = the force in N, lengths in units of R): "
           f"{folder / 'surface.pvd'}, {folder / 'indenter.pvd'}")

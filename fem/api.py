@@ -9,8 +9,8 @@ stress unit (``material``; a number is taken as a Mooney-Rivlin alpha = C2/C1
 and converted once, by ``as_material``). The fluid of a compression is a keyword: None (a liquid) or a
 ``pocket.core.fluids.Fluid``, a gas with its ambient pressure in the model's
 units, Phat_atm = P_atm R / (E T) (``gas``); so is the indenter: None (the flat plate) or a
-``pocket.core.indenters.Indenter`` whose kind ``CONTACTS`` maps to the contact methods that pose it
-(an InputError for another kind, or for a method that does not pose it); and the reference surface,
+``pocket.core.indenters.Indenter`` whose class ``CONTACTS`` maps to the contact methods that pose it
+(an InputError for another class, or for a method that does not pose it); and the reference surface,
 ``geometry``: None (the flat clamped disc) or a ``pocket.core.geometries.Geometry`` of ``GEOMETRIES``
 (an InputError for another). Every law's pressures are
 Phat = P R / (E T) with E = 3 mu_0 its small-strain Young's modulus (for
@@ -43,7 +43,7 @@ from pocket.core import geometries
 from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Geometry
-from pocket.core.indenters import Indenter, posed
+from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
 from pocket.core.inputs import check_forces, check_positive, check_volume, quote
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState
@@ -52,7 +52,7 @@ from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, 
 from .gas import sealed
 from .model import FITTED, PENALTY, Control, Model, discretize
 from .newton import Tolerances
-from .surfaces import SURFACES, surface
+from .surfaces import surface
 
 #: a mesh argument: a mesh file's name, or the nodes of [0, 1] (shape (n+1,)); None for the default mesh
 Mesh = str | pathlib.PurePath | np.ndarray | None
@@ -68,9 +68,11 @@ MAX_RATIO = 1e3
 #: shortest usable element (units R): nodal values carry round-off of ~1e-16 R, so a shorter
 #: element's slope (the stretch) would carry a relative error above 1e-6
 MIN_LENGTH = 1e-10
-#: indenter kind -> the contact methods (the model's modes, ``model``) that pose it; a curved one
-#: (``surfaces.SURFACES``) is posed edge-fitted by ``obstacle``, by penalty with ``spherepenalty``
-CONTACTS = {"flat": (FITTED, PENALTY), "sphere": (FITTED, PENALTY), "profile": (FITTED, PENALTY)}
+#: indenter class -> the contact methods (the model's modes, ``model``) that pose it and whether it is curved: the
+#: plate is posed by ``curves``, a curved one by its surface (``surfaces.surface``), edge-fitted by ``obstacle``,
+#: by penalty with ``spherepenalty``
+CONTACTS: dict[type[Indenter], tuple[tuple[str, ...], bool]] = {
+    Plate: ((FITTED, PENALTY), False), Sphere: ((FITTED, PENALTY), True), Profile: ((FITTED, PENALTY), True)}
 #: reference surface -> how the model poses it (``pocket.core.geometries``, ``model``)
 GEOMETRIES = {"pocket": "the meridian meshed in r = S on [0, 1], clamped at its end"}
 
@@ -131,7 +133,7 @@ def _contact(indenter, methods, contact, penalty, augmented) -> tuple[str, float
     checked ``indenter`` and the ``methods`` that pose it."""
     contact = SOLVER.check_option("contact", contact)
     if contact not in methods:
-        raise InputError(f"contact = {contact!r} does not apply to the {indenter.kind} indenter (its methods: "
+        raise InputError(f"contact = {contact!r} does not apply to the {indenter.name} indenter (its methods: "
                          f"{', '.join(methods)})")
     if contact == FITTED:
         for name, value in (("penalty", penalty), ("augmented", augmented)):
@@ -171,9 +173,9 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
 
 def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented,
            tol):
-    """Checked inputs, the model, the inflated state to compress and the fluid sealed in it with the
-    indenter (the volume row's ``Control``)."""
-    indenter, methods = posed(CONTACTS, "fem", indenter)
+    """Checked inputs, the model, the inflated state to compress, the fluid sealed in it with the indenter (the
+    volume row's ``Control``) and whether the indenter is curved (``CONTACTS``)."""
+    indenter, (methods, curved) = posed(CONTACTS, "fem", indenter)
     contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
     model = _model(material, mesh, elements, order, penalty, geometry)
     p_i = check_positive("pressure_initial", pressure_initial)
@@ -182,9 +184,9 @@ def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements
     y_i, iterations = inflation.inflated_at(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
     fill = Control(volume=state.volume, gas=sealed(fluid, p_i), indenter=indenter)
-    if contact == PENALTY and indenter.kind in SURFACES:
+    if contact == PENALTY and curved:
         model = replace(model, obstacle=surface(indenter))
-    return model, contact, augmented, tol, y_i, state, fill
+    return model, contact, augmented, tol, y_i, state, fill, curved
 
 
 def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
@@ -203,10 +205,9 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     """
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
-    model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
-                                                                        geometry, mesh, elements, order, contact,
-                                                                        penalty, augmented, tol)
-    if fill.indenter.kind in SURFACES and contact == FITTED:
+    model, contact, augmented, tolerances, y_i, inflated, fill, curved = _setup(
+        material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol)
+    if curved and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
         return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress)
@@ -230,14 +231,13 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     touch it (at its top: the uncompressed state, force 0)."""
     height = check_positive("height", height)
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
-    model, contact, augmented, tolerances, y_i, inflated, fill = _setup(material, pressure_initial, fluid, indenter,
-                                                                        geometry, mesh, elements, order, contact,
-                                                                        penalty, augmented, tol)
+    model, contact, augmented, tolerances, y_i, inflated, fill, curved = _setup(
+        material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol)
     if height > inflated.height:
         raise above_the_pocket(height, inflated.height)
     if height == inflated.height:
         return results.uncompressed(inflated, fill, contact)
-    if fill.indenter.kind in SURFACES and contact == FITTED:
+    if curved and contact == FITTED:
         return wrapping.at_height(model, y_i, inflated, fill, height, tolerances)
     if contact == FITTED:
         return curves.fitted_height(model, y_i, inflated, fill, height, tolerances)

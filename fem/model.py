@@ -11,7 +11,7 @@ arc length is the reference radius: the mesh's coordinate r is both.
 control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
 
 The modes with a plate, ``PENALTY`` and ``FITTED``, pose the flat plate
-(``pocket.core.indenters.FLAT``); ``api.CONTACTS`` maps each indenter kind to the
+(``pocket.core.indenters.PLATE``); ``api.CONTACTS`` maps each indenter class to the
 modes that pose it. With a plate the volume row is the fluid's: V / V_I - 1 for a liquid, and
 V / V_I - q(P) for a gas sealed at P_I (``gas``: the polytropic law solved for
 the volume; its tangent has the corner entry -q'(P) in the column of P).
@@ -64,7 +64,7 @@ import dataclasses
 import numpy as np
 
 from pocket.core.geometries import DISC, Clamp, Geometry, clamp_of
-from pocket.core.indenters import FLAT, Indenter
+from pocket.core.indenters import PLATE, Indenter
 
 from . import banded, condensed, kernel, spherepenalty
 from .gas import Gas
@@ -100,7 +100,7 @@ class Control:
     force: float | None = None
     scale: float = 1.0
     gas: Gas | None = None
-    indenter: Indenter = FLAT
+    indenter: Indenter = PLATE
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

@@ -62,7 +62,7 @@ def first_contact(model: Model, inflated: np.ndarray, fill: Control, a: float,
             total += getattr(err, "iterations", 0)
             last = err
             a *= 0.5
-    raise ConvergenceError(f"first contact with the {fill.indenter.kind}: Newton failed at every contact radius "
+    raise ConvergenceError(f"first contact with the {fill.indenter.name}: Newton failed at every contact radius "
                            f"from a/R = {first:.3g} down to {2 * a:.3g}: {last}", load=a, iterations=total,
                            residual=getattr(last, "residual", float("nan")))
 

@@ -144,7 +144,7 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
         contact_pressure_pole=pressure + 2.0 * float(surf.curvatures(np.array([0.0]))[0][0]) * t0,
         contact_pressure_edge=edge, contact_pressure=_nodal_pressure(profile, surf, pressure, edge),
     )
-    where = f"at Fhat = {force!r} under the {fill.indenter.kind}"
+    where = f"at Fhat = {force!r} under the {fill.indenter.name}"
     _check_common(model, y, WRAPPED, out, where, _volume_target(fill, pressure))
     _check_gas(fill, out, where)
     if abs(extra["force_reaction"] - force) > CONSISTENCY * force + FORCE_FLOOR * model.elements:

@@ -48,7 +48,7 @@ import math
 import numpy as np
 
 from pocket.core.fluids import LIQUID, Fluid
-from pocket.core.indenters import FLAT, Indenter, formulation
+from pocket.core.indenters import PLATE, Indenter, Plate, Profile, Sphere, formulation
 from pocket.core.states import InflatedState
 
 from .integrator import OK, STATUS
@@ -68,7 +68,7 @@ class Problem:
     rtol: float
     law: Law
     fluid: Fluid = LIQUID
-    indenter: Indenter = FLAT
+    indenter: Indenter = PLATE
     _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
     @property
@@ -194,7 +194,7 @@ from .profile import ProfileProblem  # noqa: E402 (it builds on Problem)
 from .sphere import SphereProblem  # noqa: E402 (it builds on Problem)
 
 #: indenter kind -> the problem that poses its contact
-CONTACTS: dict[str, type[Problem]] = {"flat": Problem, "sphere": SphereProblem, "profile": ProfileProblem}
+CONTACTS: dict[type[Indenter], type[Problem]] = {Plate: Problem, Sphere: SphereProblem, Profile: ProfileProblem}
 
 
 def contact_of(indenter: Indenter) -> type[Problem]:

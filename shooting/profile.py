@@ -86,7 +86,7 @@ class ProfileProblem(SphereProblem):
     @property
     def shape(self):
         """The profile, a ``pocket.core.profiles.Shape``."""
-        return dict(self.indenter.params)["shape"]
+        return self.indenter.shape
 
     @property
     def radius(self) -> float:

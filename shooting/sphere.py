@@ -112,7 +112,7 @@ class SphereProblem(Problem):
     @property
     def radius(self) -> float:
         """K = R_s / R."""
-        return self.indenter.number("radius")
+        return self.indenter.reach  # a sphere reaches to its equator, rho = K
 
     @property
     def reach(self) -> float:

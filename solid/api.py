@@ -15,7 +15,7 @@ import numpy as np
 from pocket.core import geometries
 from pocket.core.errors import above_the_pocket
 from pocket.core.fluids import Fluid, as_fluid
-from pocket.core.indenters import Indenter, posed
+from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
 from pocket.core.inputs import check_forces, check_positive, check_volume
 from pocket.core.materials import Material, as_material
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
@@ -37,8 +37,9 @@ from . import (
 
 __all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "CONTACTS", "GEOMETRIES"]
 
-#: indenter kind -> contact formulations (the flat plate, the sphere and a profile, ``contact``)
-CONTACTS = {"flat": ("active set",), "sphere": ("active set",), "profile": ("active set",)}
+#: indenter class -> contact formulations (the flat plate, the sphere and a profile, ``contact``)
+CONTACTS: dict[type[Indenter], tuple[str, ...]] = {Plate: ("active set",), Sphere: ("active set",),
+                                                   Profile: ("active set",)}
 #: reference surface -> how the solid poses it (``pocket.core.geometries``): the sheet's section about it
 GEOMETRIES = {"pocket": "the rectangle [0, 1] x [-t/2, t/2], clamped through its thickness at r = R"}
 
@@ -90,7 +91,7 @@ def _setup(material, pressure_initial, fluid, indenter, geometry, thickness_rati
     y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * p_i, tol)
     start = results.inflated(m, material, y, iterations, pressure=p_i)
     fill = compression.fluid_control(m, fluid, p_i, start.volume)
-    y, control = compression.first_contact(m, y, fill, contact.surface_of(indenter))
+    y, control = compression.first_contact(m, y, fill, contact.Surface(indenter))
     return material, m, tol, fluid, start, y, control
 
 
@@ -101,9 +102,9 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
                       tol: float = 1e-10) -> list[CompressedState]:
     """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
     before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); indenter None
-    (the flat plate) or ``pocket.core.indenters.sphere(K)``. Geometry and options as ``inflate``;
-    ``progress(done, total)`` after each force. A force past the end of the range is an OutOfRangeError naming
-    the end (``rangeend``)."""
+    (the flat plate) or an ``Indenter`` (``CONTACTS``: ``pocket.core.indenters.Sphere(K)``, say). Geometry and
+    options as ``inflate``; ``progress(done, total)`` after each force. A force past the end of the range is an
+    OutOfRangeError naming the end (``rangeend``)."""
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,

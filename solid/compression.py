@@ -19,7 +19,7 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.fluids import Fluid
 
-from .contact import FLAT, Surface
+from .contact import PLATE_SURFACE, Surface
 from .contact import force as force_of
 from .equations import Control
 from .model import Model
@@ -52,7 +52,7 @@ def fluid_control(model: Model, fluid: Fluid, pressure_initial: float, volume_in
 
 
 def first_contact(model: Model, y_inflated: np.ndarray, fill: Control,
-                  surface: Surface = FLAT) -> tuple[np.ndarray, Control]:
+                  surface: Surface = PLATE_SURFACE) -> tuple[np.ndarray, Control]:
     """The inflated state touched by the indenter ``surface`` (default the flat plate) at its pole, its lowest
     point there: its height and a zero force appended."""
     height = 0.5 * model.thickness + y_inflated[model.top_z[0]]

@@ -37,58 +37,56 @@ import numpy as np
 import scipy.sparse as sp
 
 from pocket.core.errors import OutOfRangeError
-from pocket.core.profiles import Shape
+from pocket.core.indenters import PLATE, Indenter, Plate, Sphere
 
-__all__ = ["Surface", "FLAT", "surface_of", "cap_area", "Rows", "rows", "gaps", "force"]
+__all__ = ["Surface", "PLATE_SURFACE", "cap_area", "Rows", "rows", "gaps", "force"]
 
 
 @dataclasses.dataclass(frozen=True)
 class Surface:
-    """The indenter's surface: the flat plate (``radius`` and ``shape`` None), a sphere of radius K = R_s / R
-    (``radius``) or a profile (``shape``: a ``pocket.core.profiles.Shape``, z(rho) with its slope and second
-    derivative, units R)."""
+    """The surface of ``indenter`` (``pocket.core.indenters``, units R) as the contact rows need it: the flat
+    plate, a sphere of radius K = R_s / R (its gap the distance to the sphere) or any other curved indenter (its
+    gap vertical, from its own z, z' and z'': a profile)."""
 
-    radius: float | None = None
-    shape: Shape | None = None
+    indenter: Indenter = PLATE
 
     @property
     def flat(self) -> bool:
-        return self.radius is None and self.shape is None
+        return isinstance(self.indenter, Plate)
 
     @property
-    def reach(self) -> float | None:
-        """The largest radius the surface has (a sphere's equator, a profile's last radius; None: the plate)."""
-        return self.radius if self.shape is None else float(self.shape.extent)
+    def word(self) -> str:
+        """What messages call the indenter: plate, sphere or indenter."""
+        return "plate" if self.flat else "sphere" if isinstance(self.indenter, Sphere) else "indenter"
+
+    @property
+    def reach(self) -> float:
+        """The largest radius the surface has (a sphere's equator, a profile's last radius; inf: the plate)."""
+        return self.indenter.reach
 
     @property
     def end(self) -> str:
         """Where the surface ends, in words (a sphere's equator, a profile's last radius; "" on the plate)."""
         if self.flat:
             return ""
-        return "the sphere's equator" if self.shape is None else "the end of the indenter's profile"
-
-    def _sphere(self) -> float:
-        assert self.radius is not None  # a surface that is neither flat nor a profile is a sphere
-        return self.radius
+        return "the sphere's equator" if isinstance(self.indenter, Sphere) else "the end of the indenter's profile"
 
     @property
     def rim(self) -> float:
         """The surface's height above its lowest point at its reach (a sphere's K; a profile's last height)."""
-        if self.shape is None:
-            return self._sphere()
-        return float(self.shape.height(np.array([float(self.shape.extent)]))[0])
+        return float(self.indenter.height(np.array([float(self.reach)]))[0])
 
     def area(self, rho_c: float) -> float:
         """The area in contact within the deformed radius rho_c, over pi R^2: rho_c^2 on the plate, the curved
-        area int_0^rho_c 2 rho (1 + z'^2)^(1/2) drho on a sphere (``cap_area``) or a profile."""
+        area int_0^rho_c 2 rho (1 + z'^2)^(1/2) drho on a sphere (``cap_area``) or another curved indenter."""
         if self.flat:
             return rho_c**2
-        if self.shape is None:
-            return cap_area(self._sphere(), rho_c)
+        if isinstance(self.indenter, Sphere):
+            return cap_area(self.indenter.radius, rho_c)
         from scipy.integrate import quad
 
         def band(rho):
-            return 2.0 * rho * np.sqrt(1.0 + float(self.shape.slope(np.asarray(rho))) ** 2)
+            return 2.0 * rho * np.sqrt(1.0 + float(self.indenter.slope(np.asarray(rho))) ** 2)
 
         return float(quad(band, 0.0, rho_c, epsabs=0.0, epsrel=1e-12, limit=200)[0])
 
@@ -100,12 +98,12 @@ class Surface:
             grad[:, 1] = -1.0
             return h - z, grad, None
         assert rho is not None  # a curved indenter's gap needs the radii (``_nodes``)
-        if self.shape is not None:
-            grad = np.stack([self.shape.slope(rho), -np.ones_like(z)], axis=1)
+        if not isinstance(self.indenter, Sphere):
+            grad = np.stack([self.indenter.slope(rho), -np.ones_like(z)], axis=1)
             hess = np.zeros((z.size, 2, 2))
-            hess[:, 0, 0] = self.shape.second(rho)
-            return h + self.shape.height(rho) - z, grad, hess
-        k = self._sphere()
+            hess[:, 0, 0] = self.indenter.second(rho)
+            return h + self.indenter.height(rho) - z, grad, hess
+        k = self.indenter.radius
         d_rho, d_z = rho, z - (h + k)
         d = np.hypot(d_rho, d_z)
         n = np.stack([d_rho / d, d_z / d], axis=1)
@@ -114,7 +112,7 @@ class Surface:
 
 
 #: the flat plate
-FLAT = Surface()
+PLATE_SURFACE = Surface()
 
 
 def cap_area(radius: float, rho_c: float) -> float:
@@ -122,15 +120,6 @@ def cap_area(radius: float, rho_c: float) -> float:
     2 K z(rho_c), z = K - sqrt(K^2 - rho_c^2) the cap's height (Archimedes), as the membrane solvers report
     it; written 2 K rho_c^2 / (K + sqrt(K^2 - rho_c^2)) to keep its digits when rho_c << K."""
     return 2.0 * radius * rho_c**2 / (radius + np.sqrt(radius**2 - rho_c**2))
-
-
-def surface_of(indenter) -> Surface:
-    """The ``Surface`` of a ``pocket.core.indenters.Indenter`` of kind flat, sphere or profile."""
-    if indenter.kind == "flat":
-        return FLAT
-    if indenter.kind == "sphere":
-        return Surface(indenter.number("radius"))
-    return Surface(shape=dict(indenter.params)["shape"])
 
 
 def _nodes(model, surface: Surface, y: np.ndarray, nodes):
@@ -148,7 +137,7 @@ def gaps(model, surface: Surface, y: np.ndarray, nodes=slice(None)) -> np.ndarra
     rho, z = _nodes(model, surface, y, nodes)
     h = float(y[model.size + 1])
     g = surface.local(rho, z, h)[0]
-    if surface.reach is not None:
+    if not surface.flat:
         past = rho >= surface.reach
         g[past] = h + surface.rim - z[past]
     return g
@@ -181,7 +170,7 @@ def rows(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> Rows:
     n, m = model.basis_u.N, len(active)
     lam = y[model.size + 2:]
     rho, z = _nodes(model, surface, y, active)
-    if surface.reach is not None and np.any(rho >= surface.reach):
+    if not surface.flat and np.any(rho >= surface.reach):
         raise OutOfRangeError(f"the sheet would wrap past {surface.end} (a node in contact at rho = {rho.max():.6g} "
                               f"R, the indenter's surface ends at {surface.reach:.6g} R)")
     g, grad, hess = surface.local(rho, z, float(y[model.size + 1]))

@@ -48,7 +48,7 @@ class Control:
     active: np.ndarray | None = None
     force: float | None = None
     height: float | None = None
-    surface: contact.Surface = contact.FLAT
+    surface: contact.Surface = contact.PLATE_SURFACE
 
     @property
     def contact(self) -> bool:

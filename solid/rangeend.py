@@ -60,7 +60,7 @@ MAX_TRIALS = 60
 
 def _under(surface: Surface) -> str:
     """The reason of the contact zone's margin, naming the indenter."""
-    what = "plate" if surface.flat else "sphere" if surface.shape is None else "indenter"
+    what = surface.word
     return (f"the sheet's mid-surface under the {what} reaches the clamp plane (the {what}'s lowest point half "
             "the sheet's thickness above it)")
 
@@ -75,7 +75,7 @@ def margins(model: Model, y: np.ndarray, control: Control) -> dict[str, float]:
     free = ~under & (model.mid_r < 1.0)
     out = {_under(surface): float(eta[under].min()),
            CLAMP_PLANE: float(eta[free].min()) if free.any() else np.inf}
-    if surface.reach is not None:
+    if not surface.flat:
         rho_c = float(np.interp(r_c, model.top_r, model.top_r + y[model.top_radial]))
         out[f"the sheet would wrap past {surface.end}"] = surface.reach - rho_c
     return out

@@ -57,7 +57,7 @@ from pocket.core.fluids import Fluid
 from pocket.core.materials import Material
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-from .contact import FLAT, Surface, gaps
+from .contact import PLATE_SURFACE, Surface, gaps
 from .contact import force as force_of
 from .model import Model, split
 from .post import fields
@@ -84,7 +84,7 @@ def _layers(model: Model) -> int:
 GAP_EXPONENT = 2.0
 
 
-def contact_radius(model: Model, y: np.ndarray, active: np.ndarray, surface: Surface = FLAT) -> float:
+def contact_radius(model: Model, y: np.ndarray, active: np.ndarray, surface: Surface = PLATE_SURFACE) -> float:
     """The Lagrangian contact radius r_c / R of the state y in contact on the upper-surface nodes ``active``
     with the indenter ``surface`` (default the flat plate), extrapolated from the gaps of the two nodes beyond
     them (module docstring)."""
@@ -121,7 +121,7 @@ def inflated(model: Model, material: Material, y: np.ndarray, iterations: int, p
 
 def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarray, iterations: int,
                start: InflatedState, fluid: Fluid, force: float | None = None,
-               surface: Surface = FLAT) -> CompressedState:
+               surface: Surface = PLATE_SURFACE) -> CompressedState:
     """The CompressedState of y in contact on the upper-surface nodes ``active`` with the indenter ``surface``
     (default the flat plate); ``force`` echoes the Fhat asked (None under height control: the reaction)."""
     f = fields(model, y)
@@ -130,7 +130,7 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     reaction = force_of(model, surface, y, active) / (np.pi * start.pressure * scale)
     r_c = contact_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
-    if surface.reach is not None and rho_c >= surface.reach:
+    if rho_c >= surface.reach:
         raise OutOfRangeError(f"the sheet would wrap past {surface.end} (its contact reaches rho = {rho_c:.6g} R, "
                               f"the indenter's surface ends at {surface.reach:.6g} R)")
     area = surface.area(rho_c)

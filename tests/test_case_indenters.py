@@ -15,7 +15,7 @@ from pocket import fem, shooting
 from pocket.apps import casefile
 from pocket.apps.cases import load
 from pocket.cli import main
-from pocket.core.indenters import FLAT, profile, sphere
+from pocket.core.indenters import PLATE, Profile, Sphere
 from pocket.core.profiles import read_csv
 
 CASE = """
@@ -46,13 +46,13 @@ def _case(tmp_path, table: str = "", name: str = "case.toml"):
 
 
 def test_no_table_and_a_plate_table_are_the_flat_plate(tmp_path):
-    assert load(_case(tmp_path)).indenter == FLAT
-    assert load(_case(tmp_path, '[indenter]\nshape = "plate"\n')).indenter == FLAT
+    assert load(_case(tmp_path)).indenter == PLATE
+    assert load(_case(tmp_path, '[indenter]\nshape = "plate"\n')).indenter == PLATE
 
 
 def test_a_sphere_radius_is_made_dimensionless_by_the_clamp_radius(tmp_path):
     case = load(_case(tmp_path, '[indenter]\nshape = "sphere"\nradius = "8 mm"\n'))
-    assert case.indenter == sphere(8.0 / 20.0)  # K = R_s / R
+    assert case.indenter == Sphere(8.0 / 20.0)  # K = R_s / R
     assert case.fields()["indenter"] == "sphere"
     assert case.fields()["indenter_radius_m"] == pytest.approx(0.008, rel=1e-15)
 
@@ -63,7 +63,7 @@ def test_a_profile_file_is_relative_to_the_case_file(tmp_path, monkeypatch):
     (folder / "tip.csv").write_text(TIP)  # z = rho^2 / 16 mm: a paraboloid of tip radius 8 mm
     monkeypatch.chdir(tmp_path)  # not the case file's folder
     case = load(_case(folder, '[indenter]\nshape = "profile"\nfile = "tip.csv"\n'))
-    assert case.indenter.kind == "profile"
+    assert isinstance(case.indenter, Profile) and case.indenter.shape.source == str(folder / "tip.csv")
     # z(5 mm) = 25/16 mm, in units of R = 20 mm; the spline in rho^2 is exact for a parabola
     assert case.indenter.height(5.0 / 20.0) == pytest.approx(25.0 / 16.0 / 20.0, rel=1e-12)
     assert case.indenter.curvature(0.0) == pytest.approx(20.0 / 8.0, rel=1e-12)  # 1/(8 mm) in units of 1/R
@@ -127,7 +127,7 @@ def test_a_sphere_runs_end_to_end_with_its_contact_pressure_and_curved_area(tmp_
     pressed = [row for row in rows if row["force"] > 0.0]
     assert pressed
     for row in pressed:
-        state = solve(row["alpha"], row["pressure_initial"], row["force"], indenter=sphere(radius / clamp))
+        state = solve(row["alpha"], row["pressure_initial"], row["force"], indenter=Sphere(radius / clamp))
         assert row["contact_pressure_pole_Pa"] == pytest.approx(state.contact_pressure_pole * scale, rel=1e-12)
         assert row["contact_pressure_edge_Pa"] == pytest.approx(state.contact_pressure_edge * scale, rel=1e-12)
         assert row["contact_pressure_pole_Pa"] > row["contact_pressure_edge_Pa"] > row["pressure_Pa"]
@@ -152,5 +152,5 @@ def test_the_readmes_profile_table_is_a_paraboloid_of_tip_radius_8_mm(tmp_path):
     readme = (pathlib.Path(__file__).parents[1] / "README.md").read_text()
     text = readme.split("```text\nradius [mm],height [mm]\n", 1)[1].split("```", 1)[0]
     (tmp_path / "tip.csv").write_text("radius [mm],height [mm]\n" + text)
-    tip = profile(read_csv(tmp_path / "tip.csv", clamp_radius=0.020))
+    tip = Profile(read_csv(tmp_path / "tip.csv", clamp_radius=0.020))
     assert tip.curvature(0.0) == pytest.approx(20.0 / 8.0, rel=1e-12)  # units 1/R, R = 20 mm

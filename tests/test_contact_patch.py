@@ -20,7 +20,7 @@ from pocket.apps.cases import sample
 from pocket.apps.sweep.grid import run_sweep
 from pocket.apps.vtk import files
 from pocket.cli import main
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import check
 
 CASE = """
@@ -98,7 +98,7 @@ def test_sphere_deformed_radius_not_lagrangian(tmp_path):
     assert len(pressed) == 2
     for a, b in pressed:
         assert b["contact_radius_deformed_m"] == pytest.approx(a["contact_radius_deformed_m"], rel=1e-8)
-        state = shooting.compress(a["alpha"], a["pressure_initial"], a["force"], indenter=sphere(0.008 / clamp))
+        state = shooting.compress(a["alpha"], a["pressure_initial"], a["force"], indenter=Sphere(0.008 / clamp))
         edge = _edge(state)
         assert a["contact_radius_deformed_m"] == pytest.approx(state.profile.rho[edge] * clamp, rel=1e-9)
         assert a["contact_radius_deformed_m"] / a["contact_radius_lagrangian_m"] == pytest.approx(
@@ -118,7 +118,7 @@ def test_sweep_carries_deformed_radius(tmp_path):
     forces = [0.2, 0.5, 50.0]  # 50: past the range under both
     with ThreadPoolExecutor(max_workers=1) as executor:
         run_sweep(path, [0.3], [0.3], forces, executor)
-        run_sweep(path, [0.3], [0.3], forces, executor, indenter=sphere(0.5))
+        run_sweep(path, [0.3], [0.3], forces, executor, indenter=Sphere(0.5))
     with path.open(newline="") as file:
         rows = list(csv.DictReader(file))
     assert sorted((r["indenter"], r["force"], r["status"]) for r in rows) == [
@@ -133,7 +133,7 @@ def test_sweep_carries_deformed_radius(tmp_path):
         if row["indenter"] == "plate":
             assert rho_c == math.sqrt(float(row["contact_area"])) and pole == edge == float(row["pressure"])
         else:
-            state = shooting.compress(0.3, 0.3, float(row["force"]), indenter=sphere(0.5))
+            state = shooting.compress(0.3, 0.3, float(row["force"]), indenter=Sphere(0.5))
             assert rho_c == pytest.approx(state.contact_radius_deformed, rel=1e-9)
             assert (pole, edge) == pytest.approx((state.contact_pressure_pole, state.contact_pressure_edge), rel=1e-9)
             assert pole > edge > float(row["pressure"])
@@ -146,7 +146,7 @@ def test_vtk_field_data_has_deformed_radius_and_contact_pressures(tmp_path):
     17 digits); the deformed radius is where the file's own meridian leaves the sphere, the largest x of its
     points in contact (every step has a point at its contact edge: to 1e-9, the interpolation's rounding)."""
     forces = [0.1, 0.3, 0.6]
-    states = fem.compression_curve(0.3, 0.3, forces, indenter=sphere(0.5))
+    states = fem.compression_curve(0.3, 0.3, forces, indenter=Sphere(0.5))
     out = files.write_series(tmp_path / "vtk", states, times=forces, segments=6)
     for k, state in enumerate(states):
         mesh = meshio.read(out / f"step_{k:04d}_profile.vtu")

@@ -8,7 +8,7 @@ import sys
 import pytest
 
 from pocket import shooting
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 
 pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
 
@@ -24,7 +24,7 @@ def test_fingertip_button_designs_for_the_sphere_and_writes_its_series(tmp_path)
     assert run.returncode == 0 and not run.stderr, run.stderr
     phat_i = float(re.search(r"Phat_I = (\S+),", run.stdout).group(1))
     fhat = float(re.search(r"Fhat = (\S+),", run.stdout).group(1))
-    state = shooting.compress(47 / 160, phat_i, fhat, indenter=sphere(0.4))
+    state = shooting.compress(47 / 160, phat_i, fhat, indenter=Sphere(0.4))
     assert state.height_ratio == pytest.approx(0.8, abs=1e-8)
     p_i = float(re.search(r"P_I = (\S+) kPa", run.stdout).group(1)) * 1e3
     assert p_i == pytest.approx(0.67 / (3.141592653589793 * 0.02**2 * fhat), rel=1e-3)  # printed to 4 digits

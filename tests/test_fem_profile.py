@@ -11,7 +11,7 @@ from pocket.fem import api
 
 from pocket import fem
 from pocket.core import profiles
-from pocket.core.indenters import profile, sphere
+from pocket.core.indenters import Profile, Sphere
 
 ALPHA, PRESSURE, RADIUS = 47 / 160, 0.31, 1.0
 FORCES = [0.05, 0.19, 1.0]
@@ -29,7 +29,7 @@ def _worst(states, reference, quantities=QUANTITIES):
 def _sphere_table(rows: int):
     """The sphere of radius RADIUS as a table of ``rows`` rows evenly spaced up to 0.9 RADIUS."""
     rho = np.linspace(0.0, 0.9 * RADIUS, rows)
-    return profile(profiles.table(rho, RADIUS - np.sqrt(RADIUS**2 - rho**2)))
+    return Profile(profiles.table(rho, RADIUS - np.sqrt(RADIUS**2 - rho**2)))
 
 
 def _curve(indenter, elements=ELEMENTS):
@@ -37,17 +37,17 @@ def _curve(indenter, elements=ELEMENTS):
 
 
 def test_the_profile_indenter_is_posed_by_both_contact_methods():
-    assert set(api.CONTACTS["profile"]) == set(api.CONTACTS["sphere"])
+    assert api.CONTACTS[Profile] == api.CONTACTS[Sphere]
 
 
 def test_a_sphere_as_a_table_reproduces_the_sphere_to_the_interpolation_error():
     """The difference stays below the table's curvature error over the contact zone (O(h^2) in the
     spacing h of the rows, measured here) and falls each time the spacing halves."""
-    exact = _curve(sphere(RADIUS))
+    exact = _curve(Sphere(RADIUS))
     errors = []
     for rows in (40, 79, 157):  # the spacing 0.9 R / (rows - 1) halves each time
         table = _sphere_table(rows)
-        shape = dict(table.params)["shape"]
+        shape = table.shape
         rho = np.linspace(0.0, max(s.contact_radius_deformed for s in exact), 2001)
         curvature = shape.second(rho) / (1.0 + shape.slope(rho) ** 2) ** 1.5
         interpolation = float(np.max(np.abs(curvature * RADIUS - 1.0)))
@@ -58,7 +58,7 @@ def test_a_sphere_as_a_table_reproduces_the_sphere_to_the_interpolation_error():
 
 
 def test_a_sphere_as_exact_functions_reproduces_the_sphere():
-    difference = _worst(_curve(_exact_sphere()), _curve(sphere(RADIUS)))
+    difference = _worst(_curve(_exact_sphere()), _curve(Sphere(RADIUS)))
     print(f"sphere as functions: within {difference:.3g}")
     assert difference < 1e-9
 
@@ -66,7 +66,7 @@ def test_a_sphere_as_exact_functions_reproduces_the_sphere():
 def test_a_flat_profile_reproduces_the_plate():
     """The plate's edge-fitted formulation and the wrapped one at zero curvature are two discretisations
     of one problem: their difference is discretisation error, falling at the elements' order (P2: h^4)."""
-    flat = profile(profiles.table(np.linspace(0.0, 1.0, 5), np.zeros(5)))
+    flat = Profile(profiles.table(np.linspace(0.0, 1.0, 5), np.zeros(5)))
     quantities = ("height", "pressure", "contact_area", "contact_radius")
     differences = [_worst(_curve(flat, n), _curve(None, n), quantities) for n in (32, 64)]
     print(f"flat profile against the plate on 32 and 64 elements: {differences}")
@@ -83,7 +83,7 @@ def test_the_force_on_a_paraboloid_is_the_integral_of_its_contact_pressure():
     shape = profiles.functions(lambda r: r * r / (2.0 * rc), lambda r: r / rc,
                                lambda r: (1.0 / rc) / (1.0 + (r / rc) ** 2) ** 1.5, 1.0)
     for force in (0.19, 1.0):
-        state = fem.compress(ALPHA, PRESSURE, force, indenter=profile(shape))
+        state = fem.compress(ALPHA, PRESSURE, force, indenter=Profile(shape))
         on = state.profile.contact
         rho, pc = state.profile.rho[on], state.contact_pressure[on]
         assert np.all(pc >= 0.0) and pc[0] > state.pressure  # both curvatures positive at the pole
@@ -95,14 +95,14 @@ def test_the_force_on_a_paraboloid_is_the_integral_of_its_contact_pressure():
 
 def _exact_sphere():
     k = RADIUS
-    return profile(profiles.functions(lambda r: k - np.sqrt(k * k - r * r), lambda r: r / np.sqrt(k * k - r * r),
+    return Profile(profiles.functions(lambda r: k - np.sqrt(k * k - r * r), lambda r: r / np.sqrt(k * k - r * r),
                                       lambda r: np.full_like(r, 1.0 / k), 0.9 * k))
 
 
 def test_the_penalty_method_poses_a_profile_as_it_poses_the_sphere():
     quantities = ("height", "pressure", "contact_area")
     states = [fem.compress(ALPHA, PRESSURE, 0.19, indenter=ind, contact="penalty")
-              for ind in (_exact_sphere(), sphere(RADIUS))]
+              for ind in (_exact_sphere(), Sphere(RADIUS))]
     assert _worst(states[:1], states[1:], quantities) < 1e-9
 
 
@@ -113,5 +113,5 @@ def test_a_sheet_wrapping_past_the_end_of_a_profile_is_out_of_range():
 
     rho = np.linspace(0.0, 0.3, 20)
     with pytest.raises(OutOfRangeError, match="wraps past the end of the indenter's profile") as err:
-        fem.compression_curve(ALPHA, PRESSURE, [0.19, 1.0], indenter=profile(profiles.table(rho, rho**2 / 2.0)))
+        fem.compression_curve(ALPHA, PRESSURE, [0.19, 1.0], indenter=Profile(profiles.table(rho, rho**2 / 2.0)))
     assert str(err.value).startswith("force = 1 is beyond the model's range, which ends near force = 0.")

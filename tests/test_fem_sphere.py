@@ -17,7 +17,7 @@ from pocket.fem.newton import Tolerances
 from pocket import fem
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import check
 
 ALPHA, PRESSURE = 47 / 160, 0.31
@@ -44,7 +44,7 @@ def test_edge_fitted_sphere_converges_at_full_order(order, meshes, reference, le
     forces = [0.05, 0.19, 1.0]
 
     def curve(**mesh):
-        return fem.compression_curve(rubber, PRESSURE, forces, fluid=fluid, indenter=sphere(1.0), order=order, **mesh)
+        return fem.compression_curve(rubber, PRESSURE, forces, fluid=fluid, indenter=Sphere(1.0), order=order, **mesh)
 
     ref = curve(elements=reference)
     errors = np.array([[[abs(getattr(s, q) / getattr(r, q) - 1) for q in QUANTITIES]
@@ -61,7 +61,7 @@ def test_a_large_sphere_is_the_flat_plate_at_first_order():
     """R_s -> infinity: every quantity tends to the plate's, the difference O(R/R_s) (fitted rate printed)."""
     plate = fem.compress(ALPHA, PRESSURE, 0.19)
     radii = np.array([8.0, 16.0, 32.0, 64.0])
-    diffs = np.array([[abs(getattr(fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(k)), q) / getattr(plate, q) - 1)
+    diffs = np.array([[abs(getattr(fem.compress(ALPHA, PRESSURE, 0.19, indenter=Sphere(k)), q) / getattr(plate, q) - 1)
                        for q in QUANTITIES] for k in radii])
     rates = [_order(1.0 / radii, diffs[:, j]) for j in range(len(QUANTITIES))]
     print("rates in R/R_s:", dict(zip(QUANTITIES, np.round(rates, 3), strict=True)))
@@ -72,7 +72,7 @@ def test_a_large_sphere_is_the_flat_plate_at_first_order():
 def test_the_force_is_the_cap_balance_and_the_contact_pressure_integral(rubber, fluid):
     """F = P pi rho_c^2 + 2 pi rho_c T_1 sin(theta_c) (the cap as a free body) = int p_c dA (normal
     equilibrium, p_c = P + (T_1 + T_2)/R_s) = the reaction = the force asked; p_c > P."""
-    for state in fem.compression_curve(rubber, PRESSURE, [0.05, 0.19, 1.0], fluid=fluid, indenter=sphere(0.8)):
+    for state in fem.compression_curve(rubber, PRESSURE, [0.05, 0.19, 1.0], fluid=fluid, indenter=Sphere(0.8)):
         x = state.extra
         # the integral is a quadrature of point tensions: its error O(h^4) ~ 1e-10 on the default mesh
         assert x["force_cap"] == pytest.approx(state.force, rel=1e-9)
@@ -87,10 +87,10 @@ def test_the_force_is_the_cap_balance_and_the_contact_pressure_integral(rubber, 
 def test_the_force_is_the_virtual_work_of_the_stored_energy(fluid):
     """F = (-dU + P dV)/dh along compress_height (U the stored elastic energy): central differences
     at h +- d, whose error O(d^2) falls 100-fold from d = 1e-3 to 1e-4 (measured 1.8e-5, 1.8e-7)."""
-    state = fem.compress(ALPHA, PRESSURE, 0.19, fluid=fluid, indenter=sphere(1.0))
+    state = fem.compress(ALPHA, PRESSURE, 0.19, fluid=fluid, indenter=Sphere(1.0))
     errors = []
     for d in (1e-3, 1e-4):
-        up, down = (fem.compress_height(ALPHA, PRESSURE, state.height + s, fluid=fluid, indenter=sphere(1.0))
+        up, down = (fem.compress_height(ALPHA, PRESSURE, state.height + s, fluid=fluid, indenter=Sphere(1.0))
                     for s in (d, -d))
         work = -(up.extra["energy"] - down.extra["energy"]) + 0.5 * (up.pressure + down.pressure) * (
             up.volume - down.volume)
@@ -115,7 +115,7 @@ def test_small_force_pressure_rise_is_reciprocal_for_sphere_and_plate(rubber, fl
     sphere as for the plate. The remainder falls about as Fhat^0.88 (measured with a liquid: 3.4e-4 and 4.5e-5
     of the limit at Fhat = 1e-4 and 1e-5 for the plate, 4.0e-4 and 5.2e-5 for a sphere of R_s = 0.8 R)."""
     limit = _reciprocal(rubber, fluid)
-    for indenter in (None, sphere(0.8)):
+    for indenter in (None, Sphere(0.8)):
         rise = np.array([(s.pressure_ratio - 1) / s.force for s in
                          fem.compression_curve(rubber, PRESSURE, [1e-5, 1e-4], fluid=fluid, indenter=indenter)])
         gaps = np.abs(rise / limit - 1)
@@ -126,7 +126,7 @@ def test_small_force_pressure_rise_is_reciprocal_for_sphere_and_plate(rubber, fl
 
 def test_every_returned_state_touches_without_penetration_and_pushes():
     """Along a curve to near the equator: no penetration (round-off), p_c >= 0, positive tensions."""
-    for state in fem.compression_curve(ALPHA, 1.5, np.linspace(0.02, 0.24, 6), indenter=sphere(0.1)):
+    for state in fem.compression_curve(ALPHA, 1.5, np.linspace(0.02, 0.24, 6), indenter=Sphere(0.1)):
         assert state.extra["penetration"] <= 1e-12
         assert state.extra["contact_pressure_min"] >= 0.0
         assert state.contact_radius_deformed < 0.1
@@ -139,7 +139,7 @@ def solved():
     model = api._model(ALPHA, None, 64, 2, api.DEFAULT_PENALTY)
     tol = Tolerances(1e-10, 1e-10)
     y_i, _ = inflation.inflated_at(model, PRESSURE, tol)
-    fill = Control(volume=results.inflated(model, y_i, 0, pressure=PRESSURE).volume, indenter=sphere(1.0))
+    fill = Control(volume=results.inflated(model, y_i, 0, pressure=PRESSURE).volume, indenter=Sphere(1.0))
     y, _ = wrapping.first_contact(model, y_i, fill, 0.05, tol)
     return model, y, obstacle.surface(fill.indenter), fill
 
@@ -181,14 +181,14 @@ def test_the_end_of_the_range_is_out_of_range(radius, force, words):
     plane under a wide sphere: each an OutOfRangeError naming it."""
     pressure = 1.5 if radius == 0.1 else PRESSURE
     with pytest.raises(OutOfRangeError, match=words):
-        fem.compress(ALPHA, pressure, force, indenter=sphere(radius))
+        fem.compress(ALPHA, pressure, force, indenter=Sphere(radius))
 
 
 def test_the_flat_plate_by_name_is_the_default_plate():
     """The plate through the indenter keyword is the default plate, bit for bit, by either method."""
-    from pocket.core.indenters import FLAT
+    from pocket.core.indenters import PLATE
     for contact in ("fitted", "penalty"):
-        assert fem.compress(ALPHA, PRESSURE, 0.19, indenter=FLAT, contact=contact).scalars() == \
+        assert fem.compress(ALPHA, PRESSURE, 0.19, indenter=PLATE, contact=contact).scalars() == \
             fem.compress(ALPHA, PRESSURE, 0.19, contact=contact).scalars()
 
 
@@ -200,7 +200,7 @@ def test_a_failed_solve_is_a_convergence_error_saying_where(monkeypatch):
 
     monkeypatch.setattr(wrapping, "solve", fails)
     with pytest.raises(ConvergenceError, match=r"^compression at Fhat = 0.19: first contact with the sphere: "):
-        fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0))
+        fem.compress(ALPHA, PRESSURE, 0.19, indenter=Sphere(1.0))
 
 
 @pytest.mark.slow
@@ -209,13 +209,13 @@ def test_the_penalty_sphere_tends_to_the_edge_fitted_one():
     within 1e-5 of the edge-fitted state in P and h (measured 3e-6 at most: the edge inside an element), the
     penetration below 1e-6, the force the reaction; the pure penalty's penetration falls as 1/kappa."""
     forces = [0.05, 0.19, 1.0]
-    fitted = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=sphere(1.0))
-    pen = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=sphere(1.0), contact="penalty")
+    fitted = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=Sphere(1.0))
+    pen = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=Sphere(1.0), contact="penalty")
     for f, p in zip(fitted, pen, strict=True):
         assert p.pressure == pytest.approx(f.pressure, rel=1e-5) and p.height == pytest.approx(f.height, rel=1e-5)
         assert p.extra["penetration"] < 1e-6
         assert p.extra["force_reaction"] == pytest.approx(p.force, rel=1e-9)
-    depth = [fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(1.0), contact="penalty", penalty=k,
+    depth = [fem.compress(ALPHA, PRESSURE, 0.19, indenter=Sphere(1.0), contact="penalty", penalty=k,
                           augmented=False).extra["penetration"] for k in (1e4, 1e5)]
     print("pure-penalty penetration at kappa = 1e4, 1e5:", depth)
     assert 8.0 < depth[0] / depth[1] < 12.0
@@ -230,7 +230,7 @@ def test_the_contact_pressure_is_reported_as_the_shooting_solver_reports_it():
     from pocket.apps.contactpatch import contact_pressures
 
     radius = 0.8
-    state = fem.compress(ALPHA, PRESSURE, 0.19, indenter=sphere(radius))
+    state = fem.compress(ALPHA, PRESSURE, 0.19, indenter=Sphere(radius))
     profile, pc = state.profile, state.contact_pressure
     on = profile.contact
     assert pc.shape == profile.r.shape and np.all(np.isnan(pc[~on])) and np.all(np.isfinite(pc[on]))

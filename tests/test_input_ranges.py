@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from pocket.apps.cases import parse
 from pocket.cli import main, solve
 from pocket.core.errors import STRETCH_LIMIT, InputError
-from pocket.core.indenters import SPHERE_RADII, sphere
+from pocket.core.indenters import SPHERE_RADII, Sphere
 from pocket.core.inputs import VOLUME_LIMIT, check_volume
 from pocket.core.materials import EXPONENT_RANGE, JM_RANGE, PRESTRETCH_LIMIT, Material
 
@@ -186,7 +186,7 @@ def test_a_value_outside_a_documented_range_is_refused_before_solving(capsys, mo
         lambda x: lambda: Material("neo-hookean", {"mu": 1.0}, prestretch=x)),
     _outside(*JM_RANGE).map(lambda x: lambda: Material("gent", {"mu": 1.0, "jm": x})),
     _outside(*EXPONENT_RANGE).map(lambda x: lambda: Material("ogden", {"mu": [1.0], "exponents": [x]})),
-    _outside(*SPHERE_RADII).map(lambda x: lambda: sphere(x)),
+    _outside(*SPHERE_RADII).map(lambda x: lambda: Sphere(x)),
     st.floats(VOLUME_LIMIT, _BIG, exclude_min=True).map(lambda x: lambda: check_volume("volume", x)),
 ))
 def test_the_python_api_refuses_the_same_values(build):

@@ -29,7 +29,7 @@ from test_sphere_agree import FLOOR, FLOOR_MINIMA, _worst
 from pocket import analytical, fem, shooting
 from pocket.core.errors import InputError
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import Material, check, energy
 from pocket.core.states import CHECKS
 
@@ -115,7 +115,7 @@ def test_solvers_agree_under_the_plate(name, fluid):
 @pytest.mark.parametrize("fluid", [None, gas(5.0, 1.4)], ids=["liquid", "gas"])
 def test_solvers_agree_under_a_sphere(fluid):
     material = _stretched("yeoh", 1.1)
-    kwargs = dict(fluid=fluid, indenter=sphere(0.5))
+    kwargs = dict(fluid=fluid, indenter=Sphere(0.5))
     worst = _worst(shooting.compression_curve(material, 0.3, [0.05, 0.3, 0.8], **kwargs),
                    fem.compression_curve(material, 0.3, [0.05, 0.3, 0.8], **kwargs))
     minima = {key: worst.pop(key) for key in CHECKS[:2]}
@@ -126,7 +126,7 @@ def test_solvers_agree_under_a_sphere(fluid):
 
 def test_both_solvers_end_the_sphere_range_where_the_pole_reaches_the_clamp_plane():
     """A taut sheet under a small sphere: its pole reaches the clamp plane first, in both solvers."""
-    material, kwargs = _stretched("yeoh", 1.1), dict(fluid=gas(5.0, 1.4), indenter=sphere(0.5))
+    material, kwargs = _stretched("yeoh", 1.1), dict(fluid=gas(5.0, 1.4), indenter=Sphere(0.5))
     end = shooting.range_end(material, 0.3, **kwargs)
     for solver in (shooting, fem):
         with pytest.raises(Exception, match="beyond the model's range") as err:

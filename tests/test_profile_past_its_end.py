@@ -22,11 +22,11 @@ from pocket import fem, shooting
 from pocket.cli import main
 from pocket.core import profiles
 from pocket.core.errors import OutOfRangeError
-from pocket.core.indenters import profile
+from pocket.core.indenters import Profile
 
 ALPHA, PRESSURE = 47 / 160, 0.31
 PAST = (1.007, 2.0)  # just past the end (beyond any solver's error on it) and well past
-PROFILE_END = CONTACTS["profile"].END  # what the shooting solver calls the end at the table's edge
+PROFILE_END = CONTACTS[Profile].END  # what the shooting solver calls the end at the table's edge
 FE_END = "the sheet wraps past the end of the indenter's profile"
 
 
@@ -60,7 +60,7 @@ def test_a_force_past_a_short_profiles_end_is_one_line_exit_2(tmp_path, capsys, 
     edge quoted too) and whose force is below the end (to 1e-6: the FE's states at its default mesh are within
     1e-8 of shooting's here, and the force rises with the contact edge)."""
     table = _paraboloid_rows()
-    indenter = profile(profiles.table(*table.T))
+    indenter = Profile(profiles.table(*table.T))
     end = shooting.range_end(ALPHA, PRESSURE, indenter=indenter)
     at_end = shooting.compress(ALPHA, PRESSURE, end, indenter=indenter)
     assert at_end.contact_radius_deformed == pytest.approx(table[-1, 0], rel=1e-6)
@@ -84,7 +84,7 @@ def test_height_below_a_short_profiles_end_is_refused_naming_the_end():
     """Travel control under the same table: a height 1e-3 below the height at the end (the state at ``range_end``)
     is out of range, the message quoting that end force; a height just above it solves, its force below the end
     (the height falls strictly with the force along the branch)."""
-    indenter = profile(profiles.table(*_paraboloid_rows().T))
+    indenter = Profile(profiles.table(*_paraboloid_rows().T))
     end = shooting.range_end(ALPHA, PRESSURE, indenter=indenter)
     lowest = shooting.compress(ALPHA, PRESSURE, end, indenter=indenter).height
     with pytest.raises(OutOfRangeError, match=re.escape(f"force = {end:.10g}")):
@@ -96,7 +96,7 @@ def test_a_curve_crossing_a_short_profiles_end_is_refused_whole():
     """``compression_curve`` with one force below the end and one past it: an OutOfRangeError naming the end (no
     list with a state past it), while the force below alone solves with its contact edge inside the table."""
     table = _paraboloid_rows()
-    indenter = profile(profiles.table(*table.T))
+    indenter = Profile(profiles.table(*table.T))
     end = shooting.range_end(ALPHA, PRESSURE, indenter=indenter)
     with pytest.raises(OutOfRangeError, match=re.escape(PROFILE_END)):
         shooting.compression_curve(ALPHA, PRESSURE, [0.5 * end, 1.5 * end], indenter=indenter)
@@ -115,7 +115,7 @@ def test_the_contact_area_on_a_table_of_many_rows_warns_nothing(solver):
     b, s, extent = 0.04, 0.8, 0.3
     rho = np.linspace(0.0, extent, 37)
     shape = profiles.table(rho, np.sqrt(b * b + (s * rho) ** 2) - b)
-    indenter = profile(shape)
+    indenter = Profile(shape)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         state = solver.compress(ALPHA, PRESSURE, 0.99 * shooting.range_end(ALPHA, PRESSURE, indenter=indenter),
@@ -170,7 +170,7 @@ def test_both_solvers_solve_below_a_short_profiles_end_and_refuse_past_it(table,
     at order p >= 1, error(N) = change / (2^p - 1) <= change; P2 elements on a smooth surface converge at order 4,
     the change falling 16-fold per doubling) plus the shots' error SHOTS. Both read the same spline of the table,
     so nothing else separates them. At 1.007 and 2 times the end both raise OutOfRangeError; no warning at all."""
-    indenter = profile(profiles.table(*table.T))
+    indenter = Profile(profiles.table(*table.T))
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         end = shooting.range_end(ALPHA, PRESSURE, indenter=indenter)

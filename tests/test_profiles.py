@@ -8,7 +8,7 @@ import pytest
 
 from pocket.core import profiles
 from pocket.core.errors import InputError
-from pocket.core.indenters import FLAT, Indenter, profile, sphere
+from pocket.core.indenters import PLATE, Profile, Sphere
 
 RADIUS = 0.4  # a fingertip of 8 mm on a 20 mm clamp, units R
 TOP = 0.3  # the table's last radius: 3/4 of the way to the equator, where g'''' is large but bounded
@@ -16,12 +16,12 @@ TOP = 0.3  # the table's last radius: 3/4 of the way to the equator, where g''''
 
 def _sphere_table(rows: int):
     rho = np.linspace(0.0, TOP, rows)
-    return rho, sphere(RADIUS).height(rho)
+    return rho, Sphere(RADIUS).height(rho)
 
 
 def _errors(rows: int) -> np.ndarray:
     """Largest |profile - sphere| of height, slope and curvature on a fine grid, for ``rows`` rows."""
-    tip, ball = profile(profiles.table(*_sphere_table(rows))), sphere(RADIUS)
+    tip, ball = Profile(profiles.table(*_sphere_table(rows))), Sphere(RADIUS)
     x = np.linspace(0.0, TOP, 4001)
     return np.array([np.max(np.abs(getattr(tip, f)(x) - getattr(ball, f)(x))) for f in ("height", "slope",
                                                                                         "curvature")])
@@ -55,26 +55,26 @@ def test_a_sphere_read_from_a_csv_file_in_millimetres_is_the_sphere(tmp_path):
     path = tmp_path / "tip.csv"
     rows = "".join(f"{r * 20:.17g},{h * 20:.17g}\n" for r, h in zip(rho, z, strict=True))
     path.write_text("radius [mm],height [mm]\n" + rows)
-    tip, x = profile(profiles.read_csv(path, clamp_radius=0.020)), np.linspace(0.0, TOP, 101)
-    direct = profile(profiles.table(rho, z))
+    tip, x = Profile(profiles.read_csv(path, clamp_radius=0.020)), np.linspace(0.0, TOP, 101)
+    direct = Profile(profiles.table(rho, z))
     for f in ("height", "slope", "curvature"):
         np.testing.assert_allclose(getattr(tip, f)(x), getattr(direct, f)(x), rtol=1e-12, atol=1e-14)
 
 
 def test_a_flat_profile_is_the_plate():
-    tip, x = profile(profiles.table([0.0, 0.5, 1.0, 1.5], [0.0] * 4)), np.linspace(0.0, 1.5, 31)
+    tip, x = Profile(profiles.table([0.0, 0.5, 1.0, 1.5], [0.0] * 4)), np.linspace(0.0, 1.5, 31)
     for f in ("height", "slope", "curvature"):
-        np.testing.assert_array_equal(getattr(tip, f)(x), getattr(FLAT, f)(x))
+        np.testing.assert_array_equal(getattr(tip, f)(x), getattr(PLATE, f)(x))
 
 
 def test_a_profile_is_not_defined_past_its_last_row():
-    tip = profile(profiles.table(*_sphere_table(10)))
+    tip = Profile(profiles.table(*_sphere_table(10)))
     assert np.all(np.isnan([tip.height(TOP * 1.01), tip.slope(TOP * 1.01), tip.curvature(TOP * 1.01)]))
 
 
 def test_a_sphere_given_as_functions_is_the_sphere():
-    ball = sphere(RADIUS)
-    tip = profile(profiles.functions(ball.height, ball.slope, ball.curvature, extent=TOP))
+    ball = Sphere(RADIUS)
+    tip = Profile(profiles.functions(ball.height, ball.slope, ball.curvature, extent=TOP))
     x = np.linspace(0.0, TOP, 51)
     for f in ("height", "slope", "curvature"):
         np.testing.assert_allclose(getattr(tip, f)(x), getattr(ball, f)(x), rtol=1e-14)
@@ -112,7 +112,7 @@ def test_a_profile_in_physical_units_needs_the_clamp_radius(tmp_path):
                                          r"clamp radius: write the header like 'radius \[R\],height \[R\]'"):
         profiles.read_csv(path)
     path.write_text("radius [R],height [R]\n0,0\n0.1,0.01\n0.2,0.04\n0.3,0.09\n")
-    np.testing.assert_allclose(profile(profiles.read_csv(path)).height(0.25), 0.0625, rtol=1e-12)  # z = rho^2
+    np.testing.assert_allclose(Profile(profiles.read_csv(path)).height(0.25), 0.0625, rtol=1e-12)  # z = rho^2
 
 
 def test_functions_that_are_no_profile_are_refused():
@@ -121,7 +121,7 @@ def test_functions_that_are_no_profile_are_refused():
     with pytest.raises(InputError, match=r"not convex near radius"):
         profiles.functions(lambda r: r**2 - r**4, lambda r: 2 * r - 4 * r**3, lambda r: 2 - 12 * r**2, extent=0.6)
     with pytest.raises(InputError, match=r"^indenter.shape = 1.0, but it must be a profile"):
-        Indenter("profile", {"shape": 1.0})
+        Profile(1.0)
 
 
 def test_a_profile_table_survives_pickling():
@@ -129,7 +129,7 @@ def test_a_profile_table_survives_pickling():
     same profile."""
     import pickle
 
-    tip = profile(profiles.table(*_sphere_table(12)))
+    tip = Profile(profiles.table(*_sphere_table(12)))
     copy, x = pickle.loads(pickle.dumps(tip)), np.linspace(0.0, TOP, 17)
     for f in ("height", "slope", "curvature"):
         np.testing.assert_array_equal(getattr(copy, f)(x), getattr(tip, f)(x))

@@ -23,7 +23,7 @@ from scipy.integrate import simpson
 from pocket import shooting
 from pocket.core import profiles
 from pocket.core.errors import OutOfRangeError
-from pocket.core.indenters import profile, sphere
+from pocket.core.indenters import Profile, Sphere
 from pocket.core.materials import check
 
 ALPHA, PHAT = 0.1, 0.3
@@ -46,14 +46,14 @@ def _sphere_table(rows: int):
 
 def _errors(indenter) -> np.ndarray:
     """Relative differences of every scalar from the sphere's, shape (len(FORCES), len(SCALARS))."""
-    ref = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=sphere(K))
-    got = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=profile(indenter))
+    ref = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=Sphere(K))
+    got = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=Profile(indenter))
     return np.array([[abs(getattr(g, k) / getattr(r, k) - 1.0) for k in SCALARS] for g, r in zip(got, ref,
                                                                                                   strict=True)])
 
 
 def test_shooting_poses_the_profile():
-    assert contact_of(profile(_sphere_functions())) is ProfileProblem
+    assert contact_of(Profile(_sphere_functions())) is ProfileProblem
 
 
 def test_sphere_as_functions_reproduces_the_sphere():
@@ -70,7 +70,7 @@ def test_sphere_as_table_reproduces_the_sphere_to_the_interpolation_error():
     # curvature z'' = 2 g' + 4 s g'' there. The error is local to a few rows, so h and M are taken over the
     # rows up to two past the widest contact edge: g = K - sqrt(K^2 - s), g'''' = 15/16 (K^2 - s)^(-7/2).
     widest = max(s.contact_radius_deformed for s in shooting.compression_curve(ALPHA, PHAT, FORCES,
-                                                                                 indenter=sphere(K)))
+                                                                                 indenter=Sphere(K)))
     rho = np.linspace(0.0, EXTENT, rows)
     near = rho[: np.searchsorted(rho, widest) + 3] ** 2
     h, m = float(np.max(np.diff(near))), 15.0 / 16.0 * (K * K - near[-1]) ** -3.5
@@ -94,7 +94,7 @@ def test_force_two_ways_under_a_paraboloid():
     shape = profiles.functions(lambda r: r * r / (2 * rc), lambda r: r / rc,
                                lambda r: (1.0 / rc) / (1.0 + (r / rc) ** 2) ** 1.5, 1.0, source="a paraboloid")
     for force in (0.3, 1.0):
-        state = shooting.compress(ALPHA, PHAT, force, indenter=profile(shape))
+        state = shooting.compress(ALPHA, PHAT, force, indenter=Profile(shape))
         on = state.profile.contact
         pc, rho = state.contact_pressure[on], state.profile.rho[on]
         assert np.all(pc >= state.pressure)  # p_c = P + T1 kappa1 + T2 kappa2, both curvatures >= 0
@@ -108,16 +108,16 @@ def test_force_two_ways_under_a_paraboloid():
 @pytest.mark.slow
 def test_range_ends_at_the_end_of_the_profile():
     shape = _sphere_functions()
-    end = shooting.range_end(ALPHA, PHAT, indenter=profile(shape))
-    assert end < shooting.range_end(ALPHA, PHAT, indenter=sphere(K))  # the table stops short of the equator
-    state = shooting.compress(ALPHA, PHAT, end, indenter=profile(shape))
+    end = shooting.range_end(ALPHA, PHAT, indenter=Profile(shape))
+    assert end < shooting.range_end(ALPHA, PHAT, indenter=Sphere(K))  # the table stops short of the equator
+    state = shooting.compress(ALPHA, PHAT, end, indenter=Profile(shape))
     assert state.contact_radius_deformed == pytest.approx(EXTENT, rel=1e-6)
     with pytest.raises(OutOfRangeError, match=re.escape(PROFILE_END)):
-        shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=profile(shape))
+        shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=Profile(shape))
 
 
 def test_contact_area_is_the_curved_area():
-    state = shooting.compress(ALPHA, PHAT, 0.5, indenter=profile(_sphere_functions()))
+    state = shooting.compress(ALPHA, PHAT, 0.5, indenter=Profile(_sphere_functions()))
     # a spherical cap reaching rho_c: 2 pi K^2 (1 - cos(phi_c)), sin(phi_c) = rho_c / K, over pi R^2
     phi = math.asin(state.contact_radius_deformed / K)
     assert state.contact_area == pytest.approx(2.0 * K * K * (1.0 - math.cos(phi)), rel=1e-10)
@@ -128,11 +128,11 @@ def test_a_blunt_profile_ends_with_its_lowest_point_at_the_clamp_plane():
     rc = 0.5  # the paraboloid reaching rho = R: the pole meets the clamp plane before the profile ends
     shape = profiles.functions(lambda r: r * r / (2 * rc), lambda r: r / rc,
                                lambda r: (1.0 / rc) / (1.0 + (r / rc) ** 2) ** 1.5, 1.0, source="a paraboloid")
-    end = shooting.range_end(ALPHA, PHAT, indenter=profile(shape))
-    state = shooting.compress(ALPHA, PHAT, end, indenter=profile(shape))
+    end = shooting.range_end(ALPHA, PHAT, indenter=Profile(shape))
+    state = shooting.compress(ALPHA, PHAT, end, indenter=Profile(shape))
     assert abs(state.height) < 1e-6 * state.inflated.height
     with pytest.raises(OutOfRangeError, match=re.escape(PROFILE_POLE)):
-        shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=profile(shape))
+        shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=Profile(shape))
 
 
 def test_a_flat_profile_reproduces_the_plate():
@@ -141,7 +141,7 @@ def test_a_flat_profile_reproduces_the_plate():
     contact zone row by row, DOP853, against the plate's closed form). Every scalar agrees to the root finders'
     tolerance (measured <= 1.4e-13; 1e-10 is the shots' rtol), the contact pressure is P along the zone, and
     the range ends at the same force to the range end's own tolerance (measured 5e-11)."""
-    flat = profile(profiles.table(np.linspace(0.0, 1.0, 5), np.zeros(5)))
+    flat = Profile(profiles.table(np.linspace(0.0, 1.0, 5), np.zeros(5)))
     forces = [0.3, 0.8, 2.0]
     keys = ("pressure", "height", "contact_radius", "contact_area", "stretch_contact", "volume", "tension_1_min",
             "tension_2_min")
@@ -165,9 +165,9 @@ def test_a_table_is_integrated_compiled_as_scipy_integrates_it():
     shape = _sphere_table(40)
     slow = dataclasses.replace(shape, pieces=None)
     keys = SCALARS
-    fine = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=profile(shape), rtol=1e-12)
-    fast = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=profile(shape))
-    scipy = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=profile(slow))
+    fine = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=Profile(shape), rtol=1e-12)
+    fast = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=Profile(shape))
+    scipy = shooting.compression_curve(ALPHA, PHAT, FORCES, indenter=Profile(slow))
     for a, b, c in zip(fast, scipy, fine, strict=True):
         for key in keys:
             assert getattr(a, key) == pytest.approx(getattr(b, key), rel=1e-8), key
@@ -184,7 +184,7 @@ def test_a_sphere_as_functions_on_a_shallow_dome_reproduces_the_sphere():
     material = check("neo-hookean", {"mu": 1.0})
     exact = profiles.functions(lambda r: k - np.sqrt(k * k - r * r), lambda r: r / np.sqrt(k * k - r * r),
                                lambda r: np.full_like(r, 1.0 / k), 0.9 * k, source="a sphere")
-    ref = shooting.compress(material, phat, force, indenter=sphere(k))
-    got = shooting.compress(material, phat, force, indenter=profile(exact))
+    ref = shooting.compress(material, phat, force, indenter=Sphere(k))
+    got = shooting.compress(material, phat, force, indenter=Profile(exact))
     for key in SCALARS:
         assert getattr(got, key) == pytest.approx(getattr(ref, key), rel=1e-8), key

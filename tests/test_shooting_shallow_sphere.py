@@ -25,7 +25,7 @@ from pocket import fem, shooting
 from pocket.cli import main
 from pocket.core.errors import OutOfRangeError, exit_status
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import LAWS, check
 from pocket.core.states import CHECKS
 
@@ -70,7 +70,7 @@ def test_shallow_dome_under_a_large_sphere_compresses_as_the_fem_does(capsys):
     command = ["compress", "--law", "neo-hookean", "--mu", "1.0", "--pressure", repr(PRESSURE), "--force", repr(FORCE),
                "--indenter", "sphere", "--indenter-radius", repr(RADIUS)]
     assert main(command) == 0, capsys.readouterr().err
-    kwargs = dict(indenter=sphere(RADIUS))
+    kwargs = dict(indenter=Sphere(RADIUS))
     _assert_agree(shooting.compress(NEO, PRESSURE, FORCE, **kwargs), fem.compress(NEO, PRESSURE, FORCE, **kwargs))
 
 
@@ -81,7 +81,7 @@ def test_force_past_a_shallow_domes_end_is_refused_in_one_line(capsys, solver):
     end: exit 2 and one line saying the force is beyond the model's range, for either solver; the shooting's names
     its end (it exited 1: the compression stalled, and so did the search for the end)."""
     pressure, radius = 0.00022572397623834572, 2.851781076972845
-    end = shooting.range_end(NEO, pressure, indenter=sphere(radius))
+    end = shooting.range_end(NEO, pressure, indenter=Sphere(radius))
     command = ["compress", "--law", "neo-hookean", "--mu", "1.0", "--pressure", repr(pressure), "--indenter",
                "sphere", "--indenter-radius", repr(radius), "--force", repr(1.01 * end), "--solver", solver]
     assert main(command) == 2
@@ -96,7 +96,7 @@ def _fem_end(material, pressure, radius, fluid, near) -> float:
     the zero nearest ``near`` of the parabola through its states' heights h(F) at 0.97, 0.98 and 0.99 of ``near``
     (the extrapolation's error is O(0.03^3) of the end)."""
     forces = [share * near for share in (0.97, 0.98, 0.99)]
-    states = fem.compression_curve(material, pressure, forces, fluid=fluid, indenter=sphere(radius))
+    states = fem.compression_curve(material, pressure, forces, fluid=fluid, indenter=Sphere(radius))
     roots = np.roots(np.polyfit(forces, [s.height for s in states], 2))
     real = roots[np.isreal(roots)].real
     return float(real[np.argmin(np.abs(real - near))])
@@ -113,7 +113,7 @@ def test_shallow_dome_range_end_under_a_large_sphere_is_the_fems(law, fluid, pre
     """Four shallow pockets (each a ConvergenceError before: the continuation in the force stalled): the shooting's
     range end is the FE's, the force at which its sphere's lowest point reaches the clamp plane, to ``AGREE_END``."""
     material = check(law, dict(LAWS[law].example))
-    end = shooting.range_end(material, pressure, fluid=fluid, indenter=sphere(radius))
+    end = shooting.range_end(material, pressure, fluid=fluid, indenter=Sphere(radius))
     fe = _fem_end(material, pressure, radius, fluid, end)
     print(f"shooting {end!r}, FE {fe!r}, relative difference {fe / end - 1.0:.1e}")
     assert fe == pytest.approx(end, rel=AGREE_END)
@@ -133,7 +133,7 @@ def test_shallow_domes_under_large_spheres_solve_inside_the_range_and_refuse_pas
     the shooting's range end both solvers solve and agree to ``AGREE``; past it by 0.1 % to 50 % both refuse with an
     OutOfRangeError (exit status 2), one line, the shooting's naming its end."""
     material = check(law, dict(LAWS[law].example))
-    kwargs = dict(fluid=fluid, indenter=sphere(radius))
+    kwargs = dict(fluid=fluid, indenter=Sphere(radius))
     end = shooting.range_end(material, pressure, **kwargs)
     force = inside * end
     _assert_agree(shooting.compress(material, pressure, force, **kwargs),

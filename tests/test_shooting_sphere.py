@@ -30,7 +30,7 @@ from scipy.integrate import simpson
 from pocket import fem, shooting
 from pocket.core.errors import CLAMP_PLANE, OutOfRangeError
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import check, energy
 
 ALPHA, PHAT = 0.1, 0.3
@@ -46,8 +46,7 @@ def _physical(state):
     """Assert p_c >= 0 on the contact zone and the free sheet outside the sphere (within rtol-sized noise)."""
     profile = state.profile
     assert np.all(state.contact_pressure[profile.contact] >= 0.0)
-    radius = dict(state.indenter.params)["radius"]
-    free = ~profile.contact & (profile.rho < radius)
+    free = ~profile.contact & (profile.rho < state.indenter.reach)
     surface = state.height + state.indenter.height(profile.rho[free])
     assert np.all(profile.eta[free] <= surface + 1e-9)
 
@@ -75,7 +74,7 @@ def test_large_sphere_recovers_the_plate_at_first_order():
     plate = shooting.compress(ALPHA, PHAT, force)
     radii = np.array([4.0, 8.0, 16.0, 32.0])
     for key in ("pressure_ratio", "height", "contact_radius"):
-        gaps = [abs(getattr(shooting.compress(ALPHA, PHAT, force, indenter=sphere(k)), key) - getattr(plate, key))
+        gaps = [abs(getattr(shooting.compress(ALPHA, PHAT, force, indenter=Sphere(k)), key) - getattr(plate, key))
                 for k in radii]
         rates = -np.diff(np.log(gaps)) / np.diff(np.log(radii))  # the rate between successive radii
         print(f"{key}: |sphere - plate| ~ (R/R_s)^rate, rates for R_s/R = 4-8, 8-16, 16-32: "
@@ -90,7 +89,7 @@ def test_force_two_ways_and_virtual_work(law):
     forces = [0.3, 0.6, 1.2]
     delta = 1e-3
     states = shooting.compression_curve(material, PHAT, [f * s for f in forces for s in (1 - delta, 1, 1 + delta)],
-                                        indenter=sphere(radius))
+                                        indenter=Sphere(radius))
     for k, force in enumerate(forces):
         below, state, above = states[3 * k:3 * k + 3]
         for s in (below, state, above):
@@ -107,9 +106,9 @@ def test_force_two_ways_and_virtual_work(law):
 def test_neo_hookean_is_mooney_rivlin_without_c2_under_a_sphere():
     mu = 0.4e6
     forces = [0.2, 0.8]
-    nh = shooting.compression_curve(check("neo-hookean", {"mu": mu}), PHAT, forces, indenter=sphere(1.5))
+    nh = shooting.compression_curve(check("neo-hookean", {"mu": mu}), PHAT, forces, indenter=Sphere(1.5))
     mr = shooting.compression_curve(check("mooney-rivlin", {"c1": mu / 2, "c2": 0.0}), PHAT, forces,
-                                    indenter=sphere(1.5))
+                                    indenter=Sphere(1.5))
     for a, b in zip(nh, mr, strict=True):
         for key in ("pressure", "height", "contact_radius", "contact_area", "contact_pressure_edge"):
             assert getattr(a, key) == pytest.approx(getattr(b, key), rel=1e-8)
@@ -117,7 +116,7 @@ def test_neo_hookean_is_mooney_rivlin_without_c2_under_a_sphere():
 
 def test_gas_force_two_ways_and_virtual_work():
     forces = [0.5 * (1 - 1e-3), 0.5, 0.5 * (1 + 1e-3)]
-    below, state, above = shooting.compression_curve(ALPHA, PHAT, forces, fluid=GAS, indenter=sphere(2.0))
+    below, state, above = shooting.compression_curve(ALPHA, PHAT, forces, fluid=GAS, indenter=Sphere(2.0))
     for s in (below, state, above):
         _physical(s)
     assert _force_from_pressure(state) == pytest.approx(0.5, rel=1e-9)
@@ -143,14 +142,14 @@ def test_small_force_pressure_rise_is_reciprocity_for_sphere_and_plate(fluid):
     if fluid is not None:
         dv += shooting.inflate(ALPHA, PHAT).volume / (fluid.gamma * (PHAT + fluid.ambient))
     expected = math.pi * dh / dv
-    for indenter in (None, sphere(0.5), sphere(3.0)):
+    for indenter in (None, Sphere(0.5), Sphere(3.0)):
         assert _small_force_limit(fluid, indenter) == pytest.approx(expected, rel=1e-4)
 
 
 @pytest.mark.parametrize("radius, reason", [(0.05, EQUATOR), (0.2, POLE), (4.0, CLAMP_PLANE)])
 def test_range_ends_are_named_with_their_force(radius, reason):
-    end = shooting.range_end(ALPHA, PHAT, indenter=sphere(radius))
-    state = shooting.compress(ALPHA, PHAT, end, indenter=sphere(radius))
+    end = shooting.range_end(ALPHA, PHAT, indenter=Sphere(radius))
+    state = shooting.compress(ALPHA, PHAT, end, indenter=Sphere(radius))
     _physical(state)
     if reason == EQUATOR:
         assert state.contact_radius_deformed == pytest.approx(radius, rel=1e-6)
@@ -159,11 +158,11 @@ def test_range_ends_are_named_with_their_force(radius, reason):
     else:  # the clamp carries no vertical force: F = P pi R^2
         assert end == pytest.approx(state.pressure_ratio, rel=1e-8)
     with pytest.raises(OutOfRangeError, match=f"ends at force = {end:.10g}.*there {reason}"):
-        shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=sphere(radius))
+        shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=Sphere(radius))
 
 
 def test_a_state_with_negative_contact_pressure_or_penetration_is_refused_by_name():
-    state = shooting.compress(ALPHA, PHAT, 0.5, indenter=sphere(1.0))
+    state = shooting.compress(ALPHA, PHAT, 0.5, indenter=Sphere(1.0))
     problem = contact_of(state.indenter)(state.inflated, 1e-10, law_of(state.material), state.fluid,
                                          state.indenter)
     profile = state.profile
@@ -186,7 +185,7 @@ def test_a_force_maximum_under_a_sphere_ends_the_range(radius):
     lower on both sides, and at the fold's height equals shooting's end to the FE's floor at 128 elements
     (measured 2e-8; the sides are 1e-5 lower, F'' h^2 / 2 at 0.2 % of h). Forces just below the end solve
     (near the fold, on the height branch), just above are out of range by the fold's name, not the touch's."""
-    alpha, phat, indenter = -0.5, 0.1, sphere(radius)
+    alpha, phat, indenter = -0.5, 0.1, Sphere(radius)
     end = shooting.range_end(alpha, phat, indenter=indenter)
     at_end = shooting.compress(alpha, phat, end, indenter=indenter)
     assert shooting.compress(alpha, phat, end * (1 - 1e-8), indenter=indenter).height > at_end.height

@@ -12,7 +12,7 @@ from pocket.solid import contact, laws, mesh, model
 from pocket.solid.equations import Control, system
 
 from pocket import solid
-from pocket.core.indenters import profile, sphere
+from pocket.core.indenters import Profile, Sphere
 from pocket.core.materials import mooney_rivlin
 from pocket.core.profiles import table
 
@@ -40,7 +40,7 @@ def test_the_profile_jacobian_is_the_derivative_of_the_residual(held):
     active = np.array([0, 1, 2, 3])
     y = np.concatenate([u, 0.1 * rng.standard_normal(m.basis_p.N), [0.02, h], 0.5 + rng.random(active.size)])
     gas = lambda pf: (0.4 / (1 + pf), -0.4 / (1 + pf) ** 2)  # noqa: E731  (any smooth V(p_f))
-    surface = contact.Surface(shape=_sphere_table(30))
+    surface = contact.Surface(Profile(_sphere_table(30)))
     control = Control(volume=gas, active=active, surface=surface, **{held: 0.5})
     _, jac, keep = system(m, y, control)
     direction = np.zeros_like(y)
@@ -58,10 +58,10 @@ def test_the_profile_jacobian_is_the_derivative_of_the_residual(held):
 def test_a_table_of_a_sphere_presses_as_the_sphere():
     """The profile sampled from the sphere K = 0.4 (40 rows) against the sphere itself: the same pressure ratio,
     lowest point to the spline's error, the contact area to the edge estimate's."""
-    exact = solid.compress(mooney_rivlin(47 / 160), PHAT, FORCE, indenter=sphere(K), thickness_ratio=T)
+    exact = solid.compress(mooney_rivlin(47 / 160), PHAT, FORCE, indenter=Sphere(K), thickness_ratio=T)
     differences = []
     for rows in (20, 40):
-        state = solid.compress(mooney_rivlin(47 / 160), PHAT, FORCE, indenter=profile(_sphere_table(rows)),
+        state = solid.compress(mooney_rivlin(47 / 160), PHAT, FORCE, indenter=Profile(_sphere_table(rows)),
                                thickness_ratio=T)
         differences.append([abs(state.pressure_ratio / exact.pressure_ratio - 1.0),
                             abs(state.height / exact.height - 1.0), abs(state.contact_area / exact.contact_area - 1.0)])
@@ -82,4 +82,4 @@ def test_a_contact_past_the_profile_is_out_of_range():
     rho = np.linspace(0.0, 0.1, 11)
     short = table(rho, K - np.sqrt(K * K - rho * rho))
     with pytest.raises(OutOfRangeError, match="profile"):
-        solid.compress(mooney_rivlin(47 / 160), PHAT, 1.0, indenter=profile(short), thickness_ratio=T)
+        solid.compress(mooney_rivlin(47 / 160), PHAT, 1.0, indenter=Profile(short), thickness_ratio=T)

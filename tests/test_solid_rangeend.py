@@ -19,7 +19,7 @@ from pocket.solid.rangeend import END_RTOL
 from pocket import shooting, solid
 from pocket.cli import main
 from pocket.core.errors import OutOfRangeError
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import mooney_rivlin
 
 pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
@@ -38,13 +38,13 @@ def _end(err: OutOfRangeError, key: str = "force") -> float:
 
 
 def _compress(force, thickness_ratio=T, **options):
-    return solid.compress(NEO_HOOKEAN, PHAT, force, indenter=sphere(K), thickness_ratio=thickness_ratio,
+    return solid.compress(NEO_HOOKEAN, PHAT, force, indenter=Sphere(K), thickness_ratio=thickness_ratio,
                           **{**COARSE, **options})
 
 
 @pytest.fixture(scope="module")
 def membrane_end():
-    return shooting.range_end(NEO_HOOKEAN, PHAT, indenter=sphere(K))
+    return shooting.range_end(NEO_HOOKEAN, PHAT, indenter=Sphere(K))
 
 
 def test_solid_refuses_a_sphere_pressed_past_the_clamp_plane(capsys, membrane_end):
@@ -94,7 +94,7 @@ def test_height_control_below_the_end_names_the_same_end(membrane_end):
     with pytest.raises(OutOfRangeError) as past:
         _compress(1.5 * membrane_end)
     with pytest.raises(OutOfRangeError) as low:
-        solid.compress_height(NEO_HOOKEAN, PHAT, 1e-4, indenter=sphere(K), thickness_ratio=T, **COARSE)
+        solid.compress_height(NEO_HOOKEAN, PHAT, 1e-4, indenter=Sphere(K), thickness_ratio=T, **COARSE)
     message = str(low.value)
     print(message)
     assert message.startswith("height = 0.0001 is beyond the model's range, which ends at height = ")
@@ -131,9 +131,9 @@ def test_past_the_end_the_solid_refuses(radius, pressure, alpha, factor):
     ``test_the_solids_end_tends_to_the_membranes_as_the_sheet_thins``) is refused, naming an end below it whose
     reason is one of the membrane's rules (the sheet reaching the clamp plane, or the sphere's equator)."""
     material = mooney_rivlin(alpha)
-    force = factor * shooting.range_end(material, pressure, indenter=sphere(radius))
+    force = factor * shooting.range_end(material, pressure, indenter=Sphere(radius))
     with pytest.raises(OutOfRangeError) as past:
-        solid.compress(material, pressure, force, indenter=sphere(radius), thickness_ratio=T, **COARSE)
+        solid.compress(material, pressure, force, indenter=Sphere(radius), thickness_ratio=T, **COARSE)
     message = str(past.value)
     assert message.startswith(f"force = {force:.10g} is beyond the model's range")
     assert _end(past.value) < force

@@ -17,7 +17,7 @@ from pocket.solid.model import split
 from pocket import shooting, solid
 from pocket.cli import main
 from pocket.core.fluids import LIQUID
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import mooney_rivlin
 
 T, ELEMENTS, PHAT, FORCE, K = 0.02, 32, 0.31, 0.5, 0.4
@@ -34,7 +34,7 @@ def pressed():
     y, _ = inflation.to_pressure(m, p_i, TOL)
     v_i = model.fluid(m, split(m, y)[0])[0]
     fill = compression.fluid_control(m, LIQUID, PHAT, v_i)
-    y, control = compression.first_contact(m, y, fill, contact.Surface(K))
+    y, control = compression.first_contact(m, y, fill, contact.Surface(Sphere(K)))
     y, control, _ = compression.to_force(m, y, control, FORCE * np.pi * p_i, np.pi * p_i, TOL)
     return m, y, control
 
@@ -56,7 +56,7 @@ def test_the_sphere_jacobian_is_the_derivative_of_the_residual(held):
     lam = 0.5 + rng.random(active.size)
     y = np.concatenate([u, 0.1 * rng.standard_normal(m.basis_p.N), [0.02, h], lam])
     gas = lambda pf: (0.4 / (1 + pf), -0.4 / (1 + pf) ** 2)  # noqa: E731  (any smooth V(p_f))
-    control = Control(volume=gas, active=active, surface=contact.Surface(radius), **{held: 0.5})
+    control = Control(volume=gas, active=active, surface=contact.Surface(Sphere(radius)), **{held: 0.5})
     _, jac, keep = system(m, y, control)
     direction = np.zeros_like(y)
     direction[keep] = rng.standard_normal(keep.size)
@@ -122,7 +122,7 @@ def test_a_large_sphere_is_the_flat_plate_to_first_order_in_1_over_k():
     plate = _state(None)
     diffs = {}
     for radius in (25.0, 50.0):
-        s = _state(sphere(radius))
+        s = _state(Sphere(radius))
         diffs[radius] = np.array([s.pressure_ratio - plate.pressure_ratio, s.contact_radius - plate.contact_radius,
                                   s.height - plate.height])
     order = np.log2(np.abs(diffs[25.0] / diffs[50.0]))
@@ -137,10 +137,10 @@ def test_a_large_sphere_is_the_flat_plate_to_first_order_in_1_over_k():
 def _against_membrane(radius):
     """(T/R, dq, dA, bound on |dA|) for T/R = 0.01 and 0.02: the solid's P/P_I and contact area minus the
     membrane's (``pocket.shooting``) under the sphere of radius K = ``radius`` at Fhat = 0.3."""
-    membrane = shooting.compress(MATERIAL, PHAT, 0.3, indenter=sphere(radius))
+    membrane = shooting.compress(MATERIAL, PHAT, 0.3, indenter=Sphere(radius))
     rows = []
     for t in (0.01, 0.02):
-        s = solid.compress(MATERIAL, PHAT, 0.3, indenter=sphere(radius), thickness_ratio=t)
+        s = solid.compress(MATERIAL, PHAT, 0.3, indenter=Sphere(radius), thickness_ratio=t)
         r, rho_c = s.profile.r, s.contact_radius_deformed
         spacing = np.diff(r)[min(np.searchsorted(r, s.contact_radius), r.size - 2)]
         slope = 2.0 * radius * rho_c / np.sqrt(radius**2 - rho_c**2)  # d(cap area)/d rho_c
@@ -197,7 +197,7 @@ def test_the_cap_area_is_the_spheres_surface_integral(radius):
     rho_c = 0.3 * radius
     x, w = np.polynomial.legendre.leggauss(40)
     rho = 0.5 * rho_c * (x + 1.0)
-    integral = np.sum(0.5 * rho_c * w * 2.0 * rho * np.sqrt(1.0 + sphere(radius).slope(rho) ** 2))
+    integral = np.sum(0.5 * rho_c * w * 2.0 * rho * np.sqrt(1.0 + Sphere(radius).slope(rho) ** 2))
     assert cap_area(radius, rho_c) == pytest.approx(integral, rel=1e-13)  # 40-point Gauss: round-off
     assert abs(cap_area(radius, rho_c) - rho_c**2) > 1e-3 * rho_c**2
 
@@ -212,8 +212,8 @@ def test_a_contact_past_the_equator_is_out_of_range(pressed):
     m, y, control = pressed
     material = MATERIAL.scaled()
     start = results.inflated(m, material, inflation.to_pressure(m, 3.0 * T * PHAT, TOL)[0], 0, pressure=PHAT)
-    state = results.compressed(m, material, y, control.active, 0, start, LIQUID, surface=contact.Surface(K))
+    state = results.compressed(m, material, y, control.active, 0, start, LIQUID, surface=contact.Surface(Sphere(K)))
     assert state.contact_radius_deformed < K
     with pytest.raises(OutOfRangeError, match="equator"):
         results.compressed(m, material, y, control.active, 0, start, LIQUID,
-                           surface=contact.Surface(0.5 * state.contact_radius_deformed))
+                           surface=contact.Surface(Sphere(0.5 * state.contact_radius_deformed)))

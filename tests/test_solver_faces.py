@@ -12,7 +12,7 @@ import pytest
 from pocket.apps.solvers import SOLVERS
 from pocket.core import solver as faces
 from pocket.core.errors import InputError
-from pocket.core.indenters import FLAT, Indenter, posed, profile, sphere
+from pocket.core.indenters import PLATE, Plate, Profile, Sphere, posed
 from pocket.core.inputs import check_forces
 from pocket.core.profiles import table
 
@@ -98,23 +98,22 @@ def test_check_forces_takes_one_force_or_several():
 
 
 def test_posed_gives_the_indenter_and_its_formulation():
-    """Exact answers: None is the flat plate with the table's flat entry; another kind missing from the table
-    is the one-line InputError naming the solver; a non-indenter is refused by ``as_indenter``'s message."""
-    assert posed({"flat": "plate"}, "toy", None) == (FLAT, "plate")
-    ball = sphere(0.5)
-    assert posed({"flat": 1, "sphere": 2}, "toy", ball) == (ball, 2)
-    with pytest.raises(InputError, match=r"^solver toy does not implement the sphere indenter \(its indenters: flat"):
-        posed({"flat": 1}, "toy", ball)
+    """Exact answers: None is the flat plate with the table's plate entry; a class missing from the table is the
+    one-line InputError naming the solver, the indenter and the table's indenters; a non-indenter is refused by
+    ``as_indenter``'s message."""
+    assert posed({Plate: "plate"}, "toy", None) == (PLATE, "plate")
+    ball = Sphere(0.5)
+    assert posed({Plate: 1, Sphere: 2}, "toy", ball) == (ball, 2)
+    refusal = r"^solver toy does not implement the sphere indenter \(its indenters: plate\)$"
+    with pytest.raises(InputError, match=refusal):
+        posed({Plate: 1}, "toy", ball)
     with pytest.raises(InputError, match=r"^indenter = 'sphere', but it must be an Indenter"):
-        posed({"flat": 1}, "toy", "sphere")
+        posed({Plate: 1}, "toy", "sphere")
 
 
-def test_an_indenters_shape_is_a_profiles_alone():
-    """Exact answers: a profile indenter's ``shape()`` is the very Shape it was made from; a sphere has none (a
-    one-line InputError), and its radius stays a number (``number``)."""
+def test_an_indenter_holds_its_own_parameters():
+    """Exact answers: a profile indenter's ``shape`` is the very Shape it was made from, a sphere's radius the
+    number it was given, and a profile's reach the shape's last radius."""
     shape = table([0.0, 0.25, 0.5, 1.0], [0.0, 0.03125, 0.125, 0.5])  # z = rho^2 / 2
-    assert profile(shape).shape() is shape
-    ball: Indenter = sphere(0.5)
-    assert ball.number("radius") == 0.5
-    with pytest.raises(InputError, match=r"^the sphere indenter has no profile"):
-        ball.shape()
+    assert Profile(shape).shape is shape and Profile(shape).reach == 1.0
+    assert Sphere(0.5).radius == 0.5 and Sphere(1).radius == 1.0 and isinstance(Sphere(1).radius, float)

@@ -20,7 +20,7 @@ import pytest
 
 from pocket import fem, shooting
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.states import CHECKS
 
 PRESSURE = 0.3
@@ -49,7 +49,7 @@ def _worst(left, right) -> dict[str, float]:
 @pytest.mark.parametrize("radius", [0.5, 2.0])
 @pytest.mark.parametrize("fluid", list(FLUIDS))
 def test_shooting_and_fem_agree_on_every_scalar_under_a_sphere(rubber, fluid, radius):
-    kwargs = dict(fluid=FLUIDS[fluid], indenter=sphere(radius))
+    kwargs = dict(fluid=FLUIDS[fluid], indenter=Sphere(radius))
     worst = _worst(shooting.compression_curve(rubber, PRESSURE, FORCES, **kwargs),
                    fem.compression_curve(rubber, PRESSURE, FORCES, **kwargs))
     minima = {key: worst.pop(key) for key in CHECKS[:2]}
@@ -62,7 +62,7 @@ def test_shooting_and_fem_agree_on_every_scalar_under_a_sphere(rubber, fluid, ra
 def test_the_difference_is_the_fems_discretisation_error():
     """On a finer mesh the difference falls at the P2 elements' order (16-fold per halving, > 8 asked):
     what separates the solvers is the FE's error, not a difference in the model they solve."""
-    kwargs = dict(fluid=None, indenter=sphere(0.5))
+    kwargs = dict(fluid=None, indenter=Sphere(0.5))
     reference = shooting.compression_curve(0.3, PRESSURE, FORCES, **kwargs)
     coarse, fine = (_worst(reference, fem.compression_curve(0.3, PRESSURE, FORCES, elements=n, **kwargs))
                     for n in (256, 512))

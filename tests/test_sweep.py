@@ -482,7 +482,7 @@ def test_indenters_share_a_file(tmp_path, capsys):
     """The indenter is part of a point: the plate's sweep, then the same grid under a sphere K = 0.4, keep both
     in one file, each row saying what pressed it; the sphere's rows are the solver's sphere curve exactly, not
     the plate's; each rerun reuses its own points."""
-    from pocket.core.indenters import sphere
+    from pocket.core.indenters import Sphere
 
     path = tmp_path / "fingers.csv"
     argv = ["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "0.2", "--out", str(path),
@@ -494,7 +494,7 @@ def test_indenters_share_a_file(tmp_path, capsys):
     rows = list(csv.DictReader(path.open()))  # the last sweep's grid first, then the other points
     assert [r["indenter"] for r in rows] == ["sphere K=0.4", "sphere K=0.4", "plate", "plate"]
     assert [float(r["height"]) for r in rows[:2]] == [
-        s.height for s in shooting.compression_curve(0.3, 0.1, [0.1, 0.2], indenter=sphere(0.4))]
+        s.height for s in shooting.compression_curve(0.3, 0.1, [0.1, 0.2], indenter=Sphere(0.4))]
     assert [float(r["height"]) for r in rows[2:]] == [
         s.height for s in shooting.compression_curve(0.3, 0.1, [0.1, 0.2])]
     assert rows[2]["height"] != rows[0]["height"]
@@ -526,7 +526,7 @@ def test_a_profile_table_is_recorded_by_its_content(tmp_path, capsys):
     the solver's own curve under that profile exactly. A profile given as functions has no content to record:
     one line, before any solving."""
     from pocket.core import profiles
-    from pocket.core.indenters import profile
+    from pocket.core.indenters import Profile
 
     tip = "radius [R],height [R]\n0,0\n0.1,0.005\n0.2,0.02\n0.3,0.045\n0.4,0.08\n"
     (tmp_path / "a").mkdir()
@@ -545,12 +545,12 @@ def test_a_profile_table_is_recorded_by_its_content(tmp_path, capsys):
     shape = profiles.read_csv(tmp_path / "a" / "tip.csv")
     assert {r["indenter"] for r in rows[2:]} == {f"profile sha256={shape.digest}"}
     assert [float(r["height"]) for r in rows[2:]] == [
-        s.height for s in shooting.compression_curve(0.3, 0.1, [0.05, 0.1], indenter=profile(shape))]
+        s.height for s in shooting.compression_curve(0.3, 0.1, [0.05, 0.1], indenter=Profile(shape))]
     assert rows[0]["indenter"] != rows[2]["indenter"]
     functions = profiles.functions(lambda r: r * r, lambda r: 2 * r, lambda r: 2 + 0 * r, 0.5)
     with pytest.raises(InputError, match="not a profile given as functions"):
         with ThreadPoolExecutor(1) as executor:
-            run_sweep(tmp_path / "f.csv", [0.3], [0.1], [0.1], executor, indenter=profile(functions))
+            run_sweep(tmp_path / "f.csv", [0.3], [0.1], [0.1], executor, indenter=Profile(functions))
     assert not (tmp_path / "f.csv").exists()
 
 

@@ -14,7 +14,7 @@ from pocket.apps.solvers import SOLVERS
 from pocket.cli import main
 from pocket.core.errors import OutOfRangeError
 from pocket.core.fluids import gas
-from pocket.core.indenters import sphere
+from pocket.core.indenters import Sphere
 from pocket.core.materials import Material
 
 BASE = ["compress", "--alpha", "0.3", "--pressure", "0.3", "--json"]
@@ -54,7 +54,7 @@ GAS = gas(ambient=3.0)
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("indenter", [None, sphere(0.8), sphere(3.0)], ids=["plate", "sphere-0.8", "sphere-3"])
+@pytest.mark.parametrize("indenter", [None, Sphere(0.8), Sphere(3.0)], ids=["plate", "sphere-0.8", "sphere-3"])
 @pytest.mark.parametrize("fluid", [None, GAS], ids=["liquid", "gas"])
 def test_shooting_and_fem_agree_at_a_height(indenter, fluid):
     """Two independent routes to the same state: shooting finds the force whose state sits at H by a root in

@@ -20,6 +20,7 @@ from pocket.validation.convergence import observed_order, richardson
 from pocket.validation.plan import RANGE_FRACTION
 
 from pocket.cli import main
+from pocket.core.indenters import Sphere
 
 pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
 
@@ -646,8 +647,8 @@ def test_a_rerun_replaces_the_report_pocket_wrote(report, tmp_path, capsys, monk
 
 def _sphere_radii_mm(results) -> dict:
     """case name -> the radius of the sphere pressing it, in mm (the pockets pressed by a sphere)."""
-    return {p.case.name: p.case.indenter.number("radius") * p.case.radius * 1e3 for p in results.pockets
-            if p.case.indenter.kind == "sphere"}
+    return {p.case.name: p.case.indenter.radius * p.case.radius * 1e3 for p in results.pockets
+            if isinstance(p.case.indenter, Sphere)}
 
 
 def test_spheres_are_cross_checked_on_every_scalar(report):
@@ -701,7 +702,7 @@ def test_fingertip_figure_plots_force_against_travel(report):
         state = shooting.compress(pocket.material, pocket.pressure_initial, float(line.y[k]), **pocket.fluid_options())
         assert line.x[k] == pytest.approx(state.inflated.height - state.height, rel=1e-9)
         half = shooting.compress(pocket.material, pocket.pressure_initial, 0.5, **pocket.fluid_options())
-        size = pocket.case.indenter.number("radius") if pocket.case.name in _sphere_radii_mm(results) else np.inf
+        size = pocket.case.indenter.radius if pocket.case.name in _sphere_radii_mm(results) else np.inf
         travel[size], rise[size] = half.inflated.height - half.height, half.pressure_ratio
     sizes = sorted(travel)
     assert [travel[s] for s in sizes] == sorted(travel.values(), reverse=True)

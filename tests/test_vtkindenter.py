@@ -13,7 +13,7 @@ from pocket import shooting
 from pocket.apps.vtk import files, indentermesh
 from pocket.cli import main
 from pocket.core import profiles
-from pocket.core.indenters import FLAT, profile, sphere
+from pocket.core.indenters import PLATE, Profile, Sphere
 
 FORCES = [0.0, 0.5, 1.0]
 
@@ -57,7 +57,7 @@ def _written(tmp_path, mesh) -> meshio.Mesh:
 
 def test_a_sphere_lies_on_the_sphere_with_its_lowest_point_at_the_height(tmp_path):
     radius, height = 0.4, 0.3
-    mesh = _written(tmp_path, indentermesh.indenter_mesh(sphere(radius), height, reach=1.5, segments=16))
+    mesh = _written(tmp_path, indentermesh.indenter_mesh(Sphere(radius), height, reach=1.5, segments=16))
     x, y, z = mesh.points.T
     np.testing.assert_allclose(np.hypot(np.hypot(x, y), z - height - radius), radius, rtol=1e-14)
     assert z.min() == height and np.hypot(x, y).max() == pytest.approx(radius, rel=1e-15)  # to its equator
@@ -68,15 +68,15 @@ def test_a_sphere_given_as_a_profile_draws_the_sphere(tmp_path):
     """To the table's interpolation error (``pocket.core.profiles``: 1e-7 R in height for 40 rows to 0.3 R)."""
     radius, height, top = 0.4, 0.3, 0.3
     rho = np.linspace(0.0, top, 40)
-    tip = profile(profiles.table(rho, sphere(radius).height(rho)))
+    tip = Profile(profiles.table(rho, Sphere(radius).height(rho)))
     mesh = _written(tmp_path, indentermesh.indenter_mesh(tip, height, reach=1.5, segments=16))
     x, y, z = mesh.points.T
     assert np.hypot(x, y).max() == pytest.approx(top, rel=1e-15)  # drawn to the table's last radius
-    np.testing.assert_allclose(z, height + sphere(radius).height(np.hypot(x, y)), atol=1e-7)
+    np.testing.assert_allclose(z, height + Sphere(radius).height(np.hypot(x, y)), atol=1e-7)
 
 
 def test_the_flat_plate_mesh_is_a_disc(tmp_path):
-    mesh = _written(tmp_path, indentermesh.indenter_mesh(FLAT, 0.25, reach=1.5, segments=16))
+    mesh = _written(tmp_path, indentermesh.indenter_mesh(PLATE, 0.25, reach=1.5, segments=16))
     assert np.all(mesh.points[:, 2] == 0.25)
     assert np.hypot(mesh.points[:, 0], mesh.points[:, 1]).max() == pytest.approx(1.5, rel=1e-15)
     assert {c.type for c in mesh.cells} == {"triangle", "quad"}

@@ -41,7 +41,7 @@ def fingertip_pockets(pockets) -> list:
     head = headline(pockets)
     same = [p for p in sphere_pockets(pockets) if p.case.material == head.case.material
             and p.case.fluid == head.case.fluid and p.pressure_initial == head.pressure_initial]
-    return [head, *sorted(same, key=lambda p: p.case.indenter.number("radius"))]
+    return [head, *sorted(same, key=lambda p: p.case.indenter.numbers()["radius"])]
 
 
 def _travel_series(results, pockets) -> tuple:
@@ -62,7 +62,7 @@ def _fingertips(results, pockets) -> Figure:
     panels = (Panel("(a) force against travel", "(H_0 - H) / R", _FHAT, _travel_series(results, pockets)),
               Panel("(b) pressure rise", _FHAT, "P / P_I", curve_series(results, "pressure_ratio", pockets, ()),
                     log="xy"))
-    radii = ", ".join(f"{p.case.indenter.number('radius') * p.case.radius * 1e3:g}" for p in pockets[1:])
+    radii = ", ".join(f"{p.case.indenter.columns(p.case.radius)['indenter_radius_m'] * 1e3:g}" for p in pockets[1:])
     return Figure("fingertips", f"A fingertip, not a plate: {pocket_label(pockets[0])} pressed by the flat plate "
                   f"(the broad dark line) and by spheres of radius R_s = {radii} mm, each to {RANGE_FRACTION:g} of "
                   "the end of its range; (a) the force against the travel H_0 - H (H: the indenter's lowest point "

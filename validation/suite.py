@@ -26,7 +26,7 @@ from pocket.apps.design import paper_rules
 from pocket.apps.physical import Pocket, resolve
 from pocket.apps.tomlfiles import read_toml
 from pocket.core.errors import InputError
-from pocket.core.indenters import FLAT
+from pocket.core.indenters import PLATE
 from pocket.core.inputs import check_alpha, check_finite, quote
 from pocket.core.units import positive
 
@@ -115,4 +115,4 @@ def headline(pockets) -> Pocket:
 
 def on_plate(pocket) -> bool:
     """Whether ``pocket`` is pressed by the flat plate (the paper's indenter), not by a curved one."""
-    return pocket.case.indenter == FLAT
+    return pocket.case.indenter == PLATE

@@ -25,7 +25,7 @@
     pressure = "4.8 kPa"                 # P_I, or height = "10 mm" (H0), or volume = "2 mL"
     [loads]                              # exactly one of
     forces = ["0 N", "0.5 N", "1 N"]     # forces F, or heights = ["9 mm", "8 mm"] (indenter heights H)
-    [indenter]                           # optional, default the flat plate (pocket.apps.indenters)
+    [indenter]                           # optional, default the flat plate (pocket.apps.indentertable)
     shape = "sphere"                     # "plate", "sphere" with radius = "8 mm", or "profile" with
     radius = "8 mm"                      # file = "tip.csv" (relative to the case file's folder)
     [solver]                             # optional, default shooting
@@ -69,13 +69,13 @@ import pathlib
 
 from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
-from pocket.core.indenters import FLAT, Indenter
+from pocket.core.indenters import PLATE, Indenter
 from pocket.core.inputs import check_volume, quote
 from pocket.core.materials import LAWS, Material
 from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import plain_warnings, positive, quantity
 
-from . import indenters
+from . import indentertable
 from .rubbers import PARAMETERS, fluid, sheet
 from .solvers import SOLVERS, record
 from .tomlfiles import read_toml
@@ -91,7 +91,8 @@ MAX_LOADS = 10_000
 _SECTIONS = {"name": None, "label": None, "tags": None,
              "sheet": ("thickness", "material", *PARAMETERS, "modulus", "alpha", "prestretch"), "clamp": ("radius",),
              "fluid": ("kind", "ambient", "gamma"),
-             "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"), "indenter": indenters.KEYS,
+             "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"),
+             "indenter": indentertable.KEYS,
              "solver": ("name", *dict.fromkeys(o.name for s in SOLVERS.values() for o in s.options))}
 
 
@@ -122,7 +123,7 @@ class Case:
     given: tuple[tuple[str, object], ...] = dataclasses.field(default=(), hash=False)  # values may be lists
     fluid: Fluid = LIQUID
     warnings: tuple[str, ...] = ()  # about the inputs: a plain length that looks like millimetres, a thick sheet
-    indenter: Indenter = FLAT
+    indenter: Indenter = PLATE
 
     @property
     def alpha(self) -> float | None:
@@ -147,7 +148,7 @@ class Case:
         Ogden's ``mu_Pa`` a list), numbers as they are (``jm``, ``exponents``), with ``modulus_Pa``
         (E = 3 mu_0) and, for Mooney-Rivlin, ``alpha``; the fluid is ``fluid`` and, for a gas,
         ``ambient_Pa`` and ``gamma``; the indenter is ``indenter`` (plate, sphere or profile) and a sphere's
-        ``indenter_radius_m`` or a profile's ``indenter_file`` (``pocket.apps.indenters.describe``).
+        ``indenter_radius_m`` or a profile's ``indenter_file`` (``pocket.core.indenters.Indenter.columns``).
         """
         rubber: dict[str, object] = {"material": self.material.law}
         stresses = self.material.definition.stresses
@@ -162,7 +163,7 @@ class Case:
             fluid.update(ambient_Pa=self.fluid.ambient, gamma=self.fluid.gamma)
         return {"name": self.name, "thickness_m": self.thickness, **rubber, "radius_m": self.radius, **fluid,
                 f"initial_{self.initial[0]}": self.initial[1], "load_kind": self.load_kind,
-                "loads": list(self.loads), **indenters.describe(self.indenter, self.radius),
+                "loads": list(self.loads), **self.indenter.columns(self.radius),
                 "solver": self.solver, **dict(self.options),
                 "given": dict(self.given), "warnings": list(self.warnings)}
 
@@ -323,7 +324,8 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     if require_loads or "loads" in data:
         load_kind, loads = _loads(_table(data, "loads", where), where, given)
     pressing: list[str] = []  # the indenter's size warnings
-    indenter = indenters.parse(data["indenter"], radius, base, given, warnings=pressing) if "indenter" in data else FLAT
+    indenter = (indentertable.parse(data["indenter"], radius, base, given, warnings=pressing) if "indenter" in data
+                else PLATE)
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
     options = _thickness_ratio(solver, options, thickness, radius, given)
     membrane = record(solver).option(THICKNESS_RATIO) is None

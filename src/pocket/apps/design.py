@@ -66,13 +66,13 @@ import math
 
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.fluids import as_fluid
-from pocket.core.indenters import FLAT
+from pocket.core.indenters import PLATE
 from pocket.core.inputs import quote
 from pocket.core.materials import as_material
 from pocket.core.sizes import length_warnings, thin_sheet
 from pocket.core.units import plain_warnings, positive
 
-from . import indenters
+from . import indentertable
 from .designresult import PAPER_FORCE_FACTOR, PAPER_THICKNESS_FACTOR, Design, finish, paper_rules, sealed
 from .inverse import force_where, pressure_for_height, pressure_for_sheet
 from .solvers import entry, record
@@ -170,7 +170,7 @@ def design(radius, height, modulus, material, force, height_ratio=None, *, thick
     ``modulus`` None, its stresses in Pa set E; a number is taken as a Mooney-Rivlin alpha = C2/C1,
     ``as_material``). ``fluid``: None (a liquid) or a gas (``pocket.core.fluids.gas``) with its ambient
     pressure in Pa. ``indenter``: None (the flat plate) or an ``[indenter]`` table in physical units
-    (``pocket.apps.indenters.parse``: ``{"shape": "sphere", "radius": "8 mm"}``), what the finger is.
+    (``pocket.apps.indentertable.parse``: ``{"shape": "sphere", "radius": "8 mm"}``), what the finger is.
     ``name(key)``, if given, names the inputs in messages (a command line's flags: ``name("radius")``,
     ``name("indenter.radius")``), else they are named by their keys.
 
@@ -200,9 +200,9 @@ def design(radius, height, modulus, material, force, height_ratio=None, *, thick
     else:
         key, target = _target(height_ratio, pressed_height, name, given, warnings)
     fluid = as_fluid(fluid)
-    finger = FLAT if indenter is None else indenters.parse(indenter, radius, warnings=warnings,
-                                                           spell=lambda k: name(f"indenter.{k}"))
-    pressing = {**options, **({} if finger == FLAT else {"indenter": finger})}  # the compressions' options
+    finger = PLATE if indenter is None else indentertable.parse(indenter, radius, warnings=warnings,
+                                                                spell=lambda k: name(f"indenter.{k}"))
+    pressing = {**options, **({} if finger == PLATE else {"indenter": finger})}  # the compressions' options
     model = record(solver)
     if "thickness" in lengths:
         thickness = lengths["thickness"]

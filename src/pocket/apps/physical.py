@@ -19,7 +19,7 @@ import math
 
 from pocket.core.errors import InputError, OutOfRangeError, PocketError
 from pocket.core.fluids import Fluid
-from pocket.core.indenters import FLAT
+from pocket.core.indenters import PLATE
 from pocket.core.inputs import MAGNITUDES, quote
 from pocket.core.materials import Material, mooney_rivlin
 from pocket.core.units import written_like
@@ -98,7 +98,7 @@ class Pocket:
         if step != "compress":
             return {}
         gas = {"fluid": self.fluid} if self.case.fluid.is_gas else {}
-        return {**gas, **({} if self.case.indenter == FLAT else {"indenter": self.case.indenter})}
+        return {**gas, **({} if self.case.indenter == PLATE else {"indenter": self.case.indenter})}
 
 
 def _inside(key: str, given: str, name: str, value: float) -> float:
@@ -157,7 +157,7 @@ def resolve(case: Case) -> Pocket:
 
 def _pressing(case: Case) -> str:
     """What presses the case's pocket, in a message: "plate" or "indenter"."""
-    return "plate" if case.indenter == FLAT else "indenter"
+    return "plate" if case.indenter == PLATE else "indenter"
 
 
 def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
@@ -174,7 +174,7 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
                  f"{written_like(top, given, 'length')})"
     except PocketError:  # the reason stands without the number
         pass
-    why = ("the free part of the sheet would fold onto the clamp plane first" if case.indenter == FLAT else
+    why = ("the free part of the sheet would fold onto the clamp plane first" if case.indenter == PLATE else
            "the model's range under this indenter ends first")
     return OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is below the lowest {_pressing(case)} height "
                            f"the model reaches{lowest}: {why}")

@@ -14,8 +14,8 @@ from pocket.core.inputs import quote
 from pocket.core.materials import LAWS
 
 from .common import PHYSICAL_UNITS, flag, number, physical_help, solvers_epilog
-from .indenters import add_indenter_flags, indenter_table
-from .indenters import flag as indenter_flag
+from .indenterflags import add_indenter_flags, indenter_table
+from .indenterflags import flag as indenter_flag
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]

@@ -16,7 +16,7 @@ import math
 from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, entry
 from pocket.core.errors import ConvergenceError, InputError
-from pocket.core.indenters import FLAT
+from pocket.core.indenters import PLATE
 from pocket.core.inputs import check_positive, check_volume
 
 from .common import (
@@ -30,7 +30,7 @@ from .common import (
     solvers_epilog,
     warn,
 )
-from .indenters import add_indenter_flags, indenter_of
+from .indenterflags import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]
@@ -148,7 +148,7 @@ def _main(args) -> int:
         fluid = fluid_of(args)
         options.update({} if fluid is None else {"fluid": fluid})
         indenter = indenter_of(args)
-        options.update({} if indenter == FLAT else {"indenter": indenter})
+        options.update({} if indenter == PLATE else {"indenter": indenter})
     if args.vtk is not None:
         from pocket.apps.vtk.files import KIND
 

@@ -21,7 +21,7 @@ from .common import (
     solver_flags,
     solvers_epilog,
 )
-from .indenters import add_indenter_flags, indenter_of
+from .indenterflags import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
 __all__ = ["register"]

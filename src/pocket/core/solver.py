@@ -44,13 +44,13 @@ the pocket at the initial pressure: None or "liquid" (fixed volume), or a gas
 (``pocket.core.fluids.gas``) whose ambient pressure is dimensionless like every pressure,
 Phat_atm = P_atm R / (E T) (``pocket.core.fluids.as_fluid`` checks it). Inflation takes no fluid: the
 gas is sealed once the pocket is inflated. ``indenter`` is what presses on the pocket: None (the flat
-plate, ``pocket.core.indenters.FLAT``) or an ``Indenter``; each solver maps the kinds it poses to its
-contact formulation in a table and refuses another kind in one line (``indenters.formulation``).
+plate, ``pocket.core.indenters.PLATE``) or an ``Indenter``; each solver maps the classes it poses to its
+contact formulation in a table and refuses another in one line (``indenters.formulation``).
 ``geometry`` is the membrane's reference surface (a ``GeometryLike``): None (the flat disc clamped at r = R,
 ``pocket.core.geometries.DISC``), a ``Geometry`` or its name; each solver maps the surfaces it poses to its
 formulation in a table and refuses another in one line (``geometries.formulation``).
 States echo ``material`` as given (their ``alpha`` is derived from it: the alpha it was given by, else None),
-``fluid`` as given (``LIQUID`` for None) and ``indenter`` (``FLAT`` for None); an inflated state carries its
+``fluid`` as given (``LIQUID`` for None) and ``indenter`` (``PLATE`` for None); an inflated state carries its
 ``geometry`` (``DISC`` for None), and a compressed state that of the inflated state it was pressed from.
 
 ``progress``, if given, is called as ``progress(done, total)`` after each force of a

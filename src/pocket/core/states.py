@@ -32,7 +32,7 @@ import numpy as np
 
 from .fluids import LIQUID, Fluid
 from .geometries import DISC, Geometry
-from .indenters import FLAT, Indenter
+from .indenters import PLATE, Indenter
 from .materials import Material
 from .offset import check_thickness, volume_correction
 
@@ -224,7 +224,7 @@ class CompressedState(_Membrane):
     fluid: Fluid = LIQUID
     tension_1_min: float = math.nan
     tension_2_min: float = math.nan
-    indenter: Indenter = FLAT
+    indenter: Indenter = PLATE
     contact_radius_deformed: float = math.nan
     contact_pressure_pole: float = math.nan
     contact_pressure_edge: float = math.nan

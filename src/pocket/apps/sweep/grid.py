@@ -59,7 +59,7 @@ from concurrent.futures import as_completed
 
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
-from pocket.core.indenters import FLAT, Indenter, as_indenter
+from pocket.core.indenters import PLATE, Indenter, as_indenter
 from pocket.core.inputs import check_force, check_positive
 from pocket.core.materials import Material, as_material, mooney_rivlin
 from pocket.core.states import CHECKS, CompressedState
@@ -193,7 +193,7 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     if fluid.is_gas:
         options["fluid"] = fluid
     indenter = as_indenter(indenter)
-    if indenter != FLAT:
+    if indenter != PLATE:
         options["indenter"] = indenter
     cells = {m: identity(solver, options, m, fluid, indenter) for m in materials}
     keys = [key({**cells[m], "alpha": _alpha_cell(m), "pressure_initial": p, "force": f})

@@ -45,7 +45,7 @@ import stat
 
 from pocket.core.errors import InputError, OutputError
 from pocket.core.fluids import Fluid
-from pocket.core.indenters import FLAT, Indenter
+from pocket.core.indenters import PLATE, Indenter
 from pocket.core.materials import Material
 from pocket.core.states import CHECKS, CompressedState
 
@@ -59,7 +59,7 @@ try:
 except ImportError:  # not a POSIX system: no lock
     fcntl = None  # type: ignore[assignment]
 
-__all__ = ["COLUMNS", "CONTACT", "IDENTITY", "STATUSES", "Journal", "identity", "indenter_text", "key", "line",
+__all__ = ["COLUMNS", "CONTACT", "IDENTITY", "STATUSES", "Journal", "identity", "key", "line",
            "options_text", "rows_csv"]
 
 #: what identifies a point besides alpha, Phat_I and Fhat: its solver, rubber, fluid and indenter
@@ -96,30 +96,14 @@ def options_text(options: dict) -> str:
     return " ".join(_option(name, options[name]) for name in sorted(options) if name not in ("fluid", "indenter"))
 
 
-def indenter_text(indenter: Indenter) -> str:
-    """The ``indenter`` cell: ``plate``, ``sphere K=...`` (K = R_s / R written exactly) or ``profile
-    sha256=...`` (a profile table's content in units of R, ``pocket.core.profiles.Shape.digest``: the same
-    table read from another file or folder is the same indenter); an InputError for an indenter a sweep
-    cannot record as text (a profile given as functions)."""
-    if indenter == FLAT:
-        return "plate"
-    if indenter.kind == "sphere":
-        return f"sphere K={indenter.number('radius')!r}"
-    digest = getattr(dict(indenter.params).get("shape"), "digest", "")
-    if indenter.kind == "profile" and digest:
-        return f"profile sha256={digest}"
-    raise InputError(f"a sweep records its indenter as text (the plate, a sphere or a profile table), not a "
-                     f"{indenter.kind} given as functions")
-
-
-def identity(solver: str, options: dict, material: Material, fluid: Fluid, indenter: Indenter = FLAT) -> dict:
+def identity(solver: str, options: dict, material: Material, fluid: Fluid, indenter: Indenter = PLATE) -> dict:
     """The IDENTITY cells (text) of a point: ``solver`` its name and ``options`` its options (as
     ``options_text``), ``material`` a ``Material`` (its stresses written in units of mu_0, ``in_mu0``; a
     Mooney-Rivlin rubber given by its alpha: that alpha has its own column, and the parameters' cells stay
-    empty), ``fluid`` a ``Fluid``, ``indenter`` as ``indenter_text``."""
+    empty), ``fluid`` a ``Fluid``, ``indenter`` as its ``journal`` (``pocket.core.indenters``)."""
     cells = dict.fromkeys(IDENTITY, "")
     law = material.law if material.prestretch == 1.0 else f"{material.law} prestretch={material.prestretch!r}"
-    cells.update(solver=solver, solver_options=options_text(options), material=law, indenter=indenter_text(indenter))
+    cells.update(solver=solver, solver_options=options_text(options), material=law, indenter=indenter.journal())
     if material.exact_alpha is None:
         cells.update({parameter_column(name): _cell(value) for name, value in in_mu0(material).params})
     cells.update({k: v if isinstance(v, str) else repr(v) for k, v in fluid.describe().items()})

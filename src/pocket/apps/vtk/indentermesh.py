@@ -2,14 +2,15 @@
 
 The surface is z = h + z(rho) (``pocket.core.indenters``), revolved about the axis like the sheet
 (``pocket.apps.vtk.revolve``), h the height of the indenter's lowest point: a compressed state's ``height``
-(units R). Its meridian is sampled at ``RINGS`` radii rho_k = reach sin(pi k / (2 (RINGS - 1))), denser
-towards the rim where a sphere steepens, out to ``reach``: the flat plate is a disc of radius ``reach``
-(``write_series`` takes ``PLATE_MARGIN`` times the widest point of the sheet in the series, so the disc
-covers the pocket), a sphere is drawn to its equator or ``reach``, a profile to its last radius or
+(units R). Its meridian is the indenter's own (``Indenter.meridian``) at ``RINGS`` radii, denser towards the
+rim where a sphere steepens, out to its reach or ``reach``, whichever is nearer: the flat plate is a disc of
+radius ``reach`` (``write_series`` takes ``PLATE_MARGIN`` times the widest point of the sheet in the series, so
+the disc covers the pocket), a sphere is drawn to its equator or ``reach``, a profile to its last radius or
 ``reach``. Every step of a series has the same points, only their height changes.
 
-Field data: ``height`` (h, units R), ``indenter_code`` (the kind's position in
-``pocket.core.indenters.KINDS``) and each numeric parameter (a sphere's ``radius``, units R).
+Field data: ``height`` (h, units R), ``indenter_code`` (the indenter's position in
+``pocket.core.indenters.INDENTERS``) and each numeric parameter (``Indenter.numbers``: a sphere's ``radius``,
+units R).
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from __future__ import annotations
 import meshio
 import numpy as np
 
-from pocket.core.indenters import KINDS, Indenter
+from pocket.core.indenters import INDENTERS, Indenter
 
 from .revolve import revolve
 
@@ -35,23 +36,12 @@ def reach_of(profiles) -> float:
     return PLATE_MARGIN * max(1.0, *(float(np.max(p.rho)) for p in profiles))
 
 
-def _extent(indenter: Indenter, reach: float) -> float:
-    """The largest radius at which the indenter's surface exists, up to ``reach``."""
-    if indenter.kind == "sphere":
-        return min(reach, indenter.number("radius"))
-    if "shape" in dict(indenter.params):
-        return min(reach, indenter.shape().extent)
-    return reach
-
-
 def indenter_mesh(indenter: Indenter, height: float, reach: float, *, segments: int = 64) -> meshio.Mesh:
     """The lower surface of ``indenter`` with its lowest point at ``height`` (units R) out to ``reach`` (units R),
     revolved with ``segments`` points per ring, with its field data (module docstring)."""
-    rho = _extent(indenter, reach) * np.sin(0.5 * np.pi * np.linspace(0.0, 1.0, RINGS))
-    rho[-1] = _extent(indenter, reach)  # sin(pi/2) is 1 only to rounding
-    eta = height + indenter.height(rho)
-    surface = revolve(rho, eta, segments)
+    rho, z = indenter.meridian(reach, RINGS)
+    surface = revolve(rho, height + z, segments)
     fields = {"height": np.array([float(height)]),
-              "indenter_code": np.array([float(tuple(KINDS).index(indenter.kind))])}
-    fields.update({name: np.array([value]) for name, value in indenter.params if isinstance(value, float)})
+              "indenter_code": np.array([float(tuple(INDENTERS).index(indenter.name))])}
+    fields.update({name: np.array([value]) for name, value in indenter.numbers().items()})
     return meshio.Mesh(surface.points, surface.cells, field_data=fields)

@@ -12,10 +12,8 @@ A flag the shape does not take, a missing one, a radius outside K = 1e-3 to 1e3
 
 from __future__ import annotations
 
-from pocket.apps.indenters import SHAPES
 from pocket.core.errors import InputError
-from pocket.core.indenters import FLAT, Indenter, check_sphere_radius, profile, sphere
-from pocket.core.profiles import read_csv
+from pocket.core.indenters import INDENTERS, Indenter
 
 from .common import model_value, path_name, physical_help
 
@@ -28,7 +26,7 @@ def add_indenter_flags(parser, *, command: str | None = None) -> None:
     """Add ``--indenter``, ``--indenter-radius`` and ``--indenter-file`` to ``parser``: in units of R for
     ``command``, the name of a command in the model's units; a length and a file in any length unit if None
     (``design``)."""
-    parser.add_argument("--indenter", choices=tuple(SHAPES), default="plate",
+    parser.add_argument("--indenter", choices=tuple(INDENTERS), default="plate",
                         help="what presses: the flat plate (default), a sphere (a fingertip) or a profile")
     if command is None:
         parser.add_argument(_FLAGS["radius"], metavar="LENGTH",
@@ -44,28 +42,24 @@ def add_indenter_flags(parser, *, command: str | None = None) -> None:
                         "rows of two numbers, from the axis outwards")
 
 
-def _given(args) -> dict:
-    """{key: value} of the size flags given, checked against the shape: an InputError for one it does not
-    take or lacks."""
-    shape = args.indenter
+def _given(args) -> tuple[type[Indenter], dict]:
+    """The indenter class ``--indenter`` names and {key: value} of the size flags given, checked against its
+    ``keys``: an InputError for one it does not take or lacks."""
+    kind = INDENTERS[args.indenter]
     values = {"radius": args.indenter_radius, "file": args.indenter_file}
     for key, value in values.items():
-        if value is not None and key not in SHAPES[shape]:
-            raise InputError(f"{_FLAGS[key]} is given, but a {shape} indenter takes "
-                             f"{' '.join(_FLAGS[k] for k in SHAPES[shape]) or 'no size'}")
-        if value is None and key in SHAPES[shape]:
-            raise InputError(f"--indenter {shape} needs {_FLAGS[key]}")
-    return {k: v for k, v in values.items() if v is not None}
+        if value is not None and key not in kind.keys:
+            raise InputError(f"{_FLAGS[key]} is given, but a {kind.name} indenter takes "
+                             f"{' '.join(_FLAGS[k] for k in kind.keys) or 'no size'}")
+        if value is None and key in kind.keys:
+            raise InputError(f"--indenter {kind.name} needs {_FLAGS[key]}")
+    return kind, {k: v for k, v in values.items() if v is not None}
 
 
 def indenter_of(args) -> Indenter:
-    """The indenter the dimensionless flags ``args`` give (``compress``)."""
-    values = _given(args)
-    if args.indenter == "sphere":
-        return sphere(check_sphere_radius(_FLAGS["radius"], values["radius"]))
-    if args.indenter == "profile":
-        return profile(read_csv(values["file"]))
-    return FLAT
+    """The indenter the dimensionless flags ``args`` give (``compress``, ``sweep``)."""
+    kind, values = _given(args)
+    return kind.from_model(values, flag)
 
 
 def flag(key: str) -> str:
@@ -73,8 +67,7 @@ def flag(key: str) -> str:
     return _FLAGS[key]
 
 
-def indenter_table(args) -> dict | None:
-    """The physical flags ``args`` as an ``[indenter]`` table (``pocket.apps.indenters.parse``, ``design``), None
-    for the plate."""
-    values = _given(args)
-    return None if args.indenter == "plate" else {"shape": args.indenter, **values}
+def indenter_table(args) -> dict:
+    """The physical flags ``args`` as an ``[indenter]`` table (``pocket.apps.indentertable.parse``, ``design``)."""
+    kind, values = _given(args)
+    return {"shape": kind.name, **values}
