@@ -6,7 +6,8 @@ it stands above). The contact zone's psi' = -lambda_1 kappa_1(rho) is integrated
 
 - ``Surface``, any convex surface of revolution (a profile given as functions, or a new indenter): scipy's
   DOP853 (``solve_ivp``, the method and tolerances of the compiled integrator) with the indenter's curvature,
-  a Python function (about 100 times slower than compiled code). Past its reach the curvature is read at the
+  a Python function (about 100 times slower than compiled code), stopping at its knots as a table's
+  integration does (an event at each, none for functions). Past its reach the curvature is read at the
   reach, so that the margin (reach - rho_c) crosses zero smoothly (``surface``'s docstring);
 - ``Table``, a profile given as a table: the compiled integrator (``pocket.shooting.integrator``), evaluating
   the table's spline itself (``equations.table_curvature``). The spline's third derivative jumps at its rows,
@@ -84,13 +85,26 @@ class Surface:
             return out
 
         tol = problem.tolerance
-        sol = solve_ivp(f, (r0, a), y0, method="DOP853", rtol=tol.rtol, atol=tol.atol,
-                        max_step=PROFILE_STEP if store else np.inf)
+        r, y, pieces, knots = r0, y0, [], [k for k in self.knots if k > y0[0]]
+        while True:
+            event = None
+            if knots:
+                def event(_, v, k=knots[0]):
+                    return v[0] - k
+                event.terminal, event.direction = True, 1.0
+            sol = solve_ivp(f, (r, a), y, method="DOP853", rtol=tol.rtol, atol=tol.atol, events=event,
+                            max_step=PROFILE_STEP if store else np.inf)
+            pieces.append(np.column_stack([sol.t, sol.y.T])[(1 if pieces else 0):])
+            if sol.status != 1:  # a, or a failure
+                break
+            r, y = float(sol.t_events[0][0]), sol.y_events[0][0]
+            pieces[-1] = np.vstack([pieces[-1], [r, *y]])
+            knots.pop(0)
         y = sol.y[:, -1]
-        steps = np.column_stack([sol.t, sol.y.T]) if store else np.empty((0, 6))
+        steps = np.concatenate(pieces) if store else np.empty((0, 6))
         if not (sol.success and np.all(np.isfinite(y))):
             return STEPS, y, steps
-        if np.min(sol.y[2]) <= -0.5 * math.pi:
+        if any(np.min(piece[:, 3]) <= -0.5 * math.pi for piece in pieces):
             return FOLD, y, steps
         t1 = tensions(y[3], y[0] / a, code, params)[0]
         return (OK if t1 > 0.0 else SLACK), y, steps
@@ -180,4 +194,4 @@ def surface_of(indenter: Indenter) -> Surface:
     shape = _shape(indenter)
     if shape is not None and shape.pieces is not None:
         return Table(indenter, shape)
-    return Surface(indenter, _reach(indenter))
+    return Surface(indenter, _reach(indenter), () if shape is None else shape.knots)
