@@ -58,7 +58,7 @@ whose strain is wrong by up to rtol / s_0 of itself, and not smoothly: the zone 
 steps so small that their error estimates are round-off, so its step sequence, and that error with it,
 jumps between neighbouring unknowns (measured: 2e-8 of noise in the residuals, about 1000 times the Newton
 tolerance, at Phat_I = 2.3e-4, K = 2.85, where the continuation in the force stalled). So the sphere's
-contact zone is integrated to rtol s_0 (``contact_tolerance``, its absolute tolerances scaled alike): its
+contact zone is integrated to rtol s_0 (``surfaces.contact_tolerance``, its absolute tolerances scaled alike): its
 error then enters the residuals at the relative size rtol, as the free sheet's does; never tighter than
 ``pocket.core.inputs.TOLERANCE_FLOOR``, a few ulps, below which no integration resolves lambda_1,
 and never looser than rtol (s_0 >= 1).
@@ -105,14 +105,13 @@ import math
 
 import numpy as np
 
-from pocket.core.inputs import TOLERANCE_FLOOR
 from pocket.core.states import CompressedState
 
 from . import surfaceend, surfacestate
 from .contact import Contact
 from .equations import pole_state
 from .integrator import OK, integrate
-from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, Tolerance
+from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE
 from .surfaces import Surface, surface_of
 from .tensions import tensions
 
@@ -165,14 +164,6 @@ class SurfaceProblem(Contact):
         if not a < 1.0:
             return None
         return q, lc, a, self.law.pressure_factor * self.inflated.pressure * q
-
-    @property
-    def contact_tolerance(self) -> Tolerance:
-        """The sphere's contact zone's integration tolerances: ``tolerance`` scaled by the pole strain s_0, to
-        rtol s_0 within [``TOLERANCE_FLOOR``, rtol] (module docstring)."""
-        tol = self.tolerance
-        rtol = min(tol.rtol, max(tol.rtol * self.strain, TOLERANCE_FLOOR))
-        return Tolerance(rtol, tol.atol * (rtol / tol.rtol))
 
     def _contact(self, lc, a, store):
         """(status, y(a), steps) of the contact zone from the pole to the edge r = a."""

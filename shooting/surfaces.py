@@ -9,14 +9,14 @@ it stands above). The contact zone's psi' = -lambda_1 kappa_1(rho) is integrated
   a Python function (about 100 times slower than compiled code), stopping at its knots as a table's
   integration does (an event at each, none for functions). Past its reach the curvature is read at the
   reach, so that the margin (reach - rho_c) crosses zero smoothly (``surface``'s docstring);
-- ``Table``, a profile given as a table: the compiled integrator (``pocket.shooting.integrator``), evaluating
-  the table's spline itself (``equations.table_curvature``). The spline's third derivative jumps at its rows,
+- ``TableSurface``, a profile given as a table: the compiled integrator (``pocket.shooting.integrator``),
+  evaluating the table's spline itself (``equations.table_curvature``). The spline's third derivative jumps at its rows,
   so the curvature's slope jumps there: an 8th-order step across such a knot is only 2nd-order accurate, its
   error unseen by the estimate, and the residuals turn noisy above the Newton tolerance; the integration
   stops at each row (a step shortened to end there) and restarts there;
-- ``Sphere``, the surface of constant curvature 1/K: the compiled integrator with psi' = -lambda_1 / K, to the
-  contact tolerance rtol s_0 (``SurfaceProblem.contact_tolerance``), and its closed forms: the contact
-  pressure p + (t1 + t2) / K, the cap's area 2 K^2 (1 - cos(phi_c)), the end at its equator.
+- ``SphereSurface``, the surface of constant curvature 1/K: the compiled integrator with psi' = -lambda_1 / K,
+  to the contact tolerance rtol s_0 (``contact_tolerance``), and its closed forms: the contact pressure
+  p + (t1 + t2) / K, the cap's area 2 K^2 (1 - cos(phi_c)), the end at its equator.
 
 ``surface_of`` chooses; nothing else asks which indenter it has. The indenter's particular attributes are read
 by ``_reach`` and ``_shape`` alone.
@@ -29,14 +29,15 @@ import math
 import numpy as np
 
 from pocket.core.indenters import Indenter
+from pocket.core.inputs import TOLERANCE_FLOOR
 from pocket.core.profiles import Shape
 
 from .equations import rhs
 from .integrator import FOLD, OK, SLACK, STEPS, integrate
-from .shots import PROFILE_STEP
+from .shots import PROFILE_STEP, Tolerance
 from .tensions import tensions
 
-__all__ = ["Surface", "Table", "Sphere", "surface_of"]
+__all__ = ["Surface", "TableSurface", "SphereSurface", "contact_tolerance", "surface_of"]
 
 
 def _reach(indenter: Indenter) -> float:
@@ -140,7 +141,7 @@ class Surface:
         return min((self.reach - edge[0]) / self.reach, (0.5 * math.pi + edge[2]) / (0.5 * math.pi))
 
 
-class Table(Surface):
+class TableSurface(Surface):
     """A profile given as a table, ``shape``: integrated by the compiled integrator on its spline, stopping at
     each row (module docstring)."""
 
@@ -155,7 +156,7 @@ class Table(Surface):
         return status, y, steps
 
 
-class Sphere(Surface):
+class SphereSurface(Surface):
     """The sphere of radius K = ``reach``: constant curvature 1/K, integrated by the compiled integrator to the
     contact tolerance, with its closed forms (module docstring)."""
 
@@ -168,7 +169,7 @@ class Sphere(Surface):
         return self.reach
 
     def contact(self, problem, y0, r0, a, store):
-        tol = problem.contact_tolerance
+        tol = contact_tolerance(problem)
         status, _, y, steps = integrate(y0, r0, problem.law, 0.0, rtol=tol.rtol, atol=tol.atol, store=store,
                                         r_end=a, wrap=1.0 / self.reach, max_step=PROFILE_STEP if store else np.inf)
         return status, y, steps
@@ -186,12 +187,21 @@ class Sphere(Surface):
         return 0.5 * math.pi + edge[2]
 
 
+def contact_tolerance(problem) -> Tolerance:
+    """The sphere's contact zone's integration tolerances: ``problem.tolerance`` scaled by the pole strain s_0, to
+    rtol s_0 within [``TOLERANCE_FLOOR``, rtol] (``pocket.shooting.surface``, "Tolerance of the sphere's contact
+    zone")."""
+    tol = problem.tolerance
+    rtol = min(tol.rtol, max(tol.rtol * problem.strain, TOLERANCE_FLOOR))
+    return Tolerance(rtol, tol.atol * (rtol / tol.rtol))
+
+
 def surface_of(indenter: Indenter) -> Surface:
     """The surface of the curved ``indenter`` with its way of integration (module docstring): the sphere's closed
     forms, a table's compiled spline, or scipy on the indenter's curvature for any other."""
     if indenter.kind == "sphere":
-        return Sphere(indenter, _reach(indenter))
+        return SphereSurface(indenter, _reach(indenter))
     shape = _shape(indenter)
     if shape is not None and shape.pieces is not None:
-        return Table(indenter, shape)
+        return TableSurface(indenter, shape)
     return Surface(indenter, _reach(indenter), () if shape is None else shape.knots)

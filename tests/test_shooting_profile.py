@@ -1,4 +1,4 @@
-"""The shooting solver under a user's profile (``pocket.shooting.profile``): every check computes what it compares.
+"""The shooting solver under a user's profile (``pocket.shooting.surface``): every check computes what it compares.
 
 - the sphere given as exact profile functions reproduces the sphere's states (to 1e-9);
 - the sphere given as a table reproduces them to the interpolation's error, bounded from the orders

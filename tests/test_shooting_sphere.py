@@ -1,4 +1,4 @@
-"""The shooting solver under a sphere (``pocket.shooting.sphere``): every check computes what it compares.
+"""The shooting solver under a sphere (``pocket.shooting.surface``): every check computes what it compares.
 
 - R_s -> infinity recovers the flat plate at first order in R/R_s (the fitted rate is printed);
 - the force two ways: the contact cap as a free body (what the solver imposes) against the integral of
