@@ -21,7 +21,7 @@ import subprocess
 import sys
 
 import numpy as np
-from pocket.shooting import rangeend
+from pocket.shooting import end as ends
 from pocket.shooting.equations import pole_state
 from pocket.shooting.laws import law_of
 from pocket.shooting.shots import R_POLE
@@ -109,7 +109,7 @@ def main():
     t_one = median_time(lambda: shooting.compress(ALPHA, PHAT, 0.19), 11)
     forces = np.linspace(0.025, 1.0, 40)
     t_curve = median_time(lambda: shooting.compression_curve(ALPHA, PHAT, forces), 11)
-    t_end = median_time(lambda: (rangeend._ENDS.clear(), shooting.range_end(ALPHA, PHAT)), 5)
+    t_end = median_time(lambda: (ends._ENDS.clear(), shooting.range_end(ALPHA, PHAT)), 5)
 
     print(f"shooting (alpha = {ALPHA}, Phat_I = {PHAT}, rtol 1e-10), medians; load average {load:.1f} on "
           f"{os.cpu_count()} cores:")

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 
 import numpy as np
-from pocket.shooting import rangeend
+from pocket.shooting import end as ends
 from timing import median_time
 
 from pocket import shooting
@@ -36,7 +36,7 @@ def main():
             forces = np.linspace(0.025, 0.9, 40) * min(1.0, end)
             t_curve = median_time(lambda f=forces, i=indenter, g=fluid: shooting.compression_curve(
                 ALPHA, PHAT, f, fluid=g, indenter=i), 5)
-            t_end = median_time(lambda i=indenter, g=fluid: (rangeend._ENDS.clear(), shooting.range_end(
+            t_end = median_time(lambda i=indenter, g=fluid: (ends._ENDS.clear(), shooting.range_end(
                 ALPHA, PHAT, fluid=g, indenter=i)), 3)
             plate_curve = plate_curve or t_curve
             print(f"    {name:20s} 40-point curve {t_curve * 1e3:8.1f} ms ({t_curve / plate_curve:4.1f}x the "

@@ -5,15 +5,16 @@ several pressures by one march along the first branch,
 ``compress`` / ``compression_curve`` step 2 (fixed volume, a flat frictionless
 plate, a sphere or a user's profile, force given), ``range_end`` the force at which step 2 leaves the
 model (the free sheet reaches the clamp plane; under a sphere also its equator, under a profile its
-end, ``pocket.shooting.sphereend``), ``compress_height`` the state with the indenter at a given height
+end, ``pocket.shooting.surfaceend``), ``compress_height`` the state with the indenter at a given height
 (travel control, ``pocket.shooting.travel``).
 The rubber is any law of ``pocket.core.materials`` (a number is a Mooney-Rivlin
 alpha, ``mooney_rivlin``), its tensions derived from its strain energy in
 ``pocket.shooting.tensions``; a compression's fluid is a liquid or a gas sealed at the
-initial pressure (``pocket.core.fluids``; ``pocket.shooting.problem``). The states are
+initial pressure (``pocket.core.fluids``; ``pocket.shooting.contact``). The states are
 ``pocket.core.states`` containers; the equations and their derivation are in
-``pocket.shooting.equations``, the range end in ``pocket.shooting.rangeend``. ``SOLVER`` is
-its record (entry points and options, ``pocket.core.solver``).
+``pocket.shooting.equations``, the contact problems in ``pocket.shooting.plate`` and
+``pocket.shooting.surface``, their range ends in ``pocket.shooting.plateend`` and
+``pocket.shooting.surfaceend``. ``SOLVER`` is its record (entry points and options, ``pocket.core.solver``).
 
 The entry points, with their types, are in ``pocket.shooting.api``; they are imported on first use, so
 that reading ``SOLVER`` (the command line does, to build its flags) costs nothing.

@@ -1,30 +1,31 @@
-"""Step 2, compression at fixed volume by a flat frictionless plate, force given.
+"""Step 2, compression at fixed volume by a rigid frictionless indenter, force given.
 
 The indenter is an argument (``pocket.core.indenters``): this solver poses the flat plate,
-its default, and the sphere (``pocket.shooting.sphere``, whose problem the continuation below
-solves the same way; its range end is ``pocket.shooting.sphereend``), and refuses another kind
-(``pocket.shooting.problem.CONTACTS``).
+its default (``pocket.shooting.plate``), and every curved indenter it has an entry for, a sphere or
+a user's profile (``pocket.shooting.surface``, whose problem the continuation below solves the same
+way), and refuses another kind (``pocket.shooting.problem.CONTACTS``).
 
-The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.problem``; the
-fluid sealed in the pocket (a liquid: fixed volume; a gas: the polytropic law) enters only its
-volume residual.
+The shooting problem (unknowns, residuals, their scaling) is ``pocket.shooting.contact`` and the
+indenter's formulation; the fluid sealed in the pocket (a liquid: fixed volume; a gas: the
+polytropic law) enters only its volume residual.
 Each force is solved by the damped Newton-Broyden method of
 ``pocket.shooting.newton``, by continuation in the force from the inflated state:
 forces are taken in increasing order, each seeded by secant extrapolation from
 the last two states and the last Jacobian. A step that does not converge is
 halved (and the step grows again after successes). Near a fold of the force
-(the end of the range for some alpha < 0, ``pocket.shooting.rangeend``) continuation in
+(the end of the range for some alpha < 0, ``pocket.shooting.plateend``) continuation in
 the force stalls; there the state is found on the branch by its clamp angle instead.
 A solve fails, with a ConvergenceError saying at which force, from which force, with
 what residual and why, only when both fail and the step is below 1e-9 of the force.
 
 The model's range ends at the force Fhat_end where the free sheet reaches the
-clamp plane (``pocket.shooting.rangeend``; psi(1) = pi). A force above it is an
+clamp plane (``pocket.shooting.plateend``; psi(1) = pi; under a curved indenter also the ends
+of ``pocket.shooting.surfaceend``). A force above it is an
 OutOfRangeError quoting Fhat_end, the same number whatever force was asked; a
 force up to it is solved. Fhat_end is computed (once, cached) only when it can
 matter: when a step fails, or when a state's clamp angle psi(1) comes within
 1e-6 rad (or 1e4 rtol) of pi, or its indenter's lowest point lies below the clamp plane, or its
-contact edge comes within 1e-6 (or 1e4 rtol) of the end of a profile (``pocket.shooting.profile``:
+contact edge comes within 1e-6 (or 1e4 rtol) of the end of a profile (``pocket.shooting.surface``:
 there the shots go on solving past the profile's last radius, so nothing else would stop them).
 """
 
@@ -43,19 +44,17 @@ from pocket.core.inputs import check_force, check_positive
 from pocket.core.states import CompressedState
 
 from . import newton
+from .contact import Contact
+from .end import end_of
 from .inflation import GEOMETRIES, inflate
-from .integrator import OK, STATUS
 from .laws import law_of
-from .problem import Problem, contact_of
-from .profile import ProfileProblem
-from .rangeend import end_of
-from .shots import profile_from_steps, tension_minima
+from .problem import contact_of
 
-__all__ = ["compress", "compression_curve", "plate_state", "final_shots"]
+__all__ = ["compress", "compression_curve"]
 
 _MIN_STEP = 1e-9  # smallest force step, relative to the force, before a solve is declared failed
 _FOLD_STEP = 1e-3  # near a fold of the force (within 10 such steps of it), the step below which the state is
-# sought on the end's branch (``Problem.on_branch``)
+# sought on the end's branch (``Contact.on_branch``)
 
 
 def _band(rtol):
@@ -64,7 +63,7 @@ def _band(rtol):
 
 
 def _beyond(force, problem, seed):
-    """The range end of ``problem`` (``rangeend.End``); OutOfRangeError if ``force`` is past it."""
+    """The range end of ``problem`` (``end.End``); OutOfRangeError if ``force`` is past it."""
     end = end_of(problem, seed)
     if force > end.force:
         where = (end.reason if not end.fold else
@@ -75,10 +74,10 @@ def _beyond(force, problem, seed):
 
 def _past_the_profile(problem, force, x) -> None:
     """OutOfRangeError (``_beyond``, its end sought from inside the range) if ``force`` is past the range end and
-    its solved state x has the contact edge at or past the end of a profile (``ProfileProblem.end_margin`` within
-    ``_band``). Past its extent a profile's curvature is read at the extent (``pocket.shooting.profile``), so such
+    its solved state x has the contact edge at or past the end of a profile (``Contact.past_its_end`` within
+    ``_band``). Past its extent a profile's curvature is read at the extent (``pocket.shooting.surface``), so such
     a state solves with no failed step: this is what keeps it from being returned."""
-    if isinstance(problem, ProfileProblem) and problem.end_margin(problem.shoot(x, force)[3]) <= _band(problem.rtol):
+    if problem.past_its_end(force, x, _band(problem.rtol)):
         _beyond(force, problem, None)
 
 
@@ -174,49 +173,7 @@ def _failed(problem, sol, f_try, f0, force, more):
         + more, load=f_try, iterations=sol.evaluations, residual=sol.residual)
 
 
-def final_shots(force, status, profile_status) -> None:
-    """A ConvergenceError if the final shot at ``force`` (its ``status``) or the shot storing its profile
-    did not reach the clamp."""
-    for what, code in (("final", status), ("profile", profile_status)):
-        if code != OK:
-            raise ConvergenceError(f"compression at force = {force!r}: the {what} shot {STATUS[code]}", load=force)
-
-
-def plate_state(problem, force, x, fluid) -> tuple[CompressedState, float]:
-    """The compressed state under the plate at ``force`` (as given, ``fluid`` too) for the solved unknowns
-    x, and its clamp angle psi(1) (``Problem.compressed``)."""
-    q, lc, a, p = problem.geometry(x, force)
-    status, y, _ = problem.shoot(x, force)
-    profile_status, _, steps = problem.shoot(x, force, store=20000)
-    final_shots(force, status, profile_status)
-    inflated = problem.inflated
-    height = -y[1]
-    profile = profile_from_steps(steps, problem.law, lc, contact_radius=a)
-    low = tension_minima(profile, steps, problem.law, p, problem.tolerance)
-    state = CompressedState(
-        pressure_initial=inflated.pressure,
-        force=force,
-        pressure=inflated.pressure * q,
-        pressure_ratio=q,
-        contact_area=(lc * a) ** 2,
-        contact_radius=a,
-        stretch_contact=lc,
-        height=height,
-        height_ratio=height / inflated.height,
-        volume=y[4],
-        profile=profile,
-        inflated=inflated,
-        solver="shooting",
-        material=inflated.material,
-        fluid=fluid,
-        tension_1_min=low[0],
-        tension_2_min=low[1],
-        indenter=problem.indenter,
-    )
-    return state, y[2]
-
-
-def _uncompressed(problem: Problem, force: float, fluid) -> CompressedState:
+def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
     """Fhat = 0: the inflated state itself, seen as a compressed state with no contact."""
     inflated = problem.inflated
     return CompressedState(

@@ -80,7 +80,7 @@ def table_curvature(rho, breaks, coef):
     """The meridional curvature kappa_1 = z'' / (1 + z'^2)^(3/2) (units 1/R) at ``rho`` of a profile table whose
     spline z = g(s), s = rho^2, has ``breaks`` (shape (n,)) and ``coef`` (shape (4, n - 1), scipy's PPoly
     layout: ``pocket.core.profiles.Shape.pieces``), read at the table's extent past it (as
-    ``ProfileProblem.curvature``): z' = 2 rho g'(s), z'' = 2 g'(s) + 4 s g''(s), the piece found as PPoly finds it
+    ``Surface.curvature``): z' = 2 rho g'(s), z'' = 2 g'(s) + 4 s g''(s), the piece found as PPoly finds it
     (the one starting at or below s; the last past the end)."""
     s = min(rho * rho, breaks[-1])
     lo, hi = 0, breaks.size - 2  # bisection for the last piece starting at or below s (np.searchsorted would
@@ -102,8 +102,8 @@ def table_curvature(rho, breaks, coef):
 def derivatives(r, y, code, params, p, wrap, breaks, coef, out):
     """``rhs`` for the free sheet (``wrap`` = 0, ``breaks`` empty), or for the sheet lying on a sphere of
     curvature ``wrap`` = 1/R_s > 0 (units 1/R): there psi' = -lambda_1 / R_s replaces normal equilibrium
-    (``pocket.shooting.sphere``), the other four equations unchanged; or on a profile table (``breaks`` and
-    ``coef`` its spline, ``table_curvature``): psi' = -lambda_1 kappa_1(rho) (``pocket.shooting.profile``)."""
+    (``pocket.shooting.surface``), the other four equations unchanged; or on a profile table (``breaks`` and
+    ``coef`` its spline, ``table_curvature``): psi' = -lambda_1 kappa_1(rho) (``pocket.shooting.surface``)."""
     rhs(r, y, code, params, p, out)
     if breaks.size > 0:
         out[2] = -y[3] * table_curvature(y[0], breaks, coef)

@@ -23,7 +23,7 @@ under pressure, and a compressive T_1 would wrinkle the sheet radially: a tensio
 membrane, outside this model. So a shot that goes slack is a trial outside the
 model's domain, which the root finders step back from (inflation reads it as too
 much pressure for the pole stretch; Newton halves its step), and a solve that cannot
-get past it fails with a ConvergenceError naming it (``Problem.failure``). Every
+get past it fails with a ConvergenceError naming it (``Contact.failure``). Every
 returned state comes from a final shot that reached the clamp with t1 > 0 at each
 step. A compressive T_2 does not stop the equations (t2 is only a load in them):
 such a state would be returned, flagged ``wrinkled`` with a warning (its smallest

@@ -2,7 +2,7 @@
 
 The force Fhat is the load this solver's equations take (``pocket.shooting.compression``). Along
 the first branch the indenter's height H/R falls strictly as the force grows from 0 (where it is
-the inflated height H0/R) to the end of the range Fhat_end (``pocket.shooting.rangeend``: the
+the inflated height H0/R) to the end of the range Fhat_end (``pocket.shooting.plateend``: the
 free sheet at the clamp plane, a force maximum, or under a sphere or a profile the end of what
 it can wrap). So a height h in [H(Fhat_end), H0] belongs to exactly one force of [0, Fhat_end],
 the root of H(Fhat) - h, found by Brent's method (``pocket.shooting.brent``) on that bracket,

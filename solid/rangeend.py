@@ -2,7 +2,7 @@ r"""The end of the solid's compression range, by the membrane solvers' rules, an
 
 The membrane's range ends where its sheet reaches the clamp plane (the free part, as under the plate; under
 a sphere also its pole, on the sphere's lowest point) or where its contact reaches the sphere's equator (a
-profile's end): ``pocket.shooting.rangeend`` and ``pocket.shooting.sphereend``. The solid's sheet has a
+profile's end): ``pocket.shooting.plateend`` and ``pocket.shooting.surfaceend``. The solid's sheet has a
 thickness. What it reports as the sheet is its mid-surface (a state's profile), and its clamp plane is the
 flat sheet's mid-plane z = 0, which its heights are measured from. So the solid's range ends where the
 first of these lengths (units R, positive inside the model: ``margins``) reaches zero:

@@ -165,9 +165,7 @@ def _cycles(package: str) -> list[str]:
 
 @pytest.mark.parametrize("package", [
     "pocket.core", "pocket.fem", "pocket.solid", "pocket.analytical", "pocket.apps", "pocket.validation",
-    "pocket.cli",
-    pytest.param("pocket.shooting", marks=pytest.mark.xfail(
-        strict=True, reason="the sphere's and the profile's formulations and the range's end import each other")),
+    "pocket.cli", "pocket.shooting",
 ])
 def test_no_import_cycle_inside_a_package(package):
     """No module of ``package`` imports itself back: each module can be read (and imported) after the ones it

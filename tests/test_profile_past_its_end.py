@@ -1,7 +1,7 @@
 """A profile whose range ends at its table's edge: a force past that end is refused by every solver.
 
 Under a short table (its last radius small beside the contact the force wants) the range ends where the sheet's
-contact edge reaches the table's last row (``pocket.shooting.profile``). Past its extent the shooting solver
+contact edge reaches the table's last row (``pocket.shooting.surface``). Past its extent the shooting solver
 reads the profile's curvature at the extent, so a state there solves with no failed step; it must be refused
 all the same, as the finite elements refuse it: one line naming the end, exit 2, and no warning of a library
 (the contact area's quadrature once ran past the table and warned). Below the end both solve and agree.

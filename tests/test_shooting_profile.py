@@ -1,4 +1,4 @@
-"""The shooting solver under a user's profile (``pocket.shooting.profile``): every check computes what it compares.
+"""The shooting solver under a user's profile (``pocket.shooting.surface``): every check computes what it compares.
 
 - the sphere given as exact profile functions reproduces the sphere's states (to 1e-9);
 - the sphere given as a table reproduces them to the interpolation's error, bounded from the orders
@@ -16,8 +16,7 @@ import re
 
 import numpy as np
 import pytest
-from pocket.shooting.problem import contact_of
-from pocket.shooting.profile import PROFILE_END, PROFILE_POLE, ProfileProblem
+from pocket.shooting.problem import PROFILE_END, ProfileProblem, contact_of
 from scipy.integrate import simpson
 
 from pocket import shooting
@@ -131,7 +130,7 @@ def test_a_blunt_profile_ends_with_its_lowest_point_at_the_clamp_plane():
     end = shooting.range_end(ALPHA, PHAT, indenter=Profile(shape))
     state = shooting.compress(ALPHA, PHAT, end, indenter=Profile(shape))
     assert abs(state.height) < 1e-6 * state.inflated.height
-    with pytest.raises(OutOfRangeError, match=re.escape(PROFILE_POLE)):
+    with pytest.raises(OutOfRangeError, match=re.escape(ProfileProblem.POLE)):
         shooting.compress(ALPHA, PHAT, end * (1 + 1e-6), indenter=Profile(shape))
 
 

@@ -7,9 +7,10 @@ import types
 
 import numpy as np
 import pytest
-from pocket.shooting import rangeend
+from pocket.shooting import end as ends
+from pocket.shooting import plateend
 from pocket.shooting.laws import law_of
-from pocket.shooting.problem import Problem
+from pocket.shooting.plate import PlateProblem
 
 from pocket import shooting
 from pocket.apps import inverse
@@ -84,7 +85,7 @@ def test_computed_once_per_pocket(monkeypatch):
     """Exact answer: a second request (range_end, or forces past it) reads the cache."""
     shooting.range_end(0.4, 0.2)
     calls = []
-    monkeypatch.setattr(rangeend, "plate_end", lambda *a: calls.append(a))
+    monkeypatch.setattr(plateend, "plate_end", lambda *a: calls.append(a))
     shooting.range_end(0.4, 0.2)
     with pytest.raises(OutOfRangeError):
         shooting.compress(0.4, 0.2, 1e3)
@@ -97,11 +98,11 @@ def test_a_fold_ends_the_range_of_a_softening_rubber():
     carries less force, forces up to it solve on its rising side, forces above it do not."""
     alpha, pressure = -0.5, 0.1
     end = shooting.range_end(alpha, pressure)
-    problem = Problem(shooting.inflate(alpha, pressure), 1e-10, law_of(alpha))
-    info = rangeend.end_of(problem)
+    problem = PlateProblem(shooting.inflate(alpha, pressure), 1e-10, law_of(alpha))
+    info = ends.end_of(problem)
     assert info.fold and info.angle < math.pi and info.force == end
     for dtheta in (-1e-3, 1e-3):
-        sol = rangeend._at_angle(problem, info.angle + dtheta, list(info.path))
+        sol = plateend._at_angle(problem, info.angle + dtheta, list(info.path))
         assert sol.x[2] < end
     states = shooting.compression_curve(alpha, pressure, [0.5 * end, 0.999 * end, end])
     angles = [problem.clamp_angle([s.pressure_ratio, (s.stretch_contact - 1) / problem.strain], s.force)

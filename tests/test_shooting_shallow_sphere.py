@@ -2,11 +2,11 @@
 elements on every state inside the range, and on the range's end.
 
 A pocket inflated this little has a pole strain s_0 of 1e-3 or less, and the contact zone's end state enters the
-shooting residuals divided by s_0 (``pocket.shooting.sphere``, "Tolerance of the contact zone"); integrated to the
-free sheet's rtol the zone left noise in the residuals a thousand times the Newton tolerance, and the solver
-stalled inside its range (a compression exited 1, "meridian folded"; the range end was a ConvergenceError, and so
-was a force past it). The exact answers here are the FE solver's, an independent discretisation of the same
-membrane model, at its default mesh (256 P2 elements):
+shooting residuals divided by s_0 (``pocket.shooting.surface``, "Tolerance of the sphere's contact zone");
+integrated to the free sheet's rtol the zone left noise in the residuals a thousand times the Newton tolerance,
+and the solver stalled inside its range (a compression exited 1, "meridian folded"; the range end was a
+ConvergenceError, and so was a force past it). The exact answers here are the FE solver's, an independent
+discretisation of the same membrane model, at its default mesh (256 P2 elements):
 
 - inside the range both solve, and agree on every scalar they report to ``AGREE``;
 - the range end under such a sphere is the sphere's lowest point reaching the clamp plane (h = 0): the FE's is the

@@ -1,4 +1,4 @@
-"""The shooting solver under a sphere (``pocket.shooting.sphere``): every check computes what it compares.
+"""The shooting solver under a sphere (``pocket.shooting.surface``): every check computes what it compares.
 
 - R_s -> infinity recovers the flat plate at first order in R/R_s (the fitted rate is printed);
 - the force two ways: the contact cap as a free body (what the solver imposes) against the integral of
@@ -23,8 +23,7 @@ import math
 import numpy as np
 import pytest
 from pocket.shooting.laws import law_of
-from pocket.shooting.problem import contact_of
-from pocket.shooting.sphere import EQUATOR, POLE, TOUCH
+from pocket.shooting.problem import EQUATOR, SphereProblem, contact_of
 from scipy.integrate import simpson
 
 from pocket import fem, shooting
@@ -146,14 +145,14 @@ def test_small_force_pressure_rise_is_reciprocity_for_sphere_and_plate(fluid):
         assert _small_force_limit(fluid, indenter) == pytest.approx(expected, rel=1e-4)
 
 
-@pytest.mark.parametrize("radius, reason", [(0.05, EQUATOR), (0.2, POLE), (4.0, CLAMP_PLANE)])
+@pytest.mark.parametrize("radius, reason", [(0.05, EQUATOR), (0.2, SphereProblem.POLE), (4.0, CLAMP_PLANE)])
 def test_range_ends_are_named_with_their_force(radius, reason):
     end = shooting.range_end(ALPHA, PHAT, indenter=Sphere(radius))
     state = shooting.compress(ALPHA, PHAT, end, indenter=Sphere(radius))
     _physical(state)
     if reason == EQUATOR:
         assert state.contact_radius_deformed == pytest.approx(radius, rel=1e-6)
-    elif reason == POLE:
+    elif reason == SphereProblem.POLE:
         assert state.height == pytest.approx(0.0, abs=1e-8)
     else:  # the clamp carries no vertical force: F = P pi R^2
         assert end == pytest.approx(state.pressure_ratio, rel=1e-8)
@@ -171,7 +170,7 @@ def test_a_state_with_negative_contact_pressure_or_penetration_is_refused_by_nam
         problem.check(profile, np.where(profile.contact, -1.0, np.nan), state.height, 0.5)
     near = ~profile.contact & (profile.rho < 1.0)
     inside = dataclasses.replace(profile, eta=np.where(near, state.height + 1.0, profile.eta))
-    with pytest.raises(OutOfRangeError, match=TOUCH):
+    with pytest.raises(OutOfRangeError, match=SphereProblem.TOUCH):
         problem.check(inside, state.contact_pressure, state.height, 0.5)
 
 

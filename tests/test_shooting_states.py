@@ -58,12 +58,12 @@ def test_smallest_tensions_are_refined_between_steps(rubber):
     equals the minimum over the same free part integrated with steps of at most 1e-5 (independent
     sampling: 1e-9 relative), and lies at or below the profile's sampled minimum."""
     from pocket.shooting.laws import law_of
-    from pocket.shooting.problem import Problem
+    from pocket.shooting.plate import PlateProblem
     from pocket.shooting.tensions import tensions
 
     state = shooting.compress(rubber, 0.31, 3.0)
     law = law_of(rubber)
-    problem = Problem(state.inflated, 1e-10, law)
+    problem = PlateProblem(state.inflated, 1e-10, law)
     x = [state.pressure_ratio, (state.stretch_contact - 1) / problem.strain]
     _, lc, a, p = problem.geometry(x, state.force)
     from pocket.shooting.integrator import OK, integrate
@@ -84,11 +84,11 @@ def test_a_slack_shot_is_a_status_not_a_state():
     the compression residual there is undefined (None: outside the model's domain)."""
     from pocket.shooting.integrator import SLACK, integrate
     from pocket.shooting.laws import law_of
-    from pocket.shooting.problem import Problem
+    from pocket.shooting.plate import PlateProblem
     from pocket.shooting.shots import edge_state
 
     status, r, y, _ = integrate(edge_state(1.5, 0.3), 0.3, law_of(-0.5), 0.3, rtol=1e-10)
     assert status == SLACK and r < 1.0 and np.all(np.isfinite(y))
-    problem = Problem(shooting.inflate(-0.5, 0.1), 1e-10, law_of(-0.5))
+    problem = PlateProblem(shooting.inflate(-0.5, 0.1), 1e-10, law_of(-0.5))
     assert problem.residual(np.array([1.0, (1.5 - 1) / problem.strain]), 0.01) is None
     assert "tension vanished" in problem.failure()

@@ -81,8 +81,7 @@ def registered():
 #: each solver and its table of contact formulations, in which the cone is posed as that solver poses a profile
 SOLVERS = [
     pytest.param(fem, fem_api.CONTACTS, id="fem"),
-    pytest.param(shooting, shooting_problem.CONTACTS, id="shooting", marks=pytest.mark.xfail(
-        strict=True, reason="the shooting solver's profile formulation reads a profile's table, not any indenter")),
+    pytest.param(shooting, shooting_problem.CONTACTS, id="shooting"),
 ]
 
 

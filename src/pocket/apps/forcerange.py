@@ -7,7 +7,7 @@ the free part of the sheet reaches the clamp plane``. The end is the solver's ow
 ``range_end`` where it has one (shooting, analytical); the FE, which approximates
 the same membrane model as the shooting (to ~1e-9 at its default mesh), is given the
 shooting's, so that both quote the same end. At the clamp-plane end the plate carries
-all of P pi R^2, so the deformed contact area is pi R^2 (``shooting.rangeend``); an end
+all of P pi R^2, so the deformed contact area is pi R^2 (``shooting.plateend``); an end
 with less is a force maximum of the branch.
 """
 

@@ -1,25 +1,25 @@
-r"""The end of the compression range under a sphere: the largest force the pocket's first branch carries.
+r"""The end of the compression range under a curved indenter: the largest force the pocket's first branch carries.
 
-Four things end the model as the sphere presses further (``pocket.shooting.sphere``; under a user's
-profile, ``pocket.shooting.profile``, the same four with the equator replaced by the profile's end: its
-last radius, or where its slope turns vertical):
+Four things end the model as the indenter presses further (``pocket.shooting.surface``; the words of each
+are its problem's ``END``, ``POLE`` and ``TOUCH``):
 
-- the sheet would wrap past the sphere's equator (phi_c = pi/2): its lower cap ends there, and the
-  contact zone's shot stops (``integrator.FOLD``, psi = -pi/2);
+- the sheet would wrap past the end of the surface: a sphere's equator (phi_c = pi/2), where its lower cap
+  ends and the contact zone's shot stops (``integrator.FOLD``, psi = -pi/2); a profile's last radius, or
+  where its slope turns vertical (``Surface.end_margin``);
 - the free sheet would reach the clamp plane: psi(1) = pi, as under the plate
-  (``pocket.shooting.rangeend``); shots may turn past pi, so this margin is smooth across it;
-- the sphere's lowest point, and the sheet's pole on it, would reach the clamp plane (h = 0): a small
+  (``pocket.shooting.plateend``); shots may turn past pi, so this margin is smooth across it;
+- the indenter's lowest point, and the sheet's pole on it, would reach the clamp plane (h = 0): a small
   sphere pushed deep, whose cap dips below the clamp before the free sheet does;
-- the free sheet would touch the sphere outside the contact zone. For a sphere this cannot come
-  first: the free sheet leaves the edge tangent to the sphere and, while it rises (psi < 0), normal
-  equilibrium turns it down (psi' = lambda_1 (p - t2 sin(psi) / rho) / t1 > 0) while the sphere's
-  surface turns up, so the gap grows; once it descends it is below the contact edge and the sphere
+- the free sheet would touch the indenter outside the contact zone. For a convex surface this cannot come
+  first: the free sheet leaves the edge tangent to the surface and, while it rises (psi < 0), normal
+  equilibrium turns it down (psi' = lambda_1 (p - t2 sin(psi) / rho) / t1 > 0) while the convex
+  surface turns up, so the gap grows; once it descends it is below the contact edge and the surface
   above it. It is watched all the same, in every state the search solves: a state with the free sheet
-  inside the sphere is outside the model. Its margin is not the smallest gap, which is zero at the
+  inside the indenter is outside the model. Its margin is not the smallest gap, which is zero at the
   contact edge by tangency in every state, but that gap only where it is negative (else inf), so that
   the tangency is not mistaken for an end.
 
-A force maximum (a fold) may come first, as under the plate (``pocket.shooting.rangeend``: e.g. a
+A force maximum (a fold) may come first, as under the plate (``pocket.shooting.plateend``: e.g. a
 softening Mooney-Rivlin rubber, alpha = -0.5 at Phat_I = 0.1): past it the continuation in the force
 stalls with every margin well inside the model. The branch is then continued in the indenter's height
 h, which keeps falling through the fold: unknowns z = (x, Fhat), the force-controlled residuals and
@@ -31,13 +31,14 @@ method on h of Fhat(h) - Fhat.
 
 The end, computed. From a state at a small force, the force is continued with steps doubled after each
 success (each state solved by ``newton`` from a secant prediction) while every margin
-(``SphereProblem.margins``: pi/2 - phi_c, pi - psi(1), h, the smallest gap) stays positive; a step whose
+(``SurfaceProblem.margins``: the surface's end margin, pi - psi(1), h, the smallest gap) stays positive; a step whose
 state does not solve or breaks a margin is halved, until it is below ``_RTOL`` of the force. The end is
 then the last force solved, within that relative width, and its reason the margin nearest to zero
-there (scaled: the angles by pi/2 and pi, the height and the gap by the inflated dome's height). A
+there (scaled: the end margin by the surface's scale, the clamp angle by pi, the height and the gap by the
+inflated dome's height). A
 search that stalls with every margin above ``_NEAR`` has met a fold (below) or, if none is found, a
 solver failure (ConvergenceError). A force that grows past ``_FORCE_MAX`` without an end (a rubber that
-locks) leaves the range without end (inf). Computed once per pocket and indenter (``rangeend.end_of``
+locks) leaves the range without end (inf). Computed once per pocket and indenter (``end.end_of``
 caches it).
 """
 
@@ -50,9 +51,9 @@ import numpy as np
 from pocket.core.errors import CLAMP_PLANE, ConvergenceError
 
 from . import brent, newton
-from .rangeend import End, end_of
+from .end import End, end_of
 
-__all__ = ["end_of_sphere", "on_branch"]
+__all__ = ["end_of_surface", "on_branch"]
 
 _START_FORCE = 1e-2  # the first state (halved until it solves)
 _RTOL = 1e-10  # relative width of the force bracket at the end
@@ -71,8 +72,8 @@ def _solve(problem, force, guess, jacobian=None):
 
 
 def _scaled(problem, margins) -> dict[str, float]:
-    """The margins in comparable units (``problem.scales``: the angles by pi/2 and pi, the lengths by the
-    inflated height)."""
+    """The margins in comparable units (``problem.scales``: the end margin by the surface's scale, the clamp
+    angle by pi, the lengths by the inflated height)."""
     return {key: value / problem.scales[key] for key, value in margins.items()}
 
 
@@ -92,8 +93,8 @@ def _first(problem, seed):
                            f"Fhat = {force:.3g}", load=force)
 
 
-def end_of_sphere(problem, seed=None) -> End:
-    """The ``End`` of the sphere's ``problem`` (module docstring); ``seed``: a solved (force, x) or None."""
+def end_of_surface(problem, seed=None) -> End:
+    """The ``End`` of the curved indenter's ``problem`` (module docstring); ``seed``: a solved (force, x) or None."""
     force, x, margins = _first(problem, seed)
     previous, step, jacobian = None, force, None
     while step >= _RTOL * force:
