@@ -1,8 +1,9 @@
-"""The runnable examples of ``examples/``: each imported and its ``main`` called, its numbers (returned
-unrounded, as it printed them) checked against the solvers solving them afresh; one of them also run as a
-user runs it, a script in a subprocess."""
+"""The runnable examples of ``examples/``: each imported (in the default lane) and its ``main`` called (in the
+slow lane), its numbers (returned unrounded, as it printed them) checked against the solvers solving them
+afresh; one of them also run as a user runs it, a script in a subprocess."""
 
 import importlib.util
+import inspect
 import math
 import pathlib
 import re
@@ -13,8 +14,6 @@ import pytest
 
 from pocket import shooting
 from pocket.core.indenters import sphere
-
-pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow): each example solves for seconds or more
 
 EXAMPLES = pathlib.Path(__file__).resolve().parent.parent / "examples"
 
@@ -27,6 +26,17 @@ def example(name: str):
     return module
 
 
+@pytest.mark.parametrize("name", sorted(path.stem for path in EXAMPLES.glob("*.py")))
+def test_every_example_imports_and_says_what_it_does(name):
+    """Exact answer: each example imports without running (a name it uses that pocket no longer has fails
+    here, in the default lane), opens with a docstring that shows how to run it, and has ``main(out)``, the
+    function its script runs and its tests call."""
+    module = example(name)
+    assert f"python examples/{name}.py" in module.__doc__
+    assert list(inspect.signature(module.main).parameters) == ["out"]
+
+
+@pytest.mark.slow  # the slow lane (pytest -m slow): the example solves for seconds or more
 def test_fingertip_button_designs_for_the_sphere_and_writes_its_series(tmp_path, capsys):
     """Exact answer: the example's design (Phat_I, Fhat, as printed: their repr) gives H/H0 = 0.8 under the
     8 mm sphere (K = 0.4) when shooting solves it afresh, and its P_I is F / (pi R^2 Fhat); its VTK series has
@@ -46,6 +56,7 @@ def test_fingertip_button_designs_for_the_sphere_and_writes_its_series(tmp_path,
     assert steps[0] == steps[1] == len(list(vtk.glob("step_*_indenter.vtu"))) == button.STEPS
 
 
+@pytest.mark.slow  # the slow lane (pytest -m slow): the example solves for seconds or more
 def test_bulge_fit_recovers_the_rubber_and_presses_the_fitted_sheet(tmp_path):
     """Exact answer: the rubber behind the example's made-up bulge test. Each fitted parameter lies within four
     of its standard errors of the truth (the heights carry 0.2 % seeded noise: the fit's own error bars say how
@@ -72,6 +83,7 @@ def test_bulge_fit_recovers_the_rubber_and_presses_the_fitted_sheet(tmp_path):
         assert row["pressure_Pa"] == pytest.approx(state.pressure_ratio * case.initial[1], rel=1e-12)
 
 
+@pytest.mark.slow  # the slow lane (pytest -m slow): the example solves for seconds or more
 def test_membrane_error_prints_both_models_and_draws_them(tmp_path):
     """Exact answers: the membrane's column is the shooting solver's states solved afresh (the pressure at each
     force, in kPa); the figure is written. Physics that could fail: at T/R = 0.08 the membrane's fluid volume
@@ -104,6 +116,7 @@ def test_membrane_error_prints_both_models_and_draws_them(tmp_path):
     assert got["figure"] == tmp_path / "membrane_error.png" and got["figure"].stat().st_size > 0
 
 
+@pytest.mark.slow  # the slow lane (pytest -m slow): the example solves for seconds or more
 def test_an_example_runs_as_a_script(tmp_path):
     """Exact answer: ``python examples/fingertip_button.py FOLDER``, as a user runs it, ends with status 0,
     prints nothing on stderr, and writes its VTK series into FOLDER/vtk, the files its last line names (the
