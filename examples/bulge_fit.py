@@ -41,7 +41,10 @@ def bulge_test(path: pathlib.Path) -> None:
     path.write_text("pressure [kPa],height [mm]\n" + "\n".join(rows) + "\n")
 
 
-def main(out: pathlib.Path) -> None:
+def main(out: pathlib.Path) -> dict:
+    """Make the bulge test, fit it, press the fitted sheet, print each, write the files into ``out``; returns
+    what it printed, unrounded: ``{"fit": the fit's result (pocket.apps.fit), "case": the fitted sheet's case
+    file, "pressed": its solved case (pocket.apps.casefile.solve)}``."""
     out.mkdir(parents=True, exist_ok=True)
     data = out / "bulge.csv"
     bulge_test(data)
@@ -62,6 +65,7 @@ def main(out: pathlib.Path) -> None:
     print(f"  {'force_N':>10} {'pressure_kPa':>13} {'travel_mm':>10}")
     for row in pressed["states"]:
         print(f"  {row['force_N']:>10.4g} {row['pressure_Pa'] / 1e3:>13.6g} {row['travel_m'] * 1e3:>10.6g}")
+    return {"fit": result, "case": folder / CASE, "pressed": pressed}
 
 
 if __name__ == "__main__":

@@ -27,7 +27,9 @@ FORCE, HEIGHT_RATIO, FINGERTIP = 0.67, 0.8, 0.008  # N, H/H0 at that force, m
 STEPS = 11  # states of the VTK series, from rest to the design force
 
 
-def main(out: pathlib.Path) -> None:
+def main(out: pathlib.Path) -> dict:
+    """Design the button, print it, write its VTK series into ``out``; returns what it printed, unrounded:
+    ``{"design": the design (pocket.apps.design), "states": the pressed states, "vtk": the series' folder}``."""
     button = design(RADIUS, HEIGHT, MODULUS, ALPHA, FORCE, HEIGHT_RATIO,
                     indenter={"shape": "sphere", "radius": f"{FINGERTIP * 1e3:g} mm"})
     print(f"soft button for an {FINGERTIP * 1e3:g} mm fingertip: R = {RADIUS * 1e3:g} mm, H0 = {HEIGHT * 1e3:g} mm, "
@@ -46,6 +48,7 @@ def main(out: pathlib.Path) -> None:
     folder = write_series(out / "vtk", states, times=forces * button.pressure_initial_Pa * math.pi * RADIUS**2)
     print(f"  VTK series ({STEPS} steps, time = the force in N, lengths in units of R): "
           f"{folder / 'surface.pvd'}, {folder / 'indenter.pvd'}")
+    return {"design": button, "states": states, "vtk": folder}
 
 
 if __name__ == "__main__":

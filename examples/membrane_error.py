@@ -32,11 +32,16 @@ def _upper(state, thickness_ratio):
     return state.height + 0.5 * thickness_ratio / (state.profile.stretch_1[0] * state.profile.stretch_2[0])
 
 
-def _row(name, unit, membrane, continuum):
+def _row(table, load, name, unit, membrane, continuum):
+    """Print a row of the table and keep its numbers in ``table[load, name]``."""
     print(f"  {name:<34} {membrane:>12.5g} {continuum:>12.5g} {unit:<4} {membrane / continuum - 1.0:>+10.2%}")
+    table[load, name] = (membrane, continuum)
 
 
-def main(out: pathlib.Path) -> None:
+def main(out: pathlib.Path) -> dict:
+    """Solve sample 4 both ways, print the table, draw the figure into ``out``; returns what it printed,
+    unrounded: ``{"table": {(load, row name): (membrane, solid)}, "figure": its path}``, the load the force in
+    N (None: the inflated sheet), each number in the printed row's unit."""
     case = sample(4)
     radius, t = case.radius, case.thickness / case.radius
     phat = PRESSURE * radius / (case.modulus * case.thickness)
@@ -49,16 +54,18 @@ def main(out: pathlib.Path) -> None:
     print(f"sample 4: T = {case.thickness * 1e3:g} mm, R = {mm:g} mm (T/R = {t:g}), P_I = {PRESSURE / 1e3:g} kPa "
           f"(Phat_I = {phat:.4g}), a liquid")
     print(f"  {'':<34} {'membrane':>12} {'solid':>12} {'':<4} {'error':>10}")
-    _row("fluid volume", "mL", m0.volume * ml, s0.volume * ml)
-    _row("pole height, mid-surface", "mm", m0.height * mm, s0.extra["height_mid"] * mm)
-    _row("pole height, upper surface", "mm", _upper(m0, t) * mm, s0.height * mm)
+    table: dict = {}
+    _row(table, None, "fluid volume", "mL", m0.volume * ml, s0.volume * ml)
+    _row(table, None, "pole height, mid-surface", "mm", m0.height * mm, s0.extra["height_mid"] * mm)
+    _row(table, None, "pole height, upper surface", "mm", _upper(m0, t) * mm, s0.height * mm)
     for force, m, s in zip(FORCES, membrane, continuum, strict=True):
         print(f" pressed by the plate with {force:g} N:")
-        _row("pressure", "kPa", m.pressure * PRESSURE / phat / 1e3, s.pressure * PRESSURE / phat / 1e3)
-        _row("plate height (upper surface)", "mm", _upper(m, t) * mm, s.height * mm)
-        _row("contact area", "mm^2", m.contact_area * np.pi * mm**2, s.contact_area * np.pi * mm**2)
+        _row(table, force, "pressure", "kPa", m.pressure * PRESSURE / phat / 1e3, s.pressure * PRESSURE / phat / 1e3)
+        _row(table, force, "plate height (upper surface)", "mm", _upper(m, t) * mm, s.height * mm)
+        _row(table, force, "contact area", "mm^2", m.contact_area * np.pi * mm**2, s.contact_area * np.pi * mm**2)
     figure = draw(out, membrane, continuum, t, radius)
     print(f"wrote {figure}")
+    return {"table": table, "figure": figure}
 
 
 def draw(out: pathlib.Path, membrane, continuum, t: float, radius: float) -> pathlib.Path:

@@ -2,8 +2,9 @@
 chosen place, tells the test it is there, and stays there until the test releases it, so that a signal
 lands where the test means it to, however fast the machine or the solver is.
 
-``Hold(folder, patch)`` writes a driver script into ``folder``: it runs ``patch`` (Python source that
-replaces an entry point by one calling ``arrived()`` and then ``wait()``, or a function made by
+``Hold(folder, patch)`` writes a driver script into ``folder``: it gives SIGINT Python's own handler (as a
+terminal's foreground command has it, even where the test run ignores SIGINT), runs ``patch`` (Python
+source that replaces an entry point by one calling ``arrived()`` and then ``wait()``, or a function made by
 ``compiled_wait()``), then the ``pocket`` command line. The test and the held process talk through two
 pipes: ``arrived()`` writes a byte that ``Hold.arrived`` reads (an event, not a guess of time);
 ``wait()`` blocks in Python reading a byte that ``Hold.release`` writes (a SIGINT ends it at once); a
@@ -18,9 +19,14 @@ import sys
 import time
 
 DRIVER = """
-import os, sys
+import os, signal, sys
 
 ARRIVED, RELEASE = {arrived}, {release}
+
+# A held command is the foreground command of a terminal, whose Ctrl-C the test sends: SIGINT at Python's own
+# handler, also where the test run itself ignores it (started in the background: `pytest &`, nohup, a runner
+# without a terminal), which its processes inherit and pocket, rightly, leaves alone (pocket.core.interrupts).
+signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def arrived():
@@ -73,6 +79,21 @@ def _held(*args, **kwargs):
 
 
 curves._next_fitted = _held
+"""
+
+#: the shooting solver's inflation (``pocket.shooting.api.inflate``, what ``pocket inflate`` solves) says it
+#: arrived, then waits; released without an interrupt, it fails
+SHOOTING_INFLATE = """
+import pocket.shooting.api as api
+
+
+def _held(*args, **kwargs):
+    arrived()
+    wait()
+    raise AssertionError("released without an interrupt")
+
+
+api.inflate = _held
 """
 
 #: every curve of a sweep (``pocket.apps.sweep.grid.solve_curve``, run by the workers) says it arrived, then

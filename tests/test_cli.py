@@ -493,6 +493,29 @@ def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
 
 
 @pytest.mark.slow
+def test_sigint_reaches_a_held_command_from_a_test_run_that_ignores_it(tmp_path):
+    """A test run started in the background (`pytest &`, nohup, a runner without a terminal) has SIGINT
+    ignored, and every process it starts inherits that; a held command is the foreground command of a
+    terminal all the same: SIGINT while it waits in its solve gives status 130, stderr exactly `pocket:
+    interrupted`, nothing on stdout (a command that ignored it would end with the solve's AssertionError)."""
+    import signal
+
+    from holds import SHOOTING_INFLATE, Hold
+
+    with Hold(tmp_path, SHOOTING_INFLATE) as hold:
+        proc = hold.popen(["inflate", "--alpha", "0.3", "--pressure", "0.3"], stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN))
+        try:
+            assert hold.arrived(), proc.communicate()
+            proc.send_signal(signal.SIGINT)
+            hold.release()
+            out, err = proc.communicate(timeout=600)
+        finally:
+            proc.kill()
+    assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
+
+
+@pytest.mark.slow
 def test_sigint_to_a_long_fe_solve(tmp_path):
     """A real SIGINT to an FE curve while it solves its second force inside compiled code (the solve
     waits there for the test): status 130, stderr exactly `pocket: interrupted`, nothing on stdout, no
