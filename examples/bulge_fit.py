@@ -19,9 +19,9 @@ import numpy as np
 from pocket import shooting
 from pocket.apps.casefile import solve
 from pocket.apps.cases import load
-from pocket.apps.fit import fit
-from pocket.apps.fitcase import Request
-from pocket.apps.fitreport import CASE, FIGURE, write
+from pocket.apps.fit.case import Request
+from pocket.apps.fit.leastsquares import fit
+from pocket.apps.fit.report import CASE, FIGURE, write
 from pocket.core.materials import check
 
 RADIUS, THICKNESS = 0.020, 0.001  # m

@@ -40,7 +40,7 @@ BAD = {
 @pytest.mark.parametrize("case", list(BAD))
 def test_bad_data_one_line_exit_2_before_solving(case, tmp_path, capsys, monkeypatch):
     """Each defect is one line on stderr naming it, exit status 2, and no solve (the model is not called)."""
-    import pocket.apps.fitmodel as model
+    import pocket.apps.fit.model as model
 
     monkeypatch.setattr(model, "entry", lambda *a: pytest.fail("solved"))
     text, message = BAD[case]
@@ -159,7 +159,7 @@ CASE_BAD = {
 @pytest.mark.parametrize("case", list(CASE_BAD))
 def test_bad_case_file_one_line_exit_2_before_solving(case, tmp_path, capsys, monkeypatch):
     """Each defect of a fit's case file is one line on stderr naming the key, exit 2, and no solve."""
-    import pocket.apps.fitmodel as model
+    import pocket.apps.fit.model as model
 
     monkeypatch.setattr(model, "entry", lambda *a: pytest.fail("solved"))
     text, flags, message = CASE_BAD[case]

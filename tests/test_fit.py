@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from pocket import fem, shooting
-from pocket.apps.fit import fit
-from pocket.apps.fitdata import Dataset
-from pocket.apps.fitmodel import Setup
+from pocket.apps.fit.data import Dataset
+from pocket.apps.fit.leastsquares import fit
+from pocket.apps.fit.model import Setup
 from pocket.core.materials import Material, check
 
 pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
@@ -171,7 +171,7 @@ def test_a_datum_beyond_a_trial_set_does_not_end_the_fit():
 def test_too_few_data_is_refused_before_solving(monkeypatch):
     """Three heights cannot determine Yeoh's three parameters and a residual variance: an InputError, and
     no solve (the model is not called)."""
-    import pocket.apps.fit as module
+    import pocket.apps.fit.leastsquares as module
     from pocket.core.errors import InputError
 
     monkeypatch.setattr(module, "predict", lambda *a: pytest.fail("solved"))
@@ -182,10 +182,10 @@ def test_too_few_data_is_refused_before_solving(monkeypatch):
 
 def test_fem_solver_fits_as_shooting_does(monkeypatch):
     """The finite-element solver as the fit's model (``Setup.solver = "fem"``): every solve of the fit goes to
-    its record (counted through ``pocket.apps.fitmodel.entry``), and it recovers the parameter the shooting fit
+    its record (counted through ``pocket.apps.fit.model.entry``), and it recovers the parameter the shooting fit
     recovers from the same noise-free data, to 1e-8 relative: the FE heights' floor (~1e-10 relative to the
     shooting solver's, its default P2 mesh) times the fit's conditioning (mu ~ H^-3 at small strain: 3)."""
-    import pocket.apps.fitmodel as model
+    import pocket.apps.fit.model as model
 
     used = []
     original = model.entry

@@ -12,7 +12,7 @@ fails it with probability 0.7 %, one that covers 85 % (as the linearised interva
 where the response bends) fails it with probability P(Binomial(25, 0.85) <= 20) = 0.32, and one that
 covers 64 % with probability 0.97. At N = 25 a count cannot show an interval too wide (25 of 25 has
 probability 0.28); the profile interval is the narrowest the data's likelihood allows at its level
-(``pocket.apps.fitprofile``).
+(``pocket.apps.fit.intervals``).
 """
 
 import json
@@ -23,10 +23,10 @@ import pytest
 from test_cli_fit import TRUTH, bulge_csv
 from test_fit import TRUTHS, R, T, _value, bulge
 
-from pocket.apps import fitprofile
-from pocket.apps.fit import fit
-from pocket.apps.fitmodel import Setup
-from pocket.apps.fitstats import quantile
+from pocket.apps.fit import intervals
+from pocket.apps.fit.leastsquares import fit
+from pocket.apps.fit.model import Setup
+from pocket.apps.fit.stats import quantile
 from pocket.cli import main
 from pocket.core.materials import check
 
@@ -78,7 +78,7 @@ def test_profile_search_finds_the_ends_of_a_known_profile():
     def excess(theta):
         return ((1.0 / theta - 0.1) / 0.02) ** 2
 
-    lo, hi = fitprofile.interval(excess, 10.0, 2.0, 0.0, t)
+    lo, hi = intervals.interval(excess, 10.0, 2.0, 0.0, t)
     for end, expected in ((lo, 0.1 + 0.02 * t), (hi, 0.1 - 0.02 * t)):
         assert abs(1.0 / end - expected) <= 0.01 * t * 0.02, (lo, hi)
 
@@ -89,13 +89,13 @@ def test_profile_not_bounded_above_is_infinite_and_stays_above_the_bound():
     which the model has no state (tau^2 = inf, as a Gent Jm below the data's I1 - 3) is never an end: with no
     state below theta = 5, the lower end is 5 or above."""
     t = 2.3
-    lo, hi = fitprofile.interval(lambda theta: ((1.0 / theta - 0.1) / 0.05) ** 2, 10.0, 5.0, 0.0, t)
+    lo, hi = intervals.interval(lambda theta: ((1.0 / theta - 0.1) / 0.05) ** 2, 10.0, 5.0, 0.0, t)
     assert hi == math.inf and abs(1.0 / lo - (0.1 + 0.05 * t)) <= 0.01 * t * 0.05, (lo, hi)
 
     def locked(theta):
         return math.inf if theta < 5.0 else ((theta - 10.0) / 1.0) ** 2
 
-    lo, hi = fitprofile.interval(locked, 10.0, 1.0, 0.0, 20.0)
+    lo, hi = intervals.interval(locked, 10.0, 1.0, 0.0, 20.0)
     assert 5.0 <= lo < 10.0 and hi == pytest.approx(30.0, rel=0.01), (lo, hi)
 
 
@@ -110,7 +110,7 @@ def test_gent_jm_interval_stays_positive_where_linearised_reaches_zero():
     lo, hi = s.intervals[jm]
     print(f"jm = {s.values[jm]:.4g} +- {s.standard_errors[jm]:.3g}: profile [{lo:.4g}, {hi:.4g}]")
     assert s.values[jm] - quantile(s.dof) * s.standard_errors[jm] <= 0.0  # the case bites
-    assert 0.0 < lo <= truth["jm"] <= hi and s.methods[jm] == fitprofile.PROFILE
+    assert 0.0 < lo <= truth["jm"] <= hi and s.methods[jm] == intervals.PROFILE
 
 
 @pytest.mark.slow

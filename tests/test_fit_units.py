@@ -14,9 +14,10 @@ import numpy as np
 import pytest
 from test_cli_fit import TRUTH, R, T, bulge_csv
 
-from pocket.apps import fitchecks, fitdata, fitstats
-from pocket.apps.fitkeys import keys
-from pocket.apps.fitmodel import Setup
+from pocket.apps.fit import checks, stats
+from pocket.apps.fit.data import Dataset, read
+from pocket.apps.fit.keys import keys
+from pocket.apps.fit.model import Setup
 from pocket.cli import main
 from pocket.core.errors import InputError
 from pocket.core.materials import check
@@ -28,7 +29,7 @@ SHEET = ["--radius", "20 mm", "--thickness", "1 mm"]
 @pytest.fixture
 def no_solve(monkeypatch):
     """Fail the test if the model is solved (a refusal must come before any solve)."""
-    import pocket.apps.fitmodel as model
+    import pocket.apps.fit.model as model
 
     monkeypatch.setattr(model, "entry", lambda *a: pytest.fail("solved"))
 
@@ -36,7 +37,7 @@ def no_solve(monkeypatch):
 @pytest.fixture
 def stop_fit(monkeypatch):
     """Stop ``pocket fit`` where the fit would start: the warnings and checks before it are what is tested."""
-    import pocket.apps.fit as fit
+    import pocket.apps.fit.leastsquares as fit
 
     def stop(*args, **kwargs):
         raise InputError("stopped before the fit")
@@ -98,21 +99,21 @@ def test_fit_plain_sigma_warns(tmp_path, capsys, no_solve, stop_fit):
 
 def test_fit_height_many_radii_refused(tmp_path, capsys, no_solve):
     """A height above ``MAX_STRETCH`` = 20 clamp radii is refused naming the file and the column (no rubber
-    stretches that far: the bound is in ``pocket.apps.fitchecks``); just below the bound the data pass the
+    stretches that far: the bound is in ``pocket.apps.fit.checks``); just below the bound the data pass the
     check (the bound, not something else, refuses). On the command line: heights of 5 to 15 mm on a 0.5 mm clamp
     (30 R)."""
     data = bulge_csv(tmp_path / "b.csv")
     _refused(*_run([data, "--radius", "0.5 mm", "--thickness", "0.01 mm"], capsys), data, "height column",
              "above 20 R")
-    test = fitdata.read(data)
+    test = read(data)
     top = float(np.max(test.responses["height"]))
     for factor, refused in ((1.01, True), (0.99, False)):
-        setup = Setup((test,), top / (fitchecks.MAX_STRETCH * factor), None)
+        setup = Setup((test,), top / (checks.MAX_STRETCH * factor), None)
         if refused:
             with pytest.raises(InputError, match="above 20 R"):
-                fitchecks.check(setup, slack=False)
+                checks.check(setup, slack=False)
         else:
-            fitchecks.check(setup, slack=False)  # the height bound alone (slack=False: no modulus bound)
+            checks.check(setup, slack=False)  # the height bound alone (slack=False: no modulus bound)
 
 
 def test_fit_volume_past_any_sphere_refused():
@@ -121,13 +122,13 @@ def test_fit_volume_past_any_sphere_refused():
     401^(3/2) pi R^3 / 6; 1 % past it is refused, 1 % inside it is not (a volume in m^3 for mL data is 1e6 past)."""
     bound = 401.0**1.5 * math.pi / 6.0 * R**3
     for factor, refused in ((1.01, True), (0.99, False)):
-        test = fitdata.Dataset("inflation", np.array([1e3, 2e3]), {"volume": np.array([0.5, 1.0]) * bound * factor},
+        test = Dataset("inflation", np.array([1e3, 2e3]), {"volume": np.array([0.5, 1.0]) * bound * factor},
                                None, "v.csv")
         if refused:
             with pytest.raises(InputError, match="v.csv: the volume column"):
-                fitchecks.check(Setup((test,), R, T), slack=False)
+                checks.check(Setup((test,), R, T), slack=False)
         else:
-            fitchecks.check(Setup((test,), R, T), slack=False)
+            checks.check(Setup((test,), R, T), slack=False)
 
 
 def test_fit_furlong_column_refused(tmp_path, capsys, no_solve):
@@ -171,9 +172,9 @@ def test_fit_semicolon_file(tmp_path, capsys, no_solve):
     text = (tmp_path / "b.csv").read_text()
     (tmp_path / "eu.csv").write_text(text.replace(",", ";").replace(".", ","))
     (tmp_path / "semi.csv").write_text(text.replace(",", ";"))
-    expected = fitdata.read(data)
+    expected = read(data)
     for name in ("eu.csv", "semi.csv"):
-        got = fitdata.read(tmp_path / name)
+        got = read(tmp_path / name)
         assert np.array_equal(got.control, expected.control)
         assert np.array_equal(got.responses["height"], expected.responses["height"])
 
@@ -181,13 +182,14 @@ def test_fit_semicolon_file(tmp_path, capsys, no_solve):
 def test_case_file_bom_read(tmp_path):
     """A case file saved with a byte-order mark (TOML forbids one; Windows editors write it) is the same case as
     without: pocket run's case and fit's request."""
-    from pocket.apps import cases, fitcase
+    from pocket.apps import cases
+    from pocket.apps.fit import case
 
     bulge_csv(tmp_path / "b.csv")
     fit_case = '[sheet]\nthickness = "1 mm"\n[clamp]\nradius = "20 mm"\n[fit]\ndata = ["b.csv"]\n'
     run_case = ('[sheet]\nthickness = "1 mm"\nmaterial = "neo-hookean"\nmu = "200 kPa"\n[clamp]\nradius = "20 mm"\n'
                 '[initial]\npressure = "5 kPa"\n[loads]\nforces = ["0.5 N"]\n')
-    for text, load in ((fit_case, fitcase.load), (run_case, cases.load)):
+    for text, load in ((fit_case, case.load), (run_case, cases.load)):
         (tmp_path / "plain.toml").write_text(text)
         (tmp_path / "bom.toml").write_bytes(b"\xef\xbb\xbf" + text.encode())
         plain, bom = load(tmp_path / "plain.toml"), load(tmp_path / "bom.toml")
@@ -229,7 +231,7 @@ def test_undetermined_parameter_has_no_zero_error():
     free = list(keys("mooney-rivlin")[:2])
     jac = np.array([[1.0, 0.0], [2.0, 0.0], [3.0, 0.0], [4.0, 0.0]])
     r = np.array([1e-3, -2e-3, 1e-3, 5e-4])
-    s = fitstats.statistics(types.SimpleNamespace(thickness=T), material, free, np.diag([1e5, 1e5]), r, jac)
+    s = stats.statistics(types.SimpleNamespace(thickness=T), material, free, np.diag([1e5, 1e5]), r, jac)
     assert s.standard_errors[1] > abs(s.values[1]) and math.isfinite(s.standard_errors[1])
     assert any(w.startswith("c2 = ") and "do not determine" in w for w in s.warnings)
 
@@ -275,12 +277,12 @@ def test_fitted_modulus_no_rubber_warns():
     """After the fit, E = 3 mu_0 outside rubbers' moduli (1 kPa to 1 GPa) is a warning; a rubber's (E = 3 * 414
     kPa, the test sheet's) is not; without a thickness, E >= 3 mu_0 T / R is checked against the top."""
     setup = Setup((), R, T)
-    assert fitchecks.modulus_warnings(setup, TRUTH.mu0) == []
-    assert "no rubber's" in fitchecks.modulus_warnings(setup, 1e10)[0]
-    assert "no rubber's" in fitchecks.modulus_warnings(setup, 100.0)[0]
+    assert checks.modulus_warnings(setup, TRUTH.mu0) == []
+    assert "no rubber's" in checks.modulus_warnings(setup, 1e10)[0]
+    assert "no rubber's" in checks.modulus_warnings(setup, 100.0)[0]
     bare = Setup((), R, None)
-    assert fitchecks.modulus_warnings(bare, TRUTH.mu0 * T) == []
-    assert "even for a sheet as thick" in fitchecks.modulus_warnings(bare, 1e9 * R)[0]
+    assert checks.modulus_warnings(bare, TRUTH.mu0 * T) == []
+    assert "even for a sheet as thick" in checks.modulus_warnings(bare, 1e9 * R)[0]
 
 
 def test_fit_prestretched_sheet_on_a_large_clamp_not_refused(tmp_path, capsys, stop_fit):

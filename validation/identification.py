@@ -18,9 +18,9 @@ import dataclasses
 
 import numpy as np
 
-from pocket.apps.fit import fit
-from pocket.apps.fitdata import Dataset
-from pocket.apps.fitmodel import Setup
+from pocket.apps.fit.data import Dataset
+from pocket.apps.fit.leastsquares import fit
+from pocket.apps.fit.model import Setup
 from pocket.core.materials import LAWS, Material, check
 
 from .plotdata import Figure, Panel, Series

@@ -9,6 +9,7 @@ pressure), ``forcerange`` (a force past the end of the range, refused in the use
 written whole or not at all) with ``ledger`` (the checksums of what pocket wrote), ``provenance``
 and ``solvers`` (the solvers by name).
 
-Two subpackages, independent of each other: ``sweep`` (parameter grids on any executor, their CSV
-journal, local workers and dask clusters) and ``vtk`` (ParaView output).
+Three subpackages, independent of each other: ``fit`` (a rubber law fitted to a user's tests),
+``sweep`` (parameter grids on any executor, their CSV journal, local workers and dask clusters) and
+``vtk`` (ParaView output).
 """

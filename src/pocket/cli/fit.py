@@ -34,8 +34,8 @@ _CASE_GIVES = {"law": "sheet.material", "radius": "clamp.radius", "thickness": "
 
 
 def _request(args):
-    """What the user asks (``pocket.apps.fitcase.Request``): from a case file, or from the flags."""
-    from pocket.apps.fitcase import Request, held, load, uncertainties, unit_warnings
+    """What the user asks (``pocket.apps.fit.case.Request``): from a case file, or from the flags."""
+    from pocket.apps.fit.case import Request, held, load, uncertainties, unit_warnings
     from pocket.apps.rubbers import DEFAULT_LAW
     from pocket.core.units import positive
 
@@ -62,8 +62,8 @@ def _request(args):
 
 
 def _main(args) -> int:
-    from pocket.apps.fit import fit
-    from pocket.apps.fitreport import KIND, summary, write
+    from pocket.apps.fit.leastsquares import fit
+    from pocket.apps.fit.report import KIND, summary, write
     from pocket.apps.folders import check_replaceable
 
     request = _request(args)

@@ -24,7 +24,7 @@ state gives ``PENALTY``: finite, far above any residual of a trial set that has 
 million uncertainties off), so the trust-region step that reached it is rejected and its radius
 shrinks (scipy's ``least_squares`` compares costs: a larger one halves the step until it is back in
 the model's range). The penalty is constant: the fit never differentiates across it
-(``pocket.apps.fit`` takes a one-sided difference away from it).
+(``pocket.apps.fit.leastsquares`` takes a one-sided difference away from it).
 """
 
 from __future__ import annotations
@@ -37,8 +37,8 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.materials import Material, check
 
-from .fitdata import Dataset
-from .solvers import entry, record
+from ..solvers import entry, record
+from .data import Dataset
 
 __all__ = ["PENALTY", "Setup", "predict", "residuals"]
 
@@ -49,7 +49,7 @@ _MISSED = (OutOfRangeError, ConvergenceError)
 
 @dataclasses.dataclass(frozen=True)
 class Setup:
-    """What the fit compares: ``tests`` (``pocket.apps.fitdata.Dataset``), the clamp ``radius`` R (m), the
+    """What the fit compares: ``tests`` (``pocket.apps.fit.data.Dataset``), the clamp ``radius`` R (m), the
     ``thickness`` T (m, or None: stresses are then fitted as products with T, in N/m), the ``solver`` by
     name with its ``options``, and ``sigma`` (column name -> stated uncertainty, SI; a column not named
     has relative residuals)."""
@@ -127,7 +127,7 @@ def _curve(setup, material, pressure_initial, forces, calls):
 
 def _compression(setup: Setup, test: Dataset, material: Material, tension: float, calls: list) -> dict:
     pressure_initial = test.initial_pressure
-    assert pressure_initial is not None  # a compression test has its P_I (``fitdata.read``)
+    assert pressure_initial is not None  # a compression test has its P_I (``pocket.apps.fit.data.read``)
     order = np.argsort(test.control)
     forces = [float(f) for f in test.control[order] / (pressure_initial * math.pi * setup.radius**2)]
     try:

@@ -15,12 +15,12 @@ elongation), so ``MAX_STRETCH`` = 20 is twice any rubber's, and a column past th
 being in the wrong unit. The plate's height in a compression test is the sheet's top: the same bound.
 
 Modulus. The dimensionless group of the problem is Phat = P R / (E T). At small strain the dome's
-height and volume give Phat alone (``pocket.apps.fitstart``: H / R = c_H Phat^(1/3)), so the first rows
+height and volume give Phat alone (``pocket.apps.fit.start``: H / R = c_H Phat^(1/3)), so the first rows
 of a test give E T = P R / Phat whatever the material. A modulus E = E T / T above ``MAX_MODULUS``,
 stiffer than any solid, or below ``MIN_MODULUS``, softer than any gel that holds a shape, means a unit
 is wrong (the pressures', the heights' or R's); without T, a membrane is thinner than its clamp radius,
 so E >= E T / R, refused above ``MAX_MODULUS`` too. The estimate is biased at the larger strains of a
-test's first rows by a factor of a few (``pocket.apps.fitstart``), far inside these bounds (a rubber's E
+test's first rows by a factor of a few (``pocket.apps.fit.start``), far inside these bounds (a rubber's E
 is about 1e6 Pa). It holds for a slack sheet only: a prestretched one is taut, its height at small
 pressure P R^2 / (4 N_0) set by the flat sheet's tension N_0, so a tiny dome on a large clamp is no
 contradiction; where the prestretch is held above 1 or fitted, the modulus is not checked.
@@ -43,9 +43,9 @@ import numpy as np
 from pocket.core.errors import InputError
 from pocket.core.units import KINDS
 
-from .fitdata import QUANTITIES
-from .fitmodel import Setup
-from .fitstart import tension_estimate
+from .data import QUANTITIES
+from .model import Setup
+from .start import tension_estimate
 
 __all__ = ["MAX_STRETCH", "MAX_MODULUS", "MIN_MODULUS", "RUBBER_MODULI", "check", "modulus_warnings"]
 

@@ -7,11 +7,11 @@ sigma^2 (relative residuals, or residuals in units of the stated uncertainties),
     s^2 = RSS / (n - p),   RSS = r . r,
     Cov(x) = s^2 (J^T J)^-1,   Cov(value) = G Cov(x) G^T,   G = d value / dx
 
-(G = diag(s_k) where each key is its own coordinate, Ogden's: ``pocket.apps.fitkeys``), standard
+(G = diag(s_k) where each key is its own coordinate, Ogden's: ``pocket.apps.fit.keys``), standard
 errors SE_k = sqrt(Cov_kk), correlations Cov_kl / (SE_k SE_l) and linearised 95 % intervals value_k +-
 t_{0.975, n-p} SE_k (Student's t: s^2 is estimated from the same n - p degrees of freedom), cut at the
 key's bounds (a value outside the admissible set is no rubber); the fit replaces them by profile intervals
-where it can (``pocket.apps.fitprofile``: where the model bends, the linearised interval misses the truth
+where it can (``pocket.apps.fit.intervals``: where the model bends, the linearised interval misses the truth
 and leaves the admissible set). (J^T J)^-1 is taken from the SVD of J,
 J = U S V^T: (J^T J)^-1 = V S^-2 V^T, each singular value floored at ``_RCOND`` times the largest, so
 that a direction the data do not see gets a huge variance, never a zero one (a pseudo-inverse of J^T J
@@ -19,7 +19,7 @@ would drop it, and report a parameter the data do not determine with a standard 
 mu_0(values) is reported with its error by the delta method, grad(mu_0)^T Cov grad(mu_0), and its
 interval as the keys' linearised ones.
 
-At a bound. A parameter within the fit's Jacobian step (a relative 1e-6, ``pocket.apps.fit``) of a bound
+At a bound. A parameter within the fit's Jacobian step (a relative 1e-6, ``pocket.apps.fit.leastsquares``) of a bound
 of its admissible set (C1 > 0, Jm > 0, a prestretch >= 1: the keys' ``lower``) sits there: the data pull
 it past the bound, the least squares stop at it, and its standard error is of a one-sided fit (it can be
 tiny). Each such parameter is a warning saying so.
@@ -59,7 +59,7 @@ class Statistics:
     ``covariance`` (p x p), ``correlation`` (p x p) and 95 % ``intervals`` (p x 2), all in the
     material's units; ``mu0`` and ``mu0_error`` (same unit); the residual ``rms``, the degrees of
     freedom ``dof`` = n - p; and the identifiability ``warnings`` (one line each). ``mu0_interval`` is mu_0's
-    95 % interval (2,); ``methods`` names how each key's interval was made (``pocket.apps.fitprofile``)."""
+    95 % interval (2,); ``methods`` names how each key's interval was made (``pocket.apps.fit.intervals``)."""
 
     names: tuple[str, ...]
     values: np.ndarray

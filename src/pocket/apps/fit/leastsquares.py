@@ -1,10 +1,10 @@
 r"""Identify a rubber law's parameters from a user's tests of the clamped sheet: least squares on the model.
 
-The unknowns are the coordinates of the law's keys not held fixed (``pocket.apps.fitkeys``: the values,
+The unknowns are the coordinates of the law's keys not held fixed (``pocket.apps.fit.keys``: the values,
 Ogden's terms in their shares of mu_0), scaled so that the problem is well conditioned: x_k =
-coordinate_k / s_k with s_k the start's mu_0 (times T: ``pocket.apps.fitmodel``) for a stress,
+coordinate_k / s_k with s_k the start's mu_0 (times T: ``pocket.apps.fit.model``) for a stress,
 max(|start value|, 1) for a number. scipy's ``least_squares`` (trust region reflective, within the
-keys' bounds) minimises (1/2) sum r_i(x)^2 over the residuals of ``pocket.apps.fitmodel.residuals``.
+keys' bounds) minimises (1/2) sum r_i(x)^2 over the residuals of ``pocket.apps.fit.model.residuals``.
 
 Jacobian. The solvers resolve their states to ~1e-10 relative, so J is taken by forward differences
 of step h = 1e-6 in x (truncation error O(h) ~ 1e-6, rounding O(1e-10 / h) ~ 1e-4 relative: ample
@@ -12,7 +12,7 @@ for a Gauss-Newton step and for the covariance). A forward step that leaves the 
 a trial set with a datum without state (a residual ``PENALTY``), is taken backward instead, so no
 derivative is ever taken across the penalty.
 
-Starts. Every start of ``pocket.apps.fitstart`` is evaluated once; those with a state for every datum
+Starts. Every start of ``pocket.apps.fit.start`` is evaluated once; those with a state for every datum
 are ranked by cost. For the laws with many parameters (``PROBED``) and for a fitted prestretch (whose
 starts are each shape at several prestretches, ``PRESTRETCHES``), the best ``RUNS`` each run ``_PROBE``
 evaluations (enough to leave a start's neighbourhood and show its basin: a Yeoh or Ogden start can lead
@@ -25,8 +25,8 @@ them, so a law without finite bounds (Ogden) uses Levenberg-Marquardt. A result 
 state is never reported: if no start has all its states, or the run ends outside the model's range, the
 fit is a ``ConvergenceError`` saying so.
 
-The statistics of the result are in ``pocket.apps.fitstats``, its intervals by the profile likelihood in
-``pocket.apps.fitprofile`` (each trial of a profile a least-squares re-fit of the other unknowns with one held:
+The statistics of the result are in ``pocket.apps.fit.stats``, its intervals by the profile likelihood in
+``pocket.apps.fit.intervals`` (each trial of a profile a least-squares re-fit of the other unknowns with one held:
 ``_Profile``).
 """
 
@@ -41,10 +41,12 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.materials import Material
 
-from . import fitchecks, fitprofile, fitstats
-from .fitkeys import PRESTRETCH, Key, key_named, keys
-from .fitmodel import PENALTY, Setup, predict, residuals
-from .fitstart import starts
+from .checks import modulus_warnings
+from .intervals import intervals
+from .keys import PRESTRETCH, Key, key_named, keys
+from .model import PENALTY, Setup, predict, residuals
+from .start import starts
+from .stats import Statistics, normal_inverse, statistics
 
 __all__ = ["Fit", "fit", "RUNS", "PROBED", "PRESTRETCHES"]
 
@@ -56,7 +58,7 @@ _STEP = 1e-6  # forward-difference step in the scaled unknowns (module docstring
 _TOL = 1e-8  # least_squares' ftol, xtol and gtol: the step at which the solvers' 1e-10 noise is not yet felt
 _MAX_EVALUATIONS = 60  # least_squares' evaluations per run (each Jacobian costs p more)
 _PROBE = 6  # evaluations each start runs before the best of them continues
-_PROFILE_EVALUATIONS = 20  # least_squares' evaluations of each re-fit with a key held (``pocket.apps.fitprofile``)
+_PROFILE_EVALUATIONS = 20  # least_squares' evaluations of each re-fit with a key held (``pocket.apps.fit.intervals``)
 _PROFILE_TOL = 1e-5  # their tolerances: tau^2 = (RSS(theta) - RSS) / s^2 needs RSS(theta) to ~1e-3 relative
 _SAMPLE = 10  # rows per test where starts are ranked and probed: enough to show a curve's shape and its basin
 #: the prestretches each start shape is tried at when the prestretch is fitted (a slack sheet to a taut one)
@@ -67,8 +69,8 @@ PRESTRETCHES = (1.0, 1.05, 1.2)
 class Fit:
     """A fit's result: the ``setup``, the fitted ``material`` (stresses in the setup's unit: Pa, or N/m
     without a thickness), the ``free`` keys' names, the ``fixed`` ones (name -> value), the
-    ``statistics`` (``pocket.apps.fitstats.Statistics``), the model's ``values`` at the data (as
-    ``pocket.apps.fitmodel.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls`` (the
+    ``statistics`` (``pocket.apps.fit.stats.Statistics``), the model's ``values`` at the data (as
+    ``pocket.apps.fit.model.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls`` (the
     profile intervals' included), the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised``
     trial sets of the least-squares runs (some datum without state; a profile's trials not counted)."""
 
@@ -76,7 +78,7 @@ class Fit:
     material: Material
     free: tuple[str, ...]
     fixed: dict
-    statistics: fitstats.Statistics
+    statistics: Statistics
     values: list
     residuals: np.ndarray
     calls: int
@@ -123,7 +125,7 @@ class _Problem:
         return self.evaluate(x)[0]
 
     def evaluate(self, x) -> tuple[np.ndarray, list]:
-        """The residuals at ``x`` and the model's values (``pocket.apps.fitmodel.predict``)."""
+        """The residuals at ``x`` and the model's values (``pocket.apps.fit.model.predict``)."""
         x = np.asarray(x, dtype=float)
         if self._last is not None and self._last[0] == x.tobytes():
             return self._last[1], self._last[2]
@@ -168,7 +170,7 @@ def _fixed_material(material: Material, fixed: dict, all_keys) -> Material:
 
 def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, start: dict | None = None,
         prestretch: bool = False) -> Fit:
-    """Fit ``law`` (``terms`` terms for Ogden) to ``setup``'s data (``pocket.apps.fitmodel.Setup``).
+    """Fit ``law`` (``terms`` terms for Ogden) to ``setup``'s data (``pocket.apps.fit.model.Setup``).
 
     ``fixed``: key -> value held (stresses in the setup's unit); ``start``: key -> value that replaces
     the start's (for every start). The clamped sheet's prestretch (key ``prestretch``) is held at 1, or
@@ -235,12 +237,12 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
         raise ConvergenceError(f"the {law} fit ended outside the model's range")
     notes = [] if status > 0 else [f"the fit stopped after {evaluations} evaluations without meeting its "
                                    "tolerances: the parameters may be ill-determined"]
-    notes += fitchecks.modulus_warnings(setup, problem.material(x).mu0)
+    notes += modulus_warnings(setup, problem.material(x).mu0)
     jac = problem.jacobian(x)
     material = problem.material(x)
-    stats = fitstats.statistics(setup, material, free, problem.gradient(x), r, jac)
-    profile = _Profile(problem, x, float(r @ r) / stats.dof, fitstats.normal_inverse(jac))
-    stats = fitprofile.intervals(stats, free, profile)
+    stats = statistics(setup, material, free, problem.gradient(x), r, jac)
+    profile = _Profile(problem, x, float(r @ r) / stats.dof, normal_inverse(jac))
+    stats = intervals(stats, free, profile)
     if notes:
         stats = dataclasses.replace(stats, warnings=(*notes, *stats.warnings))
     return Fit(setup, material, tuple(k.name for k in free), fixed, stats, values, r, count["calls"],
@@ -248,7 +250,7 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
 
 
 class _Profile:
-    """The profile statistic (``pocket.apps.fitprofile``) of the fit ``problem`` at its optimum ``x``, residual
+    """The profile statistic (``pocket.apps.fit.intervals``) of the fit ``problem`` at its optimum ``x``, residual
     variance ``s2`` and (J^T J)^-1 ``inverse``: called with a key's index k, the function held value -> tau^2.
     Each held value re-fits the other unknowns from the nearest held value already solved, moved along their
     regression on the held one, inverse[:, k] / inverse[k, k] (the linearised conditional optimum)."""

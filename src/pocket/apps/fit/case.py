@@ -23,7 +23,7 @@ The law's parameters are what the fit finds, so ``[sheet]`` names none (``[fit] 
 Every problem is a one-line ``InputError`` naming the key, before any file of data is read; a case
 file without ``[fit]`` says that ``pocket fit`` needs one. A dimensional value written without a unit,
 in a case file or on the command line, is read as SI and said so (``pocket.core.units.plain_warnings``:
-``Request.warnings``); the data read then bound what such a value can be (``pocket.apps.fitchecks``).
+``Request.warnings``); the data read then bound what such a value can be (``pocket.apps.fit.checks``).
 """
 
 from __future__ import annotations
@@ -36,13 +36,13 @@ from pocket.core.errors import InputError
 from pocket.core.inputs import quote
 from pocket.core.units import plain_warnings, positive, quantity
 
-from . import fitchecks
-from .fitdata import CONTROLS, QUANTITIES, read
-from .fitkeys import PRESTRETCH, key_named, keys
-from .fitmodel import Setup
-from .fitstart import MAX_TERMS
-from .rubbers import DEFAULT_LAW, law_name
-from .tomlfiles import read_toml
+from ..rubbers import DEFAULT_LAW, law_name
+from ..tomlfiles import read_toml
+from . import checks
+from .data import CONTROLS, QUANTITIES, read
+from .keys import PRESTRETCH, key_named, keys
+from .model import Setup
+from .start import MAX_TERMS
 
 __all__ = ["Request", "held", "uncertainties", "unit_warnings", "load", "parse"]
 
@@ -73,8 +73,8 @@ class Request:
     case: str | None = None
 
     def setup(self) -> Setup:
-        """The tests read (``pocket.apps.fitdata.read``) and what the fit compares; bad data, or data that make
-        a unit absurd (``pocket.apps.fitchecks.check``), is an InputError."""
+        """The tests read (``pocket.apps.fit.data.read``) and what the fit compares; bad data, or data that make
+        a unit absurd (``pocket.apps.fit.checks.check``), is an InputError."""
         tests = tuple(read(path, self.initial_pressure) for path in self.data)
         spell = _spelling("--sigma" if self.case is None else "fit.sigma")
         for name in self.sigma:
@@ -87,7 +87,7 @@ class Request:
                                  "uncertainty to weight")
             raise InputError(f"{spell(name)}: an uncertainty for {name} is stated, but no test has {name} data")
         setup = Setup(tests, self.radius, self.thickness, self.solver, {}, self.sigma)
-        fitchecks.check(setup, spell, slack=not self.prestretch and self.fixed.get(PRESTRETCH, 1.0) == 1.0)
+        checks.check(setup, spell, slack=not self.prestretch and self.fixed.get(PRESTRETCH, 1.0) == 1.0)
         return setup
 
 

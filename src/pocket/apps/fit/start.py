@@ -27,7 +27,7 @@ Shape. In units of mu_0, each law's start shapes (``SHAPES``): neutral values (Y
 near 0, Mooney-Rivlin's alpha = C2/C1 small and moderate, Gent's Jm from little to much locking,
 Ogden's exponents from Ogden's rubber and neighbours, each term carrying an equal share of mu_0,
 mu_p alpha_p = 2 mu_0 / N), each at every prestretch asked (one, or several when the prestretch
-is fitted). A law with several starts is fitted from the best few (``pocket.apps.fit``).
+is fitted). A law with several starts is fitted from the best few (``pocket.apps.fit.leastsquares``).
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from pocket.core import smallstrain
 from pocket.core.errors import InputError
 from pocket.core.materials import Material, energy
 
-from .fitmodel import Setup
+from .model import Setup
 
 __all__ = ["SMALL", "SHAPES", "MAX_TERMS", "flat_tension", "tension_estimate", "starts"]
 

@@ -5,7 +5,7 @@ term (Ogden's ``mu[0]``, ``exponents[0]``, ...). A key reads its value from a ``
 returns a new ``Material`` with another value (``dataclasses``-style: the material is not changed),
 so that anything a material carries can be fitted by adding a key here. The last key of every law is
 ``prestretch``, the equibiaxial stretch lambda_p of the clamped flat sheet (``Material.prestretch``),
-bounds [1, inf): the fit holds it at 1 unless asked to fit it (``pocket.apps.fit``).
+bounds [1, inf): the fit holds it at 1 unless asked to fit it (``pocket.apps.fit.leastsquares``).
 
 The fit moves each key along its ``unknown`` coordinate, which is the value itself except for Ogden,
 whose term p is fitted as its share of mu_0, s_p = mu_p alpha_p / 2 (a stress), and its exponent
@@ -15,12 +15,12 @@ nearly straight, where in (mu_p, alpha_p) it bends (a change of alpha_p at fixed
 and the least-squares steps crawl along it (measured: a two-term fit to noise-free data from four
 starts reached the data to 1e-11 in 40-80 evaluations from three of them in these coordinates, and
 from none within 60 in (mu_p, alpha_p)). The reported values and their errors stay the keys'
-(``pocket.apps.fitstats`` maps the covariance through the coordinates' Jacobian).
+(``pocket.apps.fit.stats`` maps the covariance through the coordinates' Jacobian).
 
 Bounds are the box part of each law's admissible set: C1, mu, C10, Jm > 0. The rest of the set
 (C1 + C2 > 0, C30 >= 0 and a Yeoh slope that stays positive, mu_p alpha_p > 0, Jm above the data's
 largest I1 - 3, a Gent prestretch inside the locking) is not a box: a trial set outside it has no
-state, and the fit treats it as it treats a datum with no state (``pocket.apps.fitmodel``).
+state, and the fit treats it as it treats a datum with no state (``pocket.apps.fit.model``).
 """
 
 from __future__ import annotations

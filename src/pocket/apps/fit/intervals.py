@@ -1,6 +1,6 @@
 r"""A fit's 95 % intervals by the profile likelihood: each parameter held at trial values, the others re-fitted.
 
-The linearised interval (``pocket.apps.fitstats``) assumes the residuals are linear in the parameter over
+The linearised interval (``pocket.apps.fit.stats``) assumes the residuals are linear in the parameter over
 its interval. Where they are strongly nonlinear it fails: Gent's Jm enters through the locking term, the
 curve sees about 1/Jm, and an interval symmetric in Jm misses the truth above it and reaches Jm <= 0, which
 the law does not admit. The profile interval asks the data directly. With the fit's residual sum of squares
@@ -35,9 +35,9 @@ evaluation a trial. Measured over 25 Gent fits to ten bulge heights with 0-3 % n
 average (3.4 where the data see the locking weakly and Jm is often not bounded above), and 115 solver calls
 per fit where the fit alone makes about 50.
 
-Where it is not used. Ogden's keys are fitted along other coordinates (``pocket.apps.fitkeys``): holding
+Where it is not used. Ogden's keys are fitted along other coordinates (``pocket.apps.fit.keys``): holding
 mu_p alone would need another parametrisation; their intervals stay linearised. A parameter at a bound keeps
-the linearised interval cut there (``pocket.apps.fitstats`` warns). A fit whose residual RMS is below
+the linearised interval cut there (``pocket.apps.fit.stats`` warns). A fit whose residual RMS is below
 ``FLOOR`` (noise-free data: the residuals are the solvers' ~1e-10) has no noise for a profile to resolve: its
 intervals are the linearised ones in u, mapped back (inside the bounds as well).
 """
@@ -48,13 +48,13 @@ import dataclasses
 import math
 from collections.abc import Callable
 
-from .fitstats import LINEARISED, Statistics, at_bound, quantile
+from .stats import LINEARISED, Statistics, at_bound, quantile
 
 __all__ = ["FLOOR", "PROFILE", "LOG_LINEARISED", "intervals", "interval", "linearised"]
 
 #: residual RMS below which a fit's intervals are not profiled (the solvers' noise, not the data's)
 FLOOR = 1e-8
-#: the methods, as the report names them (and ``pocket.apps.fitstats.LINEARISED``)
+#: the methods, as the report names them (and ``pocket.apps.fit.stats.LINEARISED``)
 PROFILE, LOG_LINEARISED = "profile likelihood", "linearised in log"
 _TOLERANCE = 0.01  # |tau - t| / t at which an end is accepted: t +- 1 % is a level of 95 +- 0.3 %
 _TRIALS = 8  # held values tried per end
@@ -69,7 +69,7 @@ def _mapping(lower: float):
 
 
 def intervals(statistics: Statistics, free, excess: Callable[[int], Callable[[float], float]]) -> Statistics:
-    """``statistics`` (``pocket.apps.fitstats.Statistics``) of a fit of keys ``free`` with each interval made
+    """``statistics`` (``pocket.apps.fit.stats.Statistics``) of a fit of keys ``free`` with each interval made
     by the method the module docstring gives it, named in ``methods``, and a warning for each end the data do
     not bound. ``excess(k)`` is tau^2 of key k as a function of its held value."""
     t, out, methods, warnings = quantile(statistics.dof), statistics.intervals.copy(), [], []

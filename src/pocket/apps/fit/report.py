@@ -17,10 +17,10 @@ import numpy as np
 
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 
-from .fit import Fit
-from .fitdata import CONTROLS
-from .fitmodel import predict
-from .folders import staged
+from ..folders import staged
+from .data import CONTROLS
+from .leastsquares import Fit
+from .model import predict
 
 __all__ = ["KIND", "NOMINAL_THICKNESS", "summary", "case_text", "write", "FIGURE", "CASE"]
 
@@ -39,7 +39,7 @@ def _unit(fit: Fit, key: str) -> str:
 
 
 def _keys(fit: Fit):
-    from .fitkeys import keys
+    from .keys import keys
 
     terms = len(fit.material["mu"]) if fit.material.law == "ogden" else 1
     return keys(fit.material.law, terms)
@@ -48,7 +48,7 @@ def _keys(fit: Fit):
 def summary(fit: Fit) -> dict:
     """The fit as one JSON-ready dict: ``parameters`` maps each fitted key to its value, standard error,
     95 % interval (an end the data do not bound is None: JSON's null), the method that made the interval
-    (``pocket.apps.fitprofile``) and unit (Pa for stresses, N/m for stress * T without a thickness, 1 for
+    (``pocket.apps.fit.intervals``) and unit (Pa for stresses, N/m for stress * T without a thickness, 1 for
     numbers)."""
     s = fit.statistics
     return {
@@ -96,7 +96,7 @@ def case_text(fit: Fit) -> str:
     compression = [t for t in setup.tests if t.kind == "compression"]
     if compression:
         pressure = compression[0].initial_pressure
-        assert pressure is not None  # a compression test has its P_I (``fitdata.read``)
+        assert pressure is not None  # a compression test has its P_I (``pocket.apps.fit.data.read``)
         forces = sorted(float(f) for f in compression[0].control if f > 0.0)
     else:
         first = setup.tests[0].control
