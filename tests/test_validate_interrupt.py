@@ -19,11 +19,13 @@ from pocket.validation.runner import WORKERS
 pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
 
 CHILD = """
-import os, pathlib, sys, time
+import os, pathlib, signal, sys, time
 from pocket.validation import compute, evidence
 from pocket.cli import main
 
 folder = pathlib.Path(sys.argv[1])
+# a test run started in the background passes SIGINT on ignored: the validation runs as a terminal's command would
+signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def blocked(*args):
