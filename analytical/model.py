@@ -71,7 +71,7 @@ from pocket.core.materials import as_material
 from pocket.core.solver import FluidLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-__all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT", "CONTACTS"]
+__all__ = ["CONTACTS", "STRETCH_LIMIT", "compress", "compression_curve", "inflate", "range_end", "shape_function"]
 
 _N = 201  # profile points
 

@@ -50,7 +50,7 @@ from .profile import ProfileProblem
 from .rangeend import end_of
 from .shots import profile_from_steps, tension_minima
 
-__all__ = ["compress", "compression_curve", "plate_state", "final_shots"]
+__all__ = ["compress", "compression_curve", "final_shots", "plate_state"]
 
 _MIN_STEP = 1e-9  # smallest force step, relative to the force, before a solve is declared failed
 _FOLD_STEP = 1e-3  # near a fold of the force (within 10 such steps of it), the step below which the state is

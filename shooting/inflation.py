@@ -83,7 +83,7 @@ from .laws import as_law, law_of
 from .shots import Tolerance, profile_from_steps, shot_pole, tension_minima
 from .tensions import inside, tensions
 
-__all__ = ["inflate", "inflation_curve", "inflate_volume", "pressure_of_stretch"]
+__all__ = ["inflate", "inflate_volume", "inflation_curve", "pressure_of_stretch"]
 
 _GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
 _S_MAX = STRETCH_LIMIT - 1.0  # s at which the marches stop (``pocket.core.errors.STRETCH_LIMIT``)

@@ -30,7 +30,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["Solution", "solve", "differences"]
+__all__ = ["Solution", "differences", "solve"]
 
 _ARMIJO = 1e-4
 _MIN_FRACTION = 2.0**-12

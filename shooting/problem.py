@@ -55,7 +55,7 @@ from .integrator import OK, STATUS
 from .laws import Law
 from .shots import Tolerance, shot_edge
 
-__all__ = ["Problem", "CONTACTS", "contact_of"]
+__all__ = ["CONTACTS", "Problem", "contact_of"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -132,7 +132,7 @@ class Problem:
         key = (float(x[0]), float(x[1]), float(force))
         if not store and self._last.get("key") == key:
             return self._last["shot"]
-        q, lc, a, p = g
+        _q, lc, a, p = g
         shot = shot_edge(lc, a, self.law, p, self.tolerance, store=store)
         if not store:
             self._last.update(key=key, shot=shot)

@@ -59,6 +59,7 @@ and no returned state has its contact edge past the extent by more than the shot
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 
 import numpy as np
@@ -69,7 +70,7 @@ from .shots import PROFILE_STEP, R_POLE
 from .sphere import SphereProblem
 from .tensions import tensions
 
-__all__ = ["ProfileProblem", "PROFILE_END", "PROFILE_POLE", "PROFILE_TOUCH"]
+__all__ = ["PROFILE_END", "PROFILE_POLE", "PROFILE_TOUCH", "ProfileProblem"]
 
 #: the ends of the model particular to a profile
 PROFILE_END = "the sheet would wrap past the end of the profile (its last radius, or where it turns vertical)"
@@ -186,7 +187,7 @@ class ProfileProblem(SphereProblem):
         from scipy.integrate import quad  # here: scipy stays off the plate's import path
 
         return 2.0 * sum(quad(lambda r: r * math.sqrt(1.0 + float(slope(r)) ** 2), lo, hi, epsabs=0.0,
-                              epsrel=1e-12, limit=200)[0] for lo, hi in zip(bounds[:-1], bounds[1:], strict=True))
+                              epsrel=1e-12, limit=200)[0] for lo, hi in itertools.pairwise(bounds))
 
     def end_margin(self, edge) -> float:
         """How far the contact edge ``edge`` stands from the profile's end, as a fraction: the smaller of

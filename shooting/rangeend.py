@@ -63,7 +63,7 @@ from . import brent, newton
 from .laws import law_of
 from .problem import Problem, contact_of
 
-__all__ = ["End", "range_end", "end_of", "plate_end", "solve_on_branch"]
+__all__ = ["End", "end_of", "plate_end", "range_end", "solve_on_branch"]
 
 _START_FORCE = 1e-2  # the first state of the continuation in theta (halved if it does not solve)
 _MIN_STEP = 1e-6  # smallest step in theta (rad) before the continuation gives up
@@ -154,7 +154,7 @@ def _fold(problem, path, k):
     if not math.isfinite(peak):
         raise ConvergenceError(f"range end: no state solves near the force maximum at psi(1) in [{lo:.6g}, {hi:.6g}]")
     z = _at_angle(problem, theta, path).x
-    branch = tuple(p for p in path if p[0] < theta) + ((theta, z),)
+    branch = (*tuple(p for p in path if p[0] < theta), (theta, z))
     return End(force=float(peak), angle=float(theta), fold=True, path=branch)
 
 

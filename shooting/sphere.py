@@ -94,7 +94,7 @@ from .problem import Problem
 from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, Tolerance, profile_from_steps, tension_minima
 from .tensions import tensions
 
-__all__ = ["SphereProblem", "EQUATOR", "POLE", "TOUCH"]
+__all__ = ["EQUATOR", "POLE", "TOUCH", "SphereProblem"]
 
 #: the ends of the model particular to a sphere (``pocket.shooting.sphereend``)
 EQUATOR = "the sheet would wrap past the sphere's equator"
@@ -182,7 +182,7 @@ class SphereProblem(Problem):
         key = (*map(float, x), float(force))
         if not store and self._last.get("key") == key:
             return self._last["shot"]
-        q, lc, a, p = g
+        _q, lc, a, p = g
         status, edge, inner = self._contact(lc, a, store)
         shot = (status, edge, (inner, np.empty((0, 6))), edge)
         if status == OK:
@@ -222,7 +222,7 @@ class SphereProblem(Problem):
         contact), free steps, y(1), y(a)); a ConvergenceError if its final shots do not reach the clamp."""
         from .compression import final_shots  # the plate's reading of a final shot, shared
 
-        q, lc, a, p = self.geometry(x, force)
+        q, lc, a, _p = self.geometry(x, force)
         status, y, _, edge = self.shoot(x, force)
         stored = self.shoot(x, force, store=20000)
         final_shots(force, status, stored[0])

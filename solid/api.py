@@ -33,7 +33,7 @@ from . import (
     results,
 )
 
-__all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "CONTACTS"]
+__all__ = ["CONTACTS", "compress", "compress_height", "compression_curve", "inflate", "inflate_volume"]
 
 #: indenter kind -> contact formulations (the flat plate, the sphere and a profile, ``contact``)
 CONTACTS = {"flat": ("active set",), "sphere": ("active set",), "profile": ("active set",)}

@@ -39,7 +39,7 @@ import scipy.sparse as sp
 from pocket.core.errors import OutOfRangeError
 from pocket.core.profiles import Shape
 
-__all__ = ["Surface", "FLAT", "surface_of", "cap_area", "Rows", "rows", "gaps", "force"]
+__all__ = ["FLAT", "Rows", "Surface", "cap_area", "force", "gaps", "rows", "surface_of"]
 
 
 @dataclasses.dataclass(frozen=True)

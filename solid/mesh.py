@@ -38,7 +38,7 @@ from __future__ import annotations
 import numpy as np
 from skfem import MeshQuad
 
-__all__ = ["section", "radial_nodes", "corner_nodes", "CLAMP_GRADING", "CORNER_SIZE"]
+__all__ = ["CLAMP_GRADING", "CORNER_SIZE", "corner_nodes", "radial_nodes", "section"]
 
 #: grading exponent of the radial nodes towards the clamp
 CLAMP_GRADING = 1.5

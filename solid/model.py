@@ -19,7 +19,7 @@ from skfem import Basis, ElementQuad1, ElementQuad2, ElementVector, FacetBasis, 
 
 from . import assembly
 
-__all__ = ["Model", "discretize", "solid", "fluid", "split"]
+__all__ = ["Model", "discretize", "fluid", "solid", "split"]
 
 
 @dataclasses.dataclass(frozen=True)

@@ -58,8 +58,11 @@ def test_json_parameters_in_si(tmp_path, capsys):
     assert status == 0
     for key in ("c1", "c2"):
         assert out["parameters"][key]["value"] == pytest.approx(TRUTH[key], rel=1e-6)
-        assert out["parameters"][key]["unit"] == "Pa" and out["parameters"][key]["standard_error"] >= 0.0
-    assert out["correlation"]["keys"] == ["c1", "c2"] and out["solver_calls"] > 0 and out["data"] == 8
+        assert out["parameters"][key]["unit"] == "Pa"
+        assert out["parameters"][key]["standard_error"] >= 0.0
+    assert out["correlation"]["keys"] == ["c1", "c2"]
+    assert out["solver_calls"] > 0
+    assert out["data"] == 8
 
 
 def test_without_thickness_reports_products(tmp_path, capsys):
@@ -69,7 +72,8 @@ def test_without_thickness_reports_products(tmp_path, capsys):
     capsys.readouterr()
     status = main(["fit", bulge_csv(tmp_path / "b.csv"), "--radius", "20 mm", "--json"])
     out = json.loads(capsys.readouterr().out)
-    assert status == 0 and out["parameters"]["c1"]["unit"] == "N/m"
+    assert status == 0
+    assert out["parameters"]["c1"]["unit"] == "N/m"
     assert out["parameters"]["c1"]["value"] == pytest.approx(TRUTH["c1"] * T, rel=1e-6)
 
 
@@ -139,7 +143,8 @@ def test_case_file_names_the_data(tmp_path, capsys):
     (tmp_path / "case.toml").write_text(CASE)
     assert main(["fit", str(tmp_path / "case.toml"), "--json"]) == 0
     case = json.loads(capsys.readouterr().out)
-    assert case["parameters"] == flags["parameters"] and case["solver_calls"] == flags["solver_calls"]
+    assert case["parameters"] == flags["parameters"]
+    assert case["solver_calls"] == flags["solver_calls"]
 
 
 CASE_BAD = {

@@ -47,7 +47,7 @@ CASES = [
 ]
 
 
-@pytest.mark.parametrize("call, quoted", CASES)
+@pytest.mark.parametrize(("call", "quoted"), CASES)
 def test_bad_input_is_a_one_line_input_error(call, quoted):
     """InputError, one line, quoting the offending value."""
     with pytest.raises(InputError) as info:

@@ -38,10 +38,12 @@ def test_a_volume_below_locking_is_reached_by_cutting_steps():
     path's long steps land past locking, where the energy is NaN, and are cut; the state is finite and
     near locking, its pressure high."""
     state = fem.inflate_volume(GENT, 1.745)
-    assert state.volume == 1.745 and 0 < _margin(state) < 0.05 and state.pressure > 50
+    assert state.volume == 1.745
+    assert 0 < _margin(state) < 0.05
+    assert state.pressure > 50
 
 
-@pytest.mark.parametrize("call, what", [
+@pytest.mark.parametrize(("call", "what"), [
     (lambda: fem.inflate_volume(GENT, 3.0), "volume = 3.0 is not reached before the rubber locks"),
     (lambda: fem.compress_height(GENT, PHAT, 0.1), "plate height h/R = 0.1 is not reached before the rubber locks"),
 ])

@@ -68,7 +68,7 @@ def test_fit_plain_radius_warns(tmp_path, capsys, no_solve):
     assert "read as 15 m" in lines[0]
 
 
-@pytest.mark.parametrize("flag, value, kind", [("--thickness", "0.001", "length"),
+@pytest.mark.parametrize(("flag", "value", "kind"), [("--thickness", "0.001", "length"),
                                                ("--initial-pressure", "5000", "pressure"),
                                                ("--fix", "c2=47000", "pressure")])
 def test_fit_plain_sheet_values_warn(flag, value, kind, tmp_path, capsys, stop_fit):
@@ -77,7 +77,7 @@ def test_fit_plain_sheet_values_warn(flag, value, kind, tmp_path, capsys, stop_f
     ones, so nothing is refused)."""
     args = {"--thickness": ["--radius", "20 mm", flag, value],
             "--initial-pressure": [*SHEET, flag, value], "--fix": [*SHEET, flag, value]}[flag]
-    status, out, err = _run([bulge_csv(tmp_path / "b.csv"), *args], capsys)
+    status, _out, err = _run([bulge_csv(tmp_path / "b.csv"), *args], capsys)
     key, written = ("--fix c2", "47000") if flag == "--fix" else (flag, value)
     assert status == 2 and err.splitlines()[:-1] == [f"pocket: warning: {w}"
                                                      for w in plain_warnings(key, written, kind)], err
@@ -90,7 +90,7 @@ def test_fit_plain_sigma_warns(tmp_path, capsys, no_solve, stop_fit):
     data = bulge_csv(tmp_path / "b.csv")
     lines = _refused(*_run([data, *SHEET, "--sigma", "height=0.02"], capsys), "--sigma height", "more than every")
     assert lines[:-1] == [f"pocket: warning: {w}" for w in plain_warnings("--sigma height", "0.02", "length")]
-    status, _, err = _run([data, *SHEET, "--sigma", "height=0.00002"], capsys)
+    _status, _, err = _run([data, *SHEET, "--sigma", "height=0.00002"], capsys)
     assert err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in plain_warnings("--sigma height", "0.00002",
                                                                                    "length")]
     assert "stopped before the fit" in err.splitlines()[-1]
@@ -161,7 +161,8 @@ def test_fit_bom_reads_same_mu(tmp_path, capsys):
         status, out, _ = _run([path, *SHEET, "--law", "neo-hookean", "--json"], capsys)
         assert status == 0
         fits.append(json.loads(out)["mu0"]["value"])
-    assert fits[1] == pytest.approx(fits[0], rel=1e-9) and fits[0] == pytest.approx(truth.mu0, rel=1e-6)
+    assert fits[1] == pytest.approx(fits[0], rel=1e-9)
+    assert fits[0] == pytest.approx(truth.mu0, rel=1e-6)
 
 
 def test_fit_semicolon_file(tmp_path, capsys, no_solve):
@@ -214,9 +215,10 @@ def test_parameter_at_bound_says_so(tmp_path, capsys):
     prestretch = 1 of the admissible set, and says so (its error is one-sided); its interval is cut at 1."""
     truth = check("neo-hookean", {"mu": 200e3})
     data = bulge_csv(tmp_path / "b.csv", truth)
-    status, out, err = _run([data, *SHEET, "--law", "neo-hookean", "--fit-prestretch", "--json"], capsys)
+    status, out, _err = _run([data, *SHEET, "--law", "neo-hookean", "--fit-prestretch", "--json"], capsys)
     result = json.loads(out)
-    assert status == 0 and result["parameters"]["prestretch"]["value"] == pytest.approx(1.0, abs=1e-6)
+    assert status == 0
+    assert result["parameters"]["prestretch"]["value"] == pytest.approx(1.0, abs=1e-6)
     assert result["parameters"]["prestretch"]["interval_95"][0] >= 1.0
     assert any(w.startswith("prestretch = ") and "sits at 1, a bound of its admissible set" in w
                for w in result["warnings"]), result["warnings"]
@@ -230,7 +232,8 @@ def test_undetermined_parameter_has_no_zero_error():
     jac = np.array([[1.0, 0.0], [2.0, 0.0], [3.0, 0.0], [4.0, 0.0]])
     r = np.array([1e-3, -2e-3, 1e-3, 5e-4])
     s = fitstats.statistics(types.SimpleNamespace(thickness=T), material, free, np.diag([1e5, 1e5]), r, jac)
-    assert s.standard_errors[1] > abs(s.values[1]) and math.isfinite(s.standard_errors[1])
+    assert s.standard_errors[1] > abs(s.values[1])
+    assert math.isfinite(s.standard_errors[1])
     assert any(w.startswith("c2 = ") and "do not determine" in w for w in s.warnings)
 
 
@@ -268,7 +271,8 @@ def test_sigma_on_controlled_pressure_explained(tmp_path, capsys, no_solve):
     pressure data."""
     status, out, err = _run([bulge_csv(tmp_path / "b.csv"), *SHEET, "--sigma", "pressure=0.1 kPa"], capsys)
     lines = _refused(status, out, err, "--sigma pressure", "controlled variable of inflation tests")
-    assert "no test has pressure data" not in err and len(lines) == 1
+    assert "no test has pressure data" not in err
+    assert len(lines) == 1
 
 
 def test_fitted_modulus_no_rubber_warns():

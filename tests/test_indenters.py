@@ -44,7 +44,7 @@ def cone(monkeypatch):
     return Indenter(TOY.name, {"slope": 0.5})
 
 
-@pytest.mark.parametrize("solver, call", REFUSALS)
+@pytest.mark.parametrize(("solver", "call"), REFUSALS)
 def test_a_solver_refuses_an_indenter_it_does_not_pose(cone, solver, call):
     with pytest.raises(InputError) as caught:
         call(cone)
@@ -60,7 +60,7 @@ def test_the_fem_refuses_a_contact_method_that_does_not_pose_the_indenter(cone, 
         fem.compress(0.1, 0.3, 0.5, indenter=cone, contact="penalty")
 
 
-@pytest.mark.parametrize("make, match", [
+@pytest.mark.parametrize(("make", "match"), [
     (lambda: Indenter("cylinder"), r"^indenter = 'cylinder', but it must be one of flat, sphere"),
     (lambda: Indenter("sphere"), r"^indenter sphere takes the parameters \(radius\), not \(\)$"),
     (lambda: Indenter("flat", {"radius": 1.0}), r"^indenter flat takes the parameters \(\), not \(radius\)$"),
@@ -82,10 +82,11 @@ def test_a_kind_is_registered_once():
 def test_the_flat_plate_is_a_plane_on_which_the_force_is_pressure_times_area():
     rho = np.linspace(0.0, 1.0, 7).reshape(7, 1)
     assert np.array_equal(FLAT.height(rho), np.zeros((7, 1)))
-    assert FLAT.pressure_area and as_indenter(None) is FLAT
+    assert FLAT.pressure_area
+    assert as_indenter(None) is FLAT
 
 
-@pytest.mark.parametrize("compression_curve, options", [
+@pytest.mark.parametrize(("compression_curve", "options"), [
     (shooting.compression_curve, {}),
     (fem.compression_curve, {"elements": 32}),
     (fem.compression_curve, {"elements": 32, "contact": "penalty"}),
@@ -111,7 +112,8 @@ def test_the_sphere_is_its_cap_with_the_slope_and_curvature_of_its_profile():
     second = (tip.height(rho + h) - 2 * tip.height(rho) + tip.height(rho - h)) / h**2
     assert np.allclose(tip.curvature(rho) * (1 + tip.slope(rho) ** 2) ** 1.5, second, rtol=1e-4)
     assert np.allclose(tip.curvature(rho), 1 / 0.4, rtol=1e-12)
-    assert tip.height(0.4) == 0.4 and np.isnan(tip.height(0.5))
+    assert tip.height(0.4) == 0.4
+    assert np.isnan(tip.height(0.5))
     assert not tip.pressure_area
 
 

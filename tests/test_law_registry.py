@@ -102,7 +102,8 @@ def test_a_kernel_code_without_a_formula_is_an_error_not_gent(code):
 
 def test_every_registered_law_is_mapped_by_both_solvers(rubber):
     """The shipped laws are each in both tables (a law added to the registry without a kernel fails here)."""
-    assert rubber.law in shooting_laws.KERNELS and rubber.law in fem_material.KERNELS
+    assert rubber.law in shooting_laws.KERNELS
+    assert rubber.law in fem_material.KERNELS
 
 
 def test_the_help_is_built_from_the_registry(toy, capsys):
@@ -117,7 +118,7 @@ def test_the_help_is_built_from_the_registry(toy, capsys):
     assert "the toy law's stiffening k (toy)" in text
 
 
-@pytest.mark.parametrize("bad, message", [
+@pytest.mark.parametrize(("bad", "message"), [
     (Parameter("k", "dimensionless", " "), "needs a unit"),
     (Parameter("k", "pascal", "a modulus"), "needs a unit"),
     (Parameter("mu", "stress", "again"), "names a parameter twice"),

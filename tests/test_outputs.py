@@ -50,7 +50,7 @@ def _one_line(capsys) -> str:
 
 
 @pytest.mark.parametrize(
-    "argv, message",
+    ("argv", "message"),
     [
         (["run", "--sample", "1", "--out", "FILE"], "--out FILE: is a file, not a folder"),
         ([*SWEEP, "--out", "FILE/x.csv"], "--out FILE/x.csv: "),
@@ -85,7 +85,8 @@ def test_a_link_to_a_file_is_followed(tmp_path):
     (tmp_path / "link.csv").symlink_to(tmp_path / "real.csv")
     target = check_output_file(tmp_path / "link.csv")
     write_whole(target, "new\n")
-    assert (tmp_path / "link.csv").is_symlink() and (tmp_path / "real.csv").read_text() == "new\n"
+    assert (tmp_path / "link.csv").is_symlink()
+    assert (tmp_path / "real.csv").read_text() == "new\n"
 
 
 @contextlib.contextmanager
@@ -115,7 +116,7 @@ def read_only(folder: pathlib.Path):
 
 
 @pytest.mark.parametrize(
-    "argv, message",
+    ("argv", "message"),
     [
         (["run", "--sample", "1", "--out", "ro/new"], "--out ro/new: the folder"),
         (["run", "--sample", "1", "--out", "ro"], "--out ro: the folder is not writable"),
@@ -216,7 +217,8 @@ def test_file_size_limit_in_a_real_process(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "run", "--sample", "1", "--out", str(tmp_path / "r")],
                           capture_output=True, text=True, preexec_fn=small_files)
     assert proc.returncode == 1 and proc.stderr.count("\n") == 1, proc.stderr
-    assert "File too large" in proc.stderr and "Traceback" not in proc.stderr
+    assert "File too large" in proc.stderr
+    assert "Traceback" not in proc.stderr
     assert list(tmp_path.iterdir()) == []
 
 

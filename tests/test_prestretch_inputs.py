@@ -35,7 +35,7 @@ def test_a_mooney_rivlin_case_keeps_its_alpha_and_takes_the_prestretch(tmp_path)
     assert pocket.material == dataclasses.replace(mooney_rivlin(47e3 / 160e3), prestretch=1.2)
 
 
-@pytest.mark.parametrize("value, message", [
+@pytest.mark.parametrize(("value", "message"), [
     ("0.9", "sheet.prestretch = 0.9, but a prestretch of the clamped sheet must be >= 1"),
     ("nan", "sheet.prestretch = nan is not finite"),
     ('"1.1"', "sheet.prestretch = '1.1' is not a number"),
@@ -58,7 +58,7 @@ def _exit(argv) -> int:
         return stop.code
 
 
-@pytest.mark.parametrize("value, message", [
+@pytest.mark.parametrize(("value", "message"), [
     ("0.5", "--prestretch = 0.5, but a prestretch of the clamped sheet must be >= 1"),
     ("nan", "--prestretch = nan is not finite"),
     ("abc", "argument --prestretch: 'abc' is not a number"),
@@ -79,7 +79,8 @@ def test_the_flag_reaches_the_solver_and_the_json(capsys):
     assert main(["inflate", "--alpha", "0.1", "--prestretch", "1.1", "--pressure", "0.3", "--json"]) == 0
     state = json.loads(capsys.readouterr().out)
     expected = shooting.inflate(dataclasses.replace(mooney_rivlin(0.1), prestretch=1.1), 0.3)
-    assert state["prestretch"] == 1.1 and state["height"] == expected.height
+    assert state["prestretch"] == 1.1
+    assert state["height"] == expected.height
     assert main(["inflate", "--alpha", "0.1", "--pressure", "0.3", "--json"]) == 0
     assert "prestretch" not in json.loads(capsys.readouterr().out)  # none given: today's keys
 

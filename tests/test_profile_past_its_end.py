@@ -9,6 +9,7 @@ all the same, as the finite elements refuse it: one line naming the end, exit 2,
 
 from __future__ import annotations
 
+import itertools
 import re
 import warnings
 
@@ -125,7 +126,7 @@ def test_the_contact_area_on_a_table_of_many_rows_warns_nothing(solver):
     bounds = np.append(rho[rho < edge], edge)
     nodes, weights = np.polynomial.legendre.leggauss(20)
     area = 0.0
-    for lo, hi in zip(bounds[:-1], bounds[1:], strict=True):
+    for lo, hi in itertools.pairwise(bounds):
         r = 0.5 * (hi - lo) * nodes + 0.5 * (hi + lo)
         area += 0.5 * (hi - lo) * float(np.sum(weights * r * np.sqrt(1.0 + shape.slope(r) ** 2)))
     assert state.contact_area == pytest.approx(2.0 * area, rel=1e-12)

@@ -96,13 +96,14 @@ CSV_REFUSALS = [
 ]
 
 
-@pytest.mark.parametrize("text, match", CSV_REFUSALS)
+@pytest.mark.parametrize(("text", "match"), CSV_REFUSALS)
 def test_a_bad_profile_file_is_one_line_naming_the_file(tmp_path, text, match):
     path = tmp_path / "tip.csv"
     path.write_text(text)
     with pytest.raises(InputError, match=match) as caught:
         profiles.read_csv(path, clamp_radius=0.020)
-    assert str(caught.value).startswith(str(path)) and "\n" not in str(caught.value)
+    assert str(caught.value).startswith(str(path))
+    assert "\n" not in str(caught.value)
 
 
 def test_a_profile_in_physical_units_needs_the_clamp_radius(tmp_path):

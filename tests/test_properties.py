@@ -90,16 +90,23 @@ def _finite(state):
 
 
 def _inflated_invariants(state, alpha, pressure, solver):
-    assert (state.alpha, state.pressure) == (alpha, pressure) and state.solver == solver
-    assert _finite(state) and state.height > 0 and state.volume > 0
-    assert np.all(state.profile.stretch_1 > 0) and np.all(state.profile.stretch_2 > 0)
+    assert (state.alpha, state.pressure) == (alpha, pressure)
+    assert state.solver == solver
+    assert _finite(state)
+    assert state.height > 0
+    assert state.volume > 0
+    assert np.all(state.profile.stretch_1 > 0)
+    assert np.all(state.profile.stretch_2 > 0)
     assert state.profile.stretch_2[-1] == pytest.approx(1.0, abs=1e-7)  # lambda_2(1) = 1 (the clamp)
 
 
 def _compressed_invariants(state, alpha, pressure, force, solver, volume_rtol):
     assert (state.alpha, state.pressure_initial, state.force) == (alpha, pressure, force)
-    assert _finite(state) and state.stretch_contact > 0 and state.height > 0
-    assert np.all(state.profile.stretch_1 > 0) and np.all(state.profile.stretch_2 > 0)
+    assert _finite(state)
+    assert state.stretch_contact > 0
+    assert state.height > 0
+    assert np.all(state.profile.stretch_1 > 0)
+    assert np.all(state.profile.stretch_2 > 0)
     ratio = 1.0 if force == 0 else state.fluid.volume_ratio(state.pressure, pressure)
     assert state.volume == pytest.approx(state.inflated.volume * ratio, rel=volume_rtol)  # V = V_I (V/V_I)(P)
     assert state.pressure_ratio * state.contact_area == pytest.approx(force, rel=1e-12, abs=1e-300)  # F = P A_c
@@ -192,7 +199,8 @@ def test_shooting_compression_any_rubber_and_fluid(rubber, pressure, force, flui
         return
     event(f"a compressed state ({'gas' if fluid else 'liquid'})")
     _compressed_invariants(state, alpha, pressure, force, "shooting", 1e-9)
-    assert state.fluid is (fluid or state.fluid) and (alpha is not None or state.material is rubber)
+    assert state.fluid is (fluid or state.fluid)
+    assert (alpha is not None or state.material is rubber)
     for k in (1, 2):
         assert getattr(state, f"tension_{k}_min") <= np.min(getattr(state.profile, f"tension_{k}")) + 1e-15
     if force > 0:

@@ -34,8 +34,11 @@ def _run(tmp_path, capsys, text, *extra):
 
 def test_plain_means_no_unit():
     """A number, or text pint reads as dimensionless, has no unit; text with a unit has one."""
-    assert is_plain(20) and is_plain(0.25) and is_plain("20")
-    assert not is_plain("20 mm") and not is_plain("1 km")
+    assert is_plain(20)
+    assert is_plain(0.25)
+    assert is_plain("20")
+    assert not is_plain("20 mm")
+    assert not is_plain("1 km")
 
 
 def test_the_papers_samples_draw_no_warning():
@@ -48,7 +51,7 @@ def test_the_papers_samples_draw_no_warning():
 
 def test_a_radius_in_kilometres_is_refused_naming_the_radius(tmp_path, capsys):
     """20 km is beyond the largest pocket (SIZES): the radius is blamed, not a pressure derived from it."""
-    assert 20e3 > SIZES[1]
+    assert SIZES[1] < 20e3
     status, err = _run(tmp_path, capsys, CASE.replace('radius = "20 mm"', 'radius = "20 km"'))
     assert status == 2 and err.startswith("pocket: error: clamp.radius = '20 km' is 20000 m, outside"), err
     assert not list(tmp_path.glob("case.*[jc]s[vo]*"))
@@ -137,7 +140,7 @@ def test_design_in_plain_metres_warns_naming_radius_and_height(capsys):
     assert capsys.readouterr().err == ""
 
 
-@pytest.mark.parametrize("modulus, factor", [("40 kPa", 25), ("10 kPa", 100)])
+@pytest.mark.parametrize(("modulus", "factor"), [("40 kPa", 25), ("10 kPa", 100)])
 def test_design_of_a_thick_sheet(capsys, modulus, factor):
     """P_I does not depend on E, so T scales as 1/E: T at ``modulus`` is ``factor`` times T at 1 MPa.
     T/R above THIN_WARNING warns, at THIN_LIMIT or above is refused (exit 2), naming the inputs."""
@@ -150,9 +153,12 @@ def test_design_of_a_thick_sheet(capsys, modulus, factor):
     assert f"the sheet's thickness is {ratio:.3g} times the clamp radius" in err
     assert err.count("\n") == 1
     if ratio >= THIN_LIMIT:
-        assert status == 2 and err.startswith("pocket: error: ")
+        assert status == 2
+        assert err.startswith("pocket: error: ")
     else:
-        assert THIN_WARNING < ratio and status == 0 and err.startswith("pocket: warning: ")
+        assert ratio > THIN_WARNING
+        assert status == 0
+        assert err.startswith("pocket: warning: ")
 
 
 def test_a_plain_fingertip_radius_warns_in_a_case_and_in_design(capsys):

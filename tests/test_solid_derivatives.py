@@ -25,8 +25,8 @@ def _material(name):
 
 
 def _axisymmetric(rng, shape=(3,)):
-    F = np.zeros((3, 3) + shape)
-    F[:2, :2] = np.eye(2)[:, :, None] + 0.3 * rng.standard_normal((2, 2) + shape)
+    F = np.zeros((3, 3, *shape))
+    F[:2, :2] = np.eye(2)[:, :, None] + 0.3 * rng.standard_normal((2, 2, *shape))
     F[2, 2] = 1.0 + 0.3 * rng.random(shape)
     return F
 
@@ -62,7 +62,7 @@ def _energy_of_f(material, F):
 
 
 def _unit(i, j, shape):
-    E = np.zeros((3, 3) + shape)
+    E = np.zeros((3, 3, *shape))
     E[i, j] = 1.0
     return E
 

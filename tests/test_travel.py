@@ -86,7 +86,7 @@ def test_shooting_heights_end_where_the_range_ends():
             solver.compress_height(0.3, 0.3, 1.01 * top)
 
 
-@pytest.mark.parametrize("args, message", [
+@pytest.mark.parametrize(("args", "message"), [
     (["--height", "0.3", "--solver", "analytical"], "--height: solver analytical has no height-controlled "
                                                     "compression (entry point compress_height; solvers that "
                                                     "have it: shooting, fem, solid)"),

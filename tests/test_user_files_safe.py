@@ -178,7 +178,7 @@ def test_run_vtk_writes_surface_series(tmp_path, capsys):
         assert plate.points[:, 2].min() * 0.02 == pytest.approx(row["height_m"], rel=1e-12)
 
 
-@pytest.mark.parametrize("out, vtk", [("D", "D"), ("V/D", "V")])
+@pytest.mark.parametrize(("out", "vtk"), [("D", "D"), ("V/D", "V")])
 def test_run_vtk_into_its_out_folder_is_refused(out, vtk, tmp_path, capsys, no_solve, monkeypatch):
     """``--vtk`` the --out folder (or a folder holding it): the series, written as a folder of its own, would
     mix with the results; refused before any solve, exit 2, nothing written."""

@@ -27,7 +27,7 @@ def _cases_file(folder, sample: int, pressure: str):
     return path
 
 
-@pytest.mark.parametrize("sample, pressure", [(2, "5 kPa"), (3, "2 kPa")])
+@pytest.mark.parametrize(("sample", "pressure"), [(2, "5 kPa"), (3, "2 kPa")])
 def test_quick_validation_of_one_sample_passes(tmp_path, capsys, sample, pressure):
     cases = _cases_file(tmp_path, sample, pressure)
     status = main(["validate", "--quick", "--cases", str(cases), "--out", str(tmp_path / "report")])

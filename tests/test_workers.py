@@ -225,7 +225,7 @@ def test_a_lost_scheduler_is_one_line(cluster, tmp_path):
     started.append(sweep)
     assert _wait(lambda: (tmp_path / "started").exists(), 120), "the task did not start"
     scheduler.kill()
-    out, err = sweep.communicate(timeout=120)
+    _out, err = sweep.communicate(timeout=120)
     assert sweep.returncode == 1 and err.count("\n") == 1, err
     assert f"lost the connection to the dask scheduler at {address}" in err and "resumes the sweep" in err, err
     assert not (tmp_path / "s.csv").exists()
@@ -242,7 +242,7 @@ def test_all_workers_gone_is_one_line(cluster, tmp_path):
     started.append(sweep)
     assert _wait(lambda: (tmp_path / "started").exists(), 120), "the task did not start"
     worker.kill()
-    out, err = sweep.communicate(timeout=120)
+    _out, err = sweep.communicate(timeout=120)
     assert sweep.returncode == 1 and err.count("\n") == 1, err
     assert f"no dask worker has been connected to the scheduler at {address} for 1 s" in err, err
 
@@ -253,7 +253,7 @@ def test_no_worker_at_all_is_one_line(cluster, tmp_path):
     _, address, started = cluster
     sweep = _sweep(tmp_path, address, "--patience", "1")
     started.append(sweep)
-    out, err = sweep.communicate(timeout=120)
+    _out, err = sweep.communicate(timeout=120)
     assert sweep.returncode == 1 and err.count("\n") == 1, err
     assert f"no dask worker joined the scheduler at {address} within 1 s" in err, err
     assert not (tmp_path / "s.csv").exists()
@@ -267,7 +267,7 @@ def test_a_worker_without_pocket_is_one_line(cluster, tmp_path):
     started.append(_worker(address, tmp_path, without_pocket=True))
     sweep = _sweep(tmp_path, address)
     started.append(sweep)
-    out, err = sweep.communicate(timeout=120)
+    _out, err = sweep.communicate(timeout=120)
     assert sweep.returncode == 1 and err.count("\n") == 1, err
     assert "cannot run pocket (ModuleNotFoundError" in err and "No module named 'pocket'" in err, err
     assert not (tmp_path / "s.csv").exists()

@@ -46,7 +46,7 @@ from .fitkeys import PRESTRETCH, Key, key_named, keys
 from .fitmodel import PENALTY, Setup, predict, residuals
 from .fitstart import starts
 
-__all__ = ["Fit", "fit", "RUNS", "PROBED", "PRESTRETCHES"]
+__all__ = ["PRESTRETCHES", "PROBED", "RUNS", "Fit", "fit"]
 
 #: starts probed (the best by their cost), for the laws ``PROBED``
 RUNS = 4

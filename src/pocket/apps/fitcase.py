@@ -44,7 +44,7 @@ from .fitstart import MAX_TERMS
 from .rubbers import DEFAULT_LAW, law_name
 from .tomlfiles import read_toml
 
-__all__ = ["Request", "held", "uncertainties", "unit_warnings", "load", "parse"]
+__all__ = ["Request", "held", "load", "parse", "uncertainties", "unit_warnings"]
 
 _SECTIONS = {"name": None, "label": None, "sheet": ("material", "thickness", "prestretch"), "clamp": ("radius",),
              "initial": ("pressure",), "fit": ("data", "terms", "fix", "sigma", "prestretch"), "solver": ("name",)}

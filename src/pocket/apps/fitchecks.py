@@ -47,7 +47,7 @@ from .fitdata import QUANTITIES
 from .fitmodel import Setup
 from .fitstart import tension_estimate
 
-__all__ = ["MAX_STRETCH", "MAX_MODULUS", "MIN_MODULUS", "RUBBER_MODULI", "check", "modulus_warnings"]
+__all__ = ["MAX_MODULUS", "MAX_STRETCH", "MIN_MODULUS", "RUBBER_MODULI", "check", "modulus_warnings"]
 
 #: twice the largest stretch any rubber takes before it breaks (module docstring)
 MAX_STRETCH = 20.0

@@ -23,7 +23,7 @@ from pocket.core.profiles import read_csv
 from pocket.core.sizes import length_warnings
 from pocket.core.units import positive
 
-__all__ = ["SHAPES", "KEYS", "parse", "describe"]
+__all__ = ["KEYS", "SHAPES", "describe", "parse"]
 
 #: the shapes a user names -> the keys each takes besides ``shape``
 SHAPES = {"plate": (), "sphere": ("radius",), "profile": ("file",)}

@@ -88,7 +88,7 @@ CACHE_ENV = "POCKET_CACHE_DIR"
 _DISTRIBUTION = "pocket-mechanics"
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _version() -> str:
     """pocket's installed version, or ``unknown`` when run from sources that were never installed."""
     try:
@@ -115,7 +115,7 @@ def cache_roots() -> list[tuple[str, bool]]:
     return roots
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _package_stamp(folder: str) -> str:
     """sha256 of the names and contents of every ``.py`` file in ``folder``: what a cache entry depends on."""
     digest = hashlib.sha256()

@@ -51,8 +51,20 @@ from .profiles import Shape
 #: a kind's parameters by name: numbers (lengths in units of R), or a ``Shape`` for those in its ``shapes``
 Params = Mapping[str, "float | Shape"]
 
-__all__ = ["Kind", "KINDS", "register", "Indenter", "FLAT", "as_indenter", "formulation", "posed", "sphere", "profile",
-           "SPHERE_RADII", "check_sphere_radius"]
+__all__ = [
+    "FLAT",
+    "KINDS",
+    "SPHERE_RADII",
+    "Indenter",
+    "Kind",
+    "as_indenter",
+    "check_sphere_radius",
+    "formulation",
+    "posed",
+    "profile",
+    "register",
+    "sphere",
+]
 
 T = TypeVar("T")
 

@@ -71,8 +71,23 @@ from .inputs import check_file
 from .materials import Material
 from .states import CompressedState, InflatedState
 
-__all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS", "MaterialLike", "FluidLike", "Numbers", "Progress", "Inflate",
-           "InflateVolume", "InflationCurve", "Compress", "CompressionCurve", "CompressHeight", "RangeEnd"]
+__all__ = [
+    "ENTRY_POINTS",
+    "STEPS",
+    "Compress",
+    "CompressHeight",
+    "CompressionCurve",
+    "FluidLike",
+    "Inflate",
+    "InflateVolume",
+    "InflationCurve",
+    "MaterialLike",
+    "Numbers",
+    "Option",
+    "Progress",
+    "RangeEnd",
+    "Solver",
+]
 
 #: the two steps of the problem
 STEPS = ("inflate", "compress")
