@@ -110,7 +110,9 @@ def test_bad_case_file(old, new, message, tmp_path, capsys):
     path = _write(tmp_path, BUTTON.replace(old, new))
     assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err and "Traceback" not in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
+    assert "Traceback" not in err, err
     assert not (tmp_path / "out").exists()
 
 
@@ -127,7 +129,10 @@ def _run_case(tmp_path, capsys, text: bytes | str, name="case.toml"):
     status = main(["run", str(path), "--out", str(tmp_path / "out")])
     out, err = capsys.readouterr()
     assert not (tmp_path / "out").exists()
-    assert out == "" and err.count("\n") == 1 and "Traceback" not in err and len(err) < 400, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert "Traceback" not in err, err
+    assert len(err) < 400, err
     return status, err
 
 
@@ -181,7 +186,8 @@ def test_hostile_case_files(tmp_path, capsys, text, message):
     """Each file: one line of at most a few hundred characters naming the problem, exit 2, no output,
     before any solve (the work a case can ask for is bounded: elements, loads, file sizes)."""
     status, err = _run_case(tmp_path, capsys, text)
-    assert status == 2 and message in err, err
+    assert status == 2, err
+    assert message in err, err
 
 
 def test_a_mesh_file_is_relative_to_the_case_file(tmp_path, monkeypatch, capsys):
@@ -216,7 +222,9 @@ def test_plate_height_errors_quote_the_case(tmp_path, capsys, heights, message):
     range end). A case reaching some of its loads writes those (test_user_files_safe)."""
     text = BUTTON.replace('heights = ["9 mm", "8 mm"]', f"heights = {heights}")
     status, err = _run_case(tmp_path, capsys, text)
-    assert status == 2 and message in err and "height = 1 " not in err, err
+    assert status == 2, err
+    assert message in err, err
+    assert "height = 1 " not in err, err
 
 
 def test_lowest_plate_height_is_the_range_end(tmp_path):

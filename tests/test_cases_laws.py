@@ -202,7 +202,10 @@ def test_bad_law_or_fluid_is_one_line_naming_the_key(old, new, message, tmp_path
     path.write_text(text.replace(old, new))
     assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and message in err and "Traceback" not in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
+    assert "Traceback" not in err, err
     assert not (tmp_path / "out").exists()
 
 
@@ -227,7 +230,8 @@ def test_bad_parameters_of_other_laws(law, old, new, message, tmp_path, capsys):
     path.write_text(text.replace(old, new))
     assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 @pytest.mark.parametrize(("law", "fluid"), [("ogden", "air, adiabatic"), ("gent", "air, isothermal")])

@@ -78,7 +78,8 @@ def test_bad_input_is_one_line_and_exit_2(capsys, argv, message):
     out, err = capsys.readouterr()
     assert status == 2
     assert out == ""
-    assert len(err.strip().splitlines()) == 1 and message in err, err
+    assert len(err.strip().splitlines()) == 1, err
+    assert message in err, err
 
 
 def test_console_script_whole_process():
@@ -124,7 +125,9 @@ def test_vtk_times_are_the_forces_in_any_order(capsys, tmp_path):
     assert [float(d.get("timestep")) for d in sets] == [0.05, 0.1, 0.2]
     assert [meshio.read(out / d.get("file")).field_data["force"].tolist() for d in sets] == [[0.05], [0.1], [0.2]]
     status, _, err = run(capsys, *argv, "0.1", "0.2", "0.1", "--overwrite")
-    assert status == 2 and err.count("\n") == 1 and "--force gives 0.1 more than once" in err, err
+    assert status == 2, err
+    assert err.count("\n") == 1, err
+    assert "--force gives 0.1 more than once" in err, err
 
 
 @pytest.mark.parametrize(("flags", "solver", "extra"), [
@@ -188,7 +191,8 @@ def test_python_dash_m_pocket_runs_the_command():
     assert (done.returncode, done.stdout.strip(), done.stderr) == (0, f"pocket {described()}", "")
     done = subprocess.run([sys.executable, "-m", "pocket", "inflate", "--alpha", "0.3", "--pressure", "0.3",
                            "--json"], capture_output=True, text=True)
-    assert done.returncode == 0 and json.loads(done.stdout)["pressure"] == 0.3, done.stderr
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout)["pressure"] == 0.3, done.stderr
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
@@ -227,7 +231,10 @@ def test_a_pressure_above_the_maximum_quotes_it_and_volume_control_passes_it(cap
     one 20 % further, past the maximum, a lower pressure."""
     status, out, err = run(capsys, "inflate", "--alpha", "0", "--pressure", "0.8", "--solver", solver)
     found = re.search(r"maximum Phat = (\S+), reached at V/R\^3 = (\S+) .*pocket inflate --volume V\)$", err)
-    assert status == 2 and out == "" and err.count("\n") == 1 and found, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert found, err
     maximum, volume = float(found[1]), float(found[2])
     assert maximum < 0.8
     pressures = []
@@ -261,8 +268,11 @@ def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, mo
     monkeypatch.setattr(steps, "newton", failing)
     status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.1",
                            "--solver", "fem", "--elements", "50", "--vtk", str(tmp_path / "fe"))
-    assert status == 1 and out == "" and len(err.strip().splitlines()) == 1, err
-    assert where in err and "patched to fail" in err, err
+    assert status == 1, err
+    assert out == "", err
+    assert len(err.strip().splitlines()) == 1, err
+    assert where in err, err
+    assert "patched to fail" in err, err
     assert list(tmp_path.iterdir()) == []
 
 
@@ -283,7 +293,8 @@ def test_inflate_help_names_no_force_and_no_fluid(capsys):
         assert main([name, "--help"]) == 0
         texts[name] = " ".join(capsys.readouterr().out.split()).lower()
     for word in ("--force", "--fluid", "fhat", "forces", "fluid"):
-        assert word in texts["compress"] and word not in texts["inflate"], word
+        assert word in texts["compress"], word
+        assert word not in texts["inflate"], word
 
 
 def test_readme_commands_are_harmless_to_paste():
@@ -373,7 +384,10 @@ def test_solver_options_and_magnitudes_through_the_cli(capsys, argv, message):
     """Option values the records refuse, and numbers outside the model's magnitudes: exit 2, one line."""
     status = main(argv)  # argparse's own errors too: main returns their status
     out, err = capsys.readouterr()
-    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def _with_warnings(monkeypatch):
@@ -502,7 +516,8 @@ def test_every_command_on_a_closed_pipe(argv, buffered, tmp_path):
                             stderr=subprocess.PIPE, env=env)
     proc.stdout.close()
     err = proc.stderr.read().decode()
-    assert proc.wait() == 0 and err == "", err
+    assert proc.wait() == 0, err
+    assert err == "", err
 
 
 def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
@@ -539,7 +554,9 @@ def test_sigint_to_a_long_fe_solve(tmp_path):
             out, err = proc.communicate(timeout=600)
         finally:
             proc.kill()
-    assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
+    assert proc.returncode == 130, err
+    assert err == b"pocket: interrupted\n", err
+    assert out == b"", err
     assert [p.name for p in tmp_path.iterdir()] == [hold.script.name]  # no --vtk folder
 
 
@@ -564,4 +581,6 @@ def test_sigint_during_compilation_is_not_lost(tmp_path):
             out, err = proc.communicate(timeout=600)
         finally:
             proc.kill()
-    assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
+    assert proc.returncode == 130, err
+    assert err == b"pocket: interrupted\n", err
+    assert out == b"", err

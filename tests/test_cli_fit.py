@@ -47,7 +47,10 @@ def test_bad_data_one_line_exit_2_before_solving(case, tmp_path, capsys, monkeyp
     (tmp_path / "data.csv").write_text(text)
     status = main(["fit", str(tmp_path / "data.csv"), "--radius", "20 mm", "--thickness", "1 mm"])
     out, err = capsys.readouterr()
-    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def test_json_parameters_in_si(tmp_path, capsys):
@@ -121,7 +124,9 @@ def test_prestretch_held_or_fitted(tmp_path, capsys):
                          (["--fix", "prestretch=0.9"], "--fix prestretch = 0.9, but a prestretch")):
         assert main([*base, *bad]) == 2
         out, err = capsys.readouterr()
-        assert out == "" and err.count("\n") == 1 and message in err, err
+        assert out == "", err
+        assert err.count("\n") == 1, err
+        assert message in err, err
 
 
 CASE = """[sheet]
@@ -172,4 +177,7 @@ def test_bad_case_file_one_line_exit_2_before_solving(case, tmp_path, capsys, mo
     (tmp_path / "case.toml").write_text(text)
     status = main(["fit", str(tmp_path / "case.toml"), *flags])
     out, err = capsys.readouterr()
-    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err

@@ -96,7 +96,8 @@ def test_cli_bad_input(option, value, message, capsys):
     args[option] = value
     assert main(["design", *[x for kv in args.items() for x in kv]]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def test_curve_stops_at_the_end_of_the_range():
@@ -210,4 +211,5 @@ def test_cli_bad_fluid_or_law(extra, message, capsys):
             "--force", "0.67 N", *extra]
     assert main(argv) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err

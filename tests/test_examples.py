@@ -21,7 +21,8 @@ def test_fingertip_button_designs_for_the_sphere_and_writes_its_series(tmp_path)
     surface in every step beside the sheet's."""
     run = subprocess.run([sys.executable, str(EXAMPLES / "fingertip_button.py"), str(tmp_path)],
                          capture_output=True, text=True, timeout=300, check=False)
-    assert run.returncode == 0 and not run.stderr, run.stderr
+    assert run.returncode == 0, run.stderr
+    assert not run.stderr, run.stderr
     phat_i = float(re.search(r"Phat_I = (\S+),", run.stdout).group(1))
     fhat = float(re.search(r"Fhat = (\S+),", run.stdout).group(1))
     state = shooting.compress(47 / 160, phat_i, fhat, indenter=sphere(0.4))
@@ -43,7 +44,8 @@ def test_bulge_fit_recovers_the_rubber_and_presses_the_fitted_sheet(tmp_path):
 
     run = subprocess.run([sys.executable, str(EXAMPLES / "bulge_fit.py"), str(tmp_path)],
                          capture_output=True, text=True, timeout=300, check=False)
-    assert run.returncode == 0 and not run.stderr, run.stderr
+    assert run.returncode == 0, run.stderr
+    assert not run.stderr, run.stderr
     truth = {"c10": 85e3, "c20": -2e3, "c30": 0.2e3}
     for name, value in truth.items():
         fitted, error = (float(x) for x in re.search(rf"{name} = (\S+) Pa \+- (\S+)", run.stdout).groups())
@@ -68,7 +70,8 @@ def test_membrane_error_prints_both_models_and_draws_them(tmp_path):
 
     run = subprocess.run([sys.executable, str(EXAMPLES / "membrane_error.py"), str(tmp_path)],
                          capture_output=True, text=True, timeout=600, check=False)
-    assert run.returncode == 0 and not run.stderr, run.stderr
+    assert run.returncode == 0, run.stderr
+    assert not run.stderr, run.stderr
     rows = re.findall(r"^  (\S.*?)\s+(\S+)\s+(\S+) (?:\S+)?\s+([+-]\S+)%$", run.stdout, re.M)
     assert len(rows) == 3 + 3 * 3, run.stdout
     for _, membrane, solid, error in rows:

@@ -114,7 +114,9 @@ def test_beyond_the_range_end_is_out_of_range():
                      r"\(.*\): there the free part of the sheet reaches the clamp plane", str(info.value))
     assert found, str(info.value)
     low, high = map(float, found.groups())
-    assert low < high and low == pytest.approx(end, rel=1e-4) and high == pytest.approx(end, rel=1e-4), (low, high, end)
+    assert low < high, (low, high, end)
+    assert low == pytest.approx(end, rel=1e-4), (low, high, end)
+    assert high == pytest.approx(end, rel=1e-4), (low, high, end)
 
 
 def test_height_control_reaches_the_force_state():

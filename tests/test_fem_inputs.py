@@ -53,7 +53,8 @@ def test_bad_input_is_a_one_line_input_error(call, quoted):
     with pytest.raises(InputError) as info:
         call()
     message = str(info.value)
-    assert quoted in message and "\n" not in message, message
+    assert quoted in message, message
+    assert "\n" not in message, message
 
 
 def test_abrupt_tiny_element_is_rejected_saying_why():

@@ -27,7 +27,9 @@ def _no_solving(*args, **kwargs):
 
 def _one_line(capsys) -> str:
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert "Traceback" not in err, err
     return err
 
 

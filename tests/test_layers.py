@@ -132,7 +132,8 @@ def test_no_second_copy_from_the_repository_root(name):
     assert loaded == []
     proc = subprocess.run([sys.executable, "-c", _IMPORT_FROM_THE_ROOT, f"pocket.{name}"], capture_output=True,
                           text=True, cwd=ROOT)
-    assert proc.returncode == 0 and json.loads(proc.stdout)[0] is None, proc.stderr
+    assert proc.returncode == 0, proc.stderr
+    assert json.loads(proc.stdout)[0] is None, proc.stderr
 
 
 @pytest.mark.slow

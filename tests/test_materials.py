@@ -91,7 +91,8 @@ def test_scaled_has_unit_mu0_and_the_same_shape_of_energy():
 def test_bad_parameters_are_one_line_errors_naming_the_key(name, params, message):
     with pytest.raises(InputError) as err:
         check(name, params)
-    assert message in str(err.value) and "\n" not in str(err.value), str(err.value)
+    assert message in str(err.value), str(err.value)
+    assert "\n" not in str(err.value), str(err.value)
 
 
 def test_yeoh_stability_boundary():

@@ -196,7 +196,9 @@ def test_read_rejects(tmp_path, kind):
     with pytest.raises(InputError) as info:
         meshes.read(path)
     message = str(info.value)
-    assert str(path) in message and problem in message and "\n" not in message, message
+    assert str(path) in message, message
+    assert problem in message, message
+    assert "\n" not in message, message
 
 
 @pytest.mark.parametrize(

@@ -46,7 +46,10 @@ def test_a_bad_case_prestretch_is_one_line(value, message, tmp_path, capsys):
     path.write_text(case_text("yeoh").replace('[clamp]', f'prestretch = {value}\n[clamp]'))
     assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and message in err and "Traceback" not in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
+    assert "Traceback" not in err, err
     assert not (tmp_path / "out").exists()
 
 
@@ -66,7 +69,9 @@ def _exit(argv) -> int:
 def test_a_bad_flag_is_one_line(value, message, capsys):
     assert _exit(["inflate", "--law", "neo-hookean", "--mu", "1", "--prestretch", value, "--pressure", "0.3"]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and message in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def test_gent_past_locking_on_the_command_line(capsys):

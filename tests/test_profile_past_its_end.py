@@ -70,14 +70,17 @@ def test_a_force_past_a_short_profiles_end_is_one_line_exit_2(tmp_path, capsys, 
                                         "--indenter", "profile", "--indenter-file", str(path),
                                         "--solver", solver, "--force", repr(end * factor)])
     assert status == 2, err
-    assert err.count("\n") == 1 and err.startswith("pocket: error: force = "), err
+    assert err.count("\n") == 1, err
+    assert err.startswith("pocket: error: force = "), err
     assert not caught, [str(w.message) for w in caught]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv"]
     if solver == "shooting":
-        assert f"ends at force = {end:.10g}" in err and PROFILE_END in err, err
+        assert f"ends at force = {end:.10g}" in err, err
+        assert PROFILE_END in err, err
     else:
         quoted = re.search(r"ends near force = ([0-9.eE+-]+): .*rho_c/R = ([0-9.eE+-]+) of", err)
-        assert FE_END in err and float(quoted.group(1)) <= end * (1.0 + 1e-6), err
+        assert FE_END in err, err
+        assert float(quoted.group(1)) <= end * (1.0 + 1e-6), err
         assert float(quoted.group(2)) >= (1.0 - 1e-3) * table[-1, 0], err
 
 

@@ -149,9 +149,9 @@ def test_shooting_compression(alpha, pressure, force):
         else:
             assert _fe_refuses(fem.inflate, alpha, pressure), "the FE inflates it"
         return
-    except ConvergenceError as err:
+    except ConvergenceError:  # a failure below shows this error as its context
         event("ConvergenceError")
-        assert _fe_refuses(fem.compress, alpha, pressure, force), f"the FE solves it: {err}"
+        assert _fe_refuses(fem.compress, alpha, pressure, force), "the FE solves it"
         return
     event("a compressed state")
     _compressed_invariants(state, alpha, pressure, force, "shooting", 1e-9)
@@ -191,11 +191,11 @@ def test_shooting_compression_any_rubber_and_fluid(rubber, pressure, force, flui
         if beyond:
             assert force > shooting.range_end(rubber, pressure, fluid=fluid)
         else:
-            assert _fe_refuses(fem.compress, rubber, pressure, force, fluid=fluid), f"the FE solves it: {err}"
+            assert _fe_refuses(fem.compress, rubber, pressure, force, fluid=fluid), "the FE solves it"
         return
-    except ConvergenceError as err:
+    except ConvergenceError:  # a failure below shows this error as its context
         event("ConvergenceError")
-        assert _fe_refuses(fem.compress, rubber, pressure, force, fluid=fluid), f"the FE solves it: {err}"
+        assert _fe_refuses(fem.compress, rubber, pressure, force, fluid=fluid), "the FE solves it"
         return
     event(f"a compressed state ({'gas' if fluid else 'liquid'})")
     _compressed_invariants(state, alpha, pressure, force, "shooting", 1e-9)

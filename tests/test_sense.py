@@ -92,7 +92,8 @@ def test_cli_errors(args, message, capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert main(["sense", "--sample", "2", *args]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert list(tmp_path.iterdir()) == []
 
 

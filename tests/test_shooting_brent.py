@@ -32,7 +32,8 @@ def test_same_root_and_evaluations_as_scipy_brentq(name, xtol, rtol):
 
     ours = brent.root(counted, a, b, xtol=xtol, rtol=rtol, maxiter=1000)
     theirs, info = brentq(f, a, b, xtol=xtol, rtol=rtol, maxiter=1000, full_output=True)
-    assert ours == theirs and count[0] == info.function_calls, (name, ours, theirs, count[0], info.function_calls)
+    assert ours == theirs, (name, ours, theirs, count[0], info.function_calls)
+    assert count[0] == info.function_calls, (name, ours, theirs, count[0], info.function_calls)
 
 
 def test_known_values_spare_evaluations():

@@ -32,7 +32,8 @@ def test_solves_what_hybr_solves(fun, x0):
     """Exact answer: the root hybr finds (to its accuracy, 1e-10 relative), with max |f| <= 1e-12."""
     ours = newton.solve(fun, x0, tol=1e-12)
     ref = root(fun, x0, method="hybr", options=dict(xtol=1e-14))
-    assert ref.success and ours.success, (ours.message, ref.message)
+    assert ref.success, (ours.message, ref.message)
+    assert ours.success, (ours.message, ref.message)
     np.testing.assert_allclose(ours.x, ref.x, rtol=1e-9, atol=1e-12)
     assert ours.residual <= 1e-12
 

@@ -86,7 +86,8 @@ def test_force_past_a_shallow_domes_end_is_refused_in_one_line(capsys, solver):
                "sphere", "--indenter-radius", repr(radius), "--force", repr(1.01 * end), "--solver", solver]
     assert main(command) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "is beyond the model's range, which ends at" in err, err
+    assert err.count("\n") == 1, err
+    assert "is beyond the model's range, which ends at" in err, err
     if solver == "shooting":
         assert f"force = {end:.10g}" in err, err
 

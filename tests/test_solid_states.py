@@ -188,7 +188,9 @@ def test_bad_input_is_one_line_and_exit_2(flags, text, capsys):
     """A thickness ratio outside (0, 0.5), too few layers or elements: exit 2 and one line naming the flag."""
     status = main(["compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.2", "--solver", "solid", *flags])
     err = capsys.readouterr().err
-    assert status == 2 and text in err and err.count("\n") == 1, err
+    assert status == 2, err
+    assert text in err, err
+    assert err.count("\n") == 1, err
 
 
 def test_bad_input_in_python_before_any_work():

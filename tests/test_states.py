@@ -66,7 +66,8 @@ def test_a_rubber_given_by_alpha_reports_that_alpha_first_and_its_c1_c2():
     assert out["c2"] == pytest.approx(0.3 / 2.6, rel=1e-15)
 
 
-@pytest.mark.parametrize(("law", "params"), [("neo-hookean", {"mu": 1.0}), ("mooney-rivlin", {"c1": 160e3, "c2": 47e3})])
+@pytest.mark.parametrize(("law", "params"),
+                         [("neo-hookean", {"mu": 1.0}), ("mooney-rivlin", {"c1": 160e3, "c2": 47e3})])
 def test_a_rubber_given_by_its_parameters_reports_no_alpha(law, params):
     """Exact answer: the parameters as given, and no alpha (for Mooney-Rivlin none recomputed from C1, C2)."""
     from pocket.core.materials import check

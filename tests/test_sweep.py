@@ -156,7 +156,8 @@ def test_bad_grid(argv, message, tmp_path, capsys):
     path = tmp_path / "bad.csv"
     assert main(["sweep", *argv, "--out", str(path), "--workers", "1"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert not path.exists()
 
 
@@ -227,7 +228,8 @@ def test_a_file_that_is_not_a_sweep_is_left_untouched(tmp_path, capsys, content)
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
                  "--workers", "1"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "is not a sweep file" in err, err
+    assert err.count("\n") == 1, err
+    assert "is not a sweep file" in err, err
     assert path.read_bytes() == content
 
 
@@ -305,7 +307,8 @@ def test_full_disk_while_appending_keeps_complete_rows(reference, tmp_path, monk
     path = tmp_path / "full.csv"
     assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 1
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"cannot write {path}: No space left on device" in err, err
+    assert err.count("\n") == 1, err
+    assert f"cannot write {path}: No space left on device" in err, err
     kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
     assert len(kept) >= 2
     assert kept[0] == lines[0]
@@ -355,7 +358,9 @@ def test_file_size_limit_in_a_real_process(reference, tmp_path):
     path = tmp_path / "limited.csv"
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "sweep", *ARGV, "--out", str(path), "--workers", "2"],
                           capture_output=True, text=True, preexec_fn=small_files)
-    assert proc.returncode == 1 and proc.stderr.count("\n") == 1 and "File too large" in proc.stderr, proc.stderr
+    assert proc.returncode == 1, proc.stderr
+    assert proc.stderr.count("\n") == 1, proc.stderr
+    assert "File too large" in proc.stderr, proc.stderr
     kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
     assert len(kept) >= 2
     assert kept[0] == lines[0]
@@ -384,7 +389,8 @@ def test_one_writer_at_a_time(tmp_path, capsys):
     finally:
         holder.communicate("")
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "another pocket sweep is writing this file" in err, err
+    assert err.count("\n") == 1, err
+    assert "another pocket sweep is writing this file" in err, err
     assert path.read_text() == ",".join(COLUMNS) + "\n"
 
 
@@ -404,7 +410,8 @@ def test_bad_sweep_options(tmp_path, capsys, extra, message):
     path = tmp_path / "s.csv"
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path), *extra]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert not path.exists()
 
 
@@ -433,7 +440,8 @@ def test_a_bad_scheduler_address_is_input(tmp_path, capsys):
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--out", str(path),
                  "--scheduler", "not an address"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "--scheduler not an address: cannot connect" in err, err
+    assert err.count("\n") == 1, err
+    assert "--scheduler not an address: cannot connect" in err, err
     assert not path.exists()
 
 
@@ -528,7 +536,8 @@ def test_bad_sweep_indenter(tmp_path, capsys, extra, message):
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
                  "--workers", "1", *extra]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert not path.exists()
 
 

@@ -89,7 +89,9 @@ def test_every_writer_refuses_the_users_files(argv, message, mine, capsys, no_wo
     before = _tree(mine)
     assert main(argv) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and err.startswith("pocket: error: "), err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert err.startswith("pocket: error: "), err
     assert message in err, err
     assert _tree(mine) == before
 
@@ -158,7 +160,8 @@ def test_a_report_of_the_other_kind_is_refused(command, kind, other, tmp_path, c
     before = _tree(tmp_path)
     assert main([command, "--quick", "--out", str(tmp_path / "report")]) == 2
     err = capsys.readouterr().err
-    assert f"holds a pocket {other}, not a {kind}" in err and err.count("\n") == 1, err
+    assert f"holds a pocket {other}, not a {kind}" in err, err
+    assert err.count("\n") == 1, err
     assert _tree(tmp_path) == before
 
 

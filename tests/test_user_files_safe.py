@@ -69,7 +69,8 @@ def _refused(argv, root, capsys, *needles) -> str:
     capsys.readouterr()
     assert main(argv) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and err.startswith("pocket: error: "), err
+    assert err.count("\n") == 1, err
+    assert err.startswith("pocket: error: "), err
     for needle in needles:
         assert needle in err, err
     assert _tree(root) == before

@@ -150,7 +150,8 @@ def test_bad_case_files_are_refused(tmp_path, edit, bad, named):
     path.write_text(text.replace(edit, bad, 1))
     with pytest.raises(InputError) as err:
         load(path)
-    assert "\n" not in str(err.value) and named in str(err.value), err.value
+    assert "\n" not in str(err.value), err.value
+    assert named in str(err.value), err.value
 
 
 @pytest.mark.parametrize(("solver", "options", "named"), [

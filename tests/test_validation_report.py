@@ -239,7 +239,8 @@ def test_one_colour_per_pocket_in_every_figure(report):
     for fig in figures(report[2]):
         for s in (s for panel in fig.panels for s in panel.series if s.group and not s.emphasis):
             colours.setdefault(s.group, set()).add(s.color)
-    assert len(colours) >= 8 and all(len(c) == 1 for c in colours.values()), colours
+    assert len(colours) >= 8, colours
+    assert all(len(c) == 1 for c in colours.values()), colours
     used = [next(iter(c)) for c in colours.values()]
     assert len(set(used)) == len(used)
     assert max(used) < len(PALETTE)
@@ -559,7 +560,8 @@ def test_report_folders_are_ignored_by_git():
         assert done.returncode == 0, folder
 
 
-@pytest.mark.parametrize(("command", "default"), [("validate", "validation-report"), ("converge", "convergence-report")])
+@pytest.mark.parametrize(("command", "default"),
+                         [("validate", "validation-report"), ("converge", "convergence-report")])
 def test_help(capsys, command, default):
     """Exact answer: the help has a description, every option with its default, and the exit codes."""
     assert main([command, "--help"]) == 0
@@ -675,13 +677,15 @@ def test_a_rerun_replaces_the_report_pocket_wrote(report, tmp_path, capsys, monk
     capsys.readouterr()
     assert main(["converge", "--quick", "--out", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "holds a pocket validation report, not a convergence report" in err, err
+    assert err.count("\n") == 1, err
+    assert "holds a pocket validation report, not a convergence report" in err, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
     (out / "report.md").write_text("my own notes on the run")
     before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
     assert main(["validate", "--quick", "--out", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "report.md changed after pocket wrote its validation report" in err, err
+    assert err.count("\n") == 1, err
+    assert "report.md changed after pocket wrote its validation report" in err, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
 
 
@@ -813,7 +817,8 @@ def test_thickness_section(report, page):
     assert first.values["P/P_I", forces[0]][0] == pytest.approx(fresh.pressure_ratio, rel=1e-9)
     assert first.values["V", None][0] == pytest.approx(fresh.inflated.volume, rel=1e-9)
     volume = [abs(c.error("V")) for c in comparisons if c.pressure_kpa == pressures[-1]]
-    assert volume == sorted(volume) and all(c.error("V") > 0 for c in comparisons), volume
+    assert volume == sorted(volume), volume
+    assert all(c.error("V") > 0 for c in comparisons), volume
     assert "thickness.png" in page.images
     assert (report[1] / "thickness.png").stat().st_size > 0
 

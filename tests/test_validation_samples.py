@@ -43,4 +43,5 @@ def test_a_run_without_the_four_samples_draws_no_empty_fig4(tmp_path, capsys):
     assert main(["validate", "--quick", "--cases", str(cases), "--out", str(tmp_path / "report")]) == 0
     capsys.readouterr()
     drawn = {p.stem for p in (tmp_path / "report").glob("*.png")}
-    assert "fig3a" in drawn and "fig4" not in drawn, sorted(drawn)
+    assert "fig3a" in drawn, sorted(drawn)
+    assert "fig4" not in drawn, sorted(drawn)

@@ -314,7 +314,7 @@ def test_series_is_atomic(tmp_path, monkeypatch):
     old = sorted(p.name for p in (tmp_path / "path").iterdir())
     calls.clear()
     monkeypatch.setattr(meshio, "write", failing)
-    with pytest.raises(OSError):
+    with pytest.raises(OSError, match="disk full"):
         files.write_series(tmp_path / "path", states, overwrite=True)
     assert sorted(p.name for p in (tmp_path / "path").iterdir()) == old
     assert [p.name for p in tmp_path.iterdir()] == ["path"]
@@ -328,7 +328,7 @@ def test_series_refuses_non_empty(tmp_path):
     target.mkdir()
     (target / "stale.txt").write_text("old")
     for overwrite in (False, True):
-        with pytest.raises(InputError, match="holds stale.txt, which pocket did not write"):
+        with pytest.raises(InputError, match=r"holds stale\.txt, which pocket did not write"):
             files.write_series(target, states, overwrite=overwrite)
     (target / "stale.txt").unlink()
     files.write_series(target, states[:1])
@@ -471,7 +471,8 @@ def _read(field_data) -> dict:
     for key, names in CODES.items():
         if key in out:
             (code,) = out[key]
-            assert code == int(code) and -1 <= code < len(names), (key, code)
+            assert code == int(code), (key, code)
+            assert -1 <= code < len(names), (key, code)
             out[key] = None if code == -1 else names[int(code)]
     return out
 
