@@ -15,13 +15,13 @@ from .inflation import inflate, inflate_volume, inflation_curve
 from .travel import compress_height
 
 __all__ = [
-           "compress",
-           "compress_height",
-           "compression_curve",
-           "inflate",
-           "inflate_volume",
-           "inflation_curve",
-           "range_end",
+    "compress",
+    "compress_height",
+    "compression_curve",
+    "inflate",
+    "inflate_volume",
+    "inflation_curve",
+    "range_end",
 ]
 
 compress: Compress = compression.compress
