@@ -19,7 +19,7 @@ require_import_name(__name__, "pocket.analytical")
 if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loaded on first use (__getattr__)
     from .api import compress, compression_curve, inflate, range_end, shape_function
 
-__all__ = ["SOLVER", "inflate", "compress", "compression_curve", "range_end", "shape_function"]
+__all__ = ["SOLVER", "compress", "compression_curve", "inflate", "range_end", "shape_function"]
 
 SOLVER = Solver(
     name="analytical",

@@ -7,4 +7,4 @@ solver's face, the same in every solver: one place to read what the solver offer
 
 from .model import compress, compression_curve, inflate, range_end, shape_function
 
-__all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function"]
+__all__ = ["compress", "compression_curve", "inflate", "range_end", "shape_function"]

@@ -73,8 +73,16 @@ from pocket.core.materials import as_material
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-__all__ = ["inflate", "compress", "compression_curve", "range_end", "shape_function", "STRETCH_LIMIT", "CONTACTS",
-           "GEOMETRIES"]
+__all__ = [
+    "CONTACTS",
+    "GEOMETRIES",
+    "STRETCH_LIMIT",
+    "compress",
+    "compression_curve",
+    "inflate",
+    "range_end",
+    "shape_function",
+]
 
 _N = 201  # profile points
 

@@ -18,6 +18,7 @@
 from __future__ import annotations
 
 import importlib.util
+import itertools
 import os
 import sys
 import time
@@ -92,7 +93,7 @@ def section_1(quick: bool):
         print(f"   {n:4d} x {k:<2d} ({what:13s}) {spent:7.1f} s  max |dP/P_I| / (P/P_I) = {worst.max():.1e} "
               f"(at Fhat = {FORCES[np.argmax(worst)]:.1f})")
     layers = sorted(k for n, k in rows if n == MESH[0])
-    for a, b in zip(layers, layers[1:], strict=False):
+    for a, b in itertools.pairwise(layers):
         step = np.abs(rows[(MESH[0], b)] / rows[(MESH[0], a)] - 1.0).max()
         print(f"   through the thickness, {a} -> {b} layers ({MESH[0]} elements): max relative change {step:.1e}")
     return states, seconds

@@ -41,9 +41,20 @@ require_import_name(__name__, "pocket.fem")
 if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loaded on first use (__getattr__)
     from .api import compress, compress_height, compression_curve, default_mesh, inflate, inflate_volume
 
-__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height",
-           "default_mesh", "DEFAULT_ELEMENTS", "DEFAULT_ELEMENTS_P1", "MAX_ELEMENTS", "MIN_ELEMENTS",
-           "CONTACT_METHODS"]
+__all__ = [
+    "CONTACT_METHODS",
+    "DEFAULT_ELEMENTS",
+    "DEFAULT_ELEMENTS_P1",
+    "MAX_ELEMENTS",
+    "MIN_ELEMENTS",
+    "SOLVER",
+    "compress",
+    "compress_height",
+    "compression_curve",
+    "default_mesh",
+    "inflate",
+    "inflate_volume",
+]
 
 #: elements of the default mesh with P2 elements (``api.default_mesh`` says how the number was chosen)
 DEFAULT_ELEMENTS = 256

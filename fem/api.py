@@ -57,8 +57,18 @@ from .surfaces import surface
 #: a mesh argument: a mesh file's name, or the nodes of [0, 1] (shape (n+1,)); None for the default mesh
 Mesh = str | pathlib.PurePath | np.ndarray | None
 
-__all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "default_mesh",
-           "DEFAULT_PENALTY", "POLAR_POWER", "CONTACTS", "GEOMETRIES"]
+__all__ = [
+    "CONTACTS",
+    "DEFAULT_PENALTY",
+    "GEOMETRIES",
+    "POLAR_POWER",
+    "compress",
+    "compress_height",
+    "compression_curve",
+    "default_mesh",
+    "inflate",
+    "inflate_volume",
+]
 
 DEFAULT_PENALTY = 1e5
 #: grading exponent of the default mesh family towards the axis (``meshes.polar``)

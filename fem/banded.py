@@ -42,7 +42,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from scipy.linalg import lapack
 
-__all__ = ["Bordered", "SingularSystem", "Buffers", "matvec", "band", "constrain", "refined"]
+__all__ = ["Bordered", "Buffers", "SingularSystem", "band", "constrain", "matvec", "refined"]
 
 _REFINE = 2  # iterative-refinement steps at most
 _ACCURATE = 1e-8  # residual of the linear solve, relative to the right-hand side, that needs no refinement
@@ -153,7 +153,7 @@ class Bordered:
 
     def _a_solve(self, rhs: np.ndarray) -> np.ndarray:
         lu, piv = self._lu
-        out, info = lapack.dgbtrs(lu, self.kl, self.kl, rhs, piv)
+        out, _info = lapack.dgbtrs(lu, self.kl, self.kl, rhs, piv)
         return out
 
     def eliminate(self, r: np.ndarray, s: np.ndarray):

@@ -34,7 +34,7 @@ from .model import FITTED, PENALTY, Control, Model
 from .newton import Tolerances
 from .steps import solve
 
-__all__ = ["fitted_curve", "penalty_curve", "fitted_height", "penalty_height", "predict"]
+__all__ = ["fitted_curve", "fitted_height", "penalty_curve", "penalty_height", "predict"]
 
 
 def predict(history: list[tuple[float, np.ndarray]], sigma: float) -> np.ndarray:

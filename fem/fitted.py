@@ -38,7 +38,7 @@ from .model import FITTED, Control, Model
 from .newton import Tolerances
 from .steps import near_locking, solve
 
-__all__ = ["touch", "first_contact", "force_path", "height_path", "plate_force_of", "A_FIRST", "SMALLEST_FORCE"]
+__all__ = ["A_FIRST", "SMALLEST_FORCE", "first_contact", "force_path", "height_path", "plate_force_of", "touch"]
 
 A_FIRST = 0.05  # largest contact radius of the first contact state
 #: smallest force Fhat solved: below it the plate's balance, a difference of nodal forces of the

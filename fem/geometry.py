@@ -33,7 +33,7 @@ import numpy as np
 
 from .reference import Reference
 
-__all__ = ["Placement", "place", "contact_elements", "node_radii", "evaluate"]
+__all__ = ["Placement", "contact_elements", "evaluate", "node_radii", "place"]
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

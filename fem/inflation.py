@@ -56,7 +56,7 @@ from .newton import Tolerances
 from .post import pole_stretch
 from .steps import dome, land, near_locking, solve
 
-__all__ = ["to_pressure", "to_volume", "volume", "inflated_at", "forget", "REMEMBERED"]
+__all__ = ["REMEMBERED", "forget", "inflated_at", "to_pressure", "to_volume", "volume"]
 
 #: inflated states ``inflated_at`` remembers (at most 8 (2 N + 3) floats each, N the nodal dofs)
 REMEMBERED = 8

@@ -70,7 +70,7 @@ from .geometry import Placement
 from .material import Law
 from .reference import Reference
 
-__all__ = ["Fields", "Contact", "Linear", "element_dofs", "fields", "evaluate"]
+__all__ = ["Contact", "Fields", "Linear", "element_dofs", "evaluate", "fields"]
 
 
 @dataclasses.dataclass(frozen=True)

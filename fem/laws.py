@@ -74,7 +74,7 @@ import numpy as np
 
 from pocket.core.compiled import compiled
 
-__all__ = ["MOONEY_RIVLIN", "YEOH", "GENT", "OGDEN", "derivatives", "evaluate"]
+__all__ = ["GENT", "MOONEY_RIVLIN", "OGDEN", "YEOH", "derivatives", "evaluate"]
 
 MOONEY_RIVLIN, YEOH, GENT, OGDEN = 0, 1, 2, 3
 

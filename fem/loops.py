@@ -27,7 +27,7 @@ from pocket.core.compiled import compiled
 
 from . import laws
 
-__all__ = ["element_loop", "condense", "condense_rhs", "expand"]
+__all__ = ["condense", "condense_rhs", "element_loop", "expand"]
 
 TWO_PI = 2.0 * np.pi
 

@@ -73,8 +73,24 @@ from .material import Law, law_of
 from .reference import Reference, reference
 from .surfaces import Surface
 
-__all__ = ["FREE", "PENALTY", "FITTED", "WRAPPED", "Control", "Model", "discretize", "placement", "fields", "forms",
-           "split", "conform", "residual", "linearize", "plate_force", "edge"]
+__all__ = [
+    "FITTED",
+    "FREE",
+    "PENALTY",
+    "WRAPPED",
+    "Control",
+    "Model",
+    "conform",
+    "discretize",
+    "edge",
+    "fields",
+    "forms",
+    "linearize",
+    "placement",
+    "plate_force",
+    "residual",
+    "split",
+]
 
 FREE, PENALTY, FITTED, WRAPPED = "free", "penalty", "fitted", "wrapped"
 _SCALARS = {FREE: 1, PENALTY: 2, FITTED: 3, WRAPPED: 3}

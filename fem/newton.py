@@ -41,7 +41,7 @@ from pocket.core.errors import ConvergenceError
 
 from .banded import SingularSystem
 
-__all__ = ["Tolerances", "Result", "newton"]
+__all__ = ["Result", "Tolerances", "newton"]
 
 _FLOOR = 1e3  # a residual this many tolerances above the target can be round-off
 NOISE = 10.0  # a residual within this factor of the unknowns' round-off (``_noise``) is at the floor

@@ -69,8 +69,20 @@ from .newton import Tolerances, newton
 from .steps import check_clamp, scales
 from .surfaces import Surface, surface
 
-__all__ = ["Zone", "Forms", "zone", "conform", "forms", "linearize", "residual", "solve", "reaction", "check_range",
-           "contact_pressure", "PENETRATION"]
+__all__ = [
+    "PENETRATION",
+    "Forms",
+    "Zone",
+    "check_range",
+    "conform",
+    "contact_pressure",
+    "forms",
+    "linearize",
+    "reaction",
+    "residual",
+    "solve",
+    "zone",
+]
 
 TWO_PI = 2.0 * np.pi
 #: height (units R) by which the free sheet may sit above the surface before it counts as touching

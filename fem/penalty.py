@@ -56,8 +56,16 @@ from .newton import Tolerances
 from .spherepenalty import gap
 from .steps import land, solve
 
-__all__ = ["press_to_force", "press_to_height", "force_path", "augment", "penetration", "multiplier_update",
-           "contact_area_active", "contact_zone_active"]
+__all__ = [
+    "augment",
+    "contact_area_active",
+    "contact_zone_active",
+    "force_path",
+    "multiplier_update",
+    "penetration",
+    "press_to_force",
+    "press_to_height",
+]
 
 PENETRATION = 1e-9  # target of the Uzawa loop, in units of R
 MAX_UPDATES = 30

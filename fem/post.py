@@ -44,7 +44,7 @@ from pocket.core.states import Profile
 from .geometry import node_radii
 from .model import Model, forms, placement, split
 
-__all__ = ["vertices", "reaction", "pole_stretch", "clamp_stretch", "profile", "R_FIT"]
+__all__ = ["R_FIT", "clamp_stretch", "pole_stretch", "profile", "reaction", "vertices"]
 
 R_FIT = 1e-4  # smallest radius (units R) of the vertices the pole stretch is fitted to
 

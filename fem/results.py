@@ -55,7 +55,7 @@ from . import post
 from .model import FITTED, FREE, PENALTY, Control, Model, fields, forms, plate_force
 from .penalty import contact_area_active, contact_zone_active, penetration
 
-__all__ = ["inflated", "uncompressed", "fitted_state", "penalty_state", "CONSISTENCY"]
+__all__ = ["CONSISTENCY", "fitted_state", "inflated", "penalty_state", "uncompressed"]
 
 #: relative tolerance of the state's own identities (volume, F = P A_c): Newton leaves ~1e-12
 CONSISTENCY = 1e-9

@@ -28,7 +28,7 @@ from . import kernel
 from .geometry import Placement
 from .reference import Reference
 
-__all__ = ["gap", "add"]
+__all__ = ["add", "gap"]
 
 
 def gap(surface, rho: np.ndarray, eta: np.ndarray, height: float) -> np.ndarray:

@@ -44,7 +44,7 @@ from .model import FITTED, FREE, Control, Model, conform, fields, linearize, pla
 from .newton import Tolerances, newton
 from .post import reaction
 
-__all__ = ["solve", "check_clamp", "scales", "dome", "land", "increment", "near_locking", "LOCKING"]
+__all__ = ["LOCKING", "check_clamp", "dome", "increment", "land", "near_locking", "scales", "solve"]
 
 _ETA_FLOOR = -1e-12  # round-off below the clamp plane is not a range violation
 _SLOPE_FLOOR = 1e-12  # nor a tangent at the clamp rising by round-off

@@ -23,6 +23,7 @@ adaptive quadrature to ``AREA_RTOL`` between the indenter's ``knots``.
 from __future__ import annotations
 
 import dataclasses
+import itertools
 from collections.abc import Callable
 from typing import Any
 
@@ -30,7 +31,7 @@ import numpy as np
 
 from pocket.core.indenters import Indenter, Sphere
 
-__all__ = ["Surface", "SURFACES", "surface", "THIRD_STEP", "AREA_RTOL"]
+__all__ = ["AREA_RTOL", "SURFACES", "THIRD_STEP", "Surface", "surface"]
 
 #: step of the central difference giving a profile's third derivative (a fraction of its extent; ~eps^(1/3))
 THIRD_STEP = 6e-6
@@ -93,7 +94,7 @@ def _curved(indenter: Indenter) -> Surface:
 
         bounds = [0.0, *(k for k in indenter.knots if 0.0 < k < rho_c), rho_c]
         return float(sum(quad(band, lo, hi, epsabs=0.0, epsrel=AREA_RTOL, limit=200)[0]
-                         for lo, hi in zip(bounds[:-1], bounds[1:], strict=True)))
+                         for lo, hi in itertools.pairwise(bounds)))
 
     return Surface(height=indenter.height, slope=indenter.slope, second=indenter.second, third=third, area=area,
                    reach=extent, end="the end of the indenter's profile")

@@ -30,7 +30,7 @@ from .newton import Tolerances
 from .obstacle import conform, reaction, solve
 from .surfaces import surface
 
-__all__ = ["touch", "first_contact", "first_radius", "force_path", "height_path", "curve", "at_height"]
+__all__ = ["at_height", "curve", "first_contact", "first_radius", "force_path", "height_path", "touch"]
 
 _HALVINGS = 6
 #: a path that gives up with its contact edge within this fraction of the surface's reach has met

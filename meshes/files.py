@@ -32,7 +32,7 @@ import numpy as np
 
 from pocket.core.errors import InputError
 
-__all__ = ["read", "write", "check"]
+__all__ = ["check", "read", "write"]
 
 _SNAP = 1e-12  # ends this close to 0 and 1 are round-off, not a wrong span
 

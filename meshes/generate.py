@@ -46,7 +46,7 @@ import numpy as np
 from pocket.core.errors import InputError
 from pocket.core.inputs import check_finite
 
-__all__ = ["uniform", "graded", "refined", "polar"]
+__all__ = ["graded", "polar", "refined", "uniform"]
 
 
 def _count(n, name="n") -> int:

@@ -40,8 +40,16 @@ if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loa
         range_end,
     )
 
-__all__ = ["SOLVER", "inflate", "inflation_curve", "inflate_volume", "compress", "compression_curve", "compress_height",
-           "range_end"]
+__all__ = [
+    "SOLVER",
+    "compress",
+    "compress_height",
+    "compression_curve",
+    "inflate",
+    "inflate_volume",
+    "inflation_curve",
+    "range_end",
+]
 
 #: loosest ODE tolerance accepted: the root finders need residuals far below the quantities they resolve
 RTOL_MAX = 1e-4

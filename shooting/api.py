@@ -16,8 +16,15 @@ from . import compression, rangeend
 from .inflation import inflate, inflate_volume, inflation_curve
 from .travel import compress_height
 
-__all__ = ["inflate", "inflation_curve", "inflate_volume", "compress", "compression_curve", "compress_height",
-           "range_end"]
+__all__ = [
+    "compress",
+    "compress_height",
+    "compression_curve",
+    "inflate",
+    "inflate_volume",
+    "inflation_curve",
+    "range_end",
+]
 
 compress: Compress = compression.compress
 compression_curve: CompressionCurve = compression.compression_curve

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-__all__ = ["root", "maximum", "BracketError"]
+__all__ = ["BracketError", "maximum", "root"]
 
 _GOLDEN = 0.5 * (3.0 - math.sqrt(5.0))  # 0.381966..., the golden-section fraction
 

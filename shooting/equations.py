@@ -55,7 +55,7 @@ from pocket.core.compiled import compiled
 
 from .tensions import tensions, tensions_compiled
 
-__all__ = ["rhs", "derivatives", "table_curvature", "pole_state"]
+__all__ = ["derivatives", "pole_state", "rhs", "table_curvature"]
 
 
 @functools.partial(compiled, inline="always")

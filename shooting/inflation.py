@@ -89,7 +89,7 @@ from .laws import as_law, law_of
 from .shots import Tolerance, profile_from_steps, shot_pole, tension_minima
 from .tensions import inside, tensions
 
-__all__ = ["inflate", "inflation_curve", "inflate_volume", "pressure_of_stretch", "GEOMETRIES"]
+__all__ = ["GEOMETRIES", "inflate", "inflate_volume", "inflation_curve", "pressure_of_stretch"]
 
 #: reference surface -> how this solver poses it (``pocket.core.geometries``)
 GEOMETRIES = {"pocket": "the membrane equations shot from the pole to the clamp at S = 1, r0 = S"}

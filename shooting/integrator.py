@@ -47,7 +47,7 @@ from . import tableau
 from .equations import derivatives
 from .tensions import inside_compiled, tensions_compiled
 
-__all__ = ["integrate", "OK", "AXIS", "FOLD", "SLACK", "STEPS", "SMALL_STEP", "LOCKED", "STATUS", "NUMERICAL"]
+__all__ = ["AXIS", "FOLD", "LOCKED", "NUMERICAL", "OK", "SLACK", "SMALL_STEP", "STATUS", "STEPS", "integrate"]
 
 OK, AXIS, FOLD, SLACK, STEPS, SMALL_STEP, LOCKED = 0, 1, 2, 3, 4, 5, 6
 STATUS = {
@@ -140,10 +140,7 @@ def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, ato
                     a3 += K[j, i] * E3[j]
                 e5 += (a5 / scale) ** 2
                 e3 += (a3 / scale) ** 2
-            if e5 == 0.0 and e3 == 0.0:
-                err = 0.0
-            else:
-                err = hh * e5 / np.sqrt((e5 + 0.01 * e3) * n)
+            err = 0.0 if e5 == 0.0 and e3 == 0.0 else hh * e5 / np.sqrt((e5 + 0.01 * e3) * n)
             if err < 1.0 and np.isfinite(err) and k < knots.size and ynew[0] > knots[k] + _LANDING > y[0]:
                 h = hh * (knots[k] - y[0]) / (ynew[0] - y[0])  # a knot inside the step: end it there instead
                 continue

@@ -36,7 +36,7 @@ from pocket.core.materials import Material, as_material
 from . import brent
 from .tensions import GENT, MOONEY_RIVLIN, NEO_HOOKEAN, OGDEN, YEOH, tensions
 
-__all__ = ["KERNELS", "Law", "law_of", "as_law"]
+__all__ = ["KERNELS", "Law", "as_law", "law_of"]
 
 
 @dataclasses.dataclass(frozen=True)

@@ -30,7 +30,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["Solution", "solve", "differences"]
+__all__ = ["Solution", "differences", "solve"]
 
 _ARMIJO = 1e-4
 _MIN_FRACTION = 2.0**-12
@@ -119,10 +119,8 @@ def solve(fun: Callable[[np.ndarray], np.ndarray | None], x0, *, tol: float, jac
             continue
         x_new, f_new = step
         s, y = x_new - x, f_new - f
-        if np.max(np.abs(f_new)) <= _SLOW * norm:
-            jac = jac + np.outer(y - jac @ s, s) / (s @ s)  # Broyden's ("good") update
-        else:  # slow progress: the Jacobian is stale; difference it afresh at the new point
-            jac = None
+        # Broyden's ("good") update; on slow progress the Jacobian is stale: difference it afresh at the new point
+        jac = jac + np.outer(y - jac @ s, s) / (s @ s) if np.max(np.abs(f_new)) <= _SLOW * norm else None
         x, f, fresh = x_new, f_new, False
     return result(x, f, jac, np.max(np.abs(f)) <= tol, f"{max_iterations} iterations")
 

@@ -51,7 +51,7 @@ class PlateProblem(Contact):
 
     def _shot(self, geometry, store):
         """(status, y(1), steps) of the free part at ``geometry`` = (q, lambda_c, a, p)."""
-        q, lc, a, p = geometry
+        _q, lc, a, p = geometry
         return shot_edge(lc, a, self.law, p, self.tolerance, store=store)
 
     def _closure(self, x, force, shot) -> tuple:

@@ -106,7 +106,7 @@ def _fold(problem, path, k):
     if not math.isfinite(peak):
         raise ConvergenceError(f"range end: no state solves near the force maximum at psi(1) in [{lo:.6g}, {hi:.6g}]")
     z = _at_angle(problem, theta, path).x
-    branch = tuple(p for p in path if p[0] < theta) + ((theta, z),)
+    branch = (*tuple(p for p in path if p[0] < theta), (theta, z))
     return End(force=float(peak), angle=float(theta), fold=True, path=branch)
 
 

@@ -17,7 +17,7 @@ from .contact import Contact
 from .plate import PlateProblem
 from .surface import SurfaceProblem, words
 
-__all__ = ["CONTACTS", "contact_of", "SphereProblem", "ProfileProblem", "EQUATOR", "PROFILE_END"]
+__all__ = ["CONTACTS", "EQUATOR", "PROFILE_END", "ProfileProblem", "SphereProblem", "contact_of"]
 
 #: the end of the model particular to a sphere
 EQUATOR = "the sheet would wrap past the sphere's equator"

@@ -23,7 +23,7 @@ from .equations import pole_state
 from .integrator import OK, integrate
 from .tensions import tensions
 
-__all__ = ["R_POLE", "Tolerance", "shot_pole", "shot_edge", "edge_state", "profile_from_steps", "tension_minima"]
+__all__ = ["R_POLE", "Tolerance", "edge_state", "profile_from_steps", "shot_edge", "shot_pole", "tension_minima"]
 
 #: Start of the pole series: its error is O(R_POLE^3) in psi and O(R_POLE^4) in the
 #: stretches, below the integration tolerance (``tests/test_shooting_equations.py``). It needs no

@@ -175,7 +175,7 @@ class SurfaceProblem(Contact):
 
     def _shot(self, geometry, store):
         """(status, y(1), (contact steps, free steps), y(a)) at ``geometry`` = (q, lambda_c, a, p)."""
-        q, lc, a, p = geometry
+        _q, lc, a, p = geometry
         status, edge, inner = self._contact(lc, a, store)
         shot = (status, edge, (inner, np.empty((0, 6))), edge)
         if status == OK:

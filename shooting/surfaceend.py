@@ -182,7 +182,7 @@ def _peak(problem, path) -> End:
         raise ConvergenceError(f"range end ({problem.label}): no state solves near the force maximum at h in "
                                f"[{lo:.6g}, {hi:.6g}]")
     z = _at_height(problem, height, path).x
-    branch = tuple(p for p in path if p[0] > height) + ((height, z),)
+    branch = (*tuple(p for p in path if p[0] > height), (height, z))
     return End(force=float(peak), angle=problem.clamp_angle(z[:-1], z[-1]), fold=True, path=branch)
 
 

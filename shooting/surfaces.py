@@ -24,6 +24,7 @@ by ``_reach`` and ``_shape`` alone.
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -37,7 +38,7 @@ from .integrator import FOLD, OK, SLACK, STEPS, integrate
 from .shots import PROFILE_STEP, Tolerance
 from .tensions import tensions
 
-__all__ = ["Surface", "TableSurface", "SphereSurface", "contact_tolerance", "surface_of"]
+__all__ = ["SphereSurface", "Surface", "TableSurface", "contact_tolerance", "surface_of"]
 
 
 class Surface:
@@ -123,7 +124,7 @@ class Surface:
         from scipy.integrate import quad  # here: scipy stays off the plate's import path
 
         return 2.0 * sum(quad(lambda r: r * math.sqrt(1.0 + float(slope(r)) ** 2), lo, hi, epsabs=0.0,
-                              epsrel=1e-12, limit=200)[0] for lo, hi in zip(bounds[:-1], bounds[1:], strict=True))
+                              epsrel=1e-12, limit=200)[0] for lo, hi in itertools.pairwise(bounds))
 
     def end_margin(self, edge) -> float:
         """How far the contact edge ``edge`` stands from the surface's end, as a fraction: the smaller of

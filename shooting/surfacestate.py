@@ -15,13 +15,13 @@ from .contact import final_shots
 from .shots import profile_from_steps, tension_minima
 from .tensions import tensions
 
-__all__ = ["solved", "scales", "margins", "gap", "gap_allowed", "check", "state"]
+__all__ = ["check", "gap", "gap_allowed", "margins", "scales", "solved", "state"]
 
 
 def solved(problem, force, x):
     """The solved state's pieces at ``force``: (profile, contact pressure at its points (NaN off contact), free
     steps, y(1), y(a)); a ConvergenceError if its final shots do not reach the clamp."""
-    q, lc, a, p = problem.geometry(x, force)
+    q, lc, a, _p = problem.geometry(x, force)
     status, y, _, edge = problem.shoot(x, force)
     stored = problem.shoot(x, force, store=20000)
     final_shots(force, status, stored[0])

@@ -9,7 +9,7 @@ error estimates that the integrator combines as Hairer (and scipy) do.
 
 import numpy as np
 
-__all__ = ["N_STAGES", "A", "B", "C", "E3", "E5"]
+__all__ = ["E3", "E5", "N_STAGES", "A", "B", "C"]
 
 N_STAGES = 12
 

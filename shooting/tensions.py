@@ -73,8 +73,17 @@ from numba.extending import register_jitable
 
 from pocket.core.compiled import compiled
 
-__all__ = ["MOONEY_RIVLIN", "NEO_HOOKEAN", "YEOH", "GENT", "OGDEN", "tensions", "tensions_compiled",
-           "inside", "inside_compiled"]
+__all__ = [
+    "GENT",
+    "MOONEY_RIVLIN",
+    "NEO_HOOKEAN",
+    "OGDEN",
+    "YEOH",
+    "inside",
+    "inside_compiled",
+    "tensions",
+    "tensions_compiled",
+]
 
 MOONEY_RIVLIN, NEO_HOOKEAN, YEOH, GENT, OGDEN = 0, 1, 2, 3, 4
 

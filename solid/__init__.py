@@ -32,9 +32,21 @@ require_import_name(__name__, "pocket.solid")
 if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loaded on first use (__getattr__)
     from .api import compress, compress_height, compression_curve, inflate, inflate_volume
 
-__all__ = ["SOLVER", "inflate", "inflate_volume", "compress", "compression_curve", "compress_height",
-           "DEFAULT_THICKNESS", "DEFAULT_ELEMENTS", "DEFAULT_LAYERS", "MIN_LAYERS", "MAX_LAYERS", "MIN_ELEMENTS",
-           "MAX_ELEMENTS"]
+__all__ = [
+    "DEFAULT_ELEMENTS",
+    "DEFAULT_LAYERS",
+    "DEFAULT_THICKNESS",
+    "MAX_ELEMENTS",
+    "MAX_LAYERS",
+    "MIN_ELEMENTS",
+    "MIN_LAYERS",
+    "SOLVER",
+    "compress",
+    "compress_height",
+    "compression_curve",
+    "inflate",
+    "inflate_volume",
+]
 
 #: T/R of the paper's thinnest sample (the headline pocket)
 DEFAULT_THICKNESS = 0.0125

@@ -35,7 +35,7 @@ from . import (
     results,
 )
 
-__all__ = ["inflate", "inflate_volume", "compress", "compression_curve", "compress_height", "CONTACTS", "GEOMETRIES"]
+__all__ = ["CONTACTS", "GEOMETRIES", "compress", "compress_height", "compression_curve", "inflate", "inflate_volume"]
 
 #: indenter class -> contact formulations (the flat plate, the sphere and a profile, ``contact``)
 CONTACTS: dict[type[Indenter], tuple[str, ...]] = {Plate: ("active set",), Sphere: ("active set",),

@@ -68,7 +68,7 @@ from skfem import Basis, FacetBasis
 
 from . import kinematics as kin
 
-__all__ = ["Tables", "tables", "fields", "pressure_moments", "solid", "fluid"]
+__all__ = ["Tables", "fields", "fluid", "pressure_moments", "solid", "tables"]
 
 
 @dataclasses.dataclass(frozen=True)

@@ -26,7 +26,7 @@ from .model import Model
 from .newton import contact
 from .rangeend import margins, past_end
 
-__all__ = ["fluid_control", "first_contact", "to_force", "to_height", "MAX_FORCE_STEP"]
+__all__ = ["MAX_FORCE_STEP", "first_contact", "fluid_control", "to_force", "to_height"]
 
 #: the largest force step (Fhat)
 MAX_FORCE_STEP = 0.25

@@ -39,7 +39,7 @@ import scipy.sparse as sp
 from pocket.core.errors import OutOfRangeError
 from pocket.core.indenters import PLATE, Indenter, Plate, Sphere
 
-__all__ = ["Surface", "PLATE_SURFACE", "cap_area", "Rows", "rows", "gaps", "force"]
+__all__ = ["PLATE_SURFACE", "Rows", "Surface", "cap_area", "force", "gaps", "rows"]
 
 
 @dataclasses.dataclass(frozen=True)

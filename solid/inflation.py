@@ -19,7 +19,7 @@ from .equations import Control
 from .model import Model
 from .newton import solve
 
-__all__ = ["to_volume", "to_pressure", "V_START", "MAX_RATIO"]
+__all__ = ["MAX_RATIO", "V_START", "to_pressure", "to_volume"]
 
 #: the first volume (units R^3), solved from the flat sheet
 V_START = 1e-2

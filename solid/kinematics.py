@@ -49,15 +49,25 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["COMPONENTS", "tensor", "gradient", "variation", "components", "jacobian", "cofactor", "energy_derivatives",
-           "jacobian_derivatives", "log_jacobian_derivatives"]
+__all__ = [
+    "COMPONENTS",
+    "cofactor",
+    "components",
+    "energy_derivatives",
+    "gradient",
+    "jacobian",
+    "jacobian_derivatives",
+    "log_jacobian_derivatives",
+    "tensor",
+    "variation",
+]
 
 #: the nonzero components (i, j) of an axisymmetric F or dF
 COMPONENTS = ((0, 0), (0, 1), (1, 0), (1, 1), (2, 2))
 
 
 def _tensor(grad: np.ndarray, hoop: np.ndarray, identity: float) -> np.ndarray:
-    out = np.zeros((3, 3) + hoop.shape)
+    out = np.zeros((3, 3, *hoop.shape))
     out[:2, :2] = grad
     out[2, 2] = hoop
     for k in range(3):
@@ -68,7 +78,7 @@ def _tensor(grad: np.ndarray, hoop: np.ndarray, identity: float) -> np.ndarray:
 def tensor(components: np.ndarray, identity: float) -> np.ndarray:
     """identity I + sum_a components[a] E_a (3, 3, ...) from the five components (5, ...): F from those of
     the displacement's gradient (identity 1), dF from a variation's (identity 0)."""
-    return _tensor(components[:4].reshape((2, 2) + components.shape[1:]), components[4], identity)
+    return _tensor(components[:4].reshape((2, 2, *components.shape[1:])), components[4], identity)
 
 
 def gradient(grad: np.ndarray, u_r: np.ndarray, r: np.ndarray) -> np.ndarray:

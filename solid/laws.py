@@ -41,7 +41,7 @@ from pocket.core.materials import Material
 
 from .stretches import Ogden
 
-__all__ = ["derivatives", "LAWS"]
+__all__ = ["LAWS", "derivatives"]
 
 
 def _mooney_rivlin(p, x, y):

@@ -40,7 +40,7 @@ from skfem import MeshQuad
 
 from pocket.core.geometries import DISC, Geometry
 
-__all__ = ["section", "radial_nodes", "corner_nodes", "CLAMP_GRADING", "CORNER_SIZE"]
+__all__ = ["CLAMP_GRADING", "CORNER_SIZE", "corner_nodes", "radial_nodes", "section"]
 
 #: grading exponent of the radial nodes towards the clamp
 CLAMP_GRADING = 1.5

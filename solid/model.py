@@ -21,7 +21,7 @@ from pocket.core.geometries import DISC, Geometry
 
 from . import assembly
 
-__all__ = ["Model", "discretize", "solid", "fluid", "split"]
+__all__ = ["Model", "discretize", "fluid", "solid", "split"]
 
 
 @dataclasses.dataclass(frozen=True)

@@ -19,7 +19,7 @@ from .contact import gaps
 from .equations import Control, system
 from .model import Model
 
-__all__ = ["solve", "contact", "MAX_ITERATIONS", "MAX_SWEEPS", "SWEEP_TOL", "SWEEP_STEP"]
+__all__ = ["MAX_ITERATIONS", "MAX_SWEEPS", "SWEEP_STEP", "SWEEP_TOL", "contact", "solve"]
 
 MAX_ITERATIONS = 25
 #: active-set updates before giving up

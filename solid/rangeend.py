@@ -48,7 +48,7 @@ from .model import Model
 from .newton import contact
 from .results import contact_radius
 
-__all__ = ["margins", "past_end", "END_RTOL"]
+__all__ = ["END_RTOL", "margins", "past_end"]
 
 #: the bracket's width at the end, relative to the load (force or height) there: the margins are solved to the
 #: Newton tolerance (1e-10 R by default), the force moves by ~10 Fhat per R of travel near the end, so the end

@@ -62,7 +62,7 @@ from .contact import force as force_of
 from .model import Model, split
 from .post import fields
 
-__all__ = ["inflated", "compressed", "contact_radius", "GAP_EXPONENT"]
+__all__ = ["GAP_EXPONENT", "compressed", "contact_radius", "inflated"]
 
 
 def _profile(f, contact: np.ndarray) -> Profile:

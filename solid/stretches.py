@@ -84,7 +84,7 @@ def _stretch_sum(a: float, F: np.ndarray, c, n, X):
     Q = np.einsum("k...,ik...,jk...->ij...", g1, n, n)
     rows, cols = _PLANE_INDEX
     weights = np.array([g2[0], g2[1], 2.0 * _divided_difference(a, c)])
-    dS, d2S = np.zeros((5,) + hoop.shape), np.zeros((5, 5) + hoop.shape)
+    dS, d2S = np.zeros((5, *hoop.shape)), np.zeros((5, 5, *hoop.shape))
     dS[:4] = 2.0 * np.einsum("ik...,kj...->ij...", F2, Q)[rows, cols]
     d2S[:4, :4] = (np.einsum("k...,ak...,bk...->ab...", weights, X, X)
                    + 2.0 * _SAME_ROW.reshape((4, 4) + (1,) * hoop.ndim) * Q[cols[:, None], cols[None, :]])

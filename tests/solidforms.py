@@ -9,8 +9,15 @@ import numpy as np
 from pocket.solid import kinematics as kin
 from skfem import BilinearForm, Functional, LinearForm
 
-__all__ = ["residual_u", "residual_p", "tangent_uu", "coupling", "volume",
-           "volume_first", "volume_second"]
+__all__ = [
+    "coupling",
+    "residual_p",
+    "residual_u",
+    "tangent_uu",
+    "volume",
+    "volume_first",
+    "volume_second",
+]
 
 def _deformation(w):
     return kin.gradient(w["u"].grad, w["u"][0], w.x[0])

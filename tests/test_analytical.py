@@ -75,7 +75,8 @@ def test_departs_at_large_force():
     F = -dU/dH and F = P A_c (test_shooting_compression.py) and by the FE model.
     """
     err = _compare(0.31, 0.5)
-    assert err["contact_area"] > 0.2 and err["pressure_ratio"] < -0.2, err
+    assert err["contact_area"] > 0.2, err
+    assert err["pressure_ratio"] < -0.2, err
     # the height is the robust output of the model (paper, fig. 3b): within 5 %
     assert abs(err["height_ratio"]) < 0.05, err
 
@@ -97,7 +98,8 @@ def test_states_outside_the_small_strain_range_say_so():
     assert analytical.inflate(SAMPLE, edge * 0.999).warnings == ()
     assert analytical.compress(SAMPLE, 0.01, 0.05).warnings == ()
     high = analytical.inflate(0.0, 1.0)
-    assert len(high.warnings) == 1 and f"lambda_0 = {high.stretch_pole:.6g} exceeds 1.1" in high.warnings[0]
+    assert len(high.warnings) == 1
+    assert f"lambda_0 = {high.stretch_pole:.6g} exceeds 1.1" in high.warnings[0]
     pressed = analytical.compress(0.0, 1.0, 0.5)
     assert [w.split(" =")[0] for w in pressed.warnings] == ["lambda_0", "lambda_c"]
     assert f"{pressed.stretch_contact:.6g}" in pressed.warnings[1]
@@ -133,10 +135,12 @@ def test_any_rubber_gives_the_same_small_strain_numbers():
         states = analytical.compression_curve(material, 0.31, [0.0, 0.1, 1.0])
         for s, ref in zip(states, reference, strict=True):
             assert [getattr(s, k) for k in s.KEYS[1:]] == [getattr(ref, k) for k in ref.KEYS[1:]]
-            assert s.alpha is None and s.material is material and s.inflated.material is material
+            assert s.alpha is None
+            assert s.material is material
+            assert s.inflated.material is material
 
 
-@pytest.mark.parametrize("ambient, gamma", [(1.0, 1.0), (0.2, 1.4), (50.0, 1.2)])
+@pytest.mark.parametrize(("ambient", "gamma"), [(1.0, 1.0), (0.2, 1.4), (50.0, 1.2)])
 def test_gas_law_holds_on_its_states(ambient, gamma):
     """Exact answer: (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma on every compressed state (the root
     solved to ~1e-15 in ln u), F = P A_c, and a gas state is softer than the liquid's (lower P/P_I)."""
@@ -149,7 +153,8 @@ def test_gas_law_holds_on_its_states(ambient, gamma):
         ratio = s.volume / s.inflated.volume
         assert (s.pressure + ambient) * ratio**gamma == pytest.approx(s.pressure_initial + ambient, rel=1e-13)
         assert s.pressure_ratio * s.contact_area == pytest.approx(s.force, rel=1e-12)
-        assert s.pressure_ratio < liquid.pressure_ratio and s.fluid is fluid
+        assert s.pressure_ratio < liquid.pressure_ratio
+        assert s.fluid is fluid
 
 
 def test_gas_tends_to_the_liquid():
@@ -160,6 +165,7 @@ def test_gas_tends_to_the_liquid():
     liquid = analytical.compress(SAMPLE, 0.1, 0.5)
     gaps = [analytical.compress(SAMPLE, 0.1, 0.5, fluid=gas(a)).pressure_ratio - liquid.pressure_ratio
             for a in (1e2, 1e3, 1e4)]
-    assert gaps[0] / gaps[1] == pytest.approx(10, rel=0.01) and gaps[1] / gaps[2] == pytest.approx(10, rel=0.01)
+    assert gaps[0] / gaps[1] == pytest.approx(10, rel=0.01)
+    assert gaps[1] / gaps[2] == pytest.approx(10, rel=0.01)
     assert analytical.range_end(SAMPLE, 0.1, fluid=gas(1e8)) == pytest.approx(analytical.range_end(SAMPLE, 0.1),
                                                                               rel=1e-6)

@@ -63,13 +63,14 @@ def test_a_profile_file_is_relative_to_the_case_file(tmp_path, monkeypatch):
     (folder / "tip.csv").write_text(TIP)  # z = rho^2 / 16 mm: a paraboloid of tip radius 8 mm
     monkeypatch.chdir(tmp_path)  # not the case file's folder
     case = load(_case(folder, '[indenter]\nshape = "profile"\nfile = "tip.csv"\n'))
-    assert isinstance(case.indenter, Profile) and case.indenter.shape.source == str(folder / "tip.csv")
+    assert isinstance(case.indenter, Profile)
+    assert case.indenter.shape.source == str(folder / "tip.csv")
     # z(5 mm) = 25/16 mm, in units of R = 20 mm; the spline in rho^2 is exact for a parabola
     assert case.indenter.height(5.0 / 20.0) == pytest.approx(25.0 / 16.0 / 20.0, rel=1e-12)
     assert case.indenter.curvature(0.0) == pytest.approx(20.0 / 8.0, rel=1e-12)  # 1/(8 mm) in units of 1/R
 
 
-@pytest.mark.parametrize("table, message", [
+@pytest.mark.parametrize(("table", "message"), [
     ('shape = "sphere"\nradius = "-8 mm"\n', "indenter.radius = '-8 mm', but it must be > 0"),
     ('shape = "sphere"\nradius = "0 mm"\n', "indenter.radius = '0 mm', but it must be > 0"),
     ('shape = "sphere"\nradius = "8 kPa"\n', "indenter.radius = '8 kPa' has dimension"),
@@ -89,7 +90,8 @@ def test_a_bad_indenter_table_is_one_line_exit_2_before_any_solving(tmp_path, ca
     monkeypatch.setattr(casefile, "resolve", _no_solving)
     assert main(["run", str(_case(tmp_path, "[indenter]\n" + table)), "--out", str(tmp_path)]) == 2
     err = capsys.readouterr().err
-    assert message in err and err.count("\n") == 1
+    assert message in err
+    assert err.count("\n") == 1
     assert not list(tmp_path.glob("case.*json"))
 
 
@@ -143,8 +145,10 @@ def test_a_sphere_reaches_the_analytical_solver_which_refuses_it_in_one_line(tmp
     path = _case(tmp_path, '[indenter]\nshape = "sphere"\nradius = "8 mm"\n[solver]\nname = "analytical"\n')
     assert main(["run", str(path), "--out", str(tmp_path)]) == 2
     err = capsys.readouterr().err
-    assert "solver analytical does not implement the sphere indenter" in err and err.count("\n") == 1
-    assert not list(tmp_path.glob("case.*json")) and not list(tmp_path.glob("case.csv"))
+    assert "solver analytical does not implement the sphere indenter" in err
+    assert err.count("\n") == 1
+    assert not list(tmp_path.glob("case.*json"))
+    assert not list(tmp_path.glob("case.csv"))
 
 
 def test_the_readmes_profile_table_is_a_paraboloid_of_tip_radius_8_mm(tmp_path):

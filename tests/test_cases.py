@@ -86,7 +86,7 @@ def test_c1_c2_equals_modulus_alpha(tmp_path):
 
 
 @pytest.mark.parametrize(
-    "old, new, message",
+    ("old", "new", "message"),
     [
         ('radius = "20 mm"', 'radius = "20 mm"\ncolour = "red"', "unknown key 'clamp.colour'"),
         ('name = "button"', 'name = "button"\n[plate]\nx = 1', "unknown key 'plate'"),
@@ -110,7 +110,9 @@ def test_bad_case_file(old, new, message, tmp_path, capsys):
     path = _write(tmp_path, BUTTON.replace(old, new))
     assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err and "Traceback" not in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
+    assert "Traceback" not in err, err
     assert not (tmp_path / "out").exists()
 
 
@@ -127,7 +129,10 @@ def _run_case(tmp_path, capsys, text: bytes | str, name="case.toml"):
     status = main(["run", str(path), "--out", str(tmp_path / "out")])
     out, err = capsys.readouterr()
     assert not (tmp_path / "out").exists()
-    assert out == "" and err.count("\n") == 1 and "Traceback" not in err and len(err) < 400, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert "Traceback" not in err, err
+    assert len(err) < 400, err
     return status, err
 
 
@@ -137,7 +142,7 @@ def _with(key_line: str, section: str = "[clamp]") -> str:
 
 
 @pytest.mark.parametrize(
-    "text, message",
+    ("text", "message"),
     [
         (b"\xff\xfe[sheet]\n", "not a UTF-8 text file (byte 0)"),
         (bytes(range(256)) * 4, "not a UTF-8 text file"),
@@ -181,7 +186,8 @@ def test_hostile_case_files(tmp_path, capsys, text, message):
     """Each file: one line of at most a few hundred characters naming the problem, exit 2, no output,
     before any solve (the work a case can ask for is bounded: elements, loads, file sizes)."""
     status, err = _run_case(tmp_path, capsys, text)
-    assert status == 2 and message in err, err
+    assert status == 2, err
+    assert message in err, err
 
 
 def test_a_mesh_file_is_relative_to_the_case_file(tmp_path, monkeypatch, capsys):
@@ -197,11 +203,12 @@ def test_a_mesh_file_is_relative_to_the_case_file(tmp_path, monkeypatch, capsys)
     assert load(path).options == (("mesh", str(tmp_path / "cases" / "fine.vtu")),)
     assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 0
     result = json.loads((tmp_path / "out" / "c.json").read_text())
-    assert result["states"][0]["elements"] == 40 and result["case"]["given"]["solver.mesh"] == "fine.vtu"
+    assert result["states"][0]["elements"] == 40
+    assert result["case"]["given"]["solver.mesh"] == "fine.vtu"
 
 
 @pytest.mark.parametrize(
-    "heights, message",
+    ("heights", "message"),
     [
         ('["20 mm", "1 mm"]', "loads.heights[0] = '20 mm' is above the inflated pocket (H0 = 10 mm): the plate "
                               "would not touch it"),
@@ -215,7 +222,9 @@ def test_plate_height_errors_quote_the_case(tmp_path, capsys, heights, message):
     range end). A case reaching some of its loads writes those (test_user_files_safe)."""
     text = BUTTON.replace('heights = ["9 mm", "8 mm"]', f"heights = {heights}")
     status, err = _run_case(tmp_path, capsys, text)
-    assert status == 2 and message in err and "height = 1 " not in err, err
+    assert status == 2, err
+    assert message in err, err
+    assert "height = 1 " not in err, err
 
 
 def test_lowest_plate_height_is_the_range_end(tmp_path):
@@ -255,7 +264,8 @@ def test_rows_carry_the_loads_as_written(tmp_path):
                                        "loads.forces[2]": 0.1}
     # the plain force is read as newtons and said so, in every row (pocket.core.units.plain_warnings)
     plain = "loads.forces[2] = 0.1 has no unit and is read as 0.1 N; write it with its unit ('0.1 N') to say so"
-    assert all(s["warnings"] == [plain] for s in result["states"]) and {r["warnings"] for r in rows} == {plain}
+    assert all(s["warnings"] == [plain] for s in result["states"])
+    assert {r["warnings"] for r in rows} == {plain}
 
 
 def test_solver_options_are_given_as_written(tmp_path):
@@ -263,7 +273,8 @@ def test_solver_options_are_given_as_written(tmp_path):
     text = BUTTON.replace('heights = ["9 mm", "8 mm"]', 'heights = ["9 mm"]') + "[solver]\nrtol = 1e-9\n"
     assert main(["run", str(_write(tmp_path, text)), "--out", str(tmp_path)]) == 0
     given = json.loads((tmp_path / "case.json").read_text())["case"]["given"]
-    assert given["solver.rtol"] == 1e-9 and "solver.name" not in given
+    assert given["solver.rtol"] == 1e-9
+    assert "solver.name" not in given
 
 
 @pytest.mark.parametrize("number", sorted(SAMPLES))

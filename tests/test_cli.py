@@ -21,7 +21,8 @@ def run(capsys, *argv):
 def test_inflate_json_has_the_design_keys(capsys):
     """Exact answer: the JSON equals the library's state (same solver, same call)."""
     status, out, err = run(capsys, "inflate", "--alpha", "47/160", "--pressure", "0.31", "--json")
-    assert status == 0 and err == ""
+    assert status == 0
+    assert err == ""
     data = json.loads(out)
     assert set(InflatedState.KEYS) <= set(data)
     ref = shooting.inflate(47 / 160, 0.31).scalars()
@@ -32,7 +33,8 @@ def test_compress_curve_is_a_json_list(capsys):
     status, out, _ = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31",
                          "--force", "0.05", "0.1", "0.2", "--json")
     rows = json.loads(out)
-    assert status == 0 and [r["force"] for r in rows] == [0.05, 0.1, 0.2]
+    assert status == 0
+    assert [r["force"] for r in rows] == [0.05, 0.1, 0.2]
     assert all(set(CompressedState.KEYS) <= set(r) for r in rows)
 
 
@@ -43,15 +45,17 @@ def test_table(capsys, solver):
     argv = ("compress", "--alpha", "47/160", "--pressure", "0.31", "--force", "0", "0.19", "--solver", solver)
     status, out, _ = run(capsys, *argv)
     lines = out.splitlines()
-    assert status == 0 and lines[0] == f"# solver: {solver}"
-    assert lines[1].split()[:3] == ["alpha", "pressure_initial", "force"] and len(lines) == 4
+    assert status == 0
+    assert lines[0] == f"# solver: {solver}"
+    assert lines[1].split()[:3] == ["alpha", "pressure_initial", "force"]
+    assert len(lines) == 4
     keys = {k for row in json.loads(run(capsys, *argv, "--json")[1]) for k in row} - {"solver", "warnings"}
     assert set(lines[1].split()) == keys
     assert all(len(line.split()) == len(keys) for line in lines[2:])
 
 
 @pytest.mark.parametrize(
-    "argv, message",
+    ("argv", "message"),
     [
         (["inflate", "--alpha", "-1", "--pressure", "0.3"], "alpha = -1.0"),
         (["inflate", "--alpha", "0.3", "--pressure", "0"], "pressure = 0.0"),
@@ -72,15 +76,18 @@ def test_table(capsys, solver):
 def test_bad_input_is_one_line_and_exit_2(capsys, argv, message):
     status = main(argv)  # argparse's own errors too: main returns their status
     out, err = capsys.readouterr()
-    assert status == 2 and out == ""
-    assert len(err.strip().splitlines()) == 1 and message in err, err
+    assert status == 2
+    assert out == ""
+    assert len(err.strip().splitlines()) == 1, err
+    assert message in err, err
 
 
 def test_console_script_whole_process():
     """The installed entry point: exit status and stderr of a real process, no traceback."""
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "compress", "--alpha", "0.3",
                            "--pressure", "0.3", "--force", "50"], capture_output=True, text=True)
-    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr
 
 
 def test_vtk_series(capsys, tmp_path):
@@ -99,7 +106,8 @@ def test_vtk_series(capsys, tmp_path):
     assert {"lambda_1", "lambda_2", "lambda_3", "T_1", "T_2", "contact"} <= set(mesh.point_data)
     status, _, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31",
                          "--force", "0.1", "--vtk", str(out))
-    assert status == 2 and "--overwrite" in err
+    assert status == 2
+    assert "--overwrite" in err
 
 
 def test_vtk_times_are_the_forces_in_any_order(capsys, tmp_path):
@@ -117,10 +125,12 @@ def test_vtk_times_are_the_forces_in_any_order(capsys, tmp_path):
     assert [float(d.get("timestep")) for d in sets] == [0.05, 0.1, 0.2]
     assert [meshio.read(out / d.get("file")).field_data["force"].tolist() for d in sets] == [[0.05], [0.1], [0.2]]
     status, _, err = run(capsys, *argv, "0.1", "0.2", "0.1", "--overwrite")
-    assert status == 2 and err.count("\n") == 1 and "--force gives 0.1 more than once" in err, err
+    assert status == 2, err
+    assert err.count("\n") == 1, err
+    assert "--force gives 0.1 more than once" in err, err
 
 
-@pytest.mark.parametrize("flags, solver, extra", [
+@pytest.mark.parametrize(("flags", "solver", "extra"), [
     ([], "shooting", {}),
     (["--solver", "analytical"], "analytical", {}),
     (["--solver", "fem", "--elements", "40", "--order", "1"], "fem", {"elements": [40.0], "order": [1.0]}),
@@ -136,7 +146,8 @@ def test_vtk_field_data_name_the_solver_and_mesh(flags, solver, extra, capsys, t
                *flags)[0] == 0
     data = {k: v.tolist() for k, v in meshio.read(out / "step_0000_surface.vtu").field_data.items()}
     assert data["solver_code"] == [float(("shooting", "fem", "analytical").index(solver))]
-    assert data["material_code"] == [0.0] and data["fluid_code"] == [0.0]
+    assert data["material_code"] == [0.0]
+    assert data["fluid_code"] == [0.0]
     assert {k: data[k] for k in extra} == extra
 
 
@@ -149,10 +160,12 @@ def test_fem_solver_same_keys_as_shooting_plus_its_own(capsys, tmp_path):
     fe = json.loads(out)
     _, out, _ = run(capsys, *argv)
     ref = json.loads(out)
-    assert status == 0 and [r["solver"] for r in fe] == ["fem", "fem"]
+    assert status == 0
+    assert [r["solver"] for r in fe] == ["fem", "fem"]
     for a, b in zip(fe, ref, strict=True):
         assert {"elements", "order", "newton_iterations", "penetration", "force_difference"} <= set(a)
-        assert a["elements"] == 200 and a["order"] == 2
+        assert a["elements"] == 200
+        assert a["order"] == 2
         for key in CompressedState.KEYS:
             assert a[key] == pytest.approx(b[key], rel=1e-5, abs=1e-12), key
     assert sorted(p.name for p in (tmp_path / "fe").glob("*.pvd")) == ["indenter.pvd", "profile.pvd", "surface.pvd"]
@@ -165,7 +178,8 @@ def test_closed_pipe_ends_quietly():
                              "--pressure", "0.3"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     proc.stdout.close()
     err = proc.stderr.read().decode()
-    assert proc.wait() == 0 and err == ""
+    assert proc.wait() == 0
+    assert err == ""
 
 
 def test_python_dash_m_pocket_runs_the_command():
@@ -177,7 +191,8 @@ def test_python_dash_m_pocket_runs_the_command():
     assert (done.returncode, done.stdout.strip(), done.stderr) == (0, f"pocket {described()}", "")
     done = subprocess.run([sys.executable, "-m", "pocket", "inflate", "--alpha", "0.3", "--pressure", "0.3",
                            "--json"], capture_output=True, text=True)
-    assert done.returncode == 0 and json.loads(done.stdout)["pressure"] == 0.3, done.stderr
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout)["pressure"] == 0.3, done.stderr
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
@@ -186,21 +201,26 @@ def test_inflate_by_volume_is_the_inverse_of_inflate_by_pressure(capsys, solver)
     pressure gives the same volume back (one first-branch state per pressure below the maximum)."""
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--solver", solver, "--json")
     by_volume = json.loads(out)
-    assert status == 0 and err == "" and by_volume["volume"] == pytest.approx(1.0, rel=1e-9)
+    assert status == 0
+    assert err == ""
+    assert by_volume["volume"] == pytest.approx(1.0, rel=1e-9)
     status, out, _ = run(capsys, "inflate", "--alpha", "0.3", "--pressure", repr(by_volume["pressure"]),
                          "--solver", solver, "--json")
-    assert status == 0 and json.loads(out)["volume"] == pytest.approx(1.0, rel=1e-6)
+    assert status == 0
+    assert json.loads(out)["volume"] == pytest.approx(1.0, rel=1e-6)
 
 
 def test_inflate_by_volume_where_a_solver_has_none_or_with_a_pressure_is_one_line_exit_2(capsys):
     """The analytical model inflates by pressure only: one line naming --volume and the solvers that
     have it; --volume with --pressure is a usage error."""
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--solver", "analytical")
-    assert (status, out) == (2, "") and err == ("pocket: error: --volume: solver analytical has no volume-controlled "
+    assert (status, out) == (2, "")
+    assert err == ("pocket: error: --volume: solver analytical has no volume-controlled "
                                                 "inflation (entry point inflate_volume; solvers that have it: "
                                                 "shooting, fem, solid)\n")
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--volume", "1", "--pressure", "0.3")
-    assert (status, out) == (2, "") and "--pressure: not allowed with argument --volume" in err
+    assert (status, out) == (2, "")
+    assert "--pressure: not allowed with argument --volume" in err
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
@@ -211,17 +231,21 @@ def test_a_pressure_above_the_maximum_quotes_it_and_volume_control_passes_it(cap
     one 20 % further, past the maximum, a lower pressure."""
     status, out, err = run(capsys, "inflate", "--alpha", "0", "--pressure", "0.8", "--solver", solver)
     found = re.search(r"maximum Phat = (\S+), reached at V/R\^3 = (\S+) .*pocket inflate --volume V\)$", err)
-    assert status == 2 and out == "" and err.count("\n") == 1 and found, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert found, err
     maximum, volume = float(found[1]), float(found[2])
     assert maximum < 0.8
     pressures = []
     for v in (volume, 1.2 * volume):
         status, out, _ = run(capsys, "inflate", "--alpha", "0", "--volume", repr(v), "--solver", solver, "--json")
         pressures.append(json.loads(out)["pressure"])
-    assert pressures[0] == pytest.approx(maximum, rel=1e-5) and pressures[1] < pressures[0]
+    assert pressures[0] == pytest.approx(maximum, rel=1e-5)
+    assert pressures[1] < pressures[0]
 
 
-@pytest.mark.parametrize("stage, where", [("inflation", "small-strain dome"),
+@pytest.mark.parametrize(("stage", "where"), [("inflation", "small-strain dome"),
                                           ("compression", "first contact: Newton failed at every contact radius")])
 def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, monkeypatch, stage, where):
     """Exact answer: a Newton that never converges (patched in: always, or once the plate is
@@ -244,8 +268,11 @@ def test_fem_newton_failure_is_one_line_exit_1_and_no_files(capsys, tmp_path, mo
     monkeypatch.setattr(steps, "newton", failing)
     status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.31", "--force", "0.1",
                            "--solver", "fem", "--elements", "50", "--vtk", str(tmp_path / "fe"))
-    assert status == 1 and out == "" and len(err.strip().splitlines()) == 1, err
-    assert where in err and "patched to fail" in err, err
+    assert status == 1, err
+    assert out == "", err
+    assert len(err.strip().splitlines()) == 1, err
+    assert where in err, err
+    assert "patched to fail" in err, err
     assert list(tmp_path.iterdir()) == []
 
 
@@ -266,7 +293,8 @@ def test_inflate_help_names_no_force_and_no_fluid(capsys):
         assert main([name, "--help"]) == 0
         texts[name] = " ".join(capsys.readouterr().out.split()).lower()
     for word in ("--force", "--fluid", "fhat", "forces", "fluid"):
-        assert word in texts["compress"] and word not in texts["inflate"], word
+        assert word in texts["compress"], word
+        assert word not in texts["inflate"], word
 
 
 def test_readme_commands_are_harmless_to_paste():
@@ -301,7 +329,8 @@ def test_every_subcommand_help(name, capsys):
     parser = _commands()[name]
     assert main([name, "--help"]) == 0
     text = " ".join(capsys.readouterr().out.split())
-    assert parser.description and "exit status: 0 " in text
+    assert parser.description
+    assert "exit status: 0 " in text
     records = all_options()
     for action in parser._actions:
         if isinstance(action, argparse._HelpAction):
@@ -334,7 +363,7 @@ def test_a_default_the_help_text_omits_comes_from_the_record(capsys, monkeypatch
 
 
 @pytest.mark.parametrize(
-    "argv, message",
+    ("argv", "message"),
     [
         (["inflate", "--alpha", "0.3", "--pressure", "0.3", "--rtol", "2"], "--rtol = 2.0, but it must lie in [1e-14"),
         (["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--rtol", "1e-20"],
@@ -355,7 +384,10 @@ def test_solver_options_and_magnitudes_through_the_cli(capsys, argv, message):
     """Option values the records refuse, and numbers outside the model's magnitudes: exit 2, one line."""
     status = main(argv)  # argparse's own errors too: main returns their status
     out, err = capsys.readouterr()
-    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def _with_warnings(monkeypatch):
@@ -384,7 +416,8 @@ def test_warnings_on_stderr_and_in_json(capsys, monkeypatch, tmp_path):
     list per state in JSON, for inflate, compress and run."""
     _with_warnings(monkeypatch)
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--pressure", "0.3", "--json")
-    assert status == 0 and json.loads(out)["warnings"] == ["inflated: note"]
+    assert status == 0
+    assert json.loads(out)["warnings"] == ["inflated: note"]
     assert err == "pocket: warning: inflated: note\n"
     status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "0.2",
                            "--json")
@@ -392,12 +425,16 @@ def test_warnings_on_stderr_and_in_json(capsys, monkeypatch, tmp_path):
     assert err.splitlines() == ["pocket: warning: inflated: note", "pocket: warning: at force 0.1",
                                 "pocket: warning: at force 0.2"]
     status, out, err = run(capsys, "compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1")
-    assert status == 0 and "warnings" not in out and "at force 0.1" in err
+    assert status == 0
+    assert "warnings" not in out
+    assert "at force 0.1" in err
     status, out, err = run(capsys, "run", "--sample", "1", "--out", str(tmp_path))
     result = json.loads((tmp_path / "sample1.json").read_text())
-    assert status == 0 and result["inflated"]["warnings"] == ["inflated: note"]
+    assert status == 0
+    assert result["inflated"]["warnings"] == ["inflated: note"]
     assert [s["warnings"] for s in result["states"]] == [[f"at force {s['force']}"] for s in result["states"]]
-    assert err.splitlines()[0] == "pocket: warning: inflated: note" and len(err.splitlines()) == 8
+    assert err.splitlines()[0] == "pocket: warning: inflated: note"
+    assert len(err.splitlines()) == 8
 
 
 class _Terminal(__import__("io").StringIO):
@@ -435,7 +472,8 @@ def test_progress_bar_only_on_a_terminal(terminal, capsys, monkeypatch, tmp_path
     monkeypatch.setattr(sys, "stderr", stderr)
     assert main(["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "0.2", "0.3"]) == 0
     assert main(["run", "--sample", "1", "--out", str(tmp_path)]) == 0
-    assert len(calls) == 2 and all((c is not None) == terminal for c in calls)
+    assert len(calls) == 2
+    assert all((c is not None) == terminal for c in calls)
     text = stderr.getvalue()
     assert ("3/3" in text and "7/7" in text) if terminal else text == ""
 
@@ -446,7 +484,8 @@ def test_sweep_bar_on_a_terminal(monkeypatch, tmp_path, capsys):
     monkeypatch.setattr(sys, "stderr", stderr)
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "0.2", "--out",
                  str(tmp_path / "s.csv"), "--workers", "1"]) == 0
-    assert "2/2" in stderr.getvalue() and "points" in stderr.getvalue()
+    assert "2/2" in stderr.getvalue()
+    assert "points" in stderr.getvalue()
 
 
 @pytest.mark.slow
@@ -477,7 +516,8 @@ def test_every_command_on_a_closed_pipe(argv, buffered, tmp_path):
                             stderr=subprocess.PIPE, env=env)
     proc.stdout.close()
     err = proc.stderr.read().decode()
-    assert proc.wait() == 0 and err == "", err
+    assert proc.wait() == 0, err
+    assert err == "", err
 
 
 def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
@@ -489,7 +529,9 @@ def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
 
     monkeypatch.setattr(api, "inflate", interrupted)
     status, out, err = run(capsys, "inflate", "--alpha", "0.3", "--pressure", "0.3")
-    assert status == 130 and out == "" and err == "pocket: interrupted\n"
+    assert status == 130
+    assert out == ""
+    assert err == "pocket: interrupted\n"
 
 
 @pytest.mark.slow
@@ -512,7 +554,9 @@ def test_sigint_reaches_a_held_command_from_a_test_run_that_ignores_it(tmp_path)
             out, err = proc.communicate(timeout=600)
         finally:
             proc.kill()
-    assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
+    assert proc.returncode == 130, err
+    assert err == b"pocket: interrupted\n", err
+    assert out == b"", err
 
 
 @pytest.mark.slow
@@ -535,7 +579,9 @@ def test_sigint_to_a_long_fe_solve(tmp_path):
             out, err = proc.communicate(timeout=600)
         finally:
             proc.kill()
-    assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
+    assert proc.returncode == 130, err
+    assert err == b"pocket: interrupted\n", err
+    assert out == b"", err
     assert [p.name for p in tmp_path.iterdir()] == [hold.script.name]  # no --vtk folder
 
 
@@ -560,4 +606,6 @@ def test_sigint_during_compilation_is_not_lost(tmp_path):
             out, err = proc.communicate(timeout=600)
         finally:
             proc.kill()
-    assert proc.returncode == 130 and err == b"pocket: interrupted\n" and out == b"", err
+    assert proc.returncode == 130, err
+    assert err == b"pocket: interrupted\n", err
+    assert out == b"", err

@@ -47,7 +47,10 @@ def test_bad_data_one_line_exit_2_before_solving(case, tmp_path, capsys, monkeyp
     (tmp_path / "data.csv").write_text(text)
     status = main(["fit", str(tmp_path / "data.csv"), "--radius", "20 mm", "--thickness", "1 mm"])
     out, err = capsys.readouterr()
-    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def test_json_parameters_in_si(tmp_path, capsys):
@@ -58,8 +61,11 @@ def test_json_parameters_in_si(tmp_path, capsys):
     assert status == 0
     for key in ("c1", "c2"):
         assert out["parameters"][key]["value"] == pytest.approx(TRUTH[key], rel=1e-6)
-        assert out["parameters"][key]["unit"] == "Pa" and out["parameters"][key]["standard_error"] >= 0.0
-    assert out["correlation"]["keys"] == ["c1", "c2"] and out["solver_calls"] > 0 and out["data"] == 8
+        assert out["parameters"][key]["unit"] == "Pa"
+        assert out["parameters"][key]["standard_error"] >= 0.0
+    assert out["correlation"]["keys"] == ["c1", "c2"]
+    assert out["solver_calls"] > 0
+    assert out["data"] == 8
 
 
 def test_without_thickness_reports_products(tmp_path, capsys):
@@ -69,7 +75,8 @@ def test_without_thickness_reports_products(tmp_path, capsys):
     capsys.readouterr()
     status = main(["fit", bulge_csv(tmp_path / "b.csv"), "--radius", "20 mm", "--json"])
     out = json.loads(capsys.readouterr().out)
-    assert status == 0 and out["parameters"]["c1"]["unit"] == "N/m"
+    assert status == 0
+    assert out["parameters"]["c1"]["unit"] == "N/m"
     assert out["parameters"]["c1"]["value"] == pytest.approx(TRUTH["c1"] * T, rel=1e-6)
 
 
@@ -117,7 +124,9 @@ def test_prestretch_held_or_fitted(tmp_path, capsys):
                          (["--fix", "prestretch=0.9"], "--fix prestretch = 0.9, but a prestretch")):
         assert main([*base, *bad]) == 2
         out, err = capsys.readouterr()
-        assert out == "" and err.count("\n") == 1 and message in err, err
+        assert out == "", err
+        assert err.count("\n") == 1, err
+        assert message in err, err
 
 
 CASE = """[sheet]
@@ -139,7 +148,8 @@ def test_case_file_names_the_data(tmp_path, capsys):
     (tmp_path / "case.toml").write_text(CASE)
     assert main(["fit", str(tmp_path / "case.toml"), "--json"]) == 0
     case = json.loads(capsys.readouterr().out)
-    assert case["parameters"] == flags["parameters"] and case["solver_calls"] == flags["solver_calls"]
+    assert case["parameters"] == flags["parameters"]
+    assert case["solver_calls"] == flags["solver_calls"]
 
 
 CASE_BAD = {
@@ -167,4 +177,7 @@ def test_bad_case_file_one_line_exit_2_before_solving(case, tmp_path, capsys, mo
     (tmp_path / "case.toml").write_text(text)
     status = main(["fit", str(tmp_path / "case.toml"), *flags])
     out, err = capsys.readouterr()
-    assert status == 2 and out == "" and err.count("\n") == 1 and message in err, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err

@@ -143,12 +143,15 @@ def _run_argv(draw):
 def _check(argv, capsys):
     status = main(argv)
     out, err = capsys.readouterr()
-    assert "Traceback" not in err and "Traceback" not in out, err
+    assert "Traceback" not in err, err
+    assert "Traceback" not in out, err
     lines = err.splitlines()
     if status == 0:
         assert all(line.startswith("pocket: warning: ") for line in lines), err
     else:
-        assert status in (1, 2) and len(lines) == 1 and lines[0].startswith("pocket"), (status, err)
+        assert status in (1, 2), (status, err)
+        assert len(lines) == 1, (status, err)
+        assert lines[0].startswith("pocket"), (status, err)
 
 
 @pytest.fixture(scope="module")
@@ -192,8 +195,8 @@ def test_an_unexpected_exception_is_one_line(capsys, monkeypatch):
     monkeypatch.setattr(api, "inflate", broken)
     assert main(["inflate", "--alpha", "0.3", "--pressure", "0.3"]) == 1
     err = capsys.readouterr().err
-    assert err.startswith("pocket: internal error: ZeroDivisionError: float division by zero (a bug") and \
-        err.count("\n") == 1, err
+    assert err.startswith("pocket: internal error: ZeroDivisionError: float division by zero (a bug"), err
+    assert err.count("\n") == 1, err
     monkeypatch.setenv("POCKET_TRACEBACK", "1")
     with pytest.raises(ZeroDivisionError):
         main(["inflate", "--alpha", "0.3", "--pressure", "0.3"])

@@ -29,7 +29,8 @@ def test_the_plate_flag_is_the_default_compression(capsys):
 def test_a_sphere_solves_with_its_contact_pressure_above_p(capsys, solver):
     assert main([*BASE, "--json", "--solver", solver, "--indenter", "sphere", "--indenter-radius", "0.4"]) == 0
     out = json.loads(capsys.readouterr().out)
-    assert out["solver"] == solver and out["force"] == 0.5
+    assert out["solver"] == solver
+    assert out["force"] == 0.5
     assert out["contact_pressure_pole"] > out["contact_pressure_edge"] > out["pressure"]
     assert out["contact_radius_deformed"] < 0.4  # on the sphere's lower half
 
@@ -37,10 +38,11 @@ def test_a_sphere_solves_with_its_contact_pressure_above_p(capsys, solver):
 def test_a_sphere_reaches_the_analytical_solver_which_refuses_it_in_one_line(capsys):
     assert main([*BASE, "--solver", "analytical", "--indenter", "sphere", "--indenter-radius", "0.4"]) == 2
     err = capsys.readouterr().err
-    assert "solver analytical does not implement the sphere indenter" in err and err.count("\n") == 1
+    assert "solver analytical does not implement the sphere indenter" in err
+    assert err.count("\n") == 1
 
 
-@pytest.mark.parametrize("flags, message", [
+@pytest.mark.parametrize(("flags", "message"), [
     (["--indenter", "sphere", "--indenter-radius", "-0.4"], "--indenter-radius = -0.4, but a sphere's radius must "
                                                             "be > 0"),
     (["--indenter", "sphere", "--indenter-radius", "0"], "--indenter-radius = 0, but a sphere's radius must be > 0"),
@@ -60,7 +62,8 @@ def test_bad_indenter_flags_are_one_line_exit_2_before_any_solving(capsys, monke
     flags = [f.format(mm=tmp_path / "mm.csv", cone=tmp_path / "cone.csv") for f in flags]
     assert main([*BASE, *flags]) == 2
     err = capsys.readouterr().err
-    assert message in err and err.count("\n") == 1
+    assert message in err
+    assert err.count("\n") == 1
 
 
 DESIGN = ["design", "--radius", "20 mm", "--height", "10 mm", "--modulus", "1 MPa", "--alpha", "0.3", "--force",
@@ -86,7 +89,7 @@ def test_design_for_a_fingertip_meets_its_target_under_the_fingertip(capsys):
     assert abs(finger["pressure_initial_Pa"] / plate["pressure_initial_Pa"] - 1) > 1e-3
 
 
-@pytest.mark.parametrize("flags, message", [
+@pytest.mark.parametrize(("flags", "message"), [
     (["--indenter", "sphere", "--indenter-radius", "-8 mm"], "--indenter-radius = '-8 mm', but it must be > 0"),
     (["--indenter", "sphere", "--indenter-radius", "0"], "--indenter-radius = '0', but it must be > 0"),
     (["--indenter", "sphere", "--indenter-radius", "8 km"], "--indenter-radius = '8 km' is 8000 m, outside the sizes "
@@ -100,7 +103,8 @@ def test_bad_design_indenter_flags_are_one_line_exit_2_before_any_solving(capsys
     monkeypatch.setattr(design, "pressure_for_height", _no_solving)
     assert main([*DESIGN, *[f.format(bad=tmp_path / "bad.csv") for f in flags]]) == 2
     err = capsys.readouterr().err
-    assert message in err and err.count("\n") == 1
+    assert message in err
+    assert err.count("\n") == 1
 
 
 def test_sense_with_a_sphere_in_the_case_solves(capsys, tmp_path):

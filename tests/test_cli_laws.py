@@ -27,14 +27,18 @@ def test_compress_json_is_the_library_state(capsys):
     parameters in units of mu_0, the fluid and the smallest tensions."""
     status, out, err = run(capsys, "compress", *OGDEN, "--pressure", "0.3", "--force", "0.2", "0.5",
                            "--fluid", "gas", "--ambient", "6.5", "--gamma", "1.4", "--json")
-    assert status == 0 and err == ""
+    assert status == 0
+    assert err == ""
     rows = json.loads(out)
     rubber = check("ogden", {"mu": [630.0, 1.2, -10.0], "exponents": [1.3, 5.0, -2.0]}).scaled()
     states = shooting.compression_curve(rubber, 0.3, [0.2, 0.5], fluid=gas(6.5, 1.4))
     for row, state in zip(rows, states, strict=True):
         assert row == {**state.scalars(), "warnings": []}
-        assert "alpha" not in row and row["material"] == "ogden" and row["exponents"] == [1.3, 5.0, -2.0]
-        assert (row["fluid"], row["ambient"], row["gamma"]) == ("gas", 6.5, 1.4) and row["wrinkled"] is False
+        assert "alpha" not in row
+        assert row["material"] == "ogden"
+        assert row["exponents"] == [1.3, 5.0, -2.0]
+        assert (row["fluid"], row["ambient"], row["gamma"]) == ("gas", 6.5, 1.4)
+        assert row["wrinkled"] is False
     mu0 = 0.5 * sum(m * a for m, a in zip(rows[0]["mu"], rows[0]["exponents"], strict=True))
     assert mu0 == pytest.approx(1.0, rel=1e-15)  # the unit of the parameters is mu_0
 
@@ -51,7 +55,8 @@ def test_parameters_in_any_unit_are_rescaled(capsys):
         outs.append(json.loads(out))
     for key, value in outs[1].items():
         assert outs[0][key] == (pytest.approx(value, rel=1e-13) if isinstance(value, float) else value), key
-    assert outs[0]["c10"] == 0.5 and outs[0]["c20"] == 2 / 170
+    assert outs[0]["c10"] == 0.5
+    assert outs[0]["c20"] == 2 / 170
 
 
 def test_neo_hookean_is_mooney_rivlin_with_alpha_0(capsys):
@@ -74,7 +79,7 @@ def test_inflate_with_a_law(capsys):
                                "warnings": []}
 
 
-@pytest.mark.parametrize("argv, message", [
+@pytest.mark.parametrize(("argv", "message"), [
     (["compress", "--law", "neo-hookean", "--mu", "1", "--c10", "1"], "--c10 is not a parameter of the neo-hookean "
                                                                       "law (its parameters: --mu)"),
     (["compress", "--mu", "1"], "--mu is not a parameter of the mooney-rivlin law (it takes --alpha"),
@@ -106,7 +111,11 @@ def test_bad_law_or_fluid_flags(argv, message, capsys, tmp_path):
     any solve."""
     status, out, err = run(capsys, *argv, "--pressure", "0.3", *(["--force", "0.2"] if argv[0] == "compress" else []),
                            "--vtk", str(tmp_path / "vtk"))
-    assert status == 2 and out == "" and err.count("\n") == 1 and message in err and "Traceback" not in err, err
+    assert status == 2, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
+    assert "Traceback" not in err, err
     assert not (tmp_path / "vtk").exists()
 
 
@@ -120,19 +129,24 @@ def test_sweep_with_a_law_and_a_gas(tmp_path, capsys):
              "--workers", "1"]
     assert main(ogden) == 0
     rows = list(csv.DictReader(path.open()))
-    assert tuple(rows[0]) == COLUMNS and len(rows) == 4
+    assert tuple(rows[0]) == COLUMNS
+    assert len(rows) == 4
     rubber = check("ogden", {"mu": [630.0, 1.2, -10.0], "exponents": [1.3, 5.0, -2.0]}).scaled()
     for row in rows:
         state = shooting.compress(rubber, float(row["pressure_initial"]), float(row["force"]), fluid=gas(6.5, 1.4))
-        assert float(row["pressure_ratio"]) == state.pressure_ratio and float(row["height"]) == state.height
-        assert float(row["tension_2_min"]) == state.tension_2_min and row["wrinkled"] == "False"
+        assert float(row["pressure_ratio"]) == state.pressure_ratio
+        assert float(row["height"]) == state.height
+        assert float(row["tension_2_min"]) == state.tension_2_min
+        assert row["wrinkled"] == "False"
         assert (row["alpha"], row["material"], row["exponents"]) == ("", "ogden", "1.3 5.0 -2.0")
         assert [float(x) for x in row["mu_per_mu0"].split()] == list(rubber["mu"])
         assert (row["fluid"], row["ambient"], row["gamma"], row["c1_per_mu0"]) == ("gas", "6.5", "1.4", "")
     mooney = ["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.5", "--out", str(path), "--workers", "1"]
     assert main(mooney) == 0
     rows = list(csv.DictReader(path.open()))
-    assert len(rows) == 5 and rows[0]["material"] == "mooney-rivlin" and rows[0]["fluid"] == "liquid"
+    assert len(rows) == 5
+    assert rows[0]["material"] == "mooney-rivlin"
+    assert rows[0]["fluid"] == "liquid"
     capsys.readouterr()
     for argv in (ogden, mooney):
         assert main(argv) == 0
@@ -155,7 +169,9 @@ def test_help_says_how_parameters_are_scaled(capsys):
     for name in ("inflate", "compress", "sweep", "design"):
         assert main([name, "--help"]) == 0
         text = " ".join(capsys.readouterr().out.split())
-        assert "rescaled to units of mu_0" in text and "--law" in text and "mooney-rivlin" in text
+        assert "rescaled to units of mu_0" in text
+        assert "--law" in text
+        assert "mooney-rivlin" in text
 
 
 def test_a_compressive_tension_reaches_the_user(capsys, monkeypatch):
@@ -171,6 +187,9 @@ def test_a_compressive_tension_reaches_the_user(capsys, monkeypatch):
     monkeypatch.setattr(shooting, "compression_curve", slack)
     status, out, err = run(capsys, "compress", "--law", "neo-hookean", "--mu", "1", "--pressure", "0.3",
                            "--force", "0.5", "--json")
-    assert status == 0 and err.count("pocket: warning: compressive tension: T_1 = -0.02 E T") == 1, err
+    assert status == 0, err
+    assert err.count("pocket: warning: compressive tension: T_1 = -0.02 E T") == 1, err
     row = json.loads(out)
-    assert row["wrinkled"] is True and row["tension_1_min"] == -0.02 and "compressive tension" in row["warnings"][0]
+    assert row["wrinkled"] is True
+    assert row["tension_1_min"] == -0.02
+    assert "compressive tension" in row["warnings"][0]

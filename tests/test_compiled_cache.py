@@ -125,8 +125,12 @@ def test_the_cache_is_in_the_users_cache_folder_and_nothing_is_written_into_the_
     home, tmp = _folders(tmp_path)
     first = _run(package, home, tmp)
     second = _run(package, home, tmp)
-    assert first[0].startswith(str(home / ".cache" / "pocket-mechanics" / VERSION)) and first[2] >= 1
-    assert second[0] == first[0] and second[1] >= 1 and second[2] == 0 and second[3] == first[3]
+    assert first[0].startswith(str(home / ".cache" / "pocket-mechanics" / VERSION))
+    assert first[2] >= 1
+    assert second[0] == first[0]
+    assert second[1] >= 1
+    assert second[2] == 0
+    assert second[3] == first[3]
     assert _files(package) == before
 
 
@@ -148,10 +152,13 @@ def test_without_a_writable_cache_folder_the_cache_is_a_private_temp_folder(tmp_
     home, tmp = _homeless(tmp_path)
     first = _run(package, home, tmp)
     private = tmp / f"pocket-numba-{os.getuid()}"
-    assert first[0].startswith(str(private)) and first[2] >= 1
+    assert first[0].startswith(str(private))
+    assert first[2] >= 1
     assert stat.S_IMODE(private.stat().st_mode) == 0o700
     second = _run(package, home, tmp)
-    assert second[1] >= 1 and second[2] == 0 and second[3] == first[3]
+    assert second[1] >= 1
+    assert second[2] == 0
+    assert second[3] == first[3]
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
@@ -162,7 +169,9 @@ def test_nowhere_to_cache_compiles_without_a_cache(tmp_path, solver):
     home, tmp = _homeless(tmp_path)
     _blocked(tmp / f"pocket-numba-{os.getuid()}")
     path, hits, _, result = _run(package, home, tmp)
-    assert path is None and hits == 0 and result
+    assert path is None
+    assert hits == 0
+    assert result
 
 
 def test_a_damaged_entry_is_compiled_afresh(tmp_path):
@@ -175,7 +184,9 @@ def test_a_damaged_entry_is_compiled_afresh(tmp_path):
     for path in damaged:
         path.write_bytes(b"junk")
     second = _run(package, home, tmp)
-    assert damaged and second[2] >= 1 and second[3] == first[3]
+    assert damaged
+    assert second[2] >= 1
+    assert second[3] == first[3]
 
 
 def test_a_cached_solve_loads_no_compiler_and_no_scipy_solvers(tmp_path):
@@ -202,11 +213,14 @@ def test_editing_a_compiled_callee_makes_the_cache_stale(tmp_path, solver):
     home, tmp = _folders(tmp_path)
     _run(package, home, tmp)
     warm = _run(package, home, tmp)
-    assert warm[1] >= 1 and warm[2] == 0
+    assert warm[1] >= 1
+    assert warm[2] == 0
     with (package / CALLEES[solver]).open("a") as handle:
         handle.write("\n# an edit\n")
     edited = _run(package, home, tmp)
-    assert edited[1] == 0 and edited[2] >= 1 and edited[3] == warm[3]
+    assert edited[1] == 0
+    assert edited[2] >= 1
+    assert edited[3] == warm[3]
 
 
 def _copy_repository(target: pathlib.Path) -> pathlib.Path:

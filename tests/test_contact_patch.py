@@ -82,7 +82,8 @@ def test_plate_deformed_radius_is_area_radius(tmp_path, capsys):
             row["contact_radius_lagrangian_m"] * row["stretch_contact"], rel=1e-9)
         assert row["contact_radius_deformed_m"] > 1.1 * row["contact_radius_lagrangian_m"]  # lambda_c ~ 1.15
         assert row["contact_radius_deformed"] == pytest.approx(row["contact_radius_deformed_m"] / radius, rel=1e-15)
-    assert pressed == 6 and "contact_radius_m" not in rows[0]
+    assert pressed == 6
+    assert "contact_radius_m" not in rows[0]
 
 
 def test_sphere_deformed_radius_not_lagrangian(tmp_path):
@@ -131,7 +132,8 @@ def test_sweep_carries_deformed_radius(tmp_path):
             continue
         rho_c, pole, edge = (float(row[k]) for k in keys)
         if row["indenter"] == "plate":
-            assert rho_c == math.sqrt(float(row["contact_area"])) and pole == edge == float(row["pressure"])
+            assert rho_c == math.sqrt(float(row["contact_area"]))
+            assert pole == edge == float(row["pressure"])
         else:
             state = shooting.compress(0.3, 0.3, float(row["force"]), indenter=Sphere(0.5))
             assert rho_c == pytest.approx(state.contact_radius_deformed, rel=1e-9)

@@ -52,7 +52,8 @@ def test_stiffness_is_the_slope_of_the_curve(example):
     assert example.curve_stiffness_N_per_m[9] == pytest.approx(example.stiffness_N_per_m, rel=1e-9)
     assert example.curve_travel_m[9] == pytest.approx((1 - RATIO) * H0, rel=1e-6)
     # a button stiffens as it is pressed: travel grows, and ever more slowly
-    assert np.all(np.diff(example.curve_travel_m) > 0) and np.all(np.diff(example.curve_stiffness_N_per_m) > 0)
+    assert np.all(np.diff(example.curve_travel_m) > 0)
+    assert np.all(np.diff(example.curve_stiffness_N_per_m) > 0)
 
 
 def test_modulus_scales_thickness_only(example):
@@ -72,12 +73,13 @@ def test_cli_json(example, capsys):
     assert out["thickness_m"] == pytest.approx(example.thickness_m, rel=1e-12)
     assert out["paper_pressure_initial_Pa"] == pytest.approx(example.paper_pressure_initial_Pa, rel=1e-14)
     assert out["paper_thickness_m"] == pytest.approx(example.paper_thickness_m, rel=1e-14)
-    assert len(out["curve"]) == 20 and set(out["curve"][0]) == {"force_N", "travel_m", "stiffness_N_per_m"}
+    assert len(out["curve"]) == 20
+    assert set(out["curve"][0]) == {"force_N", "travel_m", "stiffness_N_per_m"}
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize(
-    "option, value, message",
+    ("option", "value", "message"),
     [
         ("--modulus", "1 mm", "modulus = '1 mm' has dimension [length], but a pressure"),
         ("--height-ratio", "1.2", "--height-ratio = 1.2, but a pressed button needs 0 < H/H0 < 1"),
@@ -94,7 +96,8 @@ def test_cli_bad_input(option, value, message, capsys):
     args[option] = value
     assert main(["design", *[x for kv in args.items() for x in kv]]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def test_curve_stops_at_the_end_of_the_range():
@@ -106,7 +109,8 @@ def test_curve_stops_at_the_end_of_the_range():
 
     d = design("20 mm", "10 mm", "1 MPa", ALPHA, "5 N", 0.5)
     scale = d.pressure_initial_Pa * math.pi * R**2
-    assert d.curve_limited and d.curve_force_N[-1] < 2 * 5.0
+    assert d.curve_limited
+    assert d.curve_force_N[-1] < 2 * 5.0
     with pytest.raises(OutOfRangeError):
         shooting.compress(ALPHA, d.pressure_initial, 2 * d.force)
     with pytest.raises(OutOfRangeError):
@@ -126,9 +130,11 @@ def test_paper_design_outside_the_model_is_said_not_fatal():
     with pytest.raises(OutOfRangeError):
         shooting.inflate(0.0, phat)
     d = design("20 mm", "16 mm", "1 MPa", 0.0, "0.67 N", 0.8)
-    assert d.paper_model_height_m is None and d.paper_model_height_ratio is None
+    assert d.paper_model_height_m is None
+    assert d.paper_model_height_ratio is None
     state = shooting.compress(0.0, d.pressure_initial, d.force)
-    assert state.inflated.height == pytest.approx(0.8, rel=1e-6) and state.height_ratio == pytest.approx(0.8, rel=1e-6)
+    assert state.inflated.height == pytest.approx(0.8, rel=1e-6)
+    assert state.height_ratio == pytest.approx(0.8, rel=1e-6)
 
 
 @pytest.fixture(scope="module")
@@ -193,7 +199,7 @@ def test_another_law_and_cli(capsys):
     assert state.height_ratio == pytest.approx(RATIO, rel=1e-6)
 
 
-@pytest.mark.parametrize("extra, message", [
+@pytest.mark.parametrize(("extra", "message"), [
     (["--gamma", "1.4"], "--gamma applies to a gas: give --fluid gas"),
     (["--fluid", "gas", "--ambient", "0 kPa"], "--ambient = '0 kPa', but the ambient (absolute) pressure must be > 0"),
     (["--fluid", "gas", "--ambient", "1 m"], "--ambient = '1 m' has dimension [length], but a pressure"),
@@ -205,4 +211,5 @@ def test_cli_bad_fluid_or_law(extra, message, capsys):
             "--force", "0.67 N", *extra]
     assert main(argv) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err

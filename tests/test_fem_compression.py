@@ -82,10 +82,12 @@ def test_contact_zone_is_flat_and_equibiaxial(default_curve):
     for state in default_curve:
         prof = state.profile
         inside = prof.r <= state.contact_radius
-        assert prof.contact.tolist() == inside.tolist() and inside.sum() == 3  # pole, midpoint, edge vertex
+        assert prof.contact.tolist() == inside.tolist()
+        assert inside.sum() == 3
         assert np.all(prof.eta[inside] == state.height)
         np.testing.assert_allclose(prof.rho[inside], state.stretch_contact * prof.r[inside], rtol=1e-13)
-        assert prof.eta[~inside].max() < state.height and state.extra["penetration"] == 0.0
+        assert prof.eta[~inside].max() < state.height
+        assert state.extra["penetration"] == 0.0
 
 
 def test_single_force_near_the_range_end():
@@ -112,7 +114,9 @@ def test_beyond_the_range_end_is_out_of_range():
                      r"\(.*\): there the free part of the sheet reaches the clamp plane", str(info.value))
     assert found, str(info.value)
     low, high = map(float, found.groups())
-    assert low < high and low == pytest.approx(end, rel=1e-4) and high == pytest.approx(end, rel=1e-4), (low, high, end)
+    assert low < high, (low, high, end)
+    assert low == pytest.approx(end, rel=1e-4), (low, high, end)
+    assert high == pytest.approx(end, rel=1e-4), (low, high, end)
 
 
 def test_height_control_reaches_the_force_state():
@@ -131,7 +135,8 @@ def test_zero_force_and_plate_at_the_top_give_the_inflated_state():
     zero = fem.compress(ALPHA, P_I, 0.0, elements=20)
     top = fem.compress_height(ALPHA, P_I, zero.inflated.height, elements=20)
     for state in (zero, top):
-        assert state.contact_radius == 0.0 and state.pressure_ratio == 1.0
+        assert state.contact_radius == 0.0
+        assert state.pressure_ratio == 1.0
         assert state.height == state.inflated.height
     with pytest.raises(OutOfRangeError, match="is above the inflated pocket"):
         fem.compress_height(ALPHA, P_I, 10.0, elements=20)

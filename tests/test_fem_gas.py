@@ -25,7 +25,7 @@ def _gas_law(state) -> float:
             / ((state.pressure_initial + fluid.ambient) * state.inflated.volume**gamma) - 1.0)
 
 
-@pytest.mark.parametrize("ambient, gamma", [(0.1, 1.0), (0.1, 1.4), (2.0, 5 / 3)])
+@pytest.mark.parametrize(("ambient", "gamma"), [(0.1, 1.0), (0.1, 1.4), (2.0, 5 / 3)])
 def test_gas_law_holds_along_a_compression_curve(ambient, gamma):
     """Ten forces from 0.02 to 1.5 (default mesh): the polytropic law to 1e-10 at every state, the volume
     below V_I, the fluid echoed; F = P A_c as for a liquid."""
@@ -33,7 +33,8 @@ def test_gas_law_holds_along_a_compression_curve(ambient, gamma):
     states = fem.compression_curve(ALPHA, PHAT, np.linspace(0.02, 1.5, 10), fluid=fluid)
     for state in states:
         assert abs(_gas_law(state)) < 1e-10, (state.force, _gas_law(state))
-        assert state.volume < state.inflated.volume and state.fluid is fluid
+        assert state.volume < state.inflated.volume
+        assert state.fluid is fluid
         assert state.extra["force_pressure_area"] == pytest.approx(state.force, rel=1e-9)
 
 
@@ -90,4 +91,5 @@ def test_a_liquid_by_any_name_is_the_liquid(given):
     """fluid None, "liquid" or LIQUID: the same states as without the keyword, echoing LIQUID."""
     plain = fem.compress(ALPHA, PHAT, 0.3, elements=32)
     state = fem.compress(ALPHA, PHAT, 0.3, fluid=given, elements=32)
-    assert state.fluid == LIQUID and state.scalars() == plain.scalars()
+    assert state.fluid == LIQUID
+    assert state.scalars() == plain.scalars()

@@ -24,7 +24,7 @@ def _worst(state, reference):
     return max(diffs.values()), diffs
 
 
-@pytest.mark.parametrize("alpha, pressure", CASES)
+@pytest.mark.parametrize(("alpha", "pressure"), CASES)
 def test_default_mesh_matches_shooting(alpha, pressure):
     """Every scalar within 1e-9 relative of shooting at the default mesh."""
     worst, diffs = _worst(fem.inflate(alpha, pressure), shooting.inflate(alpha, pressure, rtol=1e-12))
@@ -73,7 +73,7 @@ def test_volume_control_passes_the_maximum():
     assert states[1].pressure == pytest.approx(shooting.inflate_volume(0.0, 4.0, rtol=1e-12).pressure, rel=1e-8)
 
 
-@pytest.mark.parametrize("family, expected", [("uniform", 2.0), ("polar", 4.0)])
+@pytest.mark.parametrize(("family", "expected"), [("uniform", 2.0), ("polar", 4.0)])
 def test_pole_stretch_order(family, expected):
     """The pole stretch is a point derivative at the axis, where the axisymmetric forms are singular:
     P2 converges at order 2 on uniform meshes and at order 4 on meshes graded towards the axis
@@ -90,11 +90,15 @@ def test_state_contents():
     state = fem.inflate(47 / 160, 0.31, elements=50, order=1)
     assert state.solver == "fem"
     assert {"elements", "order", "newton_iterations"} <= set(state.extra)
-    assert state.extra["elements"] == 50 and state.extra["order"] == 1
+    assert state.extra["elements"] == 50
+    assert state.extra["order"] == 1
     prof = state.profile
-    assert prof.r[0] == 0.0 and prof.r[-1] == 1.0 and not prof.contact.any()
+    assert prof.r[0] == 0.0
+    assert prof.r[-1] == 1.0
+    assert not prof.contact.any()
     assert prof.tension_1[0] == pytest.approx(prof.tension_2[0], rel=1e-12)
-    assert prof.eta[0] == state.height and prof.stretch_2[-1] == 1.0
+    assert prof.eta[0] == state.height
+    assert prof.stretch_2[-1] == 1.0
 
 
 @pytest.fixture

@@ -47,13 +47,14 @@ CASES = [
 ]
 
 
-@pytest.mark.parametrize("call, quoted", CASES)
+@pytest.mark.parametrize(("call", "quoted"), CASES)
 def test_bad_input_is_a_one_line_input_error(call, quoted):
     """InputError, one line, quoting the offending value."""
     with pytest.raises(InputError) as info:
         call()
     message = str(info.value)
-    assert quoted in message and "\n" not in message, message
+    assert quoted in message, message
+    assert "\n" not in message, message
 
 
 def test_abrupt_tiny_element_is_rejected_saying_why():

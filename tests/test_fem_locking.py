@@ -29,8 +29,11 @@ def test_inflation_pressure_diverges_before_locking():
     before) and lock margins falling towards 0 but positive."""
     states = [fem.inflate(GENT, p) for p in (1.0, 10.0, 100.0, 1000.0)]
     volumes, margins = np.array([s.volume for s in states]), np.array([_margin(s) for s in states])
-    assert np.all(np.diff(volumes) > 0) and np.all(np.diff(np.diff(volumes)) < 0), volumes
-    assert np.all(margins > 0) and np.all(np.diff(margins) < 0) and margins[-1] < 1e-2, margins
+    assert np.all(np.diff(volumes) > 0), volumes
+    assert np.all(np.diff(np.diff(volumes)) < 0), volumes
+    assert np.all(margins > 0), margins
+    assert np.all(np.diff(margins) < 0), margins
+    assert margins[-1] < 1e-2, margins
 
 
 def test_a_volume_below_locking_is_reached_by_cutting_steps():
@@ -38,10 +41,12 @@ def test_a_volume_below_locking_is_reached_by_cutting_steps():
     path's long steps land past locking, where the energy is NaN, and are cut; the state is finite and
     near locking, its pressure high."""
     state = fem.inflate_volume(GENT, 1.745)
-    assert state.volume == 1.745 and 0 < _margin(state) < 0.05 and state.pressure > 50
+    assert state.volume == 1.745
+    assert 0 < _margin(state) < 0.05
+    assert state.pressure > 50
 
 
-@pytest.mark.parametrize("call, what", [
+@pytest.mark.parametrize(("call", "what"), [
     (lambda: fem.inflate_volume(GENT, 3.0), "volume = 3.0 is not reached before the rubber locks"),
     (lambda: fem.compress_height(GENT, PHAT, 0.1), "plate height h/R = 0.1 is not reached before the rubber locks"),
 ])
@@ -51,7 +56,9 @@ def test_a_target_past_locking_is_out_of_range(call, what):
     with pytest.raises(OutOfRangeError) as info:
         call()
     message = str(info.value)
-    assert what in message and "locking" in message and "\n" not in message, message
+    assert what in message, message
+    assert "locking" in message, message
+    assert "\n" not in message, message
 
 
 def test_plate_force_diverges_before_locking():
@@ -59,7 +66,9 @@ def test_plate_force_diverges_before_locking():
     the margins positive and falling, and F = P A_c to 1e-9 at the stiffest."""
     states = fem.compression_curve(GENT, PHAT, [1e2, 1e3, 1e4])
     heights, margins = np.array([s.height for s in states]), np.array([_margin(s) for s in states])
-    assert np.all(np.diff(heights) < 0) and abs(heights[2] - heights[1]) < abs(heights[1] - heights[0]), heights
-    assert np.all(margins > 0) and np.all(np.diff(margins) < 0), margins
+    assert np.all(np.diff(heights) < 0), heights
+    assert abs(heights[2] - heights[1]) < abs(heights[1] - heights[0]), heights
+    assert np.all(margins > 0), margins
+    assert np.all(np.diff(margins) < 0), margins
     assert states[-1].extra["force_pressure_area"] == pytest.approx(1e4, rel=1e-9)
     assert all(np.isfinite(v) for s in states for v in s.scalars().values() if isinstance(v, float))

@@ -7,6 +7,7 @@ couples the pressure to the volume); the load stepping's bookkeeping on a solver
 beyond a known load; an out-of-model Newton iterate is a cut step, not an answer.
 """
 
+import itertools
 from dataclasses import replace
 
 import numpy as np
@@ -40,7 +41,7 @@ def path(request):
     return m, fill, out
 
 
-@pytest.mark.parametrize("target, previous", [(0.5, 3), (0.7, 3), (0.5, 1)])
+@pytest.mark.parametrize(("target", "previous"), [(0.5, 3), (0.7, 3), (0.5, 1)])
 def test_residuals_fall_quadratically(path, target, previous):
     """From the extrapolation of the last ``previous`` states (one: the last state itself), the
     residual sequence satisfies r_{k+1} <= C r_k^2 with C < 1e3 for every step that ends above
@@ -53,8 +54,9 @@ def test_residuals_fall_quadratically(path, target, previous):
                     steps.increment(m, model.FITTED))
     r = np.array(result.residuals)
     assert result.iterations <= 6, f"{result.iterations} iterations, residuals {r}"
-    ratios = [b / a**2 for a, b in zip(r[:-1], r[1:], strict=True) if b > 5e-11]
-    assert ratios and max(ratios) < 1e3, f"r_(k+1)/r_k^2 = {ratios}, residuals {r}"
+    ratios = [b / a**2 for a, b in itertools.pairwise(r) if b > 5e-11]
+    assert ratios, f"r_(k+1)/r_k^2 = {ratios}, residuals {r}"
+    assert max(ratios) < 1e3, f"r_(k+1)/r_k^2 = {ratios}, residuals {r}"
     assert r[-1] < 2e-11, f"residuals {r}"
 
 
@@ -76,7 +78,8 @@ def test_predictor_order(path):
         misses.append([np.abs(curves.predict(known[-2:], sigma0 + 3 * d) - exact).max(),
                        np.abs(curves.predict(known, sigma0 + 3 * d) - exact).max()])
     orders = np.log2(np.array(misses[0]) / np.array(misses[1]))
-    assert abs(orders[0] - 2) < 0.3 and abs(orders[1] - 3) < 0.3, f"orders {orders}, misses {misses}"
+    assert abs(orders[0] - 2) < 0.3, f"orders {orders}, misses {misses}"
+    assert abs(orders[1] - 3) < 0.3, f"orders {orders}, misses {misses}"
 
 
 def test_load_stepping_cuts_steps_then_says_where():
@@ -94,8 +97,11 @@ def test_load_stepping_cuts_steps_then_says_where():
     with pytest.raises(ConvergenceError) as info:
         list(follow(solve, np.zeros(3), 0.0, 1.0, first_step=0.25, min_step=1e-3))
     err = info.value
-    assert 0.29 < err.load <= 0.3 and err.iterations == 7 and err.residual == 1.5
-    assert "gave up at load =" in str(err) and "\n" not in str(err)
+    assert 0.29 < err.load <= 0.3
+    assert err.iterations == 7
+    assert err.residual == 1.5
+    assert "gave up at load =" in str(err)
+    assert "\n" not in str(err)
     assert min(t for t in tried if t > 0.3) - err.load < 2e-3  # the step was cut down
 
 
@@ -112,7 +118,8 @@ def test_an_overshooting_step_is_cut_not_reported():
         return guess, 3
 
     loads = [load for load, _, _ in follow(solve, np.zeros(2), 0.0, 1.0, first_step=1.0)]
-    assert loads[-1] == 1.0 and all(b - a <= 0.3 for a, b in zip([0.0, *loads[:-1]], loads, strict=True))
+    assert loads[-1] == 1.0
+    assert all(b - a <= 0.3 for a, b in zip([0.0, *loads[:-1]], loads, strict=True))
 
 
 def test_a_target_outside_the_model_is_reported():

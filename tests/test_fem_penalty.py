@@ -53,7 +53,7 @@ def test_sample_2_at_3_6_kpa_on_the_uniform_64_mesh_solves(capsys):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("order, elements", [(1, 64), (1, 128), (2, 32), (2, 64), (2, 128)])
+@pytest.mark.parametrize(("order", "elements"), [(1, 64), (1, 128), (2, 32), (2, 64), (2, 128)])
 def test_penalty_sweep_over_the_samples_pressures(order, elements):
     """11 initial pressures spanning the Table 1 samples (2 kPa on sample 4 to 5 kPa on sample 1), Fhat = 0.19,
     uniform meshes: every solve succeeds (11 of these 55 solves failed) and lies within

@@ -31,7 +31,7 @@ def _order(sizes, errors):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("order, meshes, reference, least, rubber, fluid", [
+@pytest.mark.parametrize(("order", "meshes", "reference", "least", "rubber", "fluid"), [
     # P2 on edge-fitted meshes: O(h^4) in the functionals (3.5 the bar); P1: O(h^2)
     (2, (8, 16, 32, 64, 128), 1024, 3.5, ALPHA, None),
     (2, (8, 16, 32, 64, 128), 1024, 3.5, YEOH, None),
@@ -68,7 +68,7 @@ def test_a_large_sphere_is_the_flat_plate_at_first_order():
     assert all(0.9 < r < 1.1 for r in rates), rates
 
 
-@pytest.mark.parametrize("rubber, fluid", [(ALPHA, None), (YEOH, None), (ALPHA, GAS)])
+@pytest.mark.parametrize(("rubber", "fluid"), [(ALPHA, None), (YEOH, None), (ALPHA, GAS)])
 def test_the_force_is_the_cap_balance_and_the_contact_pressure_integral(rubber, fluid):
     """F = P pi rho_c^2 + 2 pi rho_c T_1 sin(theta_c) (the cap as a free body) = int p_c dA (normal
     equilibrium, p_c = P + (T_1 + T_2)/R_s) = the reaction = the force asked; p_c > P."""
@@ -96,7 +96,8 @@ def test_the_force_is_the_virtual_work_of_the_stored_energy(fluid):
             up.volume - down.volume)
         errors.append(abs(work / (2 * d) / (np.pi * PRESSURE) / state.force - 1))
     print("virtual work, relative error at d = 1e-3, 1e-4:", errors)
-    assert errors[1] < 1e-6 and errors[1] < 0.05 * errors[0]
+    assert errors[1] < 1e-6
+    assert errors[1] < 0.05 * errors[0]
 
 
 def _reciprocal(rubber, fluid) -> float:
@@ -109,7 +110,7 @@ def _reciprocal(rubber, fluid) -> float:
     return np.pi * (up.height - down.height) / (2 * d) / dv
 
 
-@pytest.mark.parametrize("rubber, fluid", [(ALPHA, None), (YEOH, None), (ALPHA, GAS)])
+@pytest.mark.parametrize(("rubber", "fluid"), [(ALPHA, None), (YEOH, None), (ALPHA, GAS)])
 def test_small_force_pressure_rise_is_reciprocal_for_sphere_and_plate(rubber, fluid):
     """(P/P_I - 1)/Fhat -> pi (dH0/dP)/(dV0/dP) (Maxwell-Betti; a gas adds its compliance), the same for the
     sphere as for the plate. The remainder falls about as Fhat^0.88 (measured with a liquid: 3.4e-4 and 4.5e-5
@@ -121,7 +122,8 @@ def test_small_force_pressure_rise_is_reciprocal_for_sphere_and_plate(rubber, fl
         gaps = np.abs(rise / limit - 1)
         rate = np.log10(gaps[1] / gaps[0])
         print(f"{indenter}: relative gaps {gaps} at Fhat = 1e-5, 1e-4 (rate {rate:.3f})")
-        assert gaps[0] < 2e-4 and rate > 0.6, (gaps, rate)
+        assert gaps[0] < 2e-4, (gaps, rate)
+        assert rate > 0.6, (gaps, rate)
 
 
 def test_every_returned_state_touches_without_penetration_and_pushes():
@@ -153,7 +155,8 @@ def test_newton_converges_quadratically(solved):
     r = np.array(out.residuals)
     tail = r[(r < 1e-2) & (r > 1e-11)]
     print("residuals", r)
-    assert tail.size >= 2 and np.all(tail[1:] <= 10 * tail[:-1] ** 2)
+    assert tail.size >= 2
+    assert np.all(tail[1:] <= 10 * tail[:-1] ** 2)
 
 
 def test_a_state_touching_outside_the_zone_or_pulling_is_refused_by_name(solved):
@@ -171,7 +174,7 @@ def test_a_state_touching_outside_the_zone_or_pulling_is_refused_by_name(solved)
         obstacle.check_range(model, pulled, surf)
 
 
-@pytest.mark.parametrize("radius, force, words", [
+@pytest.mark.parametrize(("radius", "force", "words"), [
     (0.1, 20.0, "wraps past the indenter's equator"),
     (0.3, 5.0, "below the clamp plane"),
     (3.0, 30.0, "reaches the clamp plane"),
@@ -212,7 +215,8 @@ def test_the_penalty_sphere_tends_to_the_edge_fitted_one():
     fitted = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=Sphere(1.0))
     pen = fem.compression_curve(ALPHA, PRESSURE, forces, indenter=Sphere(1.0), contact="penalty")
     for f, p in zip(fitted, pen, strict=True):
-        assert p.pressure == pytest.approx(f.pressure, rel=1e-5) and p.height == pytest.approx(f.height, rel=1e-5)
+        assert p.pressure == pytest.approx(f.pressure, rel=1e-5)
+        assert p.height == pytest.approx(f.height, rel=1e-5)
         assert p.extra["penetration"] < 1e-6
         assert p.extra["force_reaction"] == pytest.approx(p.force, rel=1e-9)
     depth = [fem.compress(ALPHA, PRESSURE, 0.19, indenter=Sphere(1.0), contact="penalty", penalty=k,
@@ -233,8 +237,11 @@ def test_the_contact_pressure_is_reported_as_the_shooting_solver_reports_it():
     state = fem.compress(ALPHA, PRESSURE, 0.19, indenter=Sphere(radius))
     profile, pc = state.profile, state.contact_pressure
     on = profile.contact
-    assert pc.shape == profile.r.shape and np.all(np.isnan(pc[~on])) and np.all(np.isfinite(pc[on]))
-    assert pc[0] == state.contact_pressure_pole and pc[on][-1] == state.contact_pressure_edge
+    assert pc.shape == profile.r.shape
+    assert np.all(np.isnan(pc[~on]))
+    assert np.all(np.isfinite(pc[on]))
+    assert pc[0] == state.contact_pressure_pole
+    assert pc[on][-1] == state.contact_pressure_edge
     inner = on & (profile.r < state.contact_radius)  # the edge node's value is the one-sided edge value
     expected = state.pressure + (profile.tension_1[inner] + profile.tension_2[inner]) / radius
     assert pc[inner] == pytest.approx(expected, rel=1e-12)
@@ -243,6 +250,7 @@ def test_the_contact_pressure_is_reported_as_the_shooting_solver_reports_it():
     assert force == pytest.approx(state.force, rel=1e-4)  # Simpson on the nodes, O(h^4)
     scalars = state.scalars()
     for key in ("contact_radius_deformed", "contact_pressure_pole", "contact_pressure_edge"):
-        assert key not in state.extra and scalars[key] == getattr(state, key)
+        assert key not in state.extra
+        assert scalars[key] == getattr(state, key)
     assert contact_pressures(state) == {k: getattr(state, k) for k in ("contact_pressure_pole",
                                                                        "contact_pressure_edge")}

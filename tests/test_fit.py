@@ -83,12 +83,15 @@ def test_recovers_a_prestretch_and_ignoring_it_biases_the_fit():
     result = fit(Setup((data,), R, T), "neo-hookean", prestretch=True)
     errors = relative_errors(result, truth)
     print("fitted prestretch:", {k: f"{v:.2e}" for k, v in errors.items()})
-    assert result.statistics.names == ("mu", "prestretch") and max(errors.values()) < 1e-6, errors
+    assert result.statistics.names == ("mu", "prestretch"), errors
+    assert max(errors.values()) < 1e-6, errors
     ignored = fit(Setup((data,), R, T), "neo-hookean")
     bias = relative_errors(ignored, truth)
     print(f"prestretch ignored: mu {ignored.material['mu']:.6g} Pa against {truth['mu']:.6g} Pa, relative error "
           f"{bias['mu']:.3g}, residual RMS {ignored.statistics.rms:.3g}")
-    assert ignored.statistics.names == ("mu",) and bias["mu"] > 1e-3 and ignored.statistics.rms > 1e-3
+    assert ignored.statistics.names == ("mu",)
+    assert bias["mu"] > 1e-3
+    assert ignored.statistics.rms > 1e-3
 
 
 @pytest.mark.study  # 100 fits: minutes; the 25-fit counts of test_fit_intervals run in the slow lane
@@ -111,7 +114,7 @@ user's good guess would): the result depends on the data, not on where the fit s
         s = fit(Setup((data,), R, T), "mooney-rivlin", start=start).statistics
         covered += [(lo <= _value(truth, name) <= hi) for name, (lo, hi) in zip(s.names, s.intervals, strict=True)]
     print("coverage of c1, c2 over 100 repetitions:", covered.tolist())
-    assert np.all((90 <= covered) & (covered <= 99)), covered
+    assert np.all((covered >= 90) & (covered <= 99)), covered
 
 
 def test_warns_on_c30_from_small_strains():
@@ -138,7 +141,8 @@ def test_warns_on_alpha_from_compression_alone():
     data = Dataset("compression", forces * p_i * np.pi * R**2, {"pressure": pressure}, p_i, "pressing")
     warnings = fit(Setup((data,), R, T), "mooney-rivlin").statistics.warnings
     print(warnings)
-    assert any("c2" in w for w in warnings) and any("mu_0" in w for w in warnings)
+    assert any("c2" in w for w in warnings)
+    assert any("mu_0" in w for w in warnings)
 
 
 def test_silent_on_a_well_posed_fit():
@@ -194,10 +198,12 @@ def test_fem_solver_fits_as_shooting_does(monkeypatch):
     truth = check("neo-hookean", TRUTHS["neo-hookean"][0])
     data = bulge(truth, np.linspace(0.1, 0.5, 5))
     by_fem = fit(Setup((data,), R, T, "fem"), "neo-hookean")
-    assert by_fem.calls > 0 and set(used) == {("fem", "inflate")}, set(used)
+    assert by_fem.calls > 0, set(used)
+    assert set(used) == {("fem", "inflate")}, set(used)
     used.clear()
     by_shooting = fit(Setup((data,), R, T), "neo-hookean")
-    assert ("shooting", "inflation_curve") in used and {s for s, _ in used} == {"shooting"}
+    assert ("shooting", "inflation_curve") in used
+    assert {s for s, _ in used} == {"shooting"}
     difference = abs(by_fem.material["mu"] / by_shooting.material["mu"] - 1.0)
     print(f"mu by fem {by_fem.material['mu']:.12g}, by shooting {by_shooting.material['mu']:.12g}: {difference:.2e}; "
           f"fem calls {by_fem.calls}")
@@ -217,6 +223,7 @@ def test_two_term_ogden_gives_mu0_and_the_curve():
     s = result.statistics
     print({k: f"{v:.2e}" for k, v in relative_errors(result, truth).items()}, "calls", result.calls,
           f"{result.seconds:.1f} s", s.warnings)
-    assert abs(s.mu0 / truth.mu0 - 1.0) < 1e-6 and np.max(np.abs(result.residuals)) < 1e-6
+    assert abs(s.mu0 / truth.mu0 - 1.0) < 1e-6
+    assert np.max(np.abs(result.residuals)) < 1e-6
     stiff = int(np.argmax(result.material["exponents"]))  # the terms come back in either order
     assert any(f"mu[{stiff}] and exponents[{stiff}] are correlated" in w for w in s.warnings), s.warnings

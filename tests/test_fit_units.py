@@ -54,7 +54,9 @@ def _run(args, capsys):
 def _refused(status, out, err, *words):
     """Exit 2, nothing on stdout, the error the last line of stderr (after any warnings), naming ``words``."""
     lines = err.splitlines()
-    assert status == 2 and out == "" and lines[-1].startswith("pocket: error: "), err
+    assert status == 2, err
+    assert out == "", err
+    assert lines[-1].startswith("pocket: error: "), err
     assert all(w in lines[-1] for w in words), err
     return lines
 
@@ -69,7 +71,7 @@ def test_fit_plain_radius_warns(tmp_path, capsys, no_solve):
     assert "read as 15 m" in lines[0]
 
 
-@pytest.mark.parametrize("flag, value, kind", [("--thickness", "0.001", "length"),
+@pytest.mark.parametrize(("flag", "value", "kind"), [("--thickness", "0.001", "length"),
                                                ("--initial-pressure", "5000", "pressure"),
                                                ("--fix", "c2=47000", "pressure")])
 def test_fit_plain_sheet_values_warn(flag, value, kind, tmp_path, capsys, stop_fit):
@@ -78,10 +80,11 @@ def test_fit_plain_sheet_values_warn(flag, value, kind, tmp_path, capsys, stop_f
     ones, so nothing is refused)."""
     args = {"--thickness": ["--radius", "20 mm", flag, value],
             "--initial-pressure": [*SHEET, flag, value], "--fix": [*SHEET, flag, value]}[flag]
-    status, out, err = _run([bulge_csv(tmp_path / "b.csv"), *args], capsys)
+    status, _out, err = _run([bulge_csv(tmp_path / "b.csv"), *args], capsys)
     key, written = ("--fix c2", "47000") if flag == "--fix" else (flag, value)
-    assert status == 2 and err.splitlines()[:-1] == [f"pocket: warning: {w}"
-                                                     for w in plain_warnings(key, written, kind)], err
+    assert status == 2, err
+    assert (err.splitlines()[:-1] == [f"pocket: warning: {w}"
+                                                     for w in plain_warnings(key, written, kind)]), err
     assert "stopped before the fit" in err.splitlines()[-1]
 
 
@@ -91,7 +94,7 @@ def test_fit_plain_sigma_warns(tmp_path, capsys, no_solve, stop_fit):
     data = bulge_csv(tmp_path / "b.csv")
     lines = _refused(*_run([data, *SHEET, "--sigma", "height=0.02"], capsys), "--sigma height", "more than every")
     assert lines[:-1] == [f"pocket: warning: {w}" for w in plain_warnings("--sigma height", "0.02", "length")]
-    status, _, err = _run([data, *SHEET, "--sigma", "height=0.00002"], capsys)
+    _status, _, err = _run([data, *SHEET, "--sigma", "height=0.00002"], capsys)
     assert err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in plain_warnings("--sigma height", "0.00002",
                                                                                    "length")]
     assert "stopped before the fit" in err.splitlines()[-1]
@@ -125,7 +128,7 @@ def test_fit_volume_past_any_sphere_refused():
         test = Dataset("inflation", np.array([1e3, 2e3]), {"volume": np.array([0.5, 1.0]) * bound * factor},
                                None, "v.csv")
         if refused:
-            with pytest.raises(InputError, match="v.csv: the volume column"):
+            with pytest.raises(InputError, match=r"v\.csv: the volume column"):
                 checks.check(Setup((test,), R, T), slack=False)
         else:
             checks.check(Setup((test,), R, T), slack=False)
@@ -162,7 +165,8 @@ def test_fit_bom_reads_same_mu(tmp_path, capsys):
         status, out, _ = _run([path, *SHEET, "--law", "neo-hookean", "--json"], capsys)
         assert status == 0
         fits.append(json.loads(out)["mu0"]["value"])
-    assert fits[1] == pytest.approx(fits[0], rel=1e-9) and fits[0] == pytest.approx(truth.mu0, rel=1e-6)
+    assert fits[1] == pytest.approx(fits[0], rel=1e-9)
+    assert fits[0] == pytest.approx(truth.mu0, rel=1e-6)
 
 
 def test_fit_semicolon_file(tmp_path, capsys, no_solve):
@@ -216,9 +220,10 @@ def test_parameter_at_bound_says_so(tmp_path, capsys):
     prestretch = 1 of the admissible set, and says so (its error is one-sided); its interval is cut at 1."""
     truth = check("neo-hookean", {"mu": 200e3})
     data = bulge_csv(tmp_path / "b.csv", truth)
-    status, out, err = _run([data, *SHEET, "--law", "neo-hookean", "--fit-prestretch", "--json"], capsys)
+    status, out, _err = _run([data, *SHEET, "--law", "neo-hookean", "--fit-prestretch", "--json"], capsys)
     result = json.loads(out)
-    assert status == 0 and result["parameters"]["prestretch"]["value"] == pytest.approx(1.0, abs=1e-6)
+    assert status == 0
+    assert result["parameters"]["prestretch"]["value"] == pytest.approx(1.0, abs=1e-6)
     assert result["parameters"]["prestretch"]["interval_95"][0] >= 1.0
     assert any(w.startswith("prestretch = ") and "sits at 1, a bound of its admissible set" in w
                for w in result["warnings"]), result["warnings"]
@@ -232,7 +237,8 @@ def test_undetermined_parameter_has_no_zero_error():
     jac = np.array([[1.0, 0.0], [2.0, 0.0], [3.0, 0.0], [4.0, 0.0]])
     r = np.array([1e-3, -2e-3, 1e-3, 5e-4])
     s = stats.statistics(types.SimpleNamespace(thickness=T), material, free, np.diag([1e5, 1e5]), r, jac)
-    assert s.standard_errors[1] > abs(s.values[1]) and math.isfinite(s.standard_errors[1])
+    assert s.standard_errors[1] > abs(s.values[1])
+    assert math.isfinite(s.standard_errors[1])
     assert any(w.startswith("c2 = ") and "do not determine" in w for w in s.warnings)
 
 
@@ -270,7 +276,8 @@ def test_sigma_on_controlled_pressure_explained(tmp_path, capsys, no_solve):
     pressure data."""
     status, out, err = _run([bulge_csv(tmp_path / "b.csv"), *SHEET, "--sigma", "pressure=0.1 kPa"], capsys)
     lines = _refused(status, out, err, "--sigma pressure", "controlled variable of inflation tests")
-    assert "no test has pressure data" not in err and len(lines) == 1
+    assert "no test has pressure data" not in err
+    assert len(lines) == 1
 
 
 def test_fitted_modulus_no_rubber_warns():
@@ -290,7 +297,8 @@ def test_fit_prestretched_sheet_on_a_large_clamp_not_refused(tmp_path, capsys, s
     are no contradiction, and with the prestretch held the plain radius is said but the data are not refused (the
     slack sheet's modulus bound does not apply)."""
     status, _, err = _run([bulge_csv(tmp_path / "b.csv"), "--radius", "15", "--fix", "prestretch=1.1"], capsys)
-    assert status == 2 and "stopped before the fit" in err.splitlines()[-1], err
+    assert status == 2, err
+    assert "stopped before the fit" in err.splitlines()[-1], err
     assert err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in plain_warnings("--radius", "15", "length")]
 
 
@@ -302,4 +310,5 @@ def test_fit_case_file_plain_values_warn(tmp_path, capsys, stop_fit):
                                         "sigma = {height = 0.00002}\n")
     status, _, err = _run([str(tmp_path / "case.toml")], capsys)
     expected = [*plain_warnings("clamp.radius", 0.02, "length"), *plain_warnings("fit.sigma.height", 2e-5, "length")]
-    assert status == 2 and err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in expected], err
+    assert status == 2, err
+    assert err.splitlines()[:-1] == [f"pocket: warning: {w}" for w in expected], err

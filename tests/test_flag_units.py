@@ -27,7 +27,9 @@ def _no_solving(*args, **kwargs):
 
 def _one_line(capsys) -> str:
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert "Traceback" not in err, err
     return err
 
 
@@ -41,7 +43,7 @@ def test_compress_indenter_radius_with_unit_refused_naming_ratio(capsys):
            "(a number); pocket run takes physical values in a case file" in err
 
 
-@pytest.mark.parametrize("argv, option, value, unit", [
+@pytest.mark.parametrize(("argv", "option", "value", "unit"), [
     (["inflate", "--alpha", "0.3"], "--pressure", "3 kPa", "Phat = P R / (E T)"),
     (["inflate", "--alpha", "0.3"], "--volume", "2 mL", "V/R^3"),
     (["compress", "--alpha", "0.3", "--force", "0.2"], "--pressure", "3 kPa", "Phat_I = P_I R / (E T)"),
@@ -108,7 +110,8 @@ def test_sense_plain_pressure_warns(capsys):
     assert err.splitlines() == [f"pocket: warning: {plain_warnings('--pressure', '5000', 'pressure')[0]}"]
     assert main([*argv, "5 kPa"]) == 0
     written, err = capsys.readouterr()
-    assert err == "" and json.loads(plain) == json.loads(written)
+    assert err == ""
+    assert json.loads(plain) == json.loads(written)
 
 
 @pytest.mark.slow
@@ -123,7 +126,8 @@ def test_design_mu_with_unit_taken(button, capsys):
         out, err = capsys.readouterr()
         assert err.splitlines() == [f"pocket: warning: {w}" for w in plain_warnings("--mu", value, "pressure")]
         out = json.loads(out)
-        assert out["material"] == "neo-hookean" and out["mu"] == 1.0  # reported in units of mu_0
+        assert out["material"] == "neo-hookean"
+        assert out["mu"] == 1.0
         assert out["pressure_initial_Pa"] == pytest.approx(reference.pressure_initial_Pa, rel=1e-9)
         assert out["thickness_m"] == pytest.approx(reference.thickness_m, rel=1e-9)
 

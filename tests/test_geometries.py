@@ -63,17 +63,22 @@ def test_the_disc_is_the_flat_sheet_clamped_at_its_rim():
     arc = np.linspace(0.0, 1.0, 7)
     assert DISC.radius(arc) is arc
     assert DISC.radius([0.0, 0.25]).tolist() == [0.0, 0.25]
-    assert DISC.height(arc.reshape(7, 1)).shape == (7, 1) and not DISC.height(arc).any()
+    assert DISC.height(arc.reshape(7, 1)).shape == (7, 1)
+    assert not DISC.height(arc).any()
     assert (DISC.length, DISC.volume) == (1.0, 0.0)
-    assert DISC.end == Clamp(radius=1.0, height=0.0) and clamp_of(DISC) is DISC.end
-    assert DISC.name == "pocket" and GEOMETRIES == {"pocket": DISC}
+    assert DISC.end == Clamp(radius=1.0, height=0.0)
+    assert clamp_of(DISC) is DISC.end
+    assert DISC.name == "pocket"
+    assert GEOMETRIES == {"pocket": DISC}
 
 
 def test_a_geometry_is_none_a_name_or_a_geometry():
     """Exact answers: None and the name ``pocket`` are the disc; a Geometry is returned as given; an unknown
     name or another object is a one-line InputError quoting it and naming the choices."""
     toy = Hemisphere()
-    assert as_geometry(None) is DISC and as_geometry("pocket") is DISC and as_geometry(toy) is toy
+    assert as_geometry(None) is DISC
+    assert as_geometry("pocket") is DISC
+    assert as_geometry(toy) is toy
     for value, shown in (("capsule", "'capsule'"), (1.0, "1.0")):
         with pytest.raises(InputError, match=rf"^geometry = {shown}, but it must be one of pocket or a Geometry"):
             as_geometry(value)
@@ -155,8 +160,11 @@ def test_states_carry_the_geometry_they_were_solved_on(solver):
     inflate, compress = SMALL[solver]
     inflated = inflate(0.1, 0.1, geometry="pocket")
     pressed = compress(0.1, 0.1, 0.5)
-    assert inflated.geometry is DISC and pressed.inflated.geometry is DISC and pressed.geometry is DISC
-    assert "geometry" not in inflated.scalars() and "geometry" not in pressed.scalars()
+    assert inflated.geometry is DISC
+    assert pressed.inflated.geometry is DISC
+    assert pressed.geometry is DISC
+    assert "geometry" not in inflated.scalars()
+    assert "geometry" not in pressed.scalars()
 
 
 def test_a_compressed_state_reads_its_geometry_from_its_inflated_state():
@@ -181,7 +189,8 @@ def test_the_command_lines_json_is_the_states_on_the_disc(capsys, argv):
     state = (shooting.inflate(0.1, 0.1, geometry=DISC) if argv[0] == "inflate"
              else shooting.compress(0.1, 0.1, 0.5, geometry=DISC))
     expected = state.scalars()
-    assert set(printed) - {"warnings"} == set(expected) and "geometry" not in printed
+    assert set(printed) - {"warnings"} == set(expected)
+    assert "geometry" not in printed
     for key, value in expected.items():
         if isinstance(value, float):
             assert float(printed[key]).hex() == value.hex(), key

@@ -73,7 +73,7 @@ def cone(monkeypatch):
     return Cone(0.5)
 
 
-@pytest.mark.parametrize("solver, name, call", REFUSALS)
+@pytest.mark.parametrize(("solver", "name", "call"), REFUSALS)
 def test_a_solver_refuses_an_indenter_it_does_not_pose(cone, solver, name, call):
     """One line: ``solver <name> does not implement the <indenter's name> indenter (its indenters: ...)``, the
     names those of the classes in the solver's ``CONTACTS``."""
@@ -90,7 +90,7 @@ def test_the_fem_refuses_a_contact_method_that_does_not_pose_the_indenter(cone, 
         fem.compress(0.1, 0.3, 0.5, indenter=cone, contact="penalty")
 
 
-@pytest.mark.parametrize("make, match", [
+@pytest.mark.parametrize(("make", "match"), [
     (lambda: Sphere(float("nan")), r"^indenter.radius = nan is not finite$"),
     (lambda: Sphere(0.0), r"^indenter.radius = 0, but a sphere's radius must be > 0$"),
     (lambda: Sphere(-1.0), r"^indenter.radius = -1, but a sphere's radius must be > 0$"),
@@ -120,7 +120,7 @@ def test_each_name_is_registered_once_for_its_own_class():
         name = "sphere"
 
     for kind in (Sphere, Ball):
-        with pytest.raises(ValueError, match="^indenter 'sphere' is registered already$"):
+        with pytest.raises(ValueError, match=r"^indenter 'sphere' is registered already$"):
             register(kind)
     assert INDENTERS["sphere"] is Sphere
 
@@ -136,7 +136,7 @@ SURFACES = [(PLATE, np.linspace(0.0, 3.0, 7), math.inf), (Sphere(0.4), np.linspa
             (Profile(_FUNCTIONS), np.linspace(0.0, 0.45, 6), 0.5)]
 
 
-@pytest.mark.parametrize("indenter, rho, reach", SURFACES, ids=["plate", "sphere", "table", "functions"])
+@pytest.mark.parametrize(("indenter", "rho", "reach"), SURFACES, ids=["plate", "sphere", "table", "functions"])
 def test_steepnessand_curvature_are_those_of_the_height(indenter, rho, reach):
     """Exact answers to the finite differences' error: the slope is the central difference of z (step 1e-5:
     error h^2 z'''/6, below 1e-7 where z''' < 600 as on the sphere at rho = 0.35), the second derivative the
@@ -149,9 +149,11 @@ def test_steepnessand_curvature_are_those_of_the_height(indenter, rho, reach):
     second = (indenter.height(rho + h2) - 2 * indenter.height(rho) + indenter.height(np.abs(rho - h2))) / h2**2
     assert np.allclose(indenter.second(rho), second, rtol=1e-5, atol=1e-6)
     assert np.array_equal(indenter.curvature(rho), indenter.second(rho) / (1 + indenter.slope(rho) ** 2) ** 1.5)
-    assert indenter.reach == reach and indenter.height(0.0) == 0.0
+    assert indenter.reach == reach
+    assert indenter.height(0.0) == 0.0
     if math.isfinite(reach):
-        assert np.isfinite(indenter.height(reach)) and np.isnan(indenter.height(reach * 1.01))
+        assert np.isfinite(indenter.height(reach))
+        assert np.isnan(indenter.height(reach * 1.01))
 
 
 def test_the_sphere_is_its_cap_of_curvature_one_over_its_radius():
@@ -159,13 +161,16 @@ def test_the_sphere_is_its_cap_of_curvature_one_over_its_radius():
     tip = Sphere(0.4)
     rho = np.linspace(0.0, 0.35, 8)
     assert np.allclose(tip.curvature(rho), 1 / 0.4, rtol=1e-12)
-    assert tip.height(0.4) == 0.4 and not tip.pressure_area
+    assert tip.height(0.4) == 0.4
+    assert not tip.pressure_area
 
 
 def test_the_flat_plate_is_a_plane_on_which_the_force_is_pressure_times_area():
     rho = np.linspace(0.0, 1.0, 7).reshape(7, 1)
     assert np.array_equal(PLATE.height(rho), np.zeros((7, 1)))
-    assert PLATE.pressure_area and as_indenter(None) is PLATE and PLATE == INDENTERS["plate"]()
+    assert PLATE.pressure_area
+    assert as_indenter(None) is PLATE
+    assert INDENTERS["plate"]() == PLATE
 
 
 def test_an_indenter_reports_itself_without_being_asked_its_kind():
@@ -178,14 +183,17 @@ def test_an_indenter_reports_itself_without_being_asked_its_kind():
     assert Profile(_TABLE).columns(0.02) == {"indenter": "profile", "indenter_file": "a test table"}
     assert [PLATE.journal(), ball.journal()] == ["plate", "sphere K=0.4"]
     assert Profile(_TABLE).journal() == f"profile sha256={_TABLE.digest}"
-    assert PLATE.numbers() == {} and ball.numbers() == {"radius": 0.4}
+    assert PLATE.numbers() == {}
+    assert ball.numbers() == {"radius": 0.4}
     for indenter, reach, end in ((PLATE, 1.25, 1.25), (ball, 1.25, 0.4), (ball, 0.3, 0.3)):
         rho, z = indenter.meridian(reach, 5)
-        assert rho[0] == 0.0 and rho[-1] == end and np.all(np.diff(rho) > 0)
+        assert rho[0] == 0.0
+        assert rho[-1] == end
+        assert np.all(np.diff(rho) > 0)
         assert np.array_equal(z, indenter.height(rho))
 
 
-@pytest.mark.parametrize("compression_curve, options", [
+@pytest.mark.parametrize(("compression_curve", "options"), [
     (shooting.compression_curve, {}),
     (fem.compression_curve, {"elements": 32}),
     (fem.compression_curve, {"elements": 32, "contact": "penalty"}),

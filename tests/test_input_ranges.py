@@ -42,12 +42,14 @@ def _refused(capsys, argv) -> str:
     """The one line of stderr of ``pocket argv``, which must exit 2 and print nothing."""
     assert main(argv) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and "Traceback" not in err
+    assert out == ""
+    assert err.count("\n") == 1
+    assert "Traceback" not in err
     return err
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
-@pytest.mark.parametrize("argv, message", [
+@pytest.mark.parametrize(("argv", "message"), [
     ([*INFLATE, "--alpha", "0.3", "--prestretch", "3000"],
      f"--prestretch = 3000.0, but a prestretch of the clamped sheet must be at most {PRESTRETCH_LIMIT:g}"),
     ([*SPHERE, "1e-300"], f"--indenter-radius = 1e-300, but a sphere's radius K = R_s/R must lie in "
@@ -102,7 +104,7 @@ forces = ["0.2 N"]
 """
 
 
-@pytest.mark.parametrize("sheet, initial, indenter, message", [
+@pytest.mark.parametrize(("sheet", "initial", "indenter", "message"), [
     ('modulus = "1 MPa"\nalpha = 0.3\nprestretch = 3000', 'pressure = "4 kPa"', "",
      "sheet.prestretch = 3000, but a prestretch of the clamped sheet must be at most"),
     ('material = "gent"\nmu = "0.3 MPa"\njm = 1e-12', 'pressure = "4 kPa"', "", "sheet.jm = 1e-12, but it must lie in"),
@@ -125,7 +127,7 @@ def test_the_volume_limit_is_the_isoperimetric_bound_of_the_stretch_limit():
     """VOLUME_LIMIT = (pi / 6) (1 + J)^(3/2) R^3 with J = STRETCH_LIMIT^2: a closed surface of area A encloses at most
     A^(3/2) / (6 sqrt(pi)), here the sheet (area at most J pi R^2) and the clamp's disc (pi R^2)."""
     area = (1.0 + STRETCH_LIMIT**2) * math.pi
-    assert VOLUME_LIMIT == pytest.approx(area**1.5 / (6.0 * math.sqrt(math.pi)), rel=1e-14)
+    assert pytest.approx(area**1.5 / (6.0 * math.sqrt(math.pi)), rel=1e-14) == VOLUME_LIMIT
     assert check_volume("volume", VOLUME_LIMIT) == VOLUME_LIMIT
     with pytest.raises(InputError, match="encloses at most"):
         check_volume("volume", math.nextafter(VOLUME_LIMIT, math.inf))

@@ -14,7 +14,8 @@ def test_magnitude_bounds_are_inclusive():
     """Exact answer: the bounds of MAGNITUDES pass, the next doubles outside them do not."""
     low, high = MAGNITUDES
     check = functools.partial(check_positive, "pressure")
-    assert check(low) == low and check(high) == high
+    assert check(low) == low
+    assert check(high) == high
     for outside in (math.nextafter(low, 0.0), math.nextafter(high, math.inf), 1e300, 1e-300):
         with pytest.raises(InputError, match="is outside the magnitudes of the model's dimensionless inputs"):
             check(outside)
@@ -24,15 +25,17 @@ def test_magnitude_bounds_are_inclusive():
 def test_ratios_and_forces_are_bounded_above_only(check):
     """A force or an alpha may be as small as a double allows (the unloaded and the neo-Hookean limits);
     above the largest magnitude it is refused."""
-    low, high = MAGNITUDES
-    assert check(1e-300) == 1e-300 and check(high) == high
+    _low, high = MAGNITUDES
+    assert check(1e-300) == 1e-300
+    assert check(high) == high
     with pytest.raises(InputError, match="is outside the magnitudes of the model's dimensionless inputs"):
         check(math.nextafter(high, math.inf))
 
 
 def test_zero_force_and_zero_alpha_are_inputs():
     """A plate that does not push (Fhat = 0) and a neo-Hookean rubber (alpha = 0) are not magnitudes."""
-    assert check_force(0.0) == 0.0 and check_alpha(0.0) == 0.0
+    assert check_force(0.0) == 0.0
+    assert check_alpha(0.0) == 0.0
 
 
 def test_quote_stays_short_and_never_recurses():
@@ -43,8 +46,12 @@ def test_quote_stays_short_and_never_recurses():
         deep = [deep]
     for value in (deep, list(range(1_000_000)), "x" * 10**6, {"a": {"b": {"c": 1}}}, 10**100):
         text = quote(value)
-        assert len(text) <= 80 and "\n" not in text and "..." in text, text
-    assert quote(0.1) == "0.1" and quote("20 mm") == "'20 mm'" and quote(True) == "True"
+        assert len(text) <= 80, text
+        assert "\n" not in text, text
+        assert "..." in text, text
+    assert quote(0.1) == "0.1"
+    assert quote("20 mm") == "'20 mm'"
+    assert quote(True) == "True"
 
 
 def test_check_file(tmp_path):

@@ -66,7 +66,9 @@ def test_the_command_line_answers_a_law_a_solver_lacks_in_one_line_exit_2(toy, c
         status = main(["inflate", "--law", "toy", "--mu", "1", "--k", "0.5", "--pressure", "0.1",
                        "--solver", solver])
         out, err = capsys.readouterr()
-        assert status == 2 and out == "" and err.count("\n") == 1, (status, out, err)
+        assert status == 2, (status, out, err)
+        assert out == "", (status, out, err)
+        assert err.count("\n") == 1, (status, out, err)
         assert f"the {name} solver has no kernel for the toy law" in err
 
 
@@ -96,13 +98,14 @@ def test_a_kernel_code_without_a_formula_is_an_error_not_gent(code):
     params = np.array([1.0, 10.0])
     for call in (lambda: tensions(1.2, 1.1, code, params), lambda: tensions_compiled(1.2, 1.1, code, params),
                  lambda: fem_laws.derivatives(code, params, 1.2, 1.1)):
-        with pytest.raises(ValueError, match="no .* for this law code"):
+        with pytest.raises(ValueError, match=r"no .* for this law code"):
             call()
 
 
 def test_every_registered_law_is_mapped_by_both_solvers(rubber):
     """The shipped laws are each in both tables (a law added to the registry without a kernel fails here)."""
-    assert rubber.law in shooting_laws.KERNELS and rubber.law in fem_material.KERNELS
+    assert rubber.law in shooting_laws.KERNELS
+    assert rubber.law in fem_material.KERNELS
 
 
 def test_the_help_is_built_from_the_registry(toy, capsys):
@@ -113,11 +116,12 @@ def test_the_help_is_built_from_the_registry(toy, capsys):
     for law in LAWS.values():
         if law.name != "mooney-rivlin":
             for q in law.parameters:
-                assert f"--{q.name} {q.name.upper()}" in text and " ".join(q.help.split()) in text, q
+                assert f"--{q.name} {q.name.upper()}" in text, q
+                assert " ".join(q.help.split()) in text, q
     assert "the toy law's stiffening k (toy)" in text
 
 
-@pytest.mark.parametrize("bad, message", [
+@pytest.mark.parametrize(("bad", "message"), [
     (Parameter("k", "dimensionless", " "), "needs a unit"),
     (Parameter("k", "pascal", "a modulus"), "needs a unit"),
     (Parameter("mu", "stress", "again"), "names a parameter twice"),
@@ -138,7 +142,7 @@ def test_a_law_whose_example_fails_its_own_check_is_refused_at_registration():
     """The example is checked by the law's admissible set when the law is registered (ValueError naming it)."""
     law = RubberLaw("toy", TOY.parameters, mu0=TOY.mu0, energy=TOY.energy, admissible=_toy_admissible,
                     example={"mu": 1.0, "k": -1.0})
-    with pytest.raises(ValueError, match="the toy law's example is not a rubber of it: .*k >= 0"):
+    with pytest.raises(ValueError, match=r"the toy law's example is not a rubber of it: .*k >= 0"):
         register(law)
     assert "toy" not in LAWS
 

@@ -48,7 +48,7 @@ def _above(layer_index: int) -> list[str]:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("index, module", [(i, m.strip()) for i, layer in enumerate(LAYERS)
+@pytest.mark.parametrize(("index", "module"), [(i, m.strip()) for i, layer in enumerate(LAYERS)
                                            for m in layer.split("|")])
 def test_each_layer_imports_with_the_higher_ones_unavailable(index, module, tmp_path):
     """Exact answer: every module of the layer imports (the count printed) although importing any module
@@ -101,7 +101,8 @@ def test_the_contracts_cover_the_layers_here():
 def test_one_top_level_name_installed():
     """The distribution installs the single top-level package ``pocket``."""
     top = metadata.distribution(DISTRIBUTION).read_text("top_level.txt")
-    assert top is not None and top.split() == ["pocket"]
+    assert top is not None
+    assert top.split() == ["pocket"]
 
 
 _IMPORT_FROM_THE_ROOT = r"""
@@ -125,11 +126,14 @@ def test_no_second_copy_from_the_repository_root(name):
                           cwd=ROOT)
     assert proc.returncode == 0, proc.stderr
     message, loaded = json.loads(proc.stdout)
-    assert message is not None and message.startswith(f"import pocket.{name}, not {name}:")
-    assert "\n" not in message and loaded == []
+    assert message is not None
+    assert message.startswith(f"import pocket.{name}, not {name}:")
+    assert "\n" not in message
+    assert loaded == []
     proc = subprocess.run([sys.executable, "-c", _IMPORT_FROM_THE_ROOT, f"pocket.{name}"], capture_output=True,
                           text=True, cwd=ROOT)
-    assert proc.returncode == 0 and json.loads(proc.stdout)[0] is None, proc.stderr
+    assert proc.returncode == 0, proc.stderr
+    assert json.loads(proc.stdout)[0] is None, proc.stderr
 
 
 @pytest.mark.slow
@@ -139,7 +143,8 @@ def test_generic_names_are_not_importable_and_do_not_shadow(tmp_path):
     for name in ("fem", "shooting", "analytical", "meshes", "validation"):
         proc = subprocess.run([sys.executable, "-c", f"import {name}"], capture_output=True, text=True,
                               cwd=tmp_path)
-        assert proc.returncode == 1 and f"No module named '{name}'" in proc.stderr
+        assert proc.returncode == 1
+        assert f"No module named '{name}'" in proc.stderr
     proc = subprocess.run([sys.executable, "-c", "import pocket.fem, pocket.shooting, pocket.meshes, "
                            "pocket.validation, pocket.analytical"], capture_output=True, text=True, cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr

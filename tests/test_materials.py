@@ -31,7 +31,8 @@ def test_ogden_with_exponents_two_and_minus_two_is_mooney_rivlin():
     mr = law("mooney-rivlin", c1=c1, c2=c2)
     og = law("ogden", mu=[2 * c1, -2 * c2], exponents=[2.0, -2.0])
     np.testing.assert_allclose(energy(og, *STRETCHES), energy(mr, *STRETCHES), rtol=1e-13)
-    assert og.mu0 == pytest.approx(mr.mu0, rel=1e-15) and mr.modulus == pytest.approx(6 * (c1 + c2), rel=1e-15)
+    assert og.mu0 == pytest.approx(mr.mu0, rel=1e-15)
+    assert mr.modulus == pytest.approx(6 * (c1 + c2), rel=1e-15)
 
 
 def test_gent_tends_to_neo_hookean_at_rate_one_over_jm():
@@ -45,7 +46,8 @@ def test_gent_tends_to_neo_hookean_at_rate_one_over_jm():
     for jm in (1e3, 2e3, 4e3):
         gap = (energy(law("gent", mu=mu, jm=jm), *STRETCHES) - nh) * jm
         gaps.append(np.max(np.abs(gap - limit) / np.maximum(limit, 1e-300)))
-    assert gaps[0] < 0.05 and gaps[1] / gaps[0] == pytest.approx(0.5, rel=0.05)
+    assert gaps[0] < 0.05
+    assert gaps[1] / gaps[0] == pytest.approx(0.5, rel=0.05)
 
 
 def test_small_strain_young_modulus_is_three_mu0(rubber):
@@ -68,10 +70,11 @@ def test_scaled_has_unit_mu0_and_the_same_shape_of_energy():
     same = mooney_rivlin(47 / 160)
     np.testing.assert_allclose(energy(same, *STRETCHES), energy(unit, *STRETCHES), rtol=1e-14)
     og = law("ogden", mu=[630e3, 1.2e3, -10e3], exponents=[1.3, 5.0, -2.0]).scaled()
-    assert og.mu0 == pytest.approx(1.0, rel=1e-14) and og["exponents"] == (1.3, 5.0, -2.0)
+    assert og.mu0 == pytest.approx(1.0, rel=1e-14)
+    assert og["exponents"] == (1.3, 5.0, -2.0)
 
 
-@pytest.mark.parametrize("name, params, message", [
+@pytest.mark.parametrize(("name", "params", "message"), [
     ("rubber", {}, "material = 'rubber', but it must be one of"),
     ("neo-hookean", {}, "sheet.mu is missing"),
     ("neo-hookean", {"mu": 1.0, "c1": 1.0}, "sheet.c1 is not a parameter of the neo-hookean law"),
@@ -88,7 +91,8 @@ def test_scaled_has_unit_mu0_and_the_same_shape_of_energy():
 def test_bad_parameters_are_one_line_errors_naming_the_key(name, params, message):
     with pytest.raises(InputError) as err:
         check(name, params)
-    assert message in str(err.value) and "\n" not in str(err.value), str(err.value)
+    assert message in str(err.value), str(err.value)
+    assert "\n" not in str(err.value), str(err.value)
 
 
 def test_yeoh_stability_boundary():
@@ -117,12 +121,13 @@ def test_gas_law_and_its_liquid_limit():
         ratio = fluid.volume_ratio(p, p_i)
         assert (p + 1.0) * ratio**gamma == pytest.approx(p_i + 1.0, rel=1e-15)
         gaps = [1 - gas(a, gamma).volume_ratio(p, p_i) for a in (1e3, 1e4)]
-        assert gaps[0] * 1e3 * gamma == pytest.approx(p - p_i, rel=2e-3) and gaps[1] / gaps[0] == pytest.approx(
+        assert gaps[0] * 1e3 * gamma == pytest.approx(p - p_i, rel=2e-3)
+        assert gaps[1] / gaps[0] == pytest.approx(
             0.1, rel=2e-3)
     assert LIQUID.volume_ratio(p, p_i) == 1.0
 
 
-@pytest.mark.parametrize("ambient, gamma, message", [
+@pytest.mark.parametrize(("ambient", "gamma", "message"), [
     (0.0, 1.0, "fluid.ambient = 0.0, but the ambient (absolute) pressure must be > 0"),
     (1.0, 0.9, "fluid.gamma = 0.9, but it must lie in [1, 5/3]"),
     (1.0, 1.7, "fluid.gamma = 1.7"),
@@ -141,7 +146,8 @@ def test_as_material_takes_an_alpha_or_a_checked_material():
     the same object after its check; a Material built around the check, or a bad alpha, is a one-line InputError."""
     from pocket.core.materials import as_material
 
-    assert as_material(0.3) == mooney_rivlin(0.3) and as_material(0.3).exact_alpha == 0.3
+    assert as_material(0.3) == mooney_rivlin(0.3)
+    assert as_material(0.3).exact_alpha == 0.3
     gent = law("gent", mu=0.3e6, jm=10.0)
     assert as_material(gent) is gent
     for bad, message in ((Material("gent", (("mu", 1.0), ("jm", -2.0))), "sheet.jm = -2.0"),
@@ -157,7 +163,9 @@ def test_as_fluid_takes_none_liquid_or_a_checked_gas():
     anything else, or a gas built around the check, is a one-line InputError."""
     from pocket.core.fluids import LIQUID, Fluid, as_fluid, gas
 
-    assert as_fluid(None) is LIQUID and as_fluid("liquid") is LIQUID and as_fluid(LIQUID) is LIQUID
+    assert as_fluid(None) is LIQUID
+    assert as_fluid("liquid") is LIQUID
+    assert as_fluid(LIQUID) is LIQUID
     air = gas(0.5, 1.4)
     assert as_fluid(air) is air
     for bad, message in (("air", "fluid = 'air'"), (Fluid("gas", -1.0, 1.0), "fluid.ambient = -1.0"),
@@ -173,7 +181,8 @@ def test_material_takes_a_mapping_of_the_laws_parameter_names():
     InputError listing the law's names."""
     yeoh = Material("yeoh", {"c30": 0.001, "c10": 1, "c20": -0.02})
     assert yeoh == Material("yeoh", (("c10", 1.0), ("c20", -0.02), ("c30", 0.001)))
-    assert yeoh.mu0 == 2.0 and energy(yeoh, 1.2, 1.1) == energy(check("yeoh", dict(yeoh.params)), 1.2, 1.1)
+    assert yeoh.mu0 == 2.0
+    assert energy(yeoh, 1.2, 1.1) == energy(check("yeoh", dict(yeoh.params)), 1.2, 1.1)
     ogden = Material("ogden", {"mu": [1.0, -0.1], "exponents": [2, -2]})
     assert ogden.params == (("mu", (1.0, -0.1)), ("exponents", (2.0, -2.0)))
     with pytest.raises(InputError, match=r"^material\.c40 is not a parameter of the yeoh law \(its parameters: "
@@ -181,7 +190,7 @@ def test_material_takes_a_mapping_of_the_laws_parameter_names():
         Material("yeoh", {"c10": 1, "c20": 0, "c40": 1})
 
 
-@pytest.mark.parametrize("alpha, message", [(-1.0, "alpha = -1.0, but the Mooney-Rivlin model needs alpha > -1"),
+@pytest.mark.parametrize(("alpha", "message"), [(-1.0, "alpha = -1.0, but the Mooney-Rivlin model needs alpha > -1"),
                                             (math.nan, "alpha = nan"), ("soft", "alpha = 'soft' is not a number")])
 def test_mooney_rivlin_refuses_a_bad_alpha_in_one_line(alpha, message):
     """Exact answer: ``mooney_rivlin`` is where every alpha becomes a rubber, so it checks it (alpha = -1 would
@@ -206,5 +215,7 @@ def test_rubbers_given_by_two_alphas_are_two_rubbers():
     """Exact answer: the solvers take a Mooney-Rivlin rubber by the alpha it was given by, so two alphas whose C1,
     C2 round to the same numbers are still two rubbers: unequal, and two keys of a dict."""
     a, b = _alphas_of_one_c1_c2()
-    assert mooney_rivlin(a) != mooney_rivlin(b) and len({mooney_rivlin(a), mooney_rivlin(b)}) == 2
-    assert mooney_rivlin(a) == mooney_rivlin(a) and hash(mooney_rivlin(a)) == hash(mooney_rivlin(a))
+    assert mooney_rivlin(a) != mooney_rivlin(b)
+    assert len({mooney_rivlin(a), mooney_rivlin(b)}) == 2
+    assert mooney_rivlin(a) == mooney_rivlin(a)
+    assert hash(mooney_rivlin(a)) == hash(mooney_rivlin(a))

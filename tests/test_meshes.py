@@ -20,8 +20,10 @@ ratios = st.floats(min_value=1.0, max_value=1e3)
 
 def assert_valid(x):
     """The contract of every mesh: float, strictly increasing, ends exactly 0 and 1."""
-    assert x.dtype == float and x.ndim == 1
-    assert x[0] == 0.0 and x[-1] == 1.0
+    assert x.dtype == float
+    assert x.ndim == 1
+    assert x[0] == 0.0
+    assert x[-1] == 1.0
     assert np.all(np.diff(x) > 0.0), x
 
 
@@ -123,7 +125,8 @@ def test_bad_arguments(call, quoted):
     """Each bad argument: InputError, one line, quoting the value."""
     with pytest.raises(InputError) as info:
         call()
-    assert quoted in str(info.value) and "\n" not in str(info.value)
+    assert quoted in str(info.value)
+    assert "\n" not in str(info.value)
 
 
 FORMATS = [".vtu", ".msh", ".xdmf", ".vtk"]
@@ -166,7 +169,7 @@ def _line_mesh(x, y=None, lines=None, extra=()):
         points[:, 1] = y
     if lines is None:
         lines = np.column_stack((np.arange(len(x) - 1), np.arange(1, len(x))))
-    return meshio.Mesh(points, [("line", np.asarray(lines))] + list(extra))
+    return meshio.Mesh(points, [("line", np.asarray(lines)), *list(extra)])
 
 
 BAD = {
@@ -193,7 +196,9 @@ def test_read_rejects(tmp_path, kind):
     with pytest.raises(InputError) as info:
         meshes.read(path)
     message = str(info.value)
-    assert str(path) in message and problem in message and "\n" not in message, message
+    assert str(path) in message, message
+    assert problem in message, message
+    assert "\n" not in message, message
 
 
 @pytest.mark.parametrize(
@@ -207,7 +212,8 @@ def test_read_unreadable(tmp_path, name, content):
         path.write_text(content)
     with pytest.raises(InputError) as info:
         meshes.read(path)
-    assert str(path) in str(info.value) and "\n" not in str(info.value)
+    assert str(path) in str(info.value)
+    assert "\n" not in str(info.value)
 
 
 def test_write_rejects(tmp_path):

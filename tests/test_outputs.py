@@ -45,12 +45,14 @@ def _tree(root: pathlib.Path) -> dict:
 
 def _one_line(capsys) -> str:
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert "Traceback" not in err, err
     return err
 
 
 @pytest.mark.parametrize(
-    "argv, message",
+    ("argv", "message"),
     [
         (["run", "--sample", "1", "--out", "FILE"], "--out FILE: is a file, not a folder"),
         ([*SWEEP, "--out", "FILE/x.csv"], "--out FILE/x.csv: "),
@@ -75,7 +77,8 @@ def test_bad_output_path_before_any_work(argv, message, tmp_path, monkeypatch, c
     before = _tree(tmp_path)
     assert main(argv) == 2
     err = _one_line(capsys)
-    assert message in err and ("is a file, not a folder" in err or "FILE" not in message), err
+    assert message in err, err
+    assert "is a file, not a folder" in err or "FILE" not in message, err
     assert _tree(tmp_path) == before
 
 
@@ -85,7 +88,8 @@ def test_a_link_to_a_file_is_followed(tmp_path):
     (tmp_path / "link.csv").symlink_to(tmp_path / "real.csv")
     target = check_output_file(tmp_path / "link.csv")
     write_whole(target, "new\n")
-    assert (tmp_path / "link.csv").is_symlink() and (tmp_path / "real.csv").read_text() == "new\n"
+    assert (tmp_path / "link.csv").is_symlink()
+    assert (tmp_path / "real.csv").read_text() == "new\n"
 
 
 @contextlib.contextmanager
@@ -115,7 +119,7 @@ def read_only(folder: pathlib.Path):
 
 
 @pytest.mark.parametrize(
-    "argv, message",
+    ("argv", "message"),
     [
         (["run", "--sample", "1", "--out", "ro/new"], "--out ro/new: the folder"),
         (["run", "--sample", "1", "--out", "ro"], "--out ro: the folder is not writable"),
@@ -130,7 +134,8 @@ def test_read_only_folder_before_any_work(argv, message, tmp_path, monkeypatch, 
     with read_only(tmp_path / "ro"):
         assert main(argv) == 2
     err = _one_line(capsys)
-    assert message in err and "not writable" in err, err
+    assert message in err, err
+    assert "not writable" in err, err
     assert list((tmp_path / "ro").iterdir()) == []
 
 
@@ -215,8 +220,10 @@ def test_file_size_limit_in_a_real_process(tmp_path):
 
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "run", "--sample", "1", "--out", str(tmp_path / "r")],
                           capture_output=True, text=True, preexec_fn=small_files)
-    assert proc.returncode == 1 and proc.stderr.count("\n") == 1, proc.stderr
-    assert "File too large" in proc.stderr and "Traceback" not in proc.stderr
+    assert proc.returncode == 1, proc.stderr
+    assert proc.stderr.count("\n") == 1, proc.stderr
+    assert "File too large" in proc.stderr
+    assert "Traceback" not in proc.stderr
     assert list(tmp_path.iterdir()) == []
 
 
@@ -225,7 +232,7 @@ def test_write_files_is_all_or_nothing(tmp_path, monkeypatch):
     content, no sibling and no folder made for them remains; the error names the second."""
     (tmp_path / "a.txt").write_text("old a\n")
     _full_disk(monkeypatch, 1)
-    with pytest.raises(OutputError, match="cannot write .*b.txt: No space left on device"):
+    with pytest.raises(OutputError, match=r"cannot write .*b\.txt: No space left on device"):
         write_files({tmp_path / "a.txt": "new a\n", tmp_path / "sub" / "b.txt": "new b\n"})
     assert _tree(tmp_path) == {"a.txt": b"old a\n"}
 
@@ -233,9 +240,14 @@ def test_write_files_is_all_or_nothing(tmp_path, monkeypatch):
 def test_staged_folder_failure_leaves_nothing(tmp_path):
     """An error while a staged folder is filled removes it and the folders made for it."""
     target = tmp_path / "new" / "report"
-    with pytest.raises(RuntimeError), staged(target, "validation report") as partial:
-        (partial / "index.html").write_text("half")
-        raise RuntimeError("stop")
+
+    def fill_then_fail():
+        with staged(target, "validation report") as partial:
+            (partial / "index.html").write_text("half")
+            raise RuntimeError("stop")
+
+    with pytest.raises(RuntimeError, match="stop"):
+        fill_then_fail()
     assert list(tmp_path.iterdir()) == []
 
 

@@ -35,7 +35,7 @@ def test_a_mooney_rivlin_case_keeps_its_alpha_and_takes_the_prestretch(tmp_path)
     assert pocket.material == dataclasses.replace(mooney_rivlin(47e3 / 160e3), prestretch=1.2)
 
 
-@pytest.mark.parametrize("value, message", [
+@pytest.mark.parametrize(("value", "message"), [
     ("0.9", "sheet.prestretch = 0.9, but a prestretch of the clamped sheet must be >= 1"),
     ("nan", "sheet.prestretch = nan is not finite"),
     ('"1.1"', "sheet.prestretch = '1.1' is not a number"),
@@ -46,7 +46,10 @@ def test_a_bad_case_prestretch_is_one_line(value, message, tmp_path, capsys):
     path.write_text(case_text("yeoh").replace('[clamp]', f'prestretch = {value}\n[clamp]'))
     assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and message in err and "Traceback" not in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
+    assert "Traceback" not in err, err
     assert not (tmp_path / "out").exists()
 
 
@@ -58,7 +61,7 @@ def _exit(argv) -> int:
         return stop.code
 
 
-@pytest.mark.parametrize("value, message", [
+@pytest.mark.parametrize(("value", "message"), [
     ("0.5", "--prestretch = 0.5, but a prestretch of the clamped sheet must be >= 1"),
     ("nan", "--prestretch = nan is not finite"),
     ("abc", "argument --prestretch: 'abc' is not a number"),
@@ -66,7 +69,9 @@ def _exit(argv) -> int:
 def test_a_bad_flag_is_one_line(value, message, capsys):
     assert _exit(["inflate", "--law", "neo-hookean", "--mu", "1", "--prestretch", value, "--pressure", "0.3"]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and message in err, err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert message in err, err
 
 
 def test_gent_past_locking_on_the_command_line(capsys):
@@ -79,7 +84,8 @@ def test_the_flag_reaches_the_solver_and_the_json(capsys):
     assert main(["inflate", "--alpha", "0.1", "--prestretch", "1.1", "--pressure", "0.3", "--json"]) == 0
     state = json.loads(capsys.readouterr().out)
     expected = shooting.inflate(dataclasses.replace(mooney_rivlin(0.1), prestretch=1.1), 0.3)
-    assert state["prestretch"] == 1.1 and state["height"] == expected.height
+    assert state["prestretch"] == 1.1
+    assert state["height"] == expected.height
     assert main(["inflate", "--alpha", "0.1", "--pressure", "0.3", "--json"]) == 0
     assert "prestretch" not in json.loads(capsys.readouterr().out)  # none given: today's keys
 

@@ -9,6 +9,7 @@ all the same, as the finite elements refuse it: one line naming the end, exit 2,
 
 from __future__ import annotations
 
+import itertools
 import re
 import warnings
 
@@ -69,14 +70,17 @@ def test_a_force_past_a_short_profiles_end_is_one_line_exit_2(tmp_path, capsys, 
                                         "--indenter", "profile", "--indenter-file", str(path),
                                         "--solver", solver, "--force", repr(end * factor)])
     assert status == 2, err
-    assert err.count("\n") == 1 and err.startswith("pocket: error: force = "), err
+    assert err.count("\n") == 1, err
+    assert err.startswith("pocket: error: force = "), err
     assert not caught, [str(w.message) for w in caught]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv"]
     if solver == "shooting":
-        assert f"ends at force = {end:.10g}" in err and PROFILE_END in err, err
+        assert f"ends at force = {end:.10g}" in err, err
+        assert PROFILE_END in err, err
     else:
         quoted = re.search(r"ends near force = ([0-9.eE+-]+): .*rho_c/R = ([0-9.eE+-]+) of", err)
-        assert FE_END in err and float(quoted.group(1)) <= end * (1.0 + 1e-6), err
+        assert FE_END in err, err
+        assert float(quoted.group(1)) <= end * (1.0 + 1e-6), err
         assert float(quoted.group(2)) >= (1.0 - 1e-3) * table[-1, 0], err
 
 
@@ -125,7 +129,7 @@ def test_the_contact_area_on_a_table_of_many_rows_warns_nothing(solver):
     bounds = np.append(rho[rho < edge], edge)
     nodes, weights = np.polynomial.legendre.leggauss(20)
     area = 0.0
-    for lo, hi in zip(bounds[:-1], bounds[1:], strict=True):
+    for lo, hi in itertools.pairwise(bounds):
         r = 0.5 * (hi - lo) * nodes + 0.5 * (hi + lo)
         area += 0.5 * (hi - lo) * float(np.sum(weights * r * np.sqrt(1.0 + shape.slope(r) ** 2)))
     assert state.contact_area == pytest.approx(2.0 * area, rel=1e-12)

@@ -34,7 +34,9 @@ def test_a_sphere_given_as_a_table_reproduces_the_sphere_at_the_splines_orders()
     spacing = np.array([np.max(np.diff(_sphere_table(n)[0] ** 2)) for n in rows])
     orders = [np.polyfit(np.log(spacing), np.log(errors[:, k]), 1)[0] for k in range(3)]
     # the asymptotic orders are 4, 3, 2; the not-a-knot ends reach them from below as h shrinks
-    assert orders[0] > 3.5 and orders[1] > 2.5 and orders[2] > 1.5, f"observed orders {orders!r}"
+    assert orders[0] > 3.5, f"observed orders {orders!r}"
+    assert orders[1] > 2.5, f"observed orders {orders!r}"
+    assert orders[2] > 1.5, f"observed orders {orders!r}"
 
 
 def test_a_sphere_given_as_a_table_lies_within_the_stated_error():
@@ -96,13 +98,14 @@ CSV_REFUSALS = [
 ]
 
 
-@pytest.mark.parametrize("text, match", CSV_REFUSALS)
+@pytest.mark.parametrize(("text", "match"), CSV_REFUSALS)
 def test_a_bad_profile_file_is_one_line_naming_the_file(tmp_path, text, match):
     path = tmp_path / "tip.csv"
     path.write_text(text)
     with pytest.raises(InputError, match=match) as caught:
         profiles.read_csv(path, clamp_radius=0.020)
-    assert str(caught.value).startswith(str(path)) and "\n" not in str(caught.value)
+    assert str(caught.value).startswith(str(path))
+    assert "\n" not in str(caught.value)
 
 
 def test_a_profile_in_physical_units_needs_the_clamp_radius(tmp_path):

@@ -36,7 +36,7 @@ def _expected(key, given, force_N, unit_per_N=1.0, unit="N"):
 
 
 @pytest.mark.parametrize("solver", ["shooting", "fem"])
-@pytest.mark.parametrize("given, force_N, unit_per_N, unit", [("61 N", 61.0, 1.0, "N"),
+@pytest.mark.parametrize(("given", "force_N", "unit_per_N", "unit"), [("61 N", 61.0, 1.0, "N"),
                                                                 ("61000 mN", 61.0, 1e3, "mN")])
 def test_a_case_force_past_the_end(tmp_path, capsys, solver, given, force_N, unit_per_N, unit):
     """``pocket run`` on a case whose only load is past the end: the load's key, its value as written, and

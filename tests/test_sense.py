@@ -47,7 +47,7 @@ def test_sensitivity(pocket):
     assert reading.sensitivity_N_per_Pa == pytest.approx(expected, rel=1e-5)
 
 
-@pytest.mark.parametrize("ratio, message", [(0.9, "below its value with no force"),
+@pytest.mark.parametrize(("ratio", "message"), [(0.9, "below its value with no force"),
                                             (50.0, "beyond the model's range")])
 def test_out_of_range(pocket, ratio, message):
     """Below P_I (a pulling plate) and past the model's range: errors, never extrapolation."""
@@ -74,7 +74,7 @@ def test_table(pocket, tmp_path, capsys):
 
 
 @pytest.mark.parametrize(
-    "args, message",
+    ("args", "message"),
     [
         (["--ratio", "0.5"], "pressure ratio = 0.5 is below its value with no force (P_I = 4812.75 Pa, ratio 1)"),
         (["--pressure", "2 kPa"], "pressure = '2 kPa' is below its value with no force (P_I = 4.81275 kPa, ratio 1)"),
@@ -92,7 +92,8 @@ def test_cli_errors(args, message, capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert main(["sense", "--sample", "2", *args]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert list(tmp_path.iterdir()) == []
 
 

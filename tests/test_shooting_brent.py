@@ -19,7 +19,7 @@ HARD = {
 
 
 @pytest.mark.parametrize("name", HARD)
-@pytest.mark.parametrize("xtol, rtol", [(2e-12, 8.9e-16), (1e-300, 1e-13)])
+@pytest.mark.parametrize(("xtol", "rtol"), [(2e-12, 8.9e-16), (1e-300, 1e-13)])
 def test_same_root_and_evaluations_as_scipy_brentq(name, xtol, rtol):
     """Exact answer: scipy's brentq, the same algorithm: the same root, bit for bit, with the same
     number of evaluations (the port keeps its arithmetic)."""
@@ -32,7 +32,8 @@ def test_same_root_and_evaluations_as_scipy_brentq(name, xtol, rtol):
 
     ours = brent.root(counted, a, b, xtol=xtol, rtol=rtol, maxiter=1000)
     theirs, info = brentq(f, a, b, xtol=xtol, rtol=rtol, maxiter=1000, full_output=True)
-    assert ours == theirs and count[0] == info.function_calls, (name, ours, theirs, count[0], info.function_calls)
+    assert ours == theirs, (name, ours, theirs, count[0], info.function_calls)
+    assert count[0] == info.function_calls, (name, ours, theirs, count[0], info.function_calls)
 
 
 def test_known_values_spare_evaluations():
@@ -45,7 +46,8 @@ def test_known_values_spare_evaluations():
         return f(x)
 
     root = brent.root(counted, 2.0, 3.0, fa=f(2.0), fb=f(3.0), xtol=2e-12, rtol=8.9e-16)
-    assert root == brentq(f, 2.0, 3.0) and count[0] == brentq(f, 2.0, 3.0, full_output=True)[1].function_calls - 2
+    assert root == brentq(f, 2.0, 3.0)
+    assert count[0] == brentq(f, 2.0, 3.0, full_output=True)[1].function_calls - 2
 
 
 def test_no_sign_change_is_an_error():
@@ -53,7 +55,7 @@ def test_no_sign_change_is_an_error():
         brent.root(lambda x: x * x + 1, -1.0, 1.0)
 
 
-@pytest.mark.parametrize("f, a, b", [
+@pytest.mark.parametrize(("f", "a", "b"), [
     (lambda x: -(x - 0.3) ** 2, 0.0, 1.0),          # smooth
     (lambda x: -abs(x - 0.7123), 0.0, 1.0),          # a kink at the top
     (lambda x: math.sin(x), 0.0, 3.0),               # the top at pi/2
@@ -65,5 +67,6 @@ def test_maximum_agrees_with_scipy_bounded_minimisation(f, a, b):
     x, value = brent.maximum(f, a, b, xtol=1e-9)
     ref = minimize_scalar(lambda t: -f(t) if np.isfinite(f(t)) else 1e300, bounds=(a, b), method="bounded",
                           options=dict(xatol=1e-10))
-    assert x == pytest.approx(ref.x, abs=2e-8) and value == pytest.approx(f(x))
+    assert x == pytest.approx(ref.x, abs=2e-8)
+    assert value == pytest.approx(f(x))
     assert value >= -ref.fun - 1e-12

@@ -59,7 +59,8 @@ def test_zero_force_recovers_the_inflated_state():
     assert order == pytest.approx(1.0, abs=0.1), (order, gaps)
     assert gaps[-1] < 1e-4
     exact_zero = shooting.compress(SAMPLE, 0.31, 0.0)
-    assert exact_zero.height == exact_zero.inflated.height and exact_zero.contact_area == 0
+    assert exact_zero.height == exact_zero.inflated.height
+    assert exact_zero.contact_area == 0
 
 
 def test_force_is_the_energy_derivative():

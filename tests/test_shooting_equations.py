@@ -92,7 +92,7 @@ def test_eq9_holds_only_with_the_corrected_pressure_term():
     assert sp.simplify(ours - eq9(phat * (1 + AL) / 2)) != 0
 
 
-@pytest.mark.parametrize("alpha, phat, l0", [(47 / 160, 0.31, 1.16), (0.0, 0.05, 1.035)])
+@pytest.mark.parametrize(("alpha", "phat", "l0"), [(47 / 160, 0.31, 1.16), (0.0, 0.05, 1.035)])
 def test_pole_series_is_on_the_regular_solution(alpha, phat, l0):
     """Exact answer: the shot is independent of where the series starts.
 

@@ -21,7 +21,7 @@ def gas_law_gap(state):
 
 @pytest.mark.parametrize("rubber", [SAMPLE, check("ogden", {"mu": [630e3, 1.2e3, -10e3], "exponents": [1.3, 5.0,
                                                                                                         -2.0]})])
-@pytest.mark.parametrize("ambient, gamma", [(1.0, 1.0), (0.3, 1.4), (10.0, 1.0)])
+@pytest.mark.parametrize(("ambient", "gamma"), [(1.0, 1.0), (0.3, 1.4), (10.0, 1.0)])
 def test_gas_law_holds_along_a_curve(rubber, ambient, gamma):
     """Exact answer: (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma at every state (the residual solved,
     to 1e-12; 1e-10 asked), with F = P A_c and lambda_2(1) = 1 as for a liquid."""
@@ -31,7 +31,8 @@ def test_gas_law_holds_along_a_curve(rubber, ambient, gamma):
         assert abs(gas_law_gap(s)) < 1e-10, gas_law_gap(s)
         assert s.pressure_ratio * s.contact_area == pytest.approx(s.force, rel=1e-12)
         assert s.profile.stretch_2[-1] == pytest.approx(1.0, abs=1e-9)
-        assert s.fluid is fluid and s.volume < s.inflated.volume  # compressed gas
+        assert s.fluid is fluid
+        assert s.volume < s.inflated.volume
     inflated = shooting.inflate(rubber, 0.31)  # the gas is sealed at P_I: the same inflation
     assert [getattr(states[0].inflated, k) for k in inflated.KEYS] == [getattr(inflated, k) for k in inflated.KEYS]
 
@@ -84,5 +85,6 @@ def test_liquid_by_name_or_default_is_the_liquid():
     """Exact answer: None and "liquid" are LIQUID, and give the states of today's solver bit for bit."""
     default = shooting.compress(SAMPLE, 0.31, 0.5)
     named = shooting.compress(SAMPLE, 0.31, 0.5, fluid="liquid")
-    assert default.fluid is LIQUID and named.fluid is LIQUID
+    assert default.fluid is LIQUID
+    assert named.fluid is LIQUID
     assert [getattr(default, k) for k in default.KEYS] == [getattr(named, k) for k in named.KEYS]

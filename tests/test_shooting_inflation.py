@@ -55,7 +55,7 @@ def test_small_pressure_limit_is_hencky():
         smallstrain.height_constant(), rel=1e-12)
 
 
-@pytest.mark.parametrize("alpha, phat", [(SAMPLE, 0.05), (SAMPLE, 0.31), (0.0, 0.31), (1.0, 1.0)])
+@pytest.mark.parametrize(("alpha", "phat"), [(SAMPLE, 0.05), (SAMPLE, 0.31), (0.0, 0.31), (1.0, 1.0)])
 def test_pressure_and_volume_control_agree(alpha, phat):
     """Exact answer: the state reached by volume control at V(Phat) is the same state."""
     a = shooting.inflate(alpha, phat)
@@ -65,7 +65,7 @@ def test_pressure_and_volume_control_agree(alpha, phat):
         assert getattr(b, key) == pytest.approx(getattr(a, key), rel=1e-9), key
 
 
-@pytest.mark.parametrize("alpha, phat", [(SAMPLE, 0.31), (0.0, 0.05)])
+@pytest.mark.parametrize(("alpha", "phat"), [(SAMPLE, 0.31), (0.0, 0.05)])
 def test_tolerance_refinement(alpha, phat):
     """Exact answer: rtol 1e-10 -> 1e-12 changes no reported scalar by more than 1e-8 relative."""
     a = shooting.inflate(alpha, phat, rtol=1e-10).scalars()
@@ -78,9 +78,11 @@ def test_clamp_and_profile():
     """Exact answer: lambda_2(1) = 1, eta(1) = 0, the pole equibiaxial, tensions from eq (6)."""
     s = shooting.inflate(SAMPLE, 0.31)
     prof = s.profile
-    assert prof.r[0] == 0 and prof.r[-1] == 1.0
+    assert prof.r[0] == 0
+    assert prof.r[-1] == 1.0
     assert prof.stretch_2[-1] == pytest.approx(1.0, abs=1e-9)
-    assert prof.eta[-1] == 0 and prof.eta[0] == pytest.approx(s.height, rel=1e-9)  # finer-stepped shot
+    assert prof.eta[-1] == 0
+    assert prof.eta[0] == pytest.approx(s.height, rel=1e-9)
     assert prof.stretch_1[0] == prof.stretch_2[0] == s.stretch_pole
     assert prof.r.size >= 200  # plotted and written to VTK
     # Equibiaxial Mooney-Rivlin at the pole, eq (6): T / (E T) = (1 - l^-6)(1 + alpha l^2) / (3 (1 + alpha)).
@@ -118,10 +120,11 @@ def test_pressure_maximum_reported_and_passed_by_volume_control():
         shooting.inflate(0.0, 1.0)
     below = shooting.inflate(0.0, 0.6)
     beyond = shooting.inflate_volume(0.0, 4 * below.volume)
-    assert beyond.pressure < 0.6 and beyond.stretch_pole > 2.5
+    assert beyond.pressure < 0.6
+    assert beyond.stretch_pole > 2.5
 
 
-@pytest.mark.parametrize("alpha, phat", [(-1.0, 0.3), (-2.0, 0.3), (0.3, 0.0), (0.3, -1.0), (np.nan, 0.3)])
+@pytest.mark.parametrize(("alpha", "phat"), [(-1.0, 0.3), (-2.0, 0.3), (0.3, 0.0), (0.3, -1.0), (np.nan, 0.3)])
 def test_bad_input(alpha, phat):
     with pytest.raises(InputError):
         shooting.inflate(alpha, phat)
@@ -135,7 +138,7 @@ def test_volume_formula_matches_disc_integration():
     assert quad(spline, 0, 1, limit=400)[0] == pytest.approx(s.volume, rel=1e-7)
 
 
-@pytest.mark.parametrize("alpha, pressure", [(-0.9, 0.1), (-0.9, 2.0), (-0.5, 2.0), (-0.2, 0.5)])
+@pytest.mark.parametrize(("alpha", "pressure"), [(-0.9, 0.1), (-0.9, 2.0), (-0.5, 2.0), (-0.2, 0.5)])
 def test_negative_alpha_above_its_maximum_names_it(alpha, pressure):
     """Exact answer: for alpha < 0 Phat(V) has a first-branch maximum; above it an OutOfRangeError
     quotes it (and the pole stretch there). Checked independently: a pressure 1e-5 below it inflates,
@@ -152,7 +155,8 @@ def test_negative_alpha_above_its_maximum_names_it(alpha, pressure):
     assert at_peak.stretch_pole == pytest.approx(stretch, rel=1e-2)  # ~sqrt(1e-5) from the top
     swept = [shooting.inflate_volume(alpha, at_peak.volume * k).pressure for k in np.linspace(0.999, 1.0005, 7)]
     # quoted to 6 digits: 1e-6 relative
-    assert max(swept) <= peak * (1 + 1e-6) and max(swept) >= peak * (1 - 1e-4), (max(swept), peak)
+    assert max(swept) <= peak * (1 + 1e-6), (max(swept), peak)
+    assert max(swept) >= peak * (1 - 1e-4), (max(swept), peak)
 
 
 @pytest.mark.parametrize("material", [0.3, Material("yeoh", {"c10": 0.5, "c20": 0.02, "c30": 0.001}),

@@ -26,7 +26,7 @@ def _quoted_end(err) -> str:
     return re.search(r"ends at force = (\S+) ", str(err)).group(1)
 
 
-@pytest.mark.parametrize("alpha, pressure", POCKETS)
+@pytest.mark.parametrize(("alpha", "pressure"), POCKETS)
 def test_at_the_end_the_plate_carries_the_whole_pressure(alpha, pressure):
     """Exact answer: vertical equilibrium of the sheet. The pressure pushes up P pi R^2 (whatever
     the shape spanning the clamp circle); the plate takes F, the clamp 2 pi R T_1 sin(psi(1)),
@@ -71,7 +71,8 @@ def test_the_command_line_says_out_of_range_with_status_2(capsys):
     for force in ("10", "1e6"):
         assert main(["compress", "--alpha", "0.29375", "--pressure", "0.31", "--force", force]) == 2
         err = capsys.readouterr().err
-        assert err.count("\n") == 1 and f"{shooting.range_end(0.29375, 0.31):.10g}" in err
+        assert err.count("\n") == 1
+        assert f"{shooting.range_end(0.29375, 0.31):.10g}" in err
 
 
 def test_tolerance_of_the_end():
@@ -100,14 +101,17 @@ def test_a_fold_ends_the_range_of_a_softening_rubber():
     end = shooting.range_end(alpha, pressure)
     problem = PlateProblem(shooting.inflate(alpha, pressure), 1e-10, law_of(alpha))
     info = ends.end_of(problem)
-    assert info.fold and info.angle < math.pi and info.force == end
+    assert info.fold
+    assert info.angle < math.pi
+    assert info.force == end
     for dtheta in (-1e-3, 1e-3):
         sol = plateend._at_angle(problem, info.angle + dtheta, list(info.path))
         assert sol.x[2] < end
     states = shooting.compression_curve(alpha, pressure, [0.5 * end, 0.999 * end, end])
     angles = [problem.clamp_angle([s.pressure_ratio, (s.stretch_contact - 1) / problem.strain], s.force)
               for s in states]
-    assert angles == sorted(angles) and angles[-1] <= info.angle + 1e-6  # the rising side
+    assert angles == sorted(angles)
+    assert angles[-1] <= info.angle + 1e-6
     with pytest.raises(OutOfRangeError, match="has a maximum"):
         shooting.compress(alpha, pressure, end * (1 + 1e-9))
 

@@ -86,7 +86,8 @@ def test_force_past_a_shallow_domes_end_is_refused_in_one_line(capsys, solver):
                "sphere", "--indenter-radius", repr(radius), "--force", repr(1.01 * end), "--solver", solver]
     assert main(command) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "is beyond the model's range, which ends at" in err, err
+    assert err.count("\n") == 1, err
+    assert "is beyond the model's range, which ends at" in err, err
     if solver == "shooting":
         assert f"force = {end:.10g}" in err, err
 
@@ -103,7 +104,7 @@ def _fem_end(material, pressure, radius, fluid, near) -> float:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("law, fluid, pressure, radius", [
+@pytest.mark.parametrize(("law", "fluid", "pressure", "radius"), [
     ("ogden", gas(1.0, 1.4), 0.00011495367582735362, 1.819833162634235),
     ("mooney-rivlin", None, 0.000903602415868002, 2.5384621337775046),
     ("gent", gas(1.0, 1.4), 0.0003788512717319674, 2.868329222405751),
@@ -141,6 +142,7 @@ def test_shallow_domes_under_large_spheres_solve_inside_the_range_and_refuse_pas
     for solver in (shooting, fem):
         with pytest.raises(OutOfRangeError) as refusal:
             solver.compress(material, pressure, (1.0 + past) * end, **kwargs)
-        assert exit_status(refusal.value) == 2 and "\n" not in str(refusal.value)
+        assert exit_status(refusal.value) == 2
+        assert "\n" not in str(refusal.value)
         if solver is shooting:
             assert f"force = {end:.10g}" in str(refusal.value)

@@ -60,6 +60,7 @@ def test_tolerance_refinement_at_one_in_a_million():
                              lambda s: s.pressure_ratio - 1, lambda s: s.contact_radius))
 
     coarse, fine = gaps(runs[1e-8], runs[1e-12]), gaps(runs[1e-10], runs[1e-12])
-    assert fine < 1e-8 and fine <= coarse, (coarse, fine)
+    assert fine < 1e-8, (coarse, fine)
+    assert fine <= coarse, (coarse, fine)
     inflated = [shooting.inflate(0.3, 1e-6, rtol=rtol) for rtol in (1e-10, 1e-12)]
     assert np.isclose(inflated[0].stretch_pole - 1, inflated[1].stretch_pole - 1, rtol=1e-8, atol=0)

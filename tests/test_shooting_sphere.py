@@ -79,7 +79,8 @@ def test_large_sphere_recovers_the_plate_at_first_order():
         print(f"{key}: |sphere - plate| ~ (R/R_s)^rate, rates for R_s/R = 4-8, 8-16, 16-32: "
               + ", ".join(f"{r:.4f}" for r in rates))
         # first order: the rate tends to 1, its O(R/R_s) departure halving with each doubling of R_s
-        assert np.all(np.diff(np.abs(rates - 1.0)) < 0.0) and rates[-1] == pytest.approx(1.0, abs=0.05)
+        assert np.all(np.diff(np.abs(rates - 1.0)) < 0.0)
+        assert rates[-1] == pytest.approx(1.0, abs=0.05)
 
 
 @pytest.mark.parametrize("law", list(LAWS))
@@ -99,7 +100,8 @@ def test_force_two_ways_and_virtual_work(law):
         # differences over +-delta err by O(delta^2) = 1e-6 relative, hence 1e-5
         work = -(_energy(above) - _energy(below)) / (above.height - below.height)
         assert work / (math.pi * PHAT) == pytest.approx(force, rel=1e-5)
-        assert state.contact_pressure_edge > state.pressure and state.contact_pressure_pole > state.pressure
+        assert state.contact_pressure_edge > state.pressure
+        assert state.contact_pressure_pole > state.pressure
 
 
 def test_neo_hookean_is_mooney_rivlin_without_c2_under_a_sphere():
@@ -145,7 +147,7 @@ def test_small_force_pressure_rise_is_reciprocity_for_sphere_and_plate(fluid):
         assert _small_force_limit(fluid, indenter) == pytest.approx(expected, rel=1e-4)
 
 
-@pytest.mark.parametrize("radius, reason", [(0.05, EQUATOR), (0.2, SphereProblem.POLE), (4.0, CLAMP_PLANE)])
+@pytest.mark.parametrize(("radius", "reason"), [(0.05, EQUATOR), (0.2, SphereProblem.POLE), (4.0, CLAMP_PLANE)])
 def test_range_ends_are_named_with_their_force(radius, reason):
     end = shooting.range_end(ALPHA, PHAT, indenter=Sphere(radius))
     state = shooting.compress(ALPHA, PHAT, end, indenter=Sphere(radius))
@@ -192,6 +194,7 @@ def test_a_force_maximum_under_a_sphere_ends_the_range(radius):
           for d in (-2e-3, 0.0, 2e-3)]
     print(f"K = {radius}: shooting's end {end:.12g}; FE at its height and 0.2 % either side: {fe}")
     assert fe[1] == pytest.approx(end, rel=1e-7)
-    assert fe[0] < end * (1 - 1e-6) and fe[2] < end * (1 - 1e-6)
+    assert fe[0] < end * (1 - 1e-6)
+    assert fe[2] < end * (1 - 1e-6)
     with pytest.raises(OutOfRangeError, match=f"ends at force = {end:.10g}.*there the force has a maximum"):
         shooting.compress(alpha, phat, end * (1 + 1e-9), indenter=indenter)

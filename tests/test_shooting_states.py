@@ -10,14 +10,14 @@ from pocket import shooting
 ECHOED = [(1.2, 0.1), (0.3, 0.05), (47 / 160, 0.31), (5.0, 0.2), (0.7, 0.32), (-0.3, 0.13)]
 
 
-@pytest.mark.parametrize("alpha, pressure", ECHOED)
+@pytest.mark.parametrize(("alpha", "pressure"), ECHOED)
 def test_inflated_state_echoes_its_inputs(alpha, pressure):
     """Exact answer: alpha and pressure are the floats given (a sweep keys its rows on them)."""
     state = shooting.inflate(alpha, pressure)
     assert (state.alpha, state.pressure) == (alpha, pressure)
 
 
-@pytest.mark.parametrize("alpha, pressure", ECHOED)
+@pytest.mark.parametrize(("alpha", "pressure"), ECHOED)
 def test_compressed_states_echo_their_inputs(alpha, pressure):
     """Exact answer: alpha, pressure_initial and force are the floats given, in every state of a curve,
     and the inflated state inside echoes alpha and pressure too."""
@@ -32,7 +32,8 @@ def test_volume_control_echoes_the_volume():
     target = shooting.inflate(0.3, 0.1).volume * 1.1
     state = shooting.inflate_volume(0.3, target)
     assert state.volume == target
-    assert state.profile is not None and state.alpha == 0.3
+    assert state.profile is not None
+    assert state.alpha == 0.3
 
 
 def test_numpy_and_integer_inputs_are_echoed_as_floats():
@@ -48,7 +49,8 @@ def test_progress_is_called_after_each_force():
     forces = [0.3, 0.1, 0.0, 0.1, 0.2]
     shooting.compression_curve(0.3, 0.2, forces, progress=lambda done, total: calls.append((done, total)))
     assert calls[-1] == (5, 5)
-    assert [d for d, _ in calls] == sorted(d for d, _ in calls) and {t for _, t in calls} == {5}
+    assert [d for d, _ in calls] == sorted(d for d, _ in calls)
+    assert {t for _, t in calls} == {5}
     assert len(calls) == 4  # one call per distinct force
 
 
@@ -88,7 +90,9 @@ def test_a_slack_shot_is_a_status_not_a_state():
     from pocket.shooting.shots import edge_state
 
     status, r, y, _ = integrate(edge_state(1.5, 0.3), 0.3, law_of(-0.5), 0.3, rtol=1e-10)
-    assert status == SLACK and r < 1.0 and np.all(np.isfinite(y))
+    assert status == SLACK
+    assert r < 1.0
+    assert np.all(np.isfinite(y))
     problem = PlateProblem(shooting.inflate(-0.5, 0.1), 1e-10, law_of(-0.5))
     assert problem.residual(np.array([1.0, (1.5 - 1) / problem.strain]), 0.01) is None
     assert "tension vanished" in problem.failure()

@@ -79,7 +79,8 @@ def test_a_new_convex_indenter_takes_the_generic_path(cone):
     b^2 / (b^2 + 2 rho^2)^(3/2) to round-off (the kind gives z'' and z'), read at the reach past it."""
     assert contact_of(cone) is SurfaceProblem
     surface = surface_of(cone)
-    assert type(surface) is Surface and surface.reach == REACH
+    assert type(surface) is Surface
+    assert surface.reach == REACH
     rho = np.linspace(0.0, REACH, 7)
     assert surface.curvature(rho) == pytest.approx(_curvature(rho), rel=1e-14)
     assert surface.curvature(2.0 * REACH) == pytest.approx(_curvature(REACH), rel=1e-14)

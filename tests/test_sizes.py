@@ -34,8 +34,11 @@ def _run(tmp_path, capsys, text, *extra):
 
 def test_plain_means_no_unit():
     """A number, or text pint reads as dimensionless, has no unit; text with a unit has one."""
-    assert is_plain(20) and is_plain(0.25) and is_plain("20")
-    assert not is_plain("20 mm") and not is_plain("1 km")
+    assert is_plain(20)
+    assert is_plain(0.25)
+    assert is_plain("20")
+    assert not is_plain("20 mm")
+    assert not is_plain("1 km")
 
 
 def test_the_papers_samples_draw_no_warning():
@@ -48,9 +51,10 @@ def test_the_papers_samples_draw_no_warning():
 
 def test_a_radius_in_kilometres_is_refused_naming_the_radius(tmp_path, capsys):
     """20 km is beyond the largest pocket (SIZES): the radius is blamed, not a pressure derived from it."""
-    assert 20e3 > SIZES[1]
+    assert SIZES[1] < 20e3
     status, err = _run(tmp_path, capsys, CASE.replace('radius = "20 mm"', 'radius = "20 km"'))
-    assert status == 2 and err.startswith("pocket: error: clamp.radius = '20 km' is 20000 m, outside"), err
+    assert status == 2, err
+    assert err.startswith("pocket: error: clamp.radius = '20 km' is 20000 m, outside"), err
     assert not list(tmp_path.glob("case.*[jc]s[vo]*"))
 
 
@@ -71,7 +75,9 @@ def test_a_thick_sheet_warns_on_stderr_and_in_every_row(tmp_path, capsys):
     assert THIN_WARNING < ratio < THIN_LIMIT
     status, err = _run(tmp_path, capsys, CASE.replace('thickness = "0.25 mm"', 'thickness = "3 mm"'))
     expected = f"sheet.thickness = '3 mm' on clamp.radius = '20 mm': the sheet's thickness is {ratio:.3g} times"
-    assert status == 0 and err.count(expected) == 1 and err.count("\n") == 1, err
+    assert status == 0, err
+    assert err.count(expected) == 1, err
+    assert err.count("\n") == 1, err
     result = json.loads((tmp_path / "case.json").read_text())
     assert any(expected in w for w in result["case"]["warnings"])
     assert all(any(expected in w for w in row["warnings"]) for row in (result["inflated"], *result["states"]))
@@ -83,7 +89,8 @@ def test_a_plain_radius_warns_and_the_failure_names_it(tmp_path, capsys):
     large (Phat_I = P_I R / (E T) = 4800 * 20 / (1.242e6 * 2.5e-4)) is an error naming the radius."""
     status, err = _run(tmp_path, capsys, CASE.replace('radius = "20 mm"', "radius = 20"))
     lines = err.splitlines()
-    assert status == 2 and len(lines) == 2, err
+    assert status == 2, err
+    assert len(lines) == 2, err
     assert lines[0] == ("pocket: warning: clamp.radius = 20 has no unit and is read as 20 m; write '20 mm' if "
                         "millimetres were meant")
     phat = 4800 * 20 / (6 * (160e3 + 47e3) * 0.25e-3)
@@ -137,7 +144,7 @@ def test_design_in_plain_metres_warns_naming_radius_and_height(capsys):
     assert capsys.readouterr().err == ""
 
 
-@pytest.mark.parametrize("modulus, factor", [("40 kPa", 25), ("10 kPa", 100)])
+@pytest.mark.parametrize(("modulus", "factor"), [("40 kPa", 25), ("10 kPa", 100)])
 def test_design_of_a_thick_sheet(capsys, modulus, factor):
     """P_I does not depend on E, so T scales as 1/E: T at ``modulus`` is ``factor`` times T at 1 MPa.
     T/R above THIN_WARNING warns, at THIN_LIMIT or above is refused (exit 2), naming the inputs."""
@@ -150,9 +157,12 @@ def test_design_of_a_thick_sheet(capsys, modulus, factor):
     assert f"the sheet's thickness is {ratio:.3g} times the clamp radius" in err
     assert err.count("\n") == 1
     if ratio >= THIN_LIMIT:
-        assert status == 2 and err.startswith("pocket: error: ")
+        assert status == 2
+        assert err.startswith("pocket: error: ")
     else:
-        assert THIN_WARNING < ratio and status == 0 and err.startswith("pocket: warning: ")
+        assert ratio > THIN_WARNING
+        assert status == 0
+        assert err.startswith("pocket: warning: ")
 
 
 def test_a_plain_fingertip_radius_warns_in_a_case_and_in_design(capsys):

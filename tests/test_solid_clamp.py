@@ -29,7 +29,9 @@ def test_the_corner_elements_do_not_depend_on_the_radial_elements(thickness):
         for layers in (2, 4, 16):
             r = np.unique(mesh.section(thickness, n, layers).p[0])
             d = np.diff(r)
-            assert r[0] == 0.0 and r[-1] == 1.0 and np.all(d > 0.0)
+            assert r[0] == 0.0
+            assert r[-1] == 1.0
+            assert np.all(d > 0.0)
             np.testing.assert_allclose(d[-3:][::-1], mesh.CORNER_SIZE * thickness * np.array([1.0, 1.5, 2.25]),
                                        rtol=1e-12)
             assert max((d[1:] / d[:-1]).max(), (d[:-1] / d[1:]).max()) <= 2.45, (n, layers)

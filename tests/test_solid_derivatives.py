@@ -25,8 +25,8 @@ def _material(name):
 
 
 def _axisymmetric(rng, shape=(3,)):
-    F = np.zeros((3, 3) + shape)
-    F[:2, :2] = np.eye(2)[:, :, None] + 0.3 * rng.standard_normal((2, 2) + shape)
+    F = np.zeros((3, 3, *shape))
+    F[:2, :2] = np.eye(2)[:, :, None] + 0.3 * rng.standard_normal((2, 2, *shape))
     F[2, 2] = 1.0 + 0.3 * rng.random(shape)
     return F
 
@@ -62,7 +62,7 @@ def _energy_of_f(material, F):
 
 
 def _unit(i, j, shape):
-    E = np.zeros((3, 3) + shape)
+    E = np.zeros((3, 3, *shape))
     E[i, j] = 1.0
     return E
 
@@ -103,7 +103,8 @@ def test_every_law_of_the_registry_has_a_solid_kernel():
     F = _axisymmetric(np.random.default_rng(4))
     for name in LAWS:
         first, second = kin.energy_derivatives(F, laws.derivatives(_material(name)))
-        assert np.all(np.isfinite(first)) and np.all(np.isfinite(second)), name
+        assert np.all(np.isfinite(first)), name
+        assert np.all(np.isfinite(second)), name
 
 
 @pytest.mark.parametrize("contact", [None, "force", "height"])
@@ -164,4 +165,5 @@ def test_the_vectorised_assembly_is_the_skfem_forms(name):
     for key, fast, slow in zip(names, assembly.solid(m.tables, m.law, u, p) + assembly.fluid(m.tables, u),
                                reference, strict=True):
         difference = abs(fast - slow).max()
-        assert np.isfinite(difference) and difference <= 1e-12 * abs(slow).max(), (key, difference, abs(slow).max())
+        assert np.isfinite(difference), (key, difference, abs(slow).max())
+        assert difference <= 1e-12 * abs(slow).max(), (key, difference, abs(slow).max())

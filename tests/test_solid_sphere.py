@@ -106,7 +106,8 @@ r = 0, is zero to the discretisation: it may leave) to the edge."""
     assert np.all(y[m.size + 2:] >= 0.0)
     assert gap[free].min() >= -SWEEP_TOL
     inner = control.active[control.active > 0]
-    assert inner.size >= 4 and np.array_equal(inner, np.arange(1, inner.max() + 1))
+    assert inner.size >= 4
+    assert np.array_equal(inner, np.arange(1, inner.max() + 1))
 
 
 def _state(indenter, thickness_ratio=T, elements=ELEMENTS, layers=2, force=FORCE):
@@ -131,7 +132,8 @@ def test_a_large_sphere_is_the_flat_plate_to_first_order_in_1_over_k():
     assert np.all(np.sign(diffs[25.0]) == np.sign(diffs[50.0]))
     # the contact radius comes from the edge's extrapolation, which moves by a fraction of a node's spacing
     # from state to state (``results``), a few 1e-4 R: its order only within 0.5 of 1
-    assert np.all(np.abs(order[[0, 2]] - 1.0) <= 0.15) and abs(order[1] - 1.0) <= 0.5, order
+    assert np.all(np.abs(order[[0, 2]] - 1.0) <= 0.15), order
+    assert abs(order[1] - 1.0) <= 0.5, order
 
 
 def _against_membrane(radius):
@@ -161,12 +163,15 @@ def test_the_solid_tends_to_the_membrane_under_a_sphere(radius):
     # Measured (64 and 128 elements, T/R 0.01 to 0.04): |dq| / T from 0.023 to 0.061 at K = 0.4 (order ~1.5:
     # the first-order term is small there) and 0.078 to 0.096 at K = 2 (order ~1); the orders move by ~0.2
     # with the mesh (the contact edge). Bounds: the order between 0.7 and 2.2, |dq| <= 0.15 T.
-    assert np.sign(dq1) == np.sign(dq2) and 0.7 <= q_order <= 2.2
-    assert abs(dq1) <= 0.15 * t1 and abs(dq2) <= 0.15 * t2
+    assert np.sign(dq1) == np.sign(dq2)
+    assert 0.7 <= q_order <= 2.2
+    assert abs(dq1) <= 0.15 * t1
+    assert abs(dq2) <= 0.15 * t2
     # The contact area's difference (|dA| / T measured up to 0.16) is of the size of the contact edge's own
     # resolution (the edge placed within about half a node, ``results``); so it is bounded by that plus the
     # first-order term, 0.1 T: its rate is not resolved at this mesh.
-    assert abs(da1) <= 0.1 * t1 + e1 and abs(da2) <= 0.1 * t2 + e2
+    assert abs(da1) <= 0.1 * t1 + e1
+    assert abs(da2) <= 0.1 * t2 + e2
 
 
 def test_the_command_line_presses_with_a_sphere(capsys):

@@ -115,5 +115,8 @@ def test_an_indenter_holds_its_own_parameters():
     """Exact answers: a profile indenter's ``shape`` is the very Shape it was made from, a sphere's radius the
     number it was given, and a profile's reach the shape's last radius."""
     shape = table([0.0, 0.25, 0.5, 1.0], [0.0, 0.03125, 0.125, 0.5])  # z = rho^2 / 2
-    assert Profile(shape).shape is shape and Profile(shape).reach == 1.0
-    assert Sphere(0.5).radius == 0.5 and Sphere(1).radius == 1.0 and isinstance(Sphere(1).radius, float)
+    assert Profile(shape).shape is shape
+    assert Profile(shape).reach == 1.0
+    assert Sphere(0.5).radius == 0.5
+    assert Sphere(1).radius == 1.0
+    assert isinstance(Sphere(1).radius, float)

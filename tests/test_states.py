@@ -34,7 +34,8 @@ def test_warnings_stay_out_of_the_scalars():
     from pocket.cli.common import report
 
     state = shooting.inflate(0.3, 0.3)
-    assert state.warnings == () and "warnings" not in state.scalars()
+    assert state.warnings == ()
+    assert "warnings" not in state.scalars()
     noted = dataclasses.replace(state, warnings=("a note",))
     assert report(noted) == {**state.scalars(), "warnings": ["a note"]}
 
@@ -55,20 +56,27 @@ def test_a_rubber_given_by_alpha_reports_that_alpha_first_and_its_c1_c2():
     """Exact answer: alpha = C2/C1 = 0.3 with mu_0 = 2 (C1 + C2) = 1 gives C1 = 1/2.6, C2 = 0.3/2.6; the state's
     alpha is the material's, and it is the first key reported."""
     state = _inflated()
-    assert state.alpha == 0.3 and state.material.mu0 == pytest.approx(1.0, rel=1e-15)
+    assert state.alpha == 0.3
+    assert state.material.mu0 == pytest.approx(1.0, rel=1e-15)
     out = state.scalars()
-    assert next(iter(out)) == "alpha" and out["alpha"] == 0.3 and out["material"] == "mooney-rivlin"
-    assert out["c1"] == pytest.approx(1 / 2.6, rel=1e-15) and out["c2"] == pytest.approx(0.3 / 2.6, rel=1e-15)
+    assert next(iter(out)) == "alpha"
+    assert out["alpha"] == 0.3
+    assert out["material"] == "mooney-rivlin"
+    assert out["c1"] == pytest.approx(1 / 2.6, rel=1e-15)
+    assert out["c2"] == pytest.approx(0.3 / 2.6, rel=1e-15)
 
 
-@pytest.mark.parametrize("law, params", [("neo-hookean", {"mu": 1.0}), ("mooney-rivlin", {"c1": 160e3, "c2": 47e3})])
+@pytest.mark.parametrize(("law", "params"),
+                         [("neo-hookean", {"mu": 1.0}), ("mooney-rivlin", {"c1": 160e3, "c2": 47e3})])
 def test_a_rubber_given_by_its_parameters_reports_no_alpha(law, params):
     """Exact answer: the parameters as given, and no alpha (for Mooney-Rivlin none recomputed from C1, C2)."""
     from pocket.core.materials import check
 
     state = _inflated(material=check(law, params))
     out = state.scalars()
-    assert state.alpha is None and "alpha" not in out and out["material"] == law
+    assert state.alpha is None
+    assert "alpha" not in out
+    assert out["material"] == law
     assert {k: out[k] for k in params} == params
 
 
@@ -88,5 +96,8 @@ def test_smallest_tensions_and_the_wrinkling_flag():
     state = _inflated()
     assert (state.tension_1_min, state.tension_2_min, state.wrinkled, state.warnings) == (1.0, 1.0, False, ())
     slack = _inflated(tension_2=np.array([1.0, 0.5, -0.25, 0.5, 1.0]))
-    assert slack.tension_2_min == -0.25 and slack.wrinkled and slack.scalars()["wrinkled"] is True
-    assert len(slack.warnings) == 1 and "T_2 = -0.25 E T at r = 0.5 R" in slack.warnings[0]
+    assert slack.tension_2_min == -0.25
+    assert slack.wrinkled
+    assert slack.scalars()["wrinkled"] is True
+    assert len(slack.warnings) == 1
+    assert "T_2 = -0.25 E T at r = 0.5 R" in slack.warnings[0]

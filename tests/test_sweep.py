@@ -26,7 +26,7 @@ class CountingExecutor(ThreadPoolExecutor):
         self.points, self.tasks = [], 0
 
     def submit(self, fn, *args, **kwargs):
-        solver, material, pressure, forces, options = args
+        _solver, material, pressure, forces, _options = args
         self.points += [(material.alpha, pressure, force) for force in forces]
         self.tasks += 1
         return super().submit(fn, *args, **kwargs)
@@ -59,14 +59,16 @@ def test_rows_are_the_solver(reference):
     """Exact: each row is the shooting solver's state on its curve (``compression_curve`` through the
     forces in range), written exactly (repr floats); past the range, the row says so."""
     rows = list(csv.DictReader(reference.open()))
-    assert tuple(rows[0]) == COLUMNS and len(rows) == 16
+    assert tuple(rows[0]) == COLUMNS
+    assert len(rows) == 16
     for alpha in ALPHAS:
         for pressure in PRESSURES:
             curve = [r for r in rows if (float(r["alpha"]), float(r["pressure_initial"])) == (alpha, pressure)]
             assert [float(r["force"]) for r in curve] == FORCES
             ok = [r for r in curve if r["status"] == "ok"]
             for row in curve[len(ok):]:
-                assert (pressure, row["force"]) == (0.31, "15.0") and "beyond the model's range" in row["message"]
+                assert (pressure, row["force"]) == (0.31, "15.0")
+                assert "beyond the model's range" in row["message"]
             states = shooting.compression_curve(alpha, pressure, FORCES[: len(ok)])
             assert [float(r["pressure_ratio"]) for r in ok] == [s.pressure_ratio for s in states]
             assert [float(r["height"]) for r in ok] == [s.height for s in states]
@@ -76,7 +78,7 @@ def test_rows_are_the_solver(reference):
 CURVE_SOLVERS = [("shooting", {}), ("analytical", {}), ("fem", {"order": 1, "elements": 64})]
 
 
-@pytest.mark.parametrize("solver, options", CURVE_SOLVERS)
+@pytest.mark.parametrize(("solver", "options"), CURVE_SOLVERS)
 def test_a_curve_task_gives_the_points(solver, options):
     """A curve solved by continuation (one task) gives each point's row as solved alone from a fresh
     inflation: the same statuses and messages, the numbers to the solver's tolerance. Each solve is
@@ -126,7 +128,8 @@ def test_interrupted_sweep_resumes(reference, tmp_path):
     assert executor.tasks == 3  # the curve finished (4 rows of the first curve) is not solved again
     assert path.read_bytes() == reference.read_bytes()
     with CountingExecutor() as again:  # all done: nothing to compute
-        assert run_sweep(path, ALPHAS, PRESSURES, FORCES, again) == (0, 16) and again.points == []
+        assert run_sweep(path, ALPHAS, PRESSURES, FORCES, again) == (0, 16)
+        assert again.points == []
 
 
 def test_partial_grid_then_full(tmp_path):
@@ -141,7 +144,7 @@ def test_partial_grid_then_full(tmp_path):
 
 
 @pytest.mark.parametrize(
-    "argv, message",
+    ("argv", "message"),
     [
         (["--alpha", "-1.5", "--pressure", "0.3", "--force", "0.1"], "alpha = -1.5"),
         (["--alpha", "0.3", "--pressure", "0", "--force", "0.1"], "pressure = 0.0, but it must be > 0"),
@@ -153,7 +156,8 @@ def test_bad_grid(argv, message, tmp_path, capsys):
     path = tmp_path / "bad.csv"
     assert main(["sweep", *argv, "--out", str(path), "--workers", "1"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert not path.exists()
 
 
@@ -190,7 +194,8 @@ def test_rows_record_the_grid_as_asked(tmp_path, monkeypatch):
         (a, p, f) for a in grid[0] for p in grid[1] for f in grid[2]]
     before = path.read_bytes()
     with CountingExecutor() as executor:
-        assert run_sweep(path, *grid, executor) == (0, 8) and executor.points == []
+        assert run_sweep(path, *grid, executor) == (0, 8)
+        assert executor.points == []
     assert path.read_bytes() == before
 
 
@@ -205,7 +210,8 @@ def test_readme_example_runs_and_reruns(tmp_path, capsys):
     rows = list(csv.DictReader(text.splitlines()))
     assert {(r["alpha"], r["pressure_initial"]) for r in rows} == {
         (a, p) for a in ("0.3", "1.2") for p in ("0.05", "0.1", "0.2", "0.32")}
-    assert len(rows) == 40 and {r["status"] for r in rows} == {"ok"}
+    assert len(rows) == 40
+    assert {r["status"] for r in rows} == {"ok"}
     assert main(argv) == 0
     assert "0 points computed, 40 reused" in capsys.readouterr().out
     assert (tmp_path / "s.csv").read_text() == text
@@ -222,7 +228,8 @@ def test_a_file_that_is_not_a_sweep_is_left_untouched(tmp_path, capsys, content)
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
                  "--workers", "1"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "is not a sweep file" in err, err
+    assert err.count("\n") == 1, err
+    assert "is not a sweep file" in err, err
     assert path.read_bytes() == content
 
 
@@ -247,7 +254,8 @@ def test_interrupted_sweep_keeps_complete_rows_and_resumes(reference, tmp_path):
     with CountingExecutor() as executor, pytest.raises(KeyboardInterrupt):
         run_sweep(path, ALPHAS, PRESSURES, FORCES, executor, progress=progress)
     lines = path.read_text().splitlines(keepends=True)
-    assert len(lines) == 1 + len(FORCES) and lines[0] == reference.read_text().splitlines(keepends=True)[0]
+    assert len(lines) == 1 + len(FORCES)
+    assert lines[0] == reference.read_text().splitlines(keepends=True)[0]
     assert set(lines[1:]) <= set(reference.read_text().splitlines(keepends=True))
     with CountingExecutor() as executor:
         assert run_sweep(path, ALPHAS, PRESSURES, FORCES, executor) == (16 - len(FORCES), len(FORCES))
@@ -299,9 +307,12 @@ def test_full_disk_while_appending_keeps_complete_rows(reference, tmp_path, monk
     path = tmp_path / "full.csv"
     assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 1
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"cannot write {path}: No space left on device" in err, err
+    assert err.count("\n") == 1, err
+    assert f"cannot write {path}: No space left on device" in err, err
     kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
-    assert len(kept) >= 2 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
+    assert len(kept) >= 2
+    assert kept[0] == lines[0]
+    assert set(kept[1:]) <= set(lines[1:])
     assert path.stat().st_size <= room
     monkeypatch.undo()
     assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 0
@@ -347,10 +358,15 @@ def test_file_size_limit_in_a_real_process(reference, tmp_path):
     path = tmp_path / "limited.csv"
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "sweep", *ARGV, "--out", str(path), "--workers", "2"],
                           capture_output=True, text=True, preexec_fn=small_files)
-    assert proc.returncode == 1 and proc.stderr.count("\n") == 1 and "File too large" in proc.stderr, proc.stderr
+    assert proc.returncode == 1, proc.stderr
+    assert proc.stderr.count("\n") == 1, proc.stderr
+    assert "File too large" in proc.stderr, proc.stderr
     kept = path.read_bytes().splitlines(keepends=True)  # rows finish in any order, of different lengths
-    assert len(kept) >= 2 and kept[0] == lines[0] and set(kept[1:]) <= set(lines[1:])
-    assert path.stat().st_size <= limit and sorted(p.name for p in tmp_path.iterdir()) == ["limited.csv"]
+    assert len(kept) >= 2
+    assert kept[0] == lines[0]
+    assert set(kept[1:]) <= set(lines[1:])
+    assert path.stat().st_size <= limit
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["limited.csv"]
     assert main(["sweep", *ARGV, "--out", str(path), "--workers", "2"]) == 0
     assert path.read_bytes() == reference.read_bytes()
 
@@ -373,13 +389,14 @@ def test_one_writer_at_a_time(tmp_path, capsys):
     finally:
         holder.communicate("")
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "another pocket sweep is writing this file" in err, err
+    assert err.count("\n") == 1, err
+    assert "another pocket sweep is writing this file" in err, err
     assert path.read_text() == ",".join(COLUMNS) + "\n"
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize(
-    "extra, message",
+    ("extra", "message"),
     [
         (["--workers", "0"], "workers = 0, but it must lie in [1, "),
         (["--workers", "100000"], "workers = 100000, but it must lie in [1, "),
@@ -393,7 +410,8 @@ def test_bad_sweep_options(tmp_path, capsys, extra, message):
     path = tmp_path / "s.csv"
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path), *extra]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert not path.exists()
 
 
@@ -411,7 +429,8 @@ def test_warnings_go_to_the_message_column(tmp_path, monkeypatch):
     with CountingExecutor() as executor:
         run_sweep(path, [0.3], [0.3], [0.1], executor)
     (row,) = csv.DictReader(path.open())
-    assert row["status"] == "ok" and row["message"] == "first note; second"
+    assert row["status"] == "ok"
+    assert row["message"] == "first note; second"
 
 
 def test_a_bad_scheduler_address_is_input(tmp_path, capsys):
@@ -421,7 +440,8 @@ def test_a_bad_scheduler_address_is_input(tmp_path, capsys):
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.1", "--out", str(path),
                  "--scheduler", "not an address"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "--scheduler not an address: cannot connect" in err, err
+    assert err.count("\n") == 1, err
+    assert "--scheduler not an address: cannot connect" in err, err
     assert not path.exists()
 
 
@@ -452,7 +472,7 @@ def test_another_solver_or_options_computes_its_own_points(tmp_path, capsys):
 OLD_RUBBER_FLUID = ("material", *PARAMETERS, "fluid", "ambient", "gamma")  # the parameters' names before _per_mu0
 
 
-@pytest.mark.parametrize("columns, lacks", [
+@pytest.mark.parametrize(("columns", "lacks"), [
     ((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *OLD_RUBBER_FLUID, "indenter",
       *CHECKS), "the contact patch's deformed radius and contact pressures"),
     ((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *OLD_RUBBER_FLUID, *CHECKS),
@@ -503,7 +523,7 @@ def test_indenters_share_a_file(tmp_path, capsys):
         assert "0 points computed, 2 reused" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("extra, message", [
+@pytest.mark.parametrize(("extra", "message"), [
     (["--indenter", "sphere"], "--indenter sphere needs --indenter-radius"),
     (["--indenter", "sphere", "--indenter-radius", "-1"], "--indenter-radius = -1, but a sphere's radius must be > 0"),
     (["--indenter", "profile", "--indenter-file", "{tip}"], "tip.csv: not convex at row 3")])
@@ -516,7 +536,8 @@ def test_bad_sweep_indenter(tmp_path, capsys, extra, message):
     assert main(["sweep", "--alpha", "0.3", "--pressure", "0.1", "--force", "0.1", "--out", str(path),
                  "--workers", "1", *extra]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and message in err, err
+    assert err.count("\n") == 1, err
+    assert message in err, err
     assert not path.exists()
 
 
@@ -548,9 +569,8 @@ def test_a_profile_table_is_recorded_by_its_content(tmp_path, capsys):
         s.height for s in shooting.compression_curve(0.3, 0.1, [0.05, 0.1], indenter=Profile(shape))]
     assert rows[0]["indenter"] != rows[2]["indenter"]
     functions = profiles.functions(lambda r: r * r, lambda r: 2 * r, lambda r: 2 + 0 * r, 0.5)
-    with pytest.raises(InputError, match="not a profile given as functions"):
-        with ThreadPoolExecutor(1) as executor:
-            run_sweep(tmp_path / "f.csv", [0.3], [0.1], [0.1], executor, indenter=Profile(functions))
+    with pytest.raises(InputError, match="not a profile given as functions"), ThreadPoolExecutor(1) as executor:
+        run_sweep(tmp_path / "f.csv", [0.3], [0.1], [0.1], executor, indenter=Profile(functions))
     assert not (tmp_path / "f.csv").exists()
 
 

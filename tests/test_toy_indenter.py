@@ -96,11 +96,12 @@ def test_the_rounded_cone_is_tangent_continuous_and_its_slope_that_of_its_height
     tip = Sphere(LARGE_TIP)
     assert cone.slope(cone.joint) == pytest.approx(math.tan(ANGLE), rel=1e-14)
     assert cone.height(cone.joint) == pytest.approx(tip.height(cone.joint), rel=1e-14)
-    assert np.allclose(cone.curvature(rho[:3]), 1.0 / LARGE_TIP, rtol=1e-12) and np.all(cone.curvature(rho[3:]) == 0.0)
+    assert np.allclose(cone.curvature(rho[:3]), 1.0 / LARGE_TIP, rtol=1e-12)
+    assert np.all(cone.curvature(rho[3:]) == 0.0)
     assert INDENTERS["rounded-cone"] is RoundedCone
 
 
-@pytest.mark.parametrize("solver, contacts", SOLVERS)
+@pytest.mark.parametrize(("solver", "contacts"), SOLVERS)
 def test_a_new_indenter_on_its_tip_is_the_sphere_of_its_tip(registered, solver, contacts, monkeypatch):
     """While the contact stays on the tip (rho_c < rho_t), the rounded cone is the sphere of radius R_t: the
     same state, each scalar to 1e-8 relative (both solved on the same mesh to the Newton tolerance 1e-10; only
@@ -109,7 +110,8 @@ def test_a_new_indenter_on_its_tip_is_the_sphere_of_its_tip(registered, solver, 
     monkeypatch.setitem(contacts, RoundedCone, contacts[Profile])
     cone = registered(LARGE_TIP, ANGLE)
     toy, ball = (solver.compress(ALPHA, PRESSURE, 0.19, indenter=indenter) for indenter in (cone, Sphere(LARGE_TIP)))
-    assert toy.contact_radius_deformed < cone.joint and toy.indenter is cone
+    assert toy.contact_radius_deformed < cone.joint
+    assert toy.indenter is cone
     for name, value in ball.scalars().items():
         if isinstance(value, float):
             assert toy.scalars()[name] == pytest.approx(value, rel=1e-8, abs=1e-12), name
@@ -117,7 +119,7 @@ def test_a_new_indenter_on_its_tip_is_the_sphere_of_its_tip(registered, solver, 
 
 #: the FE only: the shooting solver's generic path (scipy on the indenter's curvature) does not get past the
 #: tip's jump in curvature at rho_t in useful time; its own toy (``test_shooting_surface``) is smooth
-@pytest.mark.parametrize("solver, contacts", SOLVERS[:1])
+@pytest.mark.parametrize(("solver", "contacts"), SOLVERS[:1])
 def test_a_new_indenter_on_its_flank_carries_the_force_of_its_contact_pressure(registered, solver, contacts,
                                                                                monkeypatch):
     """Once the contact reaches the flank (rho_c > rho_t): at each node inside the contact zone (not its edge),
@@ -135,7 +137,8 @@ def test_a_new_indenter_on_its_flank_carries_the_force_of_its_contact_pressure(r
     on_tip = rho <= cone.joint
     flank = state.pressure + t2 * math.sin(ANGLE) / np.maximum(rho, cone.joint)
     expected = np.where(on_tip, state.pressure + (t1 + t2) / SMALL_TIP, flank)
-    assert np.any(on_tip) and not np.all(on_tip)
+    assert np.any(on_tip)
+    assert not np.all(on_tip)
     assert pc[inner] == pytest.approx(expected, rel=1e-12)
     for key in ("force_cap", "force_reaction"):
         assert state.extra[key] == pytest.approx(state.force, rel=1e-9), key

@@ -86,7 +86,7 @@ def test_shooting_heights_end_where_the_range_ends():
             solver.compress_height(0.3, 0.3, 1.01 * top)
 
 
-@pytest.mark.parametrize("args, message", [
+@pytest.mark.parametrize(("args", "message"), [
     (["--height", "0.3", "--solver", "analytical"], "--height: solver analytical has no height-controlled "
                                                     "compression (entry point compress_height; solvers that "
                                                     "have it: shooting, fem, solid)"),
@@ -98,7 +98,8 @@ def test_shooting_heights_end_where_the_range_ends():
 def test_refusals_are_one_line_exit_2(capsys, args, message):
     assert main([*BASE, *args]) == 2
     err = capsys.readouterr().err
-    assert message in err and err.count("\n") == 1, err
+    assert message in err, err
+    assert err.count("\n") == 1, err
 
 
 def test_a_vtk_series_refuses_a_height_given_twice(capsys, tmp_path):
@@ -130,5 +131,6 @@ def test_case_file_height_above_the_pocket_names_the_indenter(tmp_path, capsys):
     case.write_text(CASE.replace('"9 mm", "8 mm"]', '"11 mm"]'))
     assert main(["run", str(case), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
-    assert "loads.heights[0] = '11 mm' is above the inflated pocket (H0 = 10 mm): the indenter would not touch " \
-           "it" in err and err.count("\n") == 1, err
+    assert ("loads.heights[0] = '11 mm' is above the inflated pocket (H0 = 10 mm): the indenter would not touch "
+            "it" in err), err
+    assert err.count("\n") == 1, err

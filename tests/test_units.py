@@ -7,7 +7,7 @@ from pocket.core.units import positive, quantity
 
 
 @pytest.mark.parametrize(
-    "text, kind, si",
+    ("text", "kind", "si"),
     [
         ("0.25 mm", "length", 0.25e-3),
         ("20mm", "length", 0.02),
@@ -26,7 +26,7 @@ def test_parsed_to_si(text, kind, si):
 
 
 @pytest.mark.parametrize(
-    "value, kind, message",
+    ("value", "kind", "message"),
     [
         ("4 mm", "pressure", "key = '4 mm' has dimension [length], but a pressure (Pa) is needed"),
         ("1 kPa", "length", "but a length (m) is needed"),
@@ -40,7 +40,8 @@ def test_parsed_to_si(text, kind, si):
 def test_bad_values_name_the_key(value, kind, message):
     with pytest.raises(InputError) as err:
         quantity("key", value, kind)
-    assert message in str(err.value) and "\n" not in str(err.value)
+    assert message in str(err.value)
+    assert "\n" not in str(err.value)
 
 
 def test_positive():
@@ -50,7 +51,7 @@ def test_positive():
 
 
 @pytest.mark.parametrize(
-    "value, given, kind, text",
+    ("value", "given", "kind", "text"),
     [
         (0.0098787, "20 mm", "length", "9.8787 mm"),
         (0.01, "2 cm", "length", "1 cm"),

@@ -83,13 +83,15 @@ REFUSED = [
 ]
 
 
-@pytest.mark.parametrize("argv, message", REFUSED)
+@pytest.mark.parametrize(("argv", "message"), REFUSED)
 def test_every_writer_refuses_the_users_files(argv, message, mine, capsys, no_work):
     """Exit 2, one line on stderr naming what was found, before any work, and the folder unchanged."""
     before = _tree(mine)
     assert main(argv) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and err.startswith("pocket: error: "), err
+    assert out == "", err
+    assert err.count("\n") == 1, err
+    assert err.startswith("pocket: error: "), err
     assert message in err, err
     assert _tree(mine) == before
 
@@ -115,7 +117,8 @@ def test_a_series_pocket_wrote_is_replaced_by_a_rerun(tmp_path, monkeypatch, cap
     argv = ["compress", "--alpha", "0.3", "--pressure", "0.1", "--vtk", "series", "--force"]
     assert main([*argv, "0.1"]) == 0
     marker = json.loads((tmp_path / "series" / MARKER).read_text())
-    assert marker["kind"] == files.KIND and "surface.pvd" in marker["entries"]
+    assert marker["kind"] == files.KIND
+    assert "surface.pvd" in marker["entries"]
     before = _tree(tmp_path)
     capsys.readouterr()
     assert main([*argv, "0.2"]) == 2
@@ -149,7 +152,7 @@ def _fake_report(target: pathlib.Path, kind: str) -> None:
         (partial / "report.md").write_text(f"# pocket {kind}\n")
 
 
-@pytest.mark.parametrize("command, kind, other", [("validate", "validation report", "convergence report"),
+@pytest.mark.parametrize(("command", "kind", "other"), [("validate", "validation report", "convergence report"),
                                                   ("converge", "convergence report", "validation report")])
 def test_a_report_of_the_other_kind_is_refused(command, kind, other, tmp_path, capsys, no_work):
     """``converge --out`` onto a validation report pocket wrote (and the reverse): exit 2, naming it."""
@@ -157,11 +160,12 @@ def test_a_report_of_the_other_kind_is_refused(command, kind, other, tmp_path, c
     before = _tree(tmp_path)
     assert main([command, "--quick", "--out", str(tmp_path / "report")]) == 2
     err = capsys.readouterr().err
-    assert f"holds a pocket {other}, not a {kind}" in err and err.count("\n") == 1, err
+    assert f"holds a pocket {other}, not a {kind}" in err, err
+    assert err.count("\n") == 1, err
     assert _tree(tmp_path) == before
 
 
-@pytest.mark.parametrize("command, kind", [("validate", "validation report"), ("converge", "convergence report")])
+@pytest.mark.parametrize(("command", "kind"), [("validate", "validation report"), ("converge", "convergence report")])
 def test_a_report_of_the_same_kind_passes_the_check(command, kind, tmp_path, capsys, no_work):
     """A report of the command's own kind that pocket wrote is not refused: the run starts."""
     _fake_report(tmp_path / "report", kind)

@@ -69,7 +69,8 @@ def _refused(argv, root, capsys, *needles) -> str:
     capsys.readouterr()
     assert main(argv) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and err.startswith("pocket: error: "), err
+    assert err.count("\n") == 1, err
+    assert err.startswith("pocket: error: "), err
     for needle in needles:
         assert needle in err, err
     assert _tree(root) == before
@@ -178,7 +179,7 @@ def test_run_vtk_writes_surface_series(tmp_path, capsys):
         assert plate.points[:, 2].min() * 0.02 == pytest.approx(row["height_m"], rel=1e-12)
 
 
-@pytest.mark.parametrize("out, vtk", [("D", "D"), ("V/D", "V")])
+@pytest.mark.parametrize(("out", "vtk"), [("D", "D"), ("V/D", "V")])
 def test_run_vtk_into_its_out_folder_is_refused(out, vtk, tmp_path, capsys, no_solve, monkeypatch):
     """``--vtk`` the --out folder (or a folder holding it): the series, written as a folder of its own, would
     mix with the results; refused before any solve, exit 2, nothing written."""

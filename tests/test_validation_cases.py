@@ -29,8 +29,11 @@ def test_cases_cover_the_paper():
     four = [p for p in pockets if "fig4" in p.case.tags]
     assert sorted(p.case.thickness for p in four) == [sample(n).thickness for n in (1, 2, 3, 4)]
     assert len({p.pressure_initial_Pa for p in four}) == 1  # the same P_I
-    assert all(c.label for c in cases) and len({c.label for c in cases}) == len(cases)
-    assert button.radius == 20e-3 and button.force == 0.67 and button.height_ratio == 0.8
+    assert all(c.label for c in cases)
+    assert len({c.label for c in cases}) == len(cases)
+    assert button.radius == 20e-3
+    assert button.force == 0.67
+    assert button.height_ratio == 0.8
 
 
 def _modulus(sheet, si) -> float:
@@ -63,7 +66,8 @@ def test_dimensionless_numbers():
         if "c1" in t["sheet"]:
             assert pocket.alpha == pytest.approx(si(t["sheet"]["c2"]) / si(t["sheet"]["c1"]), rel=1e-15)
         else:
-            assert pocket.alpha is None and pocket.case.material.law == t["sheet"]["material"]
+            assert pocket.alpha is None
+            assert pocket.case.material.law == t["sheet"]["material"]
         assert pocket.case.modulus == pytest.approx(modulus, rel=1e-15)
         assert pocket.pressure_initial == pytest.approx(pressure * radius / (modulus * thickness), rel=1e-14)
         if "fluid" in t:
@@ -91,7 +95,8 @@ def test_cases_cover_every_law_and_fluid():
     gases = {p.case.fluid.gamma for p in pockets if p.case.fluid.is_gas and "fem-range" in p.case.tags}
     assert gases == {1.0, 1.4}
     for plan in (DEFAULT, QUICK):
-        assert None in plan.fem["fem-range"] and 0.0 in plan.fem["fem-range"]
+        assert None in plan.fem["fem-range"]
+        assert 0.0 in plan.fem["fem-range"]
     fluids = [p for p in pockets if "fluids" in p.case.tags]
     assert len({(p.case.thickness, p.case.material, p.case.radius, p.pressure_initial_Pa) for p in fluids}) == 1
     assert sorted((p.case.fluid.kind, p.case.fluid.gamma) for p in fluids) == [("gas", 1.0), ("gas", 1.4),
@@ -123,7 +128,7 @@ def test_initial_height_is_resolved(tmp_path):
     assert shooting.inflate(head.alpha, head.pressure_initial).height == pytest.approx(9 / 20, rel=1e-10)
 
 
-@pytest.mark.parametrize("edit, bad, named", [
+@pytest.mark.parametrize(("edit", "bad", "named"), [
     ('thickness = "0.25 mm"', 'thickness = "-0.25 mm"', "thickness"),
     ('radius = "20 mm"', 'radius_cm = 2.0', "radius_cm"),
     ('c2 = "47 kPa"', 'c2 = "-200 kPa"', "C2/C1"),
@@ -145,10 +150,11 @@ def test_bad_case_files_are_refused(tmp_path, edit, bad, named):
     path.write_text(text.replace(edit, bad, 1))
     with pytest.raises(InputError) as err:
         load(path)
-    assert "\n" not in str(err.value) and named in str(err.value), err.value
+    assert "\n" not in str(err.value), err.value
+    assert named in str(err.value), err.value
 
 
-@pytest.mark.parametrize("solver, options, named", [
+@pytest.mark.parametrize(("solver", "options", "named"), [
     ("fem", (("order", 3),), "order"),
     ("shooting", (("order", 1),), "does not apply"),
     ("fem", (("penalty", -1.0),), "penalty"),
@@ -181,6 +187,8 @@ def test_help_and_readme_say_what_a_cases_file_needs(command, capsys):
     help_text = " ".join(capsys.readouterr().out.split())
     readme = " ".join((pathlib.Path(__file__).parents[1] / "README.md").read_text().split())
     for text in (help_text, readme.replace("`", "")):
-        assert "[design]" in text and "[[case]]" in text and "label" in text
+        assert "[design]" in text
+        assert "[[case]]" in text
+        assert "label" in text
         missing = [key for key in design if key not in text]
         assert not missing, missing

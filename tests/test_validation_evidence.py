@@ -37,7 +37,8 @@ def test_paper_button_is_the_paper_rules_in_the_full_model(evidence):
     thickness = 0.216 * pressure * 0.02**4 / (1e6 * 0.01**3)
     assert paper["pressure_hat"] == pytest.approx(pressure * 0.02 / (1e6 * thickness), rel=1e-13)
     state = shooting.compress(button.alpha, paper["pressure_hat"], 1.0 / PAPER_FORCE_FACTOR)
-    assert paper["height_ratio"] == state.height_ratio and paper["height"] == state.inflated.height
+    assert paper["height_ratio"] == state.height_ratio
+    assert paper["height"] == state.inflated.height
 
 
 def test_thickness_coefficient_gives_back_the_design(evidence):

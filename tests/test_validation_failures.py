@@ -33,7 +33,8 @@ def test_a_convergence_sequence_names_case_study_mesh_and_force(pocket, monkeypa
     message = str(caught.value)
     assert message.startswith(f"case {pocket.case.name!r}, convergence study (compression, FEM P2 on uniform meshes), "
                               f"uniform mesh of 16 elements, penalty contact, Fhat = {convergence.FORCE}: ")
-    assert message.endswith(str(FAILURE)) and "\n" not in message
+    assert message.endswith(str(FAILURE))
+    assert "\n" not in message
     assert (caught.value.iterations, caught.value.residual) == (1, 1.287e-4)
     assert exit_status(caught.value) == 1
 

@@ -46,7 +46,8 @@ def test_quick_run_passes(report):
     status, out, *_ = report
     assert status == 0
     rows = _rows(out / "summary.csv")
-    assert rows and {r["verdict"] for r in rows} <= {"pass", "info"}
+    assert rows
+    assert {r["verdict"] for r in rows} <= {"pass", "info"}
     assert {r["comparison"] for r in rows} >= {"FEM P1 vs shooting", "FEM P2 vs shooting", "analytical vs shooting"}
 
 
@@ -67,11 +68,14 @@ def test_figure_csvs_hold_the_plotted_numbers(report):
     for name in ("fig2", "fig3a", "fig3b", "fig4", "fig5", "fluids", "laws", "fingertips", "contact_pressure",
                  "convergence"):
         png = out / f"{name}.png"
-        assert png.stat().st_size > 10_000 and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        assert png.stat().st_size > 10_000
+        assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
         rows = _rows(out / f"{name}.csv")
-        assert rows and all(np.isfinite([float(r["x"]), float(r["y"])]).all() for r in rows)
+        assert rows
+        assert all(np.isfinite([float(r["x"]), float(r["y"])]).all() for r in rows)
     clamp = [r for r in _rows(out / "fig2.csv") if r["series"] == "shooting"][-1]
-    assert float(clamp["x"]) == pytest.approx(1.0, abs=1e-9) and float(clamp["y"]) == pytest.approx(0.0, abs=1e-9)
+    assert float(clamp["x"]) == pytest.approx(1.0, abs=1e-9)
+    assert float(clamp["y"]) == pytest.approx(0.0, abs=1e-9)
 
 
 def _pvd_files(folder):
@@ -140,11 +144,13 @@ def test_html_and_markdown_are_complete(report, page):
     """Exact answer: the HTML parses, its images are files beside it (relative paths: no server), and the
     Markdown has the same sections, including the paper's disagreements."""
     out = report[1]
-    assert page.images and all((out / src).is_file() and not pathlib.Path(src).is_absolute() for src in page.images)
+    assert page.images
+    assert all((out / src).is_file() and not pathlib.Path(src).is_absolute() for src in page.images)
     markdown = (out / "report.md").read_text()
     for heading in ("Verdicts", "Figures", "Mesh convergence", "Where the paper and the model disagree",
                     "Timing", "Provenance", "All checks"):
-        assert heading in page.headings and f"## {heading}" in markdown
+        assert heading in page.headings
+        assert f"## {heading}" in markdown
     import numpy
 
     assert f"| numpy | {numpy.__version__} |" in markdown  # the versions that ran
@@ -160,7 +166,8 @@ def test_figures_come_before_the_long_tables(page):
     assert sum(kind == "tr" for kind, _ in page.order[:first]) <= 20
     last_image = max(k for k, (kind, _) in enumerate(page.order) if kind == "img")
     long_tables = [k for k, item in enumerate(page.order) if item == ("h2", "All checks")]
-    assert len(long_tables) == 1 and min(long_tables) > last_image
+    assert len(long_tables) == 1
+    assert min(long_tables) > last_image
 
 
 def test_numbers_never_wrap(page):
@@ -186,7 +193,8 @@ def test_captions_say_what_the_panels_show(report):
 
     for fig in figures(report[2]):
         if fig.name in ("fig3a", "fig3b", "fig5"):
-            assert f"{RANGE_FRACTION:g} of the end" in fig.caption and "whole range" not in fig.caption
+            assert f"{RANGE_FRACTION:g} of the end" in fig.caption
+            assert "whole range" not in fig.caption
             assert f"{RANGE_FRACTION:g} of the end" in fig.panels[1].title
 
 
@@ -202,13 +210,15 @@ def test_legends_name_pockets_and_solvers_once(report):
     fig = next(f for f in figures(results) if f.name == "fig3a")
     series = [s for panel in fig.panels for s in panel.series]
     groups = {s.group for s in series}
-    assert len(groups) == len(paper_pockets(results.pockets)) and len({s.solver for s in series}) == 4
+    assert len(groups) == len(paper_pockets(results.pockets))
+    assert len({s.solver for s in series}) == 4
     assert not groups & {p.case.name for p in results.pockets}
     head = [s for s in series if s.emphasis]
     assert {s.group for s in head} == {next(s.group for s in series)}  # the headline, first
     colors = ["C0"]
     broad, thin = _style(head[0], colors), _style(next(s for s in series if not s.emphasis), colors)
-    assert broad["zorder"] < thin["zorder"] and broad["linewidth"] > thin["linewidth"]
+    assert broad["zorder"] < thin["zorder"]
+    assert broad["linewidth"] > thin["linewidth"]
 
 
 def test_paper_figures_come_in_the_papers_order(report, page):
@@ -230,9 +240,11 @@ def test_one_colour_per_pocket_in_every_figure(report):
     for fig in figures(report[2]):
         for s in (s for panel in fig.panels for s in panel.series if s.group and not s.emphasis):
             colours.setdefault(s.group, set()).add(s.color)
-    assert len(colours) >= 8 and all(len(c) == 1 for c in colours.values()), colours
+    assert len(colours) >= 8, colours
+    assert all(len(c) == 1 for c in colours.values()), colours
     used = [next(iter(c)) for c in colours.values()]
-    assert len(set(used)) == len(used) and max(used) < len(PALETTE)
+    assert len(set(used)) == len(used)
+    assert max(used) < len(PALETTE)
 
 
 def test_log_axes_leave_out_zero_and_say_so(report):
@@ -288,7 +300,8 @@ def test_fig4_caption_explains_every_style_of_its_legend(report):
     figs = {f.name: f for f in figures(report[2])}
     for solver in ("shooting", "analytical", *(c.label for c in DEFAULT.fem_columns)):
         assert solver in figs["fig4"].caption, solver
-    assert "P/P_I" in figs["fig5"].caption.split(" against")[0] and "rise" not in figs["fig5"].caption
+    assert "P/P_I" in figs["fig5"].caption.split(" against")[0]
+    assert "rise" not in figs["fig5"].caption
 
 
 class _Anchors(html.parser.HTMLParser):
@@ -314,8 +327,10 @@ def test_contents_link_every_section(report):
     page = _Anchors()
     page.feed((report[1] / "index.html").read_text())
     assert len(page.ids) == len(set(page.ids))
-    assert page.links and all(link in page.ids for link in page.links)
-    assert None not in page.sections and set(page.sections) <= set(page.links)
+    assert page.links
+    assert all(link in page.ids for link in page.links)
+    assert None not in page.sections
+    assert set(page.sections) <= set(page.links)
     assert "- [All checks](#all-checks)" in (report[1] / "report.md").read_text()
 
 
@@ -345,7 +360,8 @@ def test_checks_table_in_own_page(report):
                    for c in results.checks for line in report_md.splitlines())
     assert "[every check (checks.html, also checks.md)](checks.md)" in report_md
     assert '<a href="checks.html">' in (out / "index.html").read_text()
-    assert '<a href="index.html">' in (out / "checks.html").read_text() and "](report.md)" in markdown
+    assert '<a href="index.html">' in (out / "checks.html").read_text()
+    assert "](report.md)" in markdown
     assert len(report_md.splitlines()) < checks
     rows = _rows(out / "checks.csv")
     assert len(rows) == checks
@@ -357,7 +373,9 @@ def test_console_and_report_quote_one_wall_time(report):
     console = re.search(r"\(([0-9.]+) s wall time, the report's writing included", report[3])
     page = re.search(r"([0-9.]+) s wall time in all, the report's writing included",
                      (report[1] / "report.md").read_text())
-    assert console and page and console.group(1) == page.group(1)
+    assert console
+    assert page
+    assert console.group(1) == page.group(1)
     assert float(console.group(1)) >= report[2].seconds  # the solves are part of the run
 
 
@@ -366,7 +384,8 @@ def test_console_keeps_findings_about_the_paper_apart_from_verdicts(report):
     statements where the paper and the model differ, on a line of their own."""
     findings = report[2].findings
     differ = sum(f.verdict == "disagrees" for f in findings)
-    assert report[0] == 0 and differ > 0
+    assert report[0] == 0
+    assert differ > 0
     assert "disagrees" not in report[3]
     assert (f"findings about the paper (not verdicts): the paper and the model differ on {differ} of the "
             f"{len(findings)} statements checked") in report[3]
@@ -446,7 +465,8 @@ def test_timing_lists_every_task(report):
     fits to FE bulge data, the samples solved as membrane and solid)."""
     results = report[2]
     rows = _rows(report[1] / "timing.csv")
-    assert len(rows) == len(results.tasks) and {r["task"] for r in rows} == {"reference", "column", "convergence",
+    assert len(rows) == len(results.tasks)
+    assert {r["task"] for r in rows} == {"reference", "column", "convergence",
                                                                              "evidence", "fit", "solid"}
     assert len([r for r in rows if r["task"] == "solid"]) == 4 * len(results.plan.thickness[0])
     assert len([r for r in rows if r["task"] == "fit"]) == len(results.plan.fits)
@@ -464,10 +484,12 @@ def test_identification_section(report, page):
     assert [(f.truth.law, len(f.truth["mu"]) if f.truth.law == "ogden" else 1) for f in results.fits] == \
         list(results.plan.fits)
     checks = [c for c in results.checks if c.step == "identification"]
-    assert checks and all(c.verdict in ("pass", "info") for c in checks)
+    assert checks
+    assert all(c.verdict in ("pass", "info") for c in checks)
     assert len(identification.rows(results.fits)[1]) == len(checks)
     assert {c.quantity for c in checks} >= {"mu_0", "curve (largest |model/data - 1|)", "c30", "jm"}
-    assert "identification.png" in page.images and (report[1] / "identification.png").stat().st_size > 0
+    assert "identification.png" in page.images
+    assert (report[1] / "identification.png").stat().st_size > 0
 
 
 def test_refuses_a_folder_that_is_not_a_report(tmp_path, capsys, monkeypatch):
@@ -476,7 +498,8 @@ def test_refuses_a_folder_that_is_not_a_report(tmp_path, capsys, monkeypatch):
     (tmp_path / "mine.txt").write_text("keep")
     assert main(["validate", "--quick", "--out", str(tmp_path)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "holds mine.txt, which pocket did not write" in err
+    assert err.count("\n") == 1
+    assert "holds mine.txt, which pocket did not write" in err
     assert [p.name for p in tmp_path.iterdir()] == ["mine.txt"]
 
 
@@ -490,8 +513,10 @@ def test_refuses_an_unwritable_folder_before_any_work(tmp_path, capsys, monkeypa
     out = blocker if where == "file" else blocker / "report"
     assert main(["validate", "--quick", "--out", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "blocker" in err
-    assert blocker.read_text() == "a file" and [p.name for p in tmp_path.iterdir()] == ["blocker"]
+    assert err.count("\n") == 1
+    assert "blocker" in err
+    assert blocker.read_text() == "a file"
+    assert [p.name for p in tmp_path.iterdir()] == ["blocker"]
 
 
 def test_a_bad_cases_file_is_refused_before_any_work(tmp_path, capsys, monkeypatch):
@@ -503,7 +528,9 @@ def test_a_bad_cases_file_is_refused_before_any_work(tmp_path, capsys, monkeypat
     cases.write_text(CASES_FILE.read_text().replace('thickness = "0.25 mm"', 'thickness = "0 mm"', 1))
     assert main(["validate", "--cases", str(cases), "--out", str(tmp_path / "report")]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "thickness" in err and not (tmp_path / "report").exists()
+    assert err.count("\n") == 1
+    assert "thickness" in err
+    assert not (tmp_path / "report").exists()
 
 
 def test_a_write_error_is_one_line_exit_1_and_leaves_nothing(report, tmp_path, capsys, monkeypatch):
@@ -518,7 +545,9 @@ def test_a_write_error_is_one_line_exit_1_and_leaves_nothing(report, tmp_path, c
     out = tmp_path / "report"
     assert main(["validate", "--quick", "--out", str(out)]) == 1
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "No space left on device" in err and str(out) in err
+    assert err.count("\n") == 1
+    assert "No space left on device" in err
+    assert str(out) in err
     assert list(tmp_path.iterdir()) == []
 
 
@@ -532,7 +561,8 @@ def test_report_folders_are_ignored_by_git():
         assert done.returncode == 0, folder
 
 
-@pytest.mark.parametrize("command, default", [("validate", "validation-report"), ("converge", "convergence-report")])
+@pytest.mark.parametrize(("command", "default"),
+                         [("validate", "validation-report"), ("converge", "convergence-report")])
 def test_help(capsys, command, default):
     """Exact answer: the help has a description, every option with its default, and the exit codes."""
     assert main([command, "--help"]) == 0
@@ -540,9 +570,14 @@ def test_help(capsys, command, default):
     for option in ("--out DIR", "--quick", "--cases FILE"):
         assert option in text
     assert ("--vtk {few,all,none}" in text) == (command == "validate")
-    assert f"(default: {default})" in text and "default: the suite's own cases.toml" in text
-    assert "exit status: 0" in text and "; 1 " in text and "; 2 bad input" in text and "; 130 interrupted" in text
-    assert ("shooting solver" in text) and len(text) > 600
+    assert f"(default: {default})" in text
+    assert "default: the suite's own cases.toml" in text
+    assert "exit status: 0" in text
+    assert "; 1 " in text
+    assert "; 2 bad input" in text
+    assert "; 130 interrupted" in text
+    assert ("shooting solver" in text)
+    assert len(text) > 600
 
 
 def test_richardson_and_order_are_exact_on_a_power_law():
@@ -550,7 +585,8 @@ def test_richardson_and_order_are_exact_on_a_power_law():
     h = np.array([0.4, 0.2, 0.1])
     f = 2.0 + 3.0 * h**2
     value, estimate, order = richardson(h, f)
-    assert value == pytest.approx(2.0, rel=1e-13) and order == pytest.approx(2.0, rel=1e-12)
+    assert value == pytest.approx(2.0, rel=1e-13)
+    assert order == pytest.approx(2.0, rel=1e-12)
     assert estimate == pytest.approx(3.0 * 0.1**2, rel=1e-12)
     assert observed_order(h, f - 2.0) == pytest.approx(2.0, rel=1e-12)
     assert richardson(h, 2.0 + np.array([1.0, -0.5, 0.25])) is None  # alternating: no extrapolation
@@ -561,10 +597,13 @@ def test_converge_prints_orders_and_richardson(tmp_path, capsys):
     Richardson value is printed next to the shooting value."""
     assert main(["converge", "--quick", "--out", str(tmp_path / "conv")]) == 0
     out = capsys.readouterr().out
-    assert "observed order" in out and "Richardson" in out and "shooting" in out
+    assert "observed order" in out
+    assert "Richardson" in out
+    assert "shooting" in out
     orders = [r for r in _rows(tmp_path / "conv" / "checks.csv")
               if r["step"] == "order" and r["where"].startswith("inflation")]
-    assert {float(r["reference"]) for r in orders} == {2.0, 4.0} and all(r["verdict"] == "pass" for r in orders)
+    assert {float(r["reference"]) for r in orders} == {2.0, 4.0}
+    assert all(r["verdict"] == "pass" for r in orders)
 
 
 def test_every_law_and_fluid_is_cross_checked(report):
@@ -584,15 +623,18 @@ def test_every_law_and_fluid_is_cross_checked(report):
         for label, key in (("FEM P1", "fem_p1"), ("FEM P2", "fem_p2")):
             rows = [c for c in results.checks if c.case == name and c.comparison == f"{label} vs shooting"]
             scalars = [c for c in rows if c.quantity in ("pressure", "height", "volume", "contact_radius")]
-            assert {c.where for c in scalars} >= {"Fhat = 1"} and len({c.where for c in rows}) == 3
+            assert {c.where for c in scalars} >= {"Fhat = 1"}
+            assert len({c.where for c in rows}) == 3
             assert all(c.tolerance == TOLERANCES[key][0] and c.verdict == "pass" for c in scalars)
             fluid = [c for c in results.checks if c.case == name and c.comparison == label
                      and c.step == "consistency" and "V_I" in c.quantity]
-            assert len(fluid) == 2 and all(c.verdict == "pass" for c in fluid)
+            assert len(fluid) == 2
+            assert all(c.verdict == "pass" for c in fluid)
             assert ("gas law" in fluid[0].quantity) == pocket.case.fluid.is_gas
     for pocket in results.pockets:
         verdicts = [c for c in results.checks if c.case == pocket.case.name and c.comparison == MEMBRANE]
-        assert verdicts and all(c.verdict == "pass" and c.value > 0 for c in verdicts)
+        assert verdicts
+        assert all(c.verdict == "pass" and c.value > 0 for c in verdicts)
 
 
 def test_fluids_figure_compares_gas_and_liquid_at_one_force(report):
@@ -629,19 +671,22 @@ def test_a_rerun_replaces_the_report_pocket_wrote(report, tmp_path, capsys, monk
     monkeypatch.setattr(runner, "run", lambda *a, **k: report[2])
     folder = out.stat().st_ino
     assert main(["validate", "--quick", "--out", str(out)]) == 0
-    assert out.stat().st_ino != folder and (out / "report.md").read_text().startswith("# pocket validation report\n")
+    assert out.stat().st_ino != folder
+    assert (out / "report.md").read_text().startswith("# pocket validation report\n")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]  # no temporary or old copy left
     before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
     capsys.readouterr()
     assert main(["converge", "--quick", "--out", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "holds a pocket validation report, not a convergence report" in err, err
+    assert err.count("\n") == 1, err
+    assert "holds a pocket validation report, not a convergence report" in err, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
     (out / "report.md").write_text("my own notes on the run")
     before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
     assert main(["validate", "--quick", "--out", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "report.md changed after pocket wrote its validation report" in err, err
+    assert err.count("\n") == 1, err
+    assert "report.md changed after pocket wrote its validation report" in err, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
 
 
@@ -673,11 +718,13 @@ def test_spheres_are_cross_checked_on_every_scalar(report):
         rows = [c for c in results.checks if c.case == name]
         p2 = [c for c in rows if c.comparison == "FEM P2 vs shooting" and c.step == "compression"]
         assert {c.quantity for c in p2} >= {"pressure", "height", *CompressedState.CONTACT_KEYS}
-        assert len({c.where for c in p2}) == 2 and "Fhat = 0.5" in {c.where for c in p2}
+        assert len({c.where for c in p2}) == 2
+        assert "Fhat = 0.5" in {c.where for c in p2}
         scalars = [c for c in p2 if c.quantity not in ("tension_1_min", "tension_2_min", "profile (distance / R)")]
         assert all(c.tolerance == TOLERANCES["fem_sphere"][0] and c.verdict == "pass" for c in scalars)
         reaction = [c for c in rows if c.quantity == "indenter reaction = F"]
-        assert len(reaction) == 2 and all(c.verdict == "pass" for c in reaction)
+        assert len(reaction) == 2
+        assert all(c.verdict == "pass" for c in reaction)
         assert not [c for c in rows if c.comparison.startswith(("FEM P1", "analytical"))]
 
 
@@ -693,7 +740,8 @@ def test_fingertip_figure_plots_force_against_travel(report):
     results = report[2]
     fig = next(f for f in figures(results) if f.name == "fingertips")
     lines = [s for s in fig.panels[0].series if s.solver == "shooting"]
-    assert len(lines) == 4 and "FEM P2" in {s.solver for s in fig.panels[0].series}
+    assert len(lines) == 4
+    assert "FEM P2" in {s.solver for s in fig.panels[0].series}
     by_group = {p: next(p_ for p_ in results.pockets if pocket_label(p_) == p) for p in (s.group for s in lines)}
     travel, rise = {}, {}
     for line in lines:
@@ -727,10 +775,12 @@ def test_contact_pressure_figure_follows_the_contact_zone(report):
     for line, scaled in zip(lines, (s for s in fig.panels[1].series if s.solver == "shooting"), strict=True):
         pocket = next(p for p in results.pockets if pocket_label(p) == line.group)
         state = shooting.compress(pocket.material, pocket.pressure_initial, 0.5, **pocket.fluid_options())
-        assert line.x[0] == 0.0 and line.x[-1] == pytest.approx(state.contact_radius_deformed, rel=1e-9)
+        assert line.x[0] == 0.0
+        assert line.x[-1] == pytest.approx(state.contact_radius_deformed, rel=1e-9)
         assert line.y[0] == pytest.approx(state.contact_pressure_pole / state.pressure, rel=1e-9)
         assert line.y[-1] == pytest.approx(state.contact_pressure_edge / state.pressure, rel=1e-9)
-        assert (line.y > 1.0).all() and scaled.x[-1] == pytest.approx(1.0, rel=1e-9)
+        assert (line.y > 1.0).all()
+        assert scaled.x[-1] == pytest.approx(1.0, rel=1e-9)
         fe = next(s for s in fig.panels[0].series if s.group == line.group and s.solver == "FEM P2")
         assert fe.y == pytest.approx(np.interp(fe.x, line.x, line.y), rel=1e-4)
 
@@ -768,8 +818,10 @@ def test_thickness_section(report, page):
     assert first.values["P/P_I", forces[0]][0] == pytest.approx(fresh.pressure_ratio, rel=1e-9)
     assert first.values["V", None][0] == pytest.approx(fresh.inflated.volume, rel=1e-9)
     volume = [abs(c.error("V")) for c in comparisons if c.pressure_kpa == pressures[-1]]
-    assert volume == sorted(volume) and all(c.error("V") > 0 for c in comparisons), volume
-    assert "thickness.png" in page.images and (report[1] / "thickness.png").stat().st_size > 0
+    assert volume == sorted(volume), volume
+    assert all(c.error("V") > 0 for c in comparisons), volume
+    assert "thickness.png" in page.images
+    assert (report[1] / "thickness.png").stat().st_size > 0
 
 
 def _model_comparisons(results) -> set:
@@ -812,7 +864,8 @@ def test_headline_separates_numerics_from_model_limits(report):
     broken = [dataclasses.replace(c, verdict="fail") if c.comparison == "FEM P2 vs shooting" else c
               for c in results.checks]
     blocks = limits.blocks(dataclasses.replace(results, checks=tuple(broken)))
-    assert blocks[0][1].startswith("Numerics: FAIL.") and blocks[-1] == limits.blocks(results)[-1]
+    assert blocks[0][1].startswith("Numerics: FAIL.")
+    assert blocks[-1] == limits.blocks(results)[-1]
 
 
 def test_analytical_tolerance_not_tuned_to_error(report):
@@ -828,12 +881,14 @@ def test_analytical_tolerance_not_tuned_to_error(report):
     results = report[2]
     assert not [name for name in TOLERANCES if name.startswith("analytical")]
     rows = [c for c in results.checks if c.comparison == "analytical vs shooting"]
-    assert rows and all(c.tolerance is None and c.verdict == "info" for c in rows)
+    assert rows
+    assert all(c.tolerance is None and c.verdict == "info" for c in rows)
     for c in rows:
         assert c.error == pytest.approx(abs(c.value / c.reference - 1.0), rel=1e-12)
     assert max(c.error for c in rows if c.quantity == "height_ratio") > 0.01  # an error the headline must state
     h = float(np.diff(fem.default_mesh(order=2)).max())
-    assert TOLERANCES["fem_sphere_tension"][0] == h**2 and 5e-3 < h < 7e-3
+    assert TOLERANCES["fem_sphere_tension"][0] == h**2
+    assert 5e-3 < h < 7e-3
 
 
 def test_report_folder_small_without_vtk_option(report, tmp_path):
@@ -851,10 +906,13 @@ def test_report_folder_small_without_vtk_option(report, tmp_path):
     head = results.curves_of(headline(results.pockets))
     count = len(head.forces)
     steps = writer.vtk_steps(count, "few")
-    assert len(steps) == VTK_STEPS < count and steps[0] == 0 and steps[-1] == count - 1
+    assert len(steps) == VTK_STEPS < count
+    assert steps[0] == 0
+    assert steps[-1] == count - 1
     gaps = np.diff(steps)
     assert gaps.max() - gaps.min() <= 1  # evenly spread
-    assert writer.vtk_steps(count, "all") == list(range(count)) and writer.vtk_steps(count, "none") == []
+    assert writer.vtk_steps(count, "all") == list(range(count))
+    assert writer.vtk_steps(count, "none") == []
     assert writer.vtk_steps(5, "few") == [0, 1, 2, 3, 4]
     times = [float(t.split('timestep="')[1].split('"')[0]) for t in (out / "vtk" / "surface.pvd").read_text()
              .splitlines() if "timestep=" in t]
@@ -871,4 +929,5 @@ def test_vtk_option_is_checked(capsys):
     choices), before any work."""
     assert main(["validate", "--vtk", "some"]) == 2
     err = capsys.readouterr().err
-    assert "--vtk" in err and "'few', 'all', 'none'" in err
+    assert "--vtk" in err
+    assert "'few', 'all', 'none'" in err

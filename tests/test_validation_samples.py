@@ -27,7 +27,7 @@ def _cases_file(folder, sample: int, pressure: str):
     return path
 
 
-@pytest.mark.parametrize("sample, pressure", [(2, "5 kPa"), (3, "2 kPa")])
+@pytest.mark.parametrize(("sample", "pressure"), [(2, "5 kPa"), (3, "2 kPa")])
 def test_quick_validation_of_one_sample_passes(tmp_path, capsys, sample, pressure):
     cases = _cases_file(tmp_path, sample, pressure)
     status = main(["validate", "--quick", "--cases", str(cases), "--out", str(tmp_path / "report")])
@@ -43,4 +43,5 @@ def test_a_run_without_the_four_samples_draws_no_empty_fig4(tmp_path, capsys):
     assert main(["validate", "--quick", "--cases", str(cases), "--out", str(tmp_path / "report")]) == 0
     capsys.readouterr()
     drawn = {p.stem for p in (tmp_path / "report").glob("*.png")}
-    assert "fig3a" in drawn and "fig4" not in drawn, sorted(drawn)
+    assert "fig3a" in drawn, sorted(drawn)
+    assert "fig4" not in drawn, sorted(drawn)

@@ -21,12 +21,16 @@ def test_fluid_row_holds_the_gas_law(gas_curve):
     state = gas_curve[1]
     expected = state.inflated.volume * ((0.31 + 6.5) / (state.pressure + 6.5)) ** (1 / 1.4)
     row = _fluid_row("c", "shooting", "", state)
-    assert row.verdict == "pass" and row.reference == pytest.approx(expected, rel=1e-15) and "gas law" in row.quantity
+    assert row.verdict == "pass"
+    assert row.reference == pytest.approx(expected, rel=1e-15)
+    assert "gas law" in row.quantity
     bad = dataclasses.replace(state, volume=state.volume * (1 + 1e-6))
     assert _fluid_row("c", "shooting", "", bad).verdict == "fail"
     liquid = shooting.compress(0.3, 0.31, 1.0)
     row = _fluid_row("c", "shooting", "", liquid)
-    assert row.quantity == "volume = V_I" and row.reference == liquid.inflated.volume and row.verdict == "pass"
+    assert row.quantity == "volume = V_I"
+    assert row.reference == liquid.inflated.volume
+    assert row.verdict == "pass"
     assert TOLERANCES["fluid"][0] == 1e-9
 
 
@@ -37,11 +41,14 @@ def test_membrane_verdict_fails_on_any_wrinkled_state(gas_curve):
     [row] = membrane_checks("c", "shooting", gas_curve)
     states = [gas_curve[0].inflated, *gas_curve]
     assert row.value == min(min(s.tension_1_min, s.tension_2_min) for s in states) > 0
-    assert (row.comparison, row.verdict) == (MEMBRANE, "pass") and "4 states" in row.where
+    assert (row.comparison, row.verdict) == (MEMBRANE, "pass")
+    assert "4 states" in row.where
     slack = [gas_curve[0], dataclasses.replace(gas_curve[1], tension_2_min=-1e-3), gas_curve[2]]
     [row] = membrane_checks("c", "FEM P2", slack)
-    assert (row.verdict, row.value) == ("fail", -1e-3) and "1 of 4 states wrinkled" in row.where
-    assert "FEM P2" in row.where and row.error == 1e-3
+    assert (row.verdict, row.value) == ("fail", -1e-3)
+    assert "1 of 4 states wrinkled" in row.where
+    assert "FEM P2" in row.where
+    assert row.error == 1e-3
 
 
 def test_fe_tolerance_follows_the_element_order():

@@ -65,7 +65,7 @@ def _cap_correction(a: float, t: float) -> float:
     return v - np.pi * h * h * (3.0 * a - h) / 3.0
 
 
-@pytest.mark.parametrize("a, t", [(1.3, 0.02), (1.3, 0.1), (3.0, 0.1)])
+@pytest.mark.parametrize(("a", "t"), [(1.3, 0.02), (1.3, 0.1), (3.0, 0.1)])
 def test_a_spherical_cap_converges_to_its_independent_volume(a, t):
     """(a) The band formula on splines through n samples tends to the path integral along the exact offset
     curve; the spline's curvature errs by O(h^2), and the fitted order is printed."""
@@ -162,9 +162,11 @@ def test_against_the_solid():
                         "gap" for t, g, f, o in report)
     for t, _, fraction, own in report:
         # a first-order part would be a fixed fraction of the gap; O(t^2) parts are a fraction O(t) of it
-        assert abs(fraction) < t and abs(own) < t, message
+        assert abs(fraction) < t, message
+        assert abs(own) < t, message
     (_, g1, _, _), (_, g2, _, _) = report
-    assert g1 < 0 and abs(g2 / g1 - 1.0) < 0.05, message  # first order: gap/t changes by O(t) (2 % measured)
+    assert g1 < 0, message
+    assert abs(g2 / g1 - 1.0) < 0.05, message  # first order: gap/t changes by O(t) (2 % measured)
 
 
 def test_bad_thickness_and_folding():
@@ -192,6 +194,7 @@ def test_pocket_run_reports_it_in_si():
     assert row["volume_lower_m3"] == pytest.approx(state.volume_lower(t) * radius**3, rel=1e-9)
     for each in (row, *result["states"]):
         keys = list(each)
-        assert keys[keys.index("volume_m3") + 1] == "volume_lower_m3" and math.isfinite(each["volume_lower_m3"])
+        assert keys[keys.index("volume_m3") + 1] == "volume_lower_m3"
+        assert math.isfinite(each["volume_lower_m3"])
     as_solid = Pocket(dataclasses.replace(case, solver="solid"), state.pressure)
     assert "volume_lower_m3" not in inflated_row(as_solid, state)

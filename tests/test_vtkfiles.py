@@ -123,7 +123,8 @@ def test_profile_mesh(kind):
     mesh = files.profile_mesh(state)
     np.testing.assert_array_equal(mesh.points[:, 0], state.profile.rho)
     np.testing.assert_array_equal(mesh.points[:, 2], state.profile.eta)
-    assert mesh.cells[0].type == "line" and len(mesh.cells[0].data) == len(state.profile.r) - 1
+    assert mesh.cells[0].type == "line"
+    assert len(mesh.cells[0].data) == len(state.profile.r) - 1
     assert set(mesh.point_data) == NAMES
     np.testing.assert_array_equal(mesh.point_data["contact"], state.profile.contact)
     np.testing.assert_array_equal(mesh.point_data["lambda_3"], state.profile.stretch_3)
@@ -139,7 +140,8 @@ def test_surface_topology(kind, segments):
     assert len(mesh.points) == 1 + (n - 1) * segments
     assert len(np.unique(mesh.points.round(14), axis=0)) == len(mesh.points)
     blocks = {block.type: block.data for block in mesh.cells}
-    assert len(blocks["triangle"]) == segments and len(blocks["quad"]) == (n - 2) * segments
+    assert len(blocks["triangle"]) == segments
+    assert len(blocks["quad"]) == (n - 2) * segments
     used = np.unique(np.concatenate([b.ravel() for b in blocks.values()]))
     np.testing.assert_array_equal(used, np.arange(len(mesh.points)))
 
@@ -150,7 +152,8 @@ def test_surface_off_axis():
     profile = Profile(*(getattr(state.profile, f)[1:] for f in ("r", "rho", "eta", "stretch_1", "stretch_2",
                                                                 "tension_1", "tension_2", "contact")))
     mesh = files.surface_mesh(dataclasses.replace(state, profile=profile), segments=8)
-    assert [b.type for b in mesh.cells] == ["quad"] and len(mesh.points) == 8 * len(profile.r)
+    assert [b.type for b in mesh.cells] == ["quad"]
+    assert len(mesh.points) == 8 * len(profile.r)
 
 
 @pytest.mark.parametrize("kind", STATES)
@@ -227,7 +230,7 @@ def test_pyvista_reads_state(tmp_path):
     _, surface = files.write_state(tmp_path, state, segments=10)
     grid = pv.read(surface)
     assert grid.n_points == 1 + (len(state.profile.r) - 1) * 10
-    assert NAMES <= set(grid.point_data.keys())
+    assert set(grid.point_data.keys()) >= NAMES
     expected = files.surface_mesh(state, segments=10)
     np.testing.assert_array_equal(grid.point_data["contact"], expected.point_data["contact"])
     np.testing.assert_array_equal(grid.points, expected.points)
@@ -275,7 +278,7 @@ def test_pyvista_reads_series(tmp_path):
         reader.set_active_time_value(force)
         block = reader.read()[0]
         assert block.points[:, 2].max() == pytest.approx(state.height, rel=1e-15)
-        assert NAMES <= set(block.point_data.keys())
+        assert set(block.point_data.keys()) >= NAMES
     assert [d.path for d in reader.datasets] == [f"step_{k:04d}_surface.vtu" for k in range(3)]
     first = pv.read(out / "profile.pvd")  # pyvista.read gives the first step as a MultiBlock
     radii = resampling.series_radii([s.profile for s in states], files.SERIES_POINTS)
@@ -311,7 +314,7 @@ def test_series_is_atomic(tmp_path, monkeypatch):
     old = sorted(p.name for p in (tmp_path / "path").iterdir())
     calls.clear()
     monkeypatch.setattr(meshio, "write", failing)
-    with pytest.raises(OSError):
+    with pytest.raises(OSError, match="disk full"):
         files.write_series(tmp_path / "path", states, overwrite=True)
     assert sorted(p.name for p in (tmp_path / "path").iterdir()) == old
     assert [p.name for p in tmp_path.iterdir()] == ["path"]
@@ -325,7 +328,7 @@ def test_series_refuses_non_empty(tmp_path):
     target.mkdir()
     (target / "stale.txt").write_text("old")
     for overwrite in (False, True):
-        with pytest.raises(InputError, match="holds stale.txt, which pocket did not write"):
+        with pytest.raises(InputError, match=r"holds stale\.txt, which pocket did not write"):
             files.write_series(target, states, overwrite=overwrite)
     (target / "stale.txt").unlink()
     files.write_series(target, states[:1])
@@ -398,7 +401,7 @@ def test_resample_at_the_solver_radii_is_the_identity():
                                    err_msg=name)
 
 
-@pytest.mark.parametrize("radii, message", [([0.0], "at least 2"), ([0.5, 0.2], "increasing"),
+@pytest.mark.parametrize(("radii", "message"), [([0.0], "at least 2"), ([0.5, 0.2], "increasing"),
                                             ([0.0, 1.5], "increasing"), ([], "empty")])
 def test_resample_refuses_bad_radii(radii, message):
     """Exact answer: radii outside the profile's span, decreasing or too few are an InputError."""
@@ -412,7 +415,8 @@ def test_series_radii_hold_every_contact_edge():
     states, _ = series()
     radii = resampling.series_radii([s.profile for s in states], 11)
     assert set(np.round(np.linspace(0, 1, 11), 12)) | {0.1, 0.2, 0.3} == set(np.round(radii, 12))
-    assert len(radii) == 11 and {0.1, 0.2, 0.3} <= set(radii.tolist())
+    assert len(radii) == 11
+    assert {0.1, 0.2, 0.3} <= set(radii.tolist())
     assert np.diff(radii).min() > 0.05
 
 
@@ -430,7 +434,8 @@ def test_series_has_one_point_set(tmp_path):
         np.testing.assert_array_equal(profile.point_data["r"], radii)
         assert len(surface.points) == 1 + (len(radii) - 1) * 6
         edge = int(np.flatnonzero(radii == state.contact_radius)[0])
-        assert profile.point_data["contact"][edge] == 1 and profile.point_data["contact"][edge + 1] == 0
+        assert profile.point_data["contact"][edge] == 1
+        assert profile.point_data["contact"][edge + 1] == 0
         assert profile.points[edge, 0] == pytest.approx(1.2 * state.contact_radius, abs=1e-15)
 
 
@@ -466,7 +471,8 @@ def _read(field_data) -> dict:
     for key, names in CODES.items():
         if key in out:
             (code,) = out[key]
-            assert code == int(code) and -1 <= code < len(names), (key, code)
+            assert code == int(code), (key, code)
+            assert -1 <= code < len(names), (key, code)
             out[key] = None if code == -1 else names[int(code)]
     return out
 
@@ -516,6 +522,9 @@ def test_other_law_and_gas_field_data(tmp_path):
     paths = files.write_state(tmp_path, state, segments=6)
     back = meshio.read(paths[0])
     expected = _numbers(state)
-    assert "alpha" not in expected and expected["exponents"] == [1.3, 5.0, -2.0] and expected["ambient"] == [6.5]
-    assert expected["material_code"] == "ogden" and expected["fluid_code"] == "gas"
+    assert "alpha" not in expected
+    assert expected["exponents"] == [1.3, 5.0, -2.0]
+    assert expected["ambient"] == [6.5]
+    assert expected["material_code"] == "ogden"
+    assert expected["fluid_code"] == "gas"
     assert _read(back.field_data) == expected

@@ -25,7 +25,7 @@ from pocket.core.importname import require_import_name
 
 require_import_name(__name__, "pocket.validation")
 
-__all__ = ["load", "run", "write_report", "DEFAULT", "QUICK"]
+__all__ = ["DEFAULT", "QUICK", "load", "run", "write_report"]
 
 _HOMES = {"load": "suite", "run": "runner", "write_report": "report", "DEFAULT": "plan", "QUICK": "plan"}
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 from .pockets import cell
 from .verdicts import summary
 
-__all__ = ["blocks", "failing_blocks", "HEADER", "PAGE"]
+__all__ = ["HEADER", "PAGE", "blocks", "failing_blocks"]
 
 #: the page's files: HTML, Markdown
 PAGE = ("checks.html", "checks.md")

@@ -29,8 +29,17 @@ from .failures import located
 from .plan import APPROXIMATE, RANGE_FRACTION, REFERENCE, Column, Plan
 from .suite import on_plate
 
-__all__ = ["Curves", "ColumnCurve", "reference", "column_curve", "fem_forces", "range_end", "force_grid",
-           "DESIGN_FORCES", "RANGE_RTOL"]
+__all__ = [
+    "DESIGN_FORCES",
+    "RANGE_RTOL",
+    "ColumnCurve",
+    "Curves",
+    "column_curve",
+    "fem_forces",
+    "force_grid",
+    "range_end",
+    "reference",
+]
 
 #: forces always on the grid: fig 2 (0.19) and the section 6 design reading (1/5.7)
 DESIGN_FORCES = (0.19, 1.0 / 5.7)

@@ -48,8 +48,20 @@ from pocket.core.states import CompressedState, InflatedState
 
 from .failures import located
 
-__all__ = ["Sequence", "FORCE", "QUANTITIES", "MESHES", "EXPECTED", "FITTED_P2_FINEST", "RICHARDSON_FACTOR",
-           "tasks", "sequence", "observed_order", "richardson", "checks"]
+__all__ = [
+    "EXPECTED",
+    "FITTED_P2_FINEST",
+    "FORCE",
+    "MESHES",
+    "QUANTITIES",
+    "RICHARDSON_FACTOR",
+    "Sequence",
+    "checks",
+    "observed_order",
+    "richardson",
+    "sequence",
+    "tasks",
+]
 
 #: the compressed state of the study: the paper's fig. 2b force
 FORCE = 0.19

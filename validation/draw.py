@@ -18,7 +18,7 @@ from typing import Any
 
 from .plotdata import STYLES, Series
 
-__all__ = ["draw", "write_csv", "math_text", "PALETTE"]
+__all__ = ["PALETTE", "draw", "math_text", "write_csv"]
 
 #: the colour cycle: matplotlib's ten, then three more, enough for one colour per pocket of the suite
 PALETTE = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",

@@ -31,7 +31,7 @@ from .plotdata import (
 from .suite import headline
 from .thickness import figure as thickness_figure
 
-__all__ = ["figures", "convergence_figure"]
+__all__ = ["convergence_figure", "figures"]
 
 _PROFILE_MARKERS = 21  # FE nodes shown per profile
 _NEAR = 1.0  # Fhat range of the paper's figures 3 and 5

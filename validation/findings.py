@@ -12,7 +12,7 @@ import dataclasses
 
 from pocket.apps.design import PAPER_FORCE_FACTOR, PAPER_THICKNESS_FACTOR
 
-__all__ = ["Finding", "findings", "HEIGHT_READING"]
+__all__ = ["HEIGHT_READING", "Finding", "findings"]
 
 #: how far from the paper's "H/H0 ~ 0.8" a value read off its fig. 3b may be
 HEIGHT_READING = 0.05

@@ -22,7 +22,7 @@ from .plan import RANGE_FRACTION
 from .plotdata import Figure, Panel, Series, curve_series, pocket_colors, pocket_label, solver_key
 from .suite import headline, on_plate
 
-__all__ = ["fingertip_figures", "fingertip_pockets", "sphere_pockets", "CONTACT_FORCE"]
+__all__ = ["CONTACT_FORCE", "fingertip_figures", "fingertip_pockets", "sphere_pockets"]
 
 #: F/(P_I pi R^2) of the contact-pressure figure (a force of the plans' FE columns under a sphere)
 CONTACT_FORCE = 0.5

@@ -26,8 +26,22 @@ from pocket.core.materials import LAWS, Material, check
 from .plotdata import Figure, Panel, Series
 from .verdicts import TOLERANCES, Check
 
-__all__ = ["Identification", "identify", "truth_of", "checks", "figure", "rows", "describe", "OGDEN_ONE", "OGDEN_TWO",
-           "POINTS", "LOW", "HIGH", "RADIUS", "THICKNESS"]
+__all__ = [
+    "HIGH",
+    "LOW",
+    "OGDEN_ONE",
+    "OGDEN_TWO",
+    "POINTS",
+    "RADIUS",
+    "THICKNESS",
+    "Identification",
+    "checks",
+    "describe",
+    "figure",
+    "identify",
+    "rows",
+    "truth_of",
+]
 
 RADIUS, THICKNESS = 0.02, 1e-3  # the sheet (m)
 POINTS, LOW, HIGH = 10, 0.06, 0.6  # pressures Phat of the bulge test

@@ -18,8 +18,18 @@ from . import thickness
 from .plan import APPROXIMATE, REFERENCE
 from .verdicts import ANALYTICAL_RANGE, MEMBRANE
 
-__all__ = ["LIMIT", "MODEL_COMPARISONS", "is_numerics", "tally", "blocks", "sentence", "sentences", "membrane_vs_solid",
-           "analytical_vs_membrane", "wrinkling"]
+__all__ = [
+    "LIMIT",
+    "MODEL_COMPARISONS",
+    "analytical_vs_membrane",
+    "blocks",
+    "is_numerics",
+    "membrane_vs_solid",
+    "sentence",
+    "sentences",
+    "tally",
+    "wrinkling",
+]
 
 #: within this relative error a model counts as the more complete one's equal
 LIMIT = thickness.LIMIT

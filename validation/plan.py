@@ -31,8 +31,19 @@ from pocket.apps.solvers import record, solver_options
 
 from .suite import on_plate
 
-__all__ = ["Column", "Plan", "DEFAULT", "QUICK", "RANGE_FRACTION", "REFERENCE", "APPROXIMATE", "FEM_COLUMNS",
-           "INDENTER_COLUMNS", "VTK", "VTK_STEPS"]
+__all__ = [
+    "APPROXIMATE",
+    "DEFAULT",
+    "FEM_COLUMNS",
+    "INDENTER_COLUMNS",
+    "QUICK",
+    "RANGE_FRACTION",
+    "REFERENCE",
+    "VTK",
+    "VTK_STEPS",
+    "Column",
+    "Plan",
+]
 
 #: curves run to this fraction of the end of the shooting model's range
 RANGE_FRACTION = 0.95

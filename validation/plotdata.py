@@ -24,8 +24,20 @@ import numpy as np
 
 from .suite import headline, on_plate
 
-__all__ = ["Series", "Panel", "Figure", "curve_series", "paper_pockets", "STYLES", "STYLES_OF_CURVES",
-           "pocket_label", "pocket_colors", "solver_key", "without_zeros", "NO_ZERO"]
+__all__ = [
+    "NO_ZERO",
+    "STYLES",
+    "STYLES_OF_CURVES",
+    "Figure",
+    "Panel",
+    "Series",
+    "curve_series",
+    "paper_pockets",
+    "pocket_colors",
+    "pocket_label",
+    "solver_key",
+    "without_zeros",
+]
 
 #: solver column label -> matplotlib style: line style, marker, marker face
 STYLES: dict[str, dict[str, Any]] = {

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["case_table", "cell", "rubber_text", "fluid_text"]
+__all__ = ["case_table", "cell", "fluid_text", "rubber_text"]
 
 
 def cell(x, digits=4) -> str:

@@ -27,7 +27,7 @@ from . import verdicts as checks_module
 from .plan import VTK, VTK_STEPS
 from .suite import headline
 
-__all__ = ["write_report", "check_target", "vtk_steps", "KINDS"]
+__all__ = ["KINDS", "check_target", "vtk_steps", "write_report"]
 
 #: the kinds of report folder: the whole suite's and the convergence study's alone
 KINDS = ("validation report", "convergence report")
@@ -125,10 +125,7 @@ def write_report(results, out, *, kind=KINDS[0], executor=None, watch=None, vtk=
         raise InputError(f"vtk = {vtk!r}, but the VTK series is one of {', '.join(VTK)}")
     target = check_target(out, kind)
     with staged(target, kind) as partial:
-        if results.curves:
-            figs = figures.figures(results)
-        else:
-            figs = [figures.convergence_figure(results)]
+        figs = figures.figures(results) if results.curves else [figures.convergence_figure(results)]
         submit = executor.submit if executor is not None else _Now
         head = results.curves_of(headline(results.pockets)) if results.curves else None
         steps = vtk_steps(len(head.forces), vtk) if head else []

@@ -35,7 +35,7 @@ from . import compute, convergence, evidence, findings, identification, thicknes
 from .plan import Plan
 from .suite import Button, headline
 
-__all__ = ["Results", "Task", "run", "convergence_tasks", "progress_bar", "WORKERS"]
+__all__ = ["WORKERS", "Results", "Task", "convergence_tasks", "progress_bar", "run"]
 
 WORKERS = min(8, cpus())
 

@@ -19,7 +19,7 @@ from .runner import WORKERS
 from .suite import headline
 from .verdicts import MEMBRANE, TOLERANCES
 
-__all__ = ["blocks", "sequence_rows", "counts", "glance", "task_rows"]
+__all__ = ["blocks", "counts", "glance", "sequence_rows", "task_rows"]
 
 #: the paper, cited where the report refers to it
 PAPER = "Bouremel et al., \"Compression of pressurised elastic pockets\""

@@ -30,7 +30,7 @@ from pocket.core.indenters import PLATE
 from pocket.core.inputs import check_alpha, check_finite, quote
 from pocket.core.units import positive
 
-__all__ = ["Button", "load", "headline", "on_plate", "CASES_FILE"]
+__all__ = ["CASES_FILE", "Button", "headline", "load", "on_plate"]
 
 CASES_FILE = pathlib.Path(__file__).with_name("cases.toml")
 

@@ -40,8 +40,18 @@ from pocket.apps.cases import SAMPLES, sample
 from .plotdata import Figure, Panel, Series
 from .verdicts import Check
 
-__all__ = ["Comparison", "COMPARISON", "compare", "checks", "rows", "figure", "verdict", "slopes", "LIMIT",
-           "QUANTITIES"]
+__all__ = [
+    "COMPARISON",
+    "LIMIT",
+    "QUANTITIES",
+    "Comparison",
+    "checks",
+    "compare",
+    "figure",
+    "rows",
+    "slopes",
+    "verdict",
+]
 
 #: the error a user may accept from the membrane: the report says where it holds
 LIMIT = 0.01

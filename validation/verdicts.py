@@ -19,8 +19,17 @@ from pocket.core.states import CHECKS, CompressedState
 from .plan import APPROXIMATE, REFERENCE
 from .suite import on_plate
 
-__all__ = ["Check", "TOLERANCES", "MEMBRANE", "ANALYTICAL_RANGE", "fem_checks", "analytical_checks",
-           "reference_checks", "membrane_checks", "summary"]
+__all__ = [
+    "ANALYTICAL_RANGE",
+    "MEMBRANE",
+    "TOLERANCES",
+    "Check",
+    "analytical_checks",
+    "fem_checks",
+    "membrane_checks",
+    "reference_checks",
+    "summary",
+]
 
 #: the largest element of the P2 FE model's default mesh (graded towards the axis), in R
 P2_ELEMENT = float(np.diff(fem.default_mesh(order=2)).max())

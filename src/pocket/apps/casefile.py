@@ -51,7 +51,7 @@ from .physical import Pocket, compressed_row, inflated_row, load_forces, resolve
 from .provenance import environment
 from .solvers import entry
 
-__all__ = ["solve", "solved", "write", "results_paths"]
+__all__ = ["results_paths", "solve", "solved", "write"]
 
 
 def results_paths(directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:

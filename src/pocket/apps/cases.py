@@ -80,7 +80,7 @@ from .rubbers import PARAMETERS, fluid, sheet
 from .solvers import SOLVERS, record
 from .tomlfiles import read_toml
 
-__all__ = ["Case", "SAMPLES", "MAX_LOADS", "load", "parse", "sample"]
+__all__ = ["MAX_LOADS", "SAMPLES", "Case", "load", "parse", "sample"]
 
 #: the option of a solver that models the sheet's thickness (``pocket.solid``): a case derives it from its sheet
 THICKNESS_RATIO = "thickness_ratio"

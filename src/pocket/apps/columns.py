@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pocket.core.materials import LAWS, Material
 
-__all__ = ["PER_MU0", "STRESSES", "parameter_column", "in_mu0", "rubber_columns", "row_scalars"]
+__all__ = ["PER_MU0", "STRESSES", "in_mu0", "parameter_column", "row_scalars", "rubber_columns"]
 
 #: the suffix of a law's stress given in units of mu_0
 PER_MU0 = "_per_mu0"

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["KEYS", "contact_pressures", "deformed_radius", "contact_patch"]
+__all__ = ["KEYS", "contact_patch", "contact_pressures", "deformed_radius"]
 
 #: the ``CompressedState`` fields that carry the contact pressure at the pole and at the edge (units Phat)
 KEYS = ("contact_pressure_pole", "contact_pressure_edge")

@@ -77,7 +77,7 @@ from .designresult import PAPER_FORCE_FACTOR, PAPER_THICKNESS_FACTOR, Design, fi
 from .inverse import force_where, pressure_for_height, pressure_for_sheet
 from .solvers import entry, record
 
-__all__ = ["Design", "design", "paper_rules", "PAPER_FORCE_FACTOR", "PAPER_THICKNESS_FACTOR"]
+__all__ = ["PAPER_FORCE_FACTOR", "PAPER_THICKNESS_FACTOR", "Design", "design", "paper_rules"]
 
 
 def _rubber(modulus, material, name):

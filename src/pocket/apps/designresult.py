@@ -17,8 +17,15 @@ from .inverse import range_end
 from .slopes import curve_with_slopes
 from .solvers import entry
 
-__all__ = ["Design", "finish", "paper_rules", "paper_height", "sealed", "PAPER_FORCE_FACTOR",
-           "PAPER_THICKNESS_FACTOR"]
+__all__ = [
+    "PAPER_FORCE_FACTOR",
+    "PAPER_THICKNESS_FACTOR",
+    "Design",
+    "finish",
+    "paper_height",
+    "paper_rules",
+    "sealed",
+]
 
 PAPER_FORCE_FACTOR = 5.7  # P_I = 5.7 F / (pi R^2): Fhat = 1/5.7 gives H/H0 ~ 0.8 (paper's figure 3b)
 PAPER_THICKNESS_FACTOR = 0.216  # T = 0.216 P_I R^4 / (E H0^3) (Bouremel et al. 2017)

@@ -45,8 +45,17 @@ from pocket.core.errors import InputError, OutputError
 from .ledger import LEDGER, changed, check_ledger, check_recorded, digest, updated
 from .provenance import version
 
-__all__ = ["MARKER", "check_output_file", "check_output_dir", "check_replaceable", "staged", "write_whole",
-           "write_files", "created_parents", "remove_created"]
+__all__ = [
+    "MARKER",
+    "check_output_dir",
+    "check_output_file",
+    "check_replaceable",
+    "created_parents",
+    "remove_created",
+    "staged",
+    "write_files",
+    "write_whole",
+]
 
 #: the file pocket writes into every folder it writes whole: {"written by", "kind", "of", "version", "entries",
 #: "sha256": {file: checksum}}

@@ -19,7 +19,7 @@ from pocket.core.units import written_like
 
 from .solvers import SOLVERS, entry
 
-__all__ = ["range_end_of", "check_force"]
+__all__ = ["check_force", "range_end_of"]
 
 _PURPOSE = "the end of the compression range"
 _FULL_CONTACT = 1e-6  # contact area / (pi R^2) within this of 1: the end is the clamp plane, not a force maximum

@@ -36,7 +36,7 @@ from pocket.core.solver import Solver
 
 from .solvers import entry
 
-__all__ = ["pressure_for_height", "force_where", "pressure_for_sheet", "range_end"]
+__all__ = ["force_where", "pressure_for_height", "pressure_for_sheet", "range_end"]
 
 _XTOL, _RTOL = 1e-15, 1e-13  # the forward solvers resolve their values to ~1e-10
 _EDGE = 1e-9  # relative width at which the range edge is located

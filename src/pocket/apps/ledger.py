@@ -25,7 +25,7 @@ from pocket.core.errors import InputError
 
 from .provenance import version
 
-__all__ = ["LEDGER", "digest", "check_ledger", "check_recorded", "updated", "changed"]
+__all__ = ["LEDGER", "changed", "check_ledger", "check_recorded", "digest", "updated"]
 
 #: the ledger of a folder holding files pocket wrote: {"written by", "version", "files": {name: {"sha256", "of"}}}
 LEDGER = ".pocket-files.json"

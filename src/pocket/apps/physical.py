@@ -32,7 +32,7 @@ from .forcerange import check_force
 from .inverse import force_where, pressure_for_height, range_end
 from .solvers import entry, record
 
-__all__ = ["Pocket", "resolve", "forces", "load_forces", "inflated_row", "compressed_row"]
+__all__ = ["Pocket", "compressed_row", "forces", "inflated_row", "load_forces", "resolve"]
 
 
 @dataclasses.dataclass(frozen=True)

@@ -14,7 +14,7 @@ import subprocess
 import sys
 from importlib import metadata
 
-__all__ = ["version", "commit", "described", "cpus", "environment"]
+__all__ = ["commit", "cpus", "described", "environment", "version"]
 
 #: the name pocket is installed under (the import name is pocket)
 DISTRIBUTION = "pocket-mechanics"

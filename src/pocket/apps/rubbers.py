@@ -34,7 +34,7 @@ from pocket.core.inputs import check_alpha, check_finite, quote
 from pocket.core.materials import LAWS, Material, check, check_prestretch
 from pocket.core.units import positive, quantity
 
-__all__ = ["DEFAULT_LAW", "PARAMETERS", "FLUIDS", "law_name", "rubber", "sheet", "fluid", "gas_of", "prestretched"]
+__all__ = ["DEFAULT_LAW", "FLUIDS", "PARAMETERS", "fluid", "gas_of", "law_name", "prestretched", "rubber", "sheet"]
 
 DEFAULT_LAW = "mooney-rivlin"
 #: every parameter name of every law, in order (c1, c2, mu, c10, c20, c30, jm, exponents)

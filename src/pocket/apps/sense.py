@@ -44,6 +44,7 @@ zone more).
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 
 import numpy as np
@@ -58,8 +59,16 @@ from .physical import Pocket
 from .slopes import curve_with_slopes
 from .solvers import entry
 
-__all__ = ["Reading", "sense", "calibration", "MAX_POINTS", "sensitivity_at_rest", "linearity",
-           "force_range", "range_linearity"]
+__all__ = [
+    "MAX_POINTS",
+    "Reading",
+    "calibration",
+    "force_range",
+    "linearity",
+    "range_linearity",
+    "sense",
+    "sensitivity_at_rest",
+]
 
 #: most rows of a calibration table (a bound on the work it asks for)
 MAX_POINTS = 10_000
@@ -201,7 +210,7 @@ def linearity(forces, pressures) -> float:
     slopes: set[float] = set()
     for sign in (1, -1):
         hull = _hull(x, y, sign)
-        slopes.update((y[b] - y[a]) / (x[b] - x[a]) for a, b in zip(hull[:-1], hull[1:], strict=True) if x[b] > x[a])
+        slopes.update((y[b] - y[a]) / (x[b] - x[a]) for a, b in itertools.pairwise(hull) if x[b] > x[a])
     width = min((np.ptp(y - b * x) for b in slopes), default=0.0)
     return float(100.0 * 0.5 * width / scale)
 

@@ -26,7 +26,7 @@ from pocket.core.solver import (
     Solver,
 )
 
-__all__ = ["SOLVERS", "record", "entry", "solver_options", "all_options"]
+__all__ = ["SOLVERS", "all_options", "entry", "record", "solver_options"]
 
 #: name -> record (in the order of their codes in VTK files, ``pocket.apps.vtk.files.CODES``: a new solver goes last)
 SOLVERS: dict[str, Solver] = {s.SOLVER.name: s.SOLVER for s in (shooting, fem, analytical, solid)}

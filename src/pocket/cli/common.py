@@ -18,9 +18,24 @@ from pocket.apps.solvers import SOLVERS, all_options, solver_options
 from pocket.core.inputs import quote
 from pocket.core.units import KINDS, has_unit
 
-__all__ = ["EXIT_CODES", "Parser", "HelpFormatter", "number", "model_value", "path_name", "physical_help",
-           "MODEL_UNITS", "PHYSICAL_UNITS", "add_solver_flags", "solver_flags", "flag",
-           "progress_bar", "warn", "report", "solvers_epilog"]
+__all__ = [
+    "EXIT_CODES",
+    "MODEL_UNITS",
+    "PHYSICAL_UNITS",
+    "HelpFormatter",
+    "Parser",
+    "add_solver_flags",
+    "flag",
+    "model_value",
+    "number",
+    "path_name",
+    "physical_help",
+    "progress_bar",
+    "report",
+    "solver_flags",
+    "solvers_epilog",
+    "warn",
+]
 
 EXIT_CODES = ("exit status: 0 success (also when the reader of the output stops early, as `| head` does); "
               "1 a solver failed (the message says where), output could not be "

@@ -17,7 +17,7 @@ from pocket.core.indenters import INDENTERS, Indenter
 
 from .common import model_value, path_name, physical_help
 
-__all__ = ["add_indenter_flags", "indenter_of", "indenter_table", "flag"]
+__all__ = ["add_indenter_flags", "flag", "indenter_of", "indenter_table"]
 
 _FLAGS = {"shape": "--indenter", "radius": "--indenter-radius", "file": "--indenter-file"}
 

@@ -33,7 +33,7 @@ from pocket.core.units import plain_warnings, quantity
 
 from .common import model_value, number, physical_help
 
-__all__ = ["add_rubber_flags", "add_fluid_flags", "material_of", "fluid_of", "law_flags"]
+__all__ = ["add_fluid_flags", "add_rubber_flags", "fluid_of", "law_flags", "material_of"]
 
 _UNITS = ("stresses in any one unit, rescaled to units of mu_0 (mu_0 = 1: the unit of the model and of the "
           "output; only their ratios matter)")

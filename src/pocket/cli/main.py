@@ -22,7 +22,7 @@ from pocket.core.errors import PocketError, exit_status
 
 from .common import EXIT_CODES, Parser
 
-__all__ = ["main", "COMMANDS"]
+__all__ = ["COMMANDS", "main"]
 
 #: modules adding subcommands, in the order of ``pocket --help``
 COMMANDS = ("pocket.cli.solve", "pocket.cli.run", "pocket.cli.fit", "pocket.cli.design", "pocket.cli.sense",

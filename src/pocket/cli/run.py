@@ -12,7 +12,7 @@ from pocket.core.errors import InputError
 
 from .common import path_name, progress_bar, solvers_epilog
 
-__all__ = ["register", "add_case_arguments", "case_from_args", "case_source", "warn_case"]
+__all__ = ["add_case_arguments", "case_from_args", "case_source", "register", "warn_case"]
 
 _SHOWN = ("load", "force_N", "pressure_Pa", "contact_area_m2", "height_m", "force", "pressure_ratio",
           "height_ratio")

@@ -25,7 +25,7 @@ from pocket.apps.sweep.workers import local_executor, stop
 
 from .common import path_name
 
-__all__ = ["register", "EXIT_CODES_VALIDATE"]
+__all__ = ["EXIT_CODES_VALIDATE", "register"]
 
 EXIT_CODES_VALIDATE = ("exit status: 0 every verdict passes; 1 a verdict fails, a solver failed or the report "
                        "could not be written (nothing is left behind); 2 bad input: an --out folder that cannot "

@@ -55,6 +55,7 @@ rather than failing to import.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import hashlib
 import importlib.metadata
@@ -88,7 +89,7 @@ CACHE_ENV = "POCKET_CACHE_DIR"
 _DISTRIBUTION = "pocket-mechanics"
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _version() -> str:
     """pocket's installed version, or ``unknown`` when run from sources that were never installed."""
     try:
@@ -115,7 +116,7 @@ def cache_roots() -> list[tuple[str, bool]]:
     return roots
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _package_stamp(folder: str) -> str:
     """sha256 of the names and contents of every ``.py`` file in ``folder``: what a cache entry depends on."""
     digest = hashlib.sha256()
@@ -167,9 +168,9 @@ if _DISK_CACHE:
             return None
 
     class _Impl(CompileResultCacheImpl):
-        # mypy infers numba's list as constructors taking (py_func, py_file), the signature of its own
-        # locators; numba only calls their from_function(py_func, py_file), which _Locator has
-        _locator_classes = [_Locator]  # type: ignore[list-item]
+        # a tuple: numba only iterates it, calling each locator's from_function(py_func, py_file), which
+        # _Locator has; mypy reads numba's list as one of its own locators' constructors
+        _locator_classes = (_Locator,)  # type: ignore[assignment]
 
     class _Cache(FunctionCache):
         """numba's function cache, where an entry that cannot be loaded or saved is a cache miss."""
@@ -196,10 +197,8 @@ if _DISK_CACHE:
                 return None
 
         def save_overload(self, sig, data):
-            try:
+            with contextlib.suppress(OSError):  # a full disk or a folder that went read-only: stay uncached
                 super().save_overload(sig, data)
-            except OSError:  # a full disk or a folder that went read-only: stay uncached
-                pass
 
 
 def _checking_interrupts(dispatcher):
@@ -229,8 +228,7 @@ def compiled(function=None, **options):
     dispatcher = _checking_interrupts(njit(function, error_model="numpy", **options))
     if not _DISK_CACHE:
         return dispatcher
-    try:
+    # no writable place at all, or a numba whose cache differs: compile in every process
+    with contextlib.suppress(Exception):
         dispatcher._cache = _Cache(function)  # what njit(cache=True) does, with the cache above
-    except Exception:  # no writable place at all, or a numba whose cache differs: compile in every process
-        pass
     return dispatcher

@@ -13,9 +13,20 @@ pocket, the scheduler lost). These exit with status 1.
 
 from __future__ import annotations
 
-__all__ = ["PocketError", "InputError", "OutOfRangeError", "ConvergenceError", "OutputError", "ClusterError",
-           "above_pressure_maximum", "exit_status", "beyond_range", "CLAMP_PLANE", "STRETCH_LIMIT",
-           "past_stretch_limit"]
+__all__ = [
+    "CLAMP_PLANE",
+    "STRETCH_LIMIT",
+    "ClusterError",
+    "ConvergenceError",
+    "InputError",
+    "OutOfRangeError",
+    "OutputError",
+    "PocketError",
+    "above_pressure_maximum",
+    "beyond_range",
+    "exit_status",
+    "past_stretch_limit",
+]
 
 #: what happens at the end of the compression range (unless the force has a maximum first)
 CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"

@@ -25,7 +25,7 @@ import math
 from .errors import InputError
 from .inputs import check_finite, quote
 
-__all__ = ["Fluid", "LIQUID", "gas", "as_fluid", "GAMMA_RANGE", "AMBIENT"]
+__all__ = ["AMBIENT", "GAMMA_RANGE", "LIQUID", "Fluid", "as_fluid", "gas"]
 
 #: polytropic exponents accepted: isothermal to monatomic adiabatic
 GAMMA_RANGE = (1.0, 5.0 / 3.0)

@@ -47,8 +47,18 @@ import numpy as np
 from .errors import InputError
 from .inputs import quote
 
-__all__ = ["Support", "Clamp", "Geometry", "Disc", "DISC", "GEOMETRIES", "as_geometry", "clamp_of", "formulation",
-           "posed"]
+__all__ = [
+    "DISC",
+    "GEOMETRIES",
+    "Clamp",
+    "Disc",
+    "Geometry",
+    "Support",
+    "as_geometry",
+    "clamp_of",
+    "formulation",
+    "posed",
+]
 
 T = TypeVar("T")
 

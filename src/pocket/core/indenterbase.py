@@ -21,7 +21,7 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["Indenter", "INDENTERS", "register", "Spell", "key_name"]
+__all__ = ["INDENTERS", "Indenter", "Spell", "key_name", "register"]
 
 #: how a key of an ``[indenter]`` table is named in messages (``indenter.radius``, or a command line's flag)
 Spell = Callable[[str], str]

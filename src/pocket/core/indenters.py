@@ -43,8 +43,20 @@ from .inputs import quote
 from .profiles import Shape, read_csv
 from .sphereindenter import SPHERE_RADII, Sphere, check_sphere_radius
 
-__all__ = ["Indenter", "INDENTERS", "register", "Plate", "Sphere", "Profile", "PLATE", "as_indenter",
-           "formulation", "posed", "SPHERE_RADII", "check_sphere_radius"]
+__all__ = [
+    "INDENTERS",
+    "PLATE",
+    "SPHERE_RADII",
+    "Indenter",
+    "Plate",
+    "Profile",
+    "Sphere",
+    "as_indenter",
+    "check_sphere_radius",
+    "formulation",
+    "posed",
+    "register",
+]
 
 T = TypeVar("T")
 

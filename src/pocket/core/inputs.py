@@ -21,23 +21,23 @@ import numpy as np
 from .errors import STRETCH_LIMIT, InputError
 
 __all__ = [
-    "check_finite",
+    "MAGNITUDES",
+    "MAX_FILE_BYTES",
+    "VOLUME_LIMIT",
     "check_alpha",
-    "check_positive",
-    "check_non_negative",
+    "check_choice",
+    "check_count",
+    "check_file",
+    "check_finite",
+    "check_flag",
     "check_force",
     "check_forces",
-    "check_count",
-    "check_tolerance",
-    "check_flag",
-    "check_choice",
-    "check_file",
+    "check_non_negative",
+    "check_positive",
     "check_range",
+    "check_tolerance",
     "check_volume",
     "quote",
-    "MAGNITUDES",
-    "VOLUME_LIMIT",
-    "MAX_FILE_BYTES",
 ]
 
 #: smallest relative tolerance a solver is asked for: a few ulps of a number of order one

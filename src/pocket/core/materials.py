@@ -57,8 +57,21 @@ import numpy as np
 from .errors import InputError
 from .inputs import MAGNITUDES, check_alpha, check_finite, check_range, quote
 
-__all__ = ["Parameter", "RubberLaw", "LAWS", "register", "Material", "mooney_rivlin", "energy", "check",
-           "as_material", "check_prestretch", "PRESTRETCH_LIMIT", "JM_RANGE", "EXPONENT_RANGE"]
+__all__ = [
+    "EXPONENT_RANGE",
+    "JM_RANGE",
+    "LAWS",
+    "PRESTRETCH_LIMIT",
+    "Material",
+    "Parameter",
+    "RubberLaw",
+    "as_material",
+    "check",
+    "check_prestretch",
+    "energy",
+    "mooney_rivlin",
+    "register",
+]
 
 #: the units a parameter may have
 UNITS = ("stress", "dimensionless")

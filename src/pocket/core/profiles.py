@@ -55,8 +55,16 @@ from .tables import MAX_BYTES, heading
 from .tables import rows as _rows
 from .units import is_plain, quantity
 
-__all__ = ["Shape", "MIN_ROWS", "MAX_BYTES", "CONVEX_TOLERANCE", "FLAT_TOLERANCE", "table", "functions",
-           "read_csv"]
+__all__ = [
+    "CONVEX_TOLERANCE",
+    "FLAT_TOLERANCE",
+    "MAX_BYTES",
+    "MIN_ROWS",
+    "Shape",
+    "functions",
+    "read_csv",
+    "table",
+]
 
 #: fewest rows of a table: the three of the flatness check and one more for the cubic spline's ends
 MIN_ROWS = 4

@@ -23,7 +23,7 @@ from .errors import InputError
 from .inputs import quote
 from .units import plain_warnings
 
-__all__ = ["SIZES", "THIN_WARNING", "THIN_LIMIT", "length_warnings", "thin_sheet"]
+__all__ = ["SIZES", "THIN_LIMIT", "THIN_WARNING", "length_warnings", "thin_sheet"]
 
 #: smallest and largest length (m) pocket accepts: 1 nm (a few molecules) to 1 km
 SIZES = (1e-9, 1e3)

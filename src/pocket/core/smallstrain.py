@@ -16,8 +16,16 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["pole_strain", "pressure_of_strain", "height_of_strain", "volume_of_strain", "height", "volume",
-           "height_constant", "strain_of_volume"]
+__all__ = [
+    "height",
+    "height_constant",
+    "height_of_strain",
+    "pole_strain",
+    "pressure_of_strain",
+    "strain_of_volume",
+    "volume",
+    "volume_of_strain",
+]
 
 
 def pole_strain(pressure: float) -> float:

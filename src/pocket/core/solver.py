@@ -77,9 +77,24 @@ from .inputs import check_file
 from .materials import Material
 from .states import CompressedState, InflatedState
 
-__all__ = ["Option", "Solver", "STEPS", "ENTRY_POINTS", "MaterialLike", "FluidLike", "GeometryLike", "Numbers",
-           "Progress", "Inflate", "InflateVolume", "InflationCurve", "Compress", "CompressionCurve", "CompressHeight",
-           "RangeEnd"]
+__all__ = [
+    "ENTRY_POINTS",
+    "STEPS",
+    "Compress",
+    "CompressHeight",
+    "CompressionCurve",
+    "FluidLike",
+    "GeometryLike",
+    "Inflate",
+    "InflateVolume",
+    "InflationCurve",
+    "MaterialLike",
+    "Numbers",
+    "Option",
+    "Progress",
+    "RangeEnd",
+    "Solver",
+]
 
 #: the two steps of the problem
 STEPS = ("inflate", "compress")

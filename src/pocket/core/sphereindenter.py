@@ -19,7 +19,7 @@ from .inputs import check_finite, quote
 from .sizes import length_warnings
 from .units import positive
 
-__all__ = ["Sphere", "SPHERE_RADII", "check_sphere_radius"]
+__all__ = ["SPHERE_RADII", "Sphere", "check_sphere_radius"]
 
 #: K = R_s / R of a sphere. From 1e-3: a smaller sphere is finer than the finite-element mesh resolves at the
 #: pole (with its default mesh the stretch at the contact is 0.4 % off the shooting solver's at K = 1e-3, 28 % at

@@ -36,7 +36,7 @@ from .indenters import PLATE, Indenter
 from .materials import Material
 from .offset import check_thickness, volume_correction
 
-__all__ = ["Profile", "InflatedState", "CompressedState", "CHECKS"]
+__all__ = ["CHECKS", "CompressedState", "InflatedState", "Profile"]
 
 #: the membrane's own validity, reported by every state after its KEYS
 CHECKS = ("tension_1_min", "tension_2_min", "wrinkled")

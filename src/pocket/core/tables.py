@@ -20,7 +20,7 @@ import re
 
 from .errors import InputError
 
-__all__ = ["MAX_BYTES", "SEPARATORS", "rows", "heading"]
+__all__ = ["MAX_BYTES", "SEPARATORS", "heading", "rows"]
 
 #: largest table file read (bytes): a bound on the work a file can ask for
 MAX_BYTES = 1_000_000

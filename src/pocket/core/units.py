@@ -21,8 +21,17 @@ import math
 from .errors import InputError
 from .inputs import quote
 
-__all__ = ["KINDS", "MAGNITUDES", "SUGGESTED", "quantity", "positive", "written_like", "is_plain", "has_unit",
-           "plain_warnings"]
+__all__ = [
+    "KINDS",
+    "MAGNITUDES",
+    "SUGGESTED",
+    "has_unit",
+    "is_plain",
+    "plain_warnings",
+    "positive",
+    "quantity",
+    "written_like",
+]
 
 #: kind -> (pint dimensionality, SI unit)
 KINDS = {

@@ -44,7 +44,7 @@ from .keys import PRESTRETCH, key_named, keys
 from .model import Setup
 from .start import MAX_TERMS
 
-__all__ = ["Request", "held", "uncertainties", "unit_warnings", "load", "parse"]
+__all__ = ["Request", "held", "load", "parse", "uncertainties", "unit_warnings"]
 
 _SECTIONS = {"name": None, "label": None, "sheet": ("material", "thickness", "prestretch"), "clamp": ("radius",),
              "initial": ("pressure",), "fit": ("data", "terms", "fix", "sigma", "prestretch"), "solver": ("name",)}

@@ -47,7 +47,7 @@ from .data import QUANTITIES
 from .model import Setup
 from .start import tension_estimate
 
-__all__ = ["MAX_STRETCH", "MAX_MODULUS", "MIN_MODULUS", "RUBBER_MODULI", "check", "modulus_warnings"]
+__all__ = ["MAX_MODULUS", "MAX_STRETCH", "MIN_MODULUS", "RUBBER_MODULI", "check", "modulus_warnings"]
 
 #: twice the largest stretch any rubber takes before it breaks (module docstring)
 MAX_STRETCH = 20.0

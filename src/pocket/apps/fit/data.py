@@ -29,7 +29,7 @@ from pocket.core.inputs import quote
 from pocket.core.tables import heading, rows
 from pocket.core.units import is_plain, quantity
 
-__all__ = ["QUANTITIES", "Dataset", "read", "CONTROLS"]
+__all__ = ["CONTROLS", "QUANTITIES", "Dataset", "read"]
 
 #: column name -> the kind of quantity it holds (``pocket.core.units.KINDS``)
 QUANTITIES = {"pressure": "pressure", "height": "length", "volume": "volume", "force": "force"}

@@ -50,7 +50,7 @@ from collections.abc import Callable
 
 from .stats import LINEARISED, Statistics, at_bound, quantile
 
-__all__ = ["FLOOR", "PROFILE", "LOG_LINEARISED", "intervals", "interval", "linearised"]
+__all__ = ["FLOOR", "LOG_LINEARISED", "PROFILE", "interval", "intervals", "linearised"]
 
 #: residual RMS below which a fit's intervals are not profiled (the solvers' noise, not the data's)
 FLOOR = 1e-8

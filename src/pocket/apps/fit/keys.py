@@ -32,7 +32,7 @@ from collections.abc import Callable
 from pocket.core.errors import InputError
 from pocket.core.materials import LAWS, Material
 
-__all__ = ["Key", "PRESTRETCH", "keys", "key_named"]
+__all__ = ["PRESTRETCH", "Key", "key_named", "keys"]
 
 #: the key of the clamped sheet's prestretch (the case file's ``sheet.prestretch``)
 PRESTRETCH = "prestretch"

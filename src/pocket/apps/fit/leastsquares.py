@@ -48,7 +48,7 @@ from .model import PENALTY, Setup, predict, residuals
 from .start import starts
 from .stats import Statistics, normal_inverse, statistics
 
-__all__ = ["Fit", "fit", "RUNS", "PROBED", "PRESTRETCHES"]
+__all__ = ["PRESTRETCHES", "PROBED", "RUNS", "Fit", "fit"]
 
 #: starts probed (the best by their cost), for the laws ``PROBED``
 RUNS = 4

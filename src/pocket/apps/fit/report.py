@@ -22,7 +22,7 @@ from .data import CONTROLS
 from .leastsquares import Fit
 from .model import predict
 
-__all__ = ["KIND", "NOMINAL_THICKNESS", "summary", "case_text", "write", "FIGURE", "CASE"]
+__all__ = ["CASE", "FIGURE", "KIND", "NOMINAL_THICKNESS", "case_text", "summary", "write"]
 
 #: the kind of folder ``write`` writes (its ownership marker)
 KIND = "fit result"

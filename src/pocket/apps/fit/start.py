@@ -40,7 +40,7 @@ from pocket.core.materials import Material, energy
 
 from .model import Setup
 
-__all__ = ["SMALL", "SHAPES", "MAX_TERMS", "flat_tension", "tension_estimate", "starts"]
+__all__ = ["MAX_TERMS", "SHAPES", "SMALL", "flat_tension", "starts", "tension_estimate"]
 
 #: rows of each test used for the small-strain estimate
 SMALL = 3

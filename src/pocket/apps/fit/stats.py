@@ -42,7 +42,7 @@ import numpy as np
 
 from pocket.core.materials import Material
 
-__all__ = ["CORRELATED", "LINEARISED", "Statistics", "statistics", "quantile", "normal_inverse", "at_bound"]
+__all__ = ["CORRELATED", "LINEARISED", "Statistics", "at_bound", "normal_inverse", "quantile", "statistics"]
 
 #: |correlation| above which two parameters are reported as determined only together
 CORRELATED = 0.99

@@ -23,7 +23,7 @@ from pocket.core.errors import ClusterError, InputError
 
 from ..provenance import version
 
-__all__ = ["connect", "ClusterExecutor", "PATIENCE"]
+__all__ = ["PATIENCE", "ClusterExecutor", "connect"]
 
 #: how long (s) a sweep waits, by default, for a worker to join a cluster that has none
 PATIENCE = 60.0

@@ -70,7 +70,7 @@ from ..rubbers import prestretched
 from ..solvers import entry, record
 from .journal import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
 
-__all__ = ["COLUMNS", "STATUSES", "MAX_POINTS", "solve_point", "solve_curve", "run_sweep"]
+__all__ = ["COLUMNS", "MAX_POINTS", "STATUSES", "run_sweep", "solve_curve", "solve_point"]
 
 #: most points of one sweep (a bound on the work and on the memory of its bookkeeping)
 MAX_POINTS = 100_000

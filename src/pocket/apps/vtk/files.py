@@ -116,8 +116,16 @@ from .indentermesh import indenter_mesh, reach_of
 from .resampling import resample, series_radii
 from .revolve import revolve
 
-__all__ = ["profile_mesh", "surface_mesh", "write_state", "write_series", "field_data", "SERIES_POINTS", "KIND",
-           "CODES"]
+__all__ = [
+    "CODES",
+    "KIND",
+    "SERIES_POINTS",
+    "field_data",
+    "profile_mesh",
+    "surface_mesh",
+    "write_series",
+    "write_state",
+]
 
 #: the kind of folder ``write_series`` writes (``pocket.apps.folders.check_replaceable``)
 KIND = "VTK series"

@@ -22,7 +22,7 @@ from pocket.core.indenters import INDENTERS, Indenter
 
 from .revolve import revolve
 
-__all__ = ["RINGS", "PLATE_MARGIN", "indenter_mesh", "reach_of"]
+__all__ = ["PLATE_MARGIN", "RINGS", "indenter_mesh", "reach_of"]
 
 #: radii on the indenter's meridian
 RINGS = 41
