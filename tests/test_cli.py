@@ -534,6 +534,26 @@ def test_interrupt_is_one_line_and_130(capsys, monkeypatch):
     assert err == "pocket: interrupted\n"
 
 
+def _interrupted(hold, args, release=True, **popen) -> None:
+    """Run the held command ``args`` (``holds.Hold.popen``, ``popen`` its further keywords), send it SIGINT where
+    it waits (then release the hold, unless ``release`` is False: the compiler's hold is never let go), and check
+    how it ended: status 130, stderr exactly `pocket: interrupted`, nothing on stdout."""
+    import signal
+
+    proc = hold.popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, **popen)
+    try:
+        assert hold.arrived(), proc.communicate()
+        proc.send_signal(signal.SIGINT)
+        if release:
+            hold.release()
+        out, err = proc.communicate(timeout=600)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130, err
+    assert err == b"pocket: interrupted\n", err
+    assert out == b"", err
+
+
 @pytest.mark.slow
 def test_sigint_reaches_a_held_command_from_a_test_run_that_ignores_it(tmp_path):
     """A test run started in the background (`pytest &`, nohup, a runner without a terminal) has SIGINT
@@ -545,18 +565,8 @@ def test_sigint_reaches_a_held_command_from_a_test_run_that_ignores_it(tmp_path)
     from holds import SHOOTING_INFLATE, Hold
 
     with Hold(tmp_path, SHOOTING_INFLATE) as hold:
-        proc = hold.popen(["inflate", "--alpha", "0.3", "--pressure", "0.3"], stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN))
-        try:
-            assert hold.arrived(), proc.communicate()
-            proc.send_signal(signal.SIGINT)
-            hold.release()
-            out, err = proc.communicate(timeout=600)
-        finally:
-            proc.kill()
-    assert proc.returncode == 130, err
-    assert err == b"pocket: interrupted\n", err
-    assert out == b"", err
+        _interrupted(hold, ["inflate", "--alpha", "0.3", "--pressure", "0.3"],
+                     preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN))
 
 
 @pytest.mark.slow
@@ -564,24 +574,11 @@ def test_sigint_to_a_long_fe_solve(tmp_path):
     """A real SIGINT to an FE curve while it solves its second force inside compiled code (the solve
     waits there for the test): status 130, stderr exactly `pocket: interrupted`, nothing on stdout, no
     --vtk folder."""
-    import signal
-
     from holds import FE_NEXT_POINT, Hold
 
     with Hold(tmp_path, FE_NEXT_POINT) as hold:
-        proc = hold.popen(["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.5", "1", "--solver",
-                           "fem", "--elements", "400", "--vtk", str(tmp_path / "v")],
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-        try:
-            assert hold.arrived(), proc.communicate()
-            proc.send_signal(signal.SIGINT)
-            hold.release()
-            out, err = proc.communicate(timeout=600)
-        finally:
-            proc.kill()
-    assert proc.returncode == 130, err
-    assert err == b"pocket: interrupted\n", err
-    assert out == b"", err
+        _interrupted(hold, ["compress", "--alpha", "0.3", "--pressure", "0.3", "--force", "0.5", "1", "--solver",
+                            "fem", "--elements", "400", "--vtk", str(tmp_path / "v")])
     assert [p.name for p in tmp_path.iterdir()] == [hold.script.name]  # no --vtk folder
 
 
@@ -591,21 +588,11 @@ def test_sigint_during_compilation_is_not_lost(tmp_path):
     object-cache callback runs, where the KeyboardInterrupt is ignored (the compiler waits there for the
     test): the run still ends, status 130, stderr exactly `pocket: interrupted`, nothing on stdout."""
     import os
-    import signal
 
     from holds import IN_COMPILER, Hold
 
     from pocket.core.compiled import CACHE_ENV
 
     with Hold(tmp_path, IN_COMPILER) as hold:
-        proc = hold.popen(["inflate", "--alpha", "0.3", "--pressure", "0.3"], stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, env=os.environ | {CACHE_ENV: str(tmp_path / "cache")})
-        try:
-            assert hold.arrived(), proc.communicate()
-            proc.send_signal(signal.SIGINT)
-            out, err = proc.communicate(timeout=600)
-        finally:
-            proc.kill()
-    assert proc.returncode == 130, err
-    assert err == b"pocket: interrupted\n", err
-    assert out == b"", err
+        _interrupted(hold, ["inflate", "--alpha", "0.3", "--pressure", "0.3"], release=False,
+                     env=os.environ | {CACHE_ENV: str(tmp_path / "cache")})
