@@ -22,7 +22,8 @@ from pocket.validation.plan import RANGE_FRACTION
 from pocket.cli import main
 from pocket.core.indenters import Sphere
 
-pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
+#: the slow lane (pytest -m slow); one worker computes the module's report for all its tests (--dist loadgroup)
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("report")]
 
 
 @pytest.fixture(scope="module")
