@@ -117,6 +117,7 @@ def test_gent_jm_interval_stays_positive_where_linearised_reaches_zero():
 
 
 @pytest.mark.slow
+@pytest.mark.study  # 25 Gent fits take a minute and a half: a study run on demand, ``pytest -m study``
 def test_gent_intervals_cover_the_truth():
     """The reviewer's scenario, N = 25 Gent fits (mu = 0.3 MPa, Jm = 10; ten heights to Phat = 0.6) from the fit's
     own starts, noise 0.1 % to 3 %: each 95 % interval covers the truth in at least 21 of 25 (module docstring),
@@ -127,8 +128,9 @@ def test_gent_intervals_cover_the_truth():
     assert all(s.intervals[s.names.index("jm")][0] > 0.0 for s in runs)
 
 
-#: laws whose 25 fits take many minutes (Yeoh's three parameters): a study run on demand, ``pytest -m study``
-_STUDIES = {"yeoh"}
+#: laws whose 25 fits take many minutes (Yeoh's three parameters) or most of one (Mooney-Rivlin): a study run on
+#: demand, ``pytest -m study``
+_STUDIES = {"yeoh", "mooney-rivlin"}
 
 
 @pytest.mark.slow

@@ -22,8 +22,7 @@ from pocket.validation.plan import RANGE_FRACTION
 from pocket.cli import main
 from pocket.core.indenters import Sphere
 
-#: the slow lane (pytest -m slow); one worker computes the module's report for all its tests (--dist loadgroup)
-pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("report")]
+pytestmark = pytest.mark.slow  # the slow lane (pytest -m slow)
 
 
 @pytest.fixture(scope="module")
