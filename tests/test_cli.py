@@ -82,6 +82,7 @@ def test_bad_input_is_one_line_and_exit_2(capsys, argv, message):
     assert message in err, err
 
 
+@pytest.mark.slow
 def test_console_script_whole_process():
     """The installed entry point: exit status and stderr of a real process, no traceback."""
     proc = subprocess.run([sys.executable, "-m", "pocket.cli", "compress", "--alpha", "0.3",
@@ -171,6 +172,7 @@ def test_fem_solver_same_keys_as_shooting_plus_its_own(capsys, tmp_path):
     assert sorted(p.name for p in (tmp_path / "fe").glob("*.pvd")) == ["indenter.pvd", "profile.pvd", "surface.pvd"]
 
 
+@pytest.mark.slow
 def test_closed_pipe_ends_quietly():
     """`pocket ... | head`: the reader is gone before the output is written (its end of the
     pipe is closed here first, so the write must fail); no traceback, status 0 (the run passed)."""
@@ -182,6 +184,7 @@ def test_closed_pipe_ends_quietly():
     assert err == ""
 
 
+@pytest.mark.slow
 def test_python_dash_m_pocket_runs_the_command():
     """Exact answer: `python -m pocket --version` prints what `pocket --version` does, from the installed
     metadata, and `python -m pocket inflate` solves (status 0, JSON with the asked pressure)."""

@@ -139,6 +139,7 @@ data = ["b.csv"]
 """
 
 
+@pytest.mark.slow
 def test_case_file_names_the_data(tmp_path, capsys):
     """A case file with a [fit] table gives the same fit as the flags it replaces (the same computation: the same
     numbers to the last bit), the data file relative to the case file's folder, run from elsewhere."""

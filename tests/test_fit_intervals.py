@@ -101,6 +101,7 @@ def test_profile_not_bounded_above_is_infinite_and_stays_above_the_bound():
     assert hi == pytest.approx(30.0, rel=0.01), (lo, hi)
 
 
+@pytest.mark.slow
 def test_gent_jm_interval_stays_positive_where_linearised_reaches_zero():
     """The reviewer's case: a Gent rubber (mu = 0.3 MPa, Jm = 10), ten heights to Phat = 0.6 with 3 % noise
     (seed 2). The data see the locking weakly: the linearised interval Jm +- t SE reaches Jm <= 0, which the law
@@ -150,6 +151,7 @@ def test_every_law_intervals_cover_the_truth(law):
     assert bounded is None or all(s.intervals[s.names.index(bounded)][0] > 0.0 for s in runs)
 
 
+@pytest.mark.slow
 def test_fit_report_names_the_interval_method(tmp_path, capsys):
     """The text report says which method made each interval, and the JSON gives it per parameter with the same
     ends as the text. Data rounded as a gauge reads them (kPa and mm to 0.01) have a residual well above the

@@ -205,6 +205,7 @@ def test_help_names_each_options_unit(command, capsys):
     assert rule in " ".join(text.split())
 
 
+@pytest.mark.slow
 def test_design_given_thickness_gives_pressure_and_height(button, capsys):
     """Round trip: the forward design's T from (R, H0, E, F, H/H0 = 0.8), fed back with --thickness and the same
     H/H0, gives the same P_I and H0; so does the pressed height H = 0.8 H0 = 8 mm as the target, and so does
@@ -240,6 +241,7 @@ def test_design_given_thickness_and_height_gives_pressure_and_feel(button):
                                                                   button.paper_thickness_m)
 
 
+@pytest.mark.slow
 def test_gas_button_given_thickness_round_trip():
     """The adiabatic air-filled button: the forward design's T fed back (T known, so Phat_atm = P_atm R / (E T)
     is known too) gives its P_I and H0 (1e-6, as above)."""

@@ -74,6 +74,7 @@ def _source_tree(tmp_path) -> pathlib.Path:
     return tmp_path
 
 
+@pytest.mark.slow
 def test_import_linter_contracts_hold(tmp_path):
     """import-linter's layers and independence contracts (pyproject.toml) are kept by the source: every one of
     them, counted in pyproject.toml, reported kept."""
@@ -118,6 +119,7 @@ print(json.dumps([message, sorted(m for m in sys.modules if m == name or m.start
 
 
 @pytest.mark.parametrize("name", ["shooting", "fem", "analytical", "meshes", "validation"])
+@pytest.mark.slow
 def test_no_second_copy_from_the_repository_root(name):
     """Exact answer: from the repository's root, where the folder ``name`` is on ``sys.path``, ``import name``
     fails with one line that says to import ``pocket.<name>``, and leaves no module of that name loaded;

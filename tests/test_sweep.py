@@ -341,6 +341,7 @@ def test_full_disk_at_the_final_rewrite_keeps_the_journal(reference, tmp_path, m
     assert path.read_bytes() == reference.read_bytes()
 
 
+@pytest.mark.slow
 def test_file_size_limit_in_a_real_process(reference, tmp_path):
     """A real write failure (RLIMIT_FSIZE: writes past it fail with EFBIG, as on a full disk) in the
     installed command: exit 1, one line, no traceback, complete rows only, within the limit; the
@@ -445,6 +446,7 @@ def test_a_bad_scheduler_address_is_input(tmp_path, capsys):
     assert not path.exists()
 
 
+@pytest.mark.slow
 def test_another_solver_or_options_computes_its_own_points(tmp_path, capsys):
     """The solver and its options are part of a point: the same grid with another solver, or other
     options, computes its points and keeps the others' rows; each rerun reuses its own."""

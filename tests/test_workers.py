@@ -59,6 +59,7 @@ def _wait(condition, timeout: float) -> bool:
     return condition()
 
 
+@pytest.mark.slow
 def test_kill_9_of_a_sweep_ends_its_workers(tmp_path):
     """Exact answer: after SIGKILL to `pocket sweep` (its output piped, as into `| tee`), its two
     busy workers (each inside its task, never released) are gone and the pipe reaches end-of-file
@@ -80,6 +81,7 @@ def test_kill_9_of_a_sweep_ends_its_workers(tmp_path):
             _kill(workers | _children(proc.pid))
 
 
+@pytest.mark.slow
 def test_portable_watchdog_alone(tmp_path):
     """The fallback without prctl: workers started with only the parent watchdog still end when
     their parent is killed (here a script owning a pool whose workers sleep)."""
@@ -106,6 +108,7 @@ def test_portable_watchdog_alone(tmp_path):
         _kill(workers | _children(proc.pid))
 
 
+@pytest.mark.slow
 def test_ctrl_c_ends_the_sweep_at_once_with_one_line(tmp_path):
     """Exact answer: SIGINT to the sweep's process group (what Ctrl-C does) while both workers are
     inside their tasks, which never end by themselves (so a sweep that waited for them would never
