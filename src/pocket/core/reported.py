@@ -47,16 +47,16 @@ UNITS = {
 
 
 def _law_parameters() -> dict[str, Reported]:
-    """Every law's parameters (``pocket.core.materials.LAWS``), each with its own help; a name shared by two
-    laws (Gent's and neo-Hookean's ``mu``) is described once, naming both."""
-    laws: dict[str, list[str]] = {}
-    out: dict[str, Reported] = {}
+    """Every law's parameters (``pocket.core.materials.LAWS``), each with its own help and the laws that have
+    it; a name two laws share (``mu``) is described once, with each law's help."""
+    helps: dict[str, dict[str, list[str]]] = {}
+    units: dict[str, str] = {}
     for law in LAWS.values():
         for parameter in law.parameters:
-            laws.setdefault(parameter.name, []).append(law.name)
-            unit = "stress" if parameter.unit == "stress" else "1"
-            out.setdefault(parameter.name, Reported(unit, parameter.help))
-    return {name: Reported(r.unit, f"{r.meaning} ({', '.join(laws[name])})") for name, r in out.items()}
+            helps.setdefault(parameter.name, {}).setdefault(parameter.help, []).append(law.name)
+            units[parameter.name] = "stress" if parameter.unit == "stress" else "1"
+    return {name: Reported(units[name], "; ".join(f"{text} ({', '.join(laws)})" for text, laws in by.items()))
+            for name, by in helps.items()}
 
 
 #: the state's own keys (``InflatedState.KEYS``, ``CompressedState.KEYS``)
