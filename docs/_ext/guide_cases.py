@@ -18,40 +18,38 @@ from pocket.core.fluids import AMBIENT, GAMMA_RANGE
 from pocket.core.indenters import INDENTERS, SPHERE_RADII
 from pocket.core.materials import LAWS, PRESTRETCH_LIMIT
 
-_PLAIN = "plain: SI, with a warning"
-
 #: key -> (what is written, default, meaning) for the keys no record describes; a law's parameters, the indenter's
 #: shape-specific keys and the solvers' options come from their records
 WRITTEN = {
     "name": ("text", "the case file's path", "the case's name, in the results' messages and headers"),
     "label": ("text", "", "a longer description (the validation report's legends)"),
-    "tags": ("list of text", "[]", "labels; the validation suite's `headline` picks its main pocket"),
-    "sheet.thickness": (f"length ({_PLAIN})", "required", "T, the unstretched sheet's thickness"),
+    "tags": ("a list of text", "[]", "labels; the validation suite's `headline` picks its main pocket"),
+    "sheet.thickness": ("a length", "required", "T, the unstretched sheet's thickness"),
     "sheet.material": ("text", rubbers.DEFAULT_LAW, f"the rubber's law: {', '.join(LAWS)}"),
-    "sheet.modulus": (f"pressure ({_PLAIN})", "",
+    "sheet.modulus": ("a pressure", "",
                       "Mooney-Rivlin only, with `alpha` instead of `c1` and `c2`: E = 6 (C1 + C2)"),
-    "sheet.alpha": ("number", "", "Mooney-Rivlin only, with `modulus`: alpha = C2 / C1"),
-    "sheet.prestretch": ("number", "1", f"lambda_p, the equibiaxial stretch the sheet is clamped with, 1 to "
+    "sheet.alpha": ("a number", "", "Mooney-Rivlin only, with `modulus`: alpha = C2 / C1"),
+    "sheet.prestretch": ("a number", "1", f"lambda_p, the equibiaxial stretch the sheet is clamped with, 1 to "
                                         f"{PRESTRETCH_LIMIT:g}; thickness and parameters stay the unstretched "
                                         "rubber's"),
-    "clamp.radius": (f"length ({_PLAIN})", "required", "R, the clamp's radius"),
+    "clamp.radius": ("a length", "required", "R, the clamp's radius"),
     "fluid.kind": ("text", "liquid", f"{' or '.join(rubbers.FLUIDS)}: a liquid keeps its volume, an ideal gas "
                                      "sealed at P_I is compressed"),
-    "fluid.ambient": (f"pressure ({_PLAIN})", f"{AMBIENT / 1000:g} kPa", "a gas's ambient (absolute) pressure"),
-    "fluid.gamma": ("number", "1", f"a gas's polytropic exponent, {GAMMA_RANGE[0]:g} (isothermal) to 5/3 "
+    "fluid.ambient": ("a pressure", f"{AMBIENT / 1000:g} kPa", "a gas's ambient (absolute) pressure"),
+    "fluid.gamma": ("a number", "1", f"a gas's polytropic exponent, {GAMMA_RANGE[0]:g} (isothermal) to 5/3 "
                                    "(1.4: air compressed adiabatically)"),
-    "initial.pressure": (f"pressure ({_PLAIN})", "one of three", "P_I, the gauge pressure the pocket is inflated "
+    "initial.pressure": ("a pressure", "one of three", "P_I, the gauge pressure the pocket is inflated "
                                                                  "to and sealed at"),
-    "initial.height": (f"length ({_PLAIN})", "one of three", "H0, the inflated pole height (pocket solves for P_I)"),
-    "initial.volume": (f"volume ({_PLAIN})", "one of three", "the inflated volume under the sheet (pocket solves "
+    "initial.height": ("a length", "one of three", "H0, the inflated pole height (pocket solves for P_I)"),
+    "initial.volume": ("a volume", "one of three", "the inflated volume under the sheet (pocket solves "
                                                              "for P_I; not with the analytical solver)"),
-    "loads.forces": (f"list of forces ({_PLAIN})", "one of two", f"the forces F, at most {cases.MAX_LOADS}"),
-    "loads.heights": (f"list of lengths ({_PLAIN})", "one of two",
+    "loads.forces": ("a list of forces", "one of two", f"the forces F, at most {cases.MAX_LOADS}"),
+    "loads.heights": ("a list of lengths", "one of two",
                       "the indenter's lowest point H above the clamp plane, one state each (travel control)"),
     "indenter.shape": ("text", "plate", f"what presses: {', '.join(INDENTERS)}"),
-    "indenter.radius": (f"length ({_PLAIN})", "required for a sphere",
+    "indenter.radius": ("a length", "required for a sphere",
                         f"a sphere's radius R_s, with R_s / R from {SPHERE_RADII[0]:g} to {SPHERE_RADII[1]:g}"),
-    "indenter.file": ("file name", "required for a profile", "a profile's CSV table (`radius [mm],height [mm]`, "
+    "indenter.file": ("a file name", "required for a profile", "a profile's CSV table (`radius [mm],height [mm]`, "
                                                              "from the axis out), relative to the case file"),
     "solver.name": ("text", "shooting", f"the solver: {', '.join(SOLVERS)}"),
 }
@@ -71,33 +69,43 @@ def _law_rows() -> dict[str, tuple[str, str, str]]:
     meanings: dict[str, list[str]] = {}
     for law in LAWS.values():
         for p in law.parameters:
-            kind = f"stress ({_PLAIN})" if p.unit == "stress" else "number"
-            kinds.setdefault(p.name, {}).setdefault(f"list of {kind}" if p.listed else kind, []).append(law.name)
+            kind = ("a list of stresses" if p.listed else "a stress") if p.unit == "stress" else (
+                "a list of numbers" if p.listed else "a number")
+            kinds.setdefault(p.name, {}).setdefault(kind, []).append(law.name)
             meanings.setdefault(p.name, []).append(f"{law.name}: {p.help}")
     out = {}
     for name, by in kinds.items():
         kind = next(iter(by)) if len(by) == 1 else "; ".join(f"{k} ({', '.join(laws)})" for k, laws in by.items())
-        out[f"sheet.{name}"] = (kind, "required by its law", "; ".join(meanings[name]))
+        needed = "c1 and c2, or modulus and alpha" if name in ("c1", "c2") else "required by its law"
+        out[f"sheet.{name}"] = (kind, needed, "; ".join(meanings[name]))
     return out
 
 
+def _shown(value) -> str:
+    """A solver option's default as a case file writes it (``1e-10``, ``256``, ``true``; none: a dash)."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return str(value).lower()
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
 def _solver_rows() -> dict[str, tuple[str, str, str]]:
-    out: dict[str, tuple[str, str, str]] = {}
+    """solver.<option> -> row, for every solver's options; an option two solvers share says each one's."""
+    kinds = {"path": "a file name", "bool": "true or false", "float": "a number", "int": "an integer"}
+    parts: dict[str, list[tuple[str, str, str, str]]] = {}
     for solver in SOLVERS.values():
         for option in solver.options:
-            key = f"solver.{option.name}"
-            default = "" if option.default is None else str(option.default).lower() if isinstance(
-                option.default, bool) else f"{option.default:g}" if isinstance(option.default, float) else str(
-                option.default)
-            kind = {"path": "file name", "choice": " or ".join(option.choices), "bool": "true or false"}.get(
-                option.kind, "number" if option.kind == "float" else "integer")
-            if key == f"solver.{cases.THICKNESS_RATIO}":
-                text = "not in a case: the solid takes T/R from sheet.thickness / clamp.radius"
-            else:
-                text = option.help
-            prior = out.get(key)
-            line = f"{solver.name}: {text}" + (f" (default {default})" if default and "default" not in text else "")
-            out[key] = (kind, "the solver's", line if prior is None else f"{prior[2]}; {line}")
+            kind = " or ".join(option.choices) if option.kind == "choice" else kinds[option.kind]
+            default, text = _shown(option.default), option.help
+            if option.name == cases.THICKNESS_RATIO:  # a case's sheet says it: the reader refuses the key
+                default, text = "sheet.thickness / clamp.radius", "T/R, never written in a case file (refused)"
+            parts.setdefault(f"solver.{option.name}", []).append((solver.name, kind, default, text))
+    out = {}
+    for key, each in parts.items():
+        many = len(each) > 1
+        out[key] = (each[0][1], "; ".join(f"{n} {d}" if many else d for n, _, d, _ in each if d),
+                    "; ".join(f"{n}: {text}" for n, _, _, text in each))
     return out
 
 

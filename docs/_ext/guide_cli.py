@@ -72,14 +72,14 @@ def page() -> str:
     """Every subcommand under a heading: what it is for, its usage, its arguments, its epilog."""
     with _columns():
         parser = _parser()
-        out = [HEADER, f"`pocket --version` prints the version; every subcommand takes `-h` / `--help`.\n"]
+        out = [HEADER, "`pocket --version` prints the version; every subcommand takes `-h` / `--help`.\n"]
         for name, summary, sub in _commands(parser):
             out.append(f"\n### `pocket {name}`\n")
             if summary and not (sub.description or "").startswith(summary):
                 out.append(f"{cell(summary[0].upper() + summary[1:])}.\n")
             out.append(f"```text\n{sub.format_usage().strip()}\n```\n")
             if sub.description:
-                out.append(f"{cell(sub.description)}\n")
+                out.append(f"{cell(sub.description[0].upper() + sub.description[1:])}\n")
             out.append(_options(sub))
             if sub.epilog:
                 out.append(f"```text\n{sub._get_formatter()._fill_text(sub.epilog, 100, '')}\n```\n")

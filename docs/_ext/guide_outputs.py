@@ -32,7 +32,8 @@ def model_keys() -> str:
 
 def si_columns() -> str:
     """The applications' columns, then the rubber's stresses in units of mu_0."""
-    stresses = {name: columns.column(columns.parameter_column(name)) for name in reported.REPORTED if name in columns.STRESSES}
+    stresses = {name: columns.column(columns.parameter_column(name))
+                for name in reported.REPORTED if name in columns.STRESSES}
     return (HEADER + table(("column", "unit", "meaning"), _rows(columns.COLUMNS)) + "\n"
             + "The rubber's stresses, in units of its small-strain shear modulus mu_0 (Gent's `jm`, Ogden's "
               "`exponents` and the `prestretch` are plain numbers under their own names):\n\n"
