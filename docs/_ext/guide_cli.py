@@ -95,3 +95,36 @@ def solvers() -> str:
              ", ".join(code(f"--{o.name.replace('_', '-')}") for o in s.options) or "none")
             for s in SOLVERS.values()]
     return HEADER + table(("solver", "what it is", "what it computes", "options"), rows)
+
+
+def ranges() -> str:
+    """The input ranges checked before anything is solved, from the constants the checks use."""
+    from pocket.apps.cases import MAX_LOADS
+    from pocket.apps.sweep.grid import MAX_POINTS
+    from pocket.core import inputs, sizes, units
+    from pocket.core.fluids import GAMMA_RANGE
+    from pocket.core.indenters import SPHERE_RADII
+    from pocket.core.materials import EXPONENT_RANGE, JM_RANGE, PRESTRETCH_LIMIT
+
+    def g(x: float) -> str:
+        return f"{x:.3g}".replace("e+0", "e").replace("e+", "e").replace("e-0", "e-")
+
+    low, high = inputs.MAGNITUDES
+    rows = [
+        ("a pressure Phat or Phat_atm, a penalty", f"{g(low)} to {g(high)}"),
+        ("a force Fhat", f"0 to {g(high)}"),
+        ("Mooney-Rivlin's alpha = C2 / C1", f"above -1, at most {g(high)}"),
+        ("the prestretch lambda_p", f"1 to {PRESTRETCH_LIMIT:g}"),
+        ("Gent's Jm", f"at least {g(JM_RANGE[0])}"),
+        ("an Ogden exponent's \\|alpha_p\\|", f"{EXPONENT_RANGE[0]:g} to {EXPONENT_RANGE[1]:g}"),
+        ("a gas's gamma", f"{GAMMA_RANGE[0]:g} to 5/3"),
+        ("a sphere's K = R_s / R", f"{g(SPHERE_RADII[0])} to {g(SPHERE_RADII[1])}"),
+        ("a volume V / R^3 (volume control)", f"at most {g(inputs.VOLUME_LIMIT)}"),
+        ("a length in physical units", f"{g(sizes.SIZES[0])} m to {g(sizes.SIZES[1])} m"),
+        ("any physical value, in SI", f"nonzero magnitudes {g(units.MAGNITUDES[0])} to {g(units.MAGNITUDES[1])}"),
+        ("the sheet's T / R for a membrane solver", f"a warning above {sizes.THIN_WARNING:g}, refused from "
+                                                   f"{sizes.THIN_LIMIT:g}"),
+        ("the loads of a case file", f"at most {MAX_LOADS}"),
+        ("the points of a sweep", f"at most {MAX_POINTS}"),
+    ]
+    return HEADER + table(("input", "range"), [(r[0], cell(r[1])) for r in rows])

@@ -23,6 +23,7 @@ FRAGMENTS = {
     "commands.md": guide_cli.page,
     "exit-codes.md": guide_cli.exit_codes,
     "solvers.md": guide_cli.solvers,
+    "ranges.md": guide_cli.ranges,
     "units.md": guide_outputs.units,
     "model-keys.md": guide_outputs.model_keys,
     "si-columns.md": guide_outputs.si_columns,
