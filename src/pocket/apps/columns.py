@@ -105,9 +105,29 @@ COLUMNS: dict[str, Reported] = {
 
 
 def column(name: str) -> Reported:
-    """The unit and meaning of the column ``name``: ``COLUMNS``'s, a law's stress in units of mu_0 (``c1_per_mu0``:
-    unit ``mu_0``), or a model's key (``pocket.core.reported``); a ``KeyError`` for any other name, a bare stress
-    (``c1``) included, for a stress column says its unit."""
+    """The unit and meaning of a column of pocket's results.
+
+    Parameters
+    ----------
+    name : str
+        A column of ``pocket run``'s CSV and JSON rows or of a sweep file.
+
+    Returns
+    -------
+    pocket.core.reported.Reported
+        ``COLUMNS``'s entry, a law's stress in units of mu_0 (``c1_per_mu0``: unit ``mu_0``, the parameter's
+        meaning), or a model's key (``pocket.core.reported.reported``).
+
+    Raises
+    ------
+    KeyError
+        For any other name, a bare stress (``c1``) included: a stress column says its unit.
+
+    Examples
+    --------
+    >>> column("pressure_Pa").unit, column("c10_per_mu0").unit, column("height").unit
+    ('Pa', 'mu_0', 'R')
+    """
     if name in COLUMNS:
         return COLUMNS[name]
     if name.endswith(PER_MU0) and name[:-len(PER_MU0)] in STRESSES:
@@ -118,6 +138,17 @@ def column(name: str) -> Reported:
 
 
 def documented(names: Iterable[str]) -> None:
-    """Look up every column of ``names`` (``column``): a ``KeyError`` for the first that is in no table."""
+    """Check that every column is documented.
+
+    Parameters
+    ----------
+    names : iterable of str
+        The columns a writer is about to write.
+
+    Raises
+    ------
+    KeyError
+        For the first of ``names`` that ``column`` does not know.
+    """
     for name in names:
         column(name)

@@ -169,7 +169,28 @@ REPORTED: dict[str, Reported] = {key: entry for group in GROUPS.values() for key
 
 
 def reported(key: str) -> Reported:
-    """The unit and meaning of the reported ``key``; a ``KeyError`` for a key not in ``REPORTED``."""
+    """The unit and meaning of a reported key.
+
+    Parameters
+    ----------
+    key : str
+        A key of a state's ``scalars`` (``"pressure_ratio"``, ``"force_reaction"``) or ``"warnings"``.
+
+    Returns
+    -------
+    Reported
+        Its unit (a key of ``UNITS``) and meaning.
+
+    Raises
+    ------
+    KeyError
+        For a key not in ``REPORTED``, naming it.
+
+    Examples
+    --------
+    >>> reported("contact_area").unit
+    'pi R^2'
+    """
     try:
         return REPORTED[key]
     except KeyError:
