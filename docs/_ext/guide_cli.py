@@ -14,8 +14,8 @@ from pocket.cli.common import EXIT_CODES
 from pocket.cli.main import _parser
 from pocket.core import errors
 
-#: the width the usage lines are wrapped to (a terminal's, whatever the machine building the docs has)
-WIDTH = "100"
+#: the width usage lines and epilogs are wrapped to: the page's code blocks, whatever terminal builds the docs
+WIDTH = "76"
 
 
 @contextlib.contextmanager
@@ -82,7 +82,7 @@ def page() -> str:
                 out.append(f"{cell(sub.description[0].upper() + sub.description[1:])}\n")
             out.append(_options(sub))
             if sub.epilog:
-                out.append(f"```text\n{sub._get_formatter()._fill_text(sub.epilog, 100, '')}\n```\n")
+                out.append(f"```text\n{sub._get_formatter()._fill_text(sub.epilog, int(WIDTH), '')}\n```\n")
     return "\n".join(out)
 
 
