@@ -46,6 +46,7 @@ import pathlib
 from pocket.core.errors import OutOfRangeError
 
 from .cases import Case
+from .columns import documented
 from .folders import write_files
 from .physical import Pocket, compressed_row, inflated_row, load_forces, resolve
 from .provenance import environment
@@ -97,10 +98,13 @@ def solve(case: Case, progress=None) -> dict:
 
 def write(result: dict, paths, of: str | None = None) -> None:
     """Write ``result`` to ``paths`` (``results_paths``: the JSON and the CSV file), both or neither,
-    recorded as pocket's results for ``of`` (``pocket.apps.folders.write_files``)."""
+    recorded as pocket's results for ``of`` (``pocket.apps.folders.write_files``). Every column of the rows
+    (the CSV's, and the JSON's inflated state's) is one of pocket's documented columns
+    (``pocket.apps.columns.documented``: a ``KeyError`` before anything is written for one that is not)."""
     json_path, csv_path = paths
     rows = [*result["states"], *result["unreachable"]]
     fields = list(dict.fromkeys(k for row in rows for k in row))
+    documented([*fields, *result["inflated"]])
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, fields, restval="")
     writer.writeheader()

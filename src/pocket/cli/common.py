@@ -16,6 +16,7 @@ from fractions import Fraction
 
 from pocket.apps.solvers import SOLVERS, all_options, solver_options
 from pocket.core.inputs import quote
+from pocket.core.reported import reported
 from pocket.core.units import KINDS, has_unit
 
 __all__ = [
@@ -204,8 +205,12 @@ def progress_bar(what: str, unit: str):
 
 
 def report(state) -> dict:
-    """A state as JSON and tables show it: its scalars, then its ``warnings`` (a list)."""
-    return {**state.scalars(), "warnings": list(state.warnings)}
+    """A state as JSON and tables show it: its scalars, then its ``warnings`` (a list); each key one of
+    ``pocket.core.reported``'s (a ``KeyError`` for one that is not)."""
+    out = {**state.scalars(), "warnings": list(state.warnings)}
+    for key in out:
+        reported(key)
+    return out
 
 
 def warn(states) -> None:

@@ -1,6 +1,6 @@
 """The vocabulary every layer of pocket shares: states, errors, input checks, units, rubbers, fluids,
-indenters, the membrane's reference surfaces (``geometries``), solver records, and the compiled-code cache
-both solvers use (``compiled``).
+indenters, the membrane's reference surfaces (``geometries``), solver records, the reported keys with their
+units and meanings (``reported``), and the compiled-code cache both solvers use (``compiled``).
 
 Nothing here imports a solver or an application; the solvers (``pocket.shooting``,
 ``pocket.fem``, ``pocket.analytical``) build on it, the applications

@@ -49,7 +49,7 @@ from pocket.core.indenters import PLATE, Indenter
 from pocket.core.materials import Material
 from pocket.core.states import CHECKS, CompressedState
 
-from ..columns import in_mu0, parameter_column
+from ..columns import documented, in_mu0, parameter_column
 from ..contactpatch import KEYS
 from ..folders import created_parents, remove_created
 from ..rubbers import PARAMETERS
@@ -119,7 +119,9 @@ def key(row) -> tuple:
 
 
 def rows_csv(rows, *, header=False) -> bytes:
-    """``rows`` (dicts of COLUMNS) as CSV bytes, after the header if ``header``."""
+    """``rows`` (dicts of COLUMNS) as CSV bytes, after the header if ``header``; every column is one of pocket's
+    documented columns (``pocket.apps.columns.documented``)."""
+    documented(COLUMNS)
     text = io.StringIO(newline="")
     writer = csv.DictWriter(text, COLUMNS, lineterminator="\n")
     if header:
