@@ -24,6 +24,7 @@ MODULES = (
     "pocket.core.materials",
     "pocket.core.fluids",
     "pocket.core.indenters",
+    "pocket.core.profiles",
     "pocket.core.geometries",
     "pocket.core.errors",
     "pocket.core.units",
