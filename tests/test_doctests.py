@@ -18,7 +18,8 @@ import pytest
 MODULES = (
     "pocket.shooting",
     "pocket.fem",
-    "pocket.solid",
+    # a solid solve takes a second even on its coarsest mesh (its five examples about 4 s): the slow lane
+    pytest.param("pocket.solid", marks=pytest.mark.slow),
     "pocket.analytical",
     "pocket.core.states",
     "pocket.core.materials",

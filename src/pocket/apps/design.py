@@ -221,8 +221,8 @@ def design(radius, height, modulus, material, force, height_ratio=None, *, thick
     >>> button = design("10 mm", "3 mm", "1 MPa", 0.3, "1 N", points=3)
     >>> print(f"P_I = {button.pressure_initial_Pa / 1e3:.3f} kPa, T = {button.thickness_m * 1e3:.3f} mm")
     P_I = 14.650 kPa, T = 1.462 mm
-    >>> print(round(button.height_ratio, 9))
-    0.8
+    >>> print(round(button.height_ratio, 9), button.solved, button.curve_force_N)
+    0.8 ('pressure_initial', 'thickness') [0.66666667 1.33333333 2.        ]
 
     Its model numbers are the definitions Phat_I = P_I R / (E T) and Fhat = F / (P_I pi R^2):
 

@@ -65,10 +65,12 @@ class Design:
 
     Examples
     --------
-    >>> from pocket.apps.design import design
-    >>> button = design("10 mm", "3 mm", "1 MPa", 0.3, "1 N", points=3)
-    >>> print(button.solved, button.curve_force_N)
-    ('pressure_initial', 'thickness') [0.66666667 1.33333333 2.        ]
+    Its SI values carry their unit in their names (``design`` shows one made):
+
+    >>> import dataclasses
+    >>> from pocket.apps.design import Design
+    >>> print([field.name for field in dataclasses.fields(Design) if field.name.endswith("_Pa")])
+    ['pressure_initial_Pa', 'paper_pressure_initial_Pa']
     """
 
     pressure_initial_Pa: float
