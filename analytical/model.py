@@ -163,7 +163,7 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     ----------
     material : Material or float
         The rubber, any ``pocket.core.materials.Material`` or a Mooney-Rivlin alpha (``as_material``); only
-        mu_0 enters, through Phat (module docstring). Echoed by the state.
+        mu_0 enters, through Phat (``pocket.analytical.model``). Echoed by the state.
     pressure : float
         Phat = P R / (E T) > 0.
     geometry : Geometry or str, optional

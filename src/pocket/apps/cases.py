@@ -329,7 +329,7 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     ----------
     data : dict
         The tables ``sheet``, ``clamp``, ``initial``, ``loads`` and the optional ``fluid``, ``indenter``,
-        ``solver``, ``name``, ``label``, ``tags`` (module docstring); values with units, as strings (plain
+        ``solver``, ``name``, ``label``, ``tags`` (``pocket.apps.cases``); values with units, as strings (plain
         numbers are SI, with a warning).
     where : str, optional
         The case's name in error messages.

@@ -165,7 +165,7 @@ def design(radius, height, modulus, material, force, height_ratio=None, *, thick
     Give the inflated ``height`` H0 (the thickness T is found), or the sheet's ``thickness`` T (H0 is found), or
     both (H/H0 at F is found). The target at the force F is ``height_ratio`` H/H0 (default 0.8) or the
     ``pressed_height`` H, except when both H0 and T are given. The full model's answer is two scalar roots
-    (module docstring): Phat_I* from H0 / R, then Fhat* from the target; P_I = F / (pi R^2 Fhat*) and
+    (``pocket.apps.design``): Phat_I* from H0 / R, then Fhat* from the target; P_I = F / (pi R^2 Fhat*) and
     T = P_I R / (E Phat_I*).
 
     Parameters

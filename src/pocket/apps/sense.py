@@ -264,7 +264,7 @@ _INFLATION_STEP = 1e-4  # relative step of the central differences of sensitivit
 def sensitivity_at_rest(pocket: Pocket) -> float:
     """dP/dF at F -> 0, by reciprocity, from the inflated pocket alone.
 
-    dP/dF = (dH0/dP) / (dV0/dP + V / (gamma (P + P_atm))) (module docstring; the gas's compliance absent for
+    dP/dF = (dH0/dP) / (dV0/dP + V / (gamma (P + P_atm))) (``pocket.apps.sense``; the gas's compliance absent for
     a liquid), dH0/dP and dV0/dP by central differences of inflations at P_I (1 +- 1e-4): truncation ~1e-8 and
     round-off ~1e-7 relative for a solver resolving ~1e-11. The same for any indenter touching at the pole.
 

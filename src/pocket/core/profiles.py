@@ -137,7 +137,7 @@ class _Spline:
 def table(radii, heights, source: str = "the profile table", written=None) -> Shape:
     """The profile interpolating a table of rows (radius, height), in units of R.
 
-    A cubic spline in rho^2 (module docstring), checked to be a profile: z(0) = 0, flat on the axis, convex.
+    A cubic spline in rho^2 (``pocket.core.profiles``), checked to be a profile: z(0) = 0, flat on the axis, convex.
 
     Parameters
     ----------

@@ -220,7 +220,7 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
 
     Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the grid's forces up
     to the last one missing, so that a point's row does not depend on which points an earlier run on the file
-    had finished. The file's life, when the sweep finishes and when it stops early, is in the module docstring:
+    had finished. The file's life, when the sweep finishes and when it stops early, is in ``pocket.apps.sweep.grid``:
     one CSV row per point, appended as the sweep runs; a rerun resumes it.
 
     Parameters

@@ -148,7 +148,7 @@ def _profile(state):
 
 
 def field_data(state) -> dict[str, np.ndarray]:
-    """A state's numeric scalars as VTK field data (module docstring).
+    """A state's numeric scalars as VTK field data (``pocket.apps.vtk.files``).
 
     Its ``KEYS``, for a compressed state its contact patch, its smallest tensions and ``wrinkled`` (1.0 or 0.0),
     the rubber's parameters and the fluid's, the codes of its solver, law and fluid (``CODES``) and its numeric
