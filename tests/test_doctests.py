@@ -66,7 +66,7 @@ def _examples(name: str) -> list[doctest.DocTest]:
 
 
 @pytest.mark.parametrize("name", MODULES)
-def test_documented_examples_run(name):
+def test_api_examples_print_what_they_show(name):
     """Every example of module ``name`` prints exactly what its docstring shows (up to ``...`` and
     whitespace), and the module has at least one: a reader can copy any of them and get that answer."""
     tests = _examples(name)
