@@ -107,7 +107,29 @@ def _antiderivative(t, a):
 
 
 def shape_function(r, a):
-    """G(r, a) of eq (21), vectorised over r (shape (n,) or scalar); 0 <= a < 1."""
+    """The shape function G(r, a) of eq (21): the compressed dome's height is eta = sqrt(lambda_c - 1) G(r, a) R.
+
+    Parameters
+    ----------
+    r : float or numpy.ndarray
+        Lagrangian radius r / R in [0, 1], a scalar or shape (n,).
+    a : float
+        Lagrangian contact radius a_c / R, 0 <= a < 1.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        G(r, a), dimensionless, of the shape of ``r``: constant on the contact zone r <= a (flat under the
+        plate), 0 at the clamp r = 1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pocket import analytical
+    >>> g = analytical.shape_function(np.array([0.0, 0.15, 0.3, 1.0]), 0.3)
+    >>> print(np.round(g, 6))
+    [1.120344 1.120344 1.120344 0.      ]
+    """
     c = np.sqrt(2.0 / (1.0 - a * a))
     lower = np.maximum(r, a)
     return c * (_antiderivative(1.0, a) - _antiderivative(lower, a))
@@ -135,11 +157,44 @@ GEOMETRIES = {"pocket": "the small-strain dome over the flat sheet clamped at r 
 
 
 def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None) -> InflatedState:
-    """Inflation by eqs (14)-(18) (corrected): the small-strain dome at Phat = ``pressure``.
+    """The small-strain dome at Phat = ``pressure``, by eqs (14)-(18) (corrected).
 
-    ``material``: the rubber, any ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha,
-    ``as_material``; only mu_0 enters, through Phat: module docstring); echoed by the state. ``geometry``: the
-    reference surface, None (the flat clamped disc) or one of ``GEOMETRIES`` (an InputError for another)."""
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, any ``pocket.core.materials.Material`` or a Mooney-Rivlin alpha (``as_material``); only
+        mu_0 enters, through Phat (``pocket.analytical.model``). Echoed by the state.
+    pressure : float
+        Phat = P R / (E T) > 0.
+    geometry : Geometry or str, optional
+        The reference surface: None (the flat clamped disc) or one of ``GEOMETRIES``.
+
+    Returns
+    -------
+    InflatedState
+        Lengths in units of R, the volume V / R^3; a ``warnings`` entry when the pole stretch exceeds 1.1,
+        the model's range of validity.
+
+    Raises
+    ------
+    InputError
+        For an invalid rubber or pressure, a prestretched rubber, or another geometry.
+
+    Examples
+    --------
+    The pole stretch follows the corrected eq (18), Phat = 4 sqrt(6) (lambda_0 - 1)^(3/2), whatever alpha:
+
+    >>> import math
+    >>> from pocket import analytical
+    >>> state = analytical.inflate(47 / 160, 0.1)
+    >>> print(round(4 * math.sqrt(6) * (state.stretch_pole - 1) ** 1.5, 12), state.warnings)
+    0.1 ()
+
+    At Phat = 0.31 the pole stretch passes 1.1, and the state says so:
+
+    >>> print(analytical.inflate(47 / 160, 0.31).warnings[0])
+    lambda_0 = 1.10003 exceeds 1.1, the small-strain model's range of validity ...
+    """
     geometry, _ = geometries.posed(GEOMETRIES, "analytical", geometry)
     material = as_material(material)
     if material.prestretch != 1.0:
@@ -230,8 +285,43 @@ def _contact_radius(force, s0, pressure_initial, a_max, fluid=LIQUID):
 
 def range_end(material: MaterialLike, pressure_initial: float, *, fluid: FluidLike = None,
               indenter: Indenter | None = None, geometry: GeometryLike = None) -> float:
-    """The force Fhat at which the model's contact reaches the clamp (A_c = pi R^2): its range
-    (``indenter`` and ``geometry`` as for ``compression_curve``)."""
+    """The force Fhat = F / (P_I pi R^2) at which the model's contact reaches the clamp (A_c = pi R^2).
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate``.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    fluid, indenter, geometry
+        As for ``compression_curve``.
+
+    Returns
+    -------
+    float
+        Fhat at the end of the model's range.
+
+    Raises
+    ------
+    InputError
+        For invalid input, or an indenter other than the flat plate.
+
+    Examples
+    --------
+    >>> from pocket import analytical
+    >>> end = analytical.range_end(47 / 160, 0.1)
+    >>> print(round(end, 4))
+    8.3358
+
+    Just below it the contact covers nearly the whole clamped disc; past it, no state:
+
+    >>> print(round(analytical.compress(47 / 160, 0.1, 0.999 * end).contact_area, 3))
+    1.0
+    >>> analytical.compress(47 / 160, 0.1, 1.01 * end)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.OutOfRangeError: force = 8.41912 is beyond the analytical model's range: ...
+    """
     posed(CONTACTS, "analytical", indenter)
     inflated = inflate(material, pressure_initial, geometry=geometry)
     fluid = as_fluid(fluid)
@@ -241,13 +331,51 @@ def range_end(material: MaterialLike, pressure_initial: float, *, fluid: FluidLi
 def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
                       indenter: Indenter | None = None, geometry: GeometryLike = None,
                       progress: Progress | None = None) -> list[CompressedState]:
-    """Compressed states at each Fhat of ``forces``; OutOfRangeError past the model's maximum force.
+    """Compressed states at each force Fhat = F / (P_I pi R^2) of ``forces``, by eqs (19)-(26) (corrected).
 
-    ``material`` as for ``inflate``; ``fluid``: None or "liquid", or a gas (``pocket.core.fluids.gas``,
-    ambient pressure as Phat_atm), echoed by the states; ``indenter``: None (the flat plate) or an
-    ``Indenter`` this model poses (``CONTACTS``; an InputError for another); ``geometry`` as for ``inflate``,
-    the inflated state's surface. ``progress(done, total)``,
-    if given, is called after each force (``total`` = len(forces)).
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate``.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    forces : sequence of float
+        Fhat >= 0 of each state.
+    fluid : Fluid or str, optional
+        None or ``"liquid"``, or a gas (``pocket.core.fluids.gas``, its ambient pressure as Phat_atm =
+        P_atm R / (E T)); echoed by the states.
+    indenter : Indenter, optional
+        None (the flat plate) or an ``Indenter`` this model poses (``CONTACTS``: the plate alone).
+    geometry : Geometry or str, optional
+        As for ``inflate``: the inflated state's surface.
+    progress : callable, optional
+        ``progress(done, total)``, called after each force.
+
+    Returns
+    -------
+    list of CompressedState
+        In the order of ``forces``; each carries a warning where a stretch exceeds 1.1.
+
+    Raises
+    ------
+    InputError
+        For invalid input (another indenter, a negative force).
+    OutOfRangeError
+        For a force past the model's maximum (``range_end``).
+
+    Examples
+    --------
+    >>> from pocket import analytical
+    >>> states = analytical.compression_curve(47 / 160, 0.1, [0.01, 0.05])
+    >>> print([f"{s.pressure_ratio:.4f}" for s in states])
+    ['1.0208', '1.0246']
+
+    As the force vanishes the model's pressure does not tend to P_I (eq (26) does not reduce to (17b), as
+    the paper says) but to 10 / (4 sqrt(6)) P_I:
+
+    >>> import math
+    >>> print(round(analytical.compress(47 / 160, 0.1, 1e-12).pressure_ratio, 4), round(10 / (4 * math.sqrt(6)), 4))
+    1.0206 1.0206
     """
     indenter, compressed = posed(CONTACTS, "analytical", indenter)
     inflated = inflate(material, pressure_initial, geometry=geometry)
@@ -269,6 +397,45 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
 
 def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
              indenter: Indenter | None = None, geometry: GeometryLike = None) -> CompressedState:
-    """Compression by eqs (19)-(26) (corrected) at Fhat = ``force`` (``compression_curve``)."""
+    """The compressed state at Fhat = ``force``, by eqs (19)-(26) (corrected): one state of ``compression_curve``.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate``.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    force : float
+        Fhat = F / (P_I pi R^2) >= 0.
+    fluid, indenter, geometry
+        As for ``compression_curve``.
+
+    Returns
+    -------
+    CompressedState
+        Pressures in units of E T / R, lengths of R, the contact area in units of pi R^2.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a force past the model's maximum (``range_end``).
+
+    Examples
+    --------
+    The model carries the force by the pressure on the contact area, F = P A_c:
+
+    >>> from pocket import analytical
+    >>> state = analytical.compress(47 / 160, 0.1, 0.01)
+    >>> print(abs(state.force * state.pressure_initial - state.pressure * state.contact_area) < 1e-12)
+    True
+
+    At small force it is within 2 % of the shooting solver's (its range of validity):
+
+    >>> from pocket import shooting
+    >>> print(abs(state.pressure_ratio / shooting.compress(47 / 160, 0.1, 0.01).pressure_ratio - 1) < 0.02)
+    True
+    """
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter,
                              geometry=geometry)[0]

@@ -88,13 +88,39 @@ GEOMETRIES = {"pocket": "the meridian meshed in r = S on [0, 1], clamped at its 
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
-    """The default mesh family, ``meshes.polar(elements, power)``; without ``elements`` the default
-    mesh of P``order``: DEFAULT_ELEMENTS (P2) or DEFAULT_ELEMENTS_P1 (P1) elements.
+    """The nodes of the default mesh family of [0, 1] (the Lagrangian radius r / R), graded towards the axis.
 
-    The power is POLAR_POWER up to 1585 elements; beyond, 8 / log10(elements), so that the first
-    element, about power / elements^power long, stays above 1e-8 R (the pole stretch on so fine a
-    mesh is accurate to 1e-12 with any grading, and a shorter first element would only carry
-    round-off: a nodal value's 1e-16 R over its radius).
+    ``meshes.polar(elements, power)``: the power is ``POLAR_POWER`` up to 1585 elements; beyond,
+    8 / log10(elements), so that the first element, about power / elements^power long, stays above 1e-8 R (the
+    pole stretch on so fine a mesh is accurate to 1e-12 with any grading, and a shorter first element would only
+    carry round-off: a nodal value's 1e-16 R over its radius).
+
+    Parameters
+    ----------
+    elements : int, optional
+        Number of elements; None for the default of the element order, ``DEFAULT_ELEMENTS`` (P2) or
+        ``DEFAULT_ELEMENTS_P1`` (P1).
+    order : int, optional
+        Element order, 1 or 2.
+
+    Returns
+    -------
+    numpy.ndarray
+        The nodes, shape (elements + 1,), increasing from 0 to 1 (units R).
+
+    Examples
+    --------
+    >>> from pocket import fem
+    >>> nodes = fem.default_mesh(16)
+    >>> print(nodes.shape, nodes[0], nodes[-1])
+    (17,) 0.0 1.0
+    >>> print(len(fem.default_mesh()) - 1 == fem.DEFAULT_ELEMENTS)
+    True
+
+    The elements shorten towards the axis, where the pole stretch needs them:
+
+    >>> print(bool((nodes[1] - nodes[0]) < (nodes[-1] - nodes[-2])))
+    True
     """
     if elements is None:
         elements = DEFAULT_ELEMENTS if order == 2 else DEFAULT_ELEMENTS_P1
@@ -157,12 +183,53 @@ def _contact(indenter, methods, contact, penalty, augmented) -> tuple[str, float
 
 def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None, mesh: Mesh = None,
             elements: int | None = None, order: int = 2, tol: float = 1e-10) -> InflatedState:
-    """Inflated state at Phat = ``pressure`` (first branch), by pressure control.
+    """Inflate the flat sheet at the pressure Phat = P R / (E T) (pressure control, first branch).
 
-    material: the rubber (a Material, or a Mooney-Rivlin alpha: ``as_material``). mesh: nodes of [0, 1] (array, shape
-    (n+1,)) or a mesh file; else the default mesh family of ``elements`` (default: DEFAULT_ELEMENTS with
-    P2, DEFAULT_ELEMENTS_P1 with P1). order: 1 or 2. tol: Newton tolerance. geometry: the reference surface
-    (``GEOMETRIES``; None: the flat clamped disc).
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` of any law and stress unit; a number is a Mooney-Rivlin
+        alpha = C2/C1 (``as_material``).
+    pressure : float
+        Phat = P R / (E T) > 0 (E = 3 mu_0 the rubber's small-strain Young's modulus, T its thickness, R the
+        clamp radius).
+    geometry : Geometry or str, optional
+        The reference surface: None (the flat clamped disc) or one of ``GEOMETRIES``.
+    mesh : numpy.ndarray or str or path, optional
+        The nodes of [0, 1] (units R, shape (n+1,)) or a mesh file (any meshio format); None for the default mesh
+        (``default_mesh``).
+    elements : int, optional
+        Elements of the default mesh (not with ``mesh``): default ``DEFAULT_ELEMENTS`` with P2,
+        ``DEFAULT_ELEMENTS_P1`` with P1.
+    order : int, optional
+        Element order, 1 (P1) or 2 (P2).
+    tol : float, optional
+        Newton tolerance on residual and increment, at most 1e-4.
+
+    Returns
+    -------
+    InflatedState
+        Lengths in units of R, the volume V / R^3, tensions in units of E T.
+
+    Raises
+    ------
+    InputError
+        For an invalid rubber, pressure, mesh (an element too short, neighbours too different) or option.
+    OutOfRangeError
+        If Phat lies above the first branch's pressure maximum.
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    On a coarse mesh of 16 P2 elements, the height agrees with the shooting solver's to 1e-5 R:
+
+    >>> from pocket import fem, shooting
+    >>> state = fem.inflate(47 / 160, 0.31, elements=16)
+    >>> print(f"H0/R = {state.height:.4f}")
+    H0/R = 0.4939
+    >>> print(abs(state.height - shooting.inflate(47 / 160, 0.31).height) < 1e-5)
+    True
     """
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
@@ -173,7 +240,40 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
 
 def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None, mesh: Mesh = None,
                    elements: int | None = None, order: int = 2, tol: float = 1e-10) -> InflatedState:
-    """Inflated state of volume V/R^3 = ``volume``, by volume control (geometry and options as ``inflate``)."""
+    """Inflate the flat sheet to the enclosed volume V / R^3 (volume control: passes pressure maxima).
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate`` (a number is a Mooney-Rivlin alpha).
+    volume : float
+        V / R^3 > 0.
+    geometry, mesh, elements, order, tol
+        As for ``inflate``.
+
+    Returns
+    -------
+    InflatedState
+        Its ``pressure`` is the Phat found.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a volume the first branch does not reach.
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    Volume control inverts pressure control (to the coarse mesh's accuracy):
+
+    >>> from pocket import fem
+    >>> state = fem.inflate(47 / 160, 0.31, elements=16)
+    >>> print(round(fem.inflate_volume(47 / 160, state.volume, elements=16).pressure, 8))
+    0.31
+    """
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
     volume = check_volume("volume", volume)
@@ -204,14 +304,58 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
                       progress: Progress | None = None, mesh: Mesh = None, elements: int | None = None, order: int = 2,
                       contact: str = FITTED, penalty: float | None = None, augmented: bool | None = None,
                       tol: float = 1e-10) -> list[CompressedState]:
-    """Compressed states at the forces Fhat = F/(P_I pi R^2), each seeded by the states before it.
+    """Compress the inflated pocket at each force Fhat = F / (P_I pi R^2), each state seeded by those before it.
 
-    fluid: None (a liquid: fixed volume) or a Fluid (a gas sealed at Phat_I). indenter: None (the flat
-    plate) or an Indenter (``CONTACTS``). Geometry and options as ``inflate``,
-    and ``contact``: "fitted" (default; the mesh follows the contact
-    edge, contact exact) or "penalty" (fixed mesh, contact ``penalty`` in units E T / R^2,
-    default 1e5, with ``augmented`` Lagrangian updates, default true). ``progress(done, total)``
-    is called after each force.
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` (any stress unit) or a Mooney-Rivlin alpha = C2/C1.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0, the inflation pressure the fluid is sealed at.
+    forces : sequence of float
+        Fhat = F / (P_I pi R^2) >= 0 of each state.
+    fluid : Fluid or str, optional
+        None or ``"liquid"`` (fixed volume), or a gas (``pocket.core.fluids.gas``) sealed at Phat_I, its
+        ambient pressure as Phat_atm = P_atm R / (E T).
+    indenter : Indenter, optional
+        None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``Sphere``, ``Profile``), lengths in units of R.
+    geometry, mesh, elements, order, tol
+        As for ``inflate``.
+    progress : callable, optional
+        ``progress(done, total)``, called after each force.
+    contact : {"fitted", "penalty"}, optional
+        "fitted" (a mesh node follows the contact edge, contact exact) or "penalty" (fixed mesh).
+    penalty : float, optional
+        The contact penalty of ``contact="penalty"``, units E T / R^2 (default 1e5).
+    augmented : bool, optional
+        Augmented-Lagrangian updates of ``contact="penalty"`` (default true).
+
+    Returns
+    -------
+    list of CompressedState
+        In the order of ``forces``.
+
+    Raises
+    ------
+    InputError
+        For invalid input (``penalty`` or ``augmented`` with ``contact="fitted"``, an indenter this solver does
+        not pose).
+    OutOfRangeError
+        For a force past the end of the model's range.
+    ConvergenceError
+        If Newton's method fails; it says at which force.
+
+    Examples
+    --------
+    >>> from pocket import fem
+    >>> states = fem.compression_curve(47 / 160, 0.31, [0.1, 0.19], elements=16)
+    >>> print([f"{s.pressure_ratio:.4f}" for s in states])
+    ['1.1564', '1.2944']
+
+    The edge-fitted contact is exact: the plate carries F = P A_c to round-off,
+
+    >>> print(all(abs(s.force * s.pressure_initial - s.pressure * s.contact_area) < 1e-9 for s in states))
+    True
     """
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
@@ -226,8 +370,55 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
 
 def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
              indenter: Indenter | None = None, geometry: GeometryLike = None, **options: Any) -> CompressedState:
-    """Compressed state at the force Fhat = F/(P_I pi R^2); fluid, indenter, geometry and options as
-    ``compression_curve``."""
+    """Compress the pocket inflated at Phat_I = ``pressure_initial`` by the force Fhat = F / (P_I pi R^2).
+
+    One state of ``compression_curve``.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` (any stress unit) or a Mooney-Rivlin alpha = C2/C1.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    force : float
+        Fhat = F / (P_I pi R^2) >= 0.
+    fluid, indenter, geometry
+        As for ``compression_curve``.
+    **options
+        The options of ``compression_curve``: ``mesh``, ``elements``, ``order``, ``contact``, ``penalty``,
+        ``augmented``, ``tol``.
+
+    Returns
+    -------
+    CompressedState
+        Pressures in units of E T / R, lengths of R, the deformed contact area in units of pi R^2.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a force past the end of the model's range.
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    The headline pocket on 16 P2 elements, against the shooting solver:
+
+    >>> from pocket import fem, shooting
+    >>> state = fem.compress(47 / 160, 0.31, 0.19, elements=16)
+    >>> print(round(state.pressure_ratio, 3))
+    1.294
+    >>> print(abs(state.pressure_ratio / shooting.compress(47 / 160, 0.31, 0.19).pressure_ratio - 1) < 1e-5)
+    True
+
+    By penalty on a fixed mesh, the contact is approximate:
+
+    >>> rough = fem.compress(47 / 160, 0.31, 0.19, elements=16, contact="penalty")
+    >>> print(abs(rough.pressure_ratio / state.pressure_ratio - 1) < 1e-2)
+    True
+    """
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
                              **options)[0]
 
@@ -236,9 +427,44 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
                     indenter: Indenter | None = None, geometry: GeometryLike = None, mesh: Mesh = None,
                     elements: int | None = None, order: int = 2, contact: str = FITTED, penalty: float | None = None,
                     augmented: bool | None = None, tol: float = 1e-10) -> CompressedState:
-    """Compressed state with the indenter's lowest point at height H/R = ``height`` (fluid, indenter, geometry and
-    options as ``compression_curve``); an OutOfRangeError above the inflated pocket, where the indenter would not
-    touch it (at its top: the uncompressed state, force 0)."""
+    """The compressed state with the indenter's lowest point at H/R = ``height`` above the clamp plane.
+
+    Travel control: the force is found.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` (any stress unit) or a Mooney-Rivlin alpha = C2/C1.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    height : float
+        H / R > 0, at most the inflated pocket's height (there the state is the uncompressed one, force 0).
+    fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol
+        As for ``compression_curve``.
+
+    Returns
+    -------
+    CompressedState
+        Its ``force`` is the Fhat = F / (P_I pi R^2) found.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a height above the inflated pocket, where the indenter would not touch it, or past the range's end.
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    Travel control inverts force control:
+
+    >>> from pocket import fem
+    >>> pressed = fem.compress(47 / 160, 0.31, 0.19, elements=16)
+    >>> print(round(fem.compress_height(47 / 160, 0.31, pressed.height, elements=16).force, 8))
+    0.19
+    """
     height = check_positive("height", height)
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model, contact, augmented, tolerances, y_i, inflated, fill, curved = _setup(

@@ -188,17 +188,57 @@ def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
 
 def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, geometry=None, rtol=1e-10,
                       progress=None) -> list[CompressedState]:
-    """Compress at each force Fhat = F/(P_I pi R^2) of ``forces`` (any order), by continuation.
+    """Compress the inflated pocket at each force Fhat = F / (P_I pi R^2) of ``forces``, by continuation.
 
-    material: the rubber, a ``pocket.core.materials.Material`` (or a Mooney-Rivlin alpha, ``as_material``). fluid: None
-    or "liquid" (fixed volume), or a gas (``pocket.core.fluids.gas``, its ambient pressure as
-    Phat_atm = P_atm R / (E T)), sealed at Phat_I. indenter: None (the flat plate) or a
-    ``pocket.core.indenters.Indenter`` this solver poses (an InputError for another). geometry: the reference
-    surface, None (the flat clamped disc) or one this solver poses (``GEOMETRIES``). Returns the states
-    in the order of ``forces``,
-    each echoing its inputs exactly. ``progress(done, total)``, if given, is called after each force
-    (``total`` = len(forces)). Raises OutOfRangeError for a force past the end of the model's range
-    (``range_end``), ConvergenceError if a solve fails, InputError for invalid input.
+    The pocket is inflated at Phat_I (``inflate``), its fluid sealed, then pressed by the indenter; the
+    forces are taken in increasing order, each state seeded by those before it.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` (any stress unit) or a Mooney-Rivlin alpha = C2/C1.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0, the inflation pressure the fluid is sealed at.
+    forces : sequence of float
+        Fhat = F / (P_I pi R^2) >= 0 of each state, in any order.
+    fluid : Fluid or str, optional
+        None or ``"liquid"`` (fixed volume), or a gas (``pocket.core.fluids.gas``) with its ambient pressure
+        in the model's units, Phat_atm = P_atm R / (E T).
+    indenter : Indenter, optional
+        None (the flat plate) or a ``pocket.core.indenters.Indenter`` this solver poses (``Sphere``,
+        ``Profile``), lengths in units of R.
+    geometry : Geometry or str, optional
+        The reference surface: None (the flat clamped disc) or one this solver poses (``GEOMETRIES``).
+    rtol : float, optional
+        Relative tolerance of the ODE integration, at most 1e-4.
+    progress : callable, optional
+        ``progress(done, total)``, called after each force (``total`` = len(forces)).
+
+    Returns
+    -------
+    list of CompressedState
+        In the order of ``forces``, each echoing its inputs exactly.
+
+    Raises
+    ------
+    InputError
+        For invalid input (an indenter or geometry this solver does not pose, a negative force, no force).
+    OutOfRangeError
+        For a force past the end of the model's range (``range_end``), or a Phat_I above the pressure maximum.
+    ConvergenceError
+        If a solve fails; it says at which force.
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> states = shooting.compression_curve(47 / 160, 0.31, [0.1, 0.19])
+    >>> print([f"{s.pressure_ratio:.4f}" for s in states])
+    ['1.1564', '1.2944']
+
+    The fluid's volume is held:
+
+    >>> print(all(abs(s.volume - s.inflated.volume) < 1e-9 for s in states))
+    True
     """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     law = law_of(material)
@@ -234,6 +274,58 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
 
 def compress(material, pressure_initial, force, *, fluid=None, indenter=None, geometry=None,
              rtol=1e-10) -> CompressedState:
-    """Compress the pocket inflated at Phat_I = ``pressure_initial`` by force Fhat (``compression_curve``)."""
+    """Compress the pocket inflated at Phat_I = ``pressure_initial`` by the force Fhat = F / (P_I pi R^2).
+
+    One state of ``compression_curve``.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` (any stress unit) or a Mooney-Rivlin alpha = C2/C1.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    force : float
+        Fhat = F / (P_I pi R^2) >= 0.
+    fluid, indenter, geometry, rtol
+        As for ``compression_curve``.
+
+    Returns
+    -------
+    CompressedState
+        Pressures in units of E T / R, lengths of R, the deformed contact area A_c in units of pi R^2.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a force past the end of the model's range (``range_end``).
+    ConvergenceError
+        If the solve fails.
+
+    Examples
+    --------
+    The paper's headline pocket (alpha = 47/160, Phat_I = 0.31) at Fhat = 0.19:
+
+    >>> from pocket import shooting
+    >>> state = shooting.compress(47 / 160, 0.31, 0.19)
+    >>> print(round(state.pressure_ratio, 3))
+    1.294
+
+    The flat plate carries the force by the pressure on the contact area, F = P A_c, that is
+    Fhat Phat_I = Phat A_c / (pi R^2):
+
+    >>> print(abs(state.force * state.pressure_initial - state.pressure * state.contact_area) < 1e-9)
+    True
+
+    A sphere of radius R_s = R / 2 (``pocket.core.indenters.Sphere``) and air (``pocket.core.fluids.gas``,
+    the ambient pressure in units of E T / R):
+
+    >>> from pocket.core.fluids import gas
+    >>> from pocket.core.indenters import Sphere
+    >>> pressed = shooting.compress(47 / 160, 0.31, 0.19, indenter=Sphere(0.5), fluid=gas(10.0, 1.4))
+    >>> print(pressed.pressure > state.inflated.pressure, pressed.volume < state.volume)
+    True True
+    """
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
                              rtol=rtol)[0]

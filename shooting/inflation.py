@@ -341,12 +341,47 @@ def _state(l0, law, p, tol, what, echo, geometry: Geometry):
 
 def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None,
             rtol: float = 1e-10) -> InflatedState:
-    """Inflate at pressure Phat = P R / (E T) (pressure control, first branch).
+    """Inflate the flat sheet at the pressure Phat = P R / (E T) (pressure control, first branch).
 
-    material: the rubber, a ``pocket.core.materials.Material`` (any stress unit; a number is taken as the
-    Mooney-Rivlin alpha = C2/C1, ``as_material``). pressure: Phat (> 0). geometry: the reference surface,
-    None (the flat clamped disc) or one of ``GEOMETRIES`` (an InputError for another). rtol: ODE tolerance.
-    Raises OutOfRangeError if Phat exceeds the first-branch maximum of Phat(V).
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` of any law, its stresses in any unit (only their
+        ratios and E = 3 mu_0 enter); a number is a Mooney-Rivlin alpha = C2/C1 (``as_material``).
+    pressure : float
+        Phat = P R / (E T) > 0, dimensionless (P the gauge pressure, R the clamp radius, T the sheet's
+        thickness, E = 3 mu_0 the rubber's small-strain Young's modulus).
+    geometry : Geometry or str, optional
+        The membrane's reference surface: None (the flat clamped disc) or one of ``GEOMETRIES``.
+    rtol : float, optional
+        Relative tolerance of the ODE integration, at most 1e-4.
+
+    Returns
+    -------
+    InflatedState
+        Lengths in units of R, the volume V / R^3, tensions in units of E T; ``pressure`` is the number given.
+
+    Raises
+    ------
+    InputError
+        For an invalid rubber, pressure, geometry or tolerance (before any work).
+    OutOfRangeError
+        If Phat lies above the first branch's pressure maximum (a neo-Hookean sheet's, say): ``inflate_volume``
+        passes it.
+
+    Examples
+    --------
+    The paper's silicone (alpha = 47/160) at Phat = 0.31:
+
+    >>> from pocket import shooting
+    >>> state = shooting.inflate(47 / 160, 0.31)
+    >>> print(f"H0/R = {state.height:.4f}, lambda_0 = {state.stretch_pole:.4f}")
+    H0/R = 0.4939, lambda_0 = 1.1633
+
+    The profile ends at the clamp, rho = R on the clamp plane eta = 0 (to the integration's tolerance):
+
+    >>> print(f"rho = {state.profile.rho[-1]:.8f}, eta = {state.profile.eta[-1]:.8f}")
+    rho = 1.00000000, eta = 0.00000000
     """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
@@ -359,14 +394,50 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
 
 def inflation_curve(material: MaterialLike, pressures: Numbers, *, geometry: GeometryLike = None,
                     rtol: float = 1e-10, progress: Progress | None = None) -> list[InflatedState]:
-    """Inflated states at each Phat of ``pressures`` (any order; pressure control, first branch), from one
-    march along the branch: the pressures are taken in increasing order, each march starting at the pole
-    strain of the state before it, the branch's computed points p(s) shared (about half the shots of as many
-    ``inflate`` calls). Each state is ``inflate``'s to its tolerance; the integration's absolute tolerances
-    are those of each pressure's own scale, the march's (which only guesses) those of the smallest.
-    ``progress(done, total)``, if given, is called after each pressure. Returns the states in the order of
-    ``pressures``; raises OutOfRangeError at the first pressure above the first branch's maximum (as
-    ``inflate``), InputError for invalid input. ``geometry`` as for ``inflate``."""
+    """Inflated states at several pressures Phat (pressure control, first branch), from one march along the branch.
+
+    The pressures are taken in increasing order, each march starting at the pole strain of the state before
+    it and sharing the branch's computed points (about half the shots of as many ``inflate`` calls). Each
+    state is ``inflate``'s to its tolerance; the integration's absolute tolerances are those of each
+    pressure's own scale, the march's (which only guesses) those of the smallest.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate`` (a number is a Mooney-Rivlin alpha).
+    pressures : sequence of float
+        Phat = P R / (E T) > 0 of each state, in any order.
+    geometry : Geometry or str, optional
+        The reference surface, as for ``inflate``.
+    rtol : float, optional
+        Relative tolerance of the ODE integration, at most 1e-4.
+    progress : callable, optional
+        ``progress(done, total)``, called after each pressure.
+
+    Returns
+    -------
+    list of InflatedState
+        In the order of ``pressures``.
+
+    Raises
+    ------
+    InputError
+        For invalid input, or no pressure.
+    OutOfRangeError
+        At the first pressure above the first branch's pressure maximum (as ``inflate``).
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> states = shooting.inflation_curve(47 / 160, [0.31, 0.2])
+    >>> [s.pressure for s in states]
+    [0.31, 0.2]
+
+    Each is the state ``inflate`` finds at its pressure:
+
+    >>> print(abs(states[0].height - shooting.inflate(47 / 160, 0.31).height) < 1e-9)
+    True
+    """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
     law = law_of(material)
@@ -422,8 +493,52 @@ def _inflated(material, law, pressure, rtol, tol, branch, start, geometry) -> tu
 
 def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None,
                    rtol: float = 1e-10) -> InflatedState:
-    """Inflate to enclosed volume V / R^3 (volume control, first branch; passes pressure maxima).
-    ``material`` and ``geometry`` as for ``inflate``."""
+    """Inflate the flat sheet to the enclosed volume V / R^3 (volume control, first branch).
+
+    Volume control passes the pressure maxima that pressure control (``inflate``) cannot.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate`` (a number is a Mooney-Rivlin alpha).
+    volume : float
+        V / R^3 > 0, the volume between the sheet and the clamp plane (R the clamp radius).
+    geometry : Geometry or str, optional
+        The reference surface, as for ``inflate``.
+    rtol : float, optional
+        Relative tolerance of the ODE integration, at most 1e-4.
+
+    Returns
+    -------
+    InflatedState
+        Its ``pressure`` is the Phat found; the ``volume`` the one given.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a volume the first branch does not reach (a rubber that locks, say).
+
+    Examples
+    --------
+    Volume control inverts pressure control:
+
+    >>> from pocket import shooting
+    >>> state = shooting.inflate(47 / 160, 0.31)
+    >>> print(round(shooting.inflate_volume(47 / 160, state.volume).pressure, 9))
+    0.31
+
+    A neo-Hookean sheet (alpha = 0) has a pressure maximum, Phat = 0.626 at V/R^3 = 2.80, which
+    pressure control cannot pass and volume control does (the pressure falls beyond it):
+
+    >>> shooting.inflate(0.0, 0.7)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.OutOfRangeError: no inflated state on the first branch: Phat = 0.7 is above its ...
+    >>> print(f"{shooting.inflate_volume(0.0, 5.0).pressure:.4f}")
+    0.5823
+    """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
     law = law_of(material)

@@ -44,10 +44,41 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
                     rtol: float = 1e-10) -> CompressedState:
     """The compressed state with the indenter's lowest point at H/R = ``height`` above the clamp plane.
 
-    material, pressure_initial (Phat_I), fluid, indenter, geometry and rtol as ``compression_curve``. Returns a
-    ``CompressedState`` whose ``force`` is the Fhat found. Raises OutOfRangeError for a height above the
-    inflated pocket or below the lowest the model reaches, InputError for invalid input,
-    ConvergenceError if a solve fails.
+    Travel control: the force is found.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` (any stress unit) or a Mooney-Rivlin alpha = C2/C1.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    height : float
+        H / R > 0, at most the inflated pocket's height H0 / R (there the force is 0).
+    fluid, indenter, geometry, rtol
+        As for ``compression_curve``.
+
+    Returns
+    -------
+    CompressedState
+        Its ``force`` is the Fhat = F / (P_I pi R^2) found.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a height above the inflated pocket, or below the lowest the model reaches.
+    ConvergenceError
+        If a solve fails.
+
+    Examples
+    --------
+    Travel control inverts force control:
+
+    >>> from pocket import shooting
+    >>> pressed = shooting.compress(47 / 160, 0.31, 0.19)
+    >>> print(round(shooting.compress_height(47 / 160, 0.31, pressed.height).force, 8))
+    0.19
     """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     height = check_positive("height", height)

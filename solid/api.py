@@ -59,9 +59,50 @@ def _model(material, thickness_ratio, layers, elements, tol, geometry) -> tuple[
 def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None,
             thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
             tol: float = 1e-10) -> InflatedState:
-    """Inflated state at Phat = ``pressure`` (first branch) of the sheet of T/R = ``thickness_ratio``, meshed by
-    ``elements`` along the radius and ``layers`` through the thickness; ``tol`` the Newton tolerance (R);
-    ``geometry`` the reference surface (``GEOMETRIES``; None the flat clamped disc)."""
+    """Inflate the sheet, modelled as an axisymmetric incompressible solid, at Phat = ``pressure`` (first branch).
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, a ``pocket.core.materials.Material`` of the laws the solid has (any stress unit), or a
+        Mooney-Rivlin alpha = C2/C1.
+    pressure : float
+        Phat = P R / (E T) > 0, P the pressure on the sheet's lower surface.
+    geometry : Geometry or str, optional
+        The reference surface: None (the flat clamped disc) or one of ``GEOMETRIES``.
+    thickness_ratio : float, optional
+        The sheet's thickness over the clamp radius, T / R in (0, 0.5).
+    layers : int, optional
+        Elements through the thickness, ``MIN_LAYERS`` to ``MAX_LAYERS``.
+    elements : int, optional
+        Elements along the radius, ``MIN_ELEMENTS`` to ``MAX_ELEMENTS`` (graded towards the clamp).
+    tol : float, optional
+        Newton tolerance on the displacement increment, units R, at most 1e-4.
+
+    Returns
+    -------
+    InflatedState
+        Lengths in units of R (the height of the sheet's mid-surface at the pole), the volume under its lower
+        surface V / R^3; ``membrane`` is false.
+
+    Raises
+    ------
+    InputError
+        For an invalid rubber, pressure or option.
+    OutOfRangeError
+        If Phat lies above the first branch's pressure maximum.
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    On the coarsest mesh, a sheet of T/R = 0.0125 stands within 1 % of the membrane's height:
+
+    >>> from pocket import shooting, solid
+    >>> state = solid.inflate(47 / 160, 0.31, elements=8, layers=2)
+    >>> print(state.membrane, abs(state.height / shooting.inflate(47 / 160, 0.31).height - 1) < 0.01)
+    False True
+    """
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
     pressure = check_positive("pressure", pressure)
@@ -72,7 +113,40 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
 def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None,
                    thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
                    elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> InflatedState:
-    """Inflated state of cavity volume V/R^3 = ``volume`` (geometry and options as ``inflate``)."""
+    """Inflate the solid sheet to the cavity volume V / R^3 = ``volume`` (volume control).
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate``.
+    volume : float
+        V / R^3 > 0, the volume under the sheet's lower surface.
+    geometry, thickness_ratio, layers, elements, tol
+        As for ``inflate``.
+
+    Returns
+    -------
+    InflatedState
+        Its ``pressure`` is the Phat found.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a volume the first branch does not reach.
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    Volume control inverts pressure control:
+
+    >>> from pocket import solid
+    >>> state = solid.inflate(47 / 160, 0.31, elements=8, layers=2)
+    >>> print(round(solid.inflate_volume(47 / 160, state.volume, elements=8, layers=2).pressure, 6))
+    0.31
+    """
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
     volume = check_volume("volume", volume)
@@ -100,11 +174,47 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
                       progress: Progress | None = None, thickness_ratio: float = DEFAULT_THICKNESS,
                       layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
                       tol: float = 1e-10) -> list[CompressedState]:
-    """Compressed states at the forces Fhat = F / (P_I pi R^2) (in the order given, each from the one
-    before); fluid None (a liquid) or a gas (``pocket.core.fluids.gas``, ambient as Phat_atm); indenter None
-    (the flat plate) or an ``Indenter`` (``CONTACTS``: ``pocket.core.indenters.Sphere(K)``, say). Geometry and
-    options as ``inflate``; ``progress(done, total)`` after each force. A force past the end of the range is an
-    OutOfRangeError naming the end (``rangeend``)."""
+    """Compressed states of the solid sheet at the forces Fhat = F / (P_I pi R^2), each from the one before.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate``.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    forces : sequence of float
+        Fhat >= 0 of each state, solved in the order given.
+    fluid : Fluid or str, optional
+        None (a liquid) or a gas (``pocket.core.fluids.gas``, its ambient pressure as Phat_atm =
+        P_atm R / (E T)).
+    indenter : Indenter, optional
+        None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``pocket.core.indenters.Sphere(K)``, say).
+    geometry, thickness_ratio, layers, elements, tol
+        As for ``inflate``.
+    progress : callable, optional
+        ``progress(done, total)``, called after each force.
+
+    Returns
+    -------
+    list of CompressedState
+        In the order of ``forces``.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a force past the end of the range, naming the end (``rangeend``).
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    >>> from pocket import solid
+    >>> states = solid.compression_curve(47 / 160, 0.31, [0.1, 0.19], elements=8, layers=2)
+    >>> print([f"{s.pressure_ratio:.3f}" for s in states])
+    ['1.155', '1.295']
+    """
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
@@ -122,7 +232,45 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
 
 def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
              indenter: Indenter | None = None, geometry: GeometryLike = None, **options: Any) -> CompressedState:
-    """Compressed state at the force Fhat (``compression_curve``)."""
+    """The compressed state of the solid sheet at the force Fhat = F / (P_I pi R^2) (``compression_curve``).
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate``.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    force : float
+        Fhat >= 0.
+    fluid, indenter, geometry
+        As for ``compression_curve``.
+    **options
+        ``thickness_ratio``, ``layers``, ``elements``, ``tol`` (as for ``inflate``).
+
+    Returns
+    -------
+    CompressedState
+        Pressures in units of E T / R, lengths of R.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a force past the end of the range.
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    A sheet of T/R = 0.0125 on the coarsest mesh: its pressure rise is within 1e-3 of the membrane's (the
+    membrane's O(T/R) error, and the coarse mesh's):
+
+    >>> from pocket import shooting, solid
+    >>> state = solid.compress(47 / 160, 0.31, 0.19, elements=8, layers=2)
+    >>> print(abs(state.pressure_ratio / shooting.compress(47 / 160, 0.31, 0.19).pressure_ratio - 1) < 1e-3)
+    True
+    """
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
                              **options)[0]
 
@@ -131,9 +279,49 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
                     indenter: Indenter | None = None, geometry: GeometryLike = None,
                     thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
                     elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> CompressedState:
-    """Compressed state with the plate at H/R = ``height`` above the clamp plane (options as
-    ``compression_curve``); an OutOfRangeError above the inflated pocket's top, or below the end of the range
-    (``rangeend``)."""
+    """The compressed state of the solid sheet with the plate at H/R = ``height`` above the clamp plane.
+
+    Travel control: the force is found.
+
+    Parameters
+    ----------
+    material : Material or float
+        The rubber, as for ``inflate``.
+    pressure_initial : float
+        Phat_I = P_I R / (E T) > 0.
+    height : float
+        H / R > 0, below the inflated pocket's top.
+    fluid, indenter, geometry, thickness_ratio, layers, elements, tol
+        As for ``compression_curve``.
+
+    Returns
+    -------
+    CompressedState
+        Its ``force`` is the Fhat = F / (P_I pi R^2) found.
+
+    Raises
+    ------
+    InputError
+        For invalid input.
+    OutOfRangeError
+        For a height above the inflated pocket's top, or below the end of the range (``rangeend``).
+    ConvergenceError
+        If Newton's method fails.
+
+    Examples
+    --------
+    Pressed 5 % of the way down from the inflated top:
+
+    >>> from pocket import solid
+    >>> top = solid.inflate(47 / 160, 0.31, elements=16, layers=2).height
+    >>> state = solid.compress_height(47 / 160, 0.31, 0.95 * top, elements=16, layers=2)
+    >>> print(f"{state.height_ratio:.4f}, Fhat = {state.force:.3f}")
+    0.9500, Fhat = 0.021
+    >>> solid.compress_height(47 / 160, 0.31, 1.01 * top, elements=16, layers=2)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.OutOfRangeError: height = ... is above the inflated pocket ...
+    """
     height = check_positive("height", height)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,

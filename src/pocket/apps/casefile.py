@@ -56,7 +56,26 @@ __all__ = ["results_paths", "solve", "solved", "write"]
 
 
 def results_paths(directory, stem: str) -> tuple[pathlib.Path, pathlib.Path]:
-    """``stem.json`` and ``stem.csv`` in ``directory``."""
+    """The results' files of ``pocket run``: ``stem.json`` and ``stem.csv`` in ``directory``.
+
+    Parameters
+    ----------
+    directory : str or path
+        The folder.
+    stem : str
+        The files' name without its suffix.
+
+    Returns
+    -------
+    tuple of pathlib.Path
+        The JSON file and the CSV file.
+
+    Examples
+    --------
+    >>> from pocket.apps.casefile import results_paths
+    >>> print([path.name for path in results_paths("out", "sample1")])
+    ['sample1.json', 'sample1.csv']
+    """
     directory = pathlib.Path(directory)
     return directory / f"{stem}.json", directory / f"{stem}.csv"
 
@@ -69,10 +88,51 @@ def _unreached(case: Case, index: int, error: OutOfRangeError) -> dict:
 
 
 def solved(case: Case, progress=None) -> tuple[dict, Pocket, list]:
-    """The case solved: ({"case": SI inputs, "inflated": row, "states": [rows], "unreachable": [rows],
-    "provenance": {...}} (JSON-ready), the case resolved (``pocket.apps.physical.Pocket``: its scales),
-    [compressed states of the reached loads]). ``progress(done, total)``, if given, goes to the solver's
-    compression curve."""
+    """The case solved: its results, the case resolved to the model, and the compressed states.
+
+    The case is resolved to the dimensionless model (``pocket.apps.physical.resolve``), inflated and compressed
+    at each load it reaches by its solver; a load the model does not reach is listed under ``unreachable``
+    with the reason.
+
+    Parameters
+    ----------
+    case : Case
+        The case (``pocket.apps.cases``).
+    progress : callable, optional
+        ``progress(done, total)``, passed to the solver's compression curve.
+
+    Returns
+    -------
+    result : dict
+        JSON-ready: ``case`` (SI inputs, and under ``given`` every input as written), ``inflated`` (a row),
+        ``states`` (a row per reached load: SI values named with their unit, then the dimensionless keys),
+        ``unreachable`` and ``provenance`` (pocket's and its libraries' versions).
+    pocket : Pocket
+        The case resolved (``pocket.apps.physical.Pocket``: its scales).
+    states : list of CompressedState
+        Of the reached loads.
+
+    Raises
+    ------
+    OutOfRangeError
+        If no load is reached (the first load's), or the initial state is not.
+    ConvergenceError
+        If a solve fails.
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import sample
+    >>> from pocket.apps.casefile import solved
+    >>> result, pocket, states = solved(sample(1))
+    >>> row = result["states"][2]
+    >>> print(row["load"], row["force_N"], round(row["pressure_Pa"]), round(row["travel_m"] * 1e3, 3))
+    1 N 1.0 6050 1.724
+
+    The SI values are the dimensionless state's times the case's scales:
+
+    >>> print(abs(states[2].force * pocket.force_scale_N - 1.0) < 1e-12)
+    True
+    """
     pocket = resolve(case)
     loads = load_forces(pocket)
     reached = [i for i, load in enumerate(loads) if not isinstance(load, OutOfRangeError)]
@@ -92,15 +152,84 @@ def solved(case: Case, progress=None) -> tuple[dict, Pocket, list]:
 
 
 def solve(case: Case, progress=None) -> dict:
-    """The results of the case (the first part of ``solved``)."""
+    """The results of a case, as ``pocket run`` writes them: the first part of ``solved``.
+
+    Parameters
+    ----------
+    case : Case
+        The case (``pocket.apps.cases``).
+    progress : callable, optional
+        ``progress(done, total)``, passed to the solver's compression curve.
+
+    Returns
+    -------
+    dict
+        JSON-ready: ``case``, ``inflated``, ``states``, ``unreachable``, ``provenance`` (``solved``).
+
+    Raises
+    ------
+    OutOfRangeError
+        If no load is reached.
+    ConvergenceError
+        If a solve fails.
+
+    Examples
+    --------
+    A load past the end of the model's range is listed with the reason, in the user's unit:
+
+    >>> from pocket.apps.cases import parse
+    >>> from pocket.apps.casefile import solve
+    >>> result = solve(parse({"sheet": {"thickness": "0.25 mm", "c1": "160 kPa", "c2": "47 kPa"},
+    ...                       "clamp": {"radius": "20 mm"}, "initial": {"pressure": "4.81275 kPa"},
+    ...                       "loads": {"forces": ["0.5 N", "100 N"]}}))
+    >>> print([row["load"] for row in result["states"]], [row["load"] for row in result["unreachable"]])
+    ['0.5 N'] ['100 N']
+    >>> print(result["unreachable"][0]["warnings"][0])
+    loads.forces[1] = '100 N' (Fhat = 16.53471956) is beyond the model's range, which ends at 60.1223 N ...
+    """
     return solved(case, progress)[0]
 
 
 def write(result: dict, paths, of: str | None = None) -> None:
-    """Write ``result`` to ``paths`` (``results_paths``: the JSON and the CSV file), both or neither,
-    recorded as pocket's results for ``of`` (``pocket.apps.folders.write_files``). Every column of the rows
-    (the CSV's, and the JSON's inflated state's) is one of pocket's documented columns
-    (``pocket.apps.columns.documented``: a ``KeyError`` before anything is written for one that is not)."""
+    """Write a case's results as JSON and CSV, both or neither.
+
+    The files are recorded as pocket's results for ``of``: existing ones may be replaced only if pocket wrote
+    them for the same case, unchanged (``pocket.apps.folders.write_files``). Every column of the rows (the
+    CSV's, and the JSON's inflated state's) is one of pocket's documented columns
+    (``pocket.apps.columns.documented``).
+
+    Parameters
+    ----------
+    result : dict
+        The results (``solve``).
+    paths : tuple of path
+        The JSON and the CSV file (``results_paths``).
+    of : str, optional
+        What the results are of (the case file), recorded with them.
+
+    Raises
+    ------
+    OutputError
+        If a file cannot be written (nothing half-written is left); an ``InputError`` for existing files pocket
+        may not replace.
+    KeyError
+        For a column that is not documented, before anything is written.
+
+    Examples
+    --------
+    >>> import csv, pathlib, tempfile
+    >>> from pocket.apps.cases import parse
+    >>> from pocket.apps.casefile import results_paths, solve, write
+    >>> result = solve(parse({"sheet": {"thickness": "0.25 mm", "c1": "160 kPa", "c2": "47 kPa"},
+    ...                       "clamp": {"radius": "20 mm"}, "initial": {"pressure": "4.81275 kPa"},
+    ...                       "loads": {"forces": ["0.5 N", "1 N"]}}))
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     json_path, csv_path = results_paths(folder, "button")
+    ...     write(result, (json_path, csv_path))
+    ...     rows = list(csv.DictReader(csv_path.open()))
+    >>> print([row["load"] for row in rows], rows[0]["force_N"])
+    ['0.5 N', '1 N'] 0.5
+    """
     json_path, csv_path = paths
     rows = [*result["states"], *result["unreachable"]]
     fields = list(dict.fromkeys(k for row in rows for k in row))

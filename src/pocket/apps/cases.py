@@ -100,13 +100,46 @@ _SECTIONS = {"name": None, "label": None, "tags": None,
 class Case:
     """A pocket in SI units: sheet, clamp, initial state and loads, with the solver to use.
 
-    ``material`` is the rubber with its stresses in Pa, ``fluid`` the fluid (a gas's ambient
-    pressure in Pa). ``initial`` is ``("pressure", P_I)``, ``("height", H0)`` or ``("volume", V)``;
-    ``load_kind`` is ``"forces"`` (F in N) or ``"heights"`` (H in m: the indenter's lowest point above the
-    clamp plane), or ``""`` for a case without loads (the validation suite chooses its own). ``given`` maps each
-    physical key (``"sheet.thickness"``, ``"loads.forces[0]"``) to the value as written.
-    ``warnings`` are about the inputs (``pocket.core.sizes``), one line each. ``indenter`` is what
-    presses, dimensionless (``pocket.core.indenters``; lengths in units of the clamp radius).
+    Read from a case file (``load``), a TOML table (``parse``) or the paper's Table 1 (``sample``); checked
+    before any solver runs. A case keeps the values as the user wrote them, so that results quote ``"0.2 N"``,
+    not 0.19999999999999998, and errors quote the user's value and unit.
+
+    Attributes
+    ----------
+    name : str
+        The case's name.
+    thickness : float
+        The sheet's thickness T, m.
+    material : Material
+        The rubber, its stresses in Pa.
+    radius : float
+        The clamp radius R, m.
+    initial : tuple
+        ``("pressure", P_I)`` in Pa, ``("height", H0)`` in m or ``("volume", V)`` in m^3.
+    load_kind : str
+        ``"forces"`` (F in N) or ``"heights"`` (H in m: the indenter's lowest point above the clamp plane), or
+        ``""`` for a case without loads (the validation suite chooses its own).
+    loads : tuple of float
+        The loads, SI.
+    solver : str
+        The solver's name; ``options`` its options, as (name, value) pairs.
+    given : tuple
+        Each physical key (``"sheet.thickness"``, ``"loads.forces[0]"``) -> the value as written (``as_given``).
+    fluid : Fluid
+        The fluid (a gas's ambient pressure in Pa).
+    warnings : tuple of str
+        About the inputs (a plain length that looks like millimetres, a thick sheet), one line each.
+    indenter : Indenter
+        What presses, dimensionless (lengths in units of the clamp radius).
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import sample
+    >>> case = sample(1)
+    >>> print(case.thickness, case.radius, case.initial, case.load_kind, case.loads[:3])
+    0.00025 0.02 ('pressure', 4812.75) forces (0.0, 0.5, 1.0)
+    >>> print(case.alpha == 47 / 160, case.modulus, case.as_given("sheet.thickness"))
+    True 1242000.0 0.25 mm
     """
 
     name: str
@@ -290,11 +323,45 @@ def _sizes(given, thickness, radius, initial, loads, membrane: bool) -> list[str
 
 
 def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=None) -> Case:
-    """A ``Case`` from the TOML table ``data``; ``where`` names it in error messages.
+    """A ``Case`` from a TOML table (a case file's content as a dict), checked.
 
-    Without ``require_loads`` the ``[loads]`` table is optional (a pocket without loads).
-    ``base`` is the folder that relative file names (a mesh) are relative to (the case
-    file's; by default the current folder).
+    Parameters
+    ----------
+    data : dict
+        The tables ``sheet``, ``clamp``, ``initial``, ``loads`` and the optional ``fluid``, ``indenter``,
+        ``solver``, ``name``, ``label``, ``tags`` (``pocket.apps.cases``); values with units, as strings (plain
+        numbers are SI, with a warning).
+    where : str, optional
+        The case's name in error messages.
+    require_loads : bool, optional
+        Without it the ``[loads]`` table is optional (a pocket without loads).
+    base : str or path, optional
+        The folder relative file names (a mesh, a profile) are relative to (the case file's; by default the
+        current folder).
+
+    Returns
+    -------
+    Case
+
+    Raises
+    ------
+    InputError
+        For unknown, missing or misplaced keys, wrong dimensions, impossible or absurd values, more than
+        ``MAX_LOADS`` loads; one line naming the key.
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import parse
+    >>> case = parse({"sheet": {"thickness": "0.25 mm", "c1": "160 kPa", "c2": "47 kPa"},
+    ...               "clamp": {"radius": "20 mm"}, "initial": {"pressure": "4.8 kPa"},
+    ...               "loads": {"forces": ["0.5 N", "1 N"]}})
+    >>> print(case.loads, case.solver)
+    (0.5, 1.0) shooting
+    >>> parse({"sheet": {"thickness": "0.25 kPa", "c1": "160 kPa", "c2": "47 kPa"},
+    ...        "clamp": {"radius": "20 mm"}, "initial": {"pressure": "4.8 kPa"}, "loads": {"forces": ["1 N"]}})
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: sheet.thickness = '0.25 kPa' has dimension [mass] / [length] / [time] ** 2, ...
     """
     if not isinstance(data, dict):
         raise InputError(f"{where}: a case must be a table, got {quote(data)}")
@@ -337,7 +404,49 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
 
 
 def load(path, *, require_loads: bool = True) -> Case:
-    """Read and check the case file ``path`` (file names in it are relative to its folder)."""
+    """Read and check a case file (TOML); file names in it are relative to its folder.
+
+    Parameters
+    ----------
+    path : str or path
+        The case file.
+    require_loads : bool, optional
+        As for ``parse``.
+
+    Returns
+    -------
+    Case
+
+    Raises
+    ------
+    InputError
+        For a file that cannot be read, is not UTF-8 TOML or is too large, and as ``parse``.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket.apps.cases import load
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "button.toml"
+    ...     _ = path.write_text('''
+    ... [sheet]
+    ... thickness = "1 mm"
+    ... material = "neo-hookean"
+    ... mu = "0.4 MPa"
+    ... [clamp]
+    ... radius = "10 mm"
+    ... [initial]
+    ... pressure = "20 kPa"
+    ... [loads]
+    ... forces = ["1 N"]
+    ... [indenter]
+    ... shape = "sphere"
+    ... radius = "5 mm"
+    ... ''')
+    ...     case = load(path)
+    >>> print(case.material.law, case.indenter)
+    neo-hookean Sphere(radius=0.5)
+    """
     return parse(read_toml(path), where=str(path), require_loads=require_loads, base=pathlib.Path(path).parent)
 
 
@@ -346,7 +455,33 @@ SAMPLES = {1: "0.25 mm", 2: "0.5 mm", 3: "0.8 mm", 4: "1.6 mm"}
 
 
 def sample(number) -> Case:
-    """Sample ``number`` (1-4) of the paper's Table 1, at P_I = 4.81275 kPa, forces 0-6 N (Fhat up to 0.99)."""
+    """Sample ``number`` of the paper's Table 1, at P_I = 4.81275 kPa, forces 0 to 6 N (Fhat up to 0.99).
+
+    The four silicone sheets: T = 0.25, 0.5, 0.8, 1.6 mm (``SAMPLES``), C1 = 160 kPa, C2 = 47 kPa, R = 20 mm.
+
+    Parameters
+    ----------
+    number : int
+        1 to 4.
+
+    Returns
+    -------
+    Case
+
+    Raises
+    ------
+    InputError
+        For another number.
+
+    Examples
+    --------
+    Sample 1 at P_I = 4.81275 kPa is the headline pocket, Phat_I = P_I R / (E T) = 0.31:
+
+    >>> from pocket.apps.cases import sample
+    >>> case = sample(1)
+    >>> print(round(case.initial[1] * case.radius / (case.modulus * case.thickness), 12))
+    0.31
+    """
     if isinstance(number, bool) or number not in SAMPLES:
         raise InputError(f"sample = {number!r}, but Table 1 has samples {', '.join(map(str, SAMPLES))}")
     data = {"name": f"sample {number}",

@@ -160,23 +160,76 @@ def _pressure_for_sheet(model, rubber, lengths, given, name, key, target, force,
 
 def design(radius, height, modulus, material, force, height_ratio=None, *, thickness=None, pressed_height=None,
            fluid=None, solver="shooting", points=20, indenter=None, name=None, **options) -> Design:
-    """Design by the paper's rules and by the full model (module docstring); SI numbers or strings with units.
+    """A soft button designed by the paper's rules (Table 2) and by the full model; SI numbers or strings with units.
 
-    Give the inflated ``height`` H0 (the thickness T is found), or the sheet's ``thickness`` T (H0 is found),
-    or both (H/H0 at F is found). The target at the force F is ``height_ratio`` H/H0 (default 0.8) or the
-    ``pressed_height`` H (a length), except when both H0 and T are given.
+    Give the inflated ``height`` H0 (the thickness T is found), or the sheet's ``thickness`` T (H0 is found), or
+    both (H/H0 at F is found). The target at the force F is ``height_ratio`` H/H0 (default 0.8) or the
+    ``pressed_height`` H, except when both H0 and T are given. The full model's answer is two scalar roots
+    (``pocket.apps.design``): Phat_I* from H0 / R, then Fhat* from the target; P_I = F / (pi R^2 Fhat*) and
+    T = P_I R / (E Phat_I*).
 
-    ``material``: a ``pocket.core.materials.Material`` (any stress unit: ``modulus`` sets E = 3 mu_0; or, with
-    ``modulus`` None, its stresses in Pa set E; a number is taken as a Mooney-Rivlin alpha = C2/C1,
-    ``as_material``). ``fluid``: None (a liquid) or a gas (``pocket.core.fluids.gas``) with its ambient
-    pressure in Pa. ``indenter``: None (the flat plate) or an ``[indenter]`` table in physical units
-    (``pocket.apps.indentertable.parse``: ``{"shape": "sphere", "radius": "8 mm"}``), what the finger is.
-    ``name(key)``, if given, names the inputs in messages (a command line's flags: ``name("radius")``,
-    ``name("indenter.radius")``), else they are named by their keys.
+    Parameters
+    ----------
+    radius : float or str
+        The clamp radius R (m, or a length with its unit).
+    height : float or str or None
+        The inflated height H0 (a length), or None with ``thickness``.
+    modulus : float or str or None
+        E = 3 mu_0 (a pressure); None to take it from ``material``'s stresses in Pa.
+    material : Material or float
+        The rubber: a ``pocket.core.materials.Material`` (with ``modulus``, any stress unit: only the ratios
+        matter), or a Mooney-Rivlin alpha = C2/C1.
+    force : float or str
+        The finger's force F (N, or a force with its unit).
+    height_ratio : float, optional
+        The target H/H0 at F (default 0.8).
+    thickness : float or str, optional
+        The sheet's thickness T (a length), if known.
+    pressed_height : float or str, optional
+        The target H at F (a length), instead of ``height_ratio``.
+    fluid : Fluid, optional
+        None (a liquid) or a gas (``pocket.core.fluids.gas``) with its ambient pressure in Pa.
+    solver : str, optional
+        The solver by name (``"shooting"``, ``"fem"``, ...); ``**options`` its options.
+    points : int, optional
+        Points of the force-travel curve (the feel), at forces up to 2 F.
+    indenter : dict, optional
+        None (the flat plate) or an ``[indenter]`` table in physical units (``{"shape": "sphere",
+        "radius": "8 mm"}``): what the finger is.
+    name : callable, optional
+        ``name(key)`` names the inputs in messages (a command line's flags), else their keys.
 
-    A length outside the sizes of a pocket, or a sheet too thick for a membrane, is an ``InputError``; a
-    value without a unit (``pocket.core.units.plain_warnings``) or T/R above 0.1 is one of the design's
-    ``warnings`` (``pocket.core.sizes``).
+    Returns
+    -------
+    Design
+        SI values named with their unit, the model's ``pressure_initial`` (Phat_I*) and ``force`` (Fhat*), the
+        paper's answer and what it gives in the full model, and the feel.
+
+    Raises
+    ------
+    InputError
+        For missing or contradictory inputs, a length outside the sizes of a pocket, a sheet too thick for a
+        membrane. A value without a unit, or T/R above 0.1, is one of the design's ``warnings``.
+    OutOfRangeError
+        For a target the model's first branch does not reach.
+
+    Examples
+    --------
+    A button of R = 10 mm and H0 = 3 mm that a 1 N press takes to 80 % of its height:
+
+    >>> from pocket.apps.design import design
+    >>> button = design("10 mm", "3 mm", "1 MPa", 0.3, "1 N", points=3)
+    >>> print(f"P_I = {button.pressure_initial_Pa / 1e3:.3f} kPa, T = {button.thickness_m * 1e3:.3f} mm")
+    P_I = 14.650 kPa, T = 1.462 mm
+    >>> print(round(button.height_ratio, 9), button.solved, button.curve_force_N)
+    0.8 ('pressure_initial', 'thickness') [0.66666667 1.33333333 2.        ]
+
+    Its model numbers are the definitions Phat_I = P_I R / (E T) and Fhat = F / (P_I pi R^2):
+
+    >>> import math
+    >>> print(abs(button.pressure_initial - button.pressure_initial_Pa * 0.01 / (1e6 * button.thickness_m)) < 1e-12,
+    ...       abs(button.force - 1 / (button.pressure_initial_Pa * math.pi * 0.01**2)) < 1e-12)
+    True True
     """
     name = name or (lambda key: key)
     given = {key: value for key, value in (("radius", radius), ("height", height), ("thickness", thickness),

@@ -33,10 +33,45 @@ PAPER_THICKNESS_FACTOR = 0.216  # T = 0.216 P_I R^4 / (E H0^3) (Bouremel et al. 
 
 @dataclasses.dataclass(frozen=True)
 class Design:
-    """A button design: SI values carry their unit in the name; ``pressure_initial`` (Phat_I*)
-    and ``force`` (Fhat*) are the model's dimensionless answer; ``solved`` names the SI values found (the
-    others were given): ``("pressure_initial", "thickness")`` from H0, ``("pressure_initial", "height")``
-    from T, ``("pressure_initial", "height_ratio")`` from both."""
+    """A button design (``pocket.apps.design.design``): SI values carry their unit in the name.
+
+    Attributes
+    ----------
+    pressure_initial_Pa, thickness_m, height_m, height_ratio : float
+        The design: P_I, T, the inflated height H0 and H/H0 at F.
+    paper_pressure_initial_Pa, paper_thickness_m, paper_height_m : float
+        The paper's rules' answer (``paper_rules``).
+    paper_model_height_m, paper_model_height_ratio : float or None
+        The H0 and H/H0 that the paper's (P_I, T) give in the full model (None: no such state).
+    pressure_initial, force : float
+        The model's dimensionless answer, Phat_I* and Fhat*.
+    stiffness_N_per_m : float
+        dF/d(travel) at F.
+    curve_force_N, curve_travel_m, curve_stiffness_N_per_m : numpy.ndarray
+        The feel: force, travel H0 - H and stiffness, shape (n,).
+    curve_limited : bool
+        Whether the curve stops short of 2 F, at the end of the model's range.
+    material : Material
+        The rubber, in units of mu_0.
+    fluid : Fluid
+        The fluid, a gas's ambient pressure in Pa.
+    ambient : float or None
+        A gas's Phat_atm = P_atm R / (E T) at the designed T.
+    warnings : tuple of str
+        On the inputs and the design (a plain length in m, a thick sheet).
+    solved : tuple of str
+        The SI values found (the others were given): ``("pressure_initial", "thickness")`` from H0,
+        ``("pressure_initial", "height")`` from T, ``("pressure_initial", "height_ratio")`` from both.
+
+    Examples
+    --------
+    Its SI values carry their unit in their names (``design`` shows one made):
+
+    >>> import dataclasses
+    >>> from pocket.apps.design import Design
+    >>> print([field.name for field in dataclasses.fields(Design) if field.name.endswith("_Pa")])
+    ['pressure_initial_Pa', 'paper_pressure_initial_Pa']
+    """
 
     pressure_initial_Pa: float
     thickness_m: float
@@ -84,7 +119,32 @@ class Design:
 
 
 def paper_rules(radius, height, modulus, force) -> tuple[float, float]:
-    """(P_I, T) by the paper's Table 2."""
+    """(P_I, T) by the paper's Table 2: P_I = 5.7 F / (pi R^2), T = 0.216 P_I R^4 / (E H0^3).
+
+    Parameters
+    ----------
+    radius : float
+        R, m.
+    height : float
+        H0, m.
+    modulus : float
+        E, Pa.
+    force : float
+        F, N.
+
+    Returns
+    -------
+    tuple of float
+        P_I in Pa and T in m.
+
+    Examples
+    --------
+    >>> import math
+    >>> from pocket.apps.design import paper_rules
+    >>> p_i, t = paper_rules(0.01, 0.003, 1e6, 1.0)
+    >>> print(round(p_i * math.pi * 0.01**2, 12), round(t * 1e3, 4))
+    5.7 1.4515
+    """
     p_i = PAPER_FORCE_FACTOR * force / (math.pi * radius**2)
     return p_i, PAPER_THICKNESS_FACTOR * p_i * radius**4 / (modulus * height**3)
 

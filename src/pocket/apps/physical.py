@@ -37,9 +37,25 @@ __all__ = ["Pocket", "compressed_row", "forces", "inflated_row", "load_forces", 
 
 @dataclasses.dataclass(frozen=True)
 class Pocket:
-    """A case with its dimensionless initial pressure ``pressure_initial`` = Phat_I = P_I R / (E T).
+    """A case resolved to the dimensionless model: the case and its Phat_I.
 
-    SI values carry their unit in the name (``pressure_initial_Pa``, ``force_scale_N``).
+    SI values carry their unit in the name (``pressure_initial_Pa``, ``force_scale_N``): P = Phat E T / R,
+    F = Fhat P_I pi R^2, lengths = (x / R) R.
+
+    Attributes
+    ----------
+    case : Case
+        The case (``pocket.apps.cases``).
+    pressure_initial : float
+        Phat_I = P_I R / (E T).
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import sample
+    >>> from pocket.apps.physical import resolve
+    >>> pocket = resolve(sample(1))
+    >>> print(pocket.pressure_initial, round(pocket.pressure_scale_Pa, 6), round(pocket.force_scale_N, 6))
+    0.31 15525.0 6.04788
     """
 
     case: Case
@@ -118,11 +134,36 @@ def _scales(case: Case) -> str:
 
 
 def resolve(case: Case) -> Pocket:
-    """Solve for Phat_I from the case's initial state (pressure, height or volume).
+    """A case resolved to the model: Phat_I solved for from the case's initial state (pressure, height or volume).
 
-    A pressure, height or volume the model's first branch does not reach is an ``OutOfRangeError``
-    quoting the value as the case gives it (``Case.as_given``), a pressure with the thickness and
-    radius that scale it.
+    Parameters
+    ----------
+    case : Case
+        The case (``pocket.apps.cases``).
+
+    Returns
+    -------
+    Pocket
+
+    Raises
+    ------
+    OutOfRangeError
+        For a pressure, height or volume the model's first branch does not reach, quoting the value as the case
+        gives it (a pressure with the thickness and radius that scale it).
+
+    Examples
+    --------
+    A pocket given by its inflated height H0 gets the pressure that inflates it that high:
+
+    >>> from pocket import shooting
+    >>> from pocket.apps.cases import parse
+    >>> from pocket.apps.physical import resolve
+    >>> pocket = resolve(parse({"sheet": {"thickness": "0.25 mm", "c1": "160 kPa", "c2": "47 kPa"},
+    ...                         "clamp": {"radius": "20 mm"}, "initial": {"height": "9 mm"}},
+    ...                        require_loads=False))
+    >>> H0 = shooting.inflate(pocket.material, pocket.pressure_initial).height * 20
+    >>> print(round(H0, 9))
+    9.0
     """
     kind, value = case.initial
     unit = Pocket(case, 1.0)  # Phat_I = 1: its pressure_initial_Pa is E T / R

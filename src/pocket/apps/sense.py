@@ -76,7 +76,35 @@ MAX_POINTS = 10_000
 
 @dataclasses.dataclass(frozen=True)
 class Reading:
-    """A force reading: SI values carry their unit in the name, ``force`` is Fhat = F / (P_I pi R^2)."""
+    """A force reading of a pocket: SI values carry their unit in the name.
+
+    Attributes
+    ----------
+    force_N, pressure_Pa : float
+        The force F and the (gauge) pressure P.
+    pressure_ratio : float
+        P / P_I.
+    contact_area_m2 : float
+        The curved area in contact (F / P on the flat plate).
+    sensitivity_N_per_Pa, sensitivity_kPa_per_N : float
+        dF/dP and dP/dF there.
+    travel_m : float
+        H0 - H, the indenter's descent from the top of the inflated dome.
+    force : float
+        Fhat = F / (P_I pi R^2).
+    rubber : tuple
+        The state's rubber and fluid as (key, value) pairs: material, its parameters (units of mu_0), fluid, a
+        gas's ambient (Phat_atm) and gamma.
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import sample
+    >>> from pocket.apps.physical import resolve
+    >>> from pocket.apps.sense import sense
+    >>> row = sense(resolve(sample(1)), pressure="5 kPa").row()
+    >>> print(list(row)[:4], row["material"])
+    ['force_N', 'pressure_Pa', 'pressure_ratio', 'contact_area_m2'] mooney-rivlin
+    """
 
     force_N: float
     pressure_Pa: float
@@ -124,9 +152,49 @@ def _beyond(pocket: Pocket, what: str, given) -> OutOfRangeError:
 
 
 def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
-    """The force at the measured ``pressure`` (Pa, or a string with unit) or pressure ``ratio`` P/P_I.
+    """The force on a pocket from its measured pressure, or pressure ratio.
 
-    A pressure below P_I, or past the model's range, is an ``OutOfRangeError`` quoting it as given.
+    The root Fhat of P/P_I(Fhat) = the measured ratio, on the forward solver to its resolution: no fitted curve
+    and no extrapolation.
+
+    Parameters
+    ----------
+    pocket : Pocket
+        The pocket (``pocket.apps.physical.resolve`` of a case).
+    pressure : float or str, optional
+        The measured gauge pressure P (Pa, or a string with unit).
+    ratio : float, optional
+        The measured P / P_I, instead of ``pressure``.
+
+    Returns
+    -------
+    Reading
+
+    Raises
+    ------
+    InputError
+        For neither or both of ``pressure`` and ``ratio``, or a value that is not a pressure.
+    OutOfRangeError
+        For a pressure below P_I, or past the model's range, quoting it as given.
+
+    Examples
+    --------
+    Sample 1 of the paper's Table 1, inflated at 4.81275 kPa, reads 5 kPa:
+
+    >>> from pocket.apps.cases import sample
+    >>> from pocket.apps.physical import resolve
+    >>> from pocket.apps.sense import sense
+    >>> pocket = resolve(sample(1))
+    >>> reading = sense(pocket, pressure="5 kPa")
+    >>> print(f"F = {reading.force_N:.4f} N, travel {reading.travel_m * 1e3:.4f} mm")
+    F = 0.1515 N, travel 0.5542 mm
+
+    Pressed by that force, the pocket's pressure is 5 kPa:
+
+    >>> from pocket import shooting
+    >>> state = shooting.compress(pocket.material, pocket.pressure_initial, reading.force)
+    >>> print(round(state.pressure * pocket.pressure_scale_Pa, 6))
+    5000.0
     """
     if (pressure is None) == (ratio is None):
         raise InputError("give either a pressure or a pressure ratio, not both or neither")
@@ -149,10 +217,39 @@ def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
 
 
 def calibration(pocket: Pocket, max_force, points: int = 21, *, key: str = "max_force") -> list[Reading]:
-    """Readings at ``points`` forces evenly spaced from 0 to ``max_force`` (N, or a string with unit).
+    """Readings at ``points`` forces evenly spaced from 0 to ``max_force``: a sensor's calibration table.
 
-    A ``max_force`` past the end of the model's range is an ``OutOfRangeError`` naming ``key`` and quoting
-    the end in the unit of ``max_force`` (``pocket.apps.forcerange``).
+    Parameters
+    ----------
+    pocket : Pocket
+        The pocket (``pocket.apps.physical.resolve`` of a case).
+    max_force : float or str
+        The largest force (N, or a string with unit).
+    points : int, optional
+        The number of readings, at least 2.
+    key : str, optional
+        The name of ``max_force`` in error messages.
+
+    Returns
+    -------
+    list of Reading
+
+    Raises
+    ------
+    InputError
+        For an invalid force or count.
+    OutOfRangeError
+        For a ``max_force`` past the end of the model's range, naming ``key`` and quoting the end in the unit of
+        ``max_force``.
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import sample
+    >>> from pocket.apps.physical import resolve
+    >>> from pocket.apps.sense import calibration
+    >>> table = calibration(resolve(sample(1)), "1 N", points=3)
+    >>> print([(r.force_N, round(r.pressure_Pa)) for r in table])
+    [(0.0, 4813), (0.5, 5435), (1.0, 6050)]
     """
     points = check_count("points", points, 2, MAX_POINTS)
     top = quantity(key, max_force, "force")
@@ -165,8 +262,34 @@ _INFLATION_STEP = 1e-4  # relative step of the central differences of sensitivit
 
 
 def sensitivity_at_rest(pocket: Pocket) -> float:
-    """dP/dF at F -> 0 (kPa/N) by reciprocity (module docstring), from inflations at P_I (1 +- 1e-4):
-    truncation ~1e-8 and round-off ~1e-7 relative for a solver resolving ~1e-11."""
+    """dP/dF at F -> 0, by reciprocity, from the inflated pocket alone.
+
+    dP/dF = (dH0/dP) / (dV0/dP + V / (gamma (P + P_atm))) (``pocket.apps.sense``; the gas's compliance absent for
+    a liquid), dH0/dP and dV0/dP by central differences of inflations at P_I (1 +- 1e-4): truncation ~1e-8 and
+    round-off ~1e-7 relative for a solver resolving ~1e-11. The same for any indenter touching at the pole.
+
+    Parameters
+    ----------
+    pocket : Pocket
+        The pocket (``pocket.apps.physical.resolve`` of a case).
+
+    Returns
+    -------
+    float
+        dP/dF in kPa/N.
+
+    Examples
+    --------
+    It is the slope of the pressure-force curve at its start, which the calibration computes from compressions:
+
+    >>> from pocket.apps.cases import sample
+    >>> from pocket.apps.physical import resolve
+    >>> from pocket.apps.sense import calibration, sensitivity_at_rest
+    >>> pocket = resolve(sample(1))
+    >>> at_rest = sensitivity_at_rest(pocket)
+    >>> print(round(at_rest, 4), abs(at_rest / calibration(pocket, "1 N", 3)[0].sensitivity_kPa_per_N - 1) < 1e-5)
+    1.2114 True
+    """
     solver = pocket.solver()
     inflate = entry(solver, "inflate", "the sensitivity at rest")
     phat, h = pocket.pressure_initial, _INFLATION_STEP * pocket.pressure_initial
@@ -194,12 +317,36 @@ def _hull(x, y, sign) -> list[int]:
 
 
 def linearity(forces, pressures) -> float:
-    """The largest deviation of ``pressures`` (shape (n,), any unit) from their best straight line in
-    ``forces`` (shape (n,), any unit; n >= 2), in % of the full scale max - min of ``pressures``.
+    """The largest deviation of pressures from their best straight line in the forces, in % of the full scale.
 
-    The best line makes the largest deviation smallest: its deviation is half the smallest vertical
-    width of the points, max(P - b F) - min(P - b F) minimised over the slope b, a convex piecewise
-    linear function of b whose corners are the slopes of the edges of the points' convex hull.
+    The best line makes the largest deviation smallest ("independent linearity"): its deviation is half the
+    smallest vertical width of the points, max(P - b F) - min(P - b F) minimised over the slope b, a convex
+    piecewise linear function of b whose corners are the slopes of the edges of the points' convex hull.
+
+    Parameters
+    ----------
+    forces : array_like
+        Shape (n,), n >= 2, any unit.
+    pressures : array_like
+        Shape (n,), any unit.
+
+    Returns
+    -------
+    float
+        The deviation in % of max - min of ``pressures``.
+
+    Raises
+    ------
+    InputError
+        For fewer than two points, arrays of different shapes, or values that are not finite.
+
+    Examples
+    --------
+    A straight line deviates by nothing; a parabola by an eighth of its rise:
+
+    >>> from pocket.apps.sense import linearity
+    >>> print(linearity([0, 1, 2], [1, 3, 5]), linearity([0, 1, 2, 3, 4], [0, 1, 4, 9, 16]))
+    0.0 12.5
     """
     x, y = (np.asarray(v, dtype=float) for v in (forces, pressures))
     order = np.argsort(x, kind="stable")
@@ -216,8 +363,35 @@ def linearity(forces, pressures) -> float:
 
 
 def force_range(low, high, key: str = "range") -> tuple[float, float]:
-    """``low`` and ``high`` (N, or strings with unit) in N, checked: 0 <= low < high (an ``InputError`` naming
-    ``key`` otherwise)."""
+    """A force range in N, checked: 0 <= low < high.
+
+    Parameters
+    ----------
+    low, high : float or str
+        N, or strings with unit.
+    key : str, optional
+        The range's name in error messages.
+
+    Returns
+    -------
+    tuple of float
+        (low, high) in N.
+
+    Raises
+    ------
+    InputError
+        Otherwise, naming ``key``.
+
+    Examples
+    --------
+    >>> from pocket.apps.sense import force_range
+    >>> print(force_range("0 N", "500 mN"))
+    (0.0, 0.5)
+    >>> force_range("1 N", "0.5 N")
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: range = '1 N' '0.5 N', but it must go up from 0 or more
+    """
     start, top = quantity(key, low, "force"), quantity(key, high, "force")
     if not 0.0 <= start < top:
         raise InputError(f"{key} = {quote(low)} {quote(high)}, but it must go up from 0 or more")
@@ -225,8 +399,39 @@ def force_range(low, high, key: str = "range") -> tuple[float, float]:
 
 
 def range_linearity(pocket: Pocket, low, high, points: int = 21, *, key: str = "range") -> float:
-    """``linearity`` of P(F) at ``points`` forces evenly from ``low`` to ``high`` (N, or strings with unit),
-    0 <= low < high, ``high`` within the model's range (else an ``OutOfRangeError`` naming ``key``)."""
+    """The ``linearity`` of a pocket's pressure-force curve P(F) over a force range.
+
+    Parameters
+    ----------
+    pocket : Pocket
+        The pocket (``pocket.apps.physical.resolve`` of a case).
+    low, high : float or str
+        The range, N or strings with unit, 0 <= low < high.
+    points : int, optional
+        The forces evenly spaced from ``low`` to ``high``.
+    key : str, optional
+        The range's name in error messages.
+
+    Returns
+    -------
+    float
+        The deviation in % of the full-scale pressure rise.
+
+    Raises
+    ------
+    InputError
+        For an invalid range.
+    OutOfRangeError
+        For ``high`` past the end of the model's range, naming ``key``.
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import sample
+    >>> from pocket.apps.physical import resolve
+    >>> from pocket.apps.sense import range_linearity
+    >>> print(f"{range_linearity(resolve(sample(1)), '0 N', '1 N', points=5):.3f} %")
+    0.170 %
+    """
     points = check_count("points", points, 2, MAX_POINTS)
     start, top = force_range(low, high, key)
     top = check_force(pocket, key, high, top / pocket.force_scale_N)

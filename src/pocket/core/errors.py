@@ -42,21 +42,76 @@ STRETCH_LIMIT = 100.0
 
 
 class PocketError(Exception):
-    """Base class of the errors below; the message is one line."""
+    """The base class of pocket's errors; the message is one line.
+
+    The command line prints it on stderr and exits with ``exit_status``: 2 for bad input or a state outside the
+    model, 1 for a solver failure, an output that could not be written or a cluster that cannot run the work.
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> from pocket.core.errors import PocketError, exit_status
+    >>> try:
+    ...     shooting.compress(-2.0, 0.31, 0.19)
+    ... except PocketError as err:
+    ...     print(type(err).__name__, exit_status(err))
+    InputError 2
+    """
 
 
 class InputError(PocketError, ValueError):
-    """Invalid input, detected before any work."""
+    """Invalid input, detected before any work (alpha <= -1, Phat <= 0, a negative force, a bad mesh file).
+
+    Also a ``ValueError``. Exit status 2.
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> shooting.inflate(47 / 160, -0.31)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: pressure = -0.31, but it must be > 0
+    """
 
 
 class OutOfRangeError(PocketError, ValueError):
-    """Valid input for which the model has no (first-branch) solution."""
+    """Valid input for which the model has no (first-branch) solution.
+
+    No inflated state above the first branch's pressure maximum, a force past the end of the compression range
+    (the free sheet reaching the clamp plane), a height above the pocket. Also a ``ValueError``. Exit status 2.
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> shooting.compress(47 / 160, 0.31, 20.0)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.OutOfRangeError: force = 20.0 is beyond the model's range, which ends at ...
+    """
 
 
 class ConvergenceError(PocketError, RuntimeError):
-    """A nonlinear solve failed after step cutting.
+    """A nonlinear solve failed after step cutting: the numerics, not the input. Exit status 1.
 
-    Attributes: ``load`` (the load level reached), ``iterations``, ``residual``.
+    Also a ``RuntimeError``.
+
+    Parameters
+    ----------
+    message : str
+        One line: where (load level), after how many iterations, with what residual, and why.
+    load : float, optional
+        The load level reached.
+    iterations : int, optional
+        The iterations made.
+    residual : float, optional
+        The last residual.
+
+    Examples
+    --------
+    >>> from pocket.core.errors import ConvergenceError, exit_status
+    >>> err = ConvergenceError("Newton failed at Fhat = 0.5", load=0.5, iterations=40, residual=1e-3)
+    >>> print(err.load, err.iterations, exit_status(err))
+    0.5 40 1
     """
 
     def __init__(self, message: str, *, load=float("nan"), iterations=0, residual=float("nan")):
@@ -67,11 +122,29 @@ class ConvergenceError(PocketError, RuntimeError):
 
 
 class OutputError(PocketError, OSError):
-    """A result could not be written; the partial output has been removed."""
+    """A result could not be written (a read-only folder, a full disk); the partial output has been removed.
+
+    Also an ``OSError``. Exit status 1.
+
+    Examples
+    --------
+    >>> from pocket.core.errors import OutputError, exit_status
+    >>> print(exit_status(OutputError("cannot write out/: read-only")))
+    1
+    """
 
 
 class ClusterError(PocketError, RuntimeError):
-    """A cluster's workers cannot run the work: none, without pocket, or the scheduler lost."""
+    """A cluster's workers cannot run the work: none, without pocket, or the scheduler lost. Exit status 1.
+
+    Also a ``RuntimeError``.
+
+    Examples
+    --------
+    >>> from pocket.core.errors import ClusterError, exit_status
+    >>> print(exit_status(ClusterError("no worker joined the cluster")))
+    1
+    """
 
 
 def above_pressure_maximum(pressure: float, maximum: float, volume: float, where: str) -> OutOfRangeError:
@@ -92,8 +165,26 @@ def past_stretch_limit(asked: str) -> OutOfRangeError:
 
 
 def exit_status(err: PocketError) -> int:
-    """The command line's exit status for ``err``: 1 for a solver failure, an output that could not
-    be written or a cluster that cannot run the work, 2 for bad input or a state outside the model."""
+    """The command line's exit status for a pocket error.
+
+    Parameters
+    ----------
+    err : PocketError
+        The error.
+
+    Returns
+    -------
+    int
+        1 for a solver failure, an output that could not be written or a cluster that cannot run the work
+        (``ConvergenceError``, ``OutputError``, ``ClusterError``); 2 for bad input or a state outside the model
+        (``InputError``, ``OutOfRangeError``).
+
+    Examples
+    --------
+    >>> from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError, exit_status
+    >>> print([exit_status(e("...")) for e in (InputError, OutOfRangeError, ConvergenceError)])
+    [2, 2, 1]
+    """
     return 1 if isinstance(err, (ConvergenceError, OutputError, ClusterError)) else 2
 
 

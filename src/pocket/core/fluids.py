@@ -35,7 +35,34 @@ AMBIENT = 101325.0
 
 @dataclasses.dataclass(frozen=True)
 class Fluid:
-    """``kind`` "liquid" or "gas"; a gas has ``ambient`` (P_atm, in the unit of the pressures) and ``gamma``."""
+    """The fluid in the pocket: a liquid (fixed volume) or an ideal gas sealed at the initial pressure.
+
+    A gas follows (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma, pressures gauge. Make a gas with ``gas``
+    (checked); ``LIQUID`` is the liquid.
+
+    Parameters
+    ----------
+    kind : {"liquid", "gas"}
+        The fluid.
+    ambient : float
+        A gas's ambient (absolute) pressure P_atm, in the unit of the pressures it meets: Pa in physical units,
+        Phat_atm = P_atm R / (E T) for a solver.
+    gamma : float
+        A gas's polytropic exponent, in ``GAMMA_RANGE`` (1 isothermal, 1.4 air compressed adiabatically).
+
+    Examples
+    --------
+    Air at 1 atm, compressed isothermally (Boyle's law) from a gauge pressure of 5 kPa to 6 kPa:
+
+    >>> from pocket.core.fluids import LIQUID, gas
+    >>> air = gas(101325.0)
+    >>> print(round(air.volume_ratio(6e3, 5e3), 6), round((5e3 + 101325) / (6e3 + 101325), 6))
+    0.990683 0.990683
+    >>> print(LIQUID.volume_ratio(6e3, 5e3))
+    1.0
+    >>> print(air.scaled(1e4).describe())
+    {'fluid': 'gas', 'ambient': 10.1325, 'gamma': 1.0}
+    """
 
     kind: str = "liquid"
     ambient: float = math.inf
@@ -65,7 +92,42 @@ LIQUID = Fluid()
 
 
 def gas(ambient, gamma=1.0, where: str = "fluid") -> Fluid:
-    """An ideal gas at ambient pressure ``ambient`` (> 0) with exponent ``gamma`` in GAMMA_RANGE, checked."""
+    """An ideal gas at the ambient pressure ``ambient`` with the polytropic exponent ``gamma``, checked.
+
+    Parameters
+    ----------
+    ambient : float
+        P_atm > 0, absolute: in Pa for a case, as Phat_atm = P_atm R / (E T) for a solver.
+    gamma : float, optional
+        In ``GAMMA_RANGE``, [1, 5/3]: 1 isothermal, 1.4 air compressed adiabatically, 5/3 a monatomic gas.
+    where : str, optional
+        The prefix of the names in error messages.
+
+    Returns
+    -------
+    Fluid
+
+    Raises
+    ------
+    InputError
+        For an ambient pressure that is not > 0, or a gamma outside ``GAMMA_RANGE``.
+
+    Examples
+    --------
+    A gas stiffens towards the liquid as its ambient pressure grows:
+
+    >>> from pocket import shooting
+    >>> from pocket.core.fluids import gas
+    >>> soft = shooting.compress(47 / 160, 0.31, 0.19, fluid=gas(1.0))
+    >>> stiff = shooting.compress(47 / 160, 0.31, 0.19, fluid=gas(1e6))
+    >>> liquid = shooting.compress(47 / 160, 0.31, 0.19)
+    >>> print(soft.pressure_ratio < stiff.pressure_ratio, abs(stiff.pressure_ratio - liquid.pressure_ratio) < 1e-5)
+    True True
+    >>> gas(1.0, gamma=2.0)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: fluid.gamma = 2.0, but it must lie in [1, 5/3] ...
+    """
     ambient_value = check_finite(f"{where}.ambient", ambient)
     if ambient_value <= 0.0:
         raise InputError(f"{where}.ambient = {quote(ambient)}, but the ambient (absolute) pressure must be > 0")
@@ -78,7 +140,32 @@ def gas(ambient, gamma=1.0, where: str = "fluid") -> Fluid:
 
 
 def as_fluid(value) -> Fluid:
-    """The fluid of ``value``: None or "liquid" is ``LIQUID``; a ``Fluid`` is re-checked and returned as given."""
+    """The fluid of ``value``, as every compression entry point takes its ``fluid`` argument.
+
+    Parameters
+    ----------
+    value : Fluid or str or None
+        None or ``"liquid"`` is ``LIQUID``; a ``Fluid`` is re-checked and returned as given.
+
+    Returns
+    -------
+    Fluid
+
+    Raises
+    ------
+    InputError
+        For anything else, or a fluid that is not a liquid or a valid gas.
+
+    Examples
+    --------
+    >>> from pocket.core.fluids import LIQUID, as_fluid
+    >>> print(as_fluid(None) is LIQUID, as_fluid("liquid") is LIQUID)
+    True True
+    >>> as_fluid("air")
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: fluid = 'air', but it must be 'liquid' or a gas (pocket.core.fluids.gas)
+    """
     if value is None or (isinstance(value, str) and value == "liquid"):
         return LIQUID
     if not isinstance(value, Fluid):

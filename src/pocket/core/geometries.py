@@ -78,10 +78,25 @@ class Clamp(Support):
 
 
 class Geometry(abc.ABC):
-    """An axisymmetric reference surface, in units of R (module docstring): ``name`` (the word a user
-    writes), ``description`` (one line), the meridian's ``length`` L, the reference ``radius`` r0(S) and
-    ``height`` z0(S) of the material point at arc length S from the pole, its ``end`` support and the
-    undeformed ``volume`` V0 it encloses."""
+    """An axisymmetric reference surface, the undeformed membrane a solver is given, in units of R.
+
+    Its meridian runs by arc length S from the pole (S = 0) to its end S = L, held by a ``Support``; a material
+    point at S sits at the reference radius r0(S) and height z0(S). Each solver maps the surfaces it poses to its
+    formulation through its table ``GEOMETRIES`` and refuses another in one line.
+
+    Attributes
+    ----------
+    name : str
+        The word a user writes.
+    description : str
+        One line.
+
+    Examples
+    --------
+    >>> from pocket.core.geometries import DISC, GEOMETRIES, Geometry
+    >>> print(list(GEOMETRIES), isinstance(DISC, Geometry))
+    ['pocket'] True
+    """
 
     name: ClassVar[str]
     description: ClassVar[str]
@@ -114,8 +129,18 @@ class Geometry(abc.ABC):
 
 @dataclasses.dataclass(frozen=True)
 class Disc(Geometry):
-    """The flat disc of radius R clamped at its rim: the pocket's sheet before inflation. Its arc length is
-    its radius, r0(S) = S, and it lies in the clamp plane, z0 = 0."""
+    """The flat disc of radius R clamped at its rim: the pocket's sheet before inflation (``DISC``, every solver's
+    default).
+
+    Its arc length is its radius, r0(S) = S, and it lies in the clamp plane, z0 = 0: every solver writes the
+    Lagrangian radius r for both.
+
+    Examples
+    --------
+    >>> from pocket.core.geometries import DISC
+    >>> print(DISC.length, DISC.radius([0.0, 0.5]), DISC.height([0.0, 0.5]), DISC.end, DISC.volume)
+    1.0 [0.  0.5] [0. 0.] Clamp(radius=1.0, height=0.0) 0.0
+    """
 
     name: ClassVar[str] = "pocket"
     description: ClassVar[str] = "a flat sheet clamped at its rim r = R"
@@ -151,8 +176,32 @@ GEOMETRIES: dict[str, Geometry] = {DISC.name: DISC}
 
 
 def as_geometry(value) -> Geometry:
-    """The reference surface of ``value``: None is the flat disc, a name of ``GEOMETRIES`` its surface, a
-    ``Geometry`` is returned as given; anything else is an InputError."""
+    """The reference surface of ``value``, as every entry point takes its ``geometry`` argument.
+
+    Parameters
+    ----------
+    value : Geometry or str or None
+        None is the flat disc (``DISC``), a name of ``GEOMETRIES`` its surface; a ``Geometry`` is returned as given.
+
+    Returns
+    -------
+    Geometry
+
+    Raises
+    ------
+    InputError
+        For anything else.
+
+    Examples
+    --------
+    >>> from pocket.core.geometries import DISC, as_geometry
+    >>> print(as_geometry(None) is DISC, as_geometry("pocket") is DISC)
+    True True
+    >>> as_geometry("capsule")
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: geometry = 'capsule', but it must be one of pocket or a Geometry ...
+    """
     if value is None:
         return DISC
     if isinstance(value, Geometry):

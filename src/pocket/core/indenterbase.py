@@ -34,11 +34,31 @@ def key_name(key: str) -> str:
 
 @dataclasses.dataclass(frozen=True)
 class Indenter(abc.ABC):
-    """An indenter (module docstring): its kind's ``name`` and one-line ``summary``; ``pressure_area``, whether
-    F = P A_c holds as an identity (the plate: the sheet in contact lies flat and carries the fluid pressure P
-    straight to it), rather than F = the integral of the contact pressure; ``keys``, what its ``[indenter]``
-    table takes besides ``shape`` (its case-file keys and command-line flags). A kind defines ``height``,
-    ``slope``, ``second`` and ``reach``; the rest follows from them or has a default it may override."""
+    """A rigid, frictionless body of revolution pushed down the axis onto the dome: the base of every indenter.
+
+    Its lower surface z(rho) stands above its lowest point (units R, z(0) = 0). A kind defines ``height``,
+    ``slope``, ``second`` and ``reach``; the rest follows from them or has a default it may override. The
+    kinds are registered in ``INDENTERS`` (``register``); each solver maps a kind to its contact formulation
+    through its own table (``CONTACTS``).
+
+    Attributes
+    ----------
+    name : str
+        The kind's name, as case files and flags write it.
+    summary : str
+        The kind in one line.
+    pressure_area : bool
+        Whether F = P A_c holds as an identity (the plate: the sheet in contact lies flat and carries the fluid
+        pressure P straight to it), rather than F = the integral of the contact pressure.
+    keys : tuple of str
+        What its ``[indenter]`` table takes besides ``shape`` (its case-file keys and command-line flags).
+
+    Examples
+    --------
+    >>> from pocket.core.indenters import INDENTERS, Indenter
+    >>> print(list(INDENTERS), all(issubclass(kind, Indenter) for kind in INDENTERS.values()))
+    ['plate', 'sphere', 'profile'] True
+    """
 
     name: ClassVar[str]
     summary: ClassVar[str]

@@ -64,7 +64,17 @@ T = TypeVar("T")
 @register
 @dataclasses.dataclass(frozen=True)
 class Plate(Indenter):
-    """The flat plate, wider than the pocket: z = 0 everywhere."""
+    """The flat plate, wider than the pocket: z = 0 everywhere; every solver's default (``PLATE``).
+
+    On the plate the sheet in contact lies flat and carries the fluid pressure straight to it: the force is
+    F = P A_c exactly (``pressure_area``).
+
+    Examples
+    --------
+    >>> from pocket.core.indenters import PLATE, Plate
+    >>> print(Plate() == PLATE, PLATE.height([0.0, 0.5]), PLATE.reach, PLATE.pressure_area)
+    True [0. 0.] inf True
+    """
 
     name = "plate"
     summary = "the flat plate, wider than the pocket"
@@ -100,7 +110,37 @@ register(Sphere)  # after the plate: the registry's order is the order the choic
 @register
 @dataclasses.dataclass(frozen=True)
 class Profile(Indenter):
-    """The user's profile ``shape`` (``pocket.core.profiles.Shape``, units R); anything else is an InputError."""
+    """A user's convex indenter z(rho), flat on the axis: its ``shape`` in units of R.
+
+    Parameters
+    ----------
+    shape : Shape
+        A ``pocket.core.profiles.Shape``: ``pocket.core.profiles.table`` (rows of radii and heights),
+        ``pocket.core.profiles.functions`` (z, its slope and curvature) or ``pocket.core.profiles.read_csv``
+        (a CSV file with units in its header).
+
+    Raises
+    ------
+    InputError
+        For anything but a ``Shape``.
+
+    Examples
+    --------
+    A profile tabulated from a sphere of radius 0.5 R, pressing the headline pocket:
+
+    >>> import numpy as np
+    >>> from pocket import shooting
+    >>> from pocket.core.indenters import Profile, Sphere
+    >>> from pocket.core.profiles import table
+    >>> rho = np.linspace(0.0, 0.45, 40)
+    >>> cap = Profile(table(rho, Sphere(0.5).height(rho)))
+    >>> print(cap.reach, abs(float(cap.height(0.3)) - float(Sphere(0.5).height(0.3))) < 1e-5)
+    0.45 True
+    >>> state = shooting.compress(47 / 160, 0.31, 0.19, indenter=cap)
+    >>> ball = shooting.compress(47 / 160, 0.31, 0.19, indenter=Sphere(0.5))
+    >>> print(abs(state.pressure_ratio / ball.pressure_ratio - 1) < 1e-4)
+    True
+    """
 
     shape: Shape
     name = "profile"
@@ -172,8 +212,32 @@ PLATE = Plate()
 
 
 def as_indenter(value) -> Indenter:
-    """The indenter of ``value``: None is the flat plate, an ``Indenter`` is returned as given; anything
-    else is an InputError."""
+    """The indenter of ``value``, as every compression entry point takes its ``indenter`` argument.
+
+    Parameters
+    ----------
+    value : Indenter or None
+        None is the flat plate (``PLATE``); an ``Indenter`` is returned as given.
+
+    Returns
+    -------
+    Indenter
+
+    Raises
+    ------
+    InputError
+        For anything else.
+
+    Examples
+    --------
+    >>> from pocket.core.indenters import as_indenter
+    >>> print(as_indenter(None).name)
+    plate
+    >>> as_indenter("sphere")
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: indenter = 'sphere', but it must be an Indenter (pocket.core.indenters)
+    """
     if value is None:
         return PLATE
     if not isinstance(value, Indenter):

@@ -93,9 +93,25 @@ EXPONENT_RANGE = (1e-2, 50.0)
 
 @dataclasses.dataclass(frozen=True)
 class Parameter:
-    """One parameter of a law: its ``name`` (as in case files and flags), ``unit`` ("stress": Pa in case
-    files, units of mu_0 inside the solvers; or "dimensionless"), a ``help`` text for the command line,
-    and whether it is a list (one value per term, ``listed``)."""
+    """One parameter of a law, as case files, flags and the command line's help name it.
+
+    Attributes
+    ----------
+    name : str
+        As in case files and flags.
+    unit : {"stress", "dimensionless"}
+        A stress is in Pa in case files, in units of mu_0 inside the solvers.
+    help : str
+        The command line's help text.
+    listed : bool
+        One value per term (Ogden's ``mu`` and ``exponents``).
+
+    Examples
+    --------
+    >>> from pocket.core.materials import LAWS
+    >>> print(LAWS["gent"].parameter("jm").unit, LAWS["ogden"].parameter("mu").listed)
+    dimensionless True
+    """
 
     name: str
     unit: str
@@ -105,18 +121,37 @@ class Parameter:
 
 @dataclasses.dataclass(frozen=True)
 class RubberLaw:
-    """A strain-energy law: its ``name``, ``parameters`` (in order) and, each of a dict name -> value
-    (floats; tuples for listed parameters):
+    """A strain-energy law of an incompressible rubber, as the registry ``LAWS`` holds it.
 
-    - ``mu0(p)``: the small-strain shear modulus, in the unit of the stresses;
-    - ``energy(p, l1, l2, l3, i1, i2)``: W per unit reference volume (arrays broadcast, l3 = 1/(l1 l2),
-      I1, I2 the invariants);
-    - ``admissible(p, where)``: raises a one-line ``InputError`` naming ``where.<parameter>`` for a
-      rubber that is not stable;
-    - ``domain(p)``: the bound on I1 - 3 below which W exists (inf: everywhere).
+    Each callable takes the parameters as a dict name -> value (floats; tuples for listed parameters).
 
-    ``example`` is a typical rubber of the law in Pa (a case-file table): the tests check every law's
-    kernels on it.
+    Attributes
+    ----------
+    name : str
+        The law's name (``"mooney-rivlin"``, ``"neo-hookean"``, ``"yeoh"``, ``"gent"``, ``"ogden"``).
+    parameters : tuple of Parameter
+        In order.
+    mu0 : callable
+        ``mu0(p)``: the small-strain shear modulus, in the unit of the stresses.
+    energy : callable
+        ``energy(p, l1, l2, l3, i1, i2)``: W per unit reference volume (arrays broadcast, l3 = 1/(l1 l2), I1, I2
+        the invariants).
+    admissible : callable
+        ``admissible(p, where)``: raises a one-line ``InputError`` naming ``where.<parameter>`` for a rubber that
+        is not stable.
+    example : Mapping
+        A typical rubber of the law in Pa (a case-file table): the tests check every law's kernels on it.
+    domain : callable
+        ``domain(p)``: the bound on I1 - 3 below which W exists (inf: everywhere).
+
+    Examples
+    --------
+    >>> from pocket.core.materials import LAWS
+    >>> law = LAWS["yeoh"]
+    >>> print(law.names, law.stresses)
+    ('c10', 'c20', 'c30') ('c10', 'c20', 'c30')
+    >>> print(law.mu0(law.example) == 2 * law.example["c10"])
+    True
     """
 
     name: str
@@ -147,8 +182,37 @@ LAWS: dict[str, RubberLaw] = {}
 
 
 def register(law: RubberLaw) -> RubberLaw:
-    """Add ``law`` to ``LAWS``; a parameter without a help text or with an unknown unit, a name used
-    twice, or an example that fails the law's own check is refused here (ValueError), not at run time."""
+    """Add ``law`` to the registry ``LAWS``: a new law is one call.
+
+    The command line, case files and tests read the registry; each solver maps a law to its kernel through its
+    own table, which refuses a law it lacks in one line.
+
+    Parameters
+    ----------
+    law : RubberLaw
+        The definition.
+
+    Returns
+    -------
+    RubberLaw
+        ``law``.
+
+    Raises
+    ------
+    ValueError
+        For a parameter without a help text or with an unknown unit, a name used twice, or an example that fails
+        the law's own check: refused here, not at run time.
+
+    Examples
+    --------
+    >>> from pocket.core.materials import LAWS, register
+    >>> register(LAWS["gent"])
+    Traceback (most recent call last):
+        ...
+    ValueError: a law named 'gent' is registered already
+    >>> print(list(LAWS))
+    ['mooney-rivlin', 'neo-hookean', 'yeoh', 'gent', 'ogden']
+    """
     if law.name in LAWS:
         raise ValueError(f"a law named {law.name!r} is registered already")
     if not law.parameters:
@@ -238,21 +302,45 @@ def _ogden_energy(p, l1, l2, l3, i1, i2):
 
 @dataclasses.dataclass(frozen=True)
 class Material:
-    """A law by name with its parameters: ``params`` maps each name of ``LAWS[law].names`` to a float
-    (a listed parameter, as Ogden's ``mu`` and ``exponents``, to a tuple of floats).
+    """A rubber: a law of ``LAWS`` by name with its parameters, in any consistent stress unit.
 
-    ``params`` is given as a mapping, ``Material("yeoh", {"c10": 1, "c20": -0.02, "c30": 0.001})``
-    (checked as ``check`` does: a name that is not the law's is an InputError listing the law's
-    names), or as (name, value) pairs in the law's order, as stored.
+    Parameters
+    ----------
+    law : str
+        The law's name in ``LAWS``.
+    params : Mapping or tuple of (str, value) pairs
+        Each parameter of the law -> a float (a listed parameter, as Ogden's ``mu`` and ``exponents``, a tuple of
+        floats). A mapping is checked as ``check`` does (a name that is not the law's is an InputError listing
+        the law's names); pairs, in the law's order, are taken as stored.
+    exact_alpha : float, optional
+        The C2/C1 a Mooney-Rivlin rubber was given by (``mooney_rivlin``), kept because C2/C1 recomputed from
+        its C1, C2 differs from it in the last bit for some alphas; ``alpha`` returns it, and a state reports it
+        as its ``alpha``. It takes part in comparisons: the solvers take a Mooney-Rivlin rubber by this alpha
+        where there is one, so two rubbers that differ in it are solved as two rubbers.
+    prestretch : float, optional
+        The equibiaxial stretch lambda_p >= 1 of the clamped flat sheet (checked by ``check_prestretch``); the
+        parameters stay those of the unstretched rubber.
 
-    ``exact_alpha`` is the C2/C1 a Mooney-Rivlin rubber was given by (``mooney_rivlin``), kept because
-    C2/C1 recomputed from its C1, C2 differs from it in the last bit for some alphas; ``alpha`` returns
-    it, and a state reports it as its ``alpha`` (None for a rubber given by its parameters). It takes
-    part in comparisons: the solvers take a Mooney-Rivlin rubber by this alpha where there is one, so
-    two rubbers that differ in it are solved as two rubbers.
+    Raises
+    ------
+    InputError
+        For parameters that are not the law's, or not a stable rubber, or a prestretch out of range.
 
-    ``prestretch`` is the equibiaxial stretch lambda_p >= 1 of the clamped flat sheet (module docstring;
-    checked by ``check_prestretch``); the parameters stay those of the unstretched rubber.
+    Examples
+    --------
+    A Yeoh rubber in Pa; the solvers take it as it is (only its stresses' ratios and E = 3 mu_0 enter the
+    model's units):
+
+    >>> from pocket.core.materials import Material
+    >>> rubber = Material("yeoh", {"c10": 85e3, "c20": -2e3, "c30": 0.2e3})
+    >>> print(rubber.mu0, rubber.modulus, rubber["c20"])
+    170000.0 510000.0 -2000.0
+    >>> print(rubber.scaled().mu0)
+    1.0
+    >>> Material("yeoh", {"c10": 85e3, "c2": 1.0})
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: material.c2 is not a parameter of the yeoh law (its parameters: c10, c20, c30)
     """
 
     law: str
@@ -318,8 +406,37 @@ class Material:
 
 
 def check_prestretch(value, material: Material, key: str = "prestretch") -> float:
-    """``value`` as the prestretch lambda_p of ``material``'s sheet: a finite float >= 1 whose clamped flat
-    sheet lies inside the law's domain; otherwise a one-line InputError naming ``key``."""
+    """The prestretch lambda_p of ``material``'s clamped sheet, checked.
+
+    Parameters
+    ----------
+    value : float
+        lambda_p, a plain number (a stretch has no unit).
+    material : Material
+        The rubber, whose domain bounds the stretch (Gent's locking).
+    key : str, optional
+        The name of the value in error messages.
+
+    Returns
+    -------
+    float
+        lambda_p, a finite float in [1, ``PRESTRETCH_LIMIT``] whose clamped flat sheet lies inside the law's domain.
+
+    Raises
+    ------
+    InputError
+        Otherwise, one line naming ``key``.
+
+    Examples
+    --------
+    >>> from pocket.core.materials import check_prestretch, mooney_rivlin
+    >>> print(check_prestretch(1.2, mooney_rivlin(0.1)))
+    1.2
+    >>> check_prestretch(0.9, mooney_rivlin(0.1))
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: prestretch = 0.9, but a prestretch of the clamped sheet must be >= 1
+    """
     if isinstance(value, str):
         raise InputError(f"{key} = {quote(value)} is not a number (a stretch has no unit)")
     number = check_finite(key, value)
@@ -339,19 +456,68 @@ def check_prestretch(value, material: Material, key: str = "prestretch") -> floa
 
 
 def mooney_rivlin(alpha) -> Material:
-    """The Mooney-Rivlin rubber with C2/C1 = ``alpha`` (a number, checked: -1 < alpha, an InputError
-    otherwise), in units of mu_0: C1 = 1 / (2 (1 + alpha)), C2 = alpha C1; it keeps ``alpha`` exactly
-    (``Material.exact_alpha``). The one conversion of an alpha, wherever one is given (``--alpha``, a
-    case file's ``sheet.alpha``, a sweep's alphas)."""
+    """The Mooney-Rivlin rubber with C2/C1 = ``alpha``, in units of mu_0.
+
+    C1 = 1 / (2 (1 + alpha)), C2 = alpha C1, so that mu_0 = 2 (C1 + C2) = 1. The one conversion of an alpha,
+    wherever one is given (``--alpha``, a case file's ``sheet.alpha``, a sweep's alphas, a number given to a
+    solver).
+
+    Parameters
+    ----------
+    alpha : float
+        C2/C1 > -1.
+
+    Returns
+    -------
+    Material
+        Keeping ``alpha`` exactly (``Material.exact_alpha``).
+
+    Raises
+    ------
+    InputError
+        For alpha <= -1 or not a finite number.
+
+    Examples
+    --------
+    >>> from pocket.core.materials import mooney_rivlin
+    >>> rubber = mooney_rivlin(47 / 160)
+    >>> print(rubber.alpha == 47 / 160, round(rubber.mu0, 15))
+    True 1.0
+    """
     alpha = check_alpha(alpha)
     c1 = 0.5 / (1.0 + alpha)
     return Material("mooney-rivlin", (("c1", c1), ("c2", alpha * c1)), alpha)
 
 
 def as_material(value) -> Material:
-    """The rubber every solver entry point works with: a ``Material``, re-checked and returned as given (in
-    its own stress unit). A number is taken, as a convenience for Python callers, as the Mooney-Rivlin
-    alpha = C2/C1 and converted here, and only here, by ``mooney_rivlin``."""
+    """The rubber every solver entry point works with.
+
+    Parameters
+    ----------
+    value : Material or float
+        A ``Material``, re-checked and returned as given (in its own stress unit); a number is taken, as a
+        convenience for Python callers, as the Mooney-Rivlin alpha = C2/C1 and converted here, and only here, by
+        ``mooney_rivlin``.
+
+    Returns
+    -------
+    Material
+
+    Raises
+    ------
+    InputError
+        For a rubber that is not stable, or a number that is not an alpha > -1.
+
+    Examples
+    --------
+    >>> from pocket.core.materials import as_material, mooney_rivlin
+    >>> print(as_material(0.3) == mooney_rivlin(0.3))
+    True
+    >>> as_material(-1)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: alpha = -1, ...
+    """
     if isinstance(value, Material):
         check(value.law, dict(value.params))
         return value
@@ -367,7 +533,29 @@ def _definition(law, where: str = "") -> RubberLaw:
 
 
 def energy(material: Material, l1, l2):
-    """W(l1, l2) per unit reference volume (the unit of the stresses); arrays broadcast."""
+    """The strain energy W(lambda_1, lambda_2) per unit reference volume of ``material`` (lambda_3 = 1/(l1 l2)).
+
+    Parameters
+    ----------
+    material : Material
+        The rubber.
+    l1, l2 : float or numpy.ndarray
+        The in-plane principal stretches; arrays broadcast.
+
+    Returns
+    -------
+    numpy.ndarray
+        W, in the unit of the rubber's stresses.
+
+    Examples
+    --------
+    The neo-Hookean energy (mu / 2)(I1 - 3) under equibiaxial stretch 1.1:
+
+    >>> from pocket.core.materials import Material, energy
+    >>> rubber = Material("neo-hookean", {"mu": 1.0})
+    >>> print(round(float(energy(rubber, 1.1, 1.1)), 12), round(0.5 * (2 * 1.1**2 + 1.1**-4 - 3), 12))
+    0.051506727683 0.051506727683
+    """
     l1, l2 = np.asarray(l1, dtype=float), np.asarray(l2, dtype=float)
     l3 = 1.0 / (l1 * l2)
     i1, i2 = l1**2 + l2**2 + l3**2, l1**-2 + l2**-2 + l3**-2
@@ -375,10 +563,39 @@ def energy(material: Material, l1, l2):
 
 
 def check(law, params: dict, where: str = "sheet") -> Material:
-    """A ``Material`` from ``law`` and ``params`` (name -> number, or list of numbers for a listed
-    parameter), checked.
+    """A ``Material`` from a law's name and its parameters, checked.
 
-    Every parameter of the law must be given and no other; errors name ``where.<parameter>``.
+    Every parameter of the law must be given and no other.
+
+    Parameters
+    ----------
+    law : str
+        The law's name in ``LAWS``.
+    params : dict
+        Parameter name -> number, or list of numbers for a listed parameter (in any stress unit).
+    where : str, optional
+        The prefix of the names in error messages (``sheet`` for a case file's ``[sheet]`` table).
+
+    Returns
+    -------
+    Material
+
+    Raises
+    ------
+    InputError
+        For an unknown law, a missing or unknown parameter, a value that is not a finite number, or a rubber that
+        is not stable (a non-positive mu_0, Jm <= 0, a Yeoh polynomial whose slope dW/dI1 is not positive for
+        every I1 >= 3, an Ogden term with mu_p alpha_p <= 0); one line naming ``where.<parameter>``.
+
+    Examples
+    --------
+    >>> from pocket.core.materials import check
+    >>> print(check("gent", {"mu": 0.3e6, "jm": 10.0}).describe())
+    {'material': 'gent', 'mu': 300000.0, 'jm': 10.0}
+    >>> check("neo-hookean", {"mu": -1.0})
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: sheet.mu = -1.0, ...
     """
     definition = _definition(law, where)
     names = definition.names

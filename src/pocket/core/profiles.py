@@ -135,9 +135,43 @@ class _Spline:
 
 
 def table(radii, heights, source: str = "the profile table", written=None) -> Shape:
-    """The profile interpolating the rows (``radii``, ``heights``), float sequences of equal length, units R
-    (module docstring); an InputError naming ``source`` and the row for a table that is no profile, quoting
-    the row as ``written`` (its text per row, as the file has it) if given, else in units of R."""
+    """The profile interpolating a table of rows (radius, height), in units of R.
+
+    A cubic spline in rho^2 (``pocket.core.profiles``), checked to be a profile: z(0) = 0, flat on the axis, convex.
+
+    Parameters
+    ----------
+    radii, heights : sequence of float
+        The rows, of equal length (at least ``MIN_ROWS``), radii increasing from 0, units R.
+    source : str, optional
+        The table's name in error messages.
+    written : sequence of str, optional
+        Each row's text as the file has it, quoted in error messages (else the row in units of R).
+
+    Returns
+    -------
+    Shape
+
+    Raises
+    ------
+    InputError
+        For a table that is no profile, naming ``source`` and the row.
+
+    Examples
+    --------
+    The paraboloid z = rho^2, tabulated, is interpolated within 1e-6 R:
+
+    >>> import numpy as np
+    >>> from pocket.core.profiles import table
+    >>> rho = np.linspace(0.0, 0.5, 11)
+    >>> shape = table(rho, rho**2)
+    >>> print(shape.extent, abs(float(shape.height(0.33)) - 0.33**2) < 1e-6)
+    0.5 True
+    >>> table([0.0, 0.1, 0.2, 0.3], [0.0, 0.01, 0.0, 0.09])
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: the profile table: ...
+    """
     from scipy.interpolate import CubicSpline
 
     rho, z = np.asarray(radii, dtype=float), np.asarray(heights, dtype=float)
@@ -186,9 +220,37 @@ def table(radii, heights, source: str = "the profile table", written=None) -> Sh
 
 
 def functions(height, slope, curvature, extent: float, source: str = "the profile function") -> Shape:
-    """The profile of the callables ``height`` z(rho), ``slope`` dz/drho and ``curvature`` the meridional
-    curvature z'' / (1 + z'^2)^(3/2) (each float array -> array of the same shape, units R), defined on
-    0 <= rho <= ``extent`` (units R, > 0). Checked on a grid: finite, z(0) = 0, z'(0) = 0, z >= 0, convex."""
+    """The profile of a user's functions z(rho), dz/drho and the meridional curvature, in units of R.
+
+    Parameters
+    ----------
+    height, slope, curvature : callable
+        z(rho), dz/drho and z'' / (1 + z'^2)^(3/2); each maps a float array of radii (units R) to an array of
+        the same shape.
+    extent : float
+        The largest radius they are defined at, units R, > 0.
+    source : str, optional
+        The profile's name in error messages.
+
+    Returns
+    -------
+    Shape
+
+    Raises
+    ------
+    InputError
+        Unless, checked on a grid, they are finite, z(0) = 0, z'(0) = 0, z >= 0 and convex.
+
+    Examples
+    --------
+    The paraboloid z = rho^2:
+
+    >>> import numpy as np
+    >>> from pocket.core.profiles import functions
+    >>> shape = functions(lambda r: r**2, lambda r: 2 * r, lambda r: 2 / (1 + 4 * r**2) ** 1.5, 0.5)
+    >>> print(float(shape.height(0.3)), float(shape.second(0.3)))
+    0.09 2.0
+    """
     extent = float(extent)
     if not np.isfinite(extent) or extent <= 0.0:
         raise InputError(f"{source}: extent = {extent:g}, but it must be a positive radius (units R)")
@@ -227,11 +289,37 @@ def _unit(path, column: int, text: str, clamp_radius: float | None) -> float:
 
 
 def read_csv(path, clamp_radius: float | None = None) -> Shape:
-    """The profile of the CSV file ``path``: a header ``radius [unit],height [unit]`` and a row of two numbers
-    per line. Units are pint lengths, made dimensionless by ``clamp_radius`` (m), or ``[R]`` for units of
-    the clamp radius (then ``clamp_radius`` may be None). An unreadable file, a missing unit, a row that
-    is not two numbers or a table that is no profile (``table``) is an InputError naming the file, the
-    row or the column."""
+    r"""The profile of a CSV file: a header ``radius [unit],height [unit]`` and a row of two numbers per line.
+
+    Parameters
+    ----------
+    path : str or path
+        The file.
+    clamp_radius : float, optional
+        R in m, which makes the lengths dimensionless; units are pint lengths, or ``[R]`` for units of the clamp
+        radius (then ``clamp_radius`` may be None).
+
+    Returns
+    -------
+    Shape
+
+    Raises
+    ------
+    InputError
+        For an unreadable file, a missing unit, a row that is not two numbers, or a table that is no profile
+        (``table``), naming the file, the row or the column.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket.core.profiles import read_csv
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "cap.csv"
+    ...     _ = path.write_text("radius [mm],height [mm]\n0,0\n1,0.05\n2,0.2\n3,0.45\n4,0.8\n")
+    ...     shape = read_csv(path, clamp_radius=0.010)
+    >>> print(shape.extent)
+    0.4
+    """
     path = pathlib.Path(path)
     rows = _rows(path, "the profile file")
     if not rows or len(rows[0]) != 2:

@@ -48,8 +48,34 @@ def check_sphere_radius(name: str, value, shown: str | None = None) -> float:
 
 @dataclasses.dataclass(frozen=True)
 class Sphere(Indenter):
-    """A sphere of radius R_s = ``radius`` (K = R_s / R, units R; checked by ``check_sphere_radius``), its lowest
-    point on the axis."""
+    """A sphere of radius R_s (a fingertip), its lowest point on the axis: z(rho) = R_s - sqrt(R_s^2 - rho^2).
+
+    Its surface exists out to its equator, rho <= R_s (NaN beyond).
+
+    Parameters
+    ----------
+    radius : float
+        K = R_s / R, in ``SPHERE_RADII`` (checked by ``check_sphere_radius``).
+
+    Raises
+    ------
+    InputError
+        For a radius outside ``SPHERE_RADII`` or not a number.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pocket.core.indenters import Sphere
+    >>> ball = Sphere(0.5)
+    >>> print(ball.height(0.3), 0.5 - np.sqrt(0.5**2 - 0.3**2), ball.reach)
+    0.09999999999999998 0.09999999999999998 0.5
+    >>> print(np.round(ball.curvature([0.0, 0.2, 0.4]), 12))
+    [2. 2. 2.]
+    >>> Sphere(0.0)
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: indenter.radius = 0, but a sphere's radius must be > 0
+    """
 
     radius: float
     name = "sphere"

@@ -46,14 +46,39 @@ CHECKS = ("tension_1_min", "tension_2_min", "wrinkled")
 class Profile:
     """The meridian of the deformed sheet, sampled at Lagrangian radii.
 
-    Every field is a float array of shape (n,), ordered by increasing ``r``
-    from the pole (r = 0) to the clamp (r = 1).
+    Every field is a float array of shape (n,), ordered by increasing ``r`` from the pole (r = 0) to the clamp
+    (r = 1).
 
-    r : Lagrangian radius r/R of the flat sheet.
-    rho, eta : deformed radial position and height, in units of R.
-    stretch_1, stretch_2 : meridional and hoop stretches lambda_1, lambda_2.
-    tension_1, tension_2 : stress resultants T_1, T_2 in units of E T.
-    contact : bool array, True where the sheet touches the indenter.
+    Attributes
+    ----------
+    r : numpy.ndarray
+        Lagrangian radius r / R of the flat sheet.
+    rho, eta : numpy.ndarray
+        Deformed radial position and height, in units of R.
+    stretch_1, stretch_2 : numpy.ndarray
+        Meridional and hoop stretches lambda_1, lambda_2.
+    tension_1, tension_2 : numpy.ndarray
+        Stress resultants T_1, T_2 in units of E T.
+    contact : numpy.ndarray
+        Bool, True where the sheet touches the indenter.
+
+    Raises
+    ------
+    ValueError
+        If the fields are not arrays of one common shape (n,).
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> profile = shooting.inflate(47 / 160, 0.31).profile
+    >>> print(profile.r[0], profile.r[-1], bool(profile.contact.any()))
+    0.0 1.0 False
+
+    The rubber is incompressible, lambda_1 lambda_2 lambda_3 = 1:
+
+    >>> import numpy as np
+    >>> print(np.allclose(profile.stretch_1 * profile.stretch_2 * profile.stretch_3, 1.0))
+    True
     """
 
     r: np.ndarray
@@ -150,19 +175,46 @@ class _Membrane:
 
 @dataclasses.dataclass(frozen=True)
 class InflatedState(_Membrane):
-    """Step 1: the sheet inflated at pressure ``pressure`` (Phat).
+    """Step 1: the sheet inflated at the pressure ``pressure`` (Phat), as every solver returns it.
 
-    ``extra`` holds solver-specific diagnostics (mesh size, iterations, ...);
-    ``scalars()`` returns the reported keys (``KEYS``) followed by those.
-    ``warnings`` are one-line notes on a state that is returned but should not
-    pass unremarked (an approximate model outside its range, a compressive
-    tension); the command line prints them and JSON carries them. ``material``
-    is the rubber as given (``mooney_rivlin(alpha)`` for an alpha); the smallest
-    tensions (default: from the profile) are filled in when not given.
-    ``membrane`` is false for a state of a model of the sheet's thickness (the solid),
-    whose warnings speak of its stress resultants rather than of membrane theory.
-    ``geometry`` is the reference surface it was solved on (``pocket.core.geometries``; the flat clamped
-    disc by default), not a reported key.
+    Attributes
+    ----------
+    material : Material
+        The rubber as given (``mooney_rivlin(alpha)`` for an alpha).
+    pressure : float
+        Phat = P R / (E T), as given (pressure control) or found (volume control).
+    stretch_pole : float
+        lambda_0, the equibiaxial stretch at the pole.
+    height : float
+        H0 / R, the pole's height above the clamp plane.
+    volume : float
+        V / R^3, the volume between the sheet and the clamp plane.
+    stretch_clamp : float
+        lambda_1 at the clamp, r = R.
+    profile : Profile or None
+        The meridian.
+    solver : str
+        The solver's name.
+    extra : Mapping
+        Solver-specific diagnostics (mesh size, iterations, ...), reported after ``KEYS``.
+    warnings : tuple of str
+        One-line notes on a state that is returned but should not pass unremarked (an approximate model outside
+        its range, a compressive tension); the command line prints them and JSON carries them.
+    tension_1_min, tension_2_min : float
+        The smallest tensions, units E T (default: from the profile).
+    membrane : bool
+        False for a model of the sheet's thickness (the solid), whose warnings speak of its stress resultants.
+    geometry : Geometry
+        The reference surface it was solved on (the flat clamped disc by default); not a reported key.
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> state = shooting.inflate(47 / 160, 0.31)
+    >>> print(list(state.scalars())[:6])
+    ['alpha', 'pressure', 'stretch_pole', 'height', 'volume', 'stretch_clamp']
+    >>> print(state.alpha == 47 / 160, state.pressure, state.wrinkled)
+    True 0.31 False
     """
 
     material: Material
@@ -190,19 +242,60 @@ class InflatedState(_Membrane):
 
 @dataclasses.dataclass(frozen=True)
 class CompressedState(_Membrane):
-    """Step 2: the inflated pocket pressed by ``indenter`` (the flat plate by default) at fixed volume.
+    """Step 2: the inflated pocket pressed by ``indenter`` (the flat plate by default) at fixed fluid.
 
-    ``contact_area`` is the deformed area A_c/(pi R^2) in contact (the curved area on a curved
-    indenter; pi (lambda_c a_c)^2 / (pi R^2) on the plate); ``contact_radius`` the Lagrangian a_c/R.
-    ``height`` is the indenter's lowest point above the clamp plane (the dome's height under the plate).
-    ``contact_radius_deformed`` (rho_c / R), ``contact_pressure_pole`` and ``contact_pressure_edge`` (the
-    contact pressure at the pole and at the contact edge, Phat units) are reported where a solver gives
-    them (NaN otherwise), and ``contact_pressure`` is that pressure at each point of the profile (shape
-    (n,) as ``profile.r``, NaN off the contact zone; None where a solver does not give it). ``inflated`` is the
-    step-1 state this one was compressed from. ``fluid`` is the fluid sealed
-    in the pocket at Phat_I (its ambient pressure as Phat_atm); ``indenter`` what
-    presses on it (``pocket.core.indenters``). ``extra``,
-    ``warnings``, ``material`` and the smallest tensions as for ``InflatedState``.
+    Attributes
+    ----------
+    material : Material
+        The rubber as given.
+    pressure_initial : float
+        Phat_I = P_I R / (E T), as given.
+    force : float
+        Fhat = F / (P_I pi R^2), as given (force control) or found (travel control).
+    pressure, pressure_ratio : float
+        Phat = P R / (E T) and P / P_I.
+    contact_area : float
+        The deformed area in contact, A_c / (pi R^2) (the curved area on a curved indenter;
+        pi (lambda_c a_c)^2 / (pi R^2) on the plate).
+    contact_radius : float
+        The Lagrangian contact radius a_c / R.
+    stretch_contact : float
+        lambda_c, the stretch at the pole in contact.
+    height, height_ratio : float
+        H / R, the indenter's lowest point above the clamp plane (the dome's height under the plate), and H / H0.
+    volume : float
+        V / R^3.
+    profile : Profile or None
+        The meridian.
+    inflated : InflatedState
+        The step-1 state this one was compressed from.
+    solver, extra, warnings, tension_1_min, tension_2_min, membrane
+        As for ``InflatedState``.
+    fluid : Fluid
+        The fluid sealed in the pocket at Phat_I (a gas's ambient pressure as Phat_atm).
+    indenter : Indenter
+        What presses on it (``pocket.core.indenters``).
+    contact_radius_deformed : float
+        rho_c / R, where a solver gives it (NaN otherwise).
+    contact_pressure_pole, contact_pressure_edge : float
+        The contact pressure at the pole and at the contact edge, units E T / R, where a solver gives them.
+    contact_pressure : numpy.ndarray or None
+        That pressure at each point of the profile, shape (n,), NaN off the contact zone; None where a solver
+        does not give it.
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> state = shooting.compress(47 / 160, 0.31, 0.19)
+    >>> scalars = state.scalars()
+    >>> print(scalars["force"], f"{scalars['pressure_ratio']:.4f}", scalars["solver"])
+    0.19 1.2944 shooting
+
+    The pressure ratio is the pressure over the inflated state's, and the fluid's volume is held:
+
+    >>> print(abs(state.pressure_ratio - state.pressure / state.inflated.pressure) < 1e-12,
+    ...       abs(state.volume - state.inflated.volume) < 1e-9)
+    True True
     """
 
     material: Material

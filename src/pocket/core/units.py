@@ -70,7 +70,38 @@ def _si(text: str, dimension: str, unit: str) -> float:
 
 
 def quantity(key: str, value, kind: str) -> float:
-    """The SI magnitude of ``value`` (number or string with unit), a quantity of ``kind``."""
+    """The SI magnitude of a physical value, a number (read as SI) or a string with a unit.
+
+    Parameters
+    ----------
+    key : str
+        The value's name in error messages (``sheet.thickness``, ``--radius``).
+    value : float or str
+        A number in SI units, or a string with a unit pint reads (``"1.5 mm"``, ``"4.8 kPa"``).
+    kind : {"length", "pressure", "force", "volume"}
+        The quantity expected (``KINDS``).
+
+    Returns
+    -------
+    float
+        In m, Pa, N or m^3.
+
+    Raises
+    ------
+    InputError
+        For a value of another dimension, text that is no quantity, or a magnitude that is not finite or outside
+        ``MAGNITUDES``; one line naming ``key``.
+
+    Examples
+    --------
+    >>> from pocket.core.units import quantity
+    >>> print(quantity("sheet.thickness", "1.5 mm", "length"), quantity("initial.pressure", "4.8 kPa", "pressure"))
+    0.0015 4800.0
+    >>> quantity("initial.pressure", "3 mm", "pressure")
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: initial.pressure = '3 mm' has dimension [length], but a pressure (Pa) is needed
+    """
     dimension, unit = KINDS[kind]
     if isinstance(value, bool) or not isinstance(value, (int, float, str)):
         raise InputError(f"{key} = {quote(value)} is not a {kind} (give a number in SI or a string like "
@@ -93,7 +124,33 @@ def quantity(key: str, value, kind: str) -> float:
 
 
 def positive(key: str, value, kind: str) -> float:
-    """``quantity`` that must be > 0 (a thickness, a radius, a modulus)."""
+    """``quantity`` that must be > 0 (a thickness, a radius, a modulus).
+
+    Parameters
+    ----------
+    key, value, kind
+        As for ``quantity``.
+
+    Returns
+    -------
+    float
+        The SI magnitude, > 0.
+
+    Raises
+    ------
+    InputError
+        As ``quantity``, and for a value that is not > 0.
+
+    Examples
+    --------
+    >>> from pocket.core.units import positive
+    >>> print(positive("clamp.radius", "20 mm", "length"))
+    0.02
+    >>> positive("clamp.radius", "-20 mm", "length")
+    Traceback (most recent call last):
+        ...
+    pocket.core.errors.InputError: clamp.radius = '-20 mm', but it must be > 0
+    """
     magnitude = quantity(key, value, kind)
     if magnitude <= 0.0:
         raise InputError(f"{key} = {quote(value)}, but it must be > 0")
@@ -109,26 +166,71 @@ def _dimensionless(text: str) -> bool | None:
 
 
 def is_plain(value) -> bool:
-    """Whether ``value``, a valid ``quantity``, was written without a unit (a number, or text like ``"20"``)."""
+    """Whether ``value``, a valid ``quantity``, was written without a unit (a number, or text like ``"20"``).
+
+    Parameters
+    ----------
+    value : float or str
+        As given.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> from pocket.core.units import is_plain
+    >>> print(is_plain(0.02), is_plain("20"), is_plain("20 mm"))
+    True True False
+    """
     return not isinstance(value, str) or _dimensionless(value) is True
 
 
 def has_unit(text) -> bool:
-    """Whether ``text`` is a quantity written with a unit (``"8 mm"``, ``"20 kPa"``): a command in the model's
-    units refuses it, where a number (``"0.4"``) or text that is no quantity at all (``"x"``) is not one."""
+    """Whether ``text`` is a quantity written with a unit: a command in the model's units refuses it.
+
+    Parameters
+    ----------
+    text : object
+        As given; a number, or text that is no quantity at all, has no unit.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> from pocket.core.units import has_unit
+    >>> print(has_unit("8 mm"), has_unit("0.4"), has_unit("x"), has_unit(0.4))
+    True False False False
+    """
     return isinstance(text, str) and _dimensionless(text) is False
 
 
 def plain_warnings(key: str, value, kind: str) -> list[str]:
-    """The warning on ``value``, a valid quantity of ``kind`` given as ``key``, if it was written without a unit:
-    a list of one line, or empty for a value with a unit or a plain zero (zero is zero in every unit).
+    """The warning on ``value``, a valid quantity of ``kind`` given as ``key``, if it was written without a unit.
 
     This is pocket's one rule for plain numbers where a unit is expected, in case files and on the command
     line alike: the number is read as SI (metres, pascals, newtons, cubic metres), and the reader is told so,
     whatever its size, since ``15`` is as likely millimetres as ``0.015`` is metres.
 
+    Parameters
+    ----------
+    key : str
+        The value's name in the warning.
+    value : float or str
+        A valid ``quantity`` of ``kind``, as given.
+    kind : {"length", "pressure", "force", "volume"}
+        The quantity (``KINDS``).
+
+    Returns
+    -------
+    list of str
+        One line, or empty for a value with a unit or a plain zero (zero is zero in every unit).
+
     Examples
     --------
+    >>> from pocket.core.units import plain_warnings
     >>> plain_warnings("--radius", "15", "length")
     ["--radius = '15' has no unit and is read as 15 m; write '15 mm' if millimetres were meant"]
     >>> plain_warnings("--radius", "0.015", "length")
@@ -156,8 +258,28 @@ _NAMES = {"mm": "millimetres", "kPa": "kilopascals", "N": "newtons", "mL": "mill
 
 
 def written_like(value: float, given, kind: str) -> str:
-    """The SI ``value`` of ``kind`` written in the unit of ``given`` (a value as the user wrote it):
-    ``written_like(0.0098787, "20 mm", "length")`` is ``"9.8787 mm"``; SI when ``given`` has no unit."""
+    """An SI value written in the unit of a value as the user wrote it (SI when that has no unit).
+
+    Parameters
+    ----------
+    value : float
+        The SI magnitude.
+    given : float or str
+        A value as the user wrote it (``"20 mm"``).
+    kind : {"length", "pressure", "force", "volume"}
+        The quantity (``KINDS``).
+
+    Returns
+    -------
+    str
+        ``value`` with its unit, six significant digits.
+
+    Examples
+    --------
+    >>> from pocket.core.units import written_like
+    >>> print(written_like(0.0098787, "20 mm", "length"), "|", written_like(0.0098787, 0.02, "length"))
+    9.8787 mm | 0.0098787 m
+    """
     dimension, unit = KINDS[kind]
     if isinstance(given, str):
         try:

@@ -53,11 +53,44 @@ _SOLVERS = ("shooting", "fem")
 
 @dataclasses.dataclass(frozen=True)
 class Request:
-    """A fit asked for: the ``data`` files, the ``law`` with its Ogden ``terms``, the clamp ``radius`` (m), the
-    sheet's ``thickness`` (m, or None), the compression tests' ``initial_pressure`` (Pa, or None: each test's
-    zero-force row), the keys held (``fixed``: name -> value, stresses in Pa), the columns' stated uncertainties
-    (``sigma``: column -> SI value), whether to fit the ``prestretch``, the ``solver`` by name, the ``warnings``
-    on its inputs (one line each) and the ``case`` file it was read from (None: the command line's flags)."""
+    r"""A fit asked for, from the command line's flags or a case file's ``[fit]`` table (``load``).
+
+    Attributes
+    ----------
+    data : tuple of pathlib.Path
+        The tests' CSV files (``pocket.apps.fit.data.read``).
+    law : str
+        The law to fit (``pocket.core.materials.LAWS``); ``terms`` its Ogden terms.
+    radius : float
+        The clamp radius R, m.
+    thickness : float or None
+        The sheet's thickness T, m; None: stresses are fitted times T, in N/m.
+    initial_pressure : float or None
+        The compression tests' P_I, Pa (None: each test's zero-force row).
+    fixed : dict
+        The keys held, name -> value (stresses in Pa).
+    sigma : dict
+        The columns' stated uncertainties, column -> SI value (a column not named has relative residuals).
+    prestretch : bool
+        Whether to fit the clamped sheet's prestretch.
+    solver : str
+        The solver by name, ``"shooting"`` or ``"fem"``.
+    warnings : tuple of str
+        On its inputs, one line each (a value without a unit).
+    case : str or None
+        The case file it was read from (None: the command line's flags).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket.apps.fit.case import Request
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "bulge.csv"
+    ...     _ = path.write_text("pressure [kPa],height [mm]\n6,6.04\n12,8.13\n18,10.0\n")
+    ...     setup = Request((path,), "neo-hookean", 0.020, 0.001).setup()
+    >>> print(setup.count, setup.radius, setup.thickness)
+    3 0.02 0.001
+    """
 
     data: tuple[pathlib.Path, ...]
     law: str = DEFAULT_LAW
@@ -230,5 +263,41 @@ def parse(data: dict, where: str = "case", base=None) -> Request:
 
 
 def load(path) -> Request:
-    """Read and check the case file ``path`` (data files relative to its folder)."""
+    """The fit a case file asks for: its ``[fit]`` table, checked before any data is read.
+
+    Parameters
+    ----------
+    path : str or path
+        The case file (TOML); the data files are relative to its folder.
+
+    Returns
+    -------
+    Request
+
+    Raises
+    ------
+    InputError
+        For a file that cannot be read, a case without ``[fit]``, unknown or misplaced keys, values of the wrong
+        dimension; one line naming the key.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket.apps.fit.case import load
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "fit.toml"
+    ...     _ = path.write_text('''
+    ... [sheet]
+    ... material = "yeoh"
+    ... thickness = "1 mm"
+    ... [clamp]
+    ... radius = "20 mm"
+    ... [fit]
+    ... data = ["bulge.csv"]
+    ... fix = {c30 = "0 kPa"}
+    ... ''')
+    ...     request = load(path)
+    >>> print(request.law, request.radius, request.fixed, [p.name for p in request.data])
+    yeoh 0.02 {'c30': 0.0} ['bulge.csv']
+    """
     return parse(read_toml(path), where=str(path), base=pathlib.Path(path).parent)

@@ -40,10 +40,33 @@ _EXAMPLE = "pressure [kPa],height [mm]"
 
 @dataclasses.dataclass(frozen=True)
 class Dataset:
-    """One test: ``kind`` ("inflation" or "compression"), ``control`` (pressures in Pa or forces in N,
-    shape (n,)), ``responses`` (column name -> SI values of shape (n,), NaN where a row has no datum:
-    the zero-force pressure that defines P_I), ``initial_pressure`` (P_I in Pa; None for an inflation)
-    and ``source`` (the file, for messages)."""
+    r"""One test of the clamped sheet, in SI units (``read``).
+
+    Attributes
+    ----------
+    kind : {"inflation", "compression"}
+        A bulge test (pressure controlled) or a compression by the flat plate (force controlled).
+    control : numpy.ndarray
+        The pressures in Pa or the forces in N, shape (n,).
+    responses : dict
+        Column name -> SI values of shape (n,), NaN where a row has no datum (the zero-force pressure that
+        defines P_I).
+    initial_pressure : float or None
+        P_I in Pa; None for an inflation.
+    source : str
+        The file, for messages.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket.apps.fit.data import read
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "press.csv"
+    ...     _ = path.write_text("force [N],pressure [kPa]\n0,5\n0.5,5.6\n1,6.3\n")
+    ...     test = read(path)
+    >>> print(test.kind, test.control, test.initial_pressure, test.count)
+    compression [0.  0.5 1. ] 5000.0 2
+    """
 
     kind: str
     control: np.ndarray
@@ -98,8 +121,41 @@ def _positive(path, name, values) -> None:
 
 
 def read(path, initial_pressure: float | None = None) -> Dataset:
-    """The test of the CSV file ``path`` (module docstring); ``initial_pressure`` P_I in Pa for a
-    compression test (None: from its row at zero force; ignored for an inflation test)."""
+    r"""A test of the clamped sheet from its CSV file, checked, in SI units.
+
+    The header names each column's quantity and unit (``pressure [kPa],height [mm]``). An inflation (bulge)
+    test has ``pressure`` with ``height`` and/or ``volume``; a compression test by the flat plate ``force`` with
+    ``pressure`` and optionally ``height``.
+
+    Parameters
+    ----------
+    path : str or path
+        The CSV file, read as a spreadsheet saves it (a byte-order mark ignored, ``;`` with decimal commas).
+    initial_pressure : float, optional
+        P_I in Pa of a compression test (None: from its row at zero force); ignored for an inflation test.
+
+    Returns
+    -------
+    Dataset
+
+    Raises
+    ------
+    InputError
+        For any other column, a column without a unit or of the wrong dimension, a cell that is not a finite
+        number, a response that is not > 0, a control that does not increase; one line naming the file, the row
+        or the column.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket.apps.fit.data import read
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "bulge.csv"
+    ...     _ = path.write_text("pressure [kPa],height [mm]\n6,6.04\n12,8.13\n18,10.0\n")
+    ...     test = read(path)
+    >>> print(test.kind, test.control, test.responses["height"])
+    inflation [ 6000. 12000. 18000.] [0.00604 0.00813 0.01   ]
+    """
     path = pathlib.Path(path)
     table = rows(path, "a test's CSV data")
     if not table:

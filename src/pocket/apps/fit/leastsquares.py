@@ -67,12 +67,52 @@ PRESTRETCHES = (1.0, 1.05, 1.2)
 
 @dataclasses.dataclass(frozen=True)
 class Fit:
-    """A fit's result: the ``setup``, the fitted ``material`` (stresses in the setup's unit: Pa, or N/m
-    without a thickness), the ``free`` keys' names, the ``fixed`` ones (name -> value), the
-    ``statistics`` (``pocket.apps.fit.stats.Statistics``), the model's ``values`` at the data (as
-    ``pocket.apps.fit.model.predict``) and ``residuals`` (shape (n,)), the number of solver ``calls`` (the
-    profile intervals' included), the wall-clock ``seconds``, the ``starts`` evaluated and the ``penalised``
-    trial sets of the least-squares runs (some datum without state; a profile's trials not counted)."""
+    r"""A fit's result (``fit``).
+
+    Attributes
+    ----------
+    setup : Setup
+        What was fitted (``pocket.apps.fit.model.Setup``).
+    material : Material
+        The fitted rubber, its stresses in the setup's unit: Pa, or N/m without a thickness.
+    free : tuple of str
+        The fitted keys' names.
+    fixed : dict
+        The keys held, name -> value.
+    statistics : Statistics
+        Standard errors, correlations, intervals (``pocket.apps.fit.stats.Statistics``).
+    values : list
+        The model's values at the data (as ``pocket.apps.fit.model.predict``).
+    residuals : numpy.ndarray
+        Shape (n,).
+    calls : int
+        The solver calls (the profile intervals' included).
+    seconds : float
+        The wall-clock time.
+    starts : int
+        The starts evaluated.
+    penalised : int
+        The trial sets of the least-squares runs with some datum without state (a profile's trials not counted).
+
+    Examples
+    --------
+    A bulge test made by the model from a known neo-Hookean sheet, mu = 0.4 MPa, T = 1 mm, R = 20 mm:
+
+    >>> import pathlib, tempfile
+    >>> from pocket import shooting
+    >>> from pocket.apps.fit.case import Request
+    >>> from pocket.apps.fit.leastsquares import fit
+    >>> from pocket.core.materials import Material
+    >>> phats = [0.1, 0.2, 0.3, 0.4]
+    >>> states = shooting.inflation_curve(Material("neo-hookean", {"mu": 1.0}), phats)
+    >>> rows = [f"{p * 3 * 0.4e6 * 1e-3 / 0.02},{s.height * 0.02}" for p, s in zip(phats, states)]
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "bulge.csv"
+    ...     _ = path.write_text("pressure [Pa],height [m]\n" + "\n".join(rows) + "\n")
+    ...     result = fit(Request((path,), "neo-hookean", 0.02, 1e-3).setup(), "neo-hookean")
+    >>> print(result.free, result.residuals.shape, result.statistics.rms < 1e-6)
+    ('mu',) (4,) True
+    """
 
     setup: Setup
     material: Material
@@ -170,12 +210,54 @@ def _fixed_material(material: Material, fixed: dict, all_keys) -> Material:
 
 def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, start: dict | None = None,
         prestretch: bool = False) -> Fit:
-    """Fit ``law`` (``terms`` terms for Ogden) to ``setup``'s data (``pocket.apps.fit.model.Setup``).
+    r"""Fit a rubber law to a user's tests of the clamped sheet, by nonlinear least squares on the solver.
 
-    ``fixed``: key -> value held (stresses in the setup's unit); ``start``: key -> value that replaces
-    the start's (for every start). The clamped sheet's prestretch (key ``prestretch``) is held at 1, or
-    at its value in ``fixed``, unless ``prestretch`` asks to fit it. Raises InputError for fewer data than
-    unknowns + 1 (before any solve), ConvergenceError if no start or no result has a state for every datum.
+    Parameters
+    ----------
+    setup : Setup
+        The tests and the sheet (``pocket.apps.fit.model.Setup``; ``Request.setup``).
+    law : str
+        The law (``pocket.core.materials.LAWS``).
+    terms : int, optional
+        Ogden's terms.
+    fixed : dict, optional
+        Key -> value held (stresses in the setup's unit: Pa, or N/m without a thickness).
+    start : dict, optional
+        Key -> value that replaces the start's (for every start).
+    prestretch : bool, optional
+        Fit the clamped sheet's prestretch (key ``prestretch``); else it is held at 1, or at its value in
+        ``fixed``.
+
+    Returns
+    -------
+    Fit
+
+    Raises
+    ------
+    InputError
+        For fewer data than unknowns + 1, or an unknown key (before any solve).
+    ConvergenceError
+        If no start, or no result, has a state for every datum.
+
+    Examples
+    --------
+    The sheet behind a bulge test made by the model (neo-Hookean, mu = 0.4 MPa, T = 1 mm, R = 20 mm) is
+    recovered:
+
+    >>> import pathlib, tempfile
+    >>> from pocket import shooting
+    >>> from pocket.apps.fit.case import Request
+    >>> from pocket.apps.fit.leastsquares import fit
+    >>> from pocket.core.materials import Material
+    >>> phats = [0.1, 0.2, 0.3, 0.4]
+    >>> states = shooting.inflation_curve(Material("neo-hookean", {"mu": 1.0}), phats)
+    >>> rows = [f"{p * 3 * 0.4e6 * 1e-3 / 0.02},{s.height * 0.02}" for p, s in zip(phats, states)]
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "bulge.csv"
+    ...     _ = path.write_text("pressure [Pa],height [m]\n" + "\n".join(rows) + "\n")
+    ...     result = fit(Request((path,), "neo-hookean", 0.02, 1e-3).setup(), "neo-hookean")
+    >>> print(f"mu = {result.material['mu'] / 1e6:.6f} MPa")
+    mu = 0.400000 MPa
     """
     clock = time.perf_counter()
     fixed, start = dict(fixed or {}), dict(start or {})

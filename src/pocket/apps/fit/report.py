@@ -46,10 +46,43 @@ def _keys(fit: Fit):
 
 
 def summary(fit: Fit) -> dict:
-    """The fit as one JSON-ready dict: ``parameters`` maps each fitted key to its value, standard error,
-    95 % interval (an end the data do not bound is None: JSON's null), the method that made the interval
-    (``pocket.apps.fit.intervals``) and unit (Pa for stresses, N/m for stress * T without a thickness, 1 for
-    numbers)."""
+    r"""The fit as one JSON-ready dict.
+
+    ``parameters`` maps each fitted key to its value, standard error, 95 % interval (an end the data do not
+    bound is None: JSON's null), the method that made the interval (``pocket.apps.fit.intervals``) and unit
+    (Pa for stresses, N/m for stress * T without a thickness, 1 for numbers); then ``mu0``, the sheet, the
+    correlations, the residuals, the solver's calls and the warnings.
+
+    Parameters
+    ----------
+    fit : Fit
+        The fit's result (``pocket.apps.fit.leastsquares.fit``).
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket import shooting
+    >>> from pocket.apps.fit.case import Request
+    >>> from pocket.apps.fit.leastsquares import fit
+    >>> from pocket.apps.fit.report import summary
+    >>> from pocket.core.materials import Material
+    >>> phats = [0.1, 0.2, 0.3, 0.4]
+    >>> states = shooting.inflation_curve(Material("neo-hookean", {"mu": 1.0}), phats)
+    >>> rows = [f"{p * 3 * 0.4e6 * 1e-3 / 0.02},{s.height * 0.02}" for p, s in zip(phats, states)]
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(folder.name) / "bulge.csv"
+    >>> _ = path.write_text("pressure [Pa],height [m]\n" + "\n".join(rows) + "\n")
+    >>> result = fit(Request((path,), "neo-hookean", 0.02, 1e-3).setup(), "neo-hookean")
+    >>> mu = summary(result)["parameters"]["mu"]
+    >>> low, high = mu["interval_95"]
+    >>> print(round(mu["value"] / 1e6, 6), mu["unit"], low <= mu["value"] <= high)
+    0.4 Pa True
+    >>> folder.cleanup()
+    """
     s = fit.statistics
     return {
         "law": fit.material.law,
@@ -87,9 +120,43 @@ def _quantity(value: float, unit: str) -> str:
 
 
 def case_text(fit: Fit) -> str:
-    """A case file (TOML) of the fitted sheet for ``pocket run``: the clamp, the fitted rubber, the initial
-    pressure of the first compression test (else the middle pressure of the first inflation test) and
-    forces (the compression test's, else a quarter, a half and one of P_I pi R^2)."""
+    r"""A case file (TOML) of the fitted sheet, for ``pocket run``.
+
+    The clamp, the fitted rubber, the initial pressure of the first compression test (else the middle
+    pressure of the first inflation test) and forces (the compression test's, else a quarter, a half and one
+    of P_I pi R^2).
+
+    Parameters
+    ----------
+    fit : Fit
+        The fit's result (``pocket.apps.fit.leastsquares.fit``).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket import shooting
+    >>> from pocket.apps.fit.case import Request
+    >>> from pocket.apps.fit.leastsquares import fit
+    >>> from pocket.apps.fit.report import case_text
+    >>> from pocket.core.materials import Material
+    >>> phats = [0.1, 0.2, 0.3, 0.4]
+    >>> states = shooting.inflation_curve(Material("neo-hookean", {"mu": 1.0}), phats)
+    >>> rows = [f"{p * 3 * 0.4e6 * 1e-3 / 0.02},{s.height * 0.02}" for p, s in zip(phats, states)]
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(folder.name) / "bulge.csv"
+    >>> _ = path.write_text("pressure [Pa],height [m]\n" + "\n".join(rows) + "\n")
+    >>> result = fit(Request((path,), "neo-hookean", 0.02, 1e-3).setup(), "neo-hookean")
+    >>> from pocket.apps.cases import parse
+    >>> import tomllib
+    >>> case = parse(tomllib.loads(case_text(result)))
+    >>> print(case.material.law, round(case.material["mu"] / 1e6, 6), case.initial)
+    neo-hookean 0.4 ('pressure', 18000.0)
+    >>> folder.cleanup()
+    """
     setup, material = fit.setup, fit.material
     thickness = setup.thickness or NOMINAL_THICKNESS
     factor = 1.0 if setup.thickness else 1.0 / NOMINAL_THICKNESS
@@ -178,8 +245,50 @@ def figure(fit: Fit, path: pathlib.Path) -> None:
 
 
 def write(fit: Fit, target: pathlib.Path) -> pathlib.Path:
-    """Write the figure (``FIGURE``) and the case file (``CASE``) into the folder ``target`` (absolute,
-    checked by ``pocket.apps.folders.check_replaceable`` for ``KIND``), whole or not at all."""
+    r"""Write the figure of a fit (``FIGURE``) and its fitted sheet's case file (``CASE``) into a folder.
+
+    Whole or not at all; an existing folder is replaced only if pocket wrote it as a fit's result (``KIND``,
+    ``pocket.apps.folders.check_replaceable``).
+
+    Parameters
+    ----------
+    fit : Fit
+        The fit's result (``pocket.apps.fit.leastsquares.fit``).
+    target : pathlib.Path
+        The folder, absolute.
+
+    Returns
+    -------
+    pathlib.Path
+        ``target``.
+
+    Raises
+    ------
+    InputError
+        For a folder pocket may not replace.
+    OutputError
+        If the files cannot be written.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket import shooting
+    >>> from pocket.apps.fit.case import Request
+    >>> from pocket.apps.fit.leastsquares import fit
+    >>> from pocket.apps.fit.report import write
+    >>> from pocket.core.materials import Material
+    >>> phats = [0.1, 0.2, 0.3, 0.4]
+    >>> states = shooting.inflation_curve(Material("neo-hookean", {"mu": 1.0}), phats)
+    >>> rows = [f"{p * 3 * 0.4e6 * 1e-3 / 0.02},{s.height * 0.02}" for p, s in zip(phats, states)]
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(folder.name) / "bulge.csv"
+    >>> _ = path.write_text("pressure [Pa],height [m]\n" + "\n".join(rows) + "\n")
+    >>> result = fit(Request((path,), "neo-hookean", 0.02, 1e-3).setup(), "neo-hookean")
+    >>> out = write(result, pathlib.Path(folder.name).resolve() / "fit")
+    >>> print(sorted(p.name for p in out.iterdir() if not p.name.startswith(".")))
+    ['fit.png', 'fitted.toml']
+    >>> folder.cleanup()
+    """
     with staged(target, KIND) as partial:
         figure(fit, partial / FIGURE)
         (partial / CASE).write_text(case_text(fit), encoding="utf-8")

@@ -101,11 +101,38 @@ def _alpha_cell(material: Material):
 
 
 def solve_point(solver: str, material, pressure_initial: float, force: float, options: dict) -> dict:
-    """One grid point, from a fresh inflation, as a CSV row (dict of COLUMNS); model failures become
-    a status, not an error.
+    """One grid point, from a fresh inflation, as a CSV row; a model's failure becomes the row's status, not an error.
 
-    ``material`` is a ``Material``; ``options`` the solver's, with the ``fluid`` (a ``Fluid``) if it is a
-    gas and the ``indenter`` if it is not the flat plate."""
+    Parameters
+    ----------
+    solver : str
+        The solver by name.
+    material : Material
+        The rubber (``pocket.core.materials``; ``mooney_rivlin(alpha)`` for an alpha).
+    pressure_initial : float
+        Phat_I = P_I R / (E T).
+    force : float
+        Fhat = F / (P_I pi R^2).
+    options : dict
+        The solver's options, with the ``fluid`` (a ``Fluid``) if it is a gas and the ``indenter`` if it is not
+        the flat plate.
+
+    Returns
+    -------
+    dict
+        The row: the state's keys (``COLUMNS``), ``status`` (``"ok"``, ``"out_of_range"``, ``"failed"``) and
+        ``message``.
+
+    Examples
+    --------
+    >>> from pocket.apps.sweep.grid import solve_point
+    >>> from pocket.core.materials import mooney_rivlin
+    >>> row = solve_point("shooting", mooney_rivlin(47 / 160), 0.31, 0.19, {})
+    >>> print(row["status"], f"{row['pressure_ratio']:.4f}")
+    ok 1.2944
+    >>> print(solve_point("shooting", mooney_rivlin(47 / 160), 0.31, 20.0, {})["status"])
+    out_of_range
+    """
     try:
         state = entry(solver, "compress", "a sweep point")(material, pressure_initial, force, **options)
     except (OutOfRangeError, ConvergenceError) as err:
@@ -114,13 +141,41 @@ def solve_point(solver: str, material, pressure_initial: float, force: float, op
 
 
 def solve_curve(solver: str, material, pressure_initial: float, forces, options: dict) -> list[dict]:
-    """The points of one curve (one rubber, fluid and Phat_I; ``forces`` Fhat distinct, in increasing
-    order) as CSV rows in that order, by continuation through the forces (``compression_curve``).
+    """The points of one curve (one rubber, fluid and Phat_I) as CSV rows, by continuation through the forces.
 
-    The rows are those of ``solve_point`` to the solver's tolerance. Where the continuation fails at a
-    force, that point is solved from a fresh inflation (its row is ``solve_point``'s), the forces
-    before it are the curve up to it, and those after it a curve of their own; past a point out of
-    the model's range, each point is solved alone (its row says why it is out of range).
+    The rows are those of ``solve_point`` to the solver's tolerance. Where the continuation fails at a force,
+    that point is solved from a fresh inflation (its row is ``solve_point``'s), the forces before it are the
+    curve up to it, and those after it a curve of their own; past a point out of the model's range, each point
+    is solved alone (its row says why it is out of range).
+
+    Parameters
+    ----------
+    solver : str
+        The solver by name.
+    material : Material
+        The rubber.
+    pressure_initial : float
+        Phat_I = P_I R / (E T).
+    forces : sequence of float
+        Fhat, distinct, in increasing order.
+    options : dict
+        As for ``solve_point``.
+
+    Returns
+    -------
+    list of dict
+        The rows, in the order of ``forces``.
+
+    Examples
+    --------
+    >>> from pocket.apps.sweep.grid import solve_curve, solve_point
+    >>> from pocket.core.materials import mooney_rivlin
+    >>> rows = solve_curve("shooting", mooney_rivlin(47 / 160), 0.31, [0.1, 0.19, 20.0], {})
+    >>> print([row["status"] for row in rows])
+    ['ok', 'ok', 'out_of_range']
+    >>> alone = solve_point("shooting", mooney_rivlin(47 / 160), 0.31, 0.19, {})
+    >>> print(abs(rows[1]["pressure_ratio"] - alone["pressure_ratio"]) < 1e-9)
+    True
     """
     done = [0]
     try:
@@ -161,24 +216,66 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
               progress: Callable[[int, int], None] | None = None, material: Material | None = None,
               fluid: Fluid | None = None, indenter: Indenter | None = None, prestretch: float = 1.0
               ) -> tuple[int, int]:
-    """Solve every (alpha, Phat_I, Fhat) of the grid not already in the CSV ``path``.
+    """Solve every (alpha, Phat_I, Fhat) of a grid not already in the sweep file, on an executor.
 
-    Returns (computed, reused) points. The rubber is Mooney-Rivlin with each of ``alphas``, or
-    ``material`` (another law, for every point: ``alphas`` then empty or None). ``fluid``: None (a
-    liquid) or a gas, its ambient pressure as Phat_atm. ``indenter``: None (the flat plate), a sphere
-    or a profile table (``pocket.core.indenters``), part of each point like the fluid. ``prestretch``:
-    the sheets' lambda_p (``Material.prestretch``), for every rubber of the grid. ``solver`` and its
-    ``options`` (checked against its record) are part of each point: a file may hold the points of
-    several solvers.
-    Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the
-    grid's forces up to the last one missing, so that a point's row does not depend on which
-    points an earlier run on the file had finished;
-    ``progress(done, total)`` is called after each curve, ``done`` counting points. The file's life,
-    when the sweep finishes and when it stops early, is in the module docstring.
-    A sweep that stops early leaves the curves not yet solved in ``executor``: its
-    owner ends them (``pocket.apps.sweep.workers.stop``; a ``ProcessPoolExecutor`` whose
-    futures were cancelled cannot be stopped by killing its workers before Python
-    3.12, its manager thread then fails on the cancelled futures).
+    Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the grid's forces up
+    to the last one missing, so that a point's row does not depend on which points an earlier run on the file
+    had finished. The file's life, when the sweep finishes and when it stops early, is in ``pocket.apps.sweep.grid``:
+    one CSV row per point, appended as the sweep runs; a rerun resumes it.
+
+    Parameters
+    ----------
+    path : str or path
+        The sweep's CSV file (``pocket.apps.sweep.journal``).
+    alphas : sequence of float or None
+        Mooney-Rivlin alphas = C2/C1; empty or None with ``material``.
+    pressures : sequence of float
+        Phat_I = P_I R / (E T).
+    forces : sequence of float
+        Fhat = F / (P_I pi R^2).
+    executor : concurrent.futures.Executor
+        Where the curves are solved (``pocket.apps.sweep.workers.local_executor``, a dask cluster's,
+        ``pocket.apps.sweep.cluster.connect``). A sweep that stops early leaves the curves not yet solved in it:
+        its owner ends them (``pocket.apps.sweep.workers.stop``).
+    solver : str, optional
+        The solver by name; ``options`` its options (checked against its record). Both are part of each point:
+        a file may hold the points of several solvers.
+    progress : callable, optional
+        ``progress(done, total)``, called after each curve, ``done`` counting points.
+    material : Material, optional
+        Another law, for every point (instead of ``alphas``).
+    fluid : Fluid, optional
+        None (a liquid) or a gas, its ambient pressure as Phat_atm = P_atm R / (E T).
+    indenter : Indenter, optional
+        None (the flat plate), a sphere or a profile table (``pocket.core.indenters``), part of each point.
+    prestretch : float, optional
+        The sheets' lambda_p (``Material.prestretch``), for every rubber of the grid.
+
+    Returns
+    -------
+    tuple of int
+        (computed, reused) points.
+
+    Raises
+    ------
+    InputError
+        For an invalid grid, solver or option, or a file that is not a sweep's, before the file is touched.
+
+    Examples
+    --------
+    A grid of two rubbers, one pressure and two forces, then the same grid with a third force: the second run
+    reuses the four points it has.
+
+    >>> import csv, pathlib, tempfile
+    >>> from concurrent.futures import ThreadPoolExecutor
+    >>> from pocket.apps.sweep.grid import run_sweep
+    >>> with tempfile.TemporaryDirectory() as folder, ThreadPoolExecutor(1) as executor:
+    ...     path = pathlib.Path(folder) / "grid.csv"
+    ...     first = run_sweep(path, [0.0, 47 / 160], [0.31], [0.1, 0.19], executor)
+    ...     second = run_sweep(path, [0.0, 47 / 160], [0.31], [0.1, 0.19, 0.3], executor)
+    ...     rows = list(csv.DictReader(path.open()))
+    >>> print(first, second, len(rows), {row["status"] for row in rows})
+    (4, 0) (2, 4) 6 {'ok'}
     """
     if material is not None and alphas:
         raise InputError("give either alphas (a Mooney-Rivlin rubber) or another law's material, not both")

@@ -41,7 +41,19 @@ _PR_SET_PDEATHSIG = 1  # linux/prctl.h
 
 
 def max_workers() -> int:
-    """Most local workers a sweep may start: 4 per usable CPU (more only cost memory)."""
+    """Most local workers a sweep may start: 4 per usable CPU (more only cost memory).
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> import os
+    >>> from pocket.apps.sweep.workers import max_workers
+    >>> print(max_workers() % 4, 4 <= max_workers() <= 4 * os.cpu_count())
+    0 True
+    """
     return 4 * cpus()
 
 
@@ -74,18 +86,56 @@ def _init() -> None:
 
 
 def local_executor(workers: int | None = None) -> ProcessPoolExecutor:
-    """A process pool of ``workers`` processes (default: one per usable CPU) that die with this process."""
+    """A process pool whose workers die with this process: a sweep's local executor.
+
+    Parameters
+    ----------
+    workers : int, optional
+        The number of processes, 1 to ``max_workers()`` (default: one per usable CPU).
+
+    Returns
+    -------
+    concurrent.futures.ProcessPoolExecutor
+
+    Raises
+    ------
+    InputError
+        For a number of workers out of range.
+
+    Examples
+    --------
+    >>> from pocket.apps.sweep.workers import local_executor, stop
+    >>> executor = local_executor(1)
+    >>> print(executor.submit(pow, 2, 10).result())
+    1024
+    >>> stop(executor)
+    """
     count = cpus() if workers is None else check_count("workers", workers, 1, max_workers())
     return ProcessPoolExecutor(max_workers=count, initializer=_init)
 
 
 def stop(executor: Executor) -> None:
-    """Shut ``executor`` down without waiting for the tasks under way (cancel the others first).
+    """Shut an executor down without waiting for the tasks under way (cancel the others first).
 
-    A ``ProcessPoolExecutor``'s workers are killed through its process table
-    (``_processes``, there since Python 3.2): ``shutdown`` would wait for the tasks
-    under way, and so would the interpreter's exit. Any other executor (a dask
-    cluster's) is only shut down.
+    A ``ProcessPoolExecutor``'s workers are killed through its process table (``_processes``, there since
+    Python 3.2): ``shutdown`` would wait for the tasks under way, and so would the interpreter's exit. Any
+    other executor (a dask cluster's) is only shut down.
+
+    Parameters
+    ----------
+    executor : concurrent.futures.Executor
+        The executor.
+
+    Examples
+    --------
+    >>> from concurrent.futures import ThreadPoolExecutor
+    >>> from pocket.apps.sweep.workers import stop
+    >>> executor = ThreadPoolExecutor(1)
+    >>> stop(executor)
+    >>> executor.submit(print, "late")
+    Traceback (most recent call last):
+        ...
+    RuntimeError: cannot schedule new futures after shutdown
     """
     processes = list((getattr(executor, "_processes", None) or {}).values())
     executor.shutdown(wait=False)

@@ -148,8 +148,31 @@ def _profile(state):
 
 
 def field_data(state) -> dict[str, np.ndarray]:
-    """The state's numeric scalars (module docstring): float64 arrays of one value each (an Ogden
-    parameter: one per term)."""
+    """A state's numeric scalars as VTK field data (``pocket.apps.vtk.files``).
+
+    Its ``KEYS``, for a compressed state its contact patch, its smallest tensions and ``wrinkled`` (1.0 or 0.0),
+    the rubber's parameters and the fluid's, the codes of its solver, law and fluid (``CODES``) and its numeric
+    diagnostics.
+
+    Parameters
+    ----------
+    state : InflatedState or CompressedState
+        A solved state.
+
+    Returns
+    -------
+    dict
+        Name -> float64 array of one value (an Ogden parameter: one per term); dimensionless, as the state.
+
+    Examples
+    --------
+    >>> from pocket import shooting
+    >>> from pocket.apps.vtk.files import field_data
+    >>> state = shooting.compress(47 / 160, 0.31, 0.19)
+    >>> data = field_data(state)
+    >>> print(data["pressure_ratio"][0] == state.pressure_ratio, data["force"], data["wrinkled"])
+    True [0.19] [0.]
+    """
     out = {key: np.array([float(getattr(state, key))]) for key in state.KEYS if getattr(state, key) is not None}
     if hasattr(state, "indenter"):  # a compressed state: its contact patch
         out.update({key: np.array([value]) for key, value in contact_patch(state).items()})
@@ -197,8 +220,36 @@ def _sampled(state, radii):
 
 
 def profile_mesh(state, *, radii=None) -> meshio.Mesh:
-    """The meridian as a polyline of points (rho, 0, eta) with point data and the state's field data;
-    at the solver's radii, or resampled at ``radii``."""
+    """The deformed meridian as a polyline of points (rho, 0, eta), with point data and the state's field data.
+
+    Parameters
+    ----------
+    state : InflatedState or CompressedState
+        A state with a profile.
+    radii : array_like, optional
+        Lagrangian radii r / R to resample the profile at (default: the solver's).
+
+    Returns
+    -------
+    meshio.Mesh
+        Points in units of R, ``line`` cells from the pole; point data ``lambda_1``, ``lambda_2``, ``lambda_3``,
+        ``T_1``, ``T_2`` (units E T), ``contact``, ``r``, ``displacement``.
+
+    Raises
+    ------
+    InputError
+        For a state without a profile.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pocket import shooting
+    >>> from pocket.apps.vtk.files import profile_mesh
+    >>> state = shooting.inflate(47 / 160, 0.31)
+    >>> mesh = profile_mesh(state, radii=np.linspace(0.0, 1.0, 11))
+    >>> print(mesh.points.shape, mesh.cells[0].type, round(float(mesh.points[0, 2]), 6) == round(state.height, 6))
+    (11, 3) line True
+    """
     profile = _sampled(state, radii)
     rho, eta = np.asarray(profile.rho, dtype=float), np.asarray(profile.eta, dtype=float)
     points = np.column_stack((rho, np.zeros_like(rho), eta))
@@ -217,7 +268,38 @@ def _segments(segments) -> int:
 
 
 def surface_mesh(state, *, segments=64, radii=None) -> meshio.Mesh:
-    """The profile (resampled at ``radii`` if given) revolved about the z axis: quads, triangles at the pole."""
+    """The deformed sheet as a surface: its profile revolved about the z axis (quads, triangles at the pole).
+
+    Parameters
+    ----------
+    state : InflatedState or CompressedState
+        A state with a profile.
+    segments : int, optional
+        Points per ring, at least 3.
+    radii : array_like, optional
+        Lagrangian radii r / R to resample the profile at (default: the solver's).
+
+    Returns
+    -------
+    meshio.Mesh
+        Points in units of R, the point data of ``profile_mesh`` copied around each ring, the state's field data.
+
+    Raises
+    ------
+    InputError
+        For a state without a profile, or fewer than 3 segments.
+
+    Examples
+    --------
+    A profile that starts on the axis keeps one point at the pole and ``segments`` on every other ring:
+
+    >>> import numpy as np
+    >>> from pocket import shooting
+    >>> from pocket.apps.vtk.files import surface_mesh
+    >>> mesh = surface_mesh(shooting.inflate(47 / 160, 0.31), segments=16, radii=np.linspace(0.0, 1.0, 11))
+    >>> print(len(mesh.points) == 1 + 10 * 16, [block.type for block in mesh.cells])
+    True ['triangle', 'quad']
+    """
     segments = _segments(segments)
     profile = _sampled(state, radii)
     surface = revolve(profile.rho, profile.eta, segments)
@@ -246,8 +328,46 @@ def _fields(fields) -> dict[str, np.ndarray]:
 
 
 def write_state(directory, state, *, stem="state", segments=64, radii=None, fields=None) -> list[pathlib.Path]:
-    """Write ``{stem}_profile.vtu`` and ``{stem}_surface.vtu`` into ``directory`` (profiles at ``radii``
-    if given; ``fields``, {name: value}, added to the field data of both)."""
+    """Write a state's profile and surface for ParaView: ``{stem}_profile.vtu`` and ``{stem}_surface.vtu``.
+
+    Parameters
+    ----------
+    directory : str or path
+        The folder (made if missing).
+    state : InflatedState or CompressedState
+        A state with a profile.
+    stem : str, optional
+        The files' name before ``_profile``, ``_surface``.
+    segments : int, optional
+        Points per ring of the surface.
+    radii : array_like, optional
+        Lagrangian radii to resample the profile at.
+    fields : dict, optional
+        ``{name: value}`` added to the field data of both (a case's scales).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The two files.
+
+    Raises
+    ------
+    InputError
+        For a state without a profile, or fewer than 3 segments.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import meshio
+    >>> from pocket import shooting
+    >>> from pocket.apps.vtk.files import write_state
+    >>> state = shooting.compress(47 / 160, 0.31, 0.19)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     paths = write_state(folder, state, stem="pressed", fields={"radius_m": 0.02})
+    ...     back = meshio.read(paths[1])
+    >>> print([path.name for path in paths], bool(back.point_data["contact"].any()))
+    ['pressed_profile.vtu', 'pressed_surface.vtu'] True
+    """
     meshes = {"profile": profile_mesh(state, radii=radii), "surface": surface_mesh(state, segments=segments,
                                                                                    radii=radii)}
     for mesh in meshes.values():
@@ -282,16 +402,56 @@ def _pvd(path: pathlib.Path, files: list[str], times: np.ndarray) -> None:
 
 def write_series(directory, states, *, times=None, segments=64, points=SERIES_POINTS,
                  overwrite=False, fields=None, of=None) -> pathlib.Path:
-    """Write one profile and one surface per state plus ``profile.pvd`` and ``surface.pvd``; for compressed
-    states (with an ``indenter``) also the indenter's surface per state and ``indenter.pvd``.
+    """Write a load path for ParaView: a profile and a surface per state, and ``profile.pvd``, ``surface.pvd``.
 
-    ``times`` (default: the step index) label the steps. Every step has the same
-    points: the profiles are resampled on ``series_radii(states, points)``. ``fields``
-    ({name: value}) are added to the field data of every file (the scales of a case).
-    An existing non-empty ``directory`` is replaced as a whole only if it is a series
-    pocket wrote for ``of`` (a case, or None) and ``overwrite``
-    (``pocket.apps.folders.check_replaceable``); anything else is refused. Returns the
-    directory (as an absolute path).
+    For compressed states (with an ``indenter``) also the indenter's surface per state and ``indenter.pvd``.
+    Every step has the same points: the profiles are resampled on ``series_radii(states, points)``.
+
+    Parameters
+    ----------
+    directory : str or path
+        The folder. An existing non-empty folder is replaced as a whole only if it is a series pocket wrote for
+        ``of`` and ``overwrite`` (``pocket.apps.folders.check_replaceable``); anything else is refused.
+    states : sequence of states
+        The steps, each with a profile.
+    times : array_like, optional
+        The steps' labels, finite and strictly increasing (default: the step index).
+    segments : int, optional
+        Points per ring of the surfaces.
+    points : int, optional
+        Points of each resampled profile.
+    overwrite : bool, optional
+        Replace a series pocket wrote before.
+    fields : dict, optional
+        ``{name: value}`` added to the field data of every file (the scales of a case).
+    of : str, optional
+        What the series is of (a case), recorded with it.
+
+    Returns
+    -------
+    pathlib.Path
+        The folder, absolute.
+
+    Raises
+    ------
+    InputError
+        For no states, bad times, or a folder pocket may not replace.
+    OutputError
+        If the files cannot be written (nothing half-written is left).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from pocket import shooting
+    >>> from pocket.apps.vtk.files import write_series
+    >>> forces = [0.0, 0.1, 0.19]
+    >>> states = shooting.compression_curve(47 / 160, 0.31, forces)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     out = write_series(pathlib.Path(folder) / "press", states, times=forces, segments=8, points=21)
+    ...     names = sorted(path.name for path in out.glob("*.pvd"))
+    ...     steps = len(list(out.glob("step_*_surface.vtu")))
+    >>> print(names, steps)
+    ['indenter.pvd', 'profile.pvd', 'surface.pvd'] 3
     """
     states = list(states)
     if not states:
