@@ -53,8 +53,8 @@ def main() -> dict:
     print("F = P A_c: the flat contact zone carries the fluid's pressure to the plate. The finite elements also")
     print("sum the plate's reaction from their nodes' contact forces, a second route to the force:")
     for f in states["fem"]:
-        reaction = f.extra["force_reaction"]
-        print(f"  Fhat = {f.force:<5g} reaction / (P A_c) - 1 = {reaction / (f.pressure * f.contact_area / f.pressure_initial) - 1:+.1e}")
+        pressure_area = f.pressure * f.contact_area / f.pressure_initial  # P A_c in units of P_I pi R^2
+        print(f"  Fhat = {f.force:<5g} reaction / (P A_c) - 1 = {f.extra['force_reaction'] / pressure_area - 1:+.1e}")
     return states
 
 
