@@ -35,8 +35,8 @@ def fluids() -> dict:
 
 # %%
 # Each state of a gas-filled pocket holds the gas law: the solver closes the volume with it instead of
-# with V = V_I. The script checks it on every state: the largest |(P + P_atm) V^gamma /
-# ((P_I + P_atm) V_I^gamma) - 1| along the curve is the gas law's residual.
+# with V = V_I. The script checks it on every state: the gas law's residual is the largest relative
+# departure of (P + P_atm) V^gamma from its value at rest, (P_I + P_atm) V_I^gamma, along the curve.
 def main() -> dict:
     """Press the pocket filled with each fluid, print the comparison; returns ``{fluid: [state at each of
     FORCES]}``."""
