@@ -73,11 +73,12 @@ def main(out: pathlib.Path) -> dict:
 def scene(folder: pathlib.Path) -> pyvista.Plotter:
     """A plotter of the series' last step in ``folder``: the sheet coloured by lambda_1, and the indenter."""
     last = sorted(folder.glob("step_*_surface.vtu"))[-1]
-    plotter = pyvista.Plotter(window_size=(900, 500))
+    plotter = pyvista.Plotter(window_size=(900, 520))
     plotter.add_mesh(pyvista.read(last), scalars="lambda_1", cmap="viridis", smooth_shading=True,
-                     scalar_bar_args={"title": "lambda_1"})
+                     scalar_bar_args={"title": ""})
+    plotter.add_text(f"the sheet at Fhat = {FORCE:g}, coloured by its meridional stretch lambda_1", font_size=10)
     plotter.add_mesh(pyvista.read(str(last).replace("_surface", "_indenter")), color="wheat", opacity=0.5)
-    plotter.camera_position = [(2.6, -2.6, 1.6), (0.0, 0.0, 0.15), (0.0, 0.0, 1.0)]
+    plotter.camera_position = [(2.2, -2.2, 2.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
     return plotter
 
 
