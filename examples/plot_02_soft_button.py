@@ -55,9 +55,10 @@ def main() -> dict:
 
 
 # %%
-# The feel of each button: force against travel H0 - H. The fingertip sinks into the dome, so the
-# same travel needs less force than under the plate: the fingertip's button is designed with a
-# higher pressure.
+# The feel of each button: force against travel H0 - H. Both pass through the design point. The
+# fingertip sinks into the dome, so its button needs a higher pressure and a thicker sheet to stop it
+# at the same travel; it is stiffer at first and softer beyond the design point, where the plate's
+# contact area grows fast.
 def draw(designs: dict):
     """The force-travel curves, the design point marked."""
     fig, ax = plt.subplots(figsize=(6, 4), layout="constrained")

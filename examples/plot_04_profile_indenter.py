@@ -73,7 +73,8 @@ def main(out: pathlib.Path) -> dict:
 # %%
 # The figure: the pressure rise under both tips, and the sheet's profile at the largest force with the
 # indenter's surface. They share their tip curvature, so they press alike while the contact is small;
-# further out the paraboloid is lower than the sphere, the contact wider and the pressure rise smaller.
+# further out the paraboloid is flatter than the sphere, which sinks deeper into the dome: the pressure
+# rises less under the paraboloid.
 def draw(states: dict):
     """P/P_I against the force, and the deformed profiles at the largest force."""
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 3.8), layout="constrained")

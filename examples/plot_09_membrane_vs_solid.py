@@ -137,6 +137,8 @@ def draw(numbers: dict):
     errors = np.array([m / s - 1 for m, s in numbers["sweep"].values()])
     axes["c"].loglog(ratios, errors, "o-", label="membrane / solid - 1, volume")
     axes["c"].loglog(ratios, ratios, ":", color="0.5", label="T/R")
+    axes["c"].set_xticks(ratios, [f"{t:g}" for t in ratios], minor=False)
+    axes["c"].set_xticks([], minor=True)
     axes["c"].set_xlabel("T/R")
     axes["c"].set_title(f"(c) the paper's pocket inflated, Phat_I = {PHAT}", fontsize=10)
     axes["c"].legend(fontsize=8)
