@@ -102,6 +102,7 @@ def draw(numbers: dict):
 
 # %%
 # Run it: the files go to the folder given on the command line, or to a temporary one.
+# sphinx_gallery_thumbnail_number = 2
 if __name__ == "__main__":
     with tempfile.TemporaryDirectory() as folder:
         out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(folder)
