@@ -4,6 +4,8 @@ import os
 import pathlib
 import sys
 
+import pyvista
+
 from pocket.apps.provenance import version as pocket_version
 
 HERE = pathlib.Path(__file__).parent
@@ -54,7 +56,9 @@ intersphinx_mapping = {
     }.items()
 }
 
-# the gallery: every script in examples/ runs when the docs build, its figures and printed numbers shown
+# the gallery: every script in examples/ runs when the docs build, its figures and printed numbers shown; the
+# pyvista scraper takes the 3-D pictures (drawn off screen) of the plotters an example shows
+pyvista.BUILDING_GALLERY = pyvista.OFF_SCREEN = True
 sphinx_gallery_conf = {
     "examples_dirs": str(HERE.parent / "examples"),
     "gallery_dirs": str(HERE / "auto_examples"),
@@ -63,7 +67,7 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "remove_config_comments": True,
     "matplotlib_animations": False,
-    "image_scrapers": ("matplotlib",),
+    "image_scrapers": ("matplotlib", pyvista.Scraper()),
 }
 
 html_theme = "pydata_sphinx_theme"
