@@ -75,6 +75,8 @@ html_theme_options = {
     "show_toc_level": 2,
 }
 html_static_path: list = []
+# pages without sections of their own: no left sidebar, their tables get the width
+html_sidebars = {page: [] for page in ("index", "theory", "validation", "performance", "developers")}
 
 # a gallery example's figures are drawn off screen
 os.environ.setdefault("MPLBACKEND", "Agg")

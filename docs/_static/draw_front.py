@@ -13,11 +13,11 @@ import pathlib
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-from pocket import analytical, fem, shooting  # noqa: E402
-from pocket.core.errors import OutOfRangeError  # noqa: E402
+from pocket import analytical, fem, shooting
+from pocket.core.errors import OutOfRangeError
 
 ALPHA, PRESSURE, PRESSED = 47 / 160, 0.31, 0.5  # the rubber, Phat_I, the force of the cross-section
 OUT = pathlib.Path(__file__).with_name("pocket.png")
