@@ -23,6 +23,8 @@ extensions = [
     "sphinx.ext.autosummary",
     "sphinx.ext.intersphinx",
     "sphinx.ext.mathjax",
+    # MathJax served from the site itself, not a CDN: the pages' math renders offline too
+    "sphinx-mathjax-offline",
     "numpydoc",
     "sphinx_gallery.gen_gallery",
     "pocket_guide",
@@ -77,6 +79,8 @@ html_theme_options = {
     "show_toc_level": 2,
 }
 html_static_path: list = []
+# pages without sections of their own: no left sidebar, their tables get the width
+html_sidebars = {page: [] for page in ("index", "theory", "validation", "performance", "developers")}
 
 # a gallery example's figures are drawn off screen
 os.environ.setdefault("MPLBACKEND", "Agg")

@@ -6,7 +6,6 @@ area); the analytical model, which does not pose it, refuses it in one line."""
 
 import json
 import math
-import pathlib
 
 import numpy as np
 import pytest
@@ -151,10 +150,11 @@ def test_a_sphere_reaches_the_analytical_solver_which_refuses_it_in_one_line(tmp
     assert not list(tmp_path.glob("case.csv"))
 
 
-def test_the_readmes_profile_table_is_a_paraboloid_of_tip_radius_8_mm(tmp_path):
-    """The README's example rows are z = rho^2 / 16 mm, whose tip curvature is 1/(8 mm) (2 z'' = 1/8 mm)."""
-    readme = (pathlib.Path(__file__).parents[1] / "README.md").read_text()
-    text = readme.split("```text\nradius [mm],height [mm]\n", 1)[1].split("```", 1)[0]
+def test_the_documented_profile_table_is_a_paraboloid_of_tip_radius_8_mm(tmp_path):
+    """The documentation's example rows are z = rho^2 / 16 mm, whose tip curvature is 1/(8 mm) (2 z'' = 1/8 mm)."""
+    import documents
+
+    text = documents.text().split("```text\nradius [mm],height [mm]\n", 1)[1].split("```", 1)[0]
     (tmp_path / "tip.csv").write_text("radius [mm],height [mm]\n" + text)
     tip = Profile(read_csv(tmp_path / "tip.csv", clamp_radius=0.020))
     assert tip.curvature(0.0) == pytest.approx(20.0 / 8.0, rel=1e-12)  # units 1/R, R = 20 mm

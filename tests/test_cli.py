@@ -300,17 +300,18 @@ def test_inflate_help_names_no_force_and_no_fluid(capsys):
         assert word not in texts["inflate"], word
 
 
-def test_readme_commands_are_harmless_to_paste():
-    """Exact answer: every line of the README's sh blocks, its comment cut off and its quoted words
-    blanked, holds no shell operator a synopsis would bring ([a|b] runs as a pipeline, <x> redirects),
-    and each `pocket` line without a placeholder parses as a command (argparse: a bad one is exit 2)."""
-    import pathlib
+def test_documented_commands_are_harmless_to_paste():
+    """Exact answer: every line of the sh blocks of the README and the documentation's pages, its comment
+    cut off and its quoted words blanked, holds no shell operator a synopsis would bring ([a|b] runs as a
+    pipeline, <x> redirects), and each `pocket` line without a placeholder parses as a command (argparse: a
+    bad one is exit 2)."""
     import shlex
+
+    import documents
 
     from pocket.cli.main import _parser
 
-    readme = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text()
-    blocks = re.findall(r"```sh\n(.*?)```", readme, flags=re.S)
+    blocks = re.findall(r"```sh\n(.*?)```", documents.text(), flags=re.S)
     lines = [line for block in blocks for line in block.splitlines() if line.strip()]
     assert any(line.startswith("pocket inflate") for line in lines)
     for line in lines:

@@ -154,7 +154,7 @@ def test_every_registered_law_is_in_the_documentation():
     from pocket.core import materials
 
     readme = Path(__file__).resolve().parents[1].joinpath("README.md").read_text()
-    start = readme.index("The rubber: `--law`")
+    start = readme.index("The rubber: `--law")
     for name in LAWS:
         assert f"\n{name} " in materials.__doc__, name
         assert name in readme[start:start + 400], name

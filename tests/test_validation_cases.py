@@ -175,18 +175,18 @@ def test_plans_columns_take_their_options():
 
 
 @pytest.mark.parametrize("command", ["validate", "converge"])
-def test_help_and_readme_say_what_a_cases_file_needs(command, capsys):
+def test_help_and_docs_say_what_a_cases_file_needs(command, capsys):
     """Exact answer: the suite's own cases file, which ``load`` accepts: the help of ``--cases`` and the
-    README name every key of its [design] table and the case tables it needs."""
-    import pathlib
+    documentation's validation page name every key of its [design] table and the case tables it needs."""
+    from documents import ROOT
 
     from pocket.cli import main
 
     design = tomllib.loads(CASES_FILE.read_text())["design"]
     assert main([command, "--help"]) == 0
     help_text = " ".join(capsys.readouterr().out.split())
-    readme = " ".join((pathlib.Path(__file__).parents[1] / "README.md").read_text().split())
-    for text in (help_text, readme.replace("`", "")):
+    page = " ".join((ROOT / "docs" / "validation.md").read_text().split())
+    for text in (help_text, page.replace("`", "")):
         assert "[design]" in text
         assert "[[case]]" in text
         assert "label" in text
