@@ -79,7 +79,8 @@ def _bisect(active: np.ndarray, new: np.ndarray, joining: np.ndarray, all_pressi
     disc: too small if a node beyond its edge is above the plate, too large if none is and a force in it is
     negative), while the bounds leave an edge between them; else the rules' set ``new``. A disc is the nodes
     1 .. n - 1 with or without the pole's (whose consistent force, at r = 0, is zero to the discretisation: it
-    may leave), which keeps its place in ``new``. The bounds only close in, so the bisection ends."""
+    may leave), which keeps its place in ``new``; the disc of one node is the pole's. The bounds only close in, so
+    the bisection ends."""
     if np.array_equal(active[active > 0], np.arange(1, active.max() + 1)):
         edge = active.max() + 1
         if joining.size and joining.max() >= edge:
@@ -88,7 +89,8 @@ def _bisect(active: np.ndarray, new: np.ndarray, joining: np.ndarray, all_pressi
             bounds[1] = edge if bounds[1] is None else min(bounds[1], edge)
     if bounds[1] is None or bounds[1] - bounds[0] < 2:
         return new
-    return np.union1d(new[:1][new[:1] == 0], np.arange(1, (bounds[0] + bounds[1]) // 2))
+    disc = np.union1d(new[:1][new[:1] == 0], np.arange(1, (bounds[0] + bounds[1]) // 2))
+    return disc if disc.size else np.zeros(1, dtype=int)
 
 
 def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np.ndarray, Control, int]:

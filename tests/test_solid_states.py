@@ -200,3 +200,19 @@ def test_bad_input_in_python_before_any_work():
             solid.inflate(0.3, 0.31, **kwargs)
         assert "\n" not in str(err.value)
         assert next(iter(kwargs)) in str(err.value)
+
+
+def test_a_coarse_mesh_pressed_to_where_the_bisection_tries_the_pole_alone_solves(monkeypatch):
+    """On 8 x 2 elements, pressing a pocket to 0.9 H0 made the bisection of the contact disc's edge try the disc of
+    one node, which it built empty (a raw ValueError: argmax of an empty sequence). The disc of one node is the
+    pole's: the state solves, and it is the state the plain update rules reach (to the Newton tolerance)."""
+    from pocket.solid import newton
+
+    options = {"thickness_ratio": 0.02, "elements": 8, "layers": 2}
+    height = 0.9 * solid.inflate(47 / 160, 0.3, **options).height
+    pressed = solid.compress_height(47 / 160, 0.3, height, **options)
+    monkeypatch.setattr(newton, "_bisect", lambda active, new, *rest: new)
+    plain = solid.compress_height(47 / 160, 0.3, height, **options)
+    assert pressed.height == pytest.approx(height, rel=1e-12)
+    for key in ("force", "pressure_ratio", "contact_radius", "volume"):
+        assert getattr(pressed, key) == pytest.approx(getattr(plain, key), rel=1e-8), key
