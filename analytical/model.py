@@ -279,7 +279,10 @@ def _contact_radius(force, s0, pressure_initial, a_max, fluid=LIQUID):
         return _force(b * scale, s0, pressure_initial, fluid) / force - 1.0
 
     hi = min(a_max / scale, 10.0)  # for small forces b ~ 1 / lambda_0: the bracket stays of order one
-    hi = hi if miss(hi) >= 0.0 else a_max / scale
+    if miss(hi) < 0.0:
+        hi = a_max / scale
+        if miss(hi) < 0.0:  # force = Fhat(a_max) to its rounding: the range's end itself
+            return a_max
     return min(brentq(miss, 0.0, hi, xtol=1e-300, rtol=1e-14) * scale, a_max)
 
 

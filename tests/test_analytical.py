@@ -116,12 +116,14 @@ def test_states_echo_inputs_and_report_progress():
     assert calls == [(1, 3), (2, 3), (3, 3)]
 
 
-def test_range_end_is_where_the_contact_reaches_the_clamp():
-    """Exact answer: range_end is the force quoted past the range, and there A_c = pi R^2."""
-    end = analytical.range_end(SAMPLE, 0.31)
-    assert analytical.compress(SAMPLE, 0.31, end).contact_area == pytest.approx(1.0, rel=1e-9)
+@pytest.mark.parametrize(("alpha", "phat"), [(SAMPLE, 0.31), (0.3, 0.1), (0.0, 0.05)])
+def test_range_end_is_where_the_contact_reaches_the_clamp(alpha, phat):
+    """Exact answer: range_end is the force quoted past the range, and there, the force itself solved (where
+    Fhat(a_max) rounds below the force asked, too), A_c = pi R^2."""
+    end = analytical.range_end(alpha, phat)
+    assert analytical.compress(alpha, phat, end).contact_area == pytest.approx(1.0, rel=1e-9)
     with pytest.raises(OutOfRangeError, match=f"{end:.6g}"):
-        analytical.compress(SAMPLE, 0.31, end * (1 + 1e-9))
+        analytical.compress(alpha, phat, end * (1 + 1e-9))
 
 
 def test_any_rubber_gives_the_same_small_strain_numbers():
