@@ -120,7 +120,7 @@ def register(subparsers) -> None:
         "test by the flat plate: 'force [N],pressure [kPa]' (and optionally 'height [mm]'), at --initial-pressure "
         "or the pressure of its row at zero force. Several files are fitted jointly. Residuals are relative, or in "
         "units of a column's --sigma. Reports each parameter with its standard error (from the Jacobian and the "
-        "residual variance), 95 %% interval (by the profile likelihood where the fit can, else linearised: the "
+        "residual variance), 95 % interval (by the profile likelihood where the fit can, else linearised: the "
         "report says which), the correlations and warnings where the data do not determine a "
         "parameter. A value without a unit ('--radius 15') is read in SI (15 m) and said so; data that make such a "
         "reading absurd are refused before solving.")

@@ -21,7 +21,7 @@ _SHOWN = ("load", "force_N", "pressure_Pa", "contact_area_m2", "height_m", "forc
 def add_case_arguments(parser) -> None:
     """The pocket to use: a case file or a built-in sample of Table 1."""
     parser.add_argument("case", nargs="?", type=path_name, metavar="CASE.toml",
-                        help="case file in physical units (the format is in the README)")
+                        help="case file in physical units (its tables and keys: the user guide's page on case files)")
     parser.add_argument("--sample", type=int, metavar="N", help="built-in sample N (1-4) of the paper's Table 1")
 
 
