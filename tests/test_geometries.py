@@ -1,5 +1,5 @@
-"""The membrane's reference surface (``pocket.core.geometries``): the flat clamped disc, the only one today, given to
-every solver as a law and an indenter are, refused in one line by a solver that does not pose it, carried by the
+"""The membrane's reference surface (``pocket.core.geometries``): the flat clamped disc and the closed capsule, given
+to every solver as a law and an indenter are, refused in one line by a solver that does not pose it, carried by the
 states, and changing no reported number."""
 
 import dataclasses
@@ -14,11 +14,13 @@ from pocket.apps.solvers import SOLVERS
 from pocket.cli.main import main
 from pocket.core.errors import InputError
 from pocket.core.geometries import (
+    CAPSULE,
     DISC,
     GEOMETRIES,
     Clamp,
     Geometry,
     Support,
+    Symmetry,
     as_geometry,
     clamp_of,
     formulation,
@@ -69,7 +71,26 @@ def test_the_disc_is_the_flat_sheet_clamped_at_its_rim():
     assert DISC.end == Clamp(radius=1.0, height=0.0)
     assert clamp_of(DISC) is DISC.end
     assert DISC.name == "pocket"
-    assert GEOMETRIES == {"pocket": DISC}
+    assert GEOMETRIES == {"pocket": DISC, "capsule": CAPSULE}
+
+
+def test_the_capsule_is_the_upper_half_of_the_unit_sphere_on_its_equators_symmetry():
+    """Exact answers: the capsule's meridian is the quarter circle r0 = sin S, z0 = cos S (so r0^2 + z0^2 = 1 and
+    its length is pi/2); it ends on the equatorial plane held by the mirror symmetry, not a clamp; the volume it
+    encloses with that plane is that of the surface of revolution, integral of pi r0^2 dz (2 pi/3, by quadrature
+    here: the half of the ball 4 pi/3)."""
+    from scipy.integrate import quad
+
+    arc = np.linspace(0.0, CAPSULE.length, 9)
+    assert CAPSULE.length == 0.5 * math.pi
+    np.testing.assert_allclose(CAPSULE.radius(arc) ** 2 + CAPSULE.height(arc) ** 2, 1.0, rtol=0, atol=1e-15)
+    assert (CAPSULE.radius(0.0), CAPSULE.height(CAPSULE.length)) == (0.0, pytest.approx(0.0, abs=1e-16))
+    volume = quad(lambda s: math.pi * math.sin(s) ** 2 * math.sin(s), 0.0, CAPSULE.length)[0]  # -dz0 = sin S dS
+    assert CAPSULE.volume == pytest.approx(volume, rel=1e-14)
+    assert CAPSULE.end == Symmetry(height=0.0)
+    assert as_geometry("capsule") is CAPSULE
+    with pytest.raises(ValueError, match=r"^the capsule geometry's meridian is not clamped at its end$"):
+        clamp_of(CAPSULE)
 
 
 def test_a_geometry_is_none_a_name_or_a_geometry():
@@ -79,8 +100,9 @@ def test_a_geometry_is_none_a_name_or_a_geometry():
     assert as_geometry(None) is DISC
     assert as_geometry("pocket") is DISC
     assert as_geometry(toy) is toy
-    for value, shown in (("capsule", "'capsule'"), (1.0, "1.0")):
-        with pytest.raises(InputError, match=rf"^geometry = {shown}, but it must be one of pocket or a Geometry"):
+    for value, shown in (("torus", "'torus'"), (1.0, "1.0")):
+        with pytest.raises(InputError, match=rf"^geometry = {shown}, but it must be one of pocket, capsule or a "
+                                             "Geometry"):
             as_geometry(value)
 
 

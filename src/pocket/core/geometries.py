@@ -10,10 +10,18 @@ encloses the volume V0 with the plane of its end.
 name     surface                                 L      r0(S), z0(S)  end             V0
 =======  ======================================  =====  ============  ==============  ====
 pocket   a flat disc, clamped at r = R           1      S, 0          clamp r=1, z=0  0
+capsule  a closed sphere of radius R (its upper  pi/2   sin S, cos S  the equator's   2 pi/3
+         half: the lower is its mirror image)                         symmetry
 =======  ======================================  =====  ============  ==============  ====
 
-The flat disc is today's only kind (``DISC``, every solver's default): its arc length is its radius, so
-S and r0 are one coordinate, which is why every solver writes the Lagrangian radius r for both.
+The flat disc (``DISC``) is every solver's default: its arc length is its radius, so S and r0 are one
+coordinate, which is why the solvers write the Lagrangian radius r for both.
+
+The closed capsule (``CAPSULE``, a sphere of radius R pressed between two parallel plates placed symmetrically
+about its equatorial plane) is described by its upper half: the meridian runs from the pole S = 0 to the equator
+S = pi / 2, with r0 = sin S and z0 = cos S above the equatorial plane, and its end is held by the equator's
+mirror symmetry (``Symmetry``: the meridian vertical there and on the plane z = 0, its radius free), not by a
+clamp. Its upper half encloses 2 pi / 3 with the equatorial plane (the whole capsule 4 pi / 3).
 
 Each solver maps the surfaces it poses to its own formulation through an explicit table and asks
 ``formulation`` (or ``posed``, the check every entry point makes of its ``geometry`` argument) for it,
@@ -22,17 +30,13 @@ is a new ``Geometry`` here and an entry in the tables of the solvers that pose i
 carries the surface it was solved on (``pocket.core.states.InflatedState.geometry``), and a compressed
 state the one of the inflated state it was pressed from.
 
-What a closed capsule (a sphere of radius R) will need beyond this seam: its meridian runs from the pole
-to the equator, S in [0, pi / 2] with r0 = sin S and z0 = cos S measured from the equatorial plane, and
-its end is no clamp but the equator's symmetry (the meridian vertical there, z = 0, r free), a second
-kind of ``Support``. The solvers then read r0(S) wherever they now take the Lagrangian radius for the
-reference radius: the hoop stretch lambda_2 = rho / r0 in the shooting equations and their pole series,
-and in the finite-element kernels; the shooting's closing condition (now rho(1) = 1 at the clamp) and
-the finite element's prescribed dofs (now rho and eta at S = 1) become the equator's; the volume and the
-end's stretch report that surface's; the shooting solver's remembered range ends, keyed on the pocket's
-problem, key on its inflated state's surface too; the starting guesses (the small-strain dome of both
-solvers' marches) are the disc's. Its undeformed upper half encloses 2 pi / 3 with the equatorial plane (the
-whole capsule 4 pi / 3), and its inflated state has a closed form (a sphere of uniform stretch).
+What a solver needs to pose the capsule: it reads r0(S) wherever it now takes the Lagrangian radius for the
+reference radius (the hoop stretch lambda_2 = rho / r0 in the shooting equations and their pole series, and in
+the finite-element kernels); the shooting's closing condition (now rho(1) = 1 at the clamp) and the finite
+element's prescribed dofs (now rho and eta at S = 1) become the equator's symmetry (eta = 0 and the meridian
+vertical at S = pi / 2); the volume and the end's stretch report that surface's; the shooting solver's
+remembered range ends, keyed on the pocket's problem, key on its inflated state's surface too; the starting
+guesses are the surface's own (the inflated capsule has a closed form: a sphere of uniform stretch).
 """
 
 from __future__ import annotations
@@ -48,12 +52,14 @@ from .errors import InputError
 from .inputs import quote
 
 __all__ = [
+    "CAPSULE",
     "DISC",
     "GEOMETRIES",
     "Clamp",
     "Disc",
     "Geometry",
     "Support",
+    "Symmetry",
     "as_geometry",
     "clamp_of",
     "formulation",
@@ -64,7 +70,7 @@ T = TypeVar("T")
 
 
 class Support:
-    """What holds the end of the meridian: a subclass per way of holding it (``Clamp``)."""
+    """What holds the end of the meridian: a subclass per way of holding it (``Clamp``, ``Symmetry``)."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -74,6 +80,14 @@ class Clamp(Support):
     for it the clamp fixes the point only)."""
 
     radius: float
+    height: float
+
+
+@dataclasses.dataclass(frozen=True)
+class Symmetry(Support):
+    """The meridian's end on a plane of mirror symmetry, at height ``height`` (units R): the end point stays on the
+    plane, free to move along it, and the meridian crosses it at a right angle (a closed capsule's equator)."""
+
     height: float
 
 
@@ -95,7 +109,7 @@ class Geometry(abc.ABC):
     --------
     >>> from pocket.core.geometries import DISC, GEOMETRIES, Geometry
     >>> print(list(GEOMETRIES), isinstance(DISC, Geometry))
-    ['pocket'] True
+    ['pocket', 'capsule'] True
     """
 
     name: ClassVar[str]
@@ -168,11 +182,57 @@ class Disc(Geometry):
 
 _RIM = Clamp(radius=1.0, height=0.0)  # the disc's clamp
 
+
+@dataclasses.dataclass(frozen=True)
+class Capsule(Geometry):
+    """A closed spherical membrane of radius R, described by its upper half (``CAPSULE``): the meridian from the
+    pole to the equator, r0(S) = sin S and z0(S) = cos S above the equatorial plane, S in [0, pi / 2], its end on
+    the plane of the equator's mirror symmetry.
+
+    Examples
+    --------
+    >>> import math
+    >>> from pocket.core.geometries import CAPSULE
+    >>> arc = [0.0, math.pi / 6, math.pi / 2]
+    >>> print(CAPSULE.length == math.pi / 2, CAPSULE.radius(arc).round(6), CAPSULE.height(arc).round(6))
+    True [0.  0.5 1. ] [1.       0.866025 0.      ]
+    >>> print(CAPSULE.end, CAPSULE.volume == 2 * math.pi / 3)
+    Symmetry(height=0.0) True
+    """
+
+    name: ClassVar[str] = "capsule"
+    description: ClassVar[str] = "a closed spherical membrane of radius R, pressed between two parallel plates"
+
+    @property
+    def length(self) -> float:
+        return 0.5 * np.pi
+
+    def radius(self, arc) -> np.ndarray:
+        """r0(S) = sin S."""
+        return np.sin(np.asarray(arc, dtype=float))
+
+    def height(self, arc) -> np.ndarray:
+        """z0(S) = cos S, above the equatorial plane."""
+        return np.cos(np.asarray(arc, dtype=float))
+
+    @property
+    def end(self) -> Symmetry:
+        return _EQUATOR
+
+    @property
+    def volume(self) -> float:
+        return 2.0 * np.pi / 3.0
+
+
+_EQUATOR = Symmetry(height=0.0)  # the capsule's equatorial plane
+
 #: the flat clamped disc (every solver's default)
 DISC = Disc()
+#: the closed spherical capsule (posed by the solvers whose ``GEOMETRIES`` table names it)
+CAPSULE = Capsule()
 
-#: name -> the reference surface of that name (what ``--geometry`` will offer)
-GEOMETRIES: dict[str, Geometry] = {DISC.name: DISC}
+#: name -> the reference surface of that name (what ``--geometry`` offers)
+GEOMETRIES: dict[str, Geometry] = {DISC.name: DISC, CAPSULE.name: CAPSULE}
 
 
 def as_geometry(value) -> Geometry:
@@ -197,10 +257,10 @@ def as_geometry(value) -> Geometry:
     >>> from pocket.core.geometries import DISC, as_geometry
     >>> print(as_geometry(None) is DISC, as_geometry("pocket") is DISC)
     True True
-    >>> as_geometry("capsule")
+    >>> as_geometry("torus")
     Traceback (most recent call last):
         ...
-    pocket.core.errors.InputError: geometry = 'capsule', but it must be one of pocket or a Geometry ...
+    pocket.core.errors.InputError: geometry = 'torus', but it must be one of pocket, capsule or a Geometry ...
     """
     if value is None:
         return DISC
