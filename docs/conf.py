@@ -28,6 +28,7 @@ extensions = [
     "numpydoc",
     "sphinx_gallery.gen_gallery",
     "pocket_guide",
+    "validation_report",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
