@@ -67,9 +67,10 @@ _STATE = {
                                  "pressure after pressing of a compressed one"),
     "stretch_pole": Reported("1", "the sheet's stretch at the pole (equal in every direction there)"),
     "height": Reported("R", "an inflated state's pole height H0; a compressed state's indenter's lowest point H "
-                            "above the clamp plane (the dome's height under the plate)"),
+                            "above the clamp plane (the dome's height under the plate); a capsule's: the pole's "
+                            "or the plate's distance from its equatorial plane"),
     "volume": Reported("R^3", "the volume under the sheet (a membrane's mid-surface; the solid's lower surface, "
-                              "the fluid's)"),
+                              "the fluid's); a capsule's whole volume"),
     "stretch_clamp": Reported("1", "the meridional stretch at the clamp"),
     "pressure_initial": Reported("Phat", "P_I, the inflation pressure at which the fluid was sealed"),
     "force": Reported("Fhat", "the force F pressing the indenter on the pocket"),
@@ -77,9 +78,10 @@ _STATE = {
     "contact_area": Reported("pi R^2", "A_c, the deformed area in contact (the curved area under a sphere or a "
                                        "profile); F / P on the flat plate"),
     "contact_radius": Reported("R", "a_c, the Lagrangian contact radius: where the contact edge was in the "
-                                    "flat sheet"),
+                                    "flat sheet (a capsule's: the arc length from the pole to the contact edge on "
+                                    "the undeformed sphere, its polar angle)"),
     "stretch_contact": Reported("1", "the stretch of the sheet in contact (uniform on the plate; the pole's "
-                                     "under a curved indenter)"),
+                                     "under a curved indenter; a capsule's hoop stretch at the contact edge)"),
     "height_ratio": Reported("1", "H / H0, the pressed height over the inflated one"),
 }
 
@@ -90,6 +92,14 @@ _CONTACT = {
     "contact_pressure_pole": Reported("Phat", "the contact pressure at the pole (P on the flat plate; P + (T_1 + "
                                               "T_2) / R_s on a sphere)"),
     "contact_pressure_edge": Reported("Phat", "the contact pressure at the contact edge (P on the flat plate)"),
+}
+
+#: a capsule's own keys (its states' ``extra``)
+_CAPSULE = {
+    "geometry": Reported("text", "the membrane's reference shape: pocket (a flat sheet clamped at its rim) or "
+                                 "capsule (a closed sphere pressed between two parallel plates)"),
+    "radius_equator": Reported("R", "a capsule's deformed equatorial radius"),
+    "force_ETR": Reported("1", "a capsule's force on each plate in units of E T R: F / (E T R) = pi Fhat Phat_I"),
 }
 
 #: the membrane's validity (``pocket.core.states.CHECKS``)
@@ -160,7 +170,7 @@ _SOLID = {
 
 #: the keys by what they describe (the documentation's sections)
 GROUPS: dict[str, dict[str, Reported]] = {
-    "state": _STATE, "contact patch": _CONTACT, "membrane checks": _CHECKS, "rubber": _RUBBER, "fluid": _FLUID,
+    "state": _STATE, "contact patch": _CONTACT, "capsule": _CAPSULE, "membrane checks": _CHECKS, "rubber": _RUBBER, "fluid": _FLUID,
     "solver and warnings": _RUN, "fem diagnostics": _FEM, "solid diagnostics": _SOLID,
 }
 
