@@ -22,7 +22,10 @@ from pocket.core.geometries import CAPSULE
 from pocket.core.materials import mooney_rivlin
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-__all__ = ["pressed", "pressed_volume", "sphere", "sphere_pressure"]
+__all__ = ["STAND_IN_STRETCH", "pressed", "pressed_volume", "sphere", "sphere_pressure", "stand_in", "stood_in"]
+
+#: the stand-in's inflated stretch
+STAND_IN_STRETCH = 1.2
 
 
 def sphere_pressure(alpha: float, stretch: float) -> float:
@@ -76,3 +79,35 @@ def pressed(inflated: InflatedState, force: float, contact_radius: float = 0.4, 
                            contact_radius, rho_c / math.sin(contact_radius), height, height / inflated.height,
                            pressed_volume(rho_c, height), profile, inflated, inflated.solver, extra=extra,
                            contact_radius_deformed=rho_c)
+
+
+def stood_in(forces) -> list[CompressedState]:
+    """The stand-in's states at ``forces`` (``stand_in``): pressed shapes of the sphere of stretch
+    ``STAND_IN_STRETCH``, the k-th with rho_c = 0.3 + 0.1 k and H = 0.9 - 0.1 k."""
+    inflated = sphere(stretch=STAND_IN_STRETCH, solver="analytical")
+    return [pressed(inflated, f, rho_c=0.3 + 0.1 * k, height=0.9 - 0.1 * k) for k, f in enumerate(forces)]
+
+
+def stand_in(monkeypatch) -> list:
+    """The analytical solver's ``inflate``, ``compression_curve`` and ``range_end`` replaced by ones returning
+    hand-built capsule states (``sphere``, ``stood_in``) and no end of the range; returns the list of
+    (entry point, keywords) of their calls, filled as they are called."""
+    from pocket import analytical
+
+    calls = []
+
+    def inflate(material, pressure, **options):
+        calls.append(("inflate", options))
+        return sphere(stretch=STAND_IN_STRETCH, solver="analytical")
+
+    def compression_curve(material, pressure_initial, forces, **options):
+        calls.append(("compression_curve", {k: v for k, v in options.items() if k != "progress"}))
+        return stood_in(forces)
+
+    def range_end(material, pressure_initial, **options):
+        calls.append(("range_end", options))
+        return math.inf
+
+    for name, fn in (("inflate", inflate), ("compression_curve", compression_curve), ("range_end", range_end)):
+        monkeypatch.setattr(analytical, name, fn)
+    return calls

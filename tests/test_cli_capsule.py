@@ -13,12 +13,13 @@ from __future__ import annotations
 
 import json
 
+import capsulestates
 import meshio
 import numpy as np
 import pytest
-from capsulestates import pressed, sphere
+from capsulestates import sphere, stood_in
 
-from pocket import analytical, fem, shooting
+from pocket import fem, shooting
 from pocket.cli import main
 from pocket.core.errors import InputError
 from pocket.core.geometries import CAPSULE, GEOMETRIES
@@ -39,22 +40,9 @@ def run(capsys, *argv):
 
 @pytest.fixture
 def stand_in(monkeypatch):
-    """The analytical solver's ``inflate`` and ``compression_curve`` replaced by ones returning hand-built capsule
-    states (a sphere of stretch 1.2, pressed shapes at each force); the keywords they were given are recorded."""
-    calls = []
-
-    def inflate(material, pressure, **options):
-        calls.append(("inflate", options))
-        return sphere(stretch=1.2, solver="analytical")
-
-    def compression_curve(material, pressure_initial, forces, **options):
-        calls.append(("compression_curve", options))
-        inflated = sphere(stretch=1.2, solver="analytical")
-        return [pressed(inflated, f, rho_c=0.3 + 0.1 * k, height=0.9 - 0.1 * k) for k, f in enumerate(forces)]
-
-    monkeypatch.setattr(analytical, "inflate", inflate)
-    monkeypatch.setattr(analytical, "compression_curve", compression_curve)
-    return calls
+    """The analytical solver's entry points replaced by ones returning hand-built capsule states
+    (``capsulestates.stand_in``); the keywords they were given are recorded."""
+    return capsulestates.stand_in(monkeypatch)
 
 
 def test_the_capsule_keys_are_documented_with_their_units():
@@ -87,9 +75,7 @@ def test_compress_json_is_what_the_solver_returned_for_the_capsule(capsys, stand
     assert (status, err) == (0, "")
     assert [(name, options["geometry"]) for name, options in stand_in] == [("compression_curve", CAPSULE)]
     rows = json.loads(out)
-    inflated = sphere(stretch=1.2, solver="analytical")
-    expected = [pressed(inflated, f, rho_c=0.3 + 0.1 * k, height=0.9 - 0.1 * k).scalars()
-                for k, f in enumerate((0.2, 0.4))]
+    expected = [state.scalars() for state in stood_in((0.2, 0.4))]
     for row, scalars in zip(rows, expected, strict=True):
         assert set(row) - {"warnings"} == set(scalars)
         assert set(READ) | set(CAPSULE_KEYS) <= set(row)

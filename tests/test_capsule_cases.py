@@ -1,0 +1,169 @@
+"""Case files of a capsule (``geometry = "capsule"`` and ``[capsule] radius``), the built-in example capsule, and
+``pocket run`` on them: the results in SI units, the gap between the plates 2 H R and the force on each plate.
+
+The run's plumbing is checked with a stand-in for the analytical solver's entry points (``capsulestates``:
+hand-built states), so that every SI value is computed here from the state the entry point returned and the
+case's scales (P = Phat E T / R, F = Fhat P_I pi R^2, lengths x R); where the shooting solver poses the capsule,
+the run is checked against its Python API.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+
+import capsulestates
+import pytest
+from capsulestates import stood_in
+
+from pocket import shooting
+from pocket.apps.casefile import solved
+from pocket.apps.cases import capsule_example, example, parse
+from pocket.apps.columns import column
+from pocket.apps.physical import resolve
+from pocket.cli import main
+from pocket.core.errors import InputError
+from pocket.core.geometries import CAPSULE, DISC
+
+#: a 50 um capsule with a 0.5 um wall (neo-Hookean, mu = 1 MPa: E = 3 MPa) at P_I = 3 kPa
+CAPSULE_CASE = {"geometry": "capsule", "sheet": {"thickness": "0.5 um", "material": "neo-hookean", "mu": "1 MPa"},
+                "capsule": {"radius": "50 um"}, "initial": {"pressure": "3 kPa"},
+                "loads": {"forces": ["2 uN", "5 uN"]}}
+
+
+@pytest.fixture
+def stand_in(monkeypatch):
+    """The analytical solver's entry points replaced by hand-built capsule states (``capsulestates.stand_in``)."""
+    return capsulestates.stand_in(monkeypatch)
+
+
+def test_a_capsule_case_has_its_geometry_and_radius():
+    """Exact answers: ``geometry = "capsule"`` with ``[capsule] radius = "50 um"`` is the capsule of R = 50 um, its
+    radius's key capsule.radius; a case without ``geometry`` is the flat pocket of its clamp's radius; both name
+    their geometry in the results' case."""
+    case = parse(CAPSULE_CASE)
+    assert (case.geometry, case.radius, case.thickness) == (CAPSULE, pytest.approx(50e-6, rel=1e-15), 0.5e-6)
+    assert case.radius_key == "capsule.radius"
+    assert case.as_given("capsule.radius") == "50 um"
+    assert case.fields()["geometry"] == "capsule"
+    pocket = parse({**{k: v for k, v in CAPSULE_CASE.items() if k not in ("geometry", "capsule")},
+                    "clamp": {"radius": "20 mm"}})
+    assert (pocket.geometry, pocket.radius_key, pocket.fields()["geometry"]) == (DISC, "clamp.radius", "pocket")
+
+
+@pytest.mark.parametrize(("change", "message"), [
+    ({"geometry": "torus"}, "case: geometry = 'torus', but it must be one of pocket, capsule"),
+    ({"geometry": 1}, "case: geometry = 1, but it must be one of pocket, capsule"),
+    ({"clamp": {"radius": "20 mm"}}, "case: [clamp] holds a pocket's radius, but the case is a capsule "
+                                     "(geometry = 'capsule'), whose radius is [capsule] radius"),
+    ({"geometry": "pocket"}, "case: [capsule] holds a capsule's radius, but the case is a pocket "
+                             "(geometry = 'pocket'), whose radius is [clamp] radius"),
+    ({"capsule": {"radius": "50 um", "height": "1 mm"}}, "case: unknown key 'capsule.height' (known: radius)"),
+    ({"capsule": {"radius": "5 kPa"}}, "capsule.radius = '5 kPa' has dimension"),
+    ({"sheet": {"thickness": "30 um", "material": "neo-hookean", "mu": "1 MPa"}},
+     "sheet.thickness = '30 um' on capsule.radius = '50 um': the sheet's thickness is 0.6 times"),
+], ids=["unknown", "not-text", "clamp", "capsule-of-a-pocket", "unknown-key", "dimension", "thick"])
+def test_a_bad_capsule_case_is_one_line(change, message):
+    """Exact answers: an unknown geometry, the radius table of the other geometry, an unknown key of
+    ``[capsule]``, a radius that is no length, and a wall too thick for a membrane are each one InputError
+    naming the key, before any solver runs."""
+    with pytest.raises(InputError) as caught:
+        parse({**CAPSULE_CASE, **change})
+    assert str(caught.value).startswith(message)
+    assert "\n" not in str(caught.value)
+
+
+def test_a_capsule_case_without_its_radius_is_refused():
+    """Exact answer: a capsule case without ``[capsule]`` misses that table, as a pocket's misses ``[clamp]``."""
+    with pytest.raises(InputError, match=r"^case: missing key 'capsule'$"):
+        parse({k: v for k, v in CAPSULE_CASE.items() if k != "capsule"})
+
+
+def test_the_built_in_capsule_is_a_microcapsule_at_phat_a_tenth():
+    """Exact answers: the example capsule is R = 50 um with a 0.5 um wall, E = 3 mu = 3 MPa, so that its P_I = 3 kPa
+    is Phat_I = P_I R / (E T) = 0.1 (computed here from its SI values); ``example("capsule")`` is it, another name
+    is one line."""
+    case = capsule_example()
+    assert case.geometry is CAPSULE
+    assert case.initial[1] * case.radius / (case.modulus * case.thickness) == pytest.approx(0.1, rel=1e-14)
+    assert example("capsule") == case
+    with pytest.raises(InputError, match=r"^example = 'torus', but the built-in examples are capsule$"):
+        example("torus")
+
+
+def test_the_case_gives_the_solver_the_capsule_at_each_step(stand_in):
+    """Exact answers: the inflation, the range's end and the compression curve are each given ``geometry`` = the
+    capsule, the forces as Fhat = F / (P_I pi R^2) with F on each plate."""
+    case = parse({**CAPSULE_CASE, "solver": {"name": "analytical"}})
+    _, pocket, states = solved(case)
+    assert {name for name, _ in stand_in} == {"inflate", "range_end", "compression_curve"}
+    assert all(options["geometry"] is CAPSULE for _, options in stand_in)
+    scale = 3e3 * math.pi * case.radius**2
+    assert pocket.force_scale_N == pytest.approx(scale, rel=1e-15)
+    assert [s.force for s in states] == [f / pocket.force_scale_N for f in case.loads]
+    assert case.loads == pytest.approx((2e-6, 5e-6), rel=1e-15)
+
+
+def test_run_writes_the_capsules_results_in_si(tmp_path, capsys, stand_in):
+    """Exact answers, from the states the stand-in returned and the case's scales (E T / R = 30 kPa,
+    P_I pi R^2, R): each row's force_N is the force asked on each plate, pressure_Pa = Phat E T / R, gap_m = 2 H R,
+    height_m = H R, radius_equator_m = rho_eq R, volume_m3 = V R^3, contact_radius_deformed_m = rho_c R; the
+    dimensionless keys are the state's (its capsule's keys among them); every column is documented; the
+    inflated row's gap is the sphere's height 2 lambda R; the printed table shows the gap."""
+    path = tmp_path / "squeeze.toml"
+    path.write_text('geometry = "capsule"\n[sheet]\nthickness = "0.5 um"\nmaterial = "neo-hookean"\nmu = "1 MPa"\n'
+                    '[capsule]\nradius = "50 um"\n[initial]\npressure = "3 kPa"\n[loads]\nforces = ["2 uN", "5 uN"]\n'
+                    '[solver]\nname = "analytical"\n')
+    assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines()[0].startswith(f"# {path}: a capsule, solver analytical")  # the case's name
+    assert "gap_m" in out.splitlines()[1].split()
+    result = json.loads((tmp_path / "out" / "squeeze.json").read_text())
+    case = parse({**CAPSULE_CASE, "solver": {"name": "analytical"}})
+    r, stress = case.radius, case.modulus * case.thickness / case.radius
+    force_scale = resolve(case).force_scale_N
+    assert force_scale == pytest.approx(3e3 * math.pi * r**2, rel=1e-15)
+    states = stood_in([f / force_scale for f in case.loads])
+    for row, state, force in zip(result["states"], states, case.loads, strict=True):
+        assert row["force_N"] == force
+        assert row["pressure_Pa"] == pytest.approx(state.pressure * stress, rel=1e-14)
+        assert row["gap_m"] == pytest.approx(2.0 * state.height * r, rel=1e-14)
+        assert row["height_m"] == pytest.approx(state.height * r, rel=1e-14)
+        assert row["radius_equator_m"] == pytest.approx(state.extra["radius_equator"] * r, rel=1e-14)
+        assert row["volume_m3"] == pytest.approx(state.volume * r**3, rel=1e-14)
+        assert row["contact_radius_deformed_m"] == pytest.approx(state.contact_radius_deformed * r, rel=1e-14)
+        for key in ("geometry", "stretch_pole", "radius_equator", "force_ETR", "pressure_ratio", "contact_area"):
+            assert row[key] == state.scalars()[key], key
+        assert "volume_lower_m3" not in row
+    assert result["inflated"]["gap_m"] == pytest.approx(2.0 * capsulestates.STAND_IN_STRETCH * r, rel=1e-14)
+    assert result["case"]["geometry"] == "capsule"
+    with (tmp_path / "out" / "squeeze.csv").open() as f:
+        header = next(csv.reader(f))
+    assert all(column(name) for name in header)
+    assert {"gap_m", "radius_equator_m", "force_ETR"} <= set(header)
+
+
+def test_the_example_capsule_runs_by_the_shooting_solver(tmp_path, capsys):
+    """Exact answer: ``pocket run --example capsule`` writes, for each load, the state of the shooting solver's
+    Python API at the case's Phat_I and Fhat with the capsule, in SI (P = Phat E T / R, gap 2 H R)."""
+    if not _poses_capsule():
+        pytest.skip("the shooting solver does not pose the capsule yet")
+    assert main(["run", "--example", "capsule", "--out", str(tmp_path)]) == 0
+    result = json.loads((tmp_path / "example_capsule.json").read_text())
+    pocket = resolve(capsule_example())
+    forces = [row["force"] for row in result["states"]]
+    states = shooting.compression_curve(pocket.material, pocket.pressure_initial, forces, geometry="capsule")
+    for row, state in zip(result["states"], states, strict=True):
+        assert row["pressure_Pa"] == pytest.approx(state.pressure * pocket.pressure_scale_Pa, rel=1e-9)
+        assert row["gap_m"] == pytest.approx(2.0 * state.height * pocket.case.radius, rel=1e-9)
+        assert row["stretch_pole"] == pytest.approx(state.extra["stretch_pole"], rel=1e-9)
+
+
+def _poses_capsule() -> bool:
+    """Whether the shooting solver poses the capsule (else it refuses it in one line)."""
+    try:
+        shooting.inflate(0.1, 0.1, geometry="capsule")
+    except InputError:
+        return False
+    return True
