@@ -554,8 +554,8 @@ def capsule_example() -> Case:
     --------
     >>> from pocket.apps.cases import capsule_example
     >>> case = capsule_example()
-    >>> print(case.geometry.name, case.radius, case.thickness, case.radius_key)
-    capsule 5e-05 5e-07 capsule.radius
+    >>> print(case.geometry.name, case.as_given("capsule.radius"), case.as_given("sheet.thickness"), case.radius_key)
+    capsule 50 um 0.5 um capsule.radius
     >>> print(round(case.initial[1] * case.radius / (case.modulus * case.thickness), 12))
     0.1
     """
