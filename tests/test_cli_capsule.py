@@ -210,3 +210,19 @@ def test_compress_json_is_the_finite_element_capsules(capsys):
     row = json.loads(out)
     for key in READ:
         assert float(row[key]).hex() == float(state.scalars()[key]).hex(), key
+
+
+def test_plate_gap_control_of_a_capsule_is_served_or_refused_in_one_line(capsys):
+    """Exact answers: ``--height`` with a capsule (each plate's distance from the equatorial plane) is either
+    served, the state's plate at that height to the solver's tolerance, or refused in one line (exit 2) by a
+    solver that does not pose it."""
+    status, out, err = run(capsys, "compress", "--geometry", "capsule", "--alpha", "0.1", "--pressure", "0.3",
+                           "--height", "1.05", "--json")
+    if status == 2:
+        assert out == ""
+        assert err.count("\n") == 1
+        return
+    assert status == 0, err
+    row = json.loads(out)
+    assert row["geometry"] == "capsule"
+    assert row["height"] == pytest.approx(1.05, rel=1e-8)  # the solver's tolerance on the height it is held at
