@@ -52,8 +52,8 @@ import math
 import numpy as np
 
 from pocket.core.errors import InputError, OutOfRangeError, PocketError
-from pocket.core.inputs import check_count, check_finite, quote
 from pocket.core.geometries import DISC, Symmetry
+from pocket.core.inputs import check_count, check_finite, quote
 from pocket.core.units import quantity, written_like
 
 from .forcerange import check_force
