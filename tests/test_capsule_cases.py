@@ -167,3 +167,22 @@ def _poses_capsule() -> bool:
     except InputError:
         return False
     return True
+
+
+def test_a_capsule_given_by_a_height_below_its_radius_is_out_of_range(stand_in):
+    """Exact answer: a capsule's pole is at its radius R above the equator with no pressure (lambda = 1) and rises
+    with it, so an initial height below R is reached by no inflation: one OutOfRangeError quoting the height as
+    given, before any inflation; a height of exactly R is Phat_I = 0, whose forces have no Fhat: one line."""
+    from pocket.core.errors import OutOfRangeError
+
+    case = parse({**CAPSULE_CASE, "initial": {"height": "40 um"}, "solver": {"name": "analytical"}})
+    with pytest.raises(OutOfRangeError, match=r"^initial.height = '40 um': no inflated state of the model's first "
+                                              r"branch is that low \(initial height H0/R = 0.8 is below the "
+                                              r"undeformed capsule's \(1\)"):
+        resolve(case)
+    assert stand_in == []
+    at_rest = parse({**CAPSULE_CASE, "initial": {"height": "50 um"}, "solver": {"name": "analytical"}})
+    assert resolve(at_rest).pressure_initial == 0.0
+    with pytest.raises(InputError, match=r"^initial.height = '50 um' gives P_I = 0 \(the unstressed capsule\), but a "
+                                         r"load's Fhat = F / \(P_I pi R\^2\) needs P_I > 0$"):
+        solved(at_rest)

@@ -188,8 +188,9 @@ def resolve(case: Case) -> Pocket:
         try:
             return Pocket(case, pressure_for_height(solver, unit.material, value / case.radius, **options))
         except OutOfRangeError as err:
+            low = case.geometry != DISC and value < case.radius  # a capsule's pole is at R with no pressure
             raise OutOfRangeError(f"initial.height = {given}: no inflated state of the model's first branch is "
-                                  f"that high ({err})") from None
+                                  f"that {'low' if low else 'high'} ({err})") from None
     volume = value / case.radius**3
     purpose = f"initial.volume = {given}"
     phat = entry(solver, "inflate_volume", purpose)(unit.material, volume, **options).pressure
@@ -253,6 +254,10 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     """
     case = pocket.case
     out: list[float | OutOfRangeError] = []
+    if pocket.pressure_initial == 0.0:  # a capsule given by its radius as its initial height
+        key = f"initial.{case.initial[0]}"
+        raise InputError(f"{key} = {quote(case.as_given(key))} gives P_I = 0 (the unstressed capsule), but a load's "
+                         "Fhat = F / (P_I pi R^2) needs P_I > 0")
     if case.load_kind == "forces":
         for index, force in enumerate(case.loads):
             key, given = f"loads.forces[{index}]", case.as_given(f"loads.forces[{index}]")
