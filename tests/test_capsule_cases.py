@@ -144,6 +144,7 @@ def test_run_writes_the_capsules_results_in_si(tmp_path, capsys, stand_in):
     assert {"gap_m", "radius_equator_m", "force_ETR"} <= set(header)
 
 
+@pytest.mark.slow  # 2.5 s: the end of the capsule's range (checked for each force load) is a second of solves
 def test_the_example_capsule_runs_by_the_shooting_solver(tmp_path, capsys):
     """Exact answer: ``pocket run --example capsule`` writes, for each load, the state of the shooting solver's
     Python API at the case's Phat_I and Fhat with the capsule, in SI (P = Phat E T / R, gap 2 H R)."""
@@ -186,3 +187,29 @@ def test_a_capsule_given_by_a_height_below_its_radius_is_out_of_range(stand_in):
     with pytest.raises(InputError, match=r"^initial.height = '50 um' gives P_I = 0 \(the unstressed capsule\), but a "
                                          r"load's Fhat = F / \(P_I pi R\^2\) needs P_I > 0$"):
         solved(at_rest)
+
+
+def test_a_capsules_sensitivity_at_rest_is_the_limit_of_its_pressure_force_slopes():
+    """Exact answer: by reciprocity a capsule's dP/dF at rest is twice (dH0/dP) / (dV0/dP) (two plates, each
+    descending by dH, close the gap by 2 dH); it is the limit of the slopes at the start of its pressure-force curve
+    from compressions, the one-sided second-order differences (-3 q(0) + 4 q(h) - q(2 h)) / (2 h). The capsule's
+    small-force law is not analytic at F = 0 (the dent's corrections go like (c/l)^2 ln(l/c) with c^2 = Fhat,
+    section 12, which puts a term of order F^2 ln F in P), so those differences converge at first order in h (up to
+    ln h), not second: their errors keep one sign and shrink by more than 5 per decade of h (10 at first order,
+    less only by the ratio of the logs), and the last is below 1e-3."""
+    from pocket.apps.sense import sensitivity_at_rest
+
+    if not _poses_capsule():
+        pytest.skip("the shooting solver does not pose the capsule yet")
+    pocket = resolve(capsule_example())
+    at_rest = sensitivity_at_rest(pocket)
+    kpa_per_n = pocket.pressure_initial_Pa / pocket.force_scale_N / 1e3  # d(P/P_I)/dFhat -> dP/dF in kPa/N
+    errors = []
+    for h in (1e-3, 1e-4, 1e-5):
+        low, high = shooting.compression_curve(pocket.material, pocket.pressure_initial, [h, 2 * h],
+                                               geometry="capsule")
+        slope = (-3.0 + 4.0 * low.pressure_ratio - high.pressure_ratio) / (2.0 * h) * kpa_per_n
+        errors.append(slope / at_rest - 1.0)
+    assert all(e > 0 for e in errors), errors
+    assert errors[0] > 5 * errors[1] > 25 * errors[2], errors
+    assert errors[2] < 1e-3, errors
