@@ -8,8 +8,8 @@ the free part of the sheet reaches the clamp plane``. The end is the solver's ow
 the same membrane model as the shooting (to ~1e-9 at its default mesh), is given the
 shooting's, so that both quote the same end. At the clamp-plane end the plate carries
 all of P pi R^2, so the deformed contact area is pi R^2 (``shooting.plateend``); an end
-with less is a force maximum of the branch. A capsule has no clamp plane: its range ends at a force maximum
-or where the rubber reaches its stretch limit.
+with less is a force maximum of the branch. A capsule has no clamp plane: its range ends where the patch under
+the plate goes slack (the pole's tension falls to 0), if it does.
 """
 
 from __future__ import annotations
@@ -51,7 +51,7 @@ def check_force(pocket, key: str, given, force: float) -> float:
         return force
     at_end = entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, end, **options)
     if at_end.geometry != DISC:  # no clamp plane: the plates are infinite and the equator is free
-        reason = "the force has a maximum, or the rubber reaches its stretch limit"
+        reason = "there the patch under the plate goes slack, its tension falling to 0 at the pole"
     else:
         reason = CLAMP_PLANE if abs(at_end.contact_area - 1.0) < _FULL_CONTACT else "the force has a maximum"
     raise beyond_range(f"{key} = {quote(given)} (Fhat = {force:.10g})",
