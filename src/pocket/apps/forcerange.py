@@ -51,7 +51,7 @@ def check_force(pocket, key: str, given, force: float) -> float:
         return force
     at_end = entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, end, **options)
     if at_end.geometry != DISC:  # no clamp plane: the plates are infinite and the equator is free
-        reason = "there the patch under the plate goes slack, its tension falling to 0 at the pole"
+        reason = "the patch under the plate goes slack, its tension falling to 0 at the pole"
     else:
         reason = CLAMP_PLANE if abs(at_end.contact_area - 1.0) < _FULL_CONTACT else "the force has a maximum"
     raise beyond_range(f"{key} = {quote(given)} (Fhat = {force:.10g})",
