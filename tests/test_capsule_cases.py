@@ -239,3 +239,20 @@ def test_a_force_past_a_capsules_range_is_listed_with_its_reason():
     assert missed["warnings"][0].startswith(f"loads.forces[1] = '12 uN' (Fhat = {fhat:.10g})")
     assert missed["warnings"][0].endswith(f"(Fhat = {end:.10g}): there the patch under the plate goes slack, its "
                                           "tension falling to 0 at the pole")
+
+
+@pytest.mark.slow  # 1.4 s: the search for the range's end, then the bracket's solves
+def test_the_force_at_a_capsules_pressure_is_found_where_its_range_has_no_end():
+    """Exact answer: a liquid-filled capsule's range has no end (``range_end`` is inf), and the force at which its
+    pressure ratio reaches that of a state solved at Fhat = 0.5 is found again, 0.5, to the root finder's and the
+    solver's resolution (1e-8), by bracketing the force as for a solver without an end."""
+    from pocket.apps.inverse import force_where
+    from pocket.apps.solvers import SOLVERS
+
+    if not _poses_capsule():
+        pytest.skip("the shooting solver does not pose the capsule yet")
+    assert shooting.range_end(0.1, 0.3, geometry="capsule") == math.inf
+    target = shooting.compress(0.1, 0.3, 0.5, geometry="capsule").pressure_ratio
+    found = force_where(SOLVERS["shooting"], 0.1, 0.3, "pressure_ratio", target, increasing=True,
+                        geometry="capsule")
+    assert found == pytest.approx(0.5, rel=1e-8)

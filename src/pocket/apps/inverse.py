@@ -122,7 +122,7 @@ def force_where(solver: Solver, material, pressure_initial, key, target, *, incr
         return sign * (value(f) - target) if f > 0.0 else sign * (start - target)
 
     end = _own_end(solver, material, pressure_initial, options)
-    if end is None:
+    if end is None or math.isinf(end):  # no end known, or none at all (a capsule pressed by a liquid)
         lo, hi = _bracket(miss, 0.1, f"{key} = {target:.10g}", value)
     elif miss(end) < 0.0:
         raise OutOfRangeError(f"{key} = {target:.10g} is beyond the model's range (it reaches {value(end):.10g} "
