@@ -44,11 +44,21 @@ from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Geometry
 from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
-from pocket.core.inputs import check_forces, check_positive, check_volume, quote
+from pocket.core.inputs import check_forces, check_non_negative, check_positive, check_volume, quote
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState
 
-from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results, wrapping
+from . import (
+    DEFAULT_ELEMENTS,
+    DEFAULT_ELEMENTS_P1,
+    SOLVER,
+    capsule,
+    capsulestates,
+    curves,
+    inflation,
+    results,
+    wrapping,
+)
 from .gas import sealed
 from .model import FITTED, PENALTY, Control, Model, discretize
 from .newton import Tolerances
@@ -84,7 +94,9 @@ MIN_LENGTH = 1e-10
 CONTACTS: dict[type[Indenter], tuple[tuple[str, ...], bool]] = {
     Plate: ((FITTED, PENALTY), False), Sphere: ((FITTED, PENALTY), True), Profile: ((FITTED, PENALTY), True)}
 #: reference surface -> how the model poses it (``pocket.core.geometries``, ``model``)
-GEOMETRIES = {"pocket": "the meridian meshed in r = S on [0, 1], clamped at its end"}
+GEOMETRIES = {"pocket": "the meridian meshed in r = S on [0, 1], clamped at its end",
+              "capsule": "the upper half's meridian meshed in r = 2 S / pi on [0, 1], its end on the equator's "
+                         "plane of symmetry (``capsule``)"}
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
@@ -157,6 +169,11 @@ def _nodes(mesh, elements, order) -> np.ndarray:
 def _model(material, mesh, elements, order, penalty, geometry: Geometry = geometries.DISC) -> Model:
     order = SOLVER.check_option("order", order)
     return discretize(material, _nodes(mesh, elements, order), order, penalty, geometry)
+
+
+def _builder(geometry: Geometry):
+    """The module that builds the compressed states of ``geometry``: ``results``, or ``capsulestates``."""
+    return capsulestates if geometry is geometries.CAPSULE else results
 
 
 def _tolerances(tol) -> Tolerances:
@@ -233,6 +250,10 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     """
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
+    if geometry is geometries.CAPSULE:
+        pressure = check_non_negative("pressure", pressure)
+        y, iterations = capsule.inflate(model, pressure, _tolerances(tol))
+        return capsulestates.inflated(model, y, iterations, pressure=pressure)
     pressure = check_positive("pressure", pressure)
     y, iterations = inflation.inflated_at(model, pressure, _tolerances(tol))
     return results.inflated(model, y, iterations, pressure=pressure)
@@ -277,6 +298,9 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
     volume = check_volume("volume", volume)
+    if geometry is geometries.CAPSULE:
+        y, iterations = capsule.inflate_volume(model, volume, _tolerances(tol))
+        return capsulestates.inflated(model, y, iterations, volume=volume)
     y, iterations = inflation.to_volume(model, volume, _tolerances(tol))
     return results.inflated(model, y, iterations, volume=volume)
 
@@ -287,16 +311,32 @@ def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements
     volume row's ``Control``) and whether the indenter is curved (``CONTACTS``)."""
     indenter, (methods, curved) = posed(CONTACTS, "fem", indenter)
     contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
+    if geometry is geometries.CAPSULE:
+        _capsule_contact(indenter, contact)
     model = _model(material, mesh, elements, order, penalty, geometry)
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)
+    if geometry is geometries.CAPSULE:  # the upper half's volume is the volume row's (``capsule``)
+        y_i, iterations = capsule.inflate(model, p_i, tol)
+        state = capsulestates.inflated(model, y_i, iterations, pressure=p_i)
+        fill = Control(volume=0.5 * state.volume, gas=sealed(fluid, p_i), indenter=indenter)
+        return model, contact, augmented, tol, y_i, state, fill, curved
     y_i, iterations = inflation.inflated_at(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
     fill = Control(volume=state.volume, gas=sealed(fluid, p_i), indenter=indenter)
     if contact == PENALTY and curved:
         model = replace(model, obstacle=surface(indenter))
     return model, contact, augmented, tol, y_i, state, fill, curved
+
+
+def _capsule_contact(indenter: Indenter, contact: str) -> None:
+    """InputError unless the capsule is pressed by the flat plates with the edge-fitted contact."""
+    if not isinstance(indenter, Plate):
+        raise InputError(f"the capsule is pressed between two flat plates: the {indenter.name} indenter does not "
+                         "apply to it")
+    if contact != FITTED:
+        raise InputError(f"contact = {contact!r} does not apply to the capsule (its method: {FITTED})")
 
 
 def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
@@ -364,7 +404,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     if curved and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
-        return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress)
+        return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress, _builder(geometry))
     return curves.penalty_curve(model, y_i, inflated, fill, forces, tolerances, augmented, progress)
 
 
@@ -472,11 +512,11 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     if height > inflated.height:
         raise above_the_pocket(height, inflated.height)
     if height == inflated.height:
-        return results.uncompressed(inflated, fill, contact)
+        return _builder(geometry).uncompressed(inflated, fill, contact)
     if curved and contact == FITTED:
         return wrapping.at_height(model, y_i, inflated, fill, height, tolerances)
     if contact == FITTED:
-        return curves.fitted_height(model, y_i, inflated, fill, height, tolerances)
+        return curves.fitted_height(model, y_i, inflated, fill, height, tolerances, _builder(geometry))
     return curves.penalty_height(model, y_i, inflated, fill, height, tolerances, augmented)
 
 
