@@ -209,9 +209,11 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
         alpha = C2/C1 (``as_material``).
     pressure : float
         Phat = P R / (E T) > 0 (E = 3 mu_0 the rubber's small-strain Young's modulus, T its thickness, R the
-        clamp radius).
+        clamp radius, or the capsule's radius); >= 0 for the capsule (at 0, its unstressed sphere).
     geometry : Geometry or str, optional
-        The reference surface: None (the flat clamped disc) or one of ``GEOMETRIES``.
+        The reference surface: None (the flat clamped disc) or one of ``GEOMETRIES`` (``"capsule"``: the closed
+        sphere, its upper half solved; its states report the whole capsule's volume, the pole's or the plate's
+        height above the equatorial plane, and ``extra`` keys ``geometry`` and ``radius_equator``).
     mesh : numpy.ndarray or str or path, optional
         The nodes of [0, 1] (units R, shape (n+1,)) or a mesh file (any meshio format); None for the default mesh
         (``default_mesh``).
@@ -247,6 +249,12 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     H0/R = 0.4939
     >>> print(abs(state.height - shooting.inflate(47 / 160, 0.31).height) < 1e-5)
     True
+
+    The capsule inflates to a sphere of uniform stretch: its pole and its equator are as far from its centre,
+
+    >>> ball = fem.inflate(47 / 160, 0.31, geometry="capsule", elements=16)
+    >>> print(f"{ball.height:.4f} {ball.extra['radius_equator']:.4f}")
+    1.1196 1.1196
     """
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
@@ -358,7 +366,8 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
         None or ``"liquid"`` (fixed volume), or a gas (``pocket.core.fluids.gas``) sealed at Phat_I, its
         ambient pressure as Phat_atm = P_atm R / (E T).
     indenter : Indenter, optional
-        None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``Sphere``, ``Profile``), lengths in units of R.
+        None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``Sphere``, ``Profile``), lengths in units of R;
+        the capsule is pressed between two flat plates only, with the fitted contact.
     geometry, mesh, elements, order, tol
         As for ``inflate``.
     progress : callable, optional
@@ -458,6 +467,12 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
     >>> rough = fem.compress(47 / 160, 0.31, 0.19, elements=16, contact="penalty")
     >>> print(abs(rough.pressure_ratio / state.pressure_ratio - 1) < 1e-2)
     True
+
+    A capsule between two plates, each pressing with Fhat: F = P A_c on each, its edge-fitted contact exact,
+
+    >>> squeezed = fem.compress(47 / 160, 0.31, 0.19, geometry="capsule", elements=16)
+    >>> print(abs(squeezed.pressure_ratio * squeezed.contact_area / 0.19 - 1) < 1e-12, squeezed.extra["geometry"])
+    True capsule
     """
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
                              **options)[0]

@@ -3,9 +3,12 @@ r"""The discrete model: unknowns, equations and their bordered tangent, for the 
 Unknowns y = [U, s]: U all 2 (p n + 1) nodal values of x = (rho, eta) (node j
 holds U[2j] = rho, U[2j + 1] = eta), s the scalar unknowns. Prescribed dofs
 keep their values (rho(0) = 0, and rho(1), eta(1) those of the reference surface's clamp,
-``Model.clamp``: 1 and 0); their rows are the identity in the tangent and zero in the residual.
+``Model.clamp``: 1 and 0; or eta(1) alone where the meridian ends on a plane of symmetry, ``Model.ends``);
+their rows are the identity in the tangent and zero in the residual.
 The reference surface is the flat clamped disc (``pocket.core.geometries``, ``api.GEOMETRIES``), whose
-arc length is the reference radius: the mesh's coordinate r is both.
+arc length is the reference radius: the mesh's coordinate r is both; or the closed capsule's upper half, meshed
+in r = 2 S / pi (``kernel``, ``capsule``): everything below holds for both, with the volume the upper half's and
+the plate's force the one on each plate.
 
 ``FREE`` (no plate, inflation), s = [P]: the membrane rows R(U; P) = 0 and one
 control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
@@ -24,6 +27,7 @@ the plate pressure (``kernel``); control rows V / V_I - 1 and h - h* (plate
 height) or (F(U, h) - F*) / F* (plate force F = 2 pi int p_N r dr).
 
 ``FITTED`` (edge-fitted mesh, exact contact), s = [P, h, a]. The first element
+(the first ``Model.flat`` elements: a quarter of the mesh on the capsule, whose flat zone is not uniform)
 is the contact zone [0, a] (``geometry``): its eta dofs (the set C) are tied to
 the plate, U_j = h, and its rows leave the system. The plate is a rigid body:
 with the force potential F h, stationarity in h is sum_C R_j + F = 0, so the
@@ -34,7 +38,7 @@ no line force at the edge: vertical equilibrium of the flat disc of deformed
 radius rho(a) gives F_plate = P pi rho(a)^2 + 2 pi a T_1 lambda_2 sin(psi)(a+),
 so the line force vanishes iff
 
-    T(y) = sum_C R_j + pi P U_E^2 = 0,      U_E = rho(a) (the dof of vertex 1).
+    T(y) = sum_C R_j + pi P U_E^2 = 0,      U_E = rho(a) (the dof of vertex ``flat``, ``edge``).
 
 Unlike the energy's derivative in a, which vanishes quadratically there (a
 configurational force ~ (line force)^2), T has a simple root. Rows:
