@@ -85,7 +85,7 @@ def _common(model: Model, y: np.ndarray, mode: str, state, where: str, half: flo
                    float(profile.stretch_2.min()))
     if smallest <= 0.0:
         results._fail(where, f"a stretch {smallest:.3g} <= 0 (the meridian degenerate or through the axis)")
-    if profile.eta[-1] != model.geometry.end.height:
+    if profile.eta[-1] != model.ends()[model.dofs - 1]:
         results._fail(where, f"eta at the equator = {profile.eta[-1]!r}, not on the equatorial plane")
     if abs(half / target - 1.0) > results.CONSISTENCY:
         results._fail(where, f"volume {2 * half!r} against its target {2 * target!r}")
