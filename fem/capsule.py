@@ -28,12 +28,12 @@ tangent contact at the edge; the states are ``capsulestates``'.
 The end of the range (``slack_end``). Nothing like the pocket's clamp ends it; but as the plates close, the
 contact patch's stretch at the pole can fall to that of the unstressed rubber, lambda_0 = 1 / lambda_p, where its
 tension vanishes (T_1 = T_2 = 0): beyond, the membrane would wrinkle under the plate, outside membrane theory.
-Between each state and the one below it (the first from a fifth of its sigma = sqrt(F)) the pole's stretch is
-watched in steps of 5 % in sigma (``within_range``: it may dip below 1 / lambda_p and rise again, as a prestretched
-capsule's does); where it has fallen to 1 / lambda_p the force is located by Brent's method between the last two
-steps (each state solved from the nearer known ones; to 1e-12 of sigma, so that the end quoted is the same, to its
-ten digits, whatever force was asked), and the force asked is ``OutOfRangeError`` naming it. A dip narrower than
-a step can be missed.
+Between a state whose pole's stretch is within 2 % of 1 / lambda_p and the one below it (the first from a fifth
+of its sigma = sqrt(F)) the pole's stretch is watched in steps of 5 % in sigma (``within_range``: it may dip below
+1 / lambda_p and rise again, as a prestretched capsule's does); where it has fallen to 1 / lambda_p the force is
+located by Brent's method between the last two steps (each state solved from the nearer known ones; to 1e-12 of
+sigma, so that the end quoted is the same, to its ten digits, whatever force was asked), and the force asked is
+``OutOfRangeError`` naming it. A dip narrower than a step can be missed.
 """
 
 from __future__ import annotations
@@ -75,6 +75,10 @@ END_XTOL = 1e-12
 SAMPLE = 0.05
 #: where that watch starts, relative to the first state's sigma (the pole's stretch falls from the inflated one)
 FIRST = 0.2
+#: how near the unstressed stretch (lambda_0 - 1 / lambda_p) a state's pole must be for the watch to run: the
+#: pole's stretch moves by a few per cent over a whole range (measured 3.5 % from Fhat 0 to 3 for a liquid and a
+#: gas, prestretched or not), so a dip to the end between two states farther from it is not expected
+WATCH = 0.02
 
 
 def sphere_pressure(law: Law, stretch) -> np.ndarray:
@@ -178,7 +182,9 @@ def within_range(model: Model, y_i: np.ndarray, fill: Control, tol: Tolerances, 
     docstring), quoting the end as Fhat (the force over ``unit`` = pi Phat_I); ``history``: the (sigma, y) of the
     states solved before it. The pole's stretch is watched from the nearest state below ``y`` (or, with none, one at
     ``FIRST`` of its sigma, solved from the inflated ``y_i``) in steps of ``SAMPLE`` in sigma."""
-    top = _sigma(model, y)
+    top, slack = _sigma(model, y), _slack(model, y)
+    if slack > WATCH:
+        return
     lower = [item for item in history if item[0] < top]
     if lower:
         start = max(lower, key=lambda item: item[0])

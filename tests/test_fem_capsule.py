@@ -263,3 +263,15 @@ def test_the_range_ends_where_the_patch_goes_slack_at_the_pole():
     below = fem.compress(0.2, 0.1, 0.99 * ends[0], geometry="capsule", fluid=fluid)
     assert below.extra["stretch_pole"] > 1.0
     assert not below.wrinkled
+
+
+def test_volume_and_height_control_invert_pressure_and_force_control():
+    """Exact answers: the capsule inflated to the volume of the one inflated at Phat = 0.3 is at Phat = 0.3, and the
+    plates brought to the height of the capsule pressed by Fhat = 0.7 press with 0.7 (to Newton's tolerance, 1e-9);
+    a volume past a Gent rubber's locking (Jm = 3: 2 l^2 + l^-4 - 3 = 3 at l = 1.72) is OutOfRangeError."""
+    inflated = fem.inflate(0.2, 0.3, geometry="capsule")
+    assert abs(fem.inflate_volume(0.2, inflated.volume, geometry="capsule").pressure / 0.3 - 1) < 1e-9
+    pressed = fem.compress(0.2, 0.3, 0.7, geometry="capsule")
+    assert abs(fem.compress_height(0.2, 0.3, pressed.height, geometry="capsule").force / 0.7 - 1) < 1e-9
+    with pytest.raises(OutOfRangeError, match=r"is not reached before the rubber locks"):
+        fem.inflate_volume(LAWS["gent"], 4.0 / 3.0 * math.pi * 1.8**3, geometry="capsule")
