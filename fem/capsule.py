@@ -176,6 +176,19 @@ def slack_end(path: _Path, below: float, above: float) -> float:
                         rtol=END_XTOL)) ** 2
 
 
+def _taut(model: Model, y_i: np.ndarray, fill: Control, tol: Tolerances, sigma: float) -> tuple[float, np.ndarray]:
+    """(sigma, the FITTED state there) at ``sigma`` = sqrt(F), or at a smaller one by factors ``FIRST`` where the
+    patch is slack there (as F -> 0 the pole's stretch tends to the inflated sphere's, above 1 / lambda_p)."""
+    for _ in range(8):
+        first, _ = fitted.first_contact(model, y_i, fill, min(fitted.A_FIRST, 0.5 * sigma), tol)
+        low, _ = fitted.force_path(model, first, fill, sigma**2, tol)
+        if _slack(model, low) > 0.0:
+            return _sigma(model, low), low
+        sigma *= FIRST
+    raise ConvergenceError(f"the capsule's contact patch is slack at the pole down to the force F/(E T R) = "
+                           f"{sigma**2 / FIRST**2:.3g}: no taut state to locate the end of its range from")
+
+
 def within_range(model: Model, y_i: np.ndarray, fill: Control, tol: Tolerances, unit: float, y: np.ndarray,
                  history: list, asked: str) -> None:
     """OutOfRangeError if the FITTED state ``y`` (asked as ``asked``) lies past the end of the range (module
@@ -186,12 +199,7 @@ def within_range(model: Model, y_i: np.ndarray, fill: Control, tol: Tolerances, 
     if slack > WATCH:
         return
     lower = [item for item in history if item[0] < top]
-    if lower:
-        start = max(lower, key=lambda item: item[0])
-    else:
-        first, _ = fitted.first_contact(model, y_i, fill, min(fitted.A_FIRST, 0.5 * FIRST * top), tol)
-        low, _ = fitted.force_path(model, first, fill, (FIRST * top) ** 2, tol)
-        start = (_sigma(model, low), low)
+    start = max(lower, key=lambda item: item[0]) if lower else _taut(model, y_i, fill, tol, FIRST * top)
     path = _Path(model, fill, tol, [start, (top, y)])
     count = int(np.ceil(np.log(top / start[0]) / np.log1p(SAMPLE)))
     previous = start[0]
