@@ -97,27 +97,29 @@ def _modulus(setup: Setup, test) -> None:
                          "(the pressures', the heights', R's or T's)")
 
 
-def _uncertainties(setup: Setup, spell: Callable[[str], str]) -> None:
+def _uncertainties(setup: Setup, spell: Callable[[str], str], quantities: dict) -> None:
     for name, sigma in setup.sigma.items():
         data = [t.responses[name] for t in setup.tests if name in t.responses]
         top = max((float(np.nanmax(np.abs(d))) for d in data), default=math.inf)
         if sigma > top:
-            unit = KINDS[QUANTITIES[name]][1].replace("**3", "^3")
+            unit = KINDS[quantities[name]][1].replace("**3", "^3")
             raise InputError(f"{spell(name)}: the uncertainty {_plain(sigma, unit)} is more than every {name} "
                              f"datum (the largest: {_plain(top, unit)}): no measurement is that uncertain, so its "
                              "unit is wrong")
 
 
-def check(setup: Setup, spell: Callable[[str], str] = lambda name: f"--sigma {name}", slack: bool = True) -> None:
+def check(setup: Setup, spell: Callable[[str], str] = lambda name: f"--sigma {name}", slack: bool = True,
+          quantities: dict = QUANTITIES) -> None:
     """Refuse ``setup`` where its data beside the clamp radius, the thickness and the stated uncertainties
     can only be in a wrong unit (module docstring): an InputError naming the file and column, or the
     uncertainty (a column's, named by ``spell(column)``). ``slack``: the sheet is fitted without prestretch
-    (else the modulus is not checked)."""
+    (else the modulus is not checked); ``quantities``: the kind of each column (a capsule's tests have their
+    own, ``pocket.apps.fit.capsuledata``)."""
     for test in setup.tests:
         _columns(test, setup.radius)
     for test in setup.tests if slack else ():
         _modulus(setup, test)
-    _uncertainties(setup, spell)
+    _uncertainties(setup, spell, quantities)
 
 
 def modulus_warnings(setup: Setup, mu0: float) -> list[str]:

@@ -44,7 +44,8 @@ _LOWER = {("mooney-rivlin", "c1"): 0.0, ("neo-hookean", "mu"): 0.0, ("yeoh", "c1
 
 @dataclasses.dataclass(frozen=True)
 class Key:
-    """A fitted quantity: its ``name`` (a case-file key), ``unit`` ("stress" or "dimensionless"),
+    """A fitted quantity: its ``name`` (a case-file key), ``unit`` ("stress", "dimensionless", or "pressure": a
+    load in Pa whatever the thickness, a capsule's initial pressure, ``pocket.apps.fit.capsuletest``),
     ``lower`` and ``upper`` bounds (stresses in the material's unit: only 0 and inf are used),
     ``get(material) -> float`` and ``put(material, value) -> Material``; ``unknown`` is the (get, put)
     of the coordinate the fit moves it along (module docstring), None for the value itself."""

@@ -34,15 +34,8 @@ _SI = {"pressure": ("kPa", 1e-3), "height": ("mm", 1e3), "volume": ("mL", 1e6), 
 
 
 def _unit(fit: Fit, key: str) -> str:
-    law_unit = next(k.unit for k in _keys(fit) if k.name == key)
-    return ("Pa" if fit.setup.thickness else "N/m") if law_unit == "stress" else "1"
-
-
-def _keys(fit: Fit):
-    from .keys import keys
-
-    terms = len(fit.material["mu"]) if fit.material.law == "ogden" else 1
-    return keys(fit.material.law, terms)
+    unit = next(k.unit for k in fit.law_keys() if k.name == key)
+    return ("Pa" if fit.setup.thickness else "N/m") if unit == "stress" else "Pa" if unit == "pressure" else "1"
 
 
 def summary(fit: Fit) -> dict:

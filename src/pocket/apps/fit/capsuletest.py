@@ -1,0 +1,228 @@
+r"""Identify a capsule's wall from its micromanipulation test: least squares on the capsule between two plates.
+
+The unknowns are the law's keys (``pocket.apps.fit.capsulemodel.capsule_keys``) and, if asked, the initial
+pressure P_I; the residuals are the gaps' (or displacements') in units of the diameter 2 R or of a stated
+uncertainty (``pocket.apps.fit.capsulemodel``). The search, the Jacobian, the statistics and the intervals are the
+clamped sheet's (``pocket.apps.fit.leastsquares.search``, ``pocket.apps.fit.stats``, ``pocket.apps.fit.intervals``),
+with each trial set a rubber and a P_I (``pocket.apps.fit.capsulemodel.Trial``).
+
+Scales. A stress is scaled by the start's mu_0, P_I by its given value (the start), a number by max(|value|, 1).
+
+Starts. A force-gap test gives no small-strain estimate of E T: at small force the plates press on the inflated
+membrane's tension N_0 = P_I lambda_I R / 2 and the displacement is F / (2 pi N_0) times a logarithm in which
+alone E T appears (docs/theory.md, section 12, the small-force law). So each of the law's start shapes is tried at
+E T = P_I R / Phat_I for each Phat_I of ``PRESSURES`` (the inflated capsule from slack to near the neo-Hookean
+pressure maximum, 0.413), P_I the given value, and the fit runs from the best (``search``).
+
+Separating P_I from E T. The same law says why they can be hard to tell apart: a test that stays at small
+deformation sees mainly P_I (the force scales with it), and E T through a logarithm, which a change of P_I can
+mimic. When P_I is fitted, the correlation of its estimate with mu_0's (the covariance of the keys mapped to
+mu_0 by the delta method, ``pocket.apps.fit.stats``) beyond ``pocket.apps.fit.stats.CORRELATED`` is a warning
+saying so.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+
+import numpy as np
+
+from pocket.core.errors import InputError
+
+from ..solvers import entry, record
+from .capsulemodel import INITIAL_PRESSURE, Trial, capsule_keys, predict, residuals
+from .keys import Key
+from .leastsquares import PROBED, Fit, Problem, free_keys, search
+from .model import Setup
+from .start import at_tensions
+from .stats import CORRELATED
+
+__all__ = ["PRESSURES", "CapsuleFit", "CapsuleProblem", "fit", "separation", "summary"]
+
+#: the Phat_I = P_I R / (E T) at which each start shape is tried (module docstring)
+PRESSURES = (0.01, 0.02, 0.05, 0.1, 0.2, 0.4)
+
+
+class CapsuleProblem(Problem):
+    """The residual function of a capsule's fit (``pocket.apps.fit.leastsquares.Problem``): its model and residuals
+    are ``pocket.apps.fit.capsulemodel``'s, its trial sets ``Trial``. Its residuals are lengths in units of 2 R
+    (or of a stated uncertainty), whose gradient is as small as the deformation is: the least squares stop on their
+    steps and their cost, not on the gradient's size (``gradient_test``)."""
+
+    gradient_test = False
+
+    def values(self, material) -> tuple[list, int]:
+        return predict(self.setup, material)
+
+    def compare(self, values: list) -> np.ndarray:
+        return residuals(self.setup, values)
+
+
+def _scaled(setup: Setup, trial: Trial, free: list[Key], count: dict) -> CapsuleProblem:
+    scales = np.array([abs(trial.mu0) if k.unit == "stress" else abs(k.coordinate(trial)) if k.unit == "pressure"
+                       else max(abs(k.coordinate(trial)), 1.0) for k in free])
+    return CapsuleProblem(setup, trial, free, scales, count)
+
+
+@dataclasses.dataclass(frozen=True)
+class CapsuleFit(Fit):
+    r"""A capsule's fit (``fit``): a ``pocket.apps.fit.leastsquares.Fit`` whose keys are a capsule's
+    (``pocket.apps.fit.capsulemodel.capsule_keys``), with the ``initial_pressure`` P_I in Pa (held or fitted);
+    its ``material`` is the fitted rubber (``fit`` shows one made).
+    """
+
+    initial_pressure: float
+
+    def law_keys(self) -> tuple[Key, ...]:
+        """All keys of a capsule's fit of this law (``pocket.apps.fit.capsulemodel.capsule_keys``)."""
+        return capsule_keys(self.material.law, len(self.material["mu"]) if self.material.law == "ogden" else 1)
+
+
+def fit(setup: Setup, law: str, pressure_initial: float, *, terms: int = 1, fixed: dict | None = None,
+        fit_pressure: bool = False) -> CapsuleFit:
+    r"""Fit a rubber law (and, if asked, the initial pressure) to a capsule's micromanipulation tests.
+
+    Parameters
+    ----------
+    setup : Setup
+        The capsule's tests (``pocket.apps.fit.capsuledata.read``), its radius R (m) and thickness T (m, or None:
+        stresses are fitted times T, in N/m), the solver.
+    law : str
+        The law (``pocket.core.materials.LAWS``).
+    pressure_initial : float
+        P_I in Pa, > 0: held, or the start of its fit.
+    terms : int, optional
+        Ogden's terms.
+    fixed : dict, optional
+        Law key -> value held (stresses in the setup's unit).
+    fit_pressure : bool, optional
+        Fit P_I too (key ``initial_pressure``).
+
+    Returns
+    -------
+    CapsuleFit
+
+    Raises
+    ------
+    InputError
+        For P_I not > 0, fewer data than unknowns + 1, an unknown key (before any solve).
+    ConvergenceError
+        If no start, or no result, has a state for every datum.
+
+    Examples
+    --------
+    A capsule's test made by the model (neo-Hookean, mu = 1 MPa, R = 50 um, T = 1 um, P_I = 1.2 kPa) is fitted
+    back (``tests/test_fit_capsule.py`` checks it to 1e-5):
+
+    >>> import dataclasses
+    >>> import numpy as np
+    >>> from pocket import shooting
+    >>> from pocket.apps.fit.capsuletest import fit
+    >>> from pocket.apps.fit.data import Dataset
+    >>> from pocket.apps.fit.model import Setup
+    >>> from pocket.core.materials import Material
+    >>> radius, thickness, pressure, mu = 50e-6, 1e-6, 1200.0, 1e6
+    >>> phat = pressure * radius / (3 * mu * thickness)
+    >>> forces = [0.5, 1.0, 2.0, 4.0]
+    >>> states = shooting.compression_curve(Material("neo-hookean", {"mu": 1.0}), phat, forces, geometry="capsule")
+    >>> gaps = np.array([2 * s.height * radius for s in states])
+    >>> test = Dataset("capsule", np.array(forces) * pressure * np.pi * radius**2, {"gap": gaps}, None, "model")
+    >>> result = fit(Setup((test,), radius, thickness), "neo-hookean", pressure)
+    >>> print(f"mu = {result.material['mu'] / 1e6:.5f} MPa")
+    mu = 1.00000 MPa
+    """
+    clock = time.perf_counter()
+    if not pressure_initial > 0.0 or not math.isfinite(pressure_initial):
+        raise InputError(f"initial pressure = {pressure_initial!r} Pa, but a capsule's fit needs P_I > 0")
+    all_keys = capsule_keys(law, terms)
+    fixed = dict(fixed or {})
+    if INITIAL_PRESSURE in fixed:
+        raise InputError(f"--fix {INITIAL_PRESSURE}: the initial pressure is given by --initial-pressure (and "
+                         "fitted with --fit-initial-pressure)")
+    start = {INITIAL_PRESSURE: pressure_initial} if fit_pressure else {}
+    if not fit_pressure:
+        fixed[INITIAL_PRESSURE] = pressure_initial
+    free = free_keys(setup, all_keys, fixed, start)
+    tensions = [pressure_initial * setup.radius / p for p in PRESSURES]
+    shapes = [[Trial(m, pressure_initial)] for m in at_tensions(setup, law, terms, tensions)]
+    result = search(setup, law, shapes, all_keys, free, fixed, start, law in PROBED, _scaled, clock)
+    trial = result.material
+    stats = result.statistics
+    warning = separation(trial, free, stats.covariance)
+    if warning:
+        stats = dataclasses.replace(stats, warnings=(*stats.warnings, warning))
+    fields = {f.name: getattr(result, f.name) for f in dataclasses.fields(result)}
+    return CapsuleFit(**{**fields, "material": trial.material, "statistics": stats},
+                      initial_pressure=trial.pressure_initial)
+
+
+def separation(trial: Trial, free: list[Key], covariance) -> str | None:
+    """The warning where the fitted P_I and mu_0 (of the fitted ``trial``, keys ``free`` with the keys'
+    ``covariance``) are correlated beyond ``CORRELATED`` (module docstring); None otherwise, or if P_I is held."""
+    names = [k.name for k in free]
+    if INITIAL_PRESSURE not in names:
+        return None
+    k = names.index(INITIAL_PRESSURE)
+    grad = np.zeros(len(free))
+    for j, key in enumerate(free):
+        if key.unit == "stress" or key.unknown is not None:
+            value = key.get(trial)
+            step = 1e-6 * max(abs(value), abs(trial.mu0) if key.unit == "stress" else 1.0)
+            grad[j] = (key.put(trial, value + step).mu0 - trial.mu0) / step
+    variance = float(grad @ covariance @ grad) * float(covariance[k, k])
+    if not variance > 0.0:
+        return None
+    r = float(grad @ covariance[:, k]) / math.sqrt(variance)
+    if abs(r) <= CORRELATED:
+        return None
+    return (f"the data do not separate the initial pressure from the wall's stiffness E T (their estimates are "
+            f"correlated, r = {r:+.4f}): at small deformation the plates press on the inflated wall's tension "
+            "P_I lambda_I R / 2, and E T shows only as the wall stretches further; compress further, or give a "
+            "measured P_I and hold it (--initial-pressure without --fit-initial-pressure)")
+
+
+def summary(result: CapsuleFit) -> dict:
+    r"""The capsule's fit as one JSON-ready dict: ``pocket.apps.fit.report.summary``'s keys, and ``capsule``: the
+    fitted capsule's geometry, P_I in Pa, Phat_I = P_I R / (E T), and its inflated stretch lambda_I with the gap
+    2 lambda_I R between the plates at first touch (one inflation by the fit's solver).
+
+    Parameters
+    ----------
+    result : CapsuleFit
+        The fit (``fit``).
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pocket import shooting
+    >>> from pocket.apps.fit.capsuletest import fit, summary
+    >>> from pocket.apps.fit.data import Dataset
+    >>> from pocket.apps.fit.model import Setup
+    >>> from pocket.core.materials import Material
+    >>> radius, thickness, pressure, mu = 50e-6, 1e-6, 1200.0, 1e6
+    >>> phat, forces = pressure * radius / (3 * mu * thickness), [0.5, 1.0, 2.0, 4.0]
+    >>> states = shooting.compression_curve(Material("neo-hookean", {"mu": 1.0}), phat, forces, geometry="capsule")
+    >>> gaps = np.array([2 * s.height * radius for s in states])
+    >>> test = Dataset("capsule", np.array(forces) * pressure * np.pi * radius**2, {"gap": gaps}, None, "model")
+    >>> out = summary(fit(Setup((test,), radius, thickness), "neo-hookean", pressure))
+    >>> print(round(out["parameters"]["mu"]["value"] / 1e6, 5), out["fixed"]["initial_pressure"])
+    1.0 {'value': 1200.0, 'unit': 'Pa'}
+    >>> print(round(out["capsule"]["gap_initial_m"] / (2 * radius), 6) == round(states[0].inflated.height, 6))
+    True
+    """
+    from .report import summary as report
+
+    setup = result.setup
+    out = report(result)
+    phat = result.initial_pressure * setup.radius / setup.tension(result.material)
+    inflate = entry(record(setup.solver), "inflate", "the fitted capsule's inflated state")
+    stretch = inflate(result.material.scaled(), phat, geometry="capsule", **setup.options).stretch_pole
+    out["capsule"] = {"geometry": "capsule", "initial_pressure_Pa": result.initial_pressure, "pressure_initial": phat,
+                      "stretch_initial": stretch, "gap_initial_m": 2.0 * stretch * setup.radius}
+    return out
