@@ -26,6 +26,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
+from typing import cast
 
 import numpy as np
 
@@ -148,7 +149,7 @@ def fit(setup: Setup, law: str, pressure_initial: float, *, terms: int = 1, fixe
     tensions = [pressure_initial * setup.radius / p for p in PRESSURES]
     shapes = [[Trial(m, pressure_initial)] for m in at_tensions(setup, law, terms, tensions)]
     result = search(setup, law, shapes, all_keys, free, fixed, start, law in PROBED, _scaled, clock)
-    trial = result.material
+    trial = cast(Trial, result.material)  # the search's trial set: a rubber and its P_I
     stats = result.statistics
     warning = separation(trial, free, stats.covariance)
     if warning:

@@ -45,7 +45,7 @@ from pocket.core.materials import Material
 
 from .checks import modulus_warnings
 from .intervals import intervals
-from .keys import PRESTRETCH, Key, key_named, keys
+from .keys import PRESTRETCH, Key, Subject, key_named, keys
 from .model import PENALTY, Setup, predict, residuals
 from .start import starts
 from .stats import Statistics, normal_inverse, statistics
@@ -142,18 +142,18 @@ class Problem:
     #: relative residuals make the gradient's size the fit's; residuals of another scale turn it off
     gradient_test = True
 
-    def __init__(self, setup: Setup, base: Material, free: list[Key], scales: np.ndarray, count: dict):
+    def __init__(self, setup: Setup, base: Subject, free: list[Key], scales: np.ndarray, count: dict):
         self.setup, self.base, self.free, self.scales, self.count = setup, base, free, scales, count
         self.lower = np.array([k.lower for k in free]) / scales
         self.upper = np.array([k.upper for k in free]) / scales
         self._last: tuple[bytes, np.ndarray, list] | None = None  # the last evaluation: x, r, the model's values
         self._jac: tuple[bytes, np.ndarray] | None = None  # the last Jacobian (least_squares' at its result)
 
-    def x(self, material: Material) -> np.ndarray:
+    def x(self, material: Subject) -> np.ndarray:
         """The scaled unknowns of ``material``."""
         return np.array([k.coordinate(material) for k in self.free]) / self.scales
 
-    def material(self, x) -> Material:
+    def material(self, x) -> Subject:
         m = self.base
         for key, value in zip(self.free, np.asarray(x) * self.scales, strict=True):
             m = key.moved(m, value)
@@ -176,7 +176,7 @@ class Problem:
     def __call__(self, x) -> np.ndarray:
         return self.evaluate(x)[0]
 
-    def values(self, material) -> tuple[list, int]:
+    def values(self, material: Subject) -> tuple[list, int]:
         """The model's values at the data for the trial ``material`` and the solver calls made
         (``pocket.apps.fit.model.predict``)."""
         try:
@@ -224,7 +224,7 @@ class Problem:
         return jac
 
 
-def _fixed_material(material: Material, fixed: dict, all_keys) -> Material:
+def _fixed_material(material: Subject, fixed: dict, all_keys) -> Subject:
     for name, value in fixed.items():
         material = key_named(all_keys, name, "--fix").put(material, value)
     return material

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from typing import TypeGuard
 
 import numpy as np
 
@@ -147,7 +148,7 @@ def _compression(setup: Setup, test: Dataset, material: Material, tension: float
     return out
 
 
-def admissible(material: Material | None) -> bool:
+def admissible(material: Material | None) -> TypeGuard[Material]:
     """Whether ``material`` is inside its law's admissible set (None: a trial set outside it already)."""
     if material is None:
         return False
