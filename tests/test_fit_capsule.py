@@ -189,7 +189,9 @@ def test_flags_refused_where_they_mean_nothing(tmp_path, capsys, no_solve):
                            "--geometry capsule: a case file sets up")):
         assert main(["fit", *args]) == 2
         out, err = capsys.readouterr()
-        assert out == "" and err.count("\n") == 1 and message in err, err
+        assert out == "", err
+        assert err.count("\n") == 1, err
+        assert message in err, err
 
 
 def test_keys_move_the_trial():
@@ -202,7 +204,7 @@ def test_keys_move_the_trial():
     assert (moved.material["c2"], moved.pressure_initial, trial.material["c2"], trial.pressure_initial) == \
         (3.0, 7.0, 2.0, 5.0)
     assert moved.mu0 == 2.0 * (1.0 + 3.0)
-    assert keys[2].unit == "pressure" and keys[2].lower == 0.0
+    assert (keys[2].unit, keys[2].lower) == ("pressure", 0.0)
 
 
 def test_gap_and_displacement_residuals(model):
@@ -263,11 +265,12 @@ def test_json_as_the_pockets(model, tmp_path, capsys):
     assert out["parameters"]["mu"]["unit"] == "N/m"
     assert out["parameters"]["mu"]["value"] == pytest.approx(TRUTH["mu"] * T, rel=1e-7)
     pressure = out["parameters"]["initial_pressure"]
-    assert pressure["unit"] == "Pa" and pressure["value"] == pytest.approx(P_I, rel=1e-7)
+    assert pressure["unit"] == "Pa"
+    assert pressure["value"] == pytest.approx(P_I, rel=1e-7)
     assert pressure["interval_95"][0] <= pressure["value"] <= pressure["interval_95"][1]
     assert main(["fit", data, *CAPSULE, "--law", "neo-hookean"]) == 0
     text = capsys.readouterr().out
-    assert "initial_pressure" in text and "(fixed)" in text and "gap at first touch" in text, text
+    assert all(word in text for word in ("initial_pressure", "(fixed)", "gap at first touch")), text
 
 
 def test_fit_refuses_what_it_cannot_fit():
@@ -278,3 +281,22 @@ def test_fit_refuses_what_it_cannot_fit():
         capsuletest.fit(setup, "neo-hookean", 0.0)
     with pytest.raises(InputError, match="--fix initial_pressure"):
         capsuletest.fit(setup, "neo-hookean", P_I, fixed={"initial_pressure": 1.0})
+
+
+@pytest.mark.parametrize(("share", "warned"), [((0.02, 0.05, 0.1, 0.15, 0.2, 0.25), False),
+                                                ((0.01, 0.012, 0.015, 0.02), True)])
+def test_warns_where_p_i_and_e_t_are_not_separated(model, share, warned):
+    """The small-force law's displacement is P_I's load over the wall's tension times a logarithm in which alone E T
+    appears: over a narrow range of small forces (a fifth of a decade, Fhat / Phat_I <= 0.02) a change of P_I
+    mimics one of E T, over a wide one (more than a decade) it does not. The fit says so exactly where the two
+    estimates' correlation passes ``pocket.apps.fit.stats.CORRELATED`` (noise-free data: the correlation is the
+    Jacobian's, whatever the noise's size)."""
+    from pocket.apps.fit.stats import CORRELATED
+
+    forces, gaps = squeeze(share=share)
+    setup = Setup((Dataset("capsule", forces, {"gap": gaps}, None, "s"),), R, T)
+    result = capsuletest.fit(setup, "neo-hookean", P_I * 1.1, fit_pressure=True)
+    r = result.statistics.correlation[0, 1]
+    print(f"r = {r:+.6f}", result.statistics.warnings)
+    assert bool(abs(r) > CORRELATED) is warned
+    assert any("do not separate the initial pressure" in w for w in result.statistics.warnings) is warned
