@@ -138,7 +138,6 @@ BAD = {
                                    "--sigma height: not a column of test data (force, gap, displacement)"),
     "an uncertainty above every gap": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n", ["--sigma", "gap=1 mm"],
                                        "--sigma gap: the uncertainty 0.001 m is more than every gap datum"),
-    "a folder to write": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n", ["--out", "res"], "--out: a capsule's fit"),
     "too few data": ("force [uN],gap [um]\n1,99\n", ["--fit-initial-pressure", None, "--law", "neo-hookean"],
                      "1 data, but fitting 2 parameters"),
 }
@@ -247,8 +246,8 @@ def test_recovers_the_stand_ins_truth(model, fit_pressure):
 def test_json_as_the_pockets(model, tmp_path, capsys):
     """The JSON has the pocket fit's keys (the law's parameter under its key, in Pa with a thickness, N/m times T
     without one; P_I under ``fixed``, or under ``parameters`` with its error and interval when fitted), and the
-    capsule's block; the text report prints the same table. Exact answers: the stand-in's truth, times T without
-    a thickness, and its inflated gap 2 lambda_I R."""
+    capsule's block; the text report prints the same table; --out writes the figure. Exact answers: the stand-in's
+    truth, times T without a thickness, and its inflated gap 2 lambda_I R."""
     forces, gaps = squeeze()
     data = write(tmp_path / "squeeze.csv", forces, gaps)
     assert main(["fit", data, *CAPSULE, "--law", "neo-hookean", "--json"]) == 0
@@ -271,6 +270,11 @@ def test_json_as_the_pockets(model, tmp_path, capsys):
     assert main(["fit", data, *CAPSULE, "--law", "neo-hookean"]) == 0
     text = capsys.readouterr().out
     assert all(word in text for word in ("initial_pressure", "(fixed)", "gap at first touch")), text
+    assert main(["fit", data, *CAPSULE, "--law", "neo-hookean", "--out", str(tmp_path / "res")]) == 0
+    capsys.readouterr()
+    written = sorted(p.name for p in (tmp_path / "res").iterdir() if not p.name.startswith("."))
+    assert written == ["fit.png"]  # the figure; a capsule's case file is not written yet
+    assert (tmp_path / "res" / "fit.png").stat().st_size > 0
 
 
 def test_fit_refuses_what_it_cannot_fit():

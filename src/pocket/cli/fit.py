@@ -86,9 +86,6 @@ def _capsule_flags(args) -> None:
                          "or the start of --fit-initial-pressure)")
     if args.fit_prestretch:
         raise InputError("--fit-prestretch: a capsule's reference sphere is unstressed, it has no prestretch to fit")
-    if args.out is not None:
-        raise InputError("--out: a capsule's fit writes no folder yet (its figure and case file are the clamped "
-                         "sheet's); take the result with --json")
 
 
 def _main(args) -> int:
@@ -107,6 +104,8 @@ def _main(args) -> int:
         assert request.initial_pressure is not None  # required by _capsule_flags
         capsule = capsuletest.fit(setup, request.law, request.initial_pressure, terms=request.terms,
                                   fixed=request.fixed, fit_pressure=request.fit_initial_pressure)
+        if target is not None:
+            write(capsule, target)
         out = capsuletest.summary(capsule)
     else:
         result = fit(setup, request.law, terms=request.terms, fixed=request.fixed, prestretch=request.prestretch)
@@ -198,5 +197,5 @@ def register(subparsers) -> None:
                    help="the model's solver (each is listed below; default shooting)")
     p.add_argument("--json", action="store_true", help="print the result as one JSON object")
     p.add_argument("--out", metavar="DIR", help="also write DIR/fit.png (data, fitted curve, residuals) and "
-                   "DIR/fitted.toml (the fitted sheet, for pocket run)")
+                   "DIR/fitted.toml (the fitted sheet, for pocket run; not yet for a capsule)")
     p.set_defaults(handler=_main)

@@ -76,6 +76,10 @@ class CapsuleFit(Fit):
 
     initial_pressure: float
 
+    def predicted(self, setup: Setup) -> list:
+        """The fitted capsule's values at ``setup``'s data (``pocket.apps.fit.capsulemodel.predict``)."""
+        return predict(setup, Trial(self.material, self.initial_pressure))[0]
+
     def law_keys(self) -> tuple[Key, ...]:
         """All keys of a capsule's fit of this law (``pocket.apps.fit.capsulemodel.capsule_keys``)."""
         return capsule_keys(self.material.law, len(self.material["mu"]) if self.material.law == "ogden" else 1)

@@ -128,6 +128,10 @@ class Fit:
     starts: int
     penalised: int
 
+    def predicted(self, setup: Setup) -> list:
+        """The fitted model's values at ``setup``'s data (``pocket.apps.fit.model.predict``): the figure's curves."""
+        return predict(setup, self.material)[0]
+
     def law_keys(self) -> tuple[Key, ...]:
         """All keys of the fitted law (``pocket.apps.fit.keys.keys``): what the report reads each key's unit from."""
         return keys(self.material.law, len(self.material["mu"]) if self.material.law == "ogden" else 1)
