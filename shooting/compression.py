@@ -44,13 +44,14 @@ from pocket.core.inputs import check_force, check_positive
 from pocket.core.states import CompressedState
 
 from . import newton
+from .capsule import CapsuleProblem
 from .contact import Contact
 from .end import end_of
 from .inflation import GEOMETRIES, inflate
 from .laws import law_of
-from .problem import contact_of
+from .problem import problem_of
 
-__all__ = ["compress", "compression_curve"]
+__all__ = ["compress", "compression_curve", "first_state"]
 
 _MIN_STEP = 1e-9  # smallest force step, relative to the force, before a solve is declared failed
 _FOLD_STEP = 1e-3  # near a fold of the force (within 10 such steps of it), the step below which the state is
@@ -157,6 +158,12 @@ def _advance(problem, branch, force):
     return branch
 
 
+def first_state(problem, force):
+    """(force, x): the state of ``problem`` at ``force``, continued from the inflated state as ``compression_curve``
+    continues (a problem's ``end`` seeds itself with it)."""
+    return _advance(problem, _Branch(points=((0.0, problem.start()),)), force).points[-1]
+
+
 def _failed(problem, sol, f_try, f0, force, more):
     """The ConvergenceError of a continuation step that could not be taken: where, from where, why."""
     q, e = sol.x[:2]
@@ -176,7 +183,7 @@ def _failed(problem, sol, f_try, f0, force, more):
 def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
     """Fhat = 0: the inflated state itself, seen as a compressed state with no contact."""
     inflated = problem.inflated
-    return CompressedState(
+    state = CompressedState(
         pressure_initial=inflated.pressure, force=force,
         pressure=inflated.pressure, pressure_ratio=1.0, contact_area=0.0, contact_radius=0.0,
         stretch_contact=inflated.stretch_pole, height=inflated.height, height_ratio=1.0,
@@ -184,6 +191,7 @@ def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
         material=inflated.material, fluid=fluid, tension_1_min=inflated.tension_1_min,
         tension_2_min=inflated.tension_2_min, indenter=problem.indenter,
     )
+    return problem.untouched(state) if isinstance(problem, CapsuleProblem) else state
 
 
 def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, geometry=None, rtol=1e-10,
@@ -245,11 +253,13 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
     indenter = as_indenter(indenter)
-    contact = contact_of(indenter)
     forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
     if not forces:
         raise InputError("no force given")
-    problem = contact(inflate(material, pressure_initial, geometry=geometry, rtol=rtol), rtol, law, fluid, indenter)
+    problem = problem_of(geometry, indenter)(inflate(material, pressure_initial, geometry=geometry, rtol=rtol), rtol,
+                                           law, fluid, indenter)
+    if isinstance(problem, CapsuleProblem):
+        problem.conditioned()
     counts = {f: forces.count(f) for f in forces}
     states, done = {}, 0
     branch = _Branch(points=((0.0, problem.start()),))

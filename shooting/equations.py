@@ -55,24 +55,42 @@ from pocket.core.compiled import compiled
 
 from .tensions import tensions, tensions_compiled
 
-__all__ = ["derivatives", "pole_state", "rhs", "table_curvature"]
+__all__ = ["derivatives", "pole_state", "reference", "rhs", "rhs_on", "table_curvature"]
 
 
 @functools.partial(compiled, inline="always")
-def rhs(r, y, code, params, p, out):
-    """Write dy/dr into ``out`` (shape (5,)) for y = [rho, eta, psi, lambda_1, v], the law ``code``
-    with ``params`` (``pocket.shooting.tensions``) at pressure ``p`` (units tau T / R)."""
+def reference(r, sphere):
+    """(r0, dr0/dS): the reference radius of the material point at arc length ``r`` and its slope, on the flat
+    disc (r0 = S: ``sphere`` False) or on the unit sphere (r0 = sin S, a capsule: ``sphere`` True)."""
+    if sphere:
+        return np.sin(r), np.cos(r)
+    return r, 1.0
+
+
+@functools.partial(compiled, inline="always")
+def rhs_on(r, radius, slope, y, code, params, p, out):
+    """``rhs`` on a reference surface whose material point at arc length ``r`` lies at the reference radius
+    ``radius`` = r0(S) with slope ``slope`` = r0'(S) (``reference``): lambda_2 = rho / r0 and
+    lambda_2' = (rho' - lambda_2 r0') / r0; nothing else sees the surface."""
     rho, psi, l1 = y[0], y[2], y[3]
-    l2 = rho / r
+    l2 = rho / radius
     s, c = np.sin(psi), np.cos(psi)
     t1, t2, a11, a12 = tensions_compiled(l1, l2, code, params)
     drho = l1 * c
-    dl2 = (drho - l2) / r
+    dl2 = (drho - l2 * slope) / radius
     out[0] = drho
     out[1] = -l1 * s
     out[2] = l1 * (p - t2 * s / rho) / t1
     out[3] = ((t2 - t1) * drho / rho - a12 * dl2) / a11
     out[4] = np.pi * rho * rho * l1 * s
+
+
+@functools.partial(compiled, inline="always")
+def rhs(r, y, code, params, p, out):
+    """Write dy/dr into ``out`` (shape (5,)) for y = [rho, eta, psi, lambda_1, v], the law ``code``
+    with ``params`` (``pocket.shooting.tensions``) at pressure ``p`` (units tau T / R), on the flat disc
+    (r0 = r: ``rhs_on`` with slope 1, whose products by 1.0 are exact)."""
+    rhs_on(r, r, 1.0, y, code, params, p, out)
 
 
 @functools.partial(compiled, inline="always")
@@ -99,31 +117,35 @@ def table_curvature(rho, breaks, coef):
 
 
 @functools.partial(compiled, inline="always")
-def derivatives(r, y, code, params, p, wrap, breaks, coef, out):
-    """``rhs`` for the free sheet (``wrap`` = 0, ``breaks`` empty), or for the sheet lying on a sphere of
+def derivatives(r, y, code, params, p, wrap, breaks, coef, sphere, out):
+    """``rhs_on`` the reference surface (``reference``: the disc, or the sphere if ``sphere``) for the free sheet
+    (``wrap`` = 0, ``breaks`` empty), or for the sheet lying on a sphere of
     curvature ``wrap`` = 1/R_s > 0 (units 1/R): there psi' = -lambda_1 / R_s replaces normal equilibrium
     (``pocket.shooting.surface``), the other four equations unchanged; or on a profile table (``breaks`` and
     ``coef`` its spline, ``table_curvature``): psi' = -lambda_1 kappa_1(rho) (``pocket.shooting.surface``)."""
-    rhs(r, y, code, params, p, out)
+    radius, slope = reference(r, sphere)
+    rhs_on(r, radius, slope, y, code, params, p, out)
     if breaks.size > 0:
         out[2] = -y[3] * table_curvature(y[0], breaks, coef)
     elif wrap > 0.0:
         out[2] = -y[3] * wrap
 
 
-def pole_state(l0: float, law, p: float, r0: float) -> np.ndarray:
+def pole_state(l0: float, law, p: float, r0: float, sphere: bool = False) -> np.ndarray:
     """State y at r = r0 from the pole series (error O(r0^4) in the stretches, O(r0^3) in psi).
 
     ``l0`` is the pole stretch lambda_0, ``law`` a ``pocket.shooting.laws.Law``, ``p`` the pressure
-    in units of tau T / R.
+    in units of tau T / R, ``sphere`` whether the reference surface is the unit sphere (a capsule: r0(S) = sin S,
+    where the series' k^2 becomes k^2 - 1, the -1 from the -S^3/6 of sin S) rather than the flat disc.
     Returns y = [rho, eta, psi, lambda_1, v], shape (5,); eta is measured from the pole.
     """
     t0, _, a, b = tensions(l0, l0, law.code, law.params)
-    k = l0 * p / (2.0 * t0)
-    cb = -l0 * k * k * (3.0 * a - b) / (16.0 * a)
-    ca = 3.0 * cb + 0.5 * l0 * k * k
-    rho = r0 * (l0 + cb * r0 * r0)
-    # eta' = -lambda_1 sin(psi) ~ -l0 k r, v' = pi rho^2 lambda_1 sin(psi) ~ pi l0^4 k r^3
+    k = l0 * p / (2.0 * t0) if p != 0.0 else 0.0  # p = 0: a flat contact zone, whose tension may vanish
+    kk = k * k - (1.0 if sphere else 0.0)
+    cb = -l0 * kk * (3.0 * a - b) / (16.0 * a)
+    ca = 3.0 * cb + 0.5 * l0 * kk
+    rho = (np.sin(r0) if sphere else r0) * (l0 + cb * r0 * r0)
+    # eta' = -lambda_1 sin(psi) ~ -l0 k r, v' = pi rho^2 lambda_1 sin(psi) ~ pi l0^3 k r^3
     eta = -0.5 * l0 * k * r0 * r0
-    v = 0.25 * np.pi * l0**4 * k * r0**4
+    v = 0.25 * np.pi * l0**3 * k * r0**4
     return np.array([rho, eta, k * r0, l0 + ca * r0 * r0, v])

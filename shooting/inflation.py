@@ -65,6 +65,7 @@ the surface it was solved on.
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 
@@ -77,13 +78,14 @@ from pocket.core.errors import (
     above_pressure_maximum,
     past_stretch_limit,
 )
-from pocket.core.geometries import Geometry, clamp_of, posed
-from pocket.core.inputs import check_positive, check_volume
+from pocket.core.geometries import Geometry, Symmetry, clamp_of, posed
+from pocket.core.inputs import check_non_negative, check_positive, check_volume
 from pocket.core.materials import as_material
 from pocket.core.solver import GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import InflatedState
 
 from . import brent
+from .capsule import capsule_pressure, inflate_capsule
 from .integrator import OK, STATUS, STEPS
 from .laws import as_law, law_of
 from .shots import Tolerance, profile_from_steps, shot_pole, tension_minima
@@ -92,7 +94,9 @@ from .tensions import inside, tensions
 __all__ = ["GEOMETRIES", "inflate", "inflate_volume", "inflation_curve", "pressure_of_stretch"]
 
 #: reference surface -> how this solver poses it (``pocket.core.geometries``)
-GEOMETRIES = {"pocket": "the membrane equations shot from the pole to the clamp at S = 1, r0 = S"}
+GEOMETRIES = {"pocket": "the membrane equations shot from the pole to the clamp at S = 1, r0 = S",
+              "capsule": "the sphere's closed form, checked by a shot from the pole to the equator at S = pi / 2, "
+                         "r0 = sin S (pocket.shooting.capsule)"}
 
 _GROWTH = 1.4  # ratio of successive s = lambda_0 - 1 in the marches
 _S_MAX = STRETCH_LIMIT - 1.0  # s at which the marches stop (``pocket.core.errors.STRETCH_LIMIT``)
@@ -386,6 +390,8 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
     law = law_of(material)
+    if isinstance(geometry.end, Symmetry):  # a closed capsule: a sphere, in closed form; P = 0 is its reference
+        return inflate_capsule(material, law, check_non_negative("pressure", pressure), rtol)
     pressure = check_positive("pressure", pressure)
     s_est = _strain_of_pressure(law, pressure)
     tol = _tolerance(rtol, s_est)
@@ -441,9 +447,11 @@ def inflation_curve(material: MaterialLike, pressures: Numbers, *, geometry: Geo
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     material = as_material(material)
     law = law_of(material)
+    if isinstance(geometry.end, Symmetry):
+        return [inflate(material, p, geometry=geometry, rtol=rtol) for p in pressures] or _none_given()
     given = [check_positive("pressure", p) for p in pressures]
     if not given:
-        raise InputError("no pressure given")
+        _none_given()
     order = sorted(set(given))
     branch = _Branch(law, _tolerance(rtol, _strain_of_pressure(law, order[0])))
     states, start = {}, None
@@ -454,6 +462,10 @@ def inflation_curve(material: MaterialLike, pressures: Numbers, *, geometry: Geo
         if progress is not None:
             progress(done, len(order))
     return [states[p] for p in given]
+
+
+def _none_given():
+    raise InputError("no pressure given")
 
 
 def _inflated(material, law, pressure, rtol, tol, branch, start, geometry) -> tuple[InflatedState, float]:
@@ -543,6 +555,10 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
     material = as_material(material)
     law = law_of(material)
     volume = check_volume("volume", volume)
+    if isinstance(geometry.end, Symmetry):  # the sphere of that volume (the whole capsule's)
+        stretch = (3.0 * volume / (4.0 * math.pi)) ** (1.0 / 3.0)
+        state = inflate_capsule(material, law, capsule_pressure(law, stretch) / law.pressure_factor, rtol)
+        return dataclasses.replace(state, volume=volume)  # echoed exactly, as the pocket's
     s_est = smallstrain.strain_of_volume(volume)
     if law.prestretch != 1.0:  # the paraboloid's volume pi H / 2 (units R^3)
         s_est = min(s_est, _taut_strain(law, 2.0 * volume / math.pi))

@@ -44,7 +44,7 @@ import numpy as np
 from pocket.core.compiled import compiled
 
 from . import tableau
-from .equations import derivatives
+from .equations import derivatives, reference
 from .tensions import inside_compiled, tensions_compiled
 
 __all__ = ["AXIS", "FOLD", "LOCKED", "NUMERICAL", "OK", "SLACK", "SMALL_STEP", "STATUS", "STEPS", "integrate"]
@@ -69,30 +69,31 @@ _EXPONENT = -1.0 / 8.0
 
 
 @functools.partial(compiled, inline="always")
-def _status(y, code, params, r, psi_max):
+def _status(y, code, params, r, psi_max, sphere):
+    l2 = y[0] / reference(r, sphere)[0]
     if not (y[0] > 0.0):
         return AXIS
     if not (-0.5 * np.pi < y[2] < psi_max):
         return FOLD
     if not (y[3] > 0.0):
         return SLACK
-    if not inside_compiled(y[3], y[0] / r, code, params):
+    if not inside_compiled(y[3], l2, code, params):
         return LOCKED
-    if not (tensions_compiled(y[3], y[0] / r, code, params)[0] > 0.0):
+    if not (tensions_compiled(y[3], l2, code, params)[0] > 0.0):
         return SLACK
     return OK
 
 
 @compiled
-def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, atol, h0, hmax, psi_max, store, A, B, C,
-               E3, E5):
+def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, atol, h0, hmax, psi_max, sphere, store, A,
+               B, C, E3, E5):
     n = y0.size
     K = np.empty((_NS + 1, n))
     y = y0.copy()
     ynew = np.empty(n)
     ytmp = np.empty(n)
     f = np.empty(n)
-    derivatives(r0, y, code, params, p, wrap, breaks, coef, f)
+    derivatives(r0, y, code, params, p, wrap, breaks, coef, sphere, f)
     r = r0
     k = 0  # the next knot ahead (``integrate``)
     while k < knots.size and knots[k] <= y[0] + _LANDING:
@@ -122,13 +123,13 @@ def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, ato
                     for j in range(s):
                         acc += A[s, j] * K[j, i]
                     ytmp[i] = y[i] + hh * acc
-                derivatives(r + C[s] * hh, ytmp, code, params, p, wrap, breaks, coef, K[s])
+                derivatives(r + C[s] * hh, ytmp, code, params, p, wrap, breaks, coef, sphere, K[s])
             for i in range(n):
                 acc = 0.0
                 for j in range(_NS):
                     acc += B[j] * K[j, i]
                 ynew[i] = y[i] + hh * acc
-            derivatives(rnew, ynew, code, params, p, wrap, breaks, coef, K[_NS])
+            derivatives(rnew, ynew, code, params, p, wrap, breaks, coef, sphere, K[_NS])
             e5 = 0.0
             e3 = 0.0
             for i in range(n):
@@ -162,14 +163,14 @@ def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, ato
             store[nstore, 0] = r
             store[nstore, 1:] = y
             nstore += 1
-        status = _status(y, code, params, r, psi_max)
+        status = _status(y, code, params, r, psi_max, sphere)
         if status != OK:
             return status, r, y, nstore
     return STEPS, r, y, nstore
 
 
 def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi, r_end=1.0,
-              wrap=0.0, table=None):
+              wrap=0.0, table=None, sphere=False):
     """Integrate the membrane equations from r0 to ``r_end`` (the clamp r = 1 unless given).
 
     y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). law: a ``pocket.shooting.laws.Law``.
@@ -184,7 +185,8 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     (``pocket.core.profiles.Shape.pieces``, ``equations.table_curvature``). Its curvature's slope jumps at
     each row rho_k = sqrt(s_k): an 8th-order step across one is only 2nd-order accurate with an error its
     estimate does not see, so a step that would cross a row is shortened to end on it (secant in rho,
-    within ``_LANDING``) and the next starts there, on the row's own piece.
+    within ``_LANDING``) and the next starts there, on the row's own piece. sphere: the reference surface is
+    the unit sphere (a capsule, r0 = sin r: ``equations.reference``) rather than the flat disc (r0 = r).
 
     Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
     columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
@@ -196,6 +198,7 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     status, r_end, y_end, m = _integrate(
         np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(wrap),
         breaks, coef, np.sqrt(breaks), float(rtol), atol,
-        float(h0), float(max_step), float(psi_max), buf, tableau.A, tableau.B, tableau.C, tableau.E3, tableau.E5,
+        float(h0), float(max_step), float(psi_max), bool(sphere), buf, tableau.A, tableau.B, tableau.C, tableau.E3,
+        tableau.E5,
     )
     return int(status), float(r_end), y_end, buf[:m]

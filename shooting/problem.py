@@ -11,13 +11,16 @@ from __future__ import annotations
 
 import dataclasses
 
+from pocket.core.errors import InputError
+from pocket.core.geometries import Geometry, Symmetry
 from pocket.core.indenters import Indenter, Plate, Profile, Sphere, formulation
 
+from .capsule import CapsuleProblem
 from .contact import Contact
 from .plate import PlateProblem
 from .surface import SurfaceProblem, words
 
-__all__ = ["CONTACTS", "EQUATOR", "PROFILE_END", "ProfileProblem", "SphereProblem", "contact_of"]
+__all__ = ["CONTACTS", "EQUATOR", "PROFILE_END", "ProfileProblem", "SphereProblem", "contact_of", "problem_of"]
 
 #: the end of the model particular to a sphere
 EQUATOR = "the sheet would wrap past the sphere's equator"
@@ -44,6 +47,18 @@ class ProfileProblem(SurfaceProblem):
 #: indenter kind -> the problem that poses its contact
 CONTACTS: dict[type[Indenter], type[Contact]] = {Plate: PlateProblem, Sphere: SphereProblem,
                                                  Profile: ProfileProblem}
+
+
+def problem_of(geometry: Geometry, indenter: Indenter) -> type[Contact]:
+    """The problem class posing the contact of ``indenter`` on the reference surface ``geometry``: a closed capsule's
+    between two plates (``pocket.shooting.capsule``), a pocket's by its indenter (``contact_of``); an InputError for
+    an indenter this solver does not pose on that surface."""
+    if isinstance(geometry.end, Symmetry):
+        if not isinstance(indenter, Plate):
+            raise InputError(f"solver shooting presses a {geometry.name} between two flat plates only, not with "
+                             f"a {indenter.name}")
+        return CapsuleProblem
+    return contact_of(indenter)
 
 
 def contact_of(indenter: Indenter) -> type[Contact]:

@@ -8,14 +8,14 @@ Each indenter's formulation finds it (``pocket.shooting.problem.CONTACTS``; the 
 from __future__ import annotations
 
 from pocket.core.fluids import as_fluid
-from pocket.core.geometries import posed
+from pocket.core.geometries import DISC, posed
 from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_positive
 
 from .end import cached, end_of
 from .inflation import GEOMETRIES, inflate
 from .laws import law_of
-from .problem import contact_of
+from .problem import problem_of
 
 __all__ = ["range_end"]
 
@@ -69,8 +69,9 @@ def range_end(material, pressure_initial, *, fluid=None, indenter=None, geometry
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
     indenter = as_indenter(indenter)
-    contact = contact_of(indenter)
-    end = cached((law.key, pressure_initial, rtol, fluid, indenter))
+    contact = problem_of(geometry, indenter)
+    end = cached((law.key, pressure_initial, rtol, fluid, indenter, geometry.name) if geometry.end != DISC.end
+                 else (law.key, pressure_initial, rtol, fluid, indenter))
     if end is None:
         end = end_of(contact(inflate(material, pressure_initial, geometry=geometry, rtol=rtol), rtol, law, fluid,
                              indenter))

@@ -3,6 +3,7 @@ to every solver as a law and an indenter are, refused in one line by a solver th
 states, and changing no reported number."""
 
 import dataclasses
+import importlib
 import json
 import math
 
@@ -156,13 +157,20 @@ def no_work(monkeypatch):
 @pytest.mark.parametrize(("solver", "name"), ENTRIES, ids=[f"{s}.{n}" for s, n in ENTRIES])
 def test_every_entry_point_refuses_a_geometry_its_solver_does_not_pose(no_work, solver, name):
     """Exact answer: each entry point of each solver, given a surface no solver poses (a toy hemisphere), is the
-    one-line InputError "solver <name> does not implement the toy-hemisphere geometry (its geometries: pocket)",
-    raised before any solve."""
+    one-line InputError "solver <name> does not implement the toy-hemisphere geometry (its geometries: ...)" naming
+    the surfaces of its table, raised before any solve."""
     fn = SOLVERS[solver].entry(name, "a test")
     with pytest.raises(InputError) as caught:
         CALLS[name](fn, Hemisphere())
+    table = importlib.import_module(TABLES[solver]).GEOMETRIES
+    assert "pocket" in table
     assert str(caught.value) == (f"solver {solver} does not implement the toy-hemisphere geometry "
-                                 "(its geometries: pocket)")
+                                 f"(its geometries: {', '.join(table)})")
+
+
+#: solver -> the module holding its table of the surfaces it poses
+TABLES = {"shooting": "pocket.shooting.inflation", "fem": "pocket.fem.api", "solid": "pocket.solid.api",
+          "analytical": "pocket.analytical.model"}
 
 
 #: solver -> (inflate, compress) with small meshes where a solver has one (the states' geometry is what is checked)

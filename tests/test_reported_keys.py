@@ -48,13 +48,15 @@ def _keys(states) -> set[str]:
 
 def _states():
     """Compressed states of every solver and contact method (with their inflated states), each law, a gas, a
-    prestretched sheet, the plate, a sphere and a profile."""
+    prestretched sheet, the plate, a sphere and a profile, a pocket and a capsule."""
     yield shooting.compress(ALPHA, PHAT, FHAT)
     yield shooting.compress(ALPHA, PHAT, FHAT, indenter=Sphere(0.4), fluid=gas(6.5, 1.4))
     yield shooting.compress(ALPHA, PHAT, FHAT, indenter=_profile())
     for law in LAWS.values():
         yield shooting.compress(check(law.name, dict(law.example)), PHAT, FHAT)
     yield shooting.compress(dataclasses.replace(mooney_rivlin(ALPHA), prestretch=1.1), PHAT, FHAT)
+    yield shooting.compress(ALPHA, PHAT, FHAT, geometry="capsule", fluid=gas(6.5, 1.4))
+    yield shooting.compress(ALPHA, PHAT, 0.0, geometry="capsule")
     yield fem.compress(ALPHA, PHAT, FHAT, elements=32)
     yield fem.compress(ALPHA, PHAT, 0.0, elements=32)
     yield fem.compress(ALPHA, PHAT, FHAT, elements=32, contact="penalty")

@@ -30,13 +30,12 @@ is a new ``Geometry`` here and an entry in the tables of the solvers that pose i
 carries the surface it was solved on (``pocket.core.states.InflatedState.geometry``), and a compressed
 state the one of the inflated state it was pressed from.
 
-What a solver needs to pose the capsule: it reads r0(S) wherever it now takes the Lagrangian radius for the
+How a solver poses the capsule: it reads r0(S) wherever the disc's equations take the Lagrangian radius for the
 reference radius (the hoop stretch lambda_2 = rho / r0 in the shooting equations and their pole series, and in
-the finite-element kernels); the shooting's closing condition (now rho(1) = 1 at the clamp) and the finite
-element's prescribed dofs (now rho and eta at S = 1) become the equator's symmetry (eta = 0 and the meridian
-vertical at S = pi / 2); the volume and the end's stretch report that surface's; the shooting solver's
-remembered range ends, keyed on the pocket's problem, key on its inflated state's surface too; the starting
-guesses are the surface's own (the inflated capsule has a closed form: a sphere of uniform stretch).
+the finite-element kernels); the disc's closing condition (rho = 1 at the clamp) becomes the equator's symmetry
+(eta = 0 and the meridian vertical at S = pi / 2); the volume and the end's stretch report that surface's (the whole
+capsule's volume); the inflated capsule has a closed form, a sphere of uniform stretch. The shooting solver poses
+it (``pocket.shooting.capsule``); a solver whose table lacks it refuses it in one line.
 """
 
 from __future__ import annotations

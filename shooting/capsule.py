@@ -1,0 +1,374 @@
+r"""The closed capsule: a spherical membrane inflated, then squeezed between two parallel plates, by shooting.
+
+The reference surface is the upper half of the unit sphere (``pocket.core.geometries.CAPSULE``): the arc length
+S runs from the pole (S = 0) to the equator (S = pi / 2), r0 = sin S, and the equator lies on the plane of mirror
+symmetry. The equations are the pocket's with lambda_2 = rho / sin S (``pocket.shooting.equations.rhs_on``, the
+pole series with k^2 - 1: ``pole_state(..., sphere=True)``); the derivation is in the theory's section on capsules.
+
+Inflation. The inflated capsule is a sphere of uniform stretch lambda, rho = lambda sin S, whose pressure is
+Laplace's, p = 2 t(lambda, lambda) / lambda (units tau T / R, t the kernel's tension). ``inflate`` finds lambda on
+the first branch by Brent's method (``pocket.shooting.brent``) on a bracket marched up from the unstressed sphere
+(lambda = 1 / lambda_p for a capsule inflated from a smaller radius with the prestretch lambda_p); a pressure
+above the first branch's maximum (the balloon's limit point) is an OutOfRangeError quoting the maximum. The shot
+from the pole at that lambda is the check: it must land on the equator vertical (psi(pi/2) = pi/2) at
+rho(pi/2) = lambda, within 1e-8 (a ConvergenceError otherwise).
+
+Compression by two plates, force given (``CapsuleProblem``). The contact zone 0 <= S <= a_c lies flat on the
+plate: psi = 0, and the in-plane equations are the free ones at p = 0 (with psi = 0 the angle's equation gives
+psi' = 0 exactly, eta' = 0 and v' = 0: the plate carries the fluid's pressure, q = P), integrated from the pole
+series at pressure 0. The free part starts at the edge with psi = 0 (a smooth plate exerts no line force) and the
+edge's rho and lambda_1 (continuous), at the pressure P. Unknowns x = (q, e, c): the pressure ratio q = P/P_I,
+the pole strain relative to the inflated one e = (lambda_0 - 1)/(lambda_I - 1), and c = a_c / sqrt(Fhat) (of order
+1 / lambda_I at every force: a_c ~ sqrt(Fhat) / lambda_I as Fhat -> 0). Residuals, each of order one:
+
+    psi(pi/2) - pi/2                       (the equator's symmetry: the meridian vertical there)
+    V / V_I - (the fluid's volume ratio)   (a liquid: V = V_I; a gas: the polytropic law)
+    q rho_c^2 / Fhat - 1                   (F = P pi rho_c^2, the plate's balance)
+
+with V = 2 v(pi/2) the whole capsule (v integrated from the edge: the volume between the plate and the
+equatorial plane) and the plate's height H = -eta(pi/2) (eta measured from the plate). Each force is solved by
+the continuation of ``pocket.shooting.compression``.
+
+The end of the range. No clamp ends it: the plates are infinite and the equator free. As the plates close, the
+stretches grow without bound for a liquid; the range ends where the force has a maximum (a softening law), or at
+the law's stretch limit (Gent's locking, or ``pocket.core.errors.STRETCH_LIMIT``). ``CapsuleProblem.end`` finds the
+maximum of the force along the branch by marching the plates' height down (height control: the third residual
+becomes (H - H_target) / lambda_I); past it the force given is an OutOfRangeError.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+
+from pocket.core.errors import (
+    STRETCH_LIMIT,
+    ConvergenceError,
+    OutOfRangeError,
+    PocketError,
+    above_pressure_maximum,
+    past_stretch_limit,
+)
+from pocket.core.geometries import CAPSULE
+from pocket.core.states import CompressedState, InflatedState, Profile
+
+from . import brent, newton
+from .contact import Contact
+from .end import End
+from .equations import pole_state
+from .integrator import OK, STATUS, integrate
+from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, Tolerance
+from .tensions import inside, tensions
+
+__all__ = ["CapsuleProblem", "amplification", "capsule_pressure", "inflate_capsule"]
+
+_GROWTH = 1.4  # ratio of successive strains in the march for the bracket
+_POINTS = 201  # points of an inflated capsule's profile
+_N_CONTACT = 64  # most stored steps of the contact zone are the integrator's; at least this many points there
+_LANDING = 1e-8  # how far the check shot of an inflated capsule may land from the closed form, where it amplifies
+# the integration's errors less than _TAME-fold
+_TAME = 1e3
+_END_STEPS = 8  # steps of the pole's stretch from a state to the end of the range
+_WILD = 1e6  # the amplification past which a shot from the pole keeps too few digits to be solved (module docstring)
+
+
+def amplification(pressure: float, stretch: float) -> float:
+    """exp(pi / (2 sqrt(t))), t = N_0 / (E T) = lambda Phat_I / 2: about how much a shot from the pole to the equator
+    amplifies an error made near the pole, on the capsule inflated at Phat_I = ``pressure`` to ``stretch`` (the
+    dent's homogeneous solutions grow like exp(r / l), l^2 = t R^2 lambda^2: the theory's small-force section)."""
+    t = 0.5 * stretch * pressure
+    return math.inf if t <= 0.0 else math.exp(min(700.0, 0.5 * math.pi / math.sqrt(t)))
+
+
+def capsule_pressure(law, stretch: float) -> float:
+    """p = 2 t(lambda, lambda) / lambda: the pressure (units tau T / R, ``Law.pressure_factor`` Phat) of the
+    capsule inflated to the uniform stretch lambda = ``stretch`` (Laplace's law on the sphere of radius lambda R)."""
+    return 2.0 * float(tensions(stretch, stretch, law.code, law.params)[0]) / stretch
+
+
+def _tolerance(rtol: float) -> Tolerance:
+    """The integration tolerances of a capsule: every quantity is of order one (lengths of R, V ~ 4)."""
+    return Tolerance(rtol, 1e-2 * rtol * np.ones(5))
+
+
+def _stretch_of_pressure(law, phat: float) -> float:
+    """The uniform stretch lambda of the inflated capsule at Phat on the first branch (module docstring)."""
+    p = law.pressure_factor * phat
+    low = 1.0 / law.prestretch  # the unstressed sphere
+
+    def excess(stretch):
+        return capsule_pressure(law, stretch) - p
+
+    if excess(low) >= 0.0:  # Phat = 0 and no prestretch: the sphere itself (or Phat below a taut capsule's)
+        if p == capsule_pressure(law, low):
+            return low
+        raise OutOfRangeError(f"no inflated capsule at Phat = {phat:.6g}: below the pressure of the unstressed "
+                              f"sphere ({capsule_pressure(law, low) / law.pressure_factor:.6g})")
+    strain = max(phat / 8.0, 1e-14)
+    previous, before = low, low
+    while True:
+        stretch = low * (1.0 + strain)
+        if stretch > min(STRETCH_LIMIT, law.stretch_limit):
+            raise past_stretch_limit(f"Phat = {phat!r}")
+        if not inside(stretch, stretch, law.code, law.params):
+            raise past_stretch_limit(f"Phat = {phat!r}")
+        if excess(stretch) >= 0.0:
+            return brent.root(excess, previous, stretch, rtol=1e-15)
+        if previous > low and capsule_pressure(law, stretch) < capsule_pressure(law, previous):
+            peak = _peak(law, before, stretch)
+            if capsule_pressure(law, peak) >= p:
+                return brent.root(excess, previous if previous < peak else before, peak, rtol=1e-15)
+            volume = 4.0 * math.pi * peak**3 / 3.0
+            raise above_pressure_maximum(phat, capsule_pressure(law, peak) / law.pressure_factor, volume,
+                                         f"the capsule's stretch {peak:.6g}")
+        before, previous, strain = previous, stretch, strain * _GROWTH
+
+
+def _peak(law, low: float, high: float) -> float:
+    """The stretch of the pressure maximum between ``low`` and ``high`` (golden-section search)."""
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    a, b = low, high
+    while b - a > 1e-12 * b:
+        x1, x2 = b - ratio * (b - a), a + ratio * (b - a)
+        if capsule_pressure(law, x1) < capsule_pressure(law, x2):
+            a = x1
+        else:
+            b = x2
+    return 0.5 * (a + b)
+
+
+def _sphere_profile(law, stretch: float) -> Profile:
+    """The inflated capsule's meridian from the pole to the equator: rho = lambda sin S, eta = lambda cos S."""
+    arc = np.linspace(0.0, 0.5 * math.pi, _POINTS)
+    uniform = np.full_like(arc, stretch)
+    t1, t2, _, _ = tensions(uniform, uniform, law.code, law.params)
+    return Profile(r=arc, rho=stretch * np.sin(arc), eta=stretch * np.cos(arc), stretch_1=uniform,
+                   stretch_2=uniform.copy(), tension_1=t1 * law.tension_scale, tension_2=t2 * law.tension_scale,
+                   contact=np.zeros(arc.size, bool))
+
+
+def inflate_capsule(material, law, pressure: float, rtol: float) -> InflatedState:
+    """The capsule inflated at Phat = ``pressure`` (module docstring); ``law`` the rubber's kernel
+    (``pocket.shooting.laws.law_of(material)``), ``rtol`` the check shot's tolerance."""
+    stretch = _stretch_of_pressure(law, pressure)
+    p = capsule_pressure(law, stretch)
+    # the check: the shot from the pole lands on the equator, vertical, at rho = lambda
+    if p > 0.0 and amplification(pressure, stretch) < _WILD:
+        y0 = pole_state(stretch, law, p, R_POLE, sphere=True)
+        tol = _tolerance(rtol)
+        status, _, y, _ = integrate(y0, R_POLE, law, p, rtol=tol.rtol, atol=tol.atol, r_end=0.5 * math.pi,
+                                    psi_max=PSI_MAX_EDGE, sphere=True)
+        miss = max(abs(y[2] - 0.5 * math.pi), abs(y[0] / stretch - 1.0)) if status == OK else math.inf
+        if miss > _LANDING * max(1.0, amplification(pressure, stretch) / _TAME):
+            raise ConvergenceError(f"inflation of the capsule at Phat = {pressure!r}: the shot from the pole at "
+                                   f"lambda = {stretch:.12g} {STATUS[status]}, missing the sphere by {miss:.3g}",
+                                   load=pressure, residual=miss)
+    return InflatedState(material=material, pressure=pressure, stretch_pole=stretch, height=stretch,
+                         volume=4.0 * math.pi * stretch**3 / 3.0, stretch_clamp=stretch,
+                         profile=_sphere_profile(law, stretch), solver="shooting",
+                         extra={"geometry": CAPSULE.name, "radius_equator": stretch}, geometry=CAPSULE)
+
+
+@dataclasses.dataclass(frozen=True)
+class CapsuleProblem(Contact):
+    """The compression of the inflated capsule ``inflated`` between two plates (module docstring); fields as
+    ``Contact``. ``height``: None under force control, or the plates' height H / R under height control (the
+    third residual then holds H, and the force is q rho_c^2)."""
+
+    height: float | None = None
+
+    @property
+    def label(self) -> str:
+        return "capsule, " + super().label
+
+    @property
+    def key(self) -> tuple:
+        return (*super().key, CAPSULE.name)
+
+    @property
+    def tolerance(self) -> Tolerance:
+        return _tolerance(self.rtol)
+
+    @property
+    def residual_floor(self) -> float:
+        """The stall accepted as the shots' noise: ``Contact``'s, times the amplification past ``_TAME``."""
+        inflated = self.inflated
+        return super().residual_floor * max(1.0, amplification(inflated.pressure, inflated.stretch_pole) / _TAME)
+
+    def conditioned(self) -> None:
+        """A ConvergenceError where a shot from the pole keeps too few digits (amplification past ``_WILD``)."""
+        inflated = self.inflated
+        growth = amplification(inflated.pressure, inflated.stretch_pole)
+        if growth > _WILD:
+            raise ConvergenceError(
+                f"capsule compression at Phat_I = {inflated.pressure!r}: a shot from the pole to the equator amplifies "
+                f"its errors about {growth:.1e}-fold at this low inflation pressure, too much to solve by single "
+                "shooting; the finite-element solver (fem) poses it", load=inflated.pressure)
+
+    def start(self) -> np.ndarray:
+        """Unknowns (q, e, c) of the inflated capsule (Fhat -> 0)."""
+        return np.array([1.0, 1.0, 1.0 / self.inflated.stretch_pole])
+
+    def geometry(self, x, force):
+        """(q, lambda_0, a_c, p) for unknowns x at ``force``, or None outside the model's domain."""
+        q, e, c = x
+        l0 = self.stretch(e)
+        scale = math.sqrt(force) if self.height is None else 1.0
+        a = c * scale
+        if not (q > 0.0 and l0 > 0.0 and 0.0 < a < 0.5 * math.pi and force > 0.0):
+            return None
+        return q, l0, a, self.law.pressure_factor * self.inflated.pressure * q
+
+    def _zone(self, l0, a, store):
+        """(status, y(a), steps) of the contact zone from the pole to the edge a (p = 0, psi = 0)."""
+        if a <= R_POLE:
+            y = pole_state(l0, self.law, 0.0, a, sphere=True)
+            return OK, y, np.array([[a, *y]]) if store else np.empty((0, 6))
+        tol = self.tolerance
+        status, _, y, steps = integrate(pole_state(l0, self.law, 0.0, R_POLE, sphere=True), R_POLE, self.law, 0.0,
+                                        rtol=tol.rtol, atol=tol.atol, store=store, r_end=a,
+                                        max_step=a / _N_CONTACT if store else np.inf, sphere=True)
+        return status, y, steps
+
+    def _shot(self, geometry, store):
+        """(status, y(pi/2), steps of the free part, steps of the contact zone) at ``geometry``."""
+        _q, l0, a, p = geometry
+        status, edge, zone = self._zone(l0, a, store)
+        if status != OK:
+            return status, edge, np.empty((0, 6)), zone
+        start = np.array([edge[0], 0.0, 0.0, edge[3], 0.0])
+        tol = self.tolerance
+        status, _, y, steps = integrate(start, a, self.law, p, rtol=tol.rtol, atol=tol.atol, store=store,
+                                        r_end=0.5 * math.pi, max_step=PROFILE_STEP if store else np.inf,
+                                        psi_max=PSI_MAX_EDGE, sphere=True)
+        return status, y, steps, zone, edge
+
+    def residual(self, x, force, angle=None):
+        """The three residuals at ``force`` (module docstring); None where a shot stops or x is outside."""
+        shot = self.shoot(x, force)
+        if shot is None or shot[0] != OK:
+            if shot is not None:
+                self._last["failure"] = (shot[0], float(x[0]), self.stretch(x[1]), float(force))
+            return None
+        y, edge = shot[1], shot[4]
+        inflated = self.inflated
+        ratio = self.fluid.volume_ratio(inflated.pressure * x[0], inflated.pressure)
+        if self.height is None:
+            last = x[0] * edge[0] ** 2 / force - 1.0
+        else:
+            last = (-y[1] - self.height) / inflated.stretch_pole
+        return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last])
+
+    def clamp_angle(self, x, force) -> float:
+        """No clamp: 0, so that the continuation's test of the clamp plane never fires."""
+        return 0.0
+
+    def _closure(self, x, force, shot) -> tuple:
+        return ()
+
+    def compressed(self, force, x, fluid) -> tuple[CompressedState, float]:
+        """The compressed state at ``force`` for the solved unknowns x, and 0 (no clamp angle)."""
+        q, l0, a, _ = self.geometry(x, force)
+        status, y, _, _, edge = self.shoot(x, force)
+        stored = self.shoot(x, force, store=20000)
+        for what, code in (("final", status), ("profile", stored[0])):
+            if code != OK:
+                raise ConvergenceError(f"capsule compression at force = {force!r}: the {what} shot "
+                                       f"{STATUS[code]}", load=force)
+        inflated = self.inflated
+        height = -y[1]
+        rho_c = edge[0]
+        force_out = force if self.height is None else q * rho_c**2
+        profile = self._profile(l0, stored[3], stored[2], -stored[1][1])
+        state = CompressedState(
+            pressure_initial=inflated.pressure, force=force_out, pressure=inflated.pressure * q, pressure_ratio=q,
+            contact_area=rho_c**2, contact_radius=a, stretch_contact=rho_c / math.sin(a), height=height,
+            height_ratio=height / inflated.height, volume=2.0 * y[4], profile=profile, inflated=inflated,
+            solver="shooting", material=inflated.material, fluid=fluid, indenter=self.indenter,
+            contact_radius_deformed=rho_c,
+            extra={"geometry": CAPSULE.name, "stretch_pole": float(l0), "radius_equator": float(y[0]),
+                   "force_ETR": math.pi * force_out * inflated.pressure},
+        )
+        return state, 0.0
+
+    def _profile(self, l0, zone, free, height) -> Profile:
+        """The meridian from the pole to the equator: the contact zone's steps (flat at the plate), then the free
+        part's; eta from the equatorial plane, the plate's ``height`` above it (the stored shot's own, within the
+        integration's tolerance of the state's)."""
+        steps = np.vstack([zone, free[1:]])
+        arc = np.concatenate([[0.0], steps[:, 0]])
+        rho = np.concatenate([[0.0], steps[:, 1]])
+        eta = np.concatenate([[0.0], steps[:, 2]]) + height
+        l1 = np.concatenate([[l0], steps[:, 4]])
+        l2 = np.concatenate([[l0], steps[:, 1] / np.sin(steps[:, 0])])
+        t1, t2, _, _ = tensions(l1, l2, self.law.code, self.law.params)
+        contact = np.zeros(arc.size, bool)
+        contact[:zone.shape[0] + 1] = True
+        scale = self.law.tension_scale
+        return Profile(r=arc, rho=rho, eta=eta, stretch_1=l1, stretch_2=l2, tension_1=t1 * scale,
+                       tension_2=t2 * scale, contact=contact)
+
+    def end(self, seed) -> End:
+        """The end of the range from the solved (force, x) ``seed`` (module docstring): where the contact patch's
+        tension vanishes at the pole (lambda_0 = 1 / lambda_p). If the pole's stretch falls as the force grows at
+        the seed, it is marched down to there with the force unknown (unknowns (q, c, Fhat), e given); an End at inf
+        force where it rises, or where that march fails (a minimum of the pole's stretch on the way)."""
+        if seed is None:  # a state at a small force, by the continuation every force is solved by; a failure on
+            if self._last.get("ending"):  # its way asks for the end again: that one has none
+                return _NO_END
+            from .compression import first_state  # (here: compression imports this module)
+
+            self._last["ending"] = True
+            try:
+                seed = first_state(self, 1e-3)
+            except PocketError:
+                return _NO_END
+            finally:
+                self._last.pop("ending")
+        force, x = seed
+        ahead = newton.solve(lambda v: self.residual(v, 1.01 * force), x, tol=self.residual_tol,
+                             floor=self.residual_floor)
+        slack = (1.0 / self.law.prestretch - 1.0) / self.strain  # e at which the pole's tension vanishes
+        if not ahead.success or ahead.x[1] >= x[1] or slack >= x[1]:
+            return _NO_END
+        # (e, z) along the branch, z = (q, c, Fhat): each state seeded by the secant through the last two
+        points = [(x[1], np.array([x[0], x[2], force])), (ahead.x[1], np.array([ahead.x[0], ahead.x[2], 1.01 * force]))]
+        step = (slack - points[-1][0]) / _END_STEPS
+        while points[-1][0] > slack:
+            (e0, z0), (e1, z1) = points[-2:]
+            e = max(slack, e1 + step)
+            guess = z1 + (e - e1) * (z1 - z0) / (e1 - e0)
+            sol = newton.solve(functools.partial(self._at_stretch, e), guess, tol=self.residual_tol,
+                               floor=self.residual_floor)
+            if sol.success:
+                points.append((e, sol.x))
+                step *= 1.5
+            elif abs(step) > 1e-4 * (x[1] - slack):
+                step *= 0.5
+            else:
+                return _NO_END
+        z = points[-1][1]
+        return End(force=float(z[2]), angle=0.0, fold=False, path=(), reason=SLACK_PATCH)
+
+    def _at_stretch(self, e, z):
+        """The residuals at the pole strain ``e`` for z = (q, c, Fhat), None at Fhat <= 0 (``end``)."""
+        return self.residual(np.array([z[0], e, z[1]]), z[2]) if z[2] > 0.0 else None
+
+    def untouched(self, state: CompressedState) -> CompressedState:
+        """The inflated capsule seen as a compressed state at Fhat = 0 (``state``), with a capsule's keys."""
+        inflated = self.inflated
+        return dataclasses.replace(state, contact_radius_deformed=0.0,
+                                   extra={**inflated.extra, "stretch_pole": inflated.stretch_pole, "force_ETR": 0.0})
+
+    def on_branch(self, force):
+        return None
+
+
+#: the end of a capsule's range where the tension under the plate vanishes
+SLACK_PATCH = ("the contact patch's tension vanishes at the pole (T_1 = T_2 = 0): the membrane would wrinkle under "
+               "the plate, outside membrane theory")
+_NO_END = End(force=math.inf, angle=0.0, fold=False, path=(), locks=True,
+              reason="the stretches grow without bound as the plates close")
