@@ -81,8 +81,8 @@ def read(path) -> Dataset:
     ...     path = pathlib.Path(folder) / "squeeze.csv"
     ...     _ = path.write_text("force [uN],gap [um]\n0,101.2\n2,96.5\n5,90.1\n")
     ...     test = read(path)
-    >>> print(test.kind, test.control, test.responses["gap"])
-    capsule [0.e+00 2.e-06 5.e-06] [0.0001012 0.0000965 0.0000901]
+    >>> print(test.kind, test.control * 1e6, test.responses["gap"] * 1e6)
+    capsule [0. 2. 5.] [101.2  96.5  90.1]
     """
     path = pathlib.Path(path)
     data = columns(path, QUANTITIES, EXAMPLE)

@@ -66,7 +66,17 @@ def _on_trial(pair):
 
 def capsule_keys(law: str, terms: int = 1) -> tuple[Key, ...]:
     """The keys of a capsule's fit: those of ``law`` (``terms`` terms for Ogden) but the prestretch, each on a
-    ``Trial``'s rubber, then ``INITIAL_PRESSURE``."""
+    ``Trial``'s rubber, then ``INITIAL_PRESSURE``.
+
+    Examples
+    --------
+    >>> from pocket.apps.fit.capsulemodel import Trial, capsule_keys
+    >>> from pocket.core.materials import Material
+    >>> keys = capsule_keys("neo-hookean")
+    >>> trial = keys[1].put(Trial(Material("neo-hookean", {"mu": 1e5}), 1200.0), 900.0)
+    >>> print([k.name for k in keys], keys[0].get(trial), trial.pressure_initial)
+    ['mu', 'initial_pressure'] 100000.0 900.0
+    """
     out = []
     for key in keys(law, terms):
         if key.name != PRESTRETCH:
