@@ -113,3 +113,24 @@ def test_small_deformation_does_not_separate_p_i_from_e_t():
     assert any("do not separate the initial pressure" in w for w in s.warnings), s.warnings
     assert result.material["mu"] == pytest.approx(MU, rel=1e-6)
     assert result.initial_pressure == pytest.approx(P_I, rel=1e-6)
+
+
+@pytest.mark.parametrize(("law", "truth"), [("mooney-rivlin", {"c1": 40e3, "c2": 10e3}),
+                                            ("yeoh", {"c10": 50e3, "c20": -1e3, "c30": 200.0}),
+                                            ("gent", {"mu": 1e5, "jm": 20.0})])
+def test_every_parameter_of_other_laws(law, truth):
+    """Exact answer: the truth's every parameter, P_I held, from a capsule of that law (mu_0 = 0.1 MPa: Phat_I =
+    0.2) compressed at twelve forces to Fhat = 4 (about 60 % of its gap), where the law's shape shows."""
+    from pocket.core.materials import check
+
+    rubber = check(law, truth)
+    phat = P_I * R / (3.0 * rubber.mu0 * T)
+    fhats = np.linspace(0.0, 4.0, 12)
+    states = shooting.compression_curve(rubber.scaled(), phat, list(fhats), geometry="capsule")
+    gaps = np.array([2.0 * R * s.height for s in states])
+    setup = Setup((Dataset("capsule", fhats * P_I * math.pi * R**2, {"gap": gaps}, None, law),), R, T)
+    result = capsuletest.fit(setup, law, P_I)
+    print(dict(zip(result.statistics.names, result.statistics.values, strict=True)), result.calls,
+          f"{result.seconds:.1f} s")
+    for name, value in truth.items():
+        assert result.material[name] == pytest.approx(value, rel=1e-6), name
