@@ -36,7 +36,7 @@ from pocket.core.errors import InputError
 
 from . import checks
 from .checks import MAX_STRETCH
-from .data import Dataset, columns
+from .data import Dataset, check_forces, columns
 from .model import Setup
 
 __all__ = ["COLUMNS", "EXAMPLE", "QUANTITIES", "check", "read"]
@@ -94,11 +94,7 @@ def read(path) -> Dataset:
                          f"column, like {EXAMPLE!r}")
     force, name = data["force"], given[0]
     values = data[name].copy()
-    bad = np.flatnonzero(~(force >= 0.0))
-    if bad.size:
-        raise InputError(f"{path}: row {bad[0] + 1}, force = {force[bad[0]]:.6g} N, but it must be >= 0")
-    if np.unique(force).size != force.size:
-        raise InputError(f"{path}: a force given twice, but each row of a capsule's test needs its own force")
+    check_forces(path, force, "a capsule's test")
     if not np.any(force > 0.0):
         raise InputError(f"{path}: no row with a force above 0, so nothing is squeezed")
     if name == "gap":

@@ -36,8 +36,9 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.materials import Material
 
+from . import model
 from .keys import PRESTRETCH, Key, keys
-from .model import PENALTY, Setup, admissible, compressed, missing
+from .model import Setup, admissible, compressed, missing
 
 __all__ = ["INITIAL_PRESSURE", "Trial", "capsule_keys", "predict", "residuals"]
 
@@ -118,11 +119,4 @@ def predict(setup: Setup, trial: Trial | None) -> tuple[list[dict], int]:
 
 def residuals(setup: Setup, values: list[dict]) -> np.ndarray:
     """The residual of each datum (module docstring), tests in order; shape (n,)."""
-    out = []
-    for test, model in zip(setup.tests, values, strict=True):
-        for name, data in test.responses.items():
-            keep = np.isfinite(data)
-            d, m = data[keep], model[name][keep]
-            r = (m - d) / setup.sigma.get(name, 2.0 * setup.radius)
-            out.append(np.where(np.isfinite(m), r, PENALTY))
-    return np.concatenate(out) if out else np.empty(0)
+    return model.residuals(setup, values, lambda m, d: (m - d) / (2.0 * setup.radius))

@@ -29,7 +29,7 @@ from pocket.core.inputs import quote
 from pocket.core.tables import heading, rows
 from pocket.core.units import is_plain, quantity
 
-__all__ = ["CONTROLS", "QUANTITIES", "Dataset", "columns", "read"]
+__all__ = ["CONTROLS", "QUANTITIES", "Dataset", "check_forces", "columns", "read"]
 
 #: column name -> the kind of quantity it holds (``pocket.core.units.KINDS``)
 QUANTITIES = {"pressure": "pressure", "height": "length", "volume": "volume", "force": "force"}
@@ -197,6 +197,16 @@ def _inflation(path, data) -> Dataset:
     return Dataset("inflation", pressure, data, None, str(path))
 
 
+def check_forces(path, force: np.ndarray, test: str) -> None:
+    """Refuse the forces (N) of a force-controlled ``test`` ("a compression test") in ``path`` that are not >= 0 or
+    not each its own: an InputError naming the row."""
+    bad = np.flatnonzero(~(force >= 0.0))
+    if bad.size:
+        raise InputError(f"{path}: row {bad[0] + 1}, force = {force[bad[0]]:.6g} N, but it must be >= 0")
+    if np.unique(force).size != force.size:
+        raise InputError(f"{path}: a force given twice, but each row of {test} needs its own force")
+
+
 def _compression(path, data, initial_pressure) -> Dataset:
     if "pressure" not in data:
         raise InputError(f"{path}: a compression test (a force column) needs a pressure column, like "
@@ -205,11 +215,7 @@ def _compression(path, data, initial_pressure) -> Dataset:
         raise InputError(f"{path}: the fit cannot use a volume column in a compression test (the liquid's "
                          "volume is fixed while the plate presses)")
     force = data.pop("force")
-    bad = np.flatnonzero(~(force >= 0.0))
-    if bad.size:
-        raise InputError(f"{path}: row {bad[0] + 1}, force = {force[bad[0]]:.6g} N, but it must be >= 0")
-    if np.unique(force).size != force.size:
-        raise InputError(f"{path}: a force given twice, but each row of a compression test needs its own force")
+    check_forces(path, force, "a compression test")
     for name, v in data.items():
         _positive(path, name, v)
     zero = np.flatnonzero(force == 0.0)

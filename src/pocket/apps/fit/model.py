@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Callable
 from typing import TypeGuard
 
 import numpy as np
@@ -178,13 +179,15 @@ def predict(setup: Setup, material: Material | None) -> tuple[list[dict], int]:
     return out, calls[0]
 
 
-def residuals(setup: Setup, values: list[dict]) -> np.ndarray:
-    """The residual of each datum (module docstring), tests in order, columns in each test's order; shape (n,)."""
+def residuals(setup: Setup, values: list[dict], plain: Callable = lambda m, d: m / d - 1.0) -> np.ndarray:
+    """The residual of each datum (module docstring), tests in order, columns in each test's order; shape (n,).
+    ``plain(model, data)`` is the residual of a column without a stated uncertainty (relative; a capsule's gaps
+    have their own, ``pocket.apps.fit.capsulemodel``)."""
     out = []
     for test, model in zip(setup.tests, values, strict=True):
         for name, data in test.responses.items():
             keep = np.isfinite(data)
             d, m = data[keep], model[name][keep]
-            r = (m - d) / setup.sigma[name] if name in setup.sigma else m / d - 1.0
+            r = (m - d) / setup.sigma[name] if name in setup.sigma else plain(m, d)
             out.append(np.where(np.isfinite(m), r, PENALTY))
     return np.concatenate(out) if out else np.empty(0)
