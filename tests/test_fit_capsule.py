@@ -246,8 +246,8 @@ def test_recovers_the_stand_ins_truth(model, fit_pressure):
 def test_json_as_the_pockets(model, tmp_path, capsys):
     """The JSON has the pocket fit's keys (the law's parameter under its key, in Pa with a thickness, N/m times T
     without one; P_I under ``fixed``, or under ``parameters`` with its error and interval when fitted), and the
-    capsule's block; the text report prints the same table; --out writes the figure. Exact answers: the stand-in's
-    truth, times T without a thickness, and its inflated gap 2 lambda_I R."""
+    capsule's block; the text report prints the same table. Exact answers: the stand-in's truth, times T without a
+    thickness, and its inflated gap 2 lambda_I R."""
     forces, gaps = squeeze()
     data = write(tmp_path / "squeeze.csv", forces, gaps)
     assert main(["fit", data, *CAPSULE, "--law", "neo-hookean", "--json"]) == 0
@@ -270,10 +270,16 @@ def test_json_as_the_pockets(model, tmp_path, capsys):
     assert main(["fit", data, *CAPSULE, "--law", "neo-hookean"]) == 0
     text = capsys.readouterr().out
     assert all(word in text for word in ("initial_pressure", "(fixed)", "gap at first touch")), text
+
+
+@pytest.mark.slow  # matplotlib's import and the figure: a second
+def test_out_writes_the_figure(model, tmp_path, capsys):
+    """--out DIR writes the figure of the data, the fitted curve and the residuals; not yet a capsule's case file."""
+    data = write(tmp_path / "squeeze.csv", *squeeze())
     assert main(["fit", data, *CAPSULE, "--law", "neo-hookean", "--out", str(tmp_path / "res")]) == 0
     capsys.readouterr()
     written = sorted(p.name for p in (tmp_path / "res").iterdir() if not p.name.startswith("."))
-    assert written == ["fit.png"]  # the figure; a capsule's case file is not written yet
+    assert written == ["fit.png"]
     assert (tmp_path / "res" / "fit.png").stat().st_size > 0
 
 
@@ -304,3 +310,21 @@ def test_warns_where_p_i_and_e_t_are_not_separated(model, share, warned):
     print(f"r = {r:+.6f}", result.statistics.warnings)
     assert bool(abs(r) > CORRELATED) is warned
     assert any("do not separate the initial pressure" in w for w in result.statistics.warnings) is warned
+
+
+def test_stated_uncertainty_weighs_the_gaps(model, tmp_path, capsys):
+    """Exact answer: with --sigma gap the residuals are (model - datum) / sigma, the plain ones (in units of 2 R)
+    times 2 R / sigma at any trial; the fit then recovers the same truth and the report says what its residuals
+    are."""
+    forces, gaps = squeeze()
+    plain = Setup((Dataset("capsule", forces, {"gap": gaps}, None, "g"),), R, T)
+    weighed = Setup(plain.tests, R, T, sigma={"gap": 2e-8})
+    trial = capsulemodel.Trial(check("neo-hookean", {"mu": 0.8e6}), 1150.0)
+    values = capsulemodel.predict(plain, trial)[0]
+    np.testing.assert_allclose(capsulemodel.residuals(weighed, values),
+                               capsulemodel.residuals(plain, values) * 2.0 * R / 2e-8, rtol=1e-12)
+    data = write(tmp_path / "squeeze.csv", forces, gaps)
+    assert main(["fit", data, *CAPSULE, "--law", "neo-hookean", "--json", "--sigma", "gap=0.02 um"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["parameters"]["mu"]["value"] == pytest.approx(TRUTH["mu"], rel=1e-7)
+    assert out["residuals"] == "in units of the stated uncertainty for gap, in units of the diameter 2R otherwise"

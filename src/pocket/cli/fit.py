@@ -154,20 +154,21 @@ def _main(args) -> int:
 
 def register(subparsers) -> None:
     """Add ``pocket fit``."""
-    text = "fit a rubber law's parameters to bulge (inflation) and compression test data, with uncertainties"
+    text = ("fit a rubber law's parameters to bulge (inflation) and compression test data (of the clamped sheet, or "
+            "of a closed capsule between two plates), with uncertainties")
     p = subparsers.add_parser(
         "fit", help=text, epilog=solvers_epilog(("shooting", "fem")),
         description=f"{text}. Each CSV file is one test; its header names each column's quantity and unit. An "
-        "inflation test: 'pressure [kPa],height [mm]' (and/or 'volume [mL]'), pressures increasing. A compression "
-        "test by the flat plate: 'force [N],pressure [kPa]' (and optionally 'height [mm]'), at --initial-pressure "
-        "or the pressure of its row at zero force. A closed capsule squeezed between two plates (--geometry capsule, "
-        "the micromanipulation test): 'force [uN],gap [um]' (the force on each plate, the distance between the "
-        "plates) or 'force [uN],displacement [um]' (the plates' approach since first touch, 0 at zero force), at "
-        "--initial-pressure (held, or fitted with --fit-initial-pressure); its residuals are the gaps' in units of "
-        "the diameter 2R, or of --sigma. Several files are fitted jointly. Residuals are relative, or in "
-        "units of a column's --sigma. Reports each parameter with its standard error (from the Jacobian and the "
-        "residual variance), 95 % interval (by the profile likelihood where the fit can, else linearised: the "
-        "report says which), the correlations and warnings where the data do not determine a "
+        "inflation test: 'pressure [kPa],height [mm]' (and/or 'volume [mL]'), pressures increasing. A compression test "
+        "by the flat plate: 'force [N],pressure [kPa]' (and optionally 'height [mm]'), at --initial-pressure or the "
+        "pressure of its row at zero force. A closed capsule squeezed between two plates (--geometry capsule, the "
+        "micromanipulation test): 'force [uN],gap [um]' (the force on each plate, the distance between the plates) or "
+        "'force [uN],displacement [um]' (the plates' approach since first touch, 0 at zero force), at "
+        "--initial-pressure (held, or fitted with --fit-initial-pressure); its residuals are the gaps' in units of the "
+        "diameter 2R, or of --sigma. Several files are fitted jointly (a capsule's: of one capsule). The sheet's "
+        "residuals are relative, or in units of a column's --sigma. Reports each parameter with its standard error "
+        "(from the Jacobian and the residual variance), 95 % interval (by the profile likelihood where the fit can, "
+        "else linearised: the report says which), the correlations and warnings where the data do not determine a "
         "parameter. A value without a unit ('--radius 15') is read in SI (15 m) and said so; data that make such a "
         "reading absurd are refused before solving.")
     p.add_argument("data", nargs="+", metavar="DATA.csv",
