@@ -127,20 +127,23 @@ def _main(args) -> int:
         print(f"# capsule of radius {out['radius_m']:.6g} m inflated at P_I = {c['initial_pressure_Pa']:.6g} Pa: "
               f"Phat_I = P_I R / (E T) = {c['pressure_initial']:.6g}, stretch lambda_I = {c['stretch_initial']:.8g}, "
               f"gap at first touch {c['gap_initial_m']:.8g} m")
-    print(f"{'key':>14}  {'value':>14}  {'std. error':>11}  {'95 % interval':>31}  unit")
+    w = max(14, *(len(name) for name in (*out["parameters"], *out["fixed"])))  # a capsule's initial_pressure
+    cw = max(11, *(len(name) for name in out["parameters"]))
+    print(f"{'key':>{w}}  {'value':>14}  {'std. error':>11}  {'95 % interval':>31}  unit")
     for name, p in out["parameters"].items():
         lo, hi = (math.inf * sign if end is None else end for end, sign in zip(p["interval_95"], (-1, 1), strict=True))
-        print(f"{name:>14}  {p['value']:>14.8g}  {p['standard_error']:>11.3g}  [{lo:>14.8g}, {hi:>14.8g}]  {p['unit']}")
+        print(f"{name:>{w}}  {p['value']:>14.8g}  {p['standard_error']:>11.3g}  [{lo:>14.8g}, {hi:>14.8g}]  "
+              f"{p['unit']}")
     for name, p in out["fixed"].items():
-        print(f"{name:>14}  {p['value']:>14.8g}  {'(fixed)':>11}  {'':>31}  {p['unit']}")
+        print(f"{name:>{w}}  {p['value']:>14.8g}  {'(fixed)':>11}  {'':>31}  {p['unit']}")
     lo, hi = out["mu0"]["interval_95"]
-    print(f"{'mu_0':>14}  {out['mu0']['value']:>14.8g}  {out['mu0']['standard_error']:>11.3g}  [{lo:>14.8g}, "
+    print(f"{'mu_0':>{w}}  {out['mu0']['value']:>14.8g}  {out['mu0']['standard_error']:>11.3g}  [{lo:>14.8g}, "
           f"{hi:>14.8g}]  {out['mu0']['unit']}")
     names = out["correlation"]["keys"]
     if len(names) > 1:
-        print(f"{'correlation':>14}  " + "  ".join(f"{n:>11}" for n in names))
+        print(f"{'correlation':>{w}}  " + "  ".join(f"{n:>{cw}}" for n in names))
         for name, row in zip(names, out["correlation"]["matrix"], strict=True):
-            print(f"{name:>14}  " + "  ".join(f"{c:>+11.4f}" for c in row))
+            print(f"{name:>{w}}  " + "  ".join(f"{x:>+{cw}.4f}" for x in row))
     methods: dict[str, list[str]] = {}
     for name, p in out["parameters"].items():
         methods.setdefault(p["interval_method"], []).append(name)
