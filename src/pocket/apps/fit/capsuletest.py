@@ -13,8 +13,9 @@ membrane's tension N_0 = P_I lambda_I R / 2 and the displacement is F / (2 pi N_
 alone E T appears (docs/theory.md, section 12, the small-force law). So each of the law's start shapes is tried at
 E T = P_I R / Phat_I for the Phat_I of ``PRESSURES`` (the inflated capsule from near the neo-Hookean pressure
 maximum, 0.413, to slack), P_I the given value, in that order, until the cost rises past the least so far (the
-cost is one valley in E T; a trial with a datum without state costs infinitely much and does not stop the scan);
-the fit runs from the best of each shape (``search``). A scan stops early because a failed solve costs much more
+cost is one valley in E T; a trial with a datum without state costs infinitely much, so it stops the scan only
+after one with every state: a soft wall may have none, past its pressure maximum or its range's end); the fit runs
+from the best of each shape (``search``). A scan stops early because a failed solve costs much more
 than one that succeeds: the shooting solver gives up on a capsule inflated at a small Phat_I only after cutting
 its continuation's steps many times.
 
