@@ -126,15 +126,16 @@ def modulus_warnings(setup: Setup, mu0: float) -> list[str]:
     """A warning if the fitted ``mu0`` (Pa, or N/m times T without a thickness) is no rubber's (module
     docstring); empty otherwise."""
     low, high = RUBBER_MODULI
+    radius = "capsule's radius" if any(t.kind == "capsule" for t in setup.tests) else "clamp radius"
     if setup.thickness:
         modulus = 3.0 * mu0
         if low <= modulus <= high:
             return []
         return [f"the fitted E = 3 mu_0 = {modulus:.3g} Pa is no rubber's ({low:.0e} to {high:.0e} Pa): check the "
-                "units of the data, the clamp radius and the thickness"]
+                f"units of the data, the {radius} and the thickness"]
     bound = 3.0 * mu0 / setup.radius
     if bound <= high:
         return []
     return [f"the fitted E T = 3 mu_0 T = {3.0 * mu0:.3g} N/m gives E >= {bound:.3g} Pa even for a sheet as thick "
-            f"as the clamp radius, no rubber's ({low:.0e} to {high:.0e} Pa): check the units of the data and the clamp "
-            "radius"]
+            f"as the {radius}, no rubber's ({low:.0e} to {high:.0e} Pa): check the units of the data and the "
+            f"{radius}"]
