@@ -32,7 +32,6 @@ P1 (error O(h^2)) gets 1024 elements by default: within 1e-6 of shooting.
 
 from __future__ import annotations
 
-import functools
 import pathlib
 from dataclasses import replace
 from typing import Any
@@ -175,14 +174,6 @@ def _model(material, mesh, elements, order, penalty, geometry: Geometry = geomet
 def _builder(geometry: Geometry):
     """The module that builds the compressed states of ``geometry``: ``results``, or ``capsulestates``."""
     return capsulestates if geometry is geometries.CAPSULE else results
-
-
-def _range_check(model: Model, y_i: np.ndarray, fill: Control, tol: Tolerances, pressure_initial: float):
-    """The check of a solved state against the end of the range that no clamp makes (``curves.fitted_curve``): the
-    capsule's slack patch (``capsule.within_range``), or None."""
-    if model.geometry is not geometries.CAPSULE:
-        return None
-    return functools.partial(capsule.within_range, model, y_i, fill, tol, np.pi * pressure_initial)
 
 
 def _tolerances(tol) -> Tolerances:
@@ -422,8 +413,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     if curved and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
-        return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress, _builder(geometry),
-                                   _range_check(model, y_i, fill, tolerances, inflated.pressure))
+        return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress, _builder(geometry))
     return curves.penalty_curve(model, y_i, inflated, fill, forces, tolerances, augmented, progress)
 
 
@@ -541,8 +531,7 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     if curved and contact == FITTED:
         return wrapping.at_height(model, y_i, inflated, fill, height, tolerances)
     if contact == FITTED:
-        return curves.fitted_height(model, y_i, inflated, fill, height, tolerances, _builder(geometry),
-                                    _range_check(model, y_i, fill, tolerances, inflated.pressure))
+        return curves.fitted_height(model, y_i, inflated, fill, height, tolerances, _builder(geometry))
     return curves.penalty_height(model, y_i, inflated, fill, height, tolerances, augmented)
 
 

@@ -72,10 +72,9 @@ def _next_fitted(model, history, fill, force, tol, unit):
 
 
 def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: Tolerances,
-                 progress=None, builder=results, check=None) -> list:
+                 progress=None, builder=results) -> list:
     """Compressed states (edge-fitted contact) at the forces Fhat, from the inflated unknowns y_i; ``builder``: the
-    module that builds them (``results``; ``capsulestates`` on the capsule); ``check(y, history, asked)``, if given,
-    raises ``OutOfRangeError`` for a solved state past the end of the range (``capsule.within_range``)."""
+    module that builds them (``results``; ``capsulestates`` on the capsule)."""
     p_i, states = inflated.pressure, []
     history: list[tuple[float, np.ndarray]] = []  # (sqrt(force), unknowns) of the states solved
     for k, fhat in enumerate(forces):
@@ -98,8 +97,6 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces,
                     y, iterations = _next_fitted(model, history, fill, force, tol, np.pi * p_i)
             except ConvergenceError as err:
                 raise _at_force(fhat, err) from err
-            if check is not None:
-                check(y, history, f"force = {fhat!r}")
             history.append((np.sqrt(force), y))
             states.append(builder.fitted_state(model, y, iterations, inflated, fill, fhat))
         if progress is not None:
@@ -108,13 +105,10 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces,
 
 
 def fitted_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height: float, tol: Tolerances,
-                  builder=results, check=None):
-    """The compressed state (edge-fitted contact) with the plate at ``height``; ``builder`` and ``check`` as for
-    ``fitted_curve``."""
+                  builder=results):
+    """The compressed state (edge-fitted contact) with the plate at ``height``; ``builder`` as for ``fitted_curve``."""
     y, iterations = fitted.first_contact(model, y_i, fill, fitted.A_FIRST / 4, tol)
     y, more = fitted.height_path(model, y, fill, height, tol)
-    if check is not None:
-        check(y, [], f"height = {height!r}")
     fhat = fitted.plate_force_of(model, y) / (np.pi * inflated.pressure)
     return builder.fitted_state(model, y, iterations + more, inflated, fill, fhat)
 

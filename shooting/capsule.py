@@ -29,11 +29,26 @@ with V = 2 v(pi/2) the whole capsule (v integrated from the edge: the volume bet
 equatorial plane) and the plate's height H = -eta(pi/2) (eta measured from the plate). Each force is solved by
 the continuation of ``pocket.shooting.compression``.
 
-The end of the range. No clamp ends it: the plates are infinite and the equator free. As the plates close, the
-stretches grow without bound for a liquid; the range ends where the force has a maximum (a softening law), or at
-the law's stretch limit (Gent's locking, or ``pocket.core.errors.STRETCH_LIMIT``). ``CapsuleProblem.end`` finds the
-maximum of the force along the branch by marching the plates' height down (height control: the third residual
-becomes (H - H_target) / lambda_I); past it the force given is an OutOfRangeError.
+Low inflation pressures. A shot from the pole to the equator amplifies an error near the pole about
+exp(pi / (2 sqrt(t)))-fold, t = lambda Phat_I / 2 (``amplification``; the theory's small-force section): the free
+part is shot in K segments (``CapsuleProblem.segments``), each amplifying at most ``_SEGMENT_GROWTH``-fold, their
+starts (rho, psi, lambda_1) unknowns and their continuity residuals; K = 1 (a single shot) down to Phat_I ~ 0.1,
+up to ``_SEGMENTS_MAX`` (Phat_I ~ 1e-3), below which a compression is a ConvergenceError saying why.
+
+A slack patch. At a low Phat_I (or a gas that yields) the pole's stretch under the plate falls with the force and
+can pass below that of the unstressed rubber (1 / lambda_p): the patch's tension at the pole vanishes and turns
+compressive, where a real membrane would wrinkle under the plate. No equation of the flat zone divides by its
+tension, so the shots go on (``integrate(..., slack=True)``) and such a state is returned flagged ``wrinkled`` with
+a warning saying where, as a pocket's compressive hoop tension is (``pocket.core.states``); at larger forces the
+stretch rises again and the flag clears.
+
+The end of the range. No clamp ends it: the plates are infinite and the equator free, and as the plates close the
+stretches grow without bound for a liquid. But where the patch goes slack, the compression can spread from the pole
+to the contact edge: there the free part leaves the plate with the curvature P / T_1 of its normal equilibrium,
+which grows without bound as T_1 at the edge falls to 0, and no membrane state lies beyond. Where a continuation
+step fails, ``CapsuleProblem.end`` marches the force up to the largest it reaches; if the edge's tension has fallen
+there below 1 % of the inflated capsule's, that force ends the range (an OutOfRangeError above it, saying so);
+otherwise no end is known (force inf) and the failure is a ConvergenceError saying where.
 """
 
 from __future__ import annotations
@@ -72,11 +87,12 @@ _N_CONTACT = 64  # most stored steps of the contact zone are the integrator's; a
 _LANDING = 1e-8  # how far the check shot of an inflated capsule may land from the closed form, where it amplifies
 # the integration's errors less than _TAME-fold
 _TAME = 1e3
-_AHEAD = (1e-2, 1e-3, 1e-4, 1e-5)  # relative steps of the force tried for the pole stretch's trend at a state
+_WILD = 1e6  # the amplification past which a check shot of the inflated capsule from its pole keeps too few digits
+_AHEAD = (1e-2, 1e-3, 1e-4, 1e-5)  # relative steps of the force tried for a neighbour of a state (``end``)
 _END_RATIO = 1.5  # the largest ratio of successive forces in the march to the end of the range
 _FORCE_CAP = 1e3  # ... and the force it stops at
-_WILD = 1e6  # the amplification past which a check shot of the inflated capsule from its pole keeps too few digits
-_SEGMENT_GROWTH = 100.0  # the most a segment of the free part may amplify errors (``CapsuleProblem.segments``)
+_EDGE_SLACK = 1e-2  # the edge's tension, relative to the inflated capsule's, below which a march's stop is the end
+_SEGMENT_GROWTH = 30.0  # the most a segment of the free part may amplify errors (``CapsuleProblem.segments``)
 _SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to about 1e-3)
 
 
@@ -254,7 +270,7 @@ class CapsuleProblem(Contact):
         tol = self.tolerance
         status, _, y, steps = integrate(pole_state(l0, self.law, 0.0, R_POLE, sphere=True), R_POLE, self.law, 0.0,
                                         rtol=tol.rtol, atol=tol.atol, store=store, r_end=a,
-                                        max_step=a / _N_CONTACT if store else np.inf, sphere=True)
+                                        max_step=a / _N_CONTACT if store else np.inf, sphere=True, slack=True)
         return status, y, steps
 
     def _shot(self, geometry, store):
@@ -352,11 +368,11 @@ class CapsuleProblem(Contact):
                        tension_2=t2 * scale, contact=contact)
 
     def end(self, seed) -> End:
-        """The end of the range from the solved (force, x) ``seed`` (module docstring): where the contact patch's
-        tension vanishes at the pole (lambda_0 = 1 / lambda_p). The pole's stretch is marched down from the seed to
-        there along the branch with the force unknown (unknowns (q, c, Fhat, nodes), e given, the first step along
-        the secant through the seed and a neighbour); an End at inf force where that march fails (the pole's
-        stretch has a minimum above it on the branch: it never vanishes)."""
+        """The end of the range from the solved (force, x) ``seed`` (module docstring): the force is marched up from
+        the seed (ratios up to ``_END_RATIO``, each state from the secant in log F through the last two, the ratio
+        shrunk where a step fails) to the largest it reaches; if the meridional tension at the contact edge has
+        fallen there below ``_EDGE_SLACK`` of the inflated capsule's, the range ends at that force (to the march's
+        1e-9); otherwise, or past ``_FORCE_CAP``, no end is known (force inf)."""
         if seed is None:  # a state at a small force, by the continuation every force is solved by; a failure on
             if self._last.get("ending"):  # its way asks for the end again: that one has none
                 return _NO_END
@@ -367,10 +383,8 @@ class CapsuleProblem(Contact):
                 return _NO_END
             finally:
                 self._last.pop("ending")
-        force, x = seed
-        pair = self._neighbour(force, x)
-        slack = (1.0 / self.law.prestretch - 1.0) / self.strain  # e at which the pole's tension vanishes
-        if pair is None or not self.stretch(x[1]) > 1.0 / self.law.prestretch:
+        pair = self._neighbour(*seed)
+        if pair is None:
             return _NO_END
         points = list(pair)  # (force, x) along the branch, in order of force
         ratio = _END_RATIO
@@ -380,22 +394,27 @@ class CapsuleProblem(Contact):
             guess = x1 + math.log(ratio) * (x1 - x0) / math.log(f1 / f0)
             sol = newton.solve(functools.partial(self._at_force, near), guess, tol=self.residual_tol,
                                floor=self.residual_floor)
-            if not sol.success:
+            if sol.success:
+                points.append((near, sol.x))
+                ratio = min(ratio * ratio, _END_RATIO)
+            else:
                 ratio = math.sqrt(ratio)
-                continue
-            points.append((near, sol.x))
-            ratio = min(ratio * ratio, _END_RATIO)
-        (f0, x0), (f1, x1) = points[-2:]
-        if not self.stretch(x1[1]) < self.stretch(x0[1]):  # the pole's stretch rises here: its minimum lies behind
+        force, x = points[-1]
+        if force >= _FORCE_CAP or self.edge_tension(x, force) >= _EDGE_SLACK * self.inflated_tension:
             return _NO_END
-        z0, z1 = (np.concatenate([[x[0], x[2], f], x[3:]]) for f, x in ((f0, x0), (f1, x1)))
-        guess = z1 + (slack - x1[1]) * (z1 - z0) / (x1[1] - x0[1])
-        sol = newton.solve(functools.partial(self._at_stretch, slack), guess, tol=self.residual_tol,
-                           floor=self.residual_floor)
-        if not (sol.success and sol.x[2] >= points[0][0]):  # (the march may have stepped a hair past it)
-            return _NO_END
-        z = sol.x
-        return End(force=float(z[2]), angle=0.0, fold=False, path=(), reason=SLACK_PATCH)
+        return End(force=float(force), angle=0.0, fold=False, path=(), reason=SLACK_EDGE)
+
+    @property
+    def inflated_tension(self) -> float:
+        """T / (E T) of the inflated capsule: Phat_I lambda_I / 2 (Laplace's law)."""
+        return 0.5 * self.inflated.pressure * self.inflated.stretch_pole
+
+    def edge_tension(self, x, force) -> float:
+        """T_1 / (E T) at the contact edge of the solved unknowns x at ``force``."""
+        _, _, a, _, _ = self.geometry(x, force)
+        edge = self.shoot(x, force)[4]
+        return float(tensions(edge[3], edge[0] / math.sin(a), self.law.code, self.law.params)[0]) * \
+            self.law.tension_scale
 
     def _neighbour(self, force, x):
         """[(force, x) and (a force a little below or above, its solved x)] in order of force, from the solved x at
@@ -414,10 +433,6 @@ class CapsuleProblem(Contact):
         """``residual(x, force)``, the force first (for ``functools.partial``)."""
         return self.residual(x, force)
 
-    def _at_stretch(self, e, z):
-        """The residuals at the pole strain ``e`` for z = (q, c, Fhat, nodes), None at Fhat <= 0 (``end``)."""
-        return self.residual(np.concatenate([[z[0], e, z[1]], z[3:]]), z[2]) if z[2] > 0.0 else None
-
     def untouched(self, state: CompressedState) -> CompressedState:
         """The inflated capsule seen as a compressed state at Fhat = 0 (``state``), with a capsule's keys."""
         inflated = self.inflated
@@ -428,8 +443,8 @@ class CapsuleProblem(Contact):
         return None
 
 
-#: the end of a capsule's range where the tension under the plate vanishes
-SLACK_PATCH = ("the contact patch's tension vanishes at the pole (T_1 = T_2 = 0): the membrane would wrinkle under "
-               "the plate, outside membrane theory")
+#: the end of a capsule's range where the meridional tension at the contact edge vanishes
+SLACK_EDGE = ("the meridional tension at the contact edge vanishes (the patch under the plate is slack up to its "
+              "edge): the free membrane would leave the plate with unbounded curvature, outside membrane theory")
 _NO_END = End(force=math.inf, angle=0.0, fold=False, path=(), locks=True,
               reason="the stretches grow without bound as the plates close")

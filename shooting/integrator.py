@@ -69,7 +69,7 @@ _EXPONENT = -1.0 / 8.0
 
 
 @functools.partial(compiled, inline="always")
-def _status(y, code, params, r, psi_max, sphere):
+def _status(y, code, params, r, psi_max, sphere, slack):
     l2 = y[0] / reference(r, sphere)[0]
     if not (y[0] > 0.0):
         return AXIS
@@ -79,14 +79,14 @@ def _status(y, code, params, r, psi_max, sphere):
         return SLACK
     if not inside_compiled(y[3], l2, code, params):
         return LOCKED
-    if not (tensions_compiled(y[3], l2, code, params)[0] > 0.0):
+    if not slack and not (tensions_compiled(y[3], l2, code, params)[0] > 0.0):
         return SLACK
     return OK
 
 
 @compiled
-def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, atol, h0, hmax, psi_max, sphere, store, A,
-               B, C, E3, E5):
+def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, atol, h0, hmax, psi_max, sphere, slack,
+               store, A, B, C, E3, E5):
     n = y0.size
     K = np.empty((_NS + 1, n))
     y = y0.copy()
@@ -163,14 +163,14 @@ def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, ato
             store[nstore, 0] = r
             store[nstore, 1:] = y
             nstore += 1
-        status = _status(y, code, params, r, psi_max, sphere)
+        status = _status(y, code, params, r, psi_max, sphere, slack)
         if status != OK:
             return status, r, y, nstore
     return STEPS, r, y, nstore
 
 
 def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi, r_end=1.0,
-              wrap=0.0, table=None, sphere=False):
+              wrap=0.0, table=None, sphere=False, slack=False):
     """Integrate the membrane equations from r0 to ``r_end`` (the clamp r = 1 unless given).
 
     y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). law: a ``pocket.shooting.laws.Law``.
@@ -186,7 +186,9 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     each row rho_k = sqrt(s_k): an 8th-order step across one is only 2nd-order accurate with an error its
     estimate does not see, so a step that would cross a row is shortened to end on it (secant in rho,
     within ``_LANDING``) and the next starts there, on the row's own piece. sphere: the reference surface is
-    the unit sphere (a capsule, r0 = sin r: ``equations.reference``) rather than the flat disc (r0 = r).
+    the unit sphere (a capsule, r0 = sin r: ``equations.reference``) rather than the flat disc (r0 = r). slack: a
+    vanishing or compressive t1 does not stop the integration (a flat contact zone on a plate, p = 0 and psi = 0:
+    no equation divides by t1 there; such a state is flagged wrinkled, ``pocket.core.states``).
 
     Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
     columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
@@ -198,7 +200,7 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     status, r_end, y_end, m = _integrate(
         np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(wrap),
         breaks, coef, np.sqrt(breaks), float(rtol), atol,
-        float(h0), float(max_step), float(psi_max), bool(sphere), buf, tableau.A, tableau.B, tableau.C, tableau.E3,
-        tableau.E5,
+        float(h0), float(max_step), float(psi_max), bool(sphere), bool(slack), buf, tableau.A, tableau.B, tableau.C,
+        tableau.E3, tableau.E5,
     )
     return int(status), float(r_end), y_end, buf[:m]

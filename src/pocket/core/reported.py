@@ -170,7 +170,8 @@ _SOLID = {
 
 #: the keys by what they describe (the documentation's sections)
 GROUPS: dict[str, dict[str, Reported]] = {
-    "state": _STATE, "contact patch": _CONTACT, "capsule": _CAPSULE, "membrane checks": _CHECKS, "rubber": _RUBBER, "fluid": _FLUID,
+    "state": _STATE, "contact patch": _CONTACT, "capsule": _CAPSULE, "membrane checks": _CHECKS, "rubber": _RUBBER,
+    "fluid": _FLUID,
     "solver and warnings": _RUN, "fem diagnostics": _FEM, "solid diagnostics": _SOLID,
 }
 
