@@ -71,7 +71,8 @@ def test_the_plans_press_capsules_from_the_inflated_state():
     """Both plans start at Fhat = 0 (the inflated capsule, the closed form's) and reach Fhat = 5, quick with fewer
     forces; their FE forces lie in the range of the shooting curve."""
     for plan in (DEFAULT, QUICK):
-        assert plan.capsules[0] == 0.0 and plan.capsules[-1] == 5.0
+        assert plan.capsules[0] == 0.0
+        assert plan.capsules[-1] == 5.0
         assert list(plan.capsules) == sorted(plan.capsules)
         assert all(0.0 <= f <= plan.capsules[-1] for f in plan.capsule_fem)
     assert len(QUICK.capsules) < len(DEFAULT.capsules)
@@ -102,7 +103,8 @@ def test_a_broken_balance_fails(curve):
     wide = dataclasses.replace(last, contact_radius_deformed=last.contact_radius_deformed * (1 + 1e-8))
     broken = dataclasses.replace(curve, shooting=(*curve.shooting[:-1], wide))
     [force] = [r for r in capsulechecks.checks([broken]) if r.quantity.startswith("F = P A_c")]
-    assert force.verdict == "fail" and force.error == pytest.approx(2e-8, rel=1e-3)
+    assert force.verdict == "fail"
+    assert force.error == pytest.approx(2e-8, rel=1e-3)
     tension = last.profile.tension_1.copy()
     tension[-1] *= 1 + 1e-6
     taut = dataclasses.replace(last, profile=dataclasses.replace(last.profile, tension_1=tension))
@@ -127,9 +129,11 @@ def test_the_figure_and_the_tables(curve):
     fig = capsulereport.figure([curve])
     [series] = [s for p in fig.panels for s in p.series]  # a gas at PRESSURE: panel (b) only
     np.testing.assert_allclose(series.y, [math.pi * f * curve.capsule.pressure for f in FORCES], rtol=1e-15)
-    assert series.x[0] == 0.0 and np.all(np.diff(series.x) > 0)
+    assert series.x[0] == 0.0
+    assert np.all(np.diff(series.x) > 0)
     header, rows = capsulereport.state_rows([curve])
-    assert len(rows) == len(FORCES) and header[:5] == ["case", "solver", "material", "fluid", "compression"]
+    assert len(rows) == len(FORCES)
+    assert header[:5] == ["case", "solver", "material", "fluid", "compression"]
     blocks = capsulereport.blocks([curve], None, capsulechecks.checks([curve]), fig.caption)
     text = document.markdown(blocks)
     assert "## A capsule between two plates" in text
