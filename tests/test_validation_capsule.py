@@ -139,3 +139,29 @@ def test_the_figure_and_the_tables(curve):
     assert "## A capsule between two plates" in text
     assert f"![{fig.caption} Data: capsules.csv.](capsules.png)" in text
     assert text.count(curve.capsule.label) >= 1
+
+
+@pytest.mark.slow
+def test_the_fe_model_agrees_on_every_capsule_of_the_quick_plan():
+    """Independent solvers: every capsule of the suite with an FE column, pressed at the quick plan's FE forces, passes
+    every check, and the FE rows cover every key of the capsule's contract at each force (each law and fluid)."""
+    assert QUICK.capsule_fem, "the quick plan runs the FE model on capsules"
+    curves = [capsules.solve(c, QUICK.capsules, QUICK.capsule_fem) for c in capsules.CASES if c.fem]
+    rows = capsulechecks.checks(curves)
+    assert [r for r in rows if r.verdict == "fail"] == []
+    for curve in curves:
+        fem = [r for r in rows if r.case == curve.capsule.name and r.comparison == capsulechecks.FEM]
+        for force in QUICK.capsule_fem:
+            keys = capsulechecks.INFLATED_KEYS if force == 0.0 else capsulechecks.COMPRESSED_KEYS
+            quantities = {r.quantity for r in fem if r.where == f"Fhat = {force:.4g}"}
+            assert quantities >= set(keys), (curve.capsule.name, force)
+
+
+@pytest.mark.slow
+def test_the_fe_model_converges_on_a_capsule_at_its_order():
+    """Convergence: the quick plan's meshes give the theory's order 4 within the pocket's tolerance for edge-fitted P2,
+    the finest error below FITTED_P2_FINEST, and Richardson's extrapolation holds shooting."""
+    sequence = capsules.sequence(QUICK.capsule_sizes)
+    rows = capsulechecks.order_checks(sequence)
+    assert {r.verdict for r in rows} == {"pass"}, [r for r in rows if r.verdict != "pass"]
+    assert {r.quantity for r in rows if r.step == "order"} == set(capsules.QUANTITIES)

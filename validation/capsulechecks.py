@@ -5,17 +5,17 @@ Per capsule (``capsules.Curve``), as ``verdicts.Check`` rows, the tolerances ``v
 - ``SPHERE``: the inflated capsule's Phat_I against the sphere's closed form at the solver's stretch,
   ``capsules.sphere_pressure`` (``capsule_sphere``);
 - ``BALANCES`` (per solver): F = P A_c, the force on the plate against the fluid's pressure on the patch
-  (``capsule_force``); the vertical balance at the equator, 2 pi rho T_1 = P pi rho^2 - F (``capsule_equator``,
-  the shooting solver's; the FE model's tension at its last node is a derivative, compared with shooting's
-  through the smallest tensions below); the fluid's law (``fluid``); the plate's reaction against the force asked
-  (the FE model's, ``fem_force``): each the worst over the curve's states;
+  (``capsule_force``); the vertical balance at the equator, 2 pi rho T_1 = P pi rho^2 - F (``capsule_equator``);
+  the fluid's law (``fluid``); the plate's reaction against the force asked (the FE model's, ``fem_force``): each
+  the worst over the curve's states;
 - ``FEM``: the FE model against shooting at each of its forces, on every key of the capsule's contract (the
   inflated state's at Fhat = 0) and the smallest tensions, and the distance between the meridians
-  (``fem_p2``, ``fem_tension``, ``fem_profile``);
+  (``capsule_fem``, ``fem_tension``, ``capsule_profile``);
 - the wrinkling verdict (``verdicts.membrane_checks``) of each solver's curve;
 - the FE model's mesh convergence (``capsules.sequence``): the observed order of each quantity against the theory's
-  4 (P2, a vertex on the contact edge: the pocket's ``convergence.EXPECTED`` for its edge-fitted meshes), and
-  Richardson's extrapolation against shooting (``convergence.RICHARDSON_FACTOR``).
+  4 (P2, a vertex on the contact edge: the pocket's ``convergence.EXPECTED`` for its edge-fitted meshes), the
+  finest mesh's error below the pocket's ``convergence.FITTED_P2_FINEST``, and Richardson's extrapolation against
+  shooting (``convergence.RICHARDSON_FACTOR``).
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 
 from .capsules import capsule_value, sphere_pressure
-from .convergence import EXPECTED, RICHARDSON_FACTOR, observed_order, richardson
+from .convergence import EXPECTED, FITTED_P2_FINEST, RICHARDSON_FACTOR, observed_order, richardson
 from .verdicts import TOLERANCES, Check, fluid_row, membrane_checks, profile_distance, relative, row
 
 __all__ = [
@@ -72,21 +72,19 @@ def _balances(name: str, label: str, states) -> list[Check]:
                  relative(s.extra["force_ETR"], math.pi * s.pressure * s.contact_radius_deformed**2),
                  TOLERANCES["capsule_force"][0]) for s in pressed]
     out.append(_worst(force, len(pressed)))
-    if label == "shooting":
-        equator = []
-        for s in pressed:
-            pull, balance = equator_balance(s)
-            scale = math.pi * s.pressure * float(s.extra["radius_equator"]) ** 2
-            equator.append(row(name, comparison, "consistency", "equator: 2 pi rho T_1 = P pi rho^2 - F",
-                               f"Fhat = {s.force:.4g}", pull, balance, abs(pull - balance) / scale,
-                               TOLERANCES["capsule_equator"][0]))
-        out.append(_worst(equator, len(pressed)))
-    else:
-        reaction = [row(name, comparison, "consistency", "plate's reaction = F", f"Fhat = {s.force:.4g}",
-                        s.extra["force_reaction"], s.force, relative(s.extra["force_reaction"], s.force),
-                        TOLERANCES["fem_force"][0]) for s in pressed if "force_reaction" in s.extra]
-        if reaction:
-            out.append(_worst(reaction, len(reaction)))
+    equator = []
+    for s in pressed:
+        pull, balance = equator_balance(s)
+        scale = math.pi * s.pressure * float(s.extra["radius_equator"]) ** 2
+        equator.append(row(name, comparison, "consistency", "equator: 2 pi rho T_1 = P pi rho^2 - F",
+                           f"Fhat = {s.force:.4g}", pull, balance, abs(pull - balance) / scale,
+                           TOLERANCES["capsule_equator"][0]))
+    out.append(_worst(equator, len(pressed)))
+    reaction = [row(name, comparison, "consistency", "plate's reaction = F", f"Fhat = {s.force:.4g}",
+                    s.extra["force_reaction"], s.force, relative(s.extra["force_reaction"], s.force),
+                    TOLERANCES["fem_force"][0]) for s in pressed if "force_reaction" in s.extra]
+    if reaction:  # the FE model's: the nodal reaction of the contact zone
+        out.append(_worst(reaction, len(reaction)))
     fluid = [fluid_row(name, comparison, f"Fhat = {s.force:.4g}", s) for s in pressed]
     out.append(_worst(fluid, len(pressed)))
     return out
@@ -103,14 +101,14 @@ def _fem_rows(curve) -> list[Check]:
         for key in keys:
             value, reference = capsule_value(a, key), capsule_value(b, key)
             out.append(row(name, FEM, step, key, where, value, reference, relative(value, reference),
-                           TOLERANCES["fem_p2"][0]))
+                           TOLERANCES["capsule_fem"][0]))
         for key in ("tension_1_min", "tension_2_min"):
             value, reference = getattr(a, key), getattr(b, key)
             out.append(row(name, FEM, step, key, where, value, reference, relative(value, reference),
                            TOLERANCES["fem_tension"][0]))
         distance = profile_distance(a, b)
         out.append(row(name, FEM, step, "profile (distance / R)", where, distance, 0.0, distance,
-                       TOLERANCES["fem_profile"][0]))
+                       TOLERANCES["capsule_profile"][0]))
     return out
 
 
@@ -142,6 +140,8 @@ def order_checks(sequence) -> list[Check]:
         p, tolerance, _ = expected.get(quantity, expected["height"])
         order = observed_order(sequence.sizes, errors)
         out.append(row("capsule", ORDER, "order", quantity, where, order, p, abs(order - p), tolerance))
+        out.append(row("capsule", ORDER, "finest error", quantity, where, errors[-1], 0.0, errors[-1],
+                       FITTED_P2_FINEST))
         extrapolated = richardson(sequence.sizes, sequence.values[quantity])
         reference = sequence.reference[quantity]
         if extrapolated is None:

@@ -13,7 +13,7 @@ import numpy as np
 
 from . import capsulechecks
 from .capsules import FORCE, GAS, PRESSURE, STUDY, capsule_value
-from .convergence import RICHARDSON_FACTOR, observed_order, richardson
+from .convergence import FITTED_P2_FINEST, RICHARDSON_FACTOR, observed_order, richardson
 from .plotdata import Figure, Panel, Series
 from .pockets import cell
 
@@ -103,9 +103,10 @@ def _convergence_blocks(sequence) -> list:
     return [("h", 3, "Mesh convergence on the capsule"),
             ("p", f"The FE model (P2, its default meshes, a vertex on the contact edge) on {STUDY.label} at Phat_I = "
                   f"{STUDY.pressure:g}, pressed to Fhat = {FORCE:g}, against shooting: the theory's order is 4 (the "
-                  "solution smooth in every element), checked as the pocket's edge-fitted meshes are; Richardson's "
-                  f"extrapolation from the three finest meshes must hold shooting within {RICHARDSON_FACTOR:g} of its "
-                  f"error estimates. {sequence.seconds:.1f} s."),
+                  "solution smooth in every element), checked as the pocket's edge-fitted meshes are, h the largest "
+                  f"element; the finest error must be below {FITTED_P2_FINEST:g} and Richardson's extrapolation "
+                  f"from the three finest meshes must hold shooting within {RICHARDSON_FACTOR:g} of its error "
+                  f"estimates. {sequence.seconds:.1f} s."),
             ("table", ["quantity", "elements", "observed order", "finest error", "Richardson", "shooting"], rows)]
 
 
@@ -129,9 +130,9 @@ def blocks(curves, sequence, checks, caption: str) -> list:
                  f"= {PRESSURE:g}, filled with a liquid and with a gas, and the paper's rubber at other Phat_I. "
                  "Checked: the inflated capsule against the sphere's closed form, Phat = w'(lambda) / (E lambda^2) "
                  "(tolerance capsule_sphere); at every state, F = P A_c (capsule_force), the equator's vertical "
-                 "balance 2 pi rho T_1 = P pi rho^2 - F (capsule_equator, shooting's) and the fluid's law (fluid); "
+                 "balance 2 pi rho T_1 = P pi rho^2 - F (capsule_equator) and the fluid's law (fluid); "
                  + ("the FE model against shooting on every key of the capsule's contract, the smallest tensions and "
-                    "the meridian (fem_p2, fem_tension, fem_profile), with its plate's reaction (fem_force)"
+                    "the meridian (capsule_fem, fem_tension, capsule_profile), with its plate's reaction (fem_force)"
                     if fem else "no FE model in this run (the plan's capsule FE forces are empty)")
                  + "; every state's tensions positive (the wrinkling verdict). The tolerances' reasons are in the "
                    f"section 'Tolerances'; every capsule state is in {CSV}."),

@@ -141,7 +141,7 @@ DEFAULT = Plan(
     convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 2)),
     thickness=((2.0, 5.0), (0.2, 0.5, 1.0)),
-    capsules=tuple(5.0 * (k / 20) ** 2 for k in range(21)),
+    capsules=tuple(round(5.0 * (k / 20) ** 2, 12) for k in range(21)),
 )
 
 QUICK = Plan(
@@ -151,5 +151,5 @@ QUICK = Plan(
     convergence_sizes={1: (32, 64, 128), 2: (16, 32, 64)},
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 1)),
     thickness=((5.0,), (0.5,)),
-    capsules=tuple(5.0 * (k / 10) ** 2 for k in range(11)),
+    capsules=tuple(round(5.0 * (k / 10) ** 2, 12) for k in range(11)),
 )
