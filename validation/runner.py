@@ -109,7 +109,8 @@ def _task(kind, key, pockets, args) -> Task:
     if kind == "solid":
         return Task(kind, f"sample {args[0]}", f"membrane and solid at {args[1]:g} kPa, {len(args[2])} forces", 0.0)
     if kind == "capsule":
-        return Task(kind, args[0].name, f"capsule: shooting at {len(args[1])} forces, FE P2 at {len(args[2])}", 0.0)
+        fe = f", FE P2 at {len(args[2])}" if args[0].fem and args[2] else ""
+        return Task(kind, args[0].name, f"capsule: shooting at {len(args[1])} forces{fe}", 0.0)
     if kind == "capsule convergence":
         return Task(kind, capsules.STUDY.name, f"capsule: FE P2 on {len(args[0])} meshes", 0.0)
     return Task(kind, "", "the paper's statements", 0.0)
