@@ -8,7 +8,9 @@ Newton unknown, closed by tangent contact, and a mesh vertex follows it, so
 that every element is smooth and the contact is exact) or on a fixed mesh by
 penalty with augmented-Lagrangian updates; a sphere (``surfaces``) edge-fitted too, the sheet in
 contact lying exactly on it (``obstacle``, ``wrapping``, ``wrapstates``), or by penalty on its vertical gap
-(``spherepenalty``). The rubber is any law of
+(``spherepenalty``). The reference surface is the flat clamped disc or the closed capsule, a sphere pressed between
+two parallel plates (``capsule``, ``capsulestates``: its upper half on the sphere's arc length, the equator on
+its plane of symmetry, the same kernel with the reference radius sin S). The rubber is any law of
 ``pocket.core.materials`` (a number is a Mooney-Rivlin alpha, ``mooney_rivlin``); the pocket holds
 a liquid (fixed volume) or a gas sealed at the initial pressure (the
 polytropic law ties the pressure to the volume).

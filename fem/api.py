@@ -32,6 +32,7 @@ P1 (error O(h^2)) gets 1024 elements by default: within 1e-6 of shooting.
 
 from __future__ import annotations
 
+import functools
 import pathlib
 from dataclasses import replace
 from typing import Any
@@ -44,11 +45,21 @@ from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Geometry
 from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
-from pocket.core.inputs import check_forces, check_positive, check_volume, quote
+from pocket.core.inputs import check_forces, check_non_negative, check_positive, check_volume, quote
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState
 
-from . import DEFAULT_ELEMENTS, DEFAULT_ELEMENTS_P1, SOLVER, curves, inflation, results, wrapping
+from . import (
+    DEFAULT_ELEMENTS,
+    DEFAULT_ELEMENTS_P1,
+    SOLVER,
+    capsule,
+    capsulestates,
+    curves,
+    inflation,
+    results,
+    wrapping,
+)
 from .gas import sealed
 from .model import FITTED, PENALTY, Control, Model, discretize
 from .newton import Tolerances
@@ -84,7 +95,9 @@ MIN_LENGTH = 1e-10
 CONTACTS: dict[type[Indenter], tuple[tuple[str, ...], bool]] = {
     Plate: ((FITTED, PENALTY), False), Sphere: ((FITTED, PENALTY), True), Profile: ((FITTED, PENALTY), True)}
 #: reference surface -> how the model poses it (``pocket.core.geometries``, ``model``)
-GEOMETRIES = {"pocket": "the meridian meshed in r = S on [0, 1], clamped at its end"}
+GEOMETRIES = {"pocket": "the meridian meshed in r = S on [0, 1], clamped at its end",
+              "capsule": "the upper half's meridian meshed in r = 2 S / pi on [0, 1], its end on the equator's "
+                         "plane of symmetry (``capsule``)"}
 
 
 def default_mesh(elements: int | None = None, order: int = 2) -> np.ndarray:
@@ -159,6 +172,19 @@ def _model(material, mesh, elements, order, penalty, geometry: Geometry = geomet
     return discretize(material, _nodes(mesh, elements, order), order, penalty, geometry)
 
 
+def _builder(geometry: Geometry):
+    """The module that builds the compressed states of ``geometry``: ``results``, or ``capsulestates``."""
+    return capsulestates if geometry is geometries.CAPSULE else results
+
+
+def _range_check(model: Model, y_i: np.ndarray, fill: Control, tol: Tolerances, pressure_initial: float):
+    """The check of a solved state against the end of the range that no clamp makes (``curves.fitted_curve``): the
+    capsule's slack patch (``capsule.within_range``), or None."""
+    if model.geometry is not geometries.CAPSULE:
+        return None
+    return functools.partial(capsule.within_range, model, y_i, fill, tol, np.pi * pressure_initial)
+
+
 def _tolerances(tol) -> Tolerances:
     tol = SOLVER.check_option("tol", tol)
     return Tolerances(tol, tol)
@@ -192,9 +218,11 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
         alpha = C2/C1 (``as_material``).
     pressure : float
         Phat = P R / (E T) > 0 (E = 3 mu_0 the rubber's small-strain Young's modulus, T its thickness, R the
-        clamp radius).
+        clamp radius, or the capsule's radius); >= 0 for the capsule (at 0, its unstressed sphere).
     geometry : Geometry or str, optional
-        The reference surface: None (the flat clamped disc) or one of ``GEOMETRIES``.
+        The reference surface: None (the flat clamped disc) or one of ``GEOMETRIES`` (``"capsule"``: the closed
+        sphere, its upper half solved; its states report the whole capsule's volume, the pole's or the plate's
+        height above the equatorial plane, and ``extra`` keys ``geometry`` and ``radius_equator``).
     mesh : numpy.ndarray or str or path, optional
         The nodes of [0, 1] (units R, shape (n+1,)) or a mesh file (any meshio format); None for the default mesh
         (``default_mesh``).
@@ -230,9 +258,19 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     H0/R = 0.4939
     >>> print(abs(state.height - shooting.inflate(47 / 160, 0.31).height) < 1e-5)
     True
+
+    The capsule inflates to a sphere of uniform stretch: its pole and its equator are as far from its centre,
+
+    >>> ball = fem.inflate(47 / 160, 0.31, geometry="capsule", elements=16)
+    >>> print(f"{ball.height:.4f} {ball.extra['radius_equator']:.4f}")
+    1.1196 1.1196
     """
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
+    if geometry is geometries.CAPSULE:
+        pressure = check_non_negative("pressure", pressure)
+        y, iterations = capsule.inflate(model, pressure, _tolerances(tol))
+        return capsulestates.inflated(model, y, iterations, pressure=pressure)
     pressure = check_positive("pressure", pressure)
     y, iterations = inflation.inflated_at(model, pressure, _tolerances(tol))
     return results.inflated(model, y, iterations, pressure=pressure)
@@ -277,6 +315,9 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
     volume = check_volume("volume", volume)
+    if geometry is geometries.CAPSULE:
+        y, iterations = capsule.inflate_volume(model, volume, _tolerances(tol))
+        return capsulestates.inflated(model, y, iterations, volume=volume)
     y, iterations = inflation.to_volume(model, volume, _tolerances(tol))
     return results.inflated(model, y, iterations, volume=volume)
 
@@ -287,16 +328,32 @@ def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements
     volume row's ``Control``) and whether the indenter is curved (``CONTACTS``)."""
     indenter, (methods, curved) = posed(CONTACTS, "fem", indenter)
     contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
+    if geometry is geometries.CAPSULE:
+        _capsule_contact(indenter, contact)
     model = _model(material, mesh, elements, order, penalty, geometry)
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)
+    if geometry is geometries.CAPSULE:  # the upper half's volume is the volume row's (``capsule``)
+        y_i, iterations = capsule.inflate(model, p_i, tol)
+        state = capsulestates.inflated(model, y_i, iterations, pressure=p_i)
+        fill = Control(volume=0.5 * state.volume, gas=sealed(fluid, p_i), indenter=indenter)
+        return model, contact, augmented, tol, y_i, state, fill, curved
     y_i, iterations = inflation.inflated_at(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
     fill = Control(volume=state.volume, gas=sealed(fluid, p_i), indenter=indenter)
     if contact == PENALTY and curved:
         model = replace(model, obstacle=surface(indenter))
     return model, contact, augmented, tol, y_i, state, fill, curved
+
+
+def _capsule_contact(indenter: Indenter, contact: str) -> None:
+    """InputError unless the capsule is pressed by the flat plates with the edge-fitted contact."""
+    if not isinstance(indenter, Plate):
+        raise InputError(f"the capsule is pressed between two flat plates: the {indenter.name} indenter does not "
+                         "apply to it")
+    if contact != FITTED:
+        raise InputError(f"contact = {contact!r} does not apply to the capsule (its method: {FITTED})")
 
 
 def compression_curve(material: MaterialLike, pressure_initial: float, forces: Numbers, *, fluid: FluidLike = None,
@@ -318,7 +375,8 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
         None or ``"liquid"`` (fixed volume), or a gas (``pocket.core.fluids.gas``) sealed at Phat_I, its
         ambient pressure as Phat_atm = P_atm R / (E T).
     indenter : Indenter, optional
-        None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``Sphere``, ``Profile``), lengths in units of R.
+        None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``Sphere``, ``Profile``), lengths in units of R;
+        the capsule is pressed between two flat plates only, with the fitted contact.
     geometry, mesh, elements, order, tol
         As for ``inflate``.
     progress : callable, optional
@@ -364,7 +422,8 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     if curved and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
-        return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress)
+        return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress, _builder(geometry),
+                                   _range_check(model, y_i, fill, tolerances, inflated.pressure))
     return curves.penalty_curve(model, y_i, inflated, fill, forces, tolerances, augmented, progress)
 
 
@@ -418,6 +477,12 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
     >>> rough = fem.compress(47 / 160, 0.31, 0.19, elements=16, contact="penalty")
     >>> print(abs(rough.pressure_ratio / state.pressure_ratio - 1) < 1e-2)
     True
+
+    A capsule between two plates, each pressing with Fhat: F = P A_c on each, its edge-fitted contact exact,
+
+    >>> squeezed = fem.compress(47 / 160, 0.31, 0.19, geometry="capsule", elements=16)
+    >>> print(abs(squeezed.pressure_ratio * squeezed.contact_area / 0.19 - 1) < 1e-12, squeezed.extra["geometry"])
+    True capsule
     """
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
                              **options)[0]
@@ -472,11 +537,12 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     if height > inflated.height:
         raise above_the_pocket(height, inflated.height)
     if height == inflated.height:
-        return results.uncompressed(inflated, fill, contact)
+        return _builder(geometry).uncompressed(inflated, fill, contact)
     if curved and contact == FITTED:
         return wrapping.at_height(model, y_i, inflated, fill, height, tolerances)
     if contact == FITTED:
-        return curves.fitted_height(model, y_i, inflated, fill, height, tolerances)
+        return curves.fitted_height(model, y_i, inflated, fill, height, tolerances, _builder(geometry),
+                                    _range_check(model, y_i, fill, tolerances, inflated.pressure))
     return curves.penalty_height(model, y_i, inflated, fill, height, tolerances, augmented)
 
 

@@ -8,6 +8,8 @@ natural parameter, the contact radius grows about linearly in it). All
 states share the reference mesh, so their unknown vectors extrapolate
 directly. If that solve fails or leaves the model, the force is reached by
 stepping (``fitted.force_path``) from the last state, which cuts its steps.
+The states are built by ``results`` (``capsulestates`` on the capsule: the
+caller says which).
 A force below ``fitted.SMALLEST_FORCE`` is not attempted (``ConvergenceError``
 saying why): the plate's balance at the edge would be lost in round-off.
 
@@ -70,13 +72,15 @@ def _next_fitted(model, history, fill, force, tol, unit):
 
 
 def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: Tolerances,
-                 progress=None) -> list:
-    """Compressed states (edge-fitted contact) at the forces Fhat, from the inflated unknowns y_i."""
+                 progress=None, builder=results, check=None) -> list:
+    """Compressed states (edge-fitted contact) at the forces Fhat, from the inflated unknowns y_i; ``builder``: the
+    module that builds them (``results``; ``capsulestates`` on the capsule); ``check(y, history, asked)``, if given,
+    raises ``OutOfRangeError`` for a solved state past the end of the range (``capsule.within_range``)."""
     p_i, states = inflated.pressure, []
     history: list[tuple[float, np.ndarray]] = []  # (sqrt(force), unknowns) of the states solved
     for k, fhat in enumerate(forces):
         if fhat == 0.0:
-            states.append(results.uncompressed(inflated, fill, FITTED))
+            states.append(builder.uncompressed(inflated, fill, FITTED))
         else:
             if fhat < fitted.SMALLEST_FORCE:
                 raise ConvergenceError(
@@ -94,19 +98,25 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces,
                     y, iterations = _next_fitted(model, history, fill, force, tol, np.pi * p_i)
             except ConvergenceError as err:
                 raise _at_force(fhat, err) from err
+            if check is not None:
+                check(y, history, f"force = {fhat!r}")
             history.append((np.sqrt(force), y))
-            states.append(results.fitted_state(model, y, iterations, inflated, fill, fhat))
+            states.append(builder.fitted_state(model, y, iterations, inflated, fill, fhat))
         if progress is not None:
             progress(k + 1, len(forces))
     return states
 
 
-def fitted_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height: float, tol: Tolerances):
-    """The compressed state (edge-fitted contact) with the plate at ``height``."""
+def fitted_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height: float, tol: Tolerances,
+                  builder=results, check=None):
+    """The compressed state (edge-fitted contact) with the plate at ``height``; ``builder`` and ``check`` as for
+    ``fitted_curve``."""
     y, iterations = fitted.first_contact(model, y_i, fill, fitted.A_FIRST / 4, tol)
     y, more = fitted.height_path(model, y, fill, height, tol)
+    if check is not None:
+        check(y, [], f"height = {height!r}")
     fhat = fitted.plate_force_of(model, y) / (np.pi * inflated.pressure)
-    return results.fitted_state(model, y, iterations + more, inflated, fill, fhat)
+    return builder.fitted_state(model, y, iterations + more, inflated, fill, fhat)
 
 
 def _touching(model: Model, y_i: np.ndarray, inflated) -> np.ndarray:

@@ -34,7 +34,7 @@ from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .continuation import follow
 from .geometry import evaluate, node_radii, place
-from .model import FITTED, Control, Model
+from .model import FITTED, Control, Model, edge
 from .newton import Tolerances
 from .steps import near_locking, solve
 
@@ -50,9 +50,9 @@ _HALVINGS = 6
 def touch(model: Model, inflated: np.ndarray, a: float) -> np.ndarray:
     """FITTED unknowns at contact radius ``a`` from the inflated (FREE) unknowns."""
     ref = model.ref
-    points = node_radii(place(model.xi, ref, a), ref)
+    points = node_radii(place(model.xi, ref, a, model.flat), ref)
     u = evaluate(place(model.xi, ref), ref, inflated[: model.dofs], points).ravel()
-    h = float(u[2 * ref.order + 1])  # eta at the edge node
+    h = float(u[edge(model) + 1])  # eta at the edge node
     u[model.tied()] = h
     u[0] = 0.0
     return np.concatenate([u, [inflated[model.dofs], h, a]])
@@ -60,7 +60,7 @@ def touch(model: Model, inflated: np.ndarray, a: float) -> np.ndarray:
 
 def plate_force_of(model: Model, y: np.ndarray) -> float:
     """F = pi P rho(a)^2 (units E T R), the plate force of a converged FITTED state."""
-    return float(np.pi * y[model.dofs] * y[2 * model.order] ** 2)
+    return float(np.pi * y[model.dofs] * y[edge(model)] ** 2)
 
 
 def first_contact(model: Model, inflated: np.ndarray, fill: Control, a: float,

@@ -51,6 +51,25 @@ parametrised) and
     F^a_c = 2 pi t_c [(w_1 - l2 w_12) V - w_11 r l1 V'],
     G^a_0 = 2 pi [(w_2 - l1 w_12) V' - w_22 (l2 / r) V],   G^a_1 = 0 (no penalty with the fitted mesh).
 
+The closed capsule (``pocket.core.geometries.CAPSULE``): the reference meridian is the quarter circle
+S in [0, pi/2], r0 = sin S, meshed in r = S / c on [0, 1] (c = pi/2, so that the mesh and its ALE map
+are the disc's). With x' = dx/dr, |x'| = c l1 and l2 = rho / r0(r), the energy is
+2 pi int w(l1, l2) r0 c dr and the volume -pi int rho^2 eta' dr is the upper half's with the
+equatorial plane (the whole capsule's is twice it). The same steps give
+
+    f_0 = 2 pi w_1 t_0 r0,   f_1 = 2 pi w_1 t_1 r0 + pi P rho^2,   g_0 = 2 pi (c w_2 + P rho eta'),
+    G = (2 pi r0 / c) [(w_11 - w_1/l1) t t + (w_1/l1) I],   N_00 = 2 pi (c w_22 / r0 + P eta'),
+
+M as above, and with r0' = dr0/dr = c cos(c r) (so that dl2/dr = -l2 r0' / r0)
+
+    F^a_c = 2 pi t_c [(w_1 - l2 w_12) r0' V - w_11 r0 l1 V'],
+    G^a_0 = 2 pi c [(w_2 - l1 w_12) V' - w_22 (l2 / r0) r0' V].
+
+The disc is c = 1, r0 = r, r0' = 1: the loop runs one code for both, and on the disc every product or
+quotient with c or r0' is by 1.0, exact (its numbers are bit for bit those of the disc's own formulas).
+The ALE map may put the first ``flat`` elements on the contact zone (``geometry.place``): V = r / a,
+V' = 1 / a on each of them.
+
 On element e (r = r_e + L_e t, t in [0, 1]) with the Gauss rule (w_q, t_q):
 int f v' dr = sum_q w_q f v'(t_q) and int g v dr = sum_q w_q L_e g v(t_q),
 where v' = dv/dt / L_e. ``evaluate`` runs these sums in one compiled pass
@@ -65,12 +84,17 @@ import dataclasses
 
 import numpy as np
 
+from pocket.core.geometries import DISC, Geometry, formulation
+
 from . import loops
 from .geometry import Placement
 from .material import Law
 from .reference import Reference
 
-__all__ = ["Contact", "Fields", "Linear", "element_dofs", "evaluate", "fields"]
+__all__ = ["SURFACES", "Contact", "Fields", "Linear", "element_dofs", "evaluate", "fields", "surface"]
+
+#: reference surface -> whether its reference radius is r0 = sin S (a sphere) rather than r0 = S (module docstring)
+SURFACES = {"pocket": False, "capsule": True}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -123,20 +147,33 @@ def element_dofs(ref: Reference, u: np.ndarray, elements: int) -> np.ndarray:
                                            writeable=False)
 
 
-def fields(ref: Reference, placement: Placement, u: np.ndarray, pressure: float) -> Fields:
-    """The state with nodal dofs ``u`` (shape (2 (p n + 1),)) at the quadrature points."""
+def surface(geometry: Geometry) -> tuple[float, bool]:
+    """(scale, sphere) of the reference surface ``geometry`` (module docstring): S = scale r on the mesh
+    coordinate r in [0, 1], and whether r0 = sin S (the capsule's sphere) rather than r0 = S (the flat disc)."""
+    return float(geometry.length), formulation(SURFACES, "fem", geometry)
+
+
+def fields(ref: Reference, placement: Placement, u: np.ndarray, pressure: float, geometry: Geometry = DISC) -> Fields:
+    """The state with nodal dofs ``u`` (shape (2 (p n + 1),)) at the quadrature points, on the reference surface
+    ``geometry``."""
     lengths = placement.lengths
     q = ref.weights.size
     values = element_dofs(ref, u, lengths.size) @ ref.interp
     rho, eta = values[:, :q], values[:, q:2 * q]
     drho, deta = values[:, 2 * q:3 * q] / lengths[:, None], values[:, 3 * q:] / lengths[:, None]
     l1 = np.sqrt(drho**2 + deta**2)
-    return Fields(placement.r, rho, eta, drho, deta, l1, rho / placement.r, lengths, pressure)
+    if geometry is DISC:
+        return Fields(placement.r, rho, eta, drho, deta, l1, rho / placement.r, lengths, pressure)
+    scale, _ = surface(geometry)
+    return Fields(placement.r, rho, eta, drho, deta, l1 / scale, rho / geometry.radius(scale * placement.r), lengths,
+                  pressure)
 
 
 def evaluate(law: Law, ref: Reference, placement: Placement, u: np.ndarray, pressure: float,
-             contact: Contact | None = None, tangent: bool = True, out: tuple | None = None) -> Linear:
-    """The forms of the module docstring at the state (``u``, P), with the element matrices if ``tangent``.
+             contact: Contact | None = None, tangent: bool = True, out: tuple | None = None,
+             geometry: Geometry = DISC) -> Linear:
+    """The forms of the module docstring at the state (``u``, P) on the reference surface ``geometry``, with the
+    element matrices if ``tangent``.
 
     ``out``: arrays to write them into, (vectors (4, N), matrices (n, s, s)), reused from call to
     call by the caller (a workspace: allocating fresh ones costs more than filling them at 1e5
@@ -149,9 +186,11 @@ def evaluate(law: Law, ref: Reference, placement: Placement, u: np.ndarray, pres
     vectors, matrices = out if out is not None else (np.empty((4, u.size)), None)
     if matrices is None:
         matrices = np.empty((n if tangent else 0, ref.local, ref.local))
+    scale, sphere = surface(geometry)
+    flat = 1 if placement.stretch_rate is None else int(np.count_nonzero(placement.stretch_rate > 0.0))
     force_h, force, volume, t1, t2 = loops.element_loop(
         np.ascontiguousarray(u, dtype=float), placement.vertices, ref.t, ref.weights, ref.phi, ref.dphi,
         float(pressure), law.code, law.params, float(height), float(penalty), np.ascontiguousarray(multiplier),
-        float(placement.a or 0.0), vectors, matrices)
+        float(placement.a or 0.0), vectors, matrices, scale, sphere, flat)
     return Linear(vectors[0], vectors[1], vectors[2], vectors[3], float(force_h), float(force), float(volume),
                   (float(t1), float(t2)), matrices)

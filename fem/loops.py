@@ -34,13 +34,15 @@ TWO_PI = 2.0 * np.pi
 
 @compiled
 def element_loop(u, vertices, t, wq, phi, dphi, pressure, code, params, height, penalty, multiplier, radius, vectors,
-                 matrices):
+                 matrices, scale=1.0, sphere=False, flat=1):
     """One pass over the elements.
 
     u: nodal dofs (N,); vertices: physical vertices (n + 1,); t, wq: Gauss points and weights on
     [0, 1] (Q,); phi, dphi: shape functions and t-derivatives there (Q, p + 1); pressure: P;
     code, params: the rubber law (``laws``); height, penalty, multiplier (n, Q): the penalty plate (penalty 0: none);
-    radius: the contact radius of the ALE map (0: none, dR/da is then zero). Written over:
+    radius: the contact radius of the ALE map (0: none, dR/da is then zero), whose first ``flat`` elements
+    map onto the contact zone; scale, sphere: the reference surface (``kernel``: S = scale r, and r0 = sin S
+    on the sphere, r0 = r on the flat disc, where scale is 1 and every product with it exact). Written over:
     ``vectors`` (4, N) gets R, dR/dP, dR/da, dF/dx; ``matrices`` (n, 2 (p + 1), 2 (p + 1)) the
     element tangents [test dof, trial dof], or has no rows when the tangent is not wanted.
 
@@ -60,9 +62,13 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, code, params, height, 
         first = 2 * p * e
         rate = 0.0  # V' = (dL/da) / L of the ALE map
         if radius > 0.0:
-            rate = 1.0 / radius if e == 0 else -1.0 / (1.0 - radius)
+            rate = 1.0 / radius if e < flat else -1.0 / (1.0 - radius)
         for q in range(t.size):
             r = r0 + length * t[q]
+            if sphere:
+                surface, slope = np.sin(scale * r), scale * np.cos(scale * r)
+            else:
+                surface, slope = r, 1.0
             rho = eta = drho = deta = 0.0
             for a in range(k):
                 rho += phi[q, a] * u[first + 2 * a]
@@ -71,28 +77,29 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, code, params, height, 
                 deta += dphi[q, a] * u[first + 2 * a + 1]
             drho /= length
             deta /= length
-            l1 = np.sqrt(drho * drho + deta * deta)
-            l2 = rho / r
+            norm = np.sqrt(drho * drho + deta * deta)
+            l1 = norm / scale
+            l2 = rho / surface
             w1, w2, w11, w12, w22 = laws.derivatives(code, params, l1, l2)
-            t0, t1 = drho / l1, deta / l1
+            t0, t1 = drho / norm, deta / norm
             scalars[3] = min(scalars[3], w1 / l2)
             scalars[4] = min(scalars[4], w2 / l1)
             weight = wq[q]
             trial = multiplier[e, q] + penalty * (eta - height)
             chi = 1.0 if (penalty > 0.0 and trial > 0.0) else 0.0
-            f0 = TWO_PI * w1 * t0 * r
-            f1 = TWO_PI * w1 * t1 * r + np.pi * pressure * rho * rho
-            g0 = TWO_PI * (w2 + pressure * rho * deta)
+            f0 = TWO_PI * w1 * t0 * surface
+            f1 = TWO_PI * w1 * t1 * surface + np.pi * pressure * rho * rho
+            g0 = TWO_PI * (scale * w2 + pressure * rho * deta)
             g1 = TWO_PI * chi * trial * r
             scalars[1] += weight * length * g1  # F = 2 pi int p_N r dr
             scalars[2] -= np.pi * weight * length * rho * rho * deta  # V
             stiff = TWO_PI * penalty * chi * r
             scalars[0] -= weight * length * stiff  # dF/dh
             if radius > 0.0:
-                velocity = r / radius if e == 0 else (1.0 - r) / (1.0 - radius)
-                common = TWO_PI * ((w1 - l2 * w12) * velocity - w11 * r * l1 * rate)
+                velocity = r / radius if e < flat else (1.0 - r) / (1.0 - radius)
+                common = TWO_PI * ((w1 - l2 * w12) * slope * velocity - w11 * surface * l1 * rate)
                 fa0, fa1 = common * t0, common * t1
-                ga0 = TWO_PI * ((w2 - l1 * w12) * rate - w22 * l2 / r * velocity)
+                ga0 = TWO_PI * scale * ((w2 - l1 * w12) * rate - w22 * l2 * slope / surface * velocity)
             else:
                 fa0 = fa1 = ga0 = 0.0
             for a in range(k):
@@ -106,10 +113,10 @@ def element_loop(u, vertices, t, wq, phi, dphi, pressure, code, params, height, 
                 force_x[first + 2 * a + 1] += stiff * pa
             if not tangent:
                 continue
-            along, across = TWO_PI * (w11 - w1 / l1) * r, TWO_PI * w1 / l1 * r
+            along, across = TWO_PI * (w11 - w1 / l1) * surface / scale, TWO_PI * w1 / l1 * surface / scale
             g00, g01, g11 = along * t0 * t0 + across, along * t0 * t1, along * t1 * t1 + across
             m00, m01 = TWO_PI * w12 * t0, TWO_PI * (w12 * t1 + pressure * rho)
-            n00, n11 = TWO_PI * (w22 / r + pressure * deta), stiff
+            n00, n11 = TWO_PI * (scale * w22 / surface + pressure * deta), stiff
             for a in range(k):  # the upper triangle (b >= a); K is symmetric
                 da, pa = dphi[q, a], phi[q, a]
                 for b in range(a, k):

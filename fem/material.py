@@ -12,7 +12,8 @@ by, if any) and s = 1 / (6 (1 + alpha)).
 
 Planar stretch at the clamp (``planar_stretch``): with lambda_2 = 1 the
 meridional tension is T_1 = w_1(l, 1); ``post`` measures T_1 there and needs
-the l that carries it. It is found by bracketing from a guess (the element's
+the l that carries it (at a capsule's equator lambda_2 = b, its radius, and T_1 = w_1(l, b) / b;
+Gent's domain below is then that of l^2 + b^2 + l^-2 b^-2). It is found by bracketing from a guess (the element's
 own slope) and Brent's method to 1e-15. A Gent rubber's planar stretch is
 confined to I1 - 3 = (l - 1/l)^2 < Jm, that is
 (sqrt(Jm + 4) - sqrt(Jm)) / 2 < l < (sqrt(Jm + 4) + sqrt(Jm)) / 2.
@@ -85,20 +86,22 @@ class Law:
         a, b = self.prestretch * np.asarray(a, dtype=float), self.prestretch * np.asarray(b, dtype=float)
         return float(np.min(1.0 - (a * a + b * b + (a * b) ** -2 - 3.0) / self.jm))
 
-    def planar_stretch(self, tension: float, guess: float) -> float:
-        """The stretch l with T_1(l, 1) = ``tension`` nearest ``guess`` (module docstring)."""
+    def planar_stretch(self, tension: float, guess: float, hoop: float = 1.0) -> float:
+        """The stretch l with T_1(l, ``hoop``) = ``tension`` nearest ``guess`` (module docstring; the hoop stretch
+        is 1 at a clamp, and the capsule's equatorial radius at its equator)."""
         low, high = 0.0, math.inf
         lp = self.prestretch
-        if not math.isinf(self.jm) and lp == 1.0:
+        if not math.isinf(self.jm) and lp == 1.0 and hoop == 1.0:
             root, wide = math.sqrt(self.jm), math.sqrt(self.jm + 4.0)
             low, high = 0.5 * (wide - root), 0.5 * (wide + root)
-        elif not math.isinf(self.jm):  # the roots u = l^2 of the quadratic of the module docstring
-            half = 0.5 * (3.0 + self.jm - lp * lp)
-            spread = math.sqrt(half * half - lp**-2)
-            low, high = math.sqrt(lp**-4 / (half + spread)), math.sqrt((half + spread) / (lp * lp))
+        elif not math.isinf(self.jm):  # the roots u = l^2 of the quadratic of the module docstring, b = hoop
+            lb = lp * hoop
+            half = 0.5 * (3.0 + self.jm - lb * lb)
+            spread = math.sqrt(half * half - lb**-2)
+            low, high = math.sqrt(lp**-4 / hoop**2 / (half + spread)), math.sqrt((half + spread) / (lp * lp))
 
         def gap(s):
-            return laws.derivatives(self.code, self.params, s, 1.0)[0] - tension
+            return laws.derivatives(self.code, self.params, s, hoop)[0] / hoop - tension
 
         if not low < guess < high:
             guess = 1.0

@@ -3,9 +3,12 @@ r"""The discrete model: unknowns, equations and their bordered tangent, for the 
 Unknowns y = [U, s]: U all 2 (p n + 1) nodal values of x = (rho, eta) (node j
 holds U[2j] = rho, U[2j + 1] = eta), s the scalar unknowns. Prescribed dofs
 keep their values (rho(0) = 0, and rho(1), eta(1) those of the reference surface's clamp,
-``Model.clamp``: 1 and 0); their rows are the identity in the tangent and zero in the residual.
+``Model.clamp``: 1 and 0; or eta(1) alone where the meridian ends on a plane of symmetry, ``Model.ends``);
+their rows are the identity in the tangent and zero in the residual.
 The reference surface is the flat clamped disc (``pocket.core.geometries``, ``api.GEOMETRIES``), whose
-arc length is the reference radius: the mesh's coordinate r is both.
+arc length is the reference radius: the mesh's coordinate r is both; or the closed capsule's upper half, meshed
+in r = 2 S / pi (``kernel``, ``capsule``): everything below holds for both, with the volume the upper half's and
+the plate's force the one on each plate.
 
 ``FREE`` (no plate, inflation), s = [P]: the membrane rows R(U; P) = 0 and one
 control row, P / P* - 1 (pressure control) or V(U) / V* - 1 (volume control).
@@ -24,6 +27,7 @@ the plate pressure (``kernel``); control rows V / V_I - 1 and h - h* (plate
 height) or (F(U, h) - F*) / F* (plate force F = 2 pi int p_N r dr).
 
 ``FITTED`` (edge-fitted mesh, exact contact), s = [P, h, a]. The first element
+(the first ``Model.flat`` elements: a quarter of the mesh on the capsule, whose flat zone is not uniform)
 is the contact zone [0, a] (``geometry``): its eta dofs (the set C) are tied to
 the plate, U_j = h, and its rows leave the system. The plate is a rigid body:
 with the force potential F h, stationarity in h is sum_C R_j + F = 0, so the
@@ -34,7 +38,7 @@ no line force at the edge: vertical equilibrium of the flat disc of deformed
 radius rho(a) gives F_plate = P pi rho(a)^2 + 2 pi a T_1 lambda_2 sin(psi)(a+),
 so the line force vanishes iff
 
-    T(y) = sum_C R_j + pi P U_E^2 = 0,      U_E = rho(a) (the dof of vertex 1).
+    T(y) = sum_C R_j + pi P U_E^2 = 0,      U_E = rho(a) (the dof of vertex ``flat``, ``edge``).
 
 Unlike the energy's derivative in a, which vanishes quadratically there (a
 configurational force ~ (line force)^2), T has a simple root. Rows:
@@ -63,7 +67,7 @@ import dataclasses
 
 import numpy as np
 
-from pocket.core.geometries import DISC, Clamp, Geometry, clamp_of
+from pocket.core.geometries import DISC, Clamp, Geometry, Symmetry, clamp_of
 from pocket.core.indenters import PLATE, Indenter
 
 from . import banded, condensed, kernel, spherepenalty
@@ -123,7 +127,8 @@ class Control:
 class Model:
     """A reference mesh ``xi`` (vertices, (n + 1,)), element tables, the rubber's law and the penalty;
     ``obstacle``, the surface (``surfaces.Surface``) of a curved indenter posed by penalty (None: the plate);
-    ``geometry``, the reference surface (``pocket.core.geometries``; the flat clamped disc).
+    ``geometry``, the reference surface (``pocket.core.geometries``; the flat clamped disc); ``flat``, the
+    elements of the flat contact zone of FITTED (1 on the disc, whose zone is uniform; more on the capsule's sphere).
 
     ``workspace`` holds the large arrays of ``linearize`` from one call to the next (a system it
     returns is valid until the next call, which is how Newton uses it).
@@ -135,6 +140,7 @@ class Model:
     penalty: float
     obstacle: Surface | None = None
     geometry: Geometry = DISC
+    flat: int = 1
     workspace: dict = dataclasses.field(default_factory=dict, repr=False)
 
     @property
@@ -160,37 +166,49 @@ class Model:
         """Half-bandwidth of the tangent: 2 p + 1."""
         return 2 * self.order + 1
 
+    def ends(self) -> dict[int, float]:
+        """The prescribed dofs and their values: rho(0) = 0, and at the meridian's end rho(1), eta(1) of a clamp
+        or eta(1) alone on a plane of symmetry (the capsule's equator, its radius free)."""
+        n, end = self.dofs, self.geometry.end
+        if isinstance(end, Symmetry):
+            return {0: 0.0, n - 1: end.height}
+        clamp = self.clamp
+        return {0: 0.0, n - 2: clamp.radius, n - 1: clamp.height}
+
     def fixed(self, mode: str) -> np.ndarray:
-        """Dofs held fixed in ``mode``: rho(0), rho(1), eta(1), and with FITTED (WRAPPED) the tied set C
+        """Dofs held fixed in ``mode``: rho(0), the end's (``ends``), and with FITTED (WRAPPED) the tied set C
         (the eta dofs of the contact zone, ``obstacle``)."""
-        n = self.dofs
-        bc = np.array([0, n - 2, n - 1])
+        bc = np.array(list(self.ends()))
         if mode == WRAPPED:
             return np.concatenate([bc, 2 * np.arange(self.order * contact_elements(self.elements) + 1) + 1])
         return np.concatenate([bc, self.tied()]) if mode == FITTED else bc
 
     def tied(self) -> np.ndarray:
-        """C: the eta dofs of the contact element's nodes (FITTED)."""
-        return 2 * np.arange(self.order + 1) + 1
+        """C: the eta dofs of the contact elements' nodes (FITTED)."""
+        return 2 * np.arange(self.order * self.flat + 1) + 1
 
 
 def discretize(material, nodes: np.ndarray, order: int, penalty: float, geometry: Geometry = DISC) -> Model:
     """The model of the rubber ``material`` (a Material, or a Mooney-Rivlin alpha: ``material.law_of``) on
-    the reference vertices ``nodes`` (arc lengths from the pole, checked by the caller) of the reference
-    surface ``geometry`` (one ``api.GEOMETRIES`` poses)."""
-    return Model(law_of(material), np.asarray(nodes, dtype=float), reference(order), penalty, geometry=geometry)
+    the reference vertices ``nodes`` (arc lengths from the pole over the meridian's length, checked by the caller)
+    of the reference surface ``geometry`` (one ``api.GEOMETRIES`` poses): on the capsule's sphere the flat
+    contact zone of FITTED is not uniform, and a quarter of the elements (``geometry.contact_elements``) map onto
+    it."""
+    nodes = np.asarray(nodes, dtype=float)
+    flat = 1 if geometry is DISC else contact_elements(nodes.size - 1)
+    return Model(law_of(material), nodes, reference(order), penalty, geometry=geometry, flat=flat)
 
 
 def edge(model: Model) -> int:
-    """Index of rho(a), the rho dof of vertex 1 (FITTED)."""
-    return 2 * model.order
+    """Index of rho(a), the rho dof of vertex ``model.flat`` (FITTED)."""
+    return 2 * model.order * model.flat
 
 
 def conform(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
     """A copy of y with the prescribed dofs at their values and (FITTED) the tied dofs at h."""
     out = np.array(y, dtype=float)
-    n, clamp = model.dofs, model.clamp
-    out[[0, n - 2, n - 1]] = 0.0, clamp.radius, clamp.height
+    n, ends = model.dofs, model.ends()
+    out[list(ends)] = list(ends.values())
     if mode == FITTED:
         out[model.tied()] = out[n + 1]
     return out
@@ -205,7 +223,7 @@ def placement(model: Model, y: np.ndarray, mode: str) -> Placement:
     """The physical elements of the state y."""
     if mode == WRAPPED:
         return place(model.xi, model.ref, y[model.dofs + 2], contact_elements(model.elements))
-    return place(model.xi, model.ref, y[model.dofs + 2] if mode == FITTED else None)
+    return place(model.xi, model.ref, y[model.dofs + 2] if mode == FITTED else None, model.flat)
 
 
 def _contact(model: Model, y: np.ndarray, mode: str, multiplier):
@@ -215,7 +233,7 @@ def _contact(model: Model, y: np.ndarray, mode: str, multiplier):
 def fields(model: Model, y: np.ndarray, mode: str) -> kernel.Fields:
     """The state y at the quadrature points."""
     u, s = split(model, y)
-    return kernel.fields(model.ref, placement(model, y, mode), u, s[0])
+    return kernel.fields(model.ref, placement(model, y, mode), u, s[0], model.geometry)
 
 
 def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool = False, out=None) -> kernel.Linear:
@@ -225,7 +243,7 @@ def forms(model: Model, y: np.ndarray, mode: str, multiplier=0.0, tangent: bool 
     if contact is not None and model.obstacle is not None:
         linear = kernel.evaluate(model.law, model.ref, place, u, s[0], None, tangent, out)
         return spherepenalty.add(model.ref, place, u, s[0], contact, model.obstacle, linear, tangent)
-    return kernel.evaluate(model.law, model.ref, place, u, s[0], contact, tangent, out)
+    return kernel.evaluate(model.law, model.ref, place, u, s[0], contact, tangent, out, model.geometry)
 
 
 def plate_force(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> float:
@@ -319,13 +337,13 @@ def _ratio(control: Control, pressure: float) -> tuple[float, float]:
 
 
 def _tied_column(model: Model, matrices: np.ndarray, out: np.ndarray) -> np.ndarray:
-    """k_C = K 1_C, written into ``out``, from the two elements that hold the tied dofs (the contact
-    element and the next)."""
-    local = np.zeros((2, model.ref.local))
-    local[0, 1::2] = 1.0  # every eta dof of the contact element
-    local[1, 1] = 1.0  # the edge vertex's eta dof, first in the next element
+    """k_C = K 1_C, written into ``out``, from the elements that hold the tied dofs (the contact
+    elements and the next)."""
+    local = np.zeros((model.flat + 1, model.ref.local))
+    local[:-1, 1::2] = 1.0  # every eta dof of the contact elements
+    local[-1, 1] = 1.0  # the edge vertex's eta dof, first in the next element
     out[:] = 0.0
-    for e in range(2):
+    for e in range(model.flat + 1):
         start = 2 * model.order * e
         out[start: start + model.ref.local] += matrices[e] @ local[e]
     return out

@@ -44,7 +44,8 @@ from pocket.core.states import Profile
 from .geometry import node_radii
 from .model import Model, forms, placement, split
 
-__all__ = ["R_FIT", "clamp_stretch", "pole_stretch", "profile", "reaction", "vertices"]
+__all__ = ["R_FIT", "clamp_stretch", "node_slope", "pole_stretch", "profile", "reaction", "reference_radius",
+           "vertices"]
 
 R_FIT = 1e-4  # smallest radius (units R) of the vertices the pole stretch is fitted to
 
@@ -61,12 +62,19 @@ def reaction(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> np.ndarr
     return forms(model, y, mode, multiplier).residual
 
 
+def reference_radius(model: Model, r: np.ndarray) -> np.ndarray:
+    """r0 at the mesh coordinates r: r itself on the flat disc, sin(pi r / 2) on the capsule's sphere (``kernel``)."""
+    geometry = model.geometry
+    return geometry.radius(r if geometry.length == 1.0 else geometry.length * r)
+
+
 def pole_stretch(model: Model, y: np.ndarray, mode: str) -> float:
-    """lambda_0 from rho/r at three vertices near the axis, extrapolated in r^2 (module docstring)."""
+    """lambda_0 from rho/r0 at three vertices near the axis, extrapolated in r^2 (module docstring; rho/r0 is even
+    in r on the sphere as on the disc)."""
     r, rho, _ = vertices(model, y, mode)
     k = max(int(np.searchsorted(r, R_FIT)), 1)
     k = min(k, r.size - 3)
-    x, s = r[k: k + 3] ** 2, rho[k: k + 3] / r[k: k + 3]
+    x, s = r[k: k + 3] ** 2, rho[k: k + 3] / reference_radius(model, r[k: k + 3])
     return float(s[0] * x[1] * x[2] / ((x[0] - x[1]) * (x[0] - x[2]))
                  + s[1] * x[0] * x[2] / ((x[1] - x[0]) * (x[1] - x[2]))
                  + s[2] * x[0] * x[1] / ((x[2] - x[0]) * (x[2] - x[1])))
@@ -91,7 +99,7 @@ def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float
     u, _ = split(model, y)
     r = node_radii(placement(model, y, mode), model.ref)
     rho, eta = u[0::2].copy(), u[1::2].copy()
-    l1 = _node_slope(model, y, mode)
+    l1 = node_slope(model, y, mode)
     l2 = np.empty_like(r)
     l2[1:] = rho[1:] / r[1:]
     l1[0] = l2[0] = pole
@@ -103,7 +111,7 @@ def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float
     return Profile(r, rho, eta, l1, l2, t1, t2, r <= contact_radius if contact_radius > 0 else r < 0)
 
 
-def _node_slope(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
+def node_slope(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
     """|x'| at the nodes: at a vertex the mean of the two adjacent elements' one-sided values, at a P2
     midpoint the element's own (the secant slope of its quadratic)."""
     u, _ = split(model, y)

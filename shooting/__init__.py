@@ -15,7 +15,8 @@ initial pressure (``pocket.core.fluids``; ``pocket.shooting.contact``). The stat
 ``pocket.shooting.equations``, the contact problems in ``pocket.shooting.plate`` and
 ``pocket.shooting.surface``, their range ends in ``pocket.shooting.plateend`` and
 ``pocket.shooting.surfaceend``. Every entry point also poses a closed capsule squeezed between two parallel plates
-(``geometry="capsule"``, ``pocket.shooting.capsule``). ``SOLVER`` is its record (entry points and options, ``pocket.core.solver``).
+(``geometry="capsule"``, ``pocket.shooting.capsule``). ``SOLVER`` is its record (entry points and options,
+``pocket.core.solver``).
 
 The entry points, with their types, are in ``pocket.shooting.api``; they are imported on first use, so
 that reading ``SOLVER`` (the command line does, to build its flags) costs nothing.

@@ -57,6 +57,7 @@ from pocket.core.states import CompressedState, InflatedState, Profile
 
 from . import brent, newton
 from .contact import Contact
+from .continuation import first_state
 from .end import End
 from .equations import pole_state
 from .integrator import OK, STATUS, integrate
@@ -71,8 +72,12 @@ _N_CONTACT = 64  # most stored steps of the contact zone are the integrator's; a
 _LANDING = 1e-8  # how far the check shot of an inflated capsule may land from the closed form, where it amplifies
 # the integration's errors less than _TAME-fold
 _TAME = 1e3
-_END_STEPS = 8  # steps of the pole's stretch from a state to the end of the range
-_WILD = 1e6  # the amplification past which a shot from the pole keeps too few digits to be solved (module docstring)
+_AHEAD = (1e-2, 1e-3, 1e-4, 1e-5)  # relative steps of the force tried for the pole stretch's trend at a state
+_END_RATIO = 1.5  # the largest ratio of successive forces in the march to the end of the range
+_FORCE_CAP = 1e3  # ... and the force it stops at
+_WILD = 1e6  # the amplification past which a check shot of the inflated capsule from its pole keeps too few digits
+_SEGMENT_GROWTH = 100.0  # the most a segment of the free part may amplify errors (``CapsuleProblem.segments``)
+_SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to about 1e-3)
 
 
 def amplification(pressure: float, stretch: float) -> float:
@@ -193,34 +198,53 @@ class CapsuleProblem(Contact):
         return _tolerance(self.rtol)
 
     @property
+    def growth(self) -> float:
+        """The amplification of a shot from the pole to the equator on this capsule (``amplification``)."""
+        return amplification(self.inflated.pressure, self.inflated.stretch_pole)
+
+    @property
+    def segments(self) -> int:
+        """K, the free part's segments: each amplifies errors at most ``_SEGMENT_GROWTH``-fold (growth^(1/K))."""
+        return max(1, math.ceil(math.log(self.growth) / math.log(_SEGMENT_GROWTH) - 1e-9))
+
+    @property
     def residual_floor(self) -> float:
-        """The stall accepted as the shots' noise: ``Contact``'s, times the amplification past ``_TAME``."""
-        inflated = self.inflated
-        return super().residual_floor * max(1.0, amplification(inflated.pressure, inflated.stretch_pole) / _TAME)
+        """The stall accepted as the shots' noise: ``Contact``'s (each segment amplifies its errors at most
+        ``_SEGMENT_GROWTH``-fold)."""
+        return super().residual_floor
 
     def conditioned(self) -> None:
-        """A ConvergenceError where a shot from the pole keeps too few digits (amplification past ``_WILD``)."""
-        inflated = self.inflated
-        growth = amplification(inflated.pressure, inflated.stretch_pole)
-        if growth > _WILD:
+        """A ConvergenceError where the segments needed would be past ``_SEGMENTS_MAX`` (module docstring)."""
+        if self.segments > _SEGMENTS_MAX:
             raise ConvergenceError(
-                f"capsule compression at Phat_I = {inflated.pressure!r}: a shot from the pole to the equator amplifies "
-                f"its errors about {growth:.1e}-fold at this low inflation pressure, too much to solve by single "
-                "shooting; the finite-element solver (fem) poses it", load=inflated.pressure)
+                f"capsule compression at Phat_I = {self.inflated.pressure!r}: a shot from the pole to the equator "
+                f"amplifies its errors about {self.growth:.1e}-fold at this low inflation pressure, more than "
+                f"{_SEGMENTS_MAX} shooting segments resolve; the finite-element solver (fem) poses it",
+                load=self.inflated.pressure)
 
     def start(self) -> np.ndarray:
-        """Unknowns (q, e, c) of the inflated capsule (Fhat -> 0)."""
-        return np.array([1.0, 1.0, 1.0 / self.inflated.stretch_pole])
+        """Unknowns (q, e, c, nodes) of the inflated capsule (Fhat -> 0): the nodes' (rho, psi, lambda_1) on its
+        sphere."""
+        lam = self.inflated.stretch_pole
+        arcs = self._nodes(0.0)
+        nodes = np.column_stack([lam * np.sin(arcs), arcs, np.full_like(arcs, lam)]).ravel()
+        return np.concatenate([[1.0, 1.0, 1.0 / lam], nodes])
+
+    def _nodes(self, a: float) -> np.ndarray:
+        """The arc lengths of the free part's interior nodes, dividing [a, pi/2] into ``segments`` equal parts."""
+        k = self.segments
+        return a + (0.5 * math.pi - a) * np.arange(1, k) / k
 
     def geometry(self, x, force):
-        """(q, lambda_0, a_c, p) for unknowns x at ``force``, or None outside the model's domain."""
-        q, e, c = x
+        """(q, lambda_0, a_c, p, nodes) for unknowns x at ``force`` (nodes: shape (K - 1, 3), each node's (rho, psi,
+        lambda_1)), or None outside the model's domain."""
+        q, e, c = x[:3]
         l0 = self.stretch(e)
         scale = math.sqrt(force) if self.height is None else 1.0
         a = c * scale
         if not (q > 0.0 and l0 > 0.0 and 0.0 < a < 0.5 * math.pi and force > 0.0):
             return None
-        return q, l0, a, self.law.pressure_factor * self.inflated.pressure * q
+        return q, l0, a, self.law.pressure_factor * self.inflated.pressure * q, np.reshape(x[3:], (-1, 3))
 
     def _zone(self, l0, a, store):
         """(status, y(a), steps) of the contact zone from the pole to the edge a (p = 0, psi = 0)."""
@@ -234,17 +258,33 @@ class CapsuleProblem(Contact):
         return status, y, steps
 
     def _shot(self, geometry, store):
-        """(status, y(pi/2), steps of the free part, steps of the contact zone) at ``geometry``."""
-        _q, l0, a, p = geometry
+        """(status, y(pi/2), steps of the free part, steps of the contact zone, y(a), the segments' mismatches at
+        the nodes) at ``geometry``: each segment of the free part shot from its node (the first from the edge),
+        eta and v summed over the segments (the steps' too)."""
+        _q, l0, a, p, nodes = geometry
         status, edge, zone = self._zone(l0, a, store)
         if status != OK:
             return status, edge, np.empty((0, 6)), zone
-        start = np.array([edge[0], 0.0, 0.0, edge[3], 0.0])
         tol = self.tolerance
-        status, _, y, steps = integrate(start, a, self.law, p, rtol=tol.rtol, atol=tol.atol, store=store,
-                                        r_end=0.5 * math.pi, max_step=PROFILE_STEP if store else np.inf,
-                                        psi_max=PSI_MAX_EDGE, sphere=True)
-        return status, y, steps, zone, edge
+        ends = [*self._nodes(a), 0.5 * math.pi]
+        starts = [(edge[0], 0.0, edge[3]), *map(tuple, nodes)]
+        offset, pieces, mismatches = np.zeros(5), [], []
+        for k, (begin, end) in enumerate(zip([a, *ends[:-1]], ends, strict=True)):
+            rho, psi, l1 = starts[k]
+            status, _, y, steps = integrate(np.array([rho, 0.0, psi, l1, 0.0]), begin, self.law, p, rtol=tol.rtol,
+                                            atol=tol.atol, store=store, r_end=end,
+                                            max_step=PROFILE_STEP if store else np.inf, psi_max=PSI_MAX_EDGE,
+                                            sphere=True)
+            if status != OK:
+                return status, y, np.empty((0, 6)), zone
+            if k + 1 < len(starts):
+                mismatches.extend(y[[0, 2, 3]] - np.asarray(starts[k + 1]))
+            y = y + offset * np.array([0.0, 1.0, 0.0, 0.0, 1.0])
+            if store:
+                pieces.append(steps[:, 1:] + offset * np.array([0.0, 1.0, 0.0, 0.0, 1.0]))
+                pieces[-1] = np.column_stack([steps[:, 0], pieces[-1]])[(1 if k else 0):]
+            offset = y
+        return status, y, np.vstack(pieces) if store else np.empty((0, 6)), zone, edge, mismatches
 
     def residual(self, x, force, angle=None):
         """The three residuals at ``force`` (module docstring); None where a shot stops or x is outside."""
@@ -260,7 +300,7 @@ class CapsuleProblem(Contact):
             last = x[0] * edge[0] ** 2 / force - 1.0
         else:
             last = (-y[1] - self.height) / inflated.stretch_pole
-        return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last])
+        return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last, *shot[5]])
 
     def clamp_angle(self, x, force) -> float:
         """No clamp: 0, so that the continuation's test of the clamp plane never fires."""
@@ -271,8 +311,8 @@ class CapsuleProblem(Contact):
 
     def compressed(self, force, x, fluid) -> tuple[CompressedState, float]:
         """The compressed state at ``force`` for the solved unknowns x, and 0 (no clamp angle)."""
-        q, l0, a, _ = self.geometry(x, force)
-        status, y, _, _, edge = self.shoot(x, force)
+        q, l0, a, _, _ = self.geometry(x, force)
+        status, y, _, _, edge, _ = self.shoot(x, force)
         stored = self.shoot(x, force, store=20000)
         for what, code in (("final", status), ("profile", stored[0])):
             if code != OK:
@@ -313,14 +353,13 @@ class CapsuleProblem(Contact):
 
     def end(self, seed) -> End:
         """The end of the range from the solved (force, x) ``seed`` (module docstring): where the contact patch's
-        tension vanishes at the pole (lambda_0 = 1 / lambda_p). If the pole's stretch falls as the force grows at
-        the seed, it is marched down to there with the force unknown (unknowns (q, c, Fhat), e given); an End at inf
-        force where it rises, or where that march fails (a minimum of the pole's stretch on the way)."""
+        tension vanishes at the pole (lambda_0 = 1 / lambda_p). The pole's stretch is marched down from the seed to
+        there along the branch with the force unknown (unknowns (q, c, Fhat, nodes), e given, the first step along
+        the secant through the seed and a neighbour); an End at inf force where that march fails (the pole's
+        stretch has a minimum above it on the branch: it never vanishes)."""
         if seed is None:  # a state at a small force, by the continuation every force is solved by; a failure on
             if self._last.get("ending"):  # its way asks for the end again: that one has none
                 return _NO_END
-            from .compression import first_state  # (here: compression imports this module)
-
             self._last["ending"] = True
             try:
                 seed = first_state(self, 1e-3)
@@ -329,33 +368,55 @@ class CapsuleProblem(Contact):
             finally:
                 self._last.pop("ending")
         force, x = seed
-        ahead = newton.solve(lambda v: self.residual(v, 1.01 * force), x, tol=self.residual_tol,
-                             floor=self.residual_floor)
+        pair = self._neighbour(force, x)
         slack = (1.0 / self.law.prestretch - 1.0) / self.strain  # e at which the pole's tension vanishes
-        if not ahead.success or ahead.x[1] >= x[1] or slack >= x[1]:
+        if pair is None or not self.stretch(x[1]) > 1.0 / self.law.prestretch:
             return _NO_END
-        # (e, z) along the branch, z = (q, c, Fhat): each state seeded by the secant through the last two
-        points = [(x[1], np.array([x[0], x[2], force])), (ahead.x[1], np.array([ahead.x[0], ahead.x[2], 1.01 * force]))]
-        step = (slack - points[-1][0]) / _END_STEPS
-        while points[-1][0] > slack:
-            (e0, z0), (e1, z1) = points[-2:]
-            e = max(slack, e1 + step)
-            guess = z1 + (e - e1) * (z1 - z0) / (e1 - e0)
-            sol = newton.solve(functools.partial(self._at_stretch, e), guess, tol=self.residual_tol,
+        points = list(pair)  # (force, x) along the branch, in order of force
+        ratio = _END_RATIO
+        while points[-1][0] < _FORCE_CAP and ratio > 1.0 + 1e-9:
+            (f0, x0), (f1, x1) = points[-2:]
+            near = f1 * ratio
+            guess = x1 + math.log(ratio) * (x1 - x0) / math.log(f1 / f0)
+            sol = newton.solve(functools.partial(self._at_force, near), guess, tol=self.residual_tol,
                                floor=self.residual_floor)
-            if sol.success:
-                points.append((e, sol.x))
-                step *= 1.5
-            elif abs(step) > 1e-4 * (x[1] - slack):
-                step *= 0.5
-            else:
-                return _NO_END
-        z = points[-1][1]
+            if not sol.success:
+                ratio = math.sqrt(ratio)
+                continue
+            points.append((near, sol.x))
+            ratio = min(ratio * ratio, _END_RATIO)
+        (f0, x0), (f1, x1) = points[-2:]
+        if not self.stretch(x1[1]) < self.stretch(x0[1]):  # the pole's stretch rises here: its minimum lies behind
+            return _NO_END
+        z0, z1 = (np.concatenate([[x[0], x[2], f], x[3:]]) for f, x in ((f0, x0), (f1, x1)))
+        guess = z1 + (slack - x1[1]) * (z1 - z0) / (x1[1] - x0[1])
+        sol = newton.solve(functools.partial(self._at_stretch, slack), guess, tol=self.residual_tol,
+                           floor=self.residual_floor)
+        if not (sol.success and sol.x[2] >= points[0][0]):  # (the march may have stepped a hair past it)
+            return _NO_END
+        z = sol.x
         return End(force=float(z[2]), angle=0.0, fold=False, path=(), reason=SLACK_PATCH)
 
+    def _neighbour(self, force, x):
+        """[(force, x) and (a force a little below or above, its solved x)] in order of force, from the solved x at
+        ``force``; None if no neighbour solves (the steps ``_AHEAD``, above first)."""
+        for sign in (1.0, -1.0):
+            for step in _AHEAD:
+                near = (1.0 + sign * step) * force
+                sol = newton.solve(functools.partial(self._at_force, near), x, tol=self.residual_tol,
+                                   floor=self.residual_floor)
+                if sol.success:
+                    pair = [(force, x), (near, sol.x)]
+                    return pair if sign > 0 else pair[::-1]
+        return None
+
+    def _at_force(self, force, x):
+        """``residual(x, force)``, the force first (for ``functools.partial``)."""
+        return self.residual(x, force)
+
     def _at_stretch(self, e, z):
-        """The residuals at the pole strain ``e`` for z = (q, c, Fhat), None at Fhat <= 0 (``end``)."""
-        return self.residual(np.array([z[0], e, z[1]]), z[2]) if z[2] > 0.0 else None
+        """The residuals at the pole strain ``e`` for z = (q, c, Fhat, nodes), None at Fhat <= 0 (``end``)."""
+        return self.residual(np.concatenate([[z[0], e, z[1]], z[3:]]), z[2]) if z[2] > 0.0 else None
 
     def untouched(self, state: CompressedState) -> CompressedState:
         """The inflated capsule seen as a compressed state at Fhat = 0 (``state``), with a capsule's keys."""

@@ -188,10 +188,26 @@ def test_the_range_ends_where_the_patch_goes_slack():
 
 
 def test_refusals():
-    """One line each: a sphere between the plates is not posed; a pressure too low for single shooting fails with
-    its reason (the amplification of the pole's errors)."""
+    """One line each: a sphere between the plates is not posed; a pressure so low that even the most shooting
+    segments cannot hold the amplification of the pole's errors fails with that reason."""
     with pytest.raises(InputError, match="between two flat plates"):
         shooting.compress(0.2, 0.2, 0.1, geometry="capsule", indenter=Sphere(0.5))
     assert amplification(0.02, 1.005) > 1e6 > amplification(0.1, 1.025)
     with pytest.raises(ConvergenceError, match="amplifies its errors"):
-        shooting.compress(0.2, 0.02, 0.1, geometry="capsule")
+        shooting.compress(0.2, 1e-4, 1e-3, geometry="capsule")
+
+
+@pytest.mark.parametrize("phat", [0.005, 0.02, 0.05])
+def test_multiple_shooting_at_low_pressure(phat):
+    """At low Phat_I the free part is shot in segments (each amplifying errors at most 100-fold): the states still
+    hold F = P A_c, the equator's vertical balance and the volume, and converge in the integration tolerance."""
+    forces = [0.1 * phat, 0.5 * phat]
+    coarse = shooting.compression_curve(0.0, phat, forces, geometry="capsule")
+    fine = shooting.compression_curve(0.0, phat, forces, geometry="capsule", rtol=1e-12)
+    for force, a, b in zip(forces, coarse, fine, strict=True):
+        np.testing.assert_allclose(_values(a), _values(b), rtol=1e-8)
+        assert a.pressure_ratio * a.contact_area == pytest.approx(force, rel=1e-10)
+        rho = a.extra["radius_equator"]
+        pull = 2.0 * math.pi * rho * a.profile.tension_1[-1]
+        assert pull == pytest.approx(math.pi * (a.pressure * rho**2 - force * phat), rel=1e-8)
+        assert a.volume == pytest.approx(a.inflated.volume, rel=1e-10)
