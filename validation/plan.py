@@ -142,6 +142,8 @@ DEFAULT = Plan(
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 2)),
     thickness=((2.0, 5.0), (0.2, 0.5, 1.0)),
     capsules=tuple(round(5.0 * (k / 20) ** 2, 12) for k in range(21)),
+    capsule_fem=(0.0, 0.2, 1.25, 3.2, 5.0),
+    capsule_sizes=(32, 64, 128, 256),
 )
 
 QUICK = Plan(
@@ -152,4 +154,6 @@ QUICK = Plan(
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 1)),
     thickness=((5.0,), (0.5,)),
     capsules=tuple(round(5.0 * (k / 10) ** 2, 12) for k in range(11)),
+    capsule_fem=(0.0, 1.25, 5.0),
+    capsule_sizes=(32, 64, 128),
 )
