@@ -37,7 +37,7 @@ import numpy as np
 
 from pocket.core.errors import InputError
 from pocket.core.fluids import as_fluid
-from pocket.core.geometries import posed
+from pocket.core.geometries import Symmetry, posed
 from pocket.core.indenters import as_indenter
 from pocket.core.inputs import check_force, check_positive
 from pocket.core.states import CompressedState
@@ -122,6 +122,9 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     law = law_of(material)
+    if isinstance(geometry.end, Symmetry) and pressure_initial == 0:
+        raise InputError("pressure = 0: a capsule is pressed from an inflated state here (Fhat = F / (P_I pi R^2) "
+                         "needs P_I > 0); the unpressurised capsule is not posed yet")
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
     indenter = as_indenter(indenter)

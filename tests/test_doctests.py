@@ -39,6 +39,8 @@ MODULES = (
     # a fit is seconds of solves (each example makes one): the slow lane
     pytest.param("pocket.apps.fit.leastsquares", marks=pytest.mark.slow),
     pytest.param("pocket.apps.fit.report", marks=pytest.mark.slow),
+    "pocket.apps.fit.capsuledata",
+    pytest.param("pocket.apps.fit.capsuletest", marks=pytest.mark.slow),
     "pocket.apps.sweep.grid",
     "pocket.apps.sweep.workers",
     "pocket.apps.vtk.files",

@@ -32,7 +32,10 @@ WRITTEN = {
     "sheet.prestretch": ("a number", "1", f"lambda_p, the equibiaxial stretch the sheet is clamped with, 1 to "
                                         f"{PRESTRETCH_LIMIT:g}; thickness and parameters stay the unstretched "
                                         "rubber's"),
-    "clamp.radius": ("a length", "required", "R, the clamp's radius"),
+    "geometry": ("text", "pocket", "the membrane: pocket (a flat sheet clamped at its rim, `[clamp]`) or capsule (a "
+                                   "closed sphere squeezed between two parallel plates, `[capsule]`)"),
+    "clamp.radius": ("a length", "required for a pocket", "R, the clamp's radius"),
+    "capsule.radius": ("a length", "required for a capsule", "R, the capsule's radius (its wall: `sheet.thickness`)"),
     "fluid.kind": ("text", "liquid", f"{' or '.join(rubbers.FLUIDS)}: a liquid keeps its volume, an ideal gas "
                                      "sealed at P_I is compressed"),
     "fluid.ambient": ("a pressure", f"{AMBIENT / 1000:g} kPa", "a gas's ambient (absolute) pressure"),

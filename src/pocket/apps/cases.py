@@ -35,6 +35,19 @@
                                          # sheet.thickness / clamp.radius); a mesh file name is relative
                                          # to the case file's folder
 
+A closed capsule squeezed between two parallel plates (``pocket.core.geometries.CAPSULE``) is the same case with
+``geometry = "capsule"`` at the top and its radius in place of the clamp's::
+
+    geometry = "capsule"                 # optional: "pocket" (default, the clamped sheet) or "capsule"
+    [capsule]                            # a capsule's table, in place of [clamp]
+    radius = "50 um"                     # R, the undeformed sphere's radius (the wall: sheet.thickness)
+
+Its lengths are in units of R, its forces F on each plate; ``initial.height`` is the inflated capsule's pole
+height above its equatorial plane (lambda R, half its height), ``initial.volume`` the whole capsule's, and
+``loads.heights`` each plate's distance from the equatorial plane (half the gap between the plates). Only the
+flat plates press a capsule; a solver or an indenter that does not pose it refuses the case in one line
+before any work.
+
 The rubber and the fluid are read by ``pocket.apps.rubbers``. E = 3 mu_0 (mu_0 the
 small-strain shear modulus; 6 (C1 + C2) for Mooney-Rivlin) makes pressures
 dimensionless as Phat = P R / (E T), and a gas's ambient pressure as
@@ -69,6 +82,7 @@ import pathlib
 
 from pocket.core.errors import InputError
 from pocket.core.fluids import LIQUID, Fluid
+from pocket.core.geometries import CAPSULE, DISC, GEOMETRIES, Geometry
 from pocket.core.indenters import PLATE, Indenter
 from pocket.core.inputs import check_volume, quote
 from pocket.core.materials import LAWS, Material
@@ -80,7 +94,8 @@ from .rubbers import PARAMETERS, fluid, sheet
 from .solvers import SOLVERS, record
 from .tomlfiles import read_toml
 
-__all__ = ["MAX_LOADS", "SAMPLES", "Case", "load", "parse", "sample"]
+__all__ = ["EXAMPLES", "MAX_LOADS", "RADIUS_TABLES", "SAMPLES", "Case", "capsule_example", "example", "load", "parse",
+           "sample"]
 
 #: the option of a solver that models the sheet's thickness (``pocket.solid``): a case derives it from its sheet
 THICKNESS_RATIO = "thickness_ratio"
@@ -88,8 +103,12 @@ THICKNESS_RATIO = "thickness_ratio"
 #: most loads a case may list: a bound on the work a case can ask for (the file's size: ``tomlfiles``)
 MAX_LOADS = 10_000
 
-_SECTIONS = {"name": None, "label": None, "tags": None,
+#: geometry -> the table that holds its radius R (``radius``): a pocket's clamp, a capsule's sphere
+RADIUS_TABLES = {DISC.name: "clamp", CAPSULE.name: "capsule"}
+
+_SECTIONS = {"name": None, "label": None, "tags": None, "geometry": None,
              "sheet": ("thickness", "material", *PARAMETERS, "modulus", "alpha", "prestretch"), "clamp": ("radius",),
+             "capsule": ("radius",),
              "fluid": ("kind", "ambient", "gamma"),
              "initial": ("pressure", "height", "volume"), "loads": ("forces", "heights"),
              "indenter": indentertable.KEYS,
@@ -113,7 +132,7 @@ class Case:
     material : Material
         The rubber, its stresses in Pa.
     radius : float
-        The clamp radius R, m.
+        R, m: the clamp radius of a pocket, the radius of a capsule.
     initial : tuple
         ``("pressure", P_I)`` in Pa, ``("height", H0)`` in m or ``("volume", V)`` in m^3.
     load_kind : str
@@ -131,6 +150,9 @@ class Case:
         About the inputs (a plain length that looks like millimetres, a thick sheet), one line each.
     indenter : Indenter
         What presses, dimensionless (lengths in units of the clamp radius).
+    geometry : Geometry
+        The membrane (``pocket.core.geometries``): the flat sheet clamped at R (``DISC``, the default) or the
+        closed capsule of radius R (``CAPSULE``).
 
     Examples
     --------
@@ -157,6 +179,12 @@ class Case:
     fluid: Fluid = LIQUID
     warnings: tuple[str, ...] = ()  # about the inputs: a plain length that looks like millimetres, a thick sheet
     indenter: Indenter = PLATE
+    geometry: Geometry = DISC
+
+    @property
+    def radius_key(self) -> str:
+        """The key that gives R: ``clamp.radius`` for a pocket, ``capsule.radius`` for a capsule."""
+        return f"{RADIUS_TABLES[self.geometry.name]}.radius"
 
     @property
     def alpha(self) -> float | None:
@@ -181,7 +209,8 @@ class Case:
         Ogden's ``mu_Pa`` a list), numbers as they are (``jm``, ``exponents``), with ``modulus_Pa``
         (E = 3 mu_0) and, for Mooney-Rivlin, ``alpha``; the fluid is ``fluid`` and, for a gas,
         ``ambient_Pa`` and ``gamma``; the indenter is ``indenter`` (plate, sphere or profile) and a sphere's
-        ``indenter_radius_m`` or a profile's ``indenter_file`` (``pocket.core.indenters.Indenter.columns``).
+        ``indenter_radius_m`` or a profile's ``indenter_file`` (``pocket.core.indenters.Indenter.columns``);
+        ``geometry`` names the membrane (pocket or capsule) and ``radius_m`` is its R.
         """
         rubber: dict[str, object] = {"material": self.material.law}
         stresses = self.material.definition.stresses
@@ -194,7 +223,8 @@ class Case:
         fluid: dict[str, object] = {"fluid": self.fluid.kind}
         if self.fluid.is_gas:
             fluid.update(ambient_Pa=self.fluid.ambient, gamma=self.fluid.gamma)
-        return {"name": self.name, "thickness_m": self.thickness, **rubber, "radius_m": self.radius, **fluid,
+        return {"name": self.name, "geometry": self.geometry.name, "thickness_m": self.thickness, **rubber,
+                "radius_m": self.radius, **fluid,
                 f"initial_{self.initial[0]}": self.initial[1], "load_kind": self.load_kind,
                 "loads": list(self.loads), **self.indenter.columns(self.radius),
                 "solver": self.solver, **dict(self.options),
@@ -261,7 +291,8 @@ def _solver(table, base, given) -> tuple[str, tuple]:
     return name, tuple(options.items())
 
 
-def _thickness_ratio(solver: str, options: tuple, thickness: float, radius: float, given: dict) -> tuple:
+def _thickness_ratio(solver: str, options: tuple, thickness: float, radius: float, given: dict,
+                     radius_key: str = "clamp.radius") -> tuple:
     """``options`` with T/R = sheet.thickness / clamp.radius for a solver that models the thickness (an option
     ``THICKNESS_RATIO``); an InputError if the case gives that option itself: the sheet says it already."""
     option = record(solver).option(THICKNESS_RATIO)
@@ -269,8 +300,8 @@ def _thickness_ratio(solver: str, options: tuple, thickness: float, radius: floa
         return options
     if f"solver.{THICKNESS_RATIO}" in given:
         raise InputError(f"solver.{THICKNESS_RATIO} = {quote(given[f'solver.{THICKNESS_RATIO}'])}, but a case's "
-                         f"thickness ratio is sheet.thickness / clamp.radius (leave solver.{THICKNESS_RATIO} out)")
-    why = (f"sheet.thickness / clamp.radius = {quote(given['sheet.thickness'])} / {quote(given['clamp.radius'])}")
+                         f"thickness ratio is sheet.thickness / {radius_key} (leave solver.{THICKNESS_RATIO} out)")
+    why = (f"sheet.thickness / {radius_key} = {quote(given['sheet.thickness'])} / {quote(given[radius_key])}")
     return (*options, (THICKNESS_RATIO, option.checked(thickness / radius, spell=lambda _: why)))
 
 
@@ -306,19 +337,19 @@ def _quantities(given) -> list[tuple[str, object, str]]:
     return out
 
 
-def _sizes(given, thickness, radius, initial, loads, membrane: bool) -> list[str]:
+def _sizes(given, thickness, radius, initial, loads, membrane: bool, radius_key: str = "clamp.radius") -> list[str]:
     """The warnings on the case's plain numbers (``pocket.core.units.plain_warnings``) and, for a ``membrane``
     solver, its sheet's thinness (``pocket.core.sizes``; a solver that models the thickness checks its own T/R
     and speaks for itself); an
     ``InputError`` naming the key for a length no pocket has or a sheet too thick for a membrane."""
-    lengths = [("sheet.thickness", thickness), ("clamp.radius", radius)]
+    lengths = [("sheet.thickness", thickness), (radius_key, radius)]
     if initial[0] == "height":
         lengths.append(("initial.height", initial[1]))
     if loads[0] == "heights":
         lengths += [(f"loads.heights[{i}]", h) for i, h in enumerate(loads[1])]
     warnings = [w for key, si in lengths for w in length_warnings(key, given[key], si)]
     warnings += [w for key, value, kind in _quantities(given) for w in plain_warnings(key, value, kind)]
-    why = f"sheet.thickness = {quote(given['sheet.thickness'])} on clamp.radius = {quote(given['clamp.radius'])}"
+    why = f"sheet.thickness = {quote(given['sheet.thickness'])} on {radius_key} = {quote(given[radius_key])}"
     return warnings + thin_sheet(thickness, radius, why) if membrane else warnings
 
 
@@ -377,9 +408,11 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     given: dict = {}
     thickness, material = sheet(_table(data, "sheet", where), where, given)
     liquid_or_gas = fluid(_table(data, "fluid", where), given) if "fluid" in data else LIQUID
-    clamp = _table(data, "clamp", where)
-    radius = positive("clamp.radius", _need(clamp, "radius", "clamp", where), "length")
-    given["clamp.radius"] = clamp["radius"]
+    geometry = _geometry(data, where)
+    section = RADIUS_TABLES[geometry.name]
+    clamp = _table(data, section, where)
+    radius = positive(f"{section}.radius", _need(clamp, "radius", section, where), "length")
+    given[f"{section}.radius"] = clamp["radius"]
     initial = _table(data, "initial", where)
     kind = _one_of(initial, ("pressure", "height", "volume"), "initial", where)
     value = positive(f"initial.{kind}", initial[kind], {"height": "length"}.get(kind, kind))
@@ -394,13 +427,28 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     indenter = (indentertable.parse(data["indenter"], radius, base, given, warnings=pressing) if "indenter" in data
                 else PLATE)
     solver, options = _solver(_table(data, "solver", where) if "solver" in data else {}, base, given)
-    options = _thickness_ratio(solver, options, thickness, radius, given)
+    options = _thickness_ratio(solver, options, thickness, radius, given, f"{section}.radius")
     membrane = record(solver).option(THICKNESS_RATIO) is None
-    warnings = _sizes(given, thickness, radius, (kind, value), (load_kind, loads), membrane) + pressing
+    warnings = _sizes(given, thickness, radius, (kind, value), (load_kind, loads), membrane,
+                      f"{section}.radius") + pressing
     return Case(name=name, thickness=thickness, material=material, fluid=liquid_or_gas, radius=radius,
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
                 label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()),
-                warnings=tuple(warnings), indenter=indenter)
+                warnings=tuple(warnings), indenter=indenter, geometry=geometry)
+
+
+def _geometry(data, where) -> Geometry:
+    """The case's ``geometry`` (default pocket); an InputError for another value, or for a radius table of another
+    geometry (a capsule's ``[clamp]``, a pocket's ``[capsule]``)."""
+    name = data.get("geometry", DISC.name)
+    if not isinstance(name, str) or name not in GEOMETRIES:
+        raise InputError(f"{where}: geometry = {quote(name)}, but it must be one of {', '.join(GEOMETRIES)}")
+    own = RADIUS_TABLES[name]
+    for kind, table in RADIUS_TABLES.items():
+        if table != own and table in data:
+            raise InputError(f"{where}: [{table}] holds a {kind}'s radius, but the case is a {name} (geometry = "
+                             f"{quote(name)}), whose radius is [{own}] radius")
+    return GEOMETRIES[name]
 
 
 def load(path, *, require_loads: bool = True) -> Case:
@@ -489,3 +537,63 @@ def sample(number) -> Case:
             "clamp": {"radius": "20 mm"}, "initial": {"pressure": "4.81275 kPa"},
             "loads": {"forces": [f"{f} N" for f in (0, 0.5, 1, 2, 3, 4.5, 6)]}}
     return parse(data, where=f"sample {number}")
+
+
+def capsule_example() -> Case:
+    """A microcapsule squeezed between two plates: R = 50 um, a 0.5 um wall of a neo-Hookean rubber of
+    mu = 1 MPa, filled with a liquid at P_I = 3 kPa, forces 0 to 20 uN on each plate.
+
+    E = 3 mu = 3 MPa and T/R = 0.01, so Phat_I = P_I R / (E T) = 0.1, and Fhat = F / (P_I pi R^2) runs to about
+    0.85 (P_I pi R^2 = 23.6 uN).
+
+    Returns
+    -------
+    Case
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import capsule_example
+    >>> case = capsule_example()
+    >>> print(case.geometry.name, case.as_given("capsule.radius"), case.as_given("sheet.thickness"), case.radius_key)
+    capsule 50 um 0.5 um capsule.radius
+    >>> print(round(case.initial[1] * case.radius / (case.modulus * case.thickness), 12))
+    0.1
+    """
+    data = {"name": "capsule", "label": "a 50 um microcapsule with a 0.5 um neo-Hookean wall, squeezed",
+            "geometry": "capsule",
+            "sheet": {"thickness": "0.5 um", "material": "neo-hookean", "mu": "1 MPa"},
+            "capsule": {"radius": "50 um"}, "initial": {"pressure": "3 kPa"},
+            "loads": {"forces": [f"{f} uN" for f in (0, 1, 2, 5, 10, 15, 20)]}}
+    return parse(data, where="example capsule")
+
+
+#: the built-in example cases besides Table 1's samples: name -> the function that builds it
+EXAMPLES = {"capsule": capsule_example}
+
+
+def example(name) -> Case:
+    """The built-in example case ``name`` (``EXAMPLES``).
+
+    Parameters
+    ----------
+    name : str
+        A key of ``EXAMPLES``.
+
+    Returns
+    -------
+    Case
+
+    Raises
+    ------
+    InputError
+        For another name.
+
+    Examples
+    --------
+    >>> from pocket.apps.cases import example
+    >>> print(example("capsule").geometry.name)
+    capsule
+    """
+    if not isinstance(name, str) or name not in EXAMPLES:
+        raise InputError(f"example = {name!r}, but the built-in examples are {', '.join(EXAMPLES)}")
+    return EXAMPLES[name]()

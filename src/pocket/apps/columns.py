@@ -78,7 +78,7 @@ UNITS = {**MODEL_UNITS, "N": "newtons", "Pa": "pascals", "m": "metres", "m2": "s
 #: the columns pocket's applications add to the model's keys: a case's load, its SI values, a sweep's record
 COLUMNS: dict[str, Reported] = {
     "load": Reported("text", "the load as the case file gives it ('0.2 N', '9 mm')"),
-    "force_N": Reported("N", "the force F (of a force load, as the case gives it)"),
+    "force_N": Reported("N", "the force F (of a force load, as the case gives it; a capsule's: on each plate)"),
     "pressure_Pa": Reported("Pa", "the fluid's gauge pressure P"),
     "pressure_rise_Pa": Reported("Pa", "P - P_I, the pressure's rise under the force"),
     "contact_pressure_pole_Pa": Reported("Pa", "the contact pressure at the pole (P on the flat plate)"),
@@ -87,12 +87,16 @@ COLUMNS: dict[str, Reported] = {
     "contact_radius_deformed_m": Reported("m", "rho_c, the contact patch's radius as a camera or an ink print "
                                                "measures it: the contact edge's distance from the axis"),
     "contact_radius_lagrangian_m": Reported("m", "a_c, where the contact edge was in the flat sheet (smaller "
-                                                 "than rho_c by the hoop stretch there)"),
+                                                 "than rho_c by the hoop stretch there; a capsule's: the arc "
+                                                 "length from the pole on the undeformed sphere)"),
     "height_m": Reported("m", "the inflated pole height H0; pressed, the indenter's lowest point H above the "
-                              "clamp plane"),
-    "travel_m": Reported("m", "H0 - H, how far the indenter has pressed the pocket"),
+                              "clamp plane (a capsule's: above its equatorial plane, half the gap)"),
+    "travel_m": Reported("m", "H0 - H, how far the indenter has pressed the pocket (a capsule's: each plate)"),
+    "gap_m": Reported("m", "a capsule's gap between the plates, 2 H R (inflated: its height 2 lambda R, where the "
+                           "plates first touch it)"),
+    "radius_equator_m": Reported("m", "a capsule's deformed equatorial radius"),
     "volume_m3": Reported("m3", "the volume under the sheet (a membrane's mid-surface, the solid's lower "
-                                "surface)"),
+                                "surface); a capsule's whole volume"),
     "volume_lower_m3": Reported("m3", "a membrane solver's fluid volume: under the sheet's lower surface, half "
                                       "the deformed thickness below the mid-surface"),
     "solver_options": Reported("text", "a sweep's solver options as name=value, separated by spaces (empty: the "

@@ -12,7 +12,7 @@ Brent's method on the forward solver:
   known thickness T pressed by a known force F (``design``), so that Fhat = F / (P_I pi R^2) = c / Phat_I,
   c = F / (pi R E T).
 
-The bracket starts at load 0, where the value is known (height 0; the
+The bracket starts at load 0, where the value is known (height 0, a capsule's its radius; the
 uncompressed state). For a force, a solver that knows the end of its range
 (``range_end``, an optional entry point: ``pocket.core.solver``) gives the top of
 the bracket directly. Each function takes the solver's record (``pocket.core.solver.Solver``) and
@@ -66,18 +66,31 @@ def _bracket(fun, start, what, reached):
 
 
 def pressure_for_height(solver: Solver, material, height, **options) -> float:
-    """Phat_I at which the inflated height H0/R is ``height`` (first branch), by ``solver``'s ``inflate``."""
+    """Phat_I at which the inflated height H0/R is ``height`` (first branch), by ``solver``'s ``inflate``.
+
+    The bracket starts at Phat_I = 0, where the height is the undeformed surface's pole height (0 for the flat
+    pocket; R for a capsule, given as ``options["geometry"]``, whose pole height above its equator is lambda R): a
+    height below it is an OutOfRangeError, the height itself Phat_I = 0."""
 
     from scipy.optimize import brentq
 
+    from pocket.core.geometries import as_geometry
     from pocket.core.smallstrain import height_constant
 
     inflate = entry(solver, "inflate", f"an initial height H0/R = {height:.10g}")
+    geometry = as_geometry(options.get("geometry"))
+    rest = float(geometry.height(0.0))  # the undeformed pole's height
+    if height <= rest:
+        if height == rest:
+            return 0.0
+        raise OutOfRangeError(f"initial height H0/R = {height:.10g} is below the undeformed {geometry.name}'s "
+                              f"({rest:.10g}): no inflation pressure P_I >= 0 gives it")
 
     def miss(p):
-        return inflate(material, p, **options).height - height if p > 0.0 else -height
+        return inflate(material, p, **options).height - height if p > 0.0 else rest - height
 
-    guess = (height / height_constant()) ** 3  # the small-strain model's Phat_I
+    # the small-strain Phat_I: the pocket's model, or a sphere's Phat = 4 (lambda - 1) with H0/R = lambda
+    guess = (height / height_constant()) ** 3 if rest == 0.0 else 4.0 * (height - rest)
     lo, hi = _bracket(miss, guess, f"initial height H0/R = {height:.10g}",
                       lambda p: inflate(material, p, **options).height)
     return brentq(miss, lo, hi, xtol=_XTOL, rtol=_RTOL)
@@ -109,7 +122,7 @@ def force_where(solver: Solver, material, pressure_initial, key, target, *, incr
         return sign * (value(f) - target) if f > 0.0 else sign * (start - target)
 
     end = _own_end(solver, material, pressure_initial, options)
-    if end is None:
+    if end is None or math.isinf(end):  # no end known, or none at all (a capsule pressed by a liquid)
         lo, hi = _bracket(miss, 0.1, f"{key} = {target:.10g}", value)
     elif miss(end) < 0.0:
         raise OutOfRangeError(f"{key} = {target:.10g} is beyond the model's range (it reaches {value(end):.10g} "

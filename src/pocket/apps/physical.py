@@ -1,6 +1,7 @@
 """A case resolved to the dimensionless model, and its states back in SI units.
 
-With E = 3 mu_0 the modulus (6 (C1 + C2) for Mooney-Rivlin), T the thickness and R the clamp radius
+With E = 3 mu_0 the modulus (6 (C1 + C2) for Mooney-Rivlin), T the thickness and R the clamp radius (a
+capsule's radius; its F the force on each plate, its H each plate's distance from the equatorial plane)
 (``pocket.core.states``): P = Phat E T / R, F = Fhat P_I pi R^2, lengths = (x/R) R, areas =
 (A/(pi R^2)) pi R^2, volumes = (V/R^3) R^3; a gas's ambient pressure enters the solvers as
 Phat_atm = P_atm R / (E T). The solvers get the rubber as ``Pocket.material``: the float
@@ -19,6 +20,7 @@ import math
 
 from pocket.core.errors import InputError, OutOfRangeError, PocketError
 from pocket.core.fluids import Fluid
+from pocket.core.geometries import DISC
 from pocket.core.indenters import PLATE
 from pocket.core.inputs import MAGNITUDES, quote
 from pocket.core.materials import Material, mooney_rivlin
@@ -102,19 +104,21 @@ class Pocket:
 
     def options(self, step: str = "compress") -> dict:
         """The keyword arguments of ``step``'s entry points ("inflate" or "compress"): the case's solver
-        options that the step takes, and for a compression the fluid if it is a gas and the indenter if it is not
-        the flat plate (``fluid_options``)."""
+        options that the step takes, the geometry if it is not the flat pocket, and for a compression the fluid if
+        it is a gas and the indenter if it is not the flat plate (``fluid_options``)."""
         solver = self.solver()
         return {**{k: v for k, v in self.case.options if step in solver.option(k).steps}, **self.fluid_options(step)}
 
     def fluid_options(self, step: str = "compress") -> dict:
-        """What a compression is given besides its solver's options: ``{"fluid": self.fluid}`` for a gas-filled
-        pocket and ``{"indenter": ...}`` for an indenter other than the flat plate, else nothing (a liquid and
-        the flat plate are every solver's default)."""
+        """What a step is given besides its solver's options: ``{"geometry": ...}`` for a capsule (any surface
+        but the flat pocket), and for a compression ``{"fluid": self.fluid}`` for a gas-filled pocket and
+        ``{"indenter": ...}`` for an indenter other than the flat plate, else nothing (the flat pocket, a liquid
+        and the flat plate are every solver's default)."""
+        geometry = {} if self.case.geometry == DISC else {"geometry": self.case.geometry}
         if step != "compress":
-            return {}
+            return geometry
         gas = {"fluid": self.fluid} if self.case.fluid.is_gas else {}
-        return {**gas, **({} if self.case.indenter == PLATE else {"indenter": self.case.indenter})}
+        return {**gas, **({} if self.case.indenter == PLATE else {"indenter": self.case.indenter}), **geometry}
 
 
 def _inside(key: str, given: str, name: str, value: float) -> float:
@@ -129,8 +133,8 @@ def _inside(key: str, given: str, name: str, value: float) -> float:
 
 def _scales(case: Case) -> str:
     """The inputs that make the case's pressures dimensionless (Phat = P R / (E T)), as the case gives them."""
-    return (f"sheet.thickness = {quote(case.as_given('sheet.thickness'))}, clamp.radius = "
-            f"{quote(case.as_given('clamp.radius'))} (E = {case.modulus:.6g} Pa)")
+    return (f"sheet.thickness = {quote(case.as_given('sheet.thickness'))}, {case.radius_key} = "
+            f"{quote(case.as_given(case.radius_key))} (E = {case.modulus:.6g} Pa)")
 
 
 def resolve(case: Case) -> Pocket:
@@ -184,8 +188,9 @@ def resolve(case: Case) -> Pocket:
         try:
             return Pocket(case, pressure_for_height(solver, unit.material, value / case.radius, **options))
         except OutOfRangeError as err:
+            low = case.geometry != DISC and value < case.radius  # a capsule's pole is at R with no pressure
             raise OutOfRangeError(f"initial.height = {given}: no inflated state of the model's first branch is "
-                                  f"that high ({err})") from None
+                                  f"that {'low' if low else 'high'} ({err})") from None
     volume = value / case.radius**3
     purpose = f"initial.volume = {given}"
     phat = entry(solver, "inflate_volume", purpose)(unit.material, volume, **options).pressure
@@ -194,6 +199,11 @@ def resolve(case: Case) -> Pocket:
         raise OutOfRangeError(f"initial.volume = {given} lies past the pressure maximum of the first branch, "
                               "where the pocket cannot be held at fixed pressure")
     return Pocket(case, phat)
+
+
+def _what(case: Case) -> str:
+    """What the case's membrane is, in a message: "pocket" or "capsule"."""
+    return case.geometry.name
 
 
 def _pressing(case: Case) -> str:
@@ -215,7 +225,8 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
                  f"{written_like(top, given, 'length')})"
     except PocketError:  # the reason stands without the number
         pass
-    why = ("the free part of the sheet would fold onto the clamp plane first" if case.indenter == PLATE else
+    why = ("the model's range ends first" if case.geometry != DISC else
+           "the free part of the sheet would fold onto the clamp plane first" if case.indenter == PLATE else
            "the model's range under this indenter ends first")
     return OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is below the lowest {_pressing(case)} height "
                            f"the model reaches{lowest}: {why}")
@@ -243,6 +254,10 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     """
     case = pocket.case
     out: list[float | OutOfRangeError] = []
+    if pocket.pressure_initial == 0.0:  # a capsule given by its radius as its initial height
+        key = f"initial.{case.initial[0]}"
+        raise InputError(f"{key} = {quote(case.as_given(key))} gives P_I = 0 (the unstressed capsule), but a load's "
+                         "Fhat = F / (P_I pi R^2) needs P_I > 0")
     if case.load_kind == "forces":
         for index, force in enumerate(case.loads):
             key, given = f"loads.forces[{index}]", case.as_given(f"loads.forces[{index}]")
@@ -259,8 +274,9 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     for index, height in enumerate(case.loads):
         if height > top:
             given = case.as_given(f"loads.heights[{index}]")
-            out.append(OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated pocket (H0 = "
-                                       f"{written_like(top, given, 'length')}): the {_pressing(case)} would not "
+            out.append(OutOfRangeError(f"loads.heights[{index}] = {quote(given)} is above the inflated "
+                                       f"{_what(case)} (H0 = {written_like(top, given, 'length')}): the "
+                                       f"{_pressing(case)} would not "
                                        "touch it"))
             continue
         try:
@@ -278,15 +294,26 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
 def _lower(pocket: Pocket, state) -> tuple[dict, list[str]]:
     """({"volume_lower_m3": V_lower R^3}, []): the fluid's volume under the sheet's lower surface, the state's
     ``volume_lower`` at the case's T/R. Nothing for a solver that models the thickness (its record has the
-    option ``THICKNESS_RATIO``: the solid), whose ``volume`` is under its lower surface already; nothing and a
+    option ``THICKNESS_RATIO``: the solid), whose ``volume`` is under its lower surface already, nor for a capsule
+    (``pocket.core.offset`` offsets a clamped sheet); nothing and a
     warning where the lower surface would fold (an OutOfRangeError of its own)."""
-    if pocket.solver().option(THICKNESS_RATIO) is not None:
+    if pocket.solver().option(THICKNESS_RATIO) is not None or pocket.case.geometry != DISC:
         return {}, []
     try:
         v = state.volume_lower(pocket.case.thickness / pocket.case.radius)
     except OutOfRangeError as err:
         return {}, [f"no volume_lower: {err}"]
     return {"volume_lower_m3": v * pocket.case.radius**3}, []
+
+
+def _capsule_lengths(pocket: Pocket, state) -> dict:
+    """A capsule's lengths in metres: ``gap_m`` = 2 H R, the gap between the plates (an inflated capsule's
+    height 2 lambda R, where the plates first touch it), and ``radius_equator_m``, its equator's radius; nothing
+    for a pocket."""
+    if pocket.case.geometry == DISC:
+        return {}
+    r = pocket.case.radius
+    return {"gap_m": 2.0 * state.height * r, "radius_equator_m": float(state.extra["radius_equator"]) * r}
 
 
 def inflated_row(pocket: Pocket, state) -> dict:
@@ -296,7 +323,7 @@ def inflated_row(pocket: Pocket, state) -> dict:
     r = pocket.case.radius
     lower, notes = _lower(pocket, state)
     return {"pressure_Pa": state.pressure * pocket.pressure_scale_Pa, "height_m": state.height * r,
-            "volume_m3": state.volume * r**3, **lower, **row_scalars(state),
+            **_capsule_lengths(pocket, state), "volume_m3": state.volume * r**3, **lower, **row_scalars(state),
             "warnings": [*pocket.case.warnings, *state.warnings, *notes]}
 
 
@@ -335,7 +362,8 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
                 "contact_area_m2": state.contact_area * math.pi * r**2,
                 **{f"{k}_m": v * r for k, v in patch.items() if k not in CONTACT_PRESSURES},
                 "contact_radius_lagrangian_m": state.contact_radius * r, "height_m": state.height * r,
-                "travel_m": (state.inflated.height - state.height) * r, "volume_m3": state.volume * r**3,
+                "travel_m": (state.inflated.height - state.height) * r, **_capsule_lengths(pocket, state),
+                "volume_m3": state.volume * r**3,
                 **lower, **row_scalars(state, patch), **asked,
                 "warnings": [*case.warnings, *state.warnings, *notes]})
     return row

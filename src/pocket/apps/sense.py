@@ -23,7 +23,9 @@ volume (V(P, F) = V_fluid(P)) gives
     dP/dF = (dH0/dP) / (dV0/dP + V / (gamma (P + P_atm)))
 
 for any indenter touching at the pole; the second term, the gas's compliance, is absent for a
-liquid (``sensitivity_at_rest``, dH0/dP and dV0/dP by central differences of inflations).
+liquid (``sensitivity_at_rest``, dH0/dP and dV0/dP by central differences of inflations). A capsule is
+pressed by two plates, each with F: the displacement conjugate to F is the gap's closing, twice each plate's
+descent, so its dP/dF is twice that ratio (V0 the whole capsule's, H0 its pole's height above the equator).
 
 The linearity over a force range is the largest deviation of P(F) from the best straight line
 (the line that makes the largest deviation smallest, "independent linearity"), in % of the
@@ -50,6 +52,7 @@ import math
 import numpy as np
 
 from pocket.core.errors import InputError, OutOfRangeError, PocketError
+from pocket.core.geometries import DISC, Symmetry
 from pocket.core.inputs import check_count, check_finite, quote
 from pocket.core.units import quantity, written_like
 
@@ -147,8 +150,9 @@ def _beyond(pocket: Pocket, what: str, given) -> OutOfRangeError:
         top = f" (it reaches {written_like(q * pocket.pressure_initial_Pa, given, 'pressure')}, P/P_I = {q:.6g})"
     except PocketError:  # the reason stands without the number
         pass
-    return OutOfRangeError(f"{what} is beyond the model's range{top}: the free part of the sheet would fold onto "
-                           "the clamp plane first")
+    why = ("the free part of the sheet would fold onto the clamp plane first" if pocket.case.geometry == DISC else
+           "the capsule's range ends first")
+    return OutOfRangeError(f"{what} is beyond the model's range{top}: {why}")
 
 
 def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
@@ -266,7 +270,8 @@ def sensitivity_at_rest(pocket: Pocket) -> float:
 
     dP/dF = (dH0/dP) / (dV0/dP + V / (gamma (P + P_atm))) (``pocket.apps.sense``; the gas's compliance absent for
     a liquid), dH0/dP and dV0/dP by central differences of inflations at P_I (1 +- 1e-4): truncation ~1e-8 and
-    round-off ~1e-7 relative for a solver resolving ~1e-11. The same for any indenter touching at the pole.
+    round-off ~1e-7 relative for a solver resolving ~1e-11. The same for any indenter touching at the pole;
+    twice it for a capsule, pressed by two plates that each descend by dH.
 
     Parameters
     ----------
@@ -299,7 +304,8 @@ def sensitivity_at_rest(pocket: Pocket) -> float:
     if fluid.is_gas:  # the gas's compliance -dV_fluid/dP at P_I, in the same units (R^3 per Phat)
         volume = inflate(pocket.material, phat, **pocket.options("inflate")).volume
         dvolume += volume / (fluid.gamma * (phat + fluid.ambient))
-    return float(dheight / dvolume / pocket.case.radius**2 / 1e3)  # Pa/N: (R dHhat) / (R^3 dVhat), the scales cancel
+    plates = 2.0 if isinstance(pocket.case.geometry.end, Symmetry) else 1.0  # a capsule's gap closes by 2 dH
+    return float(plates * dheight / dvolume / pocket.case.radius**2 / 1e3)  # Pa/N: (R dHhat) / (R^3 dVhat)
 
 
 def _hull(x, y, sign) -> list[int]:

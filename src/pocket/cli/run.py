@@ -1,4 +1,5 @@
-"""``pocket run CASE.toml | --sample N [--out DIR] [--vtk DIR]``: solve a case file in physical units."""
+"""``pocket run CASE.toml | --sample N | --example NAME [--out DIR] [--vtk DIR]``: solve a case file in physical
+units (a pocket's, or a capsule's: ``pocket.apps.cases``)."""
 
 from __future__ import annotations
 
@@ -6,7 +7,7 @@ import pathlib
 import sys
 
 from pocket.apps.casefile import results_paths, solved, write
-from pocket.apps.cases import Case, load, sample
+from pocket.apps.cases import EXAMPLES, Case, example, load, sample
 from pocket.apps.folders import check_output_dir, check_output_file, check_replaceable
 from pocket.core.errors import InputError
 
@@ -23,14 +24,21 @@ def add_case_arguments(parser) -> None:
     parser.add_argument("case", nargs="?", type=path_name, metavar="CASE.toml",
                         help="case file in physical units (its tables and keys: the user guide's page on case files)")
     parser.add_argument("--sample", type=int, metavar="N", help="built-in sample N (1-4) of the paper's Table 1")
+    parser.add_argument("--example", choices=tuple(EXAMPLES),
+                        help="a built-in example case: capsule, a 50 um microcapsule with a 0.5 um neo-Hookean wall "
+                        "squeezed between two plates (forces on each plate, up to 20 uN)")
 
 
 def case_from_args(args) -> tuple[Case, str]:
     """The case of the command line and a file stem for it."""
-    if (args.case is None) == (args.sample is None):
-        raise InputError("give either a case file or --sample N, not both or neither")
+    given = [args.case is not None, args.sample is not None, getattr(args, "example", None) is not None]
+    if sum(given) != 1:
+        raise InputError("give one of a case file, --sample N or --example NAME, not "
+                         + ("several" if sum(given) else "none"))
     if args.sample is not None:
         return sample(args.sample), f"sample{args.sample}"
+    if args.case is None:
+        return example(args.example), f"example_{args.example}"
     return load(args.case), pathlib.Path(args.case).stem
 
 
@@ -39,6 +47,8 @@ def case_source(args) -> str:
     (its absolute path) or the built-in sample."""
     if args.sample is not None:
         return f"built-in sample {args.sample}"
+    if getattr(args, "example", None) is not None:
+        return f"built-in example {args.example}"
     return f"case file {pathlib.Path(args.case).resolve()}"
 
 
@@ -89,11 +99,14 @@ def _main(args) -> int:
     rows = result["states"]
     fluid = case.fluid.kind if not case.fluid.is_gas else \
         f"gas (ambient {case.fluid.ambient:.6g} Pa, gamma {case.fluid.gamma:g})"
-    print(f"# {case.name}: solver {case.solver}, {case.material.law} rubber (E = {case.modulus:.6g} Pa), {fluid}, "
-          f"Phat_I = {rows[0]['pressure_initial']:.10g}, H0 = {result['inflated']['height_m']:.6g} m")
-    print("  ".join(f"{k:>15}" for k in _SHOWN))
+    capsule = "gap_m" in rows[0]
+    print(f"# {case.name}: {'a capsule, ' if capsule else ''}solver {case.solver}, {case.material.law} rubber (E = "
+          f"{case.modulus:.6g} Pa), {fluid}, Phat_I = {rows[0]['pressure_initial']:.10g}, H0 = "
+          f"{result['inflated']['height_m']:.6g} m" + (", the force F on each plate" if capsule else ""))
+    shown = tuple("gap_m" if capsule and k == "height_m" else k for k in _SHOWN)
+    print("  ".join(f"{k:>15}" for k in shown))
     for row in rows:
-        print("  ".join(f"{row[k]:>15.8g}" if isinstance(row[k], float) else f"{row[k]!s:>15}" for k in _SHOWN))
+        print("  ".join(f"{row[k]:>15.8g}" if isinstance(row[k], float) else f"{row[k]!s:>15}" for k in shown))
     print("wrote " + ", ".join(map(str, paths)) + ("" if args.vtk is None else f", {args.vtk}"))
     return 0
 

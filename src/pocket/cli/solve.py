@@ -30,6 +30,7 @@ from .common import (
     solvers_epilog,
     warn,
 )
+from .geometryflags import add_geometry_flag, capsule_units, geometry_of
 from .indenterflags import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
@@ -42,7 +43,8 @@ def register(subparsers) -> None:
     for name, text in (("inflate", "step 1: inflate the pocket at pressure Phat"),
                        ("compress", "step 2: press the inflated pocket with a flat plate or another indenter, its "
                                     "fluid sealed in (a liquid keeps its volume, a gas is compressed)")):
-        p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}. {MODEL_UNITS}",
+        p = subparsers.add_parser(name, help=text, description=f"{text}. {_units(name)}. {capsule_units(name)} "
+                                  f"{MODEL_UNITS}",
                                   epilog=solvers_epilog())
         if name == "inflate":
             control = p.add_mutually_exclusive_group(required=True)
@@ -60,7 +62,9 @@ def register(subparsers) -> None:
                               help="force, Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
             load.add_argument("--height", type=model_value(name, "H/R"), nargs="+", metavar="H/R",
                               help="travel control: the indenter's lowest point at a height in H/R above the clamp "
-                                   f"plane, at most the inflated height H0/R (solvers {_serving('compress_height')})")
+                                   "plane, at most the inflated height H0/R (a capsule's: each plate's distance from "
+                                   "its equatorial plane, half the gap between the plates; solvers "
+                                   f"{_serving('compress_height')})")
         p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",
                        help="which model solves (each is listed below)")
         p.add_argument("--json", action="store_true",
@@ -70,6 +74,7 @@ def register(subparsers) -> None:
                        "of each its force)")
         p.add_argument("--overwrite", action="store_true",
                        help="replace a VTK series pocket wrote in --vtk DIR (any other non-empty folder is refused)")
+        add_geometry_flag(p)
         add_rubber_flags(p, command=name)
         if name == "compress":
             add_fluid_flags(p, command=name)
@@ -141,6 +146,7 @@ def _at_heights(args, material, options: dict) -> list:
 def _main(args) -> int:
     step = "inflate" if args.command == "inflate" else "compress"
     options = solver_flags(args, args.solver, step)
+    options["geometry"] = geometry_of(args)
     material = material_of(args)
     if getattr(args, "volume", None) is not None:
         check_volume("--volume", args.volume)

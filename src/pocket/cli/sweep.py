@@ -1,5 +1,6 @@
 """``pocket sweep``: a grid over alpha (or one rubber of another law), Phat_I and Fhat, with a liquid or a
-gas, pressed by the flat plate or a sphere, on local processes or a dask cluster, resumable."""
+gas, pressed by the flat plate or a sphere, a pocket or a capsule (``--geometry``), on local processes or a dask
+cluster, resumable."""
 
 from __future__ import annotations
 
@@ -21,6 +22,7 @@ from .common import (
     solver_flags,
     solvers_epilog,
 )
+from .geometryflags import add_geometry_flag, capsule_units, geometry_of
 from .indenterflags import add_indenter_flags, indenter_of
 from .laws import add_fluid_flags, add_rubber_flags, fluid_of, material_of
 
@@ -51,7 +53,8 @@ def _main(args) -> int:
         with progress_bar("sweep", " points") as progress:
             computed, reused = run_sweep(args.out, alphas, args.pressure, args.force, executor, solver=args.solver,
                                          options=options, progress=progress, material=material, fluid=fluid,
-                                         indenter=indenter, prestretch=args.prestretch or 1.0)
+                                         indenter=indenter, prestretch=args.prestretch or 1.0,
+                                         geometry=geometry_of(args))
         executor.shutdown()
     except BaseException:
         stop(executor)
@@ -71,7 +74,7 @@ def register(subparsers) -> None:
         "indenters can share a file); rerun the same command to "
         "compute only the missing points. While it runs the file collects finished points; at the end it is "
         "rewritten in grid order. Stopped early (interrupt, error), the file keeps its complete rows only. "
-        f"{MODEL_UNITS}")
+        f"{capsule_units('compress')} {MODEL_UNITS}")
     p.add_argument("--pressure", type=model_value("sweep", "Phat_I = P_I R / (E T)"), nargs="+", required=True,
                    metavar="PHAT_I", help="values of the initial pressure, Phat_I = P_I R / (E T)")
     p.add_argument("--force", type=model_value("sweep", "Fhat = F / (P_I pi R^2)"), nargs="+", required=True,
@@ -89,5 +92,6 @@ def register(subparsers) -> None:
     add_rubber_flags(p, command="sweep", alphas=True)
     add_fluid_flags(p, command="sweep")
     add_indenter_flags(p, command="sweep")
+    add_geometry_flag(p)
     add_solver_flags(p, "compress")
     p.set_defaults(handler=_main)

@@ -5,5 +5,7 @@ read into SI arrays), ``checks`` (a unit gone wrong, found before any solve), ``
 can vary), ``model`` (the model's values at the data and the residuals), ``start`` (where a fit starts),
 ``leastsquares`` (the fit itself, and its result), ``stats`` (standard errors, correlations, linearised
 intervals), ``intervals`` (the profile-likelihood intervals) and ``report`` (the summary, the fitted
-sheet's case file and the figure).
+sheet's case file and the figure). A closed capsule's test between two plates has its own ``capsuledata`` (the
+force-gap CSV), ``capsulemodel`` (its gaps at the forces, its residuals and keys, P_I among them) and
+``capsuletest`` (its fit, on the same search and statistics).
 """

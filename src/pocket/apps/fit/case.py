@@ -38,7 +38,7 @@ from pocket.core.units import plain_warnings, positive, quantity
 
 from ..rubbers import DEFAULT_LAW, law_name
 from ..tomlfiles import read_toml
-from . import checks
+from . import capsuledata, checks
 from .data import CONTROLS, QUANTITIES, read
 from .keys import PRESTRETCH, key_named, keys
 from .model import Setup
@@ -79,6 +79,11 @@ class Request:
         On its inputs, one line each (a value without a unit).
     case : str or None
         The case file it was read from (None: the command line's flags).
+    geometry : {"pocket", "capsule"}
+        The clamped sheet's tests (``pocket.apps.fit.data``), or a closed capsule's between two plates
+        (``pocket.apps.fit.capsuledata``: ``radius`` is then the capsule's, ``initial_pressure`` its P_I).
+    fit_initial_pressure : bool
+        Whether a capsule's fit also fits P_I (``initial_pressure`` is then its start).
 
     Examples
     --------
@@ -104,11 +109,15 @@ class Request:
     solver: str = "shooting"
     warnings: tuple[str, ...] = ()
     case: str | None = None
+    geometry: str = "pocket"
+    fit_initial_pressure: bool = False
 
     def setup(self) -> Setup:
-        """The tests read (``pocket.apps.fit.data.read``) and what the fit compares; bad data, or data that make
-        a unit absurd (``pocket.apps.fit.checks.check``), is an InputError."""
-        tests = tuple(read(path, self.initial_pressure) for path in self.data)
+        """The tests read (``pocket.apps.fit.data.read``, a capsule's ``pocket.apps.fit.capsuledata.read``) and
+        what the fit compares; bad data, or data that make a unit absurd (``pocket.apps.fit.checks.check``,
+        ``pocket.apps.fit.capsuledata.check``), is an InputError."""
+        capsule = self.geometry == "capsule"
+        tests = tuple(capsuledata.read(path) if capsule else read(path, self.initial_pressure) for path in self.data)
         spell = _spelling("--sigma" if self.case is None else "fit.sigma")
         for name in self.sigma:
             if any(name in t.responses for t in tests):
@@ -120,7 +129,10 @@ class Request:
                                  "uncertainty to weight")
             raise InputError(f"{spell(name)}: an uncertainty for {name} is stated, but no test has {name} data")
         setup = Setup(tests, self.radius, self.thickness, self.solver, {}, self.sigma)
-        checks.check(setup, spell, slack=not self.prestretch and self.fixed.get(PRESTRETCH, 1.0) == 1.0)
+        if capsule:
+            capsuledata.check(setup, spell)
+        else:
+            checks.check(setup, spell, slack=not self.prestretch and self.fixed.get(PRESTRETCH, 1.0) == 1.0)
         return setup
 
 
@@ -151,28 +163,29 @@ def held(law: str, terms: int, given: dict, thickness: float | None, flag: str) 
     return out
 
 
-def uncertainties(given: dict, flag: str) -> dict:
+def uncertainties(given: dict, flag: str, quantities: dict = QUANTITIES) -> dict:
     """The columns' stated uncertainties of ``given`` (column -> value with its unit) in SI; ``flag`` names them
-    in errors (``--sigma``, ``fit.sigma``)."""
+    in errors (``--sigma``, ``fit.sigma``); ``quantities`` the columns the tests may have, with their kinds (a
+    capsule's: ``pocket.apps.fit.capsuledata.QUANTITIES``)."""
     out, spell = {}, _spelling(flag)
     for name, value in given.items():
-        if name not in QUANTITIES:
-            raise InputError(f"{spell(name)}: not a column of test data ({', '.join(QUANTITIES)})")
-        out[name] = positive(spell(name), value, QUANTITIES[name])
+        if name not in quantities:
+            raise InputError(f"{spell(name)}: not a column of test data ({', '.join(quantities)})")
+        out[name] = positive(spell(name), value, quantities[name])
     return out
 
 
 def unit_warnings(law: str, terms: int, values: dict, fix: dict, fix_flag: str, sigma: dict,
-                  sigma_flag: str) -> tuple[str, ...]:
+                  sigma_flag: str, quantities: dict = QUANTITIES) -> tuple[str, ...]:
     """The warnings on a fit's dimensional inputs written without a unit (``pocket.core.units.plain_warnings``):
     ``values`` (key -> (value as written or None, kind)), the stresses held by ``fix`` and the uncertainties
-    ``sigma`` (name -> value as written, already checked by ``held`` and ``uncertainties``), named with
-    ``fix_flag`` and ``sigma_flag``."""
+    ``sigma`` (name -> value as written, already checked by ``held`` and ``uncertainties``; their columns' kinds in
+    ``quantities``), named with ``fix_flag`` and ``sigma_flag``."""
     all_keys, spell_fix, spell_sigma = keys(law, terms), _spelling(fix_flag), _spelling(sigma_flag)
     given = [(key, value, kind) for key, (value, kind) in values.items() if value is not None]
     given += [(spell_fix(name), value, "pressure") for name, value in fix.items()
               if key_named(all_keys, name, fix_flag).unit == "stress"]
-    given += [(spell_sigma(name), value, QUANTITIES[name]) for name, value in sigma.items()]
+    given += [(spell_sigma(name), value, quantities[name]) for name, value in sigma.items()]
     return tuple(w for key, value, kind in given for w in plain_warnings(key, value, kind))
 
 

@@ -97,42 +97,45 @@ def _modulus(setup: Setup, test) -> None:
                          "(the pressures', the heights', R's or T's)")
 
 
-def _uncertainties(setup: Setup, spell: Callable[[str], str]) -> None:
+def _uncertainties(setup: Setup, spell: Callable[[str], str], quantities: dict) -> None:
     for name, sigma in setup.sigma.items():
         data = [t.responses[name] for t in setup.tests if name in t.responses]
         top = max((float(np.nanmax(np.abs(d))) for d in data), default=math.inf)
         if sigma > top:
-            unit = KINDS[QUANTITIES[name]][1].replace("**3", "^3")
+            unit = KINDS[quantities[name]][1].replace("**3", "^3")
             raise InputError(f"{spell(name)}: the uncertainty {_plain(sigma, unit)} is more than every {name} "
                              f"datum (the largest: {_plain(top, unit)}): no measurement is that uncertain, so its "
                              "unit is wrong")
 
 
-def check(setup: Setup, spell: Callable[[str], str] = lambda name: f"--sigma {name}", slack: bool = True) -> None:
+def check(setup: Setup, spell: Callable[[str], str] = lambda name: f"--sigma {name}", slack: bool = True,
+          quantities: dict = QUANTITIES) -> None:
     """Refuse ``setup`` where its data beside the clamp radius, the thickness and the stated uncertainties
     can only be in a wrong unit (module docstring): an InputError naming the file and column, or the
     uncertainty (a column's, named by ``spell(column)``). ``slack``: the sheet is fitted without prestretch
-    (else the modulus is not checked)."""
+    (else the modulus is not checked); ``quantities``: the kind of each column (a capsule's tests have their
+    own, ``pocket.apps.fit.capsuledata``)."""
     for test in setup.tests:
         _columns(test, setup.radius)
     for test in setup.tests if slack else ():
         _modulus(setup, test)
-    _uncertainties(setup, spell)
+    _uncertainties(setup, spell, quantities)
 
 
 def modulus_warnings(setup: Setup, mu0: float) -> list[str]:
     """A warning if the fitted ``mu0`` (Pa, or N/m times T without a thickness) is no rubber's (module
     docstring); empty otherwise."""
     low, high = RUBBER_MODULI
+    radius = "capsule's radius" if any(t.kind == "capsule" for t in setup.tests) else "clamp radius"
     if setup.thickness:
         modulus = 3.0 * mu0
         if low <= modulus <= high:
             return []
         return [f"the fitted E = 3 mu_0 = {modulus:.3g} Pa is no rubber's ({low:.0e} to {high:.0e} Pa): check the "
-                "units of the data, the clamp radius and the thickness"]
+                f"units of the data, the {radius} and the thickness"]
     bound = 3.0 * mu0 / setup.radius
     if bound <= high:
         return []
     return [f"the fitted E T = 3 mu_0 T = {3.0 * mu0:.3g} N/m gives E >= {bound:.3g} Pa even for a sheet as thick "
-            f"as the clamp radius, no rubber's ({low:.0e} to {high:.0e} Pa): check the units of the data and the clamp "
-            "radius"]
+            f"as the {radius}, no rubber's ({low:.0e} to {high:.0e} Pa): check the units of the data and the "
+            f"{radius}"]

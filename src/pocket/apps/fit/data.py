@@ -29,12 +29,12 @@ from pocket.core.inputs import quote
 from pocket.core.tables import heading, rows
 from pocket.core.units import is_plain, quantity
 
-__all__ = ["CONTROLS", "QUANTITIES", "Dataset", "read"]
+__all__ = ["CONTROLS", "QUANTITIES", "Dataset", "check_forces", "columns", "read"]
 
 #: column name -> the kind of quantity it holds (``pocket.core.units.KINDS``)
 QUANTITIES = {"pressure": "pressure", "height": "length", "volume": "volume", "force": "force"}
-#: test kind -> its control column
-CONTROLS = {"inflation": "pressure", "compression": "force"}
+#: test kind -> its control column (a capsule's compression: ``pocket.apps.fit.capsuledata``)
+CONTROLS = {"inflation": "pressure", "compression": "force", "capsule": "force"}
 _EXAMPLE = "pressure [kPa],height [mm]"
 
 
@@ -44,15 +44,16 @@ class Dataset:
 
     Attributes
     ----------
-    kind : {"inflation", "compression"}
-        A bulge test (pressure controlled) or a compression by the flat plate (force controlled).
+    kind : {"inflation", "compression", "capsule"}
+        A bulge test (pressure controlled), a compression by the flat plate (force controlled), or a closed
+        capsule's compression between two plates (force controlled, ``pocket.apps.fit.capsuledata``).
     control : numpy.ndarray
         The pressures in Pa or the forces in N, shape (n,).
     responses : dict
         Column name -> SI values of shape (n,), NaN where a row has no datum (the zero-force pressure that
         defines P_I).
     initial_pressure : float or None
-        P_I in Pa; None for an inflation.
+        P_I in Pa; None for an inflation (and a capsule's test: its P_I is the fit's, given or fitted).
     source : str
         The file, for messages.
 
@@ -80,20 +81,20 @@ class Dataset:
         return int(sum(np.count_nonzero(np.isfinite(v)) for v in self.responses.values()))
 
 
-def _columns(path: pathlib.Path, header: list[str]) -> list[tuple[str, float]]:
+def _columns(path: pathlib.Path, header: list[str], quantities: dict, example: str) -> list[tuple[str, float]]:
     """(name, SI factor) of each header cell."""
     out: list[tuple[str, float]] = []
     for i, text in enumerate(header, start=1):
         where = f"{path}: column {i} ({text.strip()!r})"
-        name, unit = heading(where, text, _EXAMPLE)
-        if name not in QUANTITIES:
-            raise InputError(f"{where}: the fit cannot use a column {name!r} (it uses {', '.join(QUANTITIES)})")
+        name, unit = heading(where, text, example)
+        if name not in quantities:
+            raise InputError(f"{where}: the fit cannot use a column {name!r} (it uses {', '.join(quantities)})")
         if name in (n for n, _ in out):
             raise InputError(f"{where}: a second {name!r} column")
         one = f"1 {unit}"
-        factor = quantity(f"{where} unit", one, QUANTITIES[name])
+        factor = quantity(f"{where} unit", one, quantities[name])
         if is_plain(one):
-            raise InputError(f"{where} has no {QUANTITIES[name]} unit: write the header like {_EXAMPLE!r}")
+            raise InputError(f"{where} has no {quantities[name]} unit: write the header like {example!r}")
         out.append((name, factor))
     return out
 
@@ -157,17 +158,28 @@ def read(path, initial_pressure: float | None = None) -> Dataset:
     inflation [ 6000. 12000. 18000.] [0.00604 0.00813 0.01   ]
     """
     path = pathlib.Path(path)
-    table = rows(path, "a test's CSV data")
-    if not table:
-        raise InputError(f"{path}: empty, but the first line must name the columns with units, like {_EXAMPLE!r}")
-    columns = _columns(path, table[0])
-    if len(table) < 2:
-        raise InputError(f"{path}: a header and no rows of data")
-    values = _numbers(path, table[1:], columns)
-    data = {name: values[:, j] for j, (name, _) in enumerate(columns)}
+    data = columns(path, QUANTITIES, _EXAMPLE)
     if "force" in data:
         return _compression(path, data, initial_pressure)
     return _inflation(path, data)
+
+
+def columns(path, quantities: dict, example: str) -> dict[str, np.ndarray]:
+    """The columns of a test's CSV file ``path``: name -> its values in SI, shape (n,), in the header's order.
+
+    ``quantities`` maps each column name the test may have to its kind (``pocket.core.units.KINDS``);
+    ``example`` is a header to show in errors. A missing header or unit, a column not in ``quantities`` or
+    given twice, a unit of another kind, a row of another length or a cell that is not a finite number is an
+    InputError naming the file and the column or row (``read``)."""
+    path = pathlib.Path(path)
+    table = rows(path, "a test's CSV data")
+    if not table:
+        raise InputError(f"{path}: empty, but the first line must name the columns with units, like {example!r}")
+    named = _columns(path, table[0], quantities, example)
+    if len(table) < 2:
+        raise InputError(f"{path}: a header and no rows of data")
+    values = _numbers(path, table[1:], named)
+    return {name: values[:, j] for j, (name, _) in enumerate(named)}
 
 
 def _inflation(path, data) -> Dataset:
@@ -185,6 +197,16 @@ def _inflation(path, data) -> Dataset:
     return Dataset("inflation", pressure, data, None, str(path))
 
 
+def check_forces(path, force: np.ndarray, test: str) -> None:
+    """Refuse the forces (N) of a force-controlled ``test`` ("a compression test") in ``path`` that are not >= 0 or
+    not each its own: an InputError naming the row."""
+    bad = np.flatnonzero(~(force >= 0.0))
+    if bad.size:
+        raise InputError(f"{path}: row {bad[0] + 1}, force = {force[bad[0]]:.6g} N, but it must be >= 0")
+    if np.unique(force).size != force.size:
+        raise InputError(f"{path}: a force given twice, but each row of {test} needs its own force")
+
+
 def _compression(path, data, initial_pressure) -> Dataset:
     if "pressure" not in data:
         raise InputError(f"{path}: a compression test (a force column) needs a pressure column, like "
@@ -193,11 +215,7 @@ def _compression(path, data, initial_pressure) -> Dataset:
         raise InputError(f"{path}: the fit cannot use a volume column in a compression test (the liquid's "
                          "volume is fixed while the plate presses)")
     force = data.pop("force")
-    bad = np.flatnonzero(~(force >= 0.0))
-    if bad.size:
-        raise InputError(f"{path}: row {bad[0] + 1}, force = {force[bad[0]]:.6g} N, but it must be >= 0")
-    if np.unique(force).size != force.size:
-        raise InputError(f"{path}: a force given twice, but each row of a compression test needs its own force")
+    check_forces(path, force, "a compression test")
     for name, v in data.items():
         _positive(path, name, v)
     zero = np.flatnonzero(force == 0.0)

@@ -28,12 +28,16 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Callable
+from typing import Any
 
 from pocket.core.errors import InputError
 from pocket.core.materials import LAWS, Material
 
-__all__ = ["PRESTRETCH", "Key", "key_named", "keys"]
+__all__ = ["PRESTRETCH", "Key", "Subject", "key_named", "keys"]
 
+#: what a key reads and moves: a ``Material``, or a capsule's rubber with its initial pressure
+#: (``pocket.apps.fit.capsulemodel.Trial``)
+Subject = Any
 #: the key of the clamped sheet's prestretch (the case file's ``sheet.prestretch``)
 PRESTRETCH = "prestretch"
 
@@ -44,7 +48,8 @@ _LOWER = {("mooney-rivlin", "c1"): 0.0, ("neo-hookean", "mu"): 0.0, ("yeoh", "c1
 
 @dataclasses.dataclass(frozen=True)
 class Key:
-    """A fitted quantity: its ``name`` (a case-file key), ``unit`` ("stress" or "dimensionless"),
+    """A fitted quantity: its ``name`` (a case-file key), ``unit`` ("stress", "dimensionless", or "pressure": a
+    load in Pa whatever the thickness, a capsule's initial pressure, ``pocket.apps.fit.capsuletest``),
     ``lower`` and ``upper`` bounds (stresses in the material's unit: only 0 and inf are used),
     ``get(material) -> float`` and ``put(material, value) -> Material``; ``unknown`` is the (get, put)
     of the coordinate the fit moves it along (module docstring), None for the value itself."""
@@ -53,15 +58,15 @@ class Key:
     unit: str
     lower: float
     upper: float
-    get: Callable[[Material], float]
-    put: Callable[[Material, float], Material]
-    unknown: tuple[Callable[[Material], float], Callable[[Material, float], Material]] | None = None
+    get: Callable[[Subject], float]
+    put: Callable[[Subject, float], Subject]
+    unknown: tuple[Callable[[Subject], float], Callable[[Subject, float], Subject]] | None = None
 
-    def coordinate(self, material: Material) -> float:
+    def coordinate(self, material: Subject) -> float:
         """The fit's unknown for this key at ``material``."""
         return (self.unknown or (self.get, self.put))[0](material)
 
-    def moved(self, material: Material, value: float) -> Material:
+    def moved(self, material: Subject, value: float) -> Subject:
         """``material`` with this key's coordinate at ``value``."""
         return (self.unknown or (self.get, self.put))[1](material, value)
 

@@ -27,7 +27,8 @@ fit is a ``ConvergenceError`` saying so.
 
 The statistics of the result are in ``pocket.apps.fit.stats``, its intervals by the profile likelihood in
 ``pocket.apps.fit.intervals`` (each trial of a profile a least-squares re-fit of the other unknowns with one held:
-``_Profile``).
+``_Profile``). ``search`` is the fit from its starts on, which a test of another kind shares
+(``pocket.apps.fit.capsuletest``).
 """
 
 from __future__ import annotations
@@ -35,6 +36,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
+from collections.abc import Callable
 
 import numpy as np
 
@@ -43,12 +45,12 @@ from pocket.core.materials import Material
 
 from .checks import modulus_warnings
 from .intervals import intervals
-from .keys import PRESTRETCH, Key, key_named, keys
+from .keys import PRESTRETCH, Key, Subject, key_named, keys
 from .model import PENALTY, Setup, predict, residuals
 from .start import starts
 from .stats import Statistics, normal_inverse, statistics
 
-__all__ = ["PRESTRETCHES", "PROBED", "RUNS", "Fit", "fit"]
+__all__ = ["PRESTRETCHES", "PROBED", "RUNS", "Fit", "Problem", "fit", "free_keys", "search"]
 
 #: starts probed (the best by their cost), for the laws ``PROBED``
 RUNS = 4
@@ -126,22 +128,36 @@ class Fit:
     starts: int
     penalised: int
 
+    def predicted(self, setup: Setup) -> list:
+        """The fitted model's values at ``setup``'s data (``pocket.apps.fit.model.predict``): the figure's curves."""
+        return predict(setup, self.material)[0]
 
-class _Problem:
-    """The residual function of the scaled unknowns x, with its Jacobian and counters."""
+    def law_keys(self) -> tuple[Key, ...]:
+        """All keys of the fitted law (``pocket.apps.fit.keys.keys``): what the report reads each key's unit from."""
+        return keys(self.material.law, len(self.material["mu"]) if self.material.law == "ogden" else 1)
 
-    def __init__(self, setup: Setup, base: Material, free: list[Key], scales: np.ndarray, count: dict):
+
+class Problem:
+    """The residual function of the scaled unknowns x, with its Jacobian and counters: ``values`` (the model at
+    the data) and ``compare`` (the residuals) are those of ``pocket.apps.fit.model``; a test of another kind
+    subclasses it (``pocket.apps.fit.capsuletest``)."""
+
+    #: whether least_squares may stop on a small gradient (its gtol, absolute in the trust-region method): the
+    #: relative residuals make the gradient's size the fit's; residuals of another scale turn it off
+    gradient_test = True
+
+    def __init__(self, setup: Setup, base: Subject, free: list[Key], scales: np.ndarray, count: dict):
         self.setup, self.base, self.free, self.scales, self.count = setup, base, free, scales, count
         self.lower = np.array([k.lower for k in free]) / scales
         self.upper = np.array([k.upper for k in free]) / scales
         self._last: tuple[bytes, np.ndarray, list] | None = None  # the last evaluation: x, r, the model's values
         self._jac: tuple[bytes, np.ndarray] | None = None  # the last Jacobian (least_squares' at its result)
 
-    def x(self, material: Material) -> np.ndarray:
+    def x(self, material: Subject) -> np.ndarray:
         """The scaled unknowns of ``material``."""
         return np.array([k.coordinate(material) for k in self.free]) / self.scales
 
-    def material(self, x) -> Material:
+    def material(self, x) -> Subject:
         m = self.base
         for key, value in zip(self.free, np.asarray(x) * self.scales, strict=True):
             m = key.moved(m, value)
@@ -164,16 +180,26 @@ class _Problem:
     def __call__(self, x) -> np.ndarray:
         return self.evaluate(x)[0]
 
+    def values(self, material: Subject) -> tuple[list, int]:
+        """The model's values at the data for the trial ``material`` and the solver calls made
+        (``pocket.apps.fit.model.predict``)."""
+        try:
+            return predict(self.setup, material)
+        except InputError:  # a Gent prestretch past the trial Jm's locking: outside the admissible set
+            return predict(self.setup, None)  # no state anywhere, no solver called
+
+    def compare(self, values: list) -> np.ndarray:
+        """The residuals of the model's ``values`` (``pocket.apps.fit.model.residuals``), with ``PENALTY``
+        where a datum has no state."""
+        return residuals(self.setup, values)
+
     def evaluate(self, x) -> tuple[np.ndarray, list]:
-        """The residuals at ``x`` and the model's values (``pocket.apps.fit.model.predict``)."""
+        """The residuals at ``x`` and the model's values (``values``)."""
         x = np.asarray(x, dtype=float)
         if self._last is not None and self._last[0] == x.tobytes():
             return self._last[1], self._last[2]
-        try:
-            values, calls = predict(self.setup, self.material(x))
-        except InputError:  # a Gent prestretch past the trial Jm's locking: outside the admissible set
-            values, calls = predict(self.setup, None)  # no state anywhere, no solver called
-        r = residuals(self.setup, values)
+        values, calls = self.values(self.material(x))
+        r = self.compare(values)
         self.count["calls"] += calls
         self.count["penalised"] += bool(np.any(r == PENALTY))
         self._last = (x.tobytes(), r, values)
@@ -202,7 +228,7 @@ class _Problem:
         return jac
 
 
-def _fixed_material(material: Material, fixed: dict, all_keys) -> Material:
+def _fixed_material(material: Subject, fixed: dict, all_keys) -> Subject:
     for name, value in fixed.items():
         material = key_named(all_keys, name, "--fix").put(material, value)
     return material
@@ -262,27 +288,44 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     clock = time.perf_counter()
     fixed, start = dict(fixed or {}), dict(start or {})
     all_keys = keys(law, terms)
-    for name in (*fixed, *start):
-        key_named(all_keys, name, "--fix" if name in fixed else "start")
     if prestretch and PRESTRETCH in fixed:
         raise InputError(f"--fix {PRESTRETCH}={fixed[PRESTRETCH]!r} holds the prestretch that --fit-prestretch "
                          "asks to fit: give one of them")
     if PRESTRETCH in fixed and not fixed[PRESTRETCH] >= 1.0:
         raise InputError(f"--fix {PRESTRETCH} = {fixed[PRESTRETCH]!r}, but a prestretch of the clamped sheet "
                          "must be >= 1")
-    free = [k for k in all_keys if k.name not in fixed and (prestretch or k.name != PRESTRETCH)]
+    free = free_keys(setup, all_keys, fixed, start, () if prestretch else (PRESTRETCH,))
+    prestretches = (fixed[PRESTRETCH],) if PRESTRETCH in fixed else (start[PRESTRETCH],) if PRESTRETCH in start \
+        else PRESTRETCHES if prestretch else (1.0,)
+    shapes = starts(setup, law, terms, prestretches)
+    return search(setup, law, shapes, all_keys, free, fixed, start, law in PROBED or prestretch, scaled, clock)
+
+
+def free_keys(setup: Setup, all_keys, fixed: dict, start: dict, held: tuple = ()) -> list[Key]:
+    """The keys of ``all_keys`` a fit varies: those neither in ``fixed`` nor named in ``held``; an InputError for a
+    key of ``fixed`` or ``start`` not among ``all_keys``, for no key left, or for fewer data than keys + 1."""
+    for name in (*fixed, *start):
+        key_named(all_keys, name, "--fix" if name in fixed else "start")
+    free = [k for k in all_keys if k.name not in fixed and k.name not in held]
     if not free:
         raise InputError("--fix holds every parameter of the law: there is nothing left to fit")
     if setup.count <= len(free):
         raise InputError(f"{setup.count} data, but fitting {len(free)} parameters ({', '.join(k.name for k in free)}) "
                          f"needs at least {len(free) + 1}")
-    prestretches = (fixed[PRESTRETCH],) if PRESTRETCH in fixed else (start[PRESTRETCH],) if PRESTRETCH in start \
-        else PRESTRETCHES if prestretch else (1.0,)
-    probed = law in PROBED or prestretch
+    return free
+
+
+def search(setup: Setup, law: str, shapes, all_keys, free: list[Key], fixed: dict, start: dict, probed: bool,
+           make: Callable[..., Problem], clock: float) -> Fit:
+    """The least-squares fit of the keys ``free`` from the starts ``shapes`` (per shape, the trial sets to try in
+    turn, the first with a state for every datum kept), each with the values of ``start`` and ``fixed`` put in
+    (keys of ``all_keys``): the starts ranked, the best probed (``probed``) or run, its statistics and intervals
+    (module docstring). ``make(setup, trial, free, count)`` is the scaled ``Problem`` of a trial set; ``clock``
+    the ``time.perf_counter()`` the fit began at. The result's ``material`` is the trial set fitted."""
     ranked: list = []
     count, tried = {"calls": 0, "penalised": 0}, 0
     sample = _thinned(setup) if probed else setup  # where the starts are ranked and probed
-    for shape in starts(setup, law, terms, prestretches):
+    for shape in shapes:
         for material in shape:
             try:
                 material = _fixed_material(_fixed_material(material, start, all_keys), fixed, all_keys)
@@ -290,7 +333,7 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
                 continue
             if any(material == seen for _, seen in ranked):  # shapes made one by the values given
                 break
-            problem = _problem(sample, material, free, count)
+            problem = make(sample, material, free, count)
             r = problem(problem.x(material))
             tried += 1
             if not np.any(r == PENALTY):
@@ -303,8 +346,8 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
     count["penalised"] = 0  # from here on: trial sets of the runs (a start without all states is just skipped)
     probes = []
     for _, material in ranked[:RUNS if probed else 1]:  # each start a few steps, where its basin shows
-        problem = _problem(sample, material, free, count)
-        x, status, evaluations = _run(problem, problem.x(material), _PROBE if probed else _MAX_EVALUATIONS)
+        problem = make(sample, material, free, count)
+        x, status, evaluations = run(problem, problem.x(material), _PROBE if probed else _MAX_EVALUATIONS)
         r = problem(x)
         if not np.any(r == PENALTY):
             probes.append((float(r @ r), x, problem, status, evaluations))
@@ -312,8 +355,8 @@ def fit(setup: Setup, law: str, *, terms: int = 1, fixed: dict | None = None, st
         raise ConvergenceError(f"the {law} fit ended outside the model's range from every start")
     _, x, problem, status, evaluations = min(probes, key=lambda probe: probe[0])
     if probed:  # the best probe runs on, on all the data
-        problem = _Problem(setup, problem.base, problem.free, problem.scales, count)
-        x, status, evaluations = _run(problem, x, _MAX_EVALUATIONS)
+        problem = type(problem)(setup, problem.base, problem.free, problem.scales, count)
+        x, status, evaluations = run(problem, x, _MAX_EVALUATIONS)
     r, values = problem.evaluate(x)
     if np.any(r == PENALTY):
         raise ConvergenceError(f"the {law} fit ended outside the model's range")
@@ -337,7 +380,7 @@ class _Profile:
     Each held value re-fits the other unknowns from the nearest held value already solved, moved along their
     regression on the held one, inverse[:, k] / inverse[k, k] (the linearised conditional optimum)."""
 
-    def __init__(self, problem: _Problem, x, s2: float, inverse):
+    def __init__(self, problem: Problem, x, s2: float, inverse):
         self.problem, self.x, self.s2, self.inverse = problem, x, s2, inverse
         self.rss, self.base = float(problem(x) @ problem(x)), problem.material(x)
 
@@ -348,7 +391,7 @@ class _Profile:
     def _tau2(self, k: int, value: float, solved: dict) -> float:
         p, others = self.problem, [j for j in range(self.x.size) if j != k]
         count = {"calls": 0, "penalised": 0}  # a profile reaches past the model's range by design: not counted
-        sub = _Problem(p.setup, p.free[k].put(self.base, value), [p.free[j] for j in others], p.scales[others],
+        sub = type(p)(p.setup, p.free[k].put(self.base, value), [p.free[j] for j in others], p.scales[others],
                        count)
         held = value / p.scales[k]
         near = min(solved, key=lambda h: abs(h - held))
@@ -356,7 +399,7 @@ class _Profile:
         try:
             if np.any(sub(start) == PENALTY):  # the shift left the model's range: the nearest optimum instead
                 start = solved[near]
-            xo = _run(sub, start, _PROFILE_EVALUATIONS, _PROFILE_TOL)[0] if others else start
+            xo = run(sub, start, _PROFILE_EVALUATIONS, _PROFILE_TOL)[0] if others else start
             r = sub(xo)
         except ConvergenceError:  # no state on either side of the start: no re-fit from here
             return math.inf
@@ -379,21 +422,23 @@ def _thinned(setup: Setup) -> Setup:
     return dataclasses.replace(setup, tests=tuple(tests))
 
 
-def _run(problem: _Problem, x, budget: int, tol: float = _TOL) -> tuple[np.ndarray, int, int]:
+def run(problem: Problem, x, budget: int, tol: float = _TOL) -> tuple[np.ndarray, int, int]:
     """least_squares from ``x`` for at most ``budget`` evaluations, to ``tol`` (its ftol, xtol and gtol): (x, its
     status, evaluations)."""
     from scipy.optimize import least_squares
 
     bounded = np.any(np.isfinite(problem.lower)) or np.any(np.isfinite(problem.upper))
+    gtol = tol if problem.gradient_test or not bounded else None  # Levenberg-Marquardt's is a cosine: scale-free
     out = least_squares(problem, np.clip(x, problem.lower, problem.upper), jac=problem.jacobian,
                         bounds=(problem.lower, problem.upper), method="trf" if bounded else "lm", ftol=tol,
-                        xtol=tol, gtol=tol, max_nfev=budget)
+                        xtol=tol, gtol=gtol, max_nfev=budget)
     return out.x, out.status, out.nfev
 
 
-def _problem(setup: Setup, material: Material, free: list[Key], count: dict) -> _Problem:
+def scaled(setup: Setup, material: Material, free: list[Key], count: dict) -> Problem:
+    """The ``Problem`` of ``material``'s keys ``free``, each scaled (module docstring)."""
     mu0 = abs(material.mu0)
     scales = np.array([mu0 if k.unit == "stress" else max(abs(k.coordinate(material)), 1.0) for k in free])
     if not np.all(np.isfinite(scales)) or not np.all(scales > 0.0) or not math.isfinite(mu0):
         raise ConvergenceError("the fit's start has no finite positive mu_0")
-    return _Problem(setup, material, free, scales, count)
+    return Problem(setup, material, free, scales, count)

@@ -31,6 +31,8 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Callable
+from typing import TypeGuard
 
 import numpy as np
 
@@ -40,7 +42,7 @@ from pocket.core.materials import Material, check
 from ..solvers import entry, record
 from .data import Dataset
 
-__all__ = ["PENALTY", "Setup", "predict", "residuals"]
+__all__ = ["PENALTY", "Setup", "admissible", "compressed", "missing", "predict", "residuals"]
 
 #: the residual of a datum with no state (module docstring)
 PENALTY = 1e6
@@ -104,22 +106,26 @@ def _inflation(setup: Setup, test: Dataset, material: Material, tension: float, 
     return out
 
 
-def _curve(setup, material, pressure_initial, forces, calls):
-    """The compressed states at ``forces`` (Fhat, increasing), or those below the range end, then None."""
+def compressed(setup: Setup, material: Material, pressure_initial: float, forces: list, calls: list,
+               geometry: str | None = None) -> list:
+    """The compressed states at ``forces`` (Fhat, increasing) of ``material`` (scaled) inflated at ``pressure_initial``
+    (Phat_I) on the reference surface ``geometry`` (None: the clamped disc), by the setup's solver, or those below the
+    range end, then None; ``calls[0]`` counts the solver's calls."""
     solver = record(setup.solver)
     curve = entry(solver, "compression_curve", "a compression test's data")
+    options = {**setup.options, **({} if geometry is None else {"geometry": geometry})}
     calls[0] += 1
     try:
-        return curve(material, pressure_initial, forces, **setup.options)
+        return curve(material, pressure_initial, forces, **options)
     except OutOfRangeError:
         if not solver.serves("range_end"):
             return [None] * len(forces)
     calls[0] += 1
     try:
-        end = entry(solver, "range_end", "a compression test's data")(material, pressure_initial, **setup.options)
+        end = entry(solver, "range_end", "a compression test's data")(material, pressure_initial, **options)
         inside = [f for f in forces if f <= end]
         calls[0] += bool(inside)
-        states = curve(material, pressure_initial, inside, **setup.options) if inside else []
+        states = curve(material, pressure_initial, inside, **options) if inside else []
     except _MISSED:
         return [None] * len(forces)
     return states + [None] * (len(forces) - len(inside))
@@ -131,7 +137,7 @@ def _compression(setup: Setup, test: Dataset, material: Material, tension: float
     order = np.argsort(test.control)
     forces = [float(f) for f in test.control[order] / (pressure_initial * math.pi * setup.radius**2)]
     try:
-        states = _curve(setup, material, pressure_initial * setup.radius / tension, forces, calls)
+        states = compressed(setup, material, pressure_initial * setup.radius / tension, forces, calls)
     except _MISSED:
         states = [None] * len(forces)
     out = {name: np.full(test.control.shape, math.nan) for name in test.responses}
@@ -143,31 +149,45 @@ def _compression(setup: Setup, test: Dataset, material: Material, tension: float
     return out
 
 
+def admissible(material: Material | None) -> TypeGuard[Material]:
+    """Whether ``material`` is inside its law's admissible set (None: a trial set outside it already)."""
+    if material is None:
+        return False
+    try:
+        check(material.law, {n: list(v) if isinstance(v, tuple) else v for n, v in material.params})
+    except InputError:
+        return False
+    return True
+
+
+def missing(setup: Setup) -> list[dict]:
+    """The model's values of a trial set with no state for any datum: NaN everywhere (as ``predict``)."""
+    return [{n: np.full(t.control.shape, math.nan) for n in t.responses} for t in setup.tests]
+
+
 def predict(setup: Setup, material: Material | None) -> tuple[list[dict], int]:
     """The model's value at each datum (per test, column name -> SI array of the test's shape, NaN where the
     model has no state) for ``material`` (its stresses in the setup's unit; None: a trial set outside the
     law's admissible set), and the number of solver calls (entry points called: an inflation test marched as one
     curve is one call)."""
     calls = [0]
-    try:
-        if material is None:
-            raise InputError("outside the admissible set")
-        check(material.law, {n: list(v) if isinstance(v, tuple) else v for n, v in material.params})
-    except InputError:  # outside the law's admissible set: no state anywhere
-        return [{n: np.full(t.control.shape, math.nan) for n in t.responses} for t in setup.tests], 0
+    if not admissible(material):  # no state anywhere
+        return missing(setup), 0
     tension = setup.tension(material)
     unit = material.scaled()
     out = [(_inflation if t.kind == "inflation" else _compression)(setup, t, unit, tension, calls) for t in setup.tests]
     return out, calls[0]
 
 
-def residuals(setup: Setup, values: list[dict]) -> np.ndarray:
-    """The residual of each datum (module docstring), tests in order, columns in each test's order; shape (n,)."""
+def residuals(setup: Setup, values: list[dict], plain: Callable = lambda m, d: m / d - 1.0) -> np.ndarray:
+    """The residual of each datum (module docstring), tests in order, columns in each test's order; shape (n,).
+    ``plain(model, data)`` is the residual of a column without a stated uncertainty (relative; a capsule's gaps
+    have their own, ``pocket.apps.fit.capsulemodel``)."""
     out = []
     for test, model in zip(setup.tests, values, strict=True):
         for name, data in test.responses.items():
             keep = np.isfinite(data)
             d, m = data[keep], model[name][keep]
-            r = (m - d) / setup.sigma[name] if name in setup.sigma else m / d - 1.0
+            r = (m - d) / setup.sigma[name] if name in setup.sigma else plain(m, d)
             out.append(np.where(np.isfinite(m), r, PENALTY))
     return np.concatenate(out) if out else np.empty(0)

@@ -20,7 +20,6 @@ from pocket.core.errors import ConvergenceError, OutOfRangeError
 from ..folders import staged
 from .data import CONTROLS
 from .leastsquares import Fit
-from .model import predict
 
 __all__ = ["CASE", "FIGURE", "KIND", "NOMINAL_THICKNESS", "case_text", "summary", "write"]
 
@@ -31,18 +30,13 @@ NOMINAL_THICKNESS = 1e-3
 FIGURE, CASE = "fit.png", "fitted.toml"
 _CURVE = 60  # points of a fitted curve in the figure
 _SI = {"pressure": ("kPa", 1e-3), "height": ("mm", 1e3), "volume": ("mL", 1e6), "force": ("N", 1.0)}
+#: a capsule's test is micromanipulation: micronewtons and micrometres
+_SI_CAPSULE = {"force": ("uN", 1e6), "gap": ("um", 1e6), "displacement": ("um", 1e6)}
 
 
 def _unit(fit: Fit, key: str) -> str:
-    law_unit = next(k.unit for k in _keys(fit) if k.name == key)
-    return ("Pa" if fit.setup.thickness else "N/m") if law_unit == "stress" else "1"
-
-
-def _keys(fit: Fit):
-    from .keys import keys
-
-    terms = len(fit.material["mu"]) if fit.material.law == "ogden" else 1
-    return keys(fit.material.law, terms)
+    unit = next(k.unit for k in fit.law_keys() if k.name == key)
+    return ("Pa" if fit.setup.thickness else "N/m") if unit == "stress" else "Pa" if unit == "pressure" else "1"
 
 
 def summary(fit: Fit) -> dict:
@@ -84,6 +78,8 @@ def summary(fit: Fit) -> dict:
     >>> folder.cleanup()
     """
     s = fit.statistics
+    # a capsule's gaps: differences in units of its diameter (``pocket.apps.fit.capsulemodel``)
+    plain = "in units of the diameter 2R" if any(t.kind == "capsule" for t in fit.setup.tests) else "relative"
     return {
         "law": fit.material.law,
         "parameters": {name: {"value": float(v), "standard_error": float(e),
@@ -100,8 +96,8 @@ def summary(fit: Fit) -> dict:
         "tension_scale": "the membrane model sees the rubber only through mu_0 T" +
                          ("" if fit.setup.thickness else ": without a thickness, stresses are reported times T (N/m)"),
         "correlation": {"keys": list(s.names), "matrix": s.correlation.tolist()},
-        "residuals": "relative" if not fit.setup.sigma else
-                     f"in units of the stated uncertainty for {', '.join(fit.setup.sigma)}, relative otherwise",
+        "residuals": plain if not fit.setup.sigma else
+                     f"in units of the stated uncertainty for {', '.join(fit.setup.sigma)}, {plain} otherwise",
         "residual_rms": s.rms,
         "data": int(fit.residuals.size),
         "degrees_of_freedom": s.dof,
@@ -201,7 +197,7 @@ def _curve(fit: Fit, test):
     dense = dataclasses.replace(test, control=np.linspace(low, top, _CURVE),
                                 responses={n: np.zeros(_CURVE) for n in test.responses})
     try:
-        values, _ = predict(dataclasses.replace(fit.setup, tests=(dense,)), fit.material)
+        values = fit.predicted(dataclasses.replace(fit.setup, tests=(dense,)))
     except (OutOfRangeError, ConvergenceError):
         return dense.control, {}
     return dense.control, values[0]
@@ -220,8 +216,9 @@ def figure(fit: Fit, path: pathlib.Path) -> None:
     start = 0
     for j, (test, name) in enumerate(panels):
         control = CONTROLS[test.kind]
-        cu, cf = _SI[control]
-        ru, rf = _SI[name]
+        units = _SI_CAPSULE if test.kind == "capsule" else _SI
+        cu, cf = units[control]
+        ru, rf = units[name]
         data = test.responses[name]
         keep = np.isfinite(data)
         dense, curve = _curve(fit, test)
@@ -237,7 +234,8 @@ def figure(fit: Fit, path: pathlib.Path) -> None:
         bottom.axhline(0.0, color="0.6", lw=0.8)
         bottom.plot(test.control[keep] * cf, r, "o", ms=3)
         bottom.set_xlabel(f"{control} [{cu}]")
-        bottom.set_ylabel("model / data - 1" if name not in fit.setup.sigma else "(model - data) / sigma")
+        bottom.set_ylabel("(model - data) / sigma" if name in fit.setup.sigma else "(model - data) / 2R"
+                          if test.kind == "capsule" else "model / data - 1")
     fig.suptitle(f"{fit.material.law} fit: residual RMS {fit.statistics.rms:.3g}", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110, bbox_inches="tight")
@@ -245,7 +243,8 @@ def figure(fit: Fit, path: pathlib.Path) -> None:
 
 
 def write(fit: Fit, target: pathlib.Path) -> pathlib.Path:
-    r"""Write the figure of a fit (``FIGURE``) and its fitted sheet's case file (``CASE``) into a folder.
+    r"""Write the figure of a fit (``FIGURE``) and its fitted sheet's case file (``CASE``; not for a capsule's fit)
+    into a folder.
 
     Whole or not at all; an existing folder is replaced only if pocket wrote it as a fit's result (``KIND``,
     ``pocket.apps.folders.check_replaceable``).
@@ -291,5 +290,6 @@ def write(fit: Fit, target: pathlib.Path) -> pathlib.Path:
     """
     with staged(target, KIND) as partial:
         figure(fit, partial / FIGURE)
-        (partial / CASE).write_text(case_text(fit), encoding="utf-8")
+        if all(t.kind != "capsule" for t in fit.setup.tests):  # a capsule's case file: not yet
+            (partial / CASE).write_text(case_text(fit), encoding="utf-8")
     return target

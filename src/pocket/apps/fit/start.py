@@ -40,7 +40,7 @@ from pocket.core.materials import Material, energy
 
 from .model import Setup
 
-__all__ = ["MAX_TERMS", "SHAPES", "SMALL", "flat_tension", "starts", "tension_estimate"]
+__all__ = ["MAX_TERMS", "SHAPES", "SMALL", "at_tensions", "flat_tension", "starts", "tension_estimate"]
 
 #: rows of each test used for the small-strain estimate
 SMALL = 3
@@ -116,6 +116,17 @@ def starts(setup: Setup, law: str, terms: int = 1, prestretches=(1.0,)) -> list[
                 assert first is not None
                 tensions = [first * setup.radius / p for p in (0.01, 0.1, 1.0)]
             out.append([_times_stresses(unit, t / 3.0 / setup.scale / unit.mu0) for t in tensions])
+    return out
+
+
+def at_tensions(setup: Setup, law: str, terms: int, tensions) -> list[Material]:
+    """Each start shape of ``law`` (``SHAPES``, Ogden's of ``terms`` terms) at each tension scale E T (N/m) of
+    ``tensions``, stresses in ``setup``'s unit, without prestretch: where the data give no estimate of E T, a fit
+    ranks these by their cost (a capsule's, ``pocket.apps.fit.capsuletest``)."""
+    out = []
+    for shape in _ogden(terms) if law == "ogden" else SHAPES[law]:
+        unit = Material(law, tuple(shape.items()))
+        out += [_times_stresses(unit, t / 3.0 / setup.scale / unit.mu0) for t in tensions]
     return out
 
 

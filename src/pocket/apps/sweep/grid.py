@@ -2,7 +2,8 @@
 
 The rubber is a Mooney-Rivlin alpha per grid point (the alpha axis), or one rubber of
 another law for the whole sweep (``pocket.core.materials.Material``); the fluid is a
-liquid or one gas, and the indenter the flat plate or one sphere, for the whole sweep.
+liquid or one gas, the indenter the flat plate or one sphere, and the membrane a pocket or a
+capsule (``geometry``, given to the solver as it is), for the whole sweep.
 
 Each grid point is one compressed state. The points of one curve (a rubber,
 a fluid, Phat_I, the solver and its options) are solved in one task by
@@ -59,6 +60,7 @@ from concurrent.futures import as_completed
 
 from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
+from pocket.core.geometries import DISC, Geometry, as_geometry
 from pocket.core.indenters import PLATE, Indenter, as_indenter
 from pocket.core.inputs import check_force, check_positive
 from pocket.core.materials import Material, as_material, mooney_rivlin
@@ -68,7 +70,7 @@ from ..contactpatch import contact_patch
 from ..folders import write_whole
 from ..rubbers import prestretched
 from ..solvers import entry, record
-from .journal import COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
+from .journal import CAPSULE, COLUMNS, STATUSES, Journal, identity, key, line, rows_csv
 
 __all__ = ["COLUMNS", "MAX_POINTS", "STATUSES", "run_sweep", "solve_curve", "solve_point"]
 
@@ -87,10 +89,11 @@ def _row(solver: str, material, pressure_initial: float, force: float, options: 
     else:
         row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS if key != "alpha"})
         row.update(contact_patch(state))
+        row.update({key: float(state.extra[key]) for key in CAPSULE if key in state.extra})
         row.update({key: float(getattr(state, key)) for key in CHECKS[:2]}, wrinkled=state.wrinkled)
         row.update(status="ok", message=line("; ".join(state.warnings)))
     row.update(identity(solver, options, material, as_fluid(options.get("fluid")),
-                        as_indenter(options.get("indenter"))))  # the point as asked
+                        as_indenter(options.get("indenter")), as_geometry(options.get("geometry"))))  # as asked
     row.update(alpha=_alpha_cell(material), pressure_initial=pressure_initial, force=force)
     return row
 
@@ -214,8 +217,8 @@ def _curves(points) -> dict:
 
 def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", options=None,
               progress: Callable[[int, int], None] | None = None, material: Material | None = None,
-              fluid: Fluid | None = None, indenter: Indenter | None = None, prestretch: float = 1.0
-              ) -> tuple[int, int]:
+              fluid: Fluid | None = None, indenter: Indenter | None = None, prestretch: float = 1.0,
+              geometry: Geometry | str | None = None) -> tuple[int, int]:
     """Solve every (alpha, Phat_I, Fhat) of a grid not already in the sweep file, on an executor.
 
     Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the grid's forces up
@@ -250,6 +253,9 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
         None (the flat plate), a sphere or a profile table (``pocket.core.indenters``), part of each point.
     prestretch : float, optional
         The sheets' lambda_p (``Material.prestretch``), for every rubber of the grid.
+    geometry : Geometry or str, optional
+        The membrane (``pocket.core.geometries``): None or "pocket" the flat clamped sheet, "capsule" the closed
+        capsule between two plates (its Fhat's F on each plate), part of each point.
 
     Returns
     -------
@@ -292,7 +298,10 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     indenter = as_indenter(indenter)
     if indenter != PLATE:
         options["indenter"] = indenter
-    cells = {m: identity(solver, options, m, fluid, indenter) for m in materials}
+    geometry = as_geometry(geometry)
+    if geometry != DISC:
+        options["geometry"] = geometry
+    cells = {m: identity(solver, options, m, fluid, indenter, geometry) for m in materials}
     keys = [key({**cells[m], "alpha": _alpha_cell(m), "pressure_initial": p, "force": f})
             for m, p, f in grid]
     journal = Journal(pathlib.Path(path))

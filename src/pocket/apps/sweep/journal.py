@@ -14,10 +14,14 @@ lists are numbers separated by spaces; a sheet clamped with a prestretch lambda_
 ``material`` = ``<law> prestretch=<lambda_p>``, so the files of sheets without one keep their
 columns and cells), the fluid (``fluid``, and a gas's ``ambient`` Phat_atm and ``gamma``), the
 indenter (``indenter``: ``plate``, ``sphere K=...`` with K = R_s / R, or ``profile sha256=...`` for
-a profile table), and the membrane's checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``).
+a profile table), the membrane's checks (``tension_1_min``, ``tension_2_min``, ``wrinkled``), and the membrane
+(``geometry``: ``pocket``, the flat clamped sheet, or ``capsule``). A capsule's point also fills its own keys
+(``CAPSULE``: ``stretch_pole``, ``radius_equator`` in units of its radius R, ``force_ETR`` = F / (E T R), after the
+contact patch; empty for a pocket), and its other keys are a capsule's (``pocket.core.reported``: F on each plate,
+``height`` each plate's distance from the equatorial plane, ``volume`` the whole capsule's).
 Floats are written exactly (``repr``), so a point reads back equal to the number asked.
 
-A point is its solver and options, rubber, fluid, indenter, Phat_I and Fhat (``key``): a file
+A point is its solver and options, rubber, fluid, indenter, geometry, Phat_I and Fhat (``key``): a file
 may hold points of several sweeps, of several solvers and indenters, and a rerun recognises its own
 and keeps every row it reads, so nothing of the file is lost: a line that is not a row of one, or a
 second row of one point, is refused before any work. A file of an earlier pocket, whose rows lack
@@ -45,6 +49,7 @@ import stat
 
 from pocket.core.errors import InputError, OutputError
 from pocket.core.fluids import Fluid
+from pocket.core.geometries import DISC, Geometry
 from pocket.core.indenters import PLATE, Indenter
 from pocket.core.materials import Material
 from pocket.core.states import CHECKS, CompressedState
@@ -59,15 +64,18 @@ try:
 except ImportError:  # not a POSIX system: no lock
     fcntl = None  # type: ignore[assignment]
 
-__all__ = ["COLUMNS", "CONTACT", "IDENTITY", "STATUSES", "Journal", "identity", "key", "line",
+__all__ = ["CAPSULE", "COLUMNS", "CONTACT", "IDENTITY", "STATUSES", "Journal", "identity", "key", "line",
            "options_text", "rows_csv"]
 
 #: what identifies a point besides alpha, Phat_I and Fhat: its solver, rubber, fluid and indenter
 IDENTITY = ("solver", "solver_options", "material", *map(parameter_column, PARAMETERS), "fluid", "ambient", "gamma",
-            "indenter")
+            "indenter", "geometry")
 #: the contact patch of a point: its deformed radius and contact pressures (``pocket.apps.contactpatch``)
 CONTACT = ("contact_radius_deformed", *KEYS)
-COLUMNS = (*CompressedState.KEYS, *CONTACT, "solver", "solver_options", "status", "message", *IDENTITY[2:], *CHECKS)
+#: a capsule's own keys (its states' ``extra``, ``pocket.core.reported``'s group capsule), empty for a pocket
+CAPSULE = ("stretch_pole", "radius_equator", "force_ETR")
+COLUMNS = (*CompressedState.KEYS, *CONTACT, *CAPSULE, "solver", "solver_options", "status", "message", *IDENTITY[2:],
+           *CHECKS)
 STATUSES = ("ok", "out_of_range", "failed")
 _NUMBERS = ("alpha", "pressure_initial", "force")
 
@@ -91,19 +99,23 @@ def _option(name: str, value) -> str:
 
 
 def options_text(options: dict) -> str:
-    """The ``solver_options`` cell of a sweep's solver ``options`` (checked; the fluid and the indenter are not
-    ones)."""
-    return " ".join(_option(name, options[name]) for name in sorted(options) if name not in ("fluid", "indenter"))
+    """The ``solver_options`` cell of a sweep's solver ``options`` (checked; the fluid, the indenter and the
+    geometry are not ones)."""
+    return " ".join(_option(name, options[name]) for name in sorted(options)
+                    if name not in ("fluid", "indenter", "geometry"))
 
 
-def identity(solver: str, options: dict, material: Material, fluid: Fluid, indenter: Indenter = PLATE) -> dict:
+def identity(solver: str, options: dict, material: Material, fluid: Fluid, indenter: Indenter = PLATE,
+             geometry: Geometry = DISC) -> dict:
     """The IDENTITY cells (text) of a point: ``solver`` its name and ``options`` its options (as
     ``options_text``), ``material`` a ``Material`` (its stresses written in units of mu_0, ``in_mu0``; a
     Mooney-Rivlin rubber given by its alpha: that alpha has its own column, and the parameters' cells stay
-    empty), ``fluid`` a ``Fluid``, ``indenter`` as its ``journal`` (``pocket.core.indenters``)."""
+    empty), ``fluid`` a ``Fluid``, ``indenter`` as its ``journal`` (``pocket.core.indenters``), ``geometry`` by
+    its name."""
     cells = dict.fromkeys(IDENTITY, "")
     law = material.law if material.prestretch == 1.0 else f"{material.law} prestretch={material.prestretch!r}"
-    cells.update(solver=solver, solver_options=options_text(options), material=law, indenter=indenter.journal())
+    cells.update(solver=solver, solver_options=options_text(options), material=law, indenter=indenter.journal(),
+                 geometry=geometry.name)
     if material.exact_alpha is None:
         cells.update({parameter_column(name): _cell(value) for name, value in in_mu0(material).params})
     cells.update({k: v if isinstance(v, str) else repr(v) for k, v in fluid.describe().items()})
@@ -111,7 +123,7 @@ def identity(solver: str, options: dict, material: Material, fluid: Fluid, inden
 
 
 def key(row) -> tuple:
-    """The point of a row: its IDENTITY cells (solver, options, rubber, fluid, indenter), then alpha (None for
+    """The point of a row: its IDENTITY cells (solver, options, rubber, fluid, indenter, geometry), then alpha (None for
     another law), Phat_I and Fhat."""
     alpha, pressure, force = (row[k] for k in _NUMBERS)
     return (*(row[k] for k in IDENTITY), None if alpha in ("", None) else float(alpha), float(pressure),
@@ -142,6 +154,8 @@ _EARLIER = {
               *CHECKS)).encode() + b"\n": "the indenter (they were all pressed by the flat plate)",
     ",".join((*CompressedState.KEYS, "solver", "solver_options", "status", "message", *_RUBBER_FLUID, "indenter",
               *CHECKS)).encode() + b"\n": "the contact patch's deformed radius and contact pressures",
+    ",".join((*CompressedState.KEYS, *CONTACT, "solver", "solver_options", "status", "message", *IDENTITY[2:-1],
+              *CHECKS)).encode() + b"\n": "the membrane's geometry (they are all pockets) and a capsule's keys",
 }
 
 

@@ -26,6 +26,16 @@ tends to the true volume as segments^-2 (a regular N-gon inscribed in a
 circle has N sin(2 pi/N) / (2 pi) = 1 - (2 pi/N)^2 / 6 + ... of its area),
 plus the error of sampling the meridian at the profile's points.
 
+A closed capsule (``pocket.core.geometries.CAPSULE``, the state's ``geometry``) is solved as its upper half,
+from the pole to the equatorial plane z = 0; it is written whole: the profile runs on through that plane to
+the lower pole, the upper half mirrored (eta -> -eta, ``pocket.apps.vtk.mirror``), and the surface, revolved
+from pole to pole, is closed (triangles at both poles), so that ParaView (or pyvista) finds the volume it
+encloses. Its ``r`` is the arc length S from the upper pole on the undeformed sphere (the same at a point and
+its mirror image), and its displacement is from the undeformed sphere, (sin S, 0, cos S) on the upper half and
+(sin S, 0, -cos S) on the lower. Both plates are drawn, at +H and -H (``pocket.apps.vtk.indentermesh``). Its
+field data add the capsule's keys (``stretch_pole``, ``radius_equator``, ``force_ETR``) and ``geometry_code``,
+the position of its geometry's name in ``pocket.core.geometries.GEOMETRIES`` (``NAMED``).
+
 Point data, on the profile and the surface alike (copied around each ring),
 all dimensionless:
 
@@ -105,6 +115,7 @@ import numpy as np
 
 from pocket.core.errors import InputError
 from pocket.core.fluids import Fluid
+from pocket.core.geometries import DISC, GEOMETRIES, Symmetry
 from pocket.core.inputs import check_count
 from pocket.core.materials import LAWS
 from pocket.core.states import CHECKS
@@ -113,12 +124,14 @@ from ..contactpatch import contact_patch
 from ..folders import check_replaceable, staged
 from ..solvers import SOLVERS
 from .indentermesh import indenter_mesh, reach_of
+from .mirror import mirrored
 from .resampling import resample, series_radii
 from .revolve import revolve
 
 __all__ = [
     "CODES",
     "KIND",
+    "NAMED",
     "SERIES_POINTS",
     "field_data",
     "profile_mesh",
@@ -132,6 +145,10 @@ KIND = "VTK series"
 
 #: field -> the names its code counts (the code is a name's position): the solver, the rubber's law, the fluid
 CODES = {"solver_code": tuple(SOLVERS), "material_code": tuple(LAWS), "fluid_code": ("liquid", "gas")}
+
+#: a state's ``extra`` key whose value is a name -> the names its code counts (``geometry_code``: a capsule's
+#: states say their reference surface, ``pocket.core.geometries.GEOMETRIES``)
+NAMED = {"geometry": tuple(GEOMETRIES)}
 
 #: equally spaced Lagrangian radii of a series (the contact edges are added)
 SERIES_POINTS = 201
@@ -189,6 +206,8 @@ def field_data(state) -> dict[str, np.ndarray]:
         option = None if solver is None else solver.option(key)
         if isinstance(value, str) and option is not None and option.choices:
             out[f"{key}_code"] = _code(value, option.choices)
+        elif isinstance(value, str) and key in NAMED:
+            out[f"{key}_code"] = _code(value, NAMED[key])
         elif isinstance(value, int | float):  # a bool too: 1.0 or 0.0
             out[key] = np.array([float(value)])
     return out
@@ -199,8 +218,9 @@ def _code(name: str, names: tuple) -> np.ndarray:
     return np.array([float(names.index(name) if name in names else -1)])
 
 
-def _point_data(profile) -> dict[str, np.ndarray]:
-    """Per-point fields of the profile (displacement in the plane y = 0)."""
+def _point_data(profile, geometry=DISC) -> dict[str, np.ndarray]:
+    """Per-point fields of the profile (displacement in the plane y = 0, from the reference surface
+    ``geometry``'s point (r0(r), 0, z0(r)): the flat sheet's (r, 0, 0) by default)."""
     r, rho, eta = (np.asarray(a, dtype=float) for a in (profile.r, profile.rho, profile.eta))
     return {
         "lambda_1": np.asarray(profile.stretch_1, dtype=float),
@@ -210,8 +230,20 @@ def _point_data(profile) -> dict[str, np.ndarray]:
         "T_2": np.asarray(profile.tension_2, dtype=float),
         "contact": np.asarray(profile.contact, dtype=bool).astype(np.uint8),
         "r": r,
-        "displacement": np.column_stack((rho - r, np.zeros_like(r), eta)),
+        "displacement": np.column_stack((rho - geometry.radius(r), np.zeros_like(r), eta - geometry.height(r))),
     }
+
+
+def _meridian(state, radii) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
+    """(rho, eta, point data) of the state's whole meridian: its profile (resampled at ``radii``), continued
+    through the mirror plane where its reference surface ends on one (a capsule: ``pocket.apps.vtk.mirror``)."""
+    profile = _sampled(state, radii)
+    geometry = getattr(state, "geometry", DISC)
+    rho, eta = np.asarray(profile.rho, dtype=float), np.asarray(profile.eta, dtype=float)
+    data = _point_data(profile, geometry)
+    if isinstance(geometry.end, Symmetry):
+        return mirrored(rho, eta, data, geometry.end.height)
+    return rho, eta, data
 
 
 def _sampled(state, radii):
@@ -250,11 +282,10 @@ def profile_mesh(state, *, radii=None) -> meshio.Mesh:
     >>> print(mesh.points.shape, mesh.cells[0].type, round(float(mesh.points[0, 2]), 6) == round(state.height, 6))
     (11, 3) line True
     """
-    profile = _sampled(state, radii)
-    rho, eta = np.asarray(profile.rho, dtype=float), np.asarray(profile.eta, dtype=float)
+    rho, eta, data = _meridian(state, radii)
     points = np.column_stack((rho, np.zeros_like(rho), eta))
     lines = np.column_stack((np.arange(len(rho) - 1), np.arange(1, len(rho))))
-    return meshio.Mesh(points, [("line", lines)], point_data=_point_data(profile), field_data=field_data(state))
+    return meshio.Mesh(points, [("line", lines)], point_data=data, field_data=field_data(state))
 
 
 def _segments(segments) -> int:
@@ -301,10 +332,10 @@ def surface_mesh(state, *, segments=64, radii=None) -> meshio.Mesh:
     True ['triangle', 'quad']
     """
     segments = _segments(segments)
-    profile = _sampled(state, radii)
-    surface = revolve(profile.rho, profile.eta, segments)
+    rho, eta, meridian = _meridian(state, radii)
+    surface = revolve(rho, eta, segments)
     source, hoop, cos, sin = surface.source, surface.hoop, surface.cos, surface.sin
-    data = {name: values[source] for name, values in _point_data(profile).items()}
+    data = {name: values[source] for name, values in meridian.items()}
     radial, up = data["displacement"][:, 0], data["displacement"][:, 2]
     data["displacement"] = np.column_stack((radial * cos[hoop], radial * sin[hoop], up))
     return meshio.Mesh(surface.points, surface.cells, point_data=data, field_data=field_data(state))
@@ -471,7 +502,9 @@ def write_series(directory, states, *, times=None, segments=64, points=SERIES_PO
             paths = write_state(partial, state, stem=stem, segments=segments, radii=radii, fields=fields)
             if pressed:
                 paths.append(partial / f"{stem}_indenter.vtu")
-                mesh = indenter_mesh(state.indenter, state.height, reach, segments=segments)
+                end = state.geometry.end
+                mesh = indenter_mesh(state.indenter, state.height, reach, segments=segments,
+                                     mirror=end.height if isinstance(end, Symmetry) else None)
                 mesh.field_data.update(_fields(fields))
                 _write_vtu(paths[-1], mesh)
             for part, path in zip(files, paths, strict=True):
