@@ -92,7 +92,8 @@ TOLERANCES = {
     "capsule_force": (1e-10, "a capsule's plate force against the fluid's pressure on the contact patch, F = P A_c "
                              "(in units E T R: force_ETR = pi Phat rho_c^2): shooting closes its residual "
                              "q rho_c^2 / Fhat - 1 to Newton's floor, 10 residual_tol ~ 1e-11 at the suite's Phat_I "
-                             ">= 0.1 (raised past it by the amplification of the pole's errors, about 1e3 at 0.1)"),
+                             ">= 0.1 (its free part shot in segments, each amplifying the pole's errors at most "
+                             "100-fold); the FE model's rho_c^2 is its contact_area = Fhat / q by construction"),
     "capsule_equator": (1e-9, "a capsule's vertical balance at the equator, 2 pi rho T_1 = P pi rho^2 - F (units E T "
                               "R), relative to P pi rho^2: an identity of the ODEs (the theory's first integral), "
                               "not a condition the shooting solver closes, so it holds to the integration's error, "
