@@ -462,12 +462,13 @@ def test_progress_bar_only_on_a_terminal():
 
 def test_timing_lists_every_task(report):
     """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence, the
-    fits to FE bulge data, the samples solved as membrane and solid)."""
+    fits to FE bulge data, the samples solved as membrane and solid, each capsule and the capsule's convergence)."""
     results = report[2]
     rows = _rows(report[1] / "timing.csv")
     assert len(rows) == len(results.tasks)
-    assert {r["task"] for r in rows} == {"reference", "column", "convergence",
-                                                                             "evidence", "fit", "solid"}
+    assert {r["task"] for r in rows} == {"reference", "column", "convergence", "evidence", "fit", "solid",
+                                         "capsule", "capsule convergence"}
+    assert len([r for r in rows if r["task"] == "capsule"]) == len(results.capsules)
     assert len([r for r in rows if r["task"] == "solid"]) == 4 * len(results.plan.thickness[0])
     assert len([r for r in rows if r["task"] == "fit"]) == len(results.plan.fits)
     assert len([r for r in rows if r["task"] == "reference"]) == len(results.pockets)
