@@ -66,7 +66,7 @@ def test_figure_csvs_hold_the_plotted_numbers(report):
     """Exact answer: each PNG has its CSV, with finite numbers; fig2's shooting profile ends at the clamp (1, 0)."""
     out = report[1]
     for name in ("fig2", "fig3a", "fig3b", "fig4", "fig5", "fluids", "laws", "fingertips", "contact_pressure",
-                 "convergence"):
+                 "convergence", "capsules"):
         png = out / f"{name}.png"
         assert png.stat().st_size > 10_000
         assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -462,12 +462,13 @@ def test_progress_bar_only_on_a_terminal():
 
 def test_timing_lists_every_task(report):
     """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence, the
-    fits to FE bulge data, the samples solved as membrane and solid)."""
+    fits to FE bulge data, the samples solved as membrane and solid, each capsule and the capsule's convergence)."""
     results = report[2]
     rows = _rows(report[1] / "timing.csv")
     assert len(rows) == len(results.tasks)
-    assert {r["task"] for r in rows} == {"reference", "column", "convergence",
-                                                                             "evidence", "fit", "solid"}
+    assert {r["task"] for r in rows} == {"reference", "column", "convergence", "evidence", "fit", "solid",
+                                         "capsule", "capsule convergence"}
+    assert len([r for r in rows if r["task"] == "capsule"]) == len(results.capsules)
     assert len([r for r in rows if r["task"] == "solid"]) == 4 * len(results.plan.thickness[0])
     assert len([r for r in rows if r["task"] == "fit"]) == len(results.plan.fits)
     assert len([r for r in rows if r["task"] == "reference"]) == len(results.pockets)
@@ -822,6 +823,25 @@ def test_thickness_section(report, page):
     assert all(c.error("V") > 0 for c in comparisons), volume
     assert "thickness.png" in page.images
     assert (report[1] / "thickness.png").stat().st_size > 0
+
+
+def test_capsule_section(report, page):
+    """Exact answers: every capsule of the suite ran, each shooting and FE state has its row of
+    capsule_states.csv (force_ETR = pi Fhat Phat_I, the compression 1 - H / lambda_I of its own height), the FE
+    model was compared on each capsule it poses, and the section and its figure are on the page."""
+    from pocket.validation import capsulechecks, capsules
+
+    results = report[2]
+    assert [c.capsule for c in results.capsules] == list(capsules.CASES)
+    rows = _rows(report[1] / "capsule_states.csv")
+    assert len(rows) == sum(len(c.shooting) + len(c.fem) for c in results.capsules)
+    for r in rows:
+        assert float(r["force_ETR"]) == pytest.approx(np.pi * float(r["force"]) * float(r["pressure_initial"]),
+                                                      rel=1e-14)
+    compared = {c.case for c in results.checks if c.comparison == capsulechecks.FEM}
+    assert compared == {c.name for c in capsules.CASES if c.fem}
+    assert "A capsule between two plates" in page.headings
+    assert "capsules.png" in page.images
 
 
 def _model_comparisons(results) -> set:

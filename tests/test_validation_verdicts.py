@@ -4,7 +4,7 @@ import dataclasses
 
 import pytest
 from pocket.validation.plan import FEM_COLUMNS
-from pocket.validation.verdicts import MEMBRANE, TOLERANCES, _fem_tolerance, _fluid_row, membrane_checks
+from pocket.validation.verdicts import MEMBRANE, TOLERANCES, _fem_tolerance, fluid_row, membrane_checks
 
 from pocket import shooting
 from pocket.core.fluids import gas
@@ -20,14 +20,14 @@ def test_fluid_row_holds_the_gas_law(gas_curve):
     reference that formula by hand); 1e-6 more volume fails; a liquid's reference is V_I."""
     state = gas_curve[1]
     expected = state.inflated.volume * ((0.31 + 6.5) / (state.pressure + 6.5)) ** (1 / 1.4)
-    row = _fluid_row("c", "shooting", "", state)
+    row = fluid_row("c", "shooting", "", state)
     assert row.verdict == "pass"
     assert row.reference == pytest.approx(expected, rel=1e-15)
     assert "gas law" in row.quantity
     bad = dataclasses.replace(state, volume=state.volume * (1 + 1e-6))
-    assert _fluid_row("c", "shooting", "", bad).verdict == "fail"
+    assert fluid_row("c", "shooting", "", bad).verdict == "fail"
     liquid = shooting.compress(0.3, 0.31, 1.0)
-    row = _fluid_row("c", "shooting", "", liquid)
+    row = fluid_row("c", "shooting", "", liquid)
     assert row.quantity == "volume = V_I"
     assert row.reference == liquid.inflated.volume
     assert row.verdict == "pass"

@@ -142,7 +142,8 @@ _SYMBOLS = (("A_c / (pi R^2)", r"$A_c/(\pi R^2)$"), ("F / (P_I pi R^2)", r"$F/(P
             ("P / P_I", r"$P/P_I$"), ("rho / R", r"$\rho/R$"), ("eta / R", r"$\eta/R$"),
             ("H_0", r"$H_0$"), ("a_c", r"$a_c$"), ("Fhat", r"$\hat F$"), ("Phat_I", r"$\hat P_I$"),
             ("alpha", r"$\alpha$"), ("lambda_1", r"$\lambda_1$"), ("<=", r"$\leq$"),
-            ("rho / rho_c", r"$\rho/\rho_c$"), ("p_c / P", r"$p_c/P$"), ("R_s", r"$R_s$"))
+            ("rho / rho_c", r"$\rho/\rho_c$"), ("p_c / P", r"$p_c/P$"), ("R_s", r"$R_s$"),
+            ("F / (E T R)", r"$F/(ETR)$"), ("1 - H / lambda_I", r"$1 - H/\lambda_I$"))
 
 
 _PATTERN = re.compile("|".join(re.escape(p) for p, _ in sorted(_SYMBOLS, key=lambda s: -len(s[0]))))

@@ -1,7 +1,8 @@
 """The report's figures, in the report's order: the paper's figures 2-5, then each section's.
 
 Each figure is built from a run's results in the vocabulary of ``plotdata`` (panels of named series);
-the sections beyond the paper's (``others``, ``fingertips``, ``identification``, ``thickness``) build
+the sections beyond the paper's (``others``, ``fingertips``, ``identification``, ``thickness``,
+``capsulereport``) build
 their own, and ``figures`` lists them all.
 """
 
@@ -11,6 +12,7 @@ import numpy as np
 
 from pocket.apps.design import PAPER_FORCE_FACTOR
 
+from .capsulereport import figure as capsule_figure
 from .convergence import EXPECTED, observed_order
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .fingertips import fingertip_figures
@@ -85,7 +87,7 @@ def convergence_figure(results) -> Figure:
 def figures(results) -> list[Figure]:
     """The paper's figs 2-5, the other rubbers' and the gases' figures (``others``), the fingertips'
     (``fingertips``), the identification's (``identification``), the membrane's against the solid
-    (``thickness``) and the convergence study, from a run's results."""
+    (``thickness``), the capsules' (``capsulereport``) and the convergence study, from a run's results."""
     head = headline(results.pockets)
     curves = results.curves_of(head)
     out = []
@@ -105,6 +107,8 @@ def figures(results) -> list[Figure]:
         out.append(identification_figure(results.fits))
     if results.thicknesses:
         out.append(thickness_figure(results.thicknesses))
+    if results.capsules:
+        out.append(capsule_figure(results.capsules))
     if results.sequences:
         out.append(convergence_figure(results))
     return [without_zeros(f) for f in out]

@@ -209,8 +209,9 @@ def blocks(results) -> list:
                  f"converge: {numerics['pass']} checks pass, {numerics['fail']} fail ({numerics['info']} more are "
                  "reported without a tolerance): the finite-element model (P1, P2) against the shooting solver, "
                  "each solver's own consistency (the fluid's law, the indenter's reaction), the observed orders of "
-                 "the mesh-convergence study and its Richardson extrapolations, and each law fitted to known data "
-                 "against the truth."))
+                 "the mesh-convergence study and its Richardson extrapolations, each law fitted to known data "
+                 "against the truth" + (", and the capsules against the sphere's closed form and their own balances"
+                                        if results.capsules else "") + "."))
     verdict, sentence = wrinkling(results.checks)
     if sentence:
         out.append(("p", f"Membrane theory's condition: {verdict.upper()}. {sentence}"))

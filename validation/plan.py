@@ -16,7 +16,10 @@ column only (``Plan.columns_of``): the P2 FE model against shooting is the verdi
 curved indenter, and a P1 curve costs about five times a P2 one there; their forces include
 Fhat = 0.5, where the contact-pressure figure compares the two solvers. Each law is
 fitted to FE bulge data (``Plan.fits``): Ogden with two terms by default (about 10 s of a
-worker), one term in ``--quick``. The report's timing table gives each task's seconds, to re-tune these numbers.
+worker), one term in ``--quick``. The capsules of ``capsules.CASES`` (every law and fluid) are pressed by the
+shooting solver at 21 forces to Fhat = 5 (11 in ``--quick``), spaced quadratically (the force rises slowly at
+first: a dent), each a task of well under a second. The report's timing table
+gives each task's seconds, to re-tune these numbers.
 
 A column is a solver of ``pocket.apps.solvers`` with options, checked by its
 record when the plan is built: the same checks as the command line's flags and
@@ -100,6 +103,10 @@ class Plan:
     fits: the laws (with their number of terms) fitted to FE bulge data (``identification``).
     thickness: the pressures P_I (kPa) and the forces Fhat at which the paper's four samples are solved by the
         membrane and the solid (``thickness``); empty: no such section.
+    capsules: the forces Fhat at which each capsule of the suite is pressed by the shooting solver
+        (``capsules``); empty: no capsule section.
+    capsule_fem: the forces at which the FE model (P2) presses them too; 0 gives the inflated capsule.
+    capsule_sizes: element counts of the FE model's mesh convergence on a capsule; empty: no such study.
     """
 
     name: str
@@ -110,6 +117,9 @@ class Plan:
     indenter_columns: tuple[Column, ...] = INDENTER_COLUMNS
     fits: tuple[tuple[str, int], ...] = ()
     thickness: tuple[tuple[float, ...], tuple[float, ...]] | tuple = ()
+    capsules: tuple[float, ...] = ()
+    capsule_fem: tuple[float, ...] = ()
+    capsule_sizes: tuple[int, ...] = ()
 
     def fem_forces_of(self, pocket) -> tuple:
         """The FE forces of ``pocket`` (empty: no FE column for it in this plan)."""
@@ -131,6 +141,9 @@ DEFAULT = Plan(
     convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 2)),
     thickness=((2.0, 5.0), (0.2, 0.5, 1.0)),
+    capsules=tuple(round(5.0 * (k / 20) ** 2, 12) for k in range(21)),
+    capsule_fem=(0.0, 0.2, 1.25, 3.2, 5.0),
+    capsule_sizes=(32, 64, 128, 256),
 )
 
 QUICK = Plan(
@@ -140,4 +153,7 @@ QUICK = Plan(
     convergence_sizes={1: (32, 64, 128), 2: (16, 32, 64)},
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 1)),
     thickness=((5.0,), (0.5,)),
+    capsules=tuple(round(5.0 * (k / 10) ** 2, 12) for k in range(11)),
+    capsule_fem=(0.0, 1.25, 5.0),
+    capsule_sizes=(32, 64, 128),
 )

@@ -2,7 +2,8 @@
 
 The independent solves (a pocket's reference curves, its FE columns, the
 convergence sequences, the evidence about the paper, the fits of each law to FE
-bulge data) are tasks of a
+bulge data, each capsule pressed between two plates and the FE model's convergence
+on one) are tasks of a
 ``concurrent.futures.ProcessPoolExecutor``; an FE column waits for its pocket's
 reference, which finds the end of the range. The reference curves start first
 (headline first), the convergence sequences once no reference is pending. Any
@@ -31,7 +32,7 @@ from pocket.apps.cases import SAMPLES
 from pocket.apps.provenance import cpus
 from pocket.apps.sweep.workers import local_executor, stop
 
-from . import compute, convergence, evidence, findings, identification, thickness, verdicts
+from . import capsulechecks, capsules, compute, convergence, evidence, findings, identification, thickness, verdicts
 from .plan import Plan
 from .suite import Button, headline
 
@@ -44,7 +45,7 @@ WORKERS = min(8, cpus())
 class Task:
     """One solve of a run and its wall time (in the worker)."""
 
-    kind: str  # "reference" | "column" | "convergence" | "evidence" | "fit" | "solid"
+    kind: str  # "reference" | "column" | "convergence" | "evidence" | "fit" | "solid" | "capsule"
     case: str
     what: str
     seconds: float
@@ -61,6 +62,8 @@ class Results:
     evidence: evidence.Evidence | None
     fits: tuple  # identification.Identification, in the plan's order
     thicknesses: tuple  # thickness.Comparison, by sample then pressure
+    capsules: tuple  # capsules.Curve, in the order of capsules.CASES
+    capsule_sequence: convergence.Sequence | None  # the FE model's mesh convergence on a capsule
     checks: tuple  # verdicts.Check
     findings: tuple  # findings.Finding
     tasks: tuple  # Task, in order of submission
@@ -105,6 +108,11 @@ def _task(kind, key, pockets, args) -> Task:
         return Task(kind, "", f"{args[0]} ({args[1]} terms) fitted to FE bulge data", 0.0)
     if kind == "solid":
         return Task(kind, f"sample {args[0]}", f"membrane and solid at {args[1]:g} kPa, {len(args[2])} forces", 0.0)
+    if kind == "capsule":
+        fe = f", FE P2 at {len(args[2])}" if args[0].fem and args[2] else ""
+        return Task(kind, args[0].name, f"capsule: shooting at {len(args[1])} forces{fe}", 0.0)
+    if kind == "capsule convergence":
+        return Task(kind, capsules.STUDY.name, f"capsule: FE P2 on {len(args[0])} meshes", 0.0)
     return Task(kind, "", "the paper's statements", 0.0)
 
 
@@ -120,7 +128,8 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
     main = headline(pockets)
     pending: dict = {}  # future -> (kind, key, index into tasks)
     tasks: list = []
-    done: dict = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}, "solid": {}}
+    done: dict = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}, "solid": {},
+                  "capsule": {}, "capsule convergence": {}}
 
     def submit(kind, key, function, *args):
         pending[pool.submit(_timed, function, *args)] = (kind, key, len(tasks))
@@ -139,6 +148,11 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
             submit("evidence", None, evidence.collect, button)
             for k, (law, terms) in enumerate(plan.fits):
                 submit("fit", k, identification.identify, law, terms)
+            if plan.capsules:
+                for k, capsule in enumerate(capsules.CASES):
+                    submit("capsule", k, capsules.solve, capsule, plan.capsules, plan.capsule_fem)
+                if plan.capsule_sizes:
+                    submit("capsule convergence", None, capsules.sequence, plan.capsule_sizes)
         later = convergence_tasks(main, plan)
         while pending or later:
             if later and not any(kind == "reference" for kind, _, _ in pending.values()):
@@ -184,11 +198,17 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     rows += identification.checks(fits)
     thicknesses = tuple(done["solid"][k] for k in sorted(done["solid"]))
     rows += thickness.checks(thicknesses)
+    capsule_curves = tuple(done["capsule"][k] for k in sorted(done["capsule"]))
+    rows += capsulechecks.checks(capsule_curves)
+    capsule_sequence = done["capsule convergence"].get(None)
+    if capsule_sequence is not None:
+        rows += capsulechecks.order_checks(capsule_sequence)
     found: tuple = ()
     proof = done["evidence"].get(None)
     if proof is not None:
         head = by_pocket[headline(pockets)]
         found = tuple(findings.findings(button, proof, evidence.eq9_residuals(head.reference[0].inflated), head))
     return Results(plan=plan, pockets=pockets, button=button, curves=curves, columns=columns, sequences=sequences,
-                   evidence=proof, fits=fits, thicknesses=thicknesses, checks=tuple(rows), findings=found,
+                   evidence=proof, fits=fits, thicknesses=thicknesses, capsules=capsule_curves,
+                   capsule_sequence=capsule_sequence, checks=tuple(rows), findings=found,
                    tasks=tasks, seconds=seconds)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from pocket.apps.provenance import environment
 
-from . import checkpage, identification, limits, thickness
+from . import capsulereport, checkpage, identification, limits, thickness
 from .convergence import EXPECTED, FITTED_P2_FINEST, MESHES, RICHARDSON_FACTOR, richardson
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .plotdata import pocket_label
@@ -141,7 +141,7 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
                  "other pockets' lines carry dots of their colour, staggered so that curves lying on each other "
                  "all show.")]
     for fig in figs:
-        if fig.name not in ("convergence", "identification", "thickness"):  # each in its own section
+        if fig.name not in ("convergence", "identification", "thickness", capsulereport.NAME):  # in their sections
             out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
     out.append(("h", 2, "The pocket in 3-D"))
     if picture:
@@ -266,6 +266,9 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
         out += _identification_blocks(results, figs)
     if results.thicknesses:
         out += _thickness_blocks(results, figs)
+    if results.capsules:
+        caption = next(f.caption for f in figs if f.name == capsulereport.NAME)
+        out += capsulereport.blocks(results.capsules, results.capsule_sequence, results.checks, caption)
     if results.sequences:
         out += _convergence_blocks(results)
         out.append(("image", "convergence.png", "Error against element size (log-log), observed orders in the "
