@@ -230,6 +230,24 @@ def test_pressed_fit_recovers_mu0_and_says_c1_c2_are_not_separable(tmp_path):
 
 
 @pytest.mark.slow  # the slow lane (pytest -m slow): the example solves the solid for seconds
+@pytest.mark.slow  # the slow lane: the fit solves the capsule some fifteen times
+def test_capsule_fit_recovers_the_wall_and_its_curve_is_the_solvers(tmp_path):
+    """Exact answers: the wall behind the made-up squeeze test. E T = 3 mu T lies within four standard errors of
+    the truth (0.05 um seeded noise on gaps of about 100 um), and inside the fit's 95 % interval; the figure's
+    curve is the solver's: F / (E T R) = pi Fhat Phat_I at each state, and every state balances F = P A_c."""
+    capsule = example("plot_13_capsule_fit")
+    numbers = capsule.main(tmp_path)
+    s = numbers["fit"].statistics
+    assert abs(3 * s.values[0] - capsule.ET) < 4.0 * 3 * s.standard_errors[0]
+    assert s.intervals[0][0] < capsule.ET / 3 < s.intervals[0][1]
+    states, lam = capsule.curve(capsule.ET, capsule.FORCES)
+    phat = capsule.PRESSURE * capsule.RADIUS / capsule.ET
+    for force, state in zip(capsule.FORCES, states, strict=True):
+        assert state.extra["force_ETR"] == pytest.approx(force / (capsule.ET * capsule.RADIUS), rel=1e-12, abs=0)
+        assert state.pressure_ratio * state.contact_area == pytest.approx(state.force, rel=1e-10, abs=1e-300)
+    assert lam == pytest.approx(shooting.inflate(capsule.NEO, phat, geometry="capsule").stretch_pole, rel=1e-15)
+
+
 def test_membrane_against_solid_prints_both_models_and_the_error_falls_at_first_order():
     """Exact answers: the membrane's column is the shooting solver's states solved afresh (the pressure at each
     force, in kPa). Physics that could fail: at T/R = 0.08 the membrane's fluid volume is off by more than 1 %
