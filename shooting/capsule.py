@@ -60,6 +60,7 @@ import math
 import numpy as np
 
 from pocket.core.errors import (
+    CAPSULE_EDGE,
     STRETCH_LIMIT,
     ConvergenceError,
     OutOfRangeError,
@@ -91,6 +92,7 @@ _WILD = 1e6  # the amplification past which a check shot of the inflated capsule
 _AHEAD = (1e-2, 1e-3, 1e-4, 1e-5)  # relative steps of the force tried for a neighbour of a state (``end``)
 _END_RATIO = 1.5  # the largest ratio of successive forces in the march to the end of the range
 _FORCE_CAP = 1e3  # ... and the force it stops at
+_END_RTOL = 1e-7  # ... and the relative step below which it stops: the end's accuracy
 _EDGE_SLACK = 1e-2  # the edge's tension, relative to the inflated capsule's, below which a march's stop is the end
 _SEGMENT_GROWTH = 30.0  # the most a segment of the free part may amplify errors (``CapsuleProblem.segments``)
 _SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to about 1e-3)
@@ -372,7 +374,7 @@ class CapsuleProblem(Contact):
         the seed (ratios up to ``_END_RATIO``, each state from the secant in log F through the last two, the ratio
         shrunk where a step fails) to the largest it reaches; if the meridional tension at the contact edge has
         fallen there below ``_EDGE_SLACK`` of the inflated capsule's, the range ends at that force (to the march's
-        1e-9); otherwise, or past ``_FORCE_CAP``, no end is known (force inf)."""
+        ``_END_RTOL``); otherwise, or past ``_FORCE_CAP``, no end is known (force inf)."""
         if seed is None:  # a state at a small force, by the continuation every force is solved by; a failure on
             if self._last.get("ending"):  # its way asks for the end again: that one has none
                 return _NO_END
@@ -388,7 +390,7 @@ class CapsuleProblem(Contact):
             return _NO_END
         points = list(pair)  # (force, x) along the branch, in order of force
         ratio = _END_RATIO
-        while points[-1][0] < _FORCE_CAP and ratio > 1.0 + 1e-9:
+        while points[-1][0] < _FORCE_CAP and ratio > 1.0 + _END_RTOL:
             (f0, x0), (f1, x1) = points[-2:]
             near = f1 * ratio
             guess = x1 + math.log(ratio) * (x1 - x0) / math.log(f1 / f0)
@@ -402,7 +404,7 @@ class CapsuleProblem(Contact):
         force, x = points[-1]
         if force >= _FORCE_CAP or self.edge_tension(x, force) >= _EDGE_SLACK * self.inflated_tension:
             return _NO_END
-        return End(force=float(force), angle=0.0, fold=False, path=(), reason=SLACK_EDGE)
+        return End(force=float(force), angle=0.0, fold=False, path=(), reason=CAPSULE_EDGE)
 
     @property
     def inflated_tension(self) -> float:
@@ -443,8 +445,5 @@ class CapsuleProblem(Contact):
         return None
 
 
-#: the end of a capsule's range where the meridional tension at the contact edge vanishes
-SLACK_EDGE = ("the meridional tension at the contact edge vanishes (the patch under the plate is slack up to its "
-              "edge): the free membrane would leave the plate with unbounded curvature, outside membrane theory")
 _NO_END = End(force=math.inf, angle=0.0, fold=False, path=(), locks=True,
               reason="the stretches grow without bound as the plates close")

@@ -8,13 +8,13 @@ the free part of the sheet reaches the clamp plane``. The end is the solver's ow
 the same membrane model as the shooting (to ~1e-9 at its default mesh), is given the
 shooting's, so that both quote the same end. At the clamp-plane end the plate carries
 all of P pi R^2, so the deformed contact area is pi R^2 (``shooting.plateend``); an end
-with less is a force maximum of the branch. A capsule has no clamp plane: its range ends where the patch under
-the plate goes slack (the pole's tension falls to 0), if it does.
+with less is a force maximum of the branch. A capsule has no clamp plane: its range ends where the meridional
+tension at the contact edge vanishes (``pocket.core.errors.CAPSULE_EDGE``), if it does.
 """
 
 from __future__ import annotations
 
-from pocket.core.errors import CLAMP_PLANE, beyond_range
+from pocket.core.errors import CAPSULE_EDGE, CLAMP_PLANE, beyond_range
 from pocket.core.geometries import DISC
 from pocket.core.inputs import quote
 from pocket.core.units import written_like
@@ -49,10 +49,10 @@ def check_force(pocket, key: str, given, force: float) -> float:
     end = entry(solver, "range_end", _PURPOSE)(pocket.material, pocket.pressure_initial, **options)
     if force <= end:
         return force
-    at_end = entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, end, **options)
-    if at_end.geometry != DISC:  # no clamp plane: the plates are infinite and the equator is free
-        reason = "the patch under the plate goes slack, its tension falling to 0 at the pole"
+    if pocket.case.geometry != DISC:  # no clamp plane: the plates are infinite and the equator is free
+        reason = CAPSULE_EDGE
     else:
+        at_end = entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, end, **options)
         reason = CLAMP_PLANE if abs(at_end.contact_area - 1.0) < _FULL_CONTACT else "the force has a maximum"
     raise beyond_range(f"{key} = {quote(given)} (Fhat = {force:.10g})",
                        f"{written_like(end * pocket.force_scale_N, given, 'force')} (Fhat = {end:.10g})", reason)

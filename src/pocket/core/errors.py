@@ -30,6 +30,9 @@ __all__ = [
 
 #: what happens at the end of the compression range (unless the force has a maximum first)
 CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
+#: the end of a capsule's range (``pocket.shooting.capsule``), as every solver and application words it
+CAPSULE_EDGE = ("the meridional tension at the contact edge vanishes (the patch under the plate is slack up to its "
+                "edge): the free membrane would leave the plate with unbounded curvature, outside membrane theory")
 
 #: the largest pole stretch lambda_0 at which the membrane solvers (shooting, FE) seek an inflated state. A rubber
 #: whose pressure maximum has just vanished (Mooney-Rivlin alpha just above 0.05544) reaches Phat = 2 only at
