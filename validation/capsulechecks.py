@@ -92,6 +92,7 @@ def _balances(name: str, label: str, states) -> list[Check]:
 
 def _fem_rows(curve) -> list[Check]:
     name, out = curve.capsule.name, []
+    keys: tuple[str, ...]
     for state in curve.fem:
         ref = curve.shooting_at(state.force)
         if state.force == 0.0:

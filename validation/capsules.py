@@ -124,7 +124,8 @@ class Curve:
 
 def _slope(material: Material, stretch: float) -> float:
     """w'(lambda) of ``material`` (module docstring), in its stress unit."""
-    p, law = dict(material.params), material.law
+    law = material.law
+    p = {k: v for k, v in material.params if isinstance(v, float)}  # the scalar parameters (Ogden's are lists)
     base = stretch - stretch**-5  # dI_1/d lambda over 4
     x = 2.0 * stretch**2 + stretch**-4 - 3.0
     if law == "mooney-rivlin":
@@ -136,8 +137,9 @@ def _slope(material: Material, stretch: float) -> float:
     if law == "gent":
         return 2.0 * p["mu"] * base / (1.0 - x / p["jm"])
     if law == "ogden":
+        mus, exponents = (tuple(v) for k, v in material.params if k in ("mu", "exponents") and isinstance(v, tuple))
         return sum(2.0 * m * (stretch ** (a - 1.0) - stretch ** (-2.0 * a - 1.0))
-                   for m, a in zip(p["mu"], p["exponents"], strict=True))
+                   for m, a in zip(mus, exponents, strict=True))
     raise ValueError(f"no closed form for the {law} law")
 
 
@@ -217,6 +219,7 @@ def sequence(counts) -> Sequence:
     sizes = []
     for n in counts:
         state = compression(STUDY, [FORCE], "fem", elements=n)[0]
+        assert state.profile is not None  # the FE model's states carry their profile
         sizes.append(float(np.diff(state.profile.r[:: state.extra["order"]]).max()))  # the largest element
         for q in QUANTITIES:
             values[q].append(capsule_value(state, q))
