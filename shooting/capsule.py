@@ -222,8 +222,11 @@ class CapsuleProblem(Contact):
 
     @property
     def segments(self) -> int:
-        """K, the free part's segments: each amplifies errors at most ``_SEGMENT_GROWTH``-fold (growth^(1/K))."""
-        return max(1, math.ceil(math.log(self.growth) / math.log(_SEGMENT_GROWTH) - 1e-9))
+        """K, the free part's segments: one where a single shot amplifies errors at most ``_TAME``-fold, else enough
+        that each amplifies them at most ``_SEGMENT_GROWTH``-fold (growth^(1/K))."""
+        if self.growth <= _TAME:
+            return 1
+        return math.ceil(math.log(self.growth) / math.log(_SEGMENT_GROWTH) - 1e-9)
 
     @property
     def residual_floor(self) -> float:
