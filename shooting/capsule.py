@@ -31,9 +31,10 @@ the continuation of ``pocket.shooting.compression``.
 
 Low inflation pressures. A shot from the pole to the equator amplifies an error near the pole about
 exp(pi / (2 sqrt(t)))-fold, t = lambda Phat_I / 2 (``amplification``; the theory's small-force section): the free
-part is shot in K segments (``CapsuleProblem.segments``), each amplifying at most ``_SEGMENT_GROWTH``-fold, their
-starts (rho, psi, lambda_1) unknowns and their continuity residuals; K = 1 (a single shot) down to Phat_I ~ 0.1,
-up to ``_SEGMENTS_MAX`` (Phat_I ~ 1e-3), below which a compression is a ConvergenceError saying why.
+part is shot in K segments (``CapsuleProblem.segments``): a single shot where it amplifies at most ``_TAME``-fold
+(Phat_I down to about 0.1), else segments each amplifying at most ``_SEGMENT_GROWTH``-fold, their starts (rho, psi,
+lambda_1) unknowns and their continuity residuals, up to ``_SEGMENTS_MAX`` (Phat_I ~ 2e-3), below which a
+compression is a ConvergenceError saying why.
 
 A slack patch. At a low Phat_I (or a gas that yields) the pole's stretch under the plate falls with the force and
 can pass below that of the unstressed rubber (1 / lambda_p): the patch's tension at the pole vanishes and turns
