@@ -81,12 +81,15 @@ def band(matrices: np.ndarray, period: int, kl: int) -> np.ndarray:
 def constrain(matrices: np.ndarray, period: int, dofs) -> np.ndarray:
     """Element matrices with the rows and columns of the global ``dofs`` cleared and a unit diagonal."""
     n, size, _ = matrices.shape
-    for g in dofs:
-        for e in range(max(0, -(-(g - size + 1) // period)), min(n - 1, g // period) + 1):
-            local = g - period * e
-            matrices[e, local, :] = 0.0
-            matrices[e, :, local] = 0.0
-            matrices[e, local, local] = 1.0
+    g = np.asarray(dofs, dtype=int).ravel()
+    # every (element, local dof) holding a global dof: the elements g // period, g // period - 1, ...
+    e = (g // period)[None, :] - np.arange(-(-size // period) + 1)[:, None]
+    local = g[None, :] - period * e
+    held = (e >= 0) & (e < n) & (local < size)
+    e, local = e[held], local[held]
+    matrices[e, local, :] = 0.0
+    matrices[e, :, local] = 0.0
+    matrices[e, local, local] = 1.0
     return matrices
 
 

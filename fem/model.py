@@ -343,7 +343,7 @@ def _tied_column(model: Model, matrices: np.ndarray, out: np.ndarray) -> np.ndar
     local[:-1, 1::2] = 1.0  # every eta dof of the contact elements
     local[-1, 1] = 1.0  # the edge vertex's eta dof, first in the next element
     out[:] = 0.0
-    for e in range(model.flat + 1):
-        start = 2 * model.order * e
-        out[start: start + model.ref.local] += matrices[e] @ local[e]
+    products = np.matmul(matrices[: model.flat + 1], local[:, :, None])[:, :, 0]
+    rows = 2 * model.order * np.arange(model.flat + 1)[:, None] + np.arange(model.ref.local)
+    np.add.at(out, rows, products)  # element by element, in order: the sums of the loop this replaced
     return out
