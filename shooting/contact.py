@@ -30,6 +30,7 @@ freshly differenced direction has reached that noise and is accepted (``newton.s
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import numpy as np
 
@@ -74,8 +75,9 @@ class Contact:
         """s_0 = lambda_0 - 1, the scale of every strain of this pocket."""
         return self.inflated.stretch_pole - 1.0
 
-    @property
+    @functools.cached_property
     def tolerance(self) -> Tolerance:
+        """The shots' integration tolerances (computed once: every shot reads them)."""
         return Tolerance.scaled(self.rtol, self.inflated.height, self.inflated.volume)
 
     @property

@@ -193,7 +193,9 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
     columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
     """
-    atol = np.broadcast_to(rtol * 1e-2 if atol is None else np.asarray(atol, dtype=float), (5,)).copy()
+    atol = np.asarray(rtol * 1e-2 if atol is None else atol, dtype=float)
+    if atol.shape != (5,):  # a float for every component (the compiled loop only reads it)
+        atol = np.full(5, atol)
     h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
     buf = np.empty((store, 6)) if store else np.empty((0, 6))
     breaks, coef = (np.empty(0), np.empty((4, 0))) if table is None else table
