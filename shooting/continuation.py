@@ -61,7 +61,7 @@ def _on_branch(problem, force):
 
 @dataclasses.dataclass(frozen=True)
 class Branch:
-    """Where a continuation stands: the last two solved (force, x), the last Jacobian, and the sign
+    """Where a continuation stands: the last three solved (force, x), the last Jacobian, and the sign
     of det dR/dx on the first branch (it changes at a fold of the force: a state with the other
     sign lies past the fold, on another branch)."""
 
@@ -70,15 +70,20 @@ class Branch:
     orientation: float = 0.0
 
     def guess(self, force):
-        """Secant prediction of x at ``force`` from the last two points."""
-        (f0, x0) = self.points[-1]
-        if len(self.points) < 2 or self.points[-2][0] <= 0.0:
-            return x0
-        f_prev, x_prev = self.points[-2]
-        return x0 + (force - f0) * (x0 - x_prev) / (f0 - f_prev)
+        """Prediction of x at ``force``: the polynomial through the last three points (two: the secant), those
+        at a positive force (the inflated state at 0 is no point of the curve in the unknowns of a compression:
+        a capsule's contact radius is c sqrt(Fhat))."""
+        points = [(f, x) for f, x in self.points if f > 0.0]
+        if not points:
+            return self.points[-1][1]
+        guess = np.zeros_like(points[-1][1])
+        for j, (fj, xj) in enumerate(points):  # Lagrange's form
+            weight = math.prod((force - fk) / (fj - fk) for k, (fk, _) in enumerate(points) if k != j)
+            guess = guess + weight * xj
+        return guess
 
     def then(self, force, x, jacobian, orientation):
-        return Branch(points=(self.points[-1], (force, x)), jacobian=jacobian,
+        return Branch(points=(*self.points[-2:], (force, x)), jacobian=jacobian,
                        orientation=self.orientation or orientation)
 
 
