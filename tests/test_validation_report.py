@@ -825,6 +825,44 @@ def test_thickness_section(report, page):
     assert (report[1] / "thickness.png").stat().st_size > 0
 
 
+def test_solid_convergence_section(report, page):
+    """Exact answers: the study solved each studied sample on every mesh of the plan along both axes; each row's
+    observed order is log2 of the ratio of its successive differences (computed here from the study's values), its
+    default-mesh values are the solid's solved afresh with its defaults, and each check's verdict is its error
+    against its target."""
+    import math
+
+    from pocket.validation import solidstudy, thickness
+
+    from pocket import solid
+
+    results = report[2]
+    plan, studies = results.plan, results.solid_studies
+    assert [(s.sample, s.axis) for s in studies] == [(n, a) for n in plan.solid_study for a in solidstudy.AXES]
+    rows = _rows(report[1] / "solid_convergence.csv")
+    assert len(rows) == sum(len(list(s.quantities())) for s in studies) > 0
+    printed = iter(rows)
+    for study in studies:
+        for key in study.quantities():
+            row = next(printed)
+            q = study.series(key)
+            shrinking = (q[-2] - q[-3]) / (q[-1] - q[-2]) if q[-1] != q[-2] else 0.0
+            if shrinking > 1.0:
+                assert float(row["observed order"]) == pytest.approx(math.log2(shrinking), abs=0.006)
+            else:
+                assert row["observed order"] == "(not yet asymptotic)"
+    study = studies[0]
+    material, phat, t = thickness.posed(study.sample, study.pressure_kpa)
+    fresh = solid.compression_curve(material, phat, study.forces, thickness_ratio=t)
+    default = study.values[study.meshes.index(study.default)]
+    assert [default["A_c", f] for f in study.forces] == [s.contact_area for s in fresh]
+    assert default["V", None] == fresh[0].inflated.volume
+    for check in (c for c in results.checks if c.comparison == solidstudy.COMPARISON):
+        target = solidstudy.TARGETS.get(check.quantity)
+        assert check.verdict == ("info" if target is None else "pass" if check.error <= target else "fail")
+    assert "solid_convergence.png" in page.images
+
+
 def test_capsule_section(report, page):
     """Exact answers: every capsule of the suite ran, each shooting and FE state has its row of
     capsule_states.csv (force_ETR = pi Fhat Phat_I, the compression 1 - H / lambda_I of its own height), the FE

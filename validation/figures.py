@@ -30,6 +30,7 @@ from .plotdata import (
     solver_key,
     without_zeros,
 )
+from .solidstudy import figure as solid_study_figure
 from .suite import headline
 from .thickness import figure as thickness_figure
 
@@ -87,7 +88,8 @@ def convergence_figure(results) -> Figure:
 def figures(results) -> list[Figure]:
     """The paper's figs 2-5, the other rubbers' and the gases' figures (``others``), the fingertips'
     (``fingertips``), the identification's (``identification``), the membrane's against the solid
-    (``thickness``), the capsules' (``capsulereport``) and the convergence study, from a run's results."""
+    (``thickness``), the solid's convergence (``solidstudy``), the capsules' (``capsulereport``) and the
+    convergence study, from a run's results."""
     head = headline(results.pockets)
     curves = results.curves_of(head)
     out = []
@@ -107,6 +109,8 @@ def figures(results) -> list[Figure]:
         out.append(identification_figure(results.fits))
     if results.thicknesses:
         out.append(thickness_figure(results.thicknesses))
+    if results.solid_studies:
+        out.append(solid_study_figure(results.solid_studies))
     if results.capsules:
         out.append(capsule_figure(results.capsules))
     if results.sequences:

@@ -107,6 +107,9 @@ class Plan:
         (``capsules``); empty: no capsule section.
     capsule_fem: the forces at which the FE model (P2) presses them too; 0 gives the inflated capsule.
     capsule_sizes: element counts of the FE model's mesh convergence on a capsule; empty: no such study.
+    solid_study: the paper's samples whose solid is refined along each axis (``solidstudy``); empty: no such study.
+    solid_radial, solid_layers: the element counts along the radius, and the layers, of that study (each holding
+        the solid's default).
     """
 
     name: str
@@ -120,6 +123,9 @@ class Plan:
     capsules: tuple[float, ...] = ()
     capsule_fem: tuple[float, ...] = ()
     capsule_sizes: tuple[int, ...] = ()
+    solid_study: tuple[int, ...] = ()
+    solid_radial: tuple[int, ...] = ()
+    solid_layers: tuple[int, ...] = ()
 
     def fem_forces_of(self, pocket) -> tuple:
         """The FE forces of ``pocket`` (empty: no FE column for it in this plan)."""
@@ -144,6 +150,9 @@ DEFAULT = Plan(
     capsules=tuple(round(5.0 * (k / 20) ** 2, 12) for k in range(21)),
     capsule_fem=(0.0, 0.2, 1.25, 3.2, 5.0),
     capsule_sizes=(32, 64, 128, 256),
+    solid_study=(1, 4),
+    solid_radial=(32, 64, 128, 256),
+    solid_layers=(2, 4, 8),
 )
 
 QUICK = Plan(
@@ -156,4 +165,7 @@ QUICK = Plan(
     capsules=tuple(round(5.0 * (k / 10) ** 2, 12) for k in range(11)),
     capsule_fem=(0.0, 1.25, 5.0),
     capsule_sizes=(32, 64, 128),
+    solid_study=(4,),
+    solid_radial=(16, 32, 64),
+    solid_layers=(2, 4, 8),
 )

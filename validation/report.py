@@ -22,7 +22,7 @@ from pocket.apps.folders import check_replaceable, staged
 from pocket.core.errors import InputError
 from pocket.core.states import CHECKS, CompressedState
 
-from . import capsulereport, checkpage, document, draw, figures, pockets, render, sections, thickness
+from . import capsulereport, checkpage, document, draw, figures, pockets, render, sections, solidstudy, thickness
 from . import verdicts as checks_module
 from .plan import VTK, VTK_STEPS
 from .suite import headline
@@ -80,6 +80,10 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
              "convergence_study.csv: every FE value of the convergence study", "timing.csv: each solve task's seconds"]
     if results.thicknesses:
         names.append("membrane_vs_solid.csv: the membrane against the solid for the paper's four samples, every value")
+    if results.solid_studies:
+        _write_rows(directory / "solid_convergence.csv", *solidstudy.rows(results.solid_studies))
+        names.append("solid_convergence.csv: the solid on each mesh of its convergence study, the observed orders and "
+                     "the default mesh's error")
     if results.capsules:
         _write_rows(directory / capsulereport.CSV, *capsulereport.state_rows(results.capsules))
         names.append(f"{capsulereport.CSV}: every capsule state of every solver (the dimensionless keys, the "

@@ -32,7 +32,18 @@ from pocket.apps.cases import SAMPLES
 from pocket.apps.provenance import cpus
 from pocket.apps.sweep.workers import local_executor, stop
 
-from . import capsulechecks, capsules, compute, convergence, evidence, findings, identification, thickness, verdicts
+from . import (
+    capsulechecks,
+    capsules,
+    compute,
+    convergence,
+    evidence,
+    findings,
+    identification,
+    solidstudy,
+    thickness,
+    verdicts,
+)
 from .plan import Plan
 from .suite import Button, headline
 
@@ -45,7 +56,7 @@ WORKERS = min(8, cpus())
 class Task:
     """One solve of a run and its wall time (in the worker)."""
 
-    kind: str  # "reference" | "column" | "convergence" | "evidence" | "fit" | "solid" | "capsule"
+    kind: str  # "reference" | "column" | "convergence" | "evidence" | "fit" | "solid" | "solid study" | "capsule"
     case: str
     what: str
     seconds: float
@@ -64,6 +75,7 @@ class Results:
     thicknesses: tuple  # thickness.Comparison, by sample then pressure
     capsules: tuple  # capsules.Curve, in the order of capsules.CASES
     capsule_sequence: convergence.Sequence | None  # the FE model's mesh convergence on a capsule
+    solid_studies: tuple  # solidstudy.Study, by sample then axis
     checks: tuple  # verdicts.Check
     findings: tuple  # findings.Finding
     tasks: tuple  # Task, in order of submission
@@ -108,6 +120,8 @@ def _task(kind, key, pockets, args) -> Task:
         return Task(kind, "", f"{args[0]} ({args[1]} terms) fitted to FE bulge data", 0.0)
     if kind == "solid":
         return Task(kind, f"sample {args[0]}", f"membrane and solid at {args[1]:g} kPa, {len(args[2])} forces", 0.0)
+    if kind == "solid study":
+        return Task(kind, f"sample {args[0]}", f"solid on {args[3]} x {args[4]} elements, {len(args[2])} forces", 0.0)
     if kind == "capsule":
         fe = f", FE P2 at {len(args[2])}" if args[0].fem and args[2] else ""
         return Task(kind, args[0].name, f"capsule: shooting at {len(args[1])} forces{fe}", 0.0)
@@ -129,7 +143,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
     pending: dict = {}  # future -> (kind, key, index into tasks)
     tasks: list = []
     done: dict = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}, "solid": {},
-                  "capsule": {}, "capsule convergence": {}}
+                  "solid study": {}, "capsule": {}, "capsule convergence": {}}
 
     def submit(kind, key, function, *args):
         pending[pool.submit(_timed, function, *args)] = (kind, key, len(tasks))
@@ -145,6 +159,12 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
                 pressures, forces = plan.thickness
                 for k, (number, pressure) in enumerate((n, p) for n in sorted(SAMPLES) for p in pressures):
                     submit("solid", k, thickness.compare, number, pressure, forces)
+            for number in plan.solid_study:
+                grids = (solidstudy.meshes(axis, counts) for axis, counts in
+                         zip(solidstudy.AXES, (plan.solid_radial, plan.solid_layers), strict=True))
+                for mesh in dict.fromkeys(m for grid in grids for m in grid):
+                    submit("solid study", (number, *mesh), solidstudy.solve, number, solidstudy.PRESSURE_KPA,
+                           solidstudy.FORCES, *mesh)
             submit("evidence", None, evidence.collect, button)
             for k, (law, terms) in enumerate(plan.fits):
                 submit("fit", k, identification.identify, law, terms)
@@ -198,6 +218,10 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     rows += identification.checks(fits)
     thicknesses = tuple(done["solid"][k] for k in sorted(done["solid"]))
     rows += thickness.checks(thicknesses)
+    solid_studies = tuple(solidstudy.studies(plan.solid_study, solidstudy.PRESSURE_KPA, solidstudy.FORCES,
+                                             plan.solid_radial, plan.solid_layers, done["solid study"])
+                          if done["solid study"] else ())
+    rows += solidstudy.checks(solid_studies)
     capsule_curves = tuple(done["capsule"][k] for k in sorted(done["capsule"]))
     rows += capsulechecks.checks(capsule_curves)
     capsule_sequence = done["capsule convergence"].get(None)
@@ -210,5 +234,5 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
         found = tuple(findings.findings(button, proof, evidence.eq9_residuals(head.reference[0].inflated), head))
     return Results(plan=plan, pockets=pockets, button=button, curves=curves, columns=columns, sequences=sequences,
                    evidence=proof, fits=fits, thicknesses=thicknesses, capsules=capsule_curves,
-                   capsule_sequence=capsule_sequence, checks=tuple(rows), findings=found,
+                   capsule_sequence=capsule_sequence, solid_studies=solid_studies, checks=tuple(rows), findings=found,
                    tasks=tasks, seconds=seconds)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from pocket.apps.provenance import environment
 
-from . import capsulereport, checkpage, identification, limits, thickness
+from . import capsulereport, checkpage, identification, limits, solidstudy, thickness
 from .convergence import EXPECTED, FITTED_P2_FINEST, MESHES, RICHARDSON_FACTOR, richardson
 from .convergence import FORCE as CONVERGENCE_FORCE
 from .plotdata import pocket_label
@@ -141,7 +141,8 @@ def _figure_blocks(results, figs, picture: bool, why: str) -> list:
                  "other pockets' lines carry dots of their colour, staggered so that curves lying on each other "
                  "all show.")]
     for fig in figs:
-        if fig.name not in ("convergence", "identification", "thickness", capsulereport.NAME):  # in their sections
+        in_sections = ("convergence", "identification", "thickness", "solid_convergence", capsulereport.NAME)
+        if fig.name not in in_sections:
             out.append(("image", f"{fig.name}.png", f"{fig.caption} Data: {fig.name}.csv."))
     out.append(("h", 2, "The pocket in 3-D"))
     if picture:
@@ -210,6 +211,35 @@ def _thickness_blocks(results, figs) -> list:
              f"{caption} Data: thickness.csv (plotted points), membrane_vs_solid.csv (every value).")]
 
 
+def _solid_study_blocks(results, figs) -> list:
+    found = results.solid_studies
+    header, rows = solidstudy.rows(found)
+    targets = ", ".join(f"{q} {t:g}" + (" R" if q in solidstudy.ABSOLUTE else "")
+                        for q, t in solidstudy.TARGETS.items())
+    failing = [c for c in results.checks if c.comparison == solidstudy.COMPARISON and c.verdict == "fail"]
+    caption = next(f.caption for f in figs if f.name == "solid_convergence")
+    seconds = sum(sum(s.seconds) for s in found)
+    return [("h", 2, "The solid's own error: its convergence with the mesh"),
+            ("p", "The solid is the yardstick of the membrane's error above, so its own discretisation error must be "
+                  "known and smaller. The paper's sample"
+                  f"{'s' if len(found) > 2 else ''} {', '.join(sorted({str(s.sample) for s in found}))} at P_I = "
+                  f"{found[0].pressure_kpa:g} kPa, pressed at F/(P_I pi R^2) = "
+                  f"{', '.join(f'{f:g}' for f in found[0].forces)}, solved on meshes refined along the radius (the "
+                  "layers at the default) and through the thickness (the elements at the default), each halving the "
+                  "element size. Observed order from the three finest meshes of an axis, and Richardson's "
+                  "extrapolation q*; the default mesh's error is its distance from q*, or where the differences do not "
+                  "yet shrink (no q*), its distance from the finest mesh plus the finest mesh's own last change. "
+                  "The clamp's corner elements keep their length on every mesh. "
+                  f"Held to: {targets} (the contact area relative, the contact radius in units of R); "
+                  "the other quantities are informational. "
+                  + (f"{len(failing)} of these checks fail: " + "; ".join(
+                      f"sample {c.case.split()[-1]} {c.quantity} ({c.where}): {c.error:.2e}" for c in failing[:6])
+                     + ("; ..." if len(failing) > 6 else "") + "." if failing else "All of these checks pass.")
+                  + f" The study's solves took {seconds:.1f} s in all."),
+            ("table", header, rows),
+            ("image", "solid_convergence.png", f"{caption} Data: solid_convergence.csv (every value).")]
+
+
 def _pockets_blocks(results) -> list:
     header, rows = case_table(results)
     return [("h", 2, "Pockets"),
@@ -266,6 +296,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
         out += _identification_blocks(results, figs)
     if results.thicknesses:
         out += _thickness_blocks(results, figs)
+    if results.solid_studies:
+        out += _solid_study_blocks(results, figs)
     if results.capsules:
         caption = next(f.caption for f in figs if f.name == capsulereport.NAME)
         out += capsulereport.blocks(results.capsules, results.capsule_sequence, results.checks, caption)

@@ -48,6 +48,7 @@ __all__ = [
     "checks",
     "compare",
     "figure",
+    "posed",
     "rows",
     "slopes",
     "verdict",
@@ -91,15 +92,19 @@ def _half_thickness(state, t: float) -> float:
     return 0.5 * t / (state.profile.stretch_1[0] * state.profile.stretch_2[0])
 
 
+def posed(number: int, pressure_kpa: float):
+    """(the rubber in units of its mu_0, Phat_I, T/R) of sample ``number`` inflated to ``pressure_kpa``."""
+    case = sample(number)
+    phat = pressure_kpa * 1e3 * case.radius / (case.modulus * case.thickness)
+    return case.material.scaled(), phat, case.thickness / case.radius
+
+
 def compare(number: int, pressure_kpa: float, forces: tuple[float, ...]) -> Comparison:
     """Sample ``number`` inflated to ``pressure_kpa`` and pressed at ``forces`` (Fhat), by the membrane and the
     solid (module docstring)."""
     from pocket import shooting, solid
 
-    case = sample(number)
-    t = case.thickness / case.radius
-    phat = pressure_kpa * 1e3 * case.radius / (case.modulus * case.thickness)
-    material = case.material.scaled()
+    material, phat, t = posed(number, pressure_kpa)
     membrane = shooting.compression_curve(material, phat, forces)
     start = time.perf_counter()
     continuum = solid.compression_curve(material, phat, forces, thickness_ratio=t)
