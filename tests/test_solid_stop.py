@@ -4,7 +4,7 @@ Exact answers: the ConvergenceError names the last force solved, which is the fo
 returned before the failure (the same number, read back as ``err.load``), the shortest step it tried beyond,
 and Newton's reason; under height control it names the height and the force there; on the command line it is
 one line and exit status 1. The failure is made where it is known: Newton is told to fail above a chosen force
-(``FAIL_ABOVE``), so the march stops within its smallest step (``MIN_FRACTION`` of the first) below it.
+(``FAIL_ABOVE``), so the march stops within twice its smallest step (``MIN_FRACTION`` of the first) below it.
 
 The slow lane measures the stop that made this necessary: the headline-like pocket of the range command
 (alpha = 0.3, Phat_I = 0.3, T/R = 0.0125, the default mesh) stops where its discrete path turns, at the
