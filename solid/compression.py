@@ -7,7 +7,11 @@ surface's nodes of the active set (``newton.contact``). The first contact is the
 the plate at the inflated pole's height and no force. Forces are reached in steps of at most
 ``MAX_FORCE_STEP`` (Fhat), each seeded by the state before it, halved when Newton or the active
 set fails; a height target in steps of the plate's travel likewise. Every state on the way is checked
-against the end of the range (``rangeend``): a load past it is refused, naming the end.
+against the end of the range (``rangeend``): a load past it is refused, naming the end. A march whose step
+fails however short (below ``MIN_FRACTION`` of the first) stops with a ConvergenceError naming the last
+force solved (and the height, under height control), the shortest step tried and Newton's reason: where the
+discrete path turns at the clamp's upper corner (``newton``), that force is the turn's to the march's
+smallest step.
 """
 
 from __future__ import annotations
@@ -78,13 +82,26 @@ def _march(model, y, control, key, target, step, tol, unit, largest=None):
                 continue
             if isinstance(err, OutOfRangeError):  # the contact leaves the indenter's surface however short the step
                 raise past_end(model, (value, y, control), (value + delta, None), key, target, unit, tol) from err
-            raise
+            raise _stopped(model, y, control, key, value, value + delta, unit, err) from err
         margin = margins(model, new, new_control)
         if min(margin.values()) <= 0.0:
             raise past_end(model, (value, y, control), (value + delta, margin), key, target, unit, tol)
         y, control, value, total = new, new_control, value + delta, total + iterations
         step = min(largest, 1.5 * step)
     return y, control, total
+
+
+def _stopped(model, y, control, key, reached, tried, unit, err: ConvergenceError) -> ConvergenceError:
+    """The error of a march whose steps beyond ``key`` = ``reached`` (the state y of ``control``) all failed, the
+    shortest to ``tried``: where it stopped (the force there in Fhat, ``unit`` the force of Fhat = 1) and why."""
+    force = force_of(model, control.surface, y, np.asarray(control.active)) / unit
+    if key == "force":
+        where = f"Fhat = {force:.6g} (each step beyond failed, the shortest to Fhat = {tried / unit:.6g})"
+    else:
+        where = (f"height = {reached:.6g} R, Fhat = {force:.6g} (each step beyond failed, the shortest to "
+                 f"height = {tried:.6g} R)")
+    return ConvergenceError(f"the solid stopped at {where}: {err}", load=force, iterations=err.iterations,
+                            residual=err.residual)
 
 
 def to_force(model: Model, y: np.ndarray, control: Control, force: float, unit: float, tol: float):

@@ -4,6 +4,21 @@ Converged when the largest displacement increment is below ``tol`` (units R): Ne
 quadratically here, so the last increment bounds the error. The active set (``contact``)
 is updated between Newton solves: a node whose force lambda_k < 0 leaves it, a free node inside the
 indenter (its gap g_k < 0, ``contact``) joins it, until neither happens.
+
+Where it fails. Newton is not globalised (no line search, no arc length): the one failure measured along a load
+path is not one a globalisation of the same equations can pass. Pressing a Mooney-Rivlin pocket (alpha = 0.3,
+Phat_I = 0.3, T/R = 0.0125, the default mesh) towards Fhat = 9, with the contact's active set fixed at its 73
+nodes, the discrete path turns at Fhat = 5.43283: the smallest singular value of the tangent falls as
+sqrt(F* - F) (4.6e-8 at Fhat = 5.432, 2.6e-8 at 5.4326: F* = 5.4329), its singular vector the pressure at the
+clamp's upper corner and the radial displacement of the corner element's inner edge (``mesh``: that element then
+has det F from 0.04 to 2.7 at its quadrature points, its smallest stretch 0.07). Followed by arc length the path
+turns back in force and in the plate's height at once (a snap-back) and runs down to Fhat = 1.87 before it rises
+again with the corner folded otherwise (its active set held, the plate 1 % lower at the same force). Newton at
+any force beyond F* wanders there (steps of 2e-5 to 1e-4 R that do not fall, the corner's radial displacement
+between 0.70 and 0.71 T), and so do its globalisations, with no root nearby to converge to: damped by
+Deuflhard's natural monotonicity test its damping fell below 1e-3, pseudo-transient continuation oscillated for
+200 iterations; under height control likewise. A march that fails so says where it stopped (``compression``);
+the corner's elements set where the path turns (``mesh``).
 """
 
 from __future__ import annotations
