@@ -11,19 +11,20 @@ active set, without a penalty error. States in the membrane solvers' units (leng
 P R / (E T), E = 3 mu_0), key by key comparable: their difference is the membrane's modelling
 error, O(T/R).
 
-Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``stretches`` (the Ogden
-law's stress and tangent), ``mesh`` (the cross-section), ``assembly`` (the weak forms and their
-vectorised assembly), ``model`` (bases and constraints), ``contact`` (the indenter's gap and its
-derivatives), ``equations`` (the bordered system), ``newton`` (Newton, active set), ``inflation`` and
-``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry points, with their types,
-imported on first use: scikit-fem's import is not free). ``SOLVER`` is its record.
+Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``stretches`` (the Ogden law's
+stress and tangent), ``mesh`` (the cross-section), ``assembly`` (the weak forms and their vectorised
+assembly), ``model`` (bases and constraints), ``contact`` (the indenter's gap and its derivatives), ``jaw``
+(the clamp's upper jaw, optional: a rigid obstacle with a rounded edge), ``equations`` (the bordered system),
+``newton`` (Newton, active set), ``inflation`` and ``compression`` (the load paths), ``results`` (the states)
+and ``api`` (the entry points, with their types, imported on first use: scikit-fem's import is not free).
+``SOLVER`` is its record.
 """
 
 import importlib
 from typing import TYPE_CHECKING
 
 from pocket.core.importname import require_import_name
-from pocket.core.inputs import check_count, check_tolerance
+from pocket.core.inputs import check_count, check_non_negative, check_tolerance
 from pocket.core.offset import check_thickness
 from pocket.core.solver import Option, Solver
 
@@ -89,6 +90,10 @@ SOLVER = Solver(
                lambda name, value: check_count(name, value, MIN_ELEMENTS, MAX_ELEMENTS)),
         Option("tol", "float", 1e-10, "Newton tolerance on the displacement increment, units R (default 1e-10, "
                "at most 1e-4)", lambda name, value: check_tolerance(name, value, 1e-4)),
+        Option("clamp_radius", "float", None,
+               "the clamp's upper jaw as a rigid frictionless obstacle the sheet's upper surface may not enter, its "
+               "edge rounded to this radius, in thicknesses T (at most half the clamp's radius); default none: the "
+               "sheet only fixed at r = R, whose upper corner then folds at high force", check_non_negative),
     ),
 )
 

@@ -3,7 +3,7 @@
 Every input is checked before any work (one-line ``InputError``): the rubber (``as_material``; the
 solid has the laws of ``laws``), the pressures and forces, the fluid, the indenter (the flat plate
 or a sphere), the reference surface (``GEOMETRIES``: the flat clamped disc, None), the options of the
-record ``SOLVER`` (thickness ratio, layers, elements, tolerance).
+record ``SOLVER`` (thickness ratio, layers, elements, tolerance, the clamp's upper jaw).
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from pocket.core import geometries
-from pocket.core.errors import above_the_pocket
+from pocket.core.errors import InputError, above_the_pocket
 from pocket.core.fluids import Fluid, as_fluid
 from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
 from pocket.core.inputs import check_forces, check_positive, check_volume
@@ -29,6 +29,7 @@ from . import (
     compression,
     contact,
     inflation,
+    jaw,
     laws,
     mesh,
     model,
@@ -56,9 +57,20 @@ def _model(material, thickness_ratio, layers, elements, tol, geometry) -> tuple[
     return material, model.discretize(t, mesh.section(t, elements, layers, geometry=geometry), law, geometry), tol
 
 
+def _jaw(clamp_radius, m: model.Model) -> jaw.Jaw | None:
+    """The clamp's upper jaw of edge radius ``clamp_radius`` thicknesses (checked), or None (None or 0: no jaw)."""
+    if clamp_radius is None:
+        return None
+    radius = SOLVER.check_option("clamp_radius", clamp_radius)
+    if radius * m.thickness >= 0.5:
+        raise InputError(f"clamp_radius = {clamp_radius} thicknesses is {radius * m.thickness:.6g} R at T/R = "
+                         f"{m.thickness:g}, but the jaw's edge must be shorter than half the clamp's radius")
+    return jaw.Jaw(radius * m.thickness) if radius > 0.0 else None
+
+
 def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None,
             thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
-            tol: float = 1e-10) -> InflatedState:
+            tol: float = 1e-10, clamp_radius: float | None = None) -> InflatedState:
     """Inflate the sheet, modelled as an axisymmetric incompressible solid, at Phat = ``pressure`` (first branch).
 
     Parameters
@@ -78,6 +90,9 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
         Elements along the radius, ``MIN_ELEMENTS`` to ``MAX_ELEMENTS`` (graded towards the clamp).
     tol : float, optional
         Newton tolerance on the displacement increment, units R, at most 1e-4.
+    clamp_radius : float, optional
+        The clamp's upper jaw as a rigid frictionless obstacle, its edge rounded to this radius in thicknesses
+        T (``jaw``); None or 0 (default): no jaw, the sheet only fixed at r = R.
 
     Returns
     -------
@@ -106,13 +121,14 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
     pressure = check_positive("pressure", pressure)
-    y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * pressure, tol)
+    y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * pressure, tol, _jaw(clamp_radius, m))
     return results.inflated(m, material, y, iterations, pressure=pressure)
 
 
 def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None,
                    thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
-                   elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> InflatedState:
+                   elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10,
+                   clamp_radius: float | None = None) -> InflatedState:
     """Inflate the solid sheet to the cavity volume V / R^3 = ``volume`` (volume control).
 
     Parameters
@@ -121,7 +137,7 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
         The rubber, as for ``inflate``.
     volume : float
         V / R^3 > 0, the volume under the sheet's lower surface.
-    geometry, thickness_ratio, layers, elements, tol
+    geometry, thickness_ratio, layers, elements, tol, clamp_radius
         As for ``inflate``.
 
     Returns
@@ -150,22 +166,24 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
     volume = check_volume("volume", volume)
-    y, iterations = inflation.to_volume(m, volume, tol)
+    y, iterations = inflation.to_volume(m, volume, tol, _jaw(clamp_radius, m))
     return results.inflated(m, material, y, iterations, volume_given=volume)
 
 
-def _setup(material, pressure_initial, fluid, indenter, geometry, thickness_ratio, layers, elements,
-           tol) -> tuple[Material, model.Model, float, Fluid, InflatedState, np.ndarray, compression.Control]:
+def _setup(material, pressure_initial, fluid, indenter, geometry, thickness_ratio, layers, elements, tol,
+           clamp_radius=None) -> tuple[Material, model.Model, float, Fluid, InflatedState, np.ndarray,
+                                       compression.Control]:
     """The checked inputs, the inflated state to compress and the first contact from it (the state and its
     control)."""
     indenter, _ = posed(CONTACTS, "solid", indenter)
     fluid = as_fluid(fluid)
     material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
     p_i = check_positive("pressure_initial", pressure_initial)
-    y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * p_i, tol)
+    clamp = _jaw(clamp_radius, m)
+    y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * p_i, tol, clamp)
     start = results.inflated(m, material, y, iterations, pressure=p_i)
     fill = compression.fluid_control(m, fluid, p_i, start.volume)
-    y, control = compression.first_contact(m, y, fill, contact.Surface(indenter))
+    y, control = compression.first_contact(m, y, fill, contact.Surface(indenter), clamp)
     return material, m, tol, fluid, start, y, control
 
 
@@ -173,7 +191,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
                       indenter: Indenter | None = None, geometry: GeometryLike = None,
                       progress: Progress | None = None, thickness_ratio: float = DEFAULT_THICKNESS,
                       layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
-                      tol: float = 1e-10) -> list[CompressedState]:
+                      tol: float = 1e-10, clamp_radius: float | None = None) -> list[CompressedState]:
     """Compressed states of the solid sheet at the forces Fhat = F / (P_I pi R^2), each from the one before.
 
     Parameters
@@ -189,7 +207,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
         P_atm R / (E T)).
     indenter : Indenter, optional
         None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``pocket.core.indenters.Sphere(K)``, say).
-    geometry, thickness_ratio, layers, elements, tol
+    geometry, thickness_ratio, layers, elements, tol, clamp_radius
         As for ``inflate``.
     progress : callable, optional
         ``progress(done, total)``, called after each force.
@@ -218,7 +236,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
-                                                        thickness_ratio, layers, elements, tol)
+                                                        thickness_ratio, layers, elements, tol, clamp_radius)
     unit = np.pi * 3.0 * m.thickness * start.pressure
     out = []
     for k, force in enumerate(forces):
@@ -245,7 +263,7 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
     fluid, indenter, geometry
         As for ``compression_curve``.
     **options
-        ``thickness_ratio``, ``layers``, ``elements``, ``tol`` (as for ``inflate``).
+        ``thickness_ratio``, ``layers``, ``elements``, ``tol``, ``clamp_radius`` (as for ``inflate``).
 
     Returns
     -------
@@ -278,7 +296,8 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
 def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
                     indenter: Indenter | None = None, geometry: GeometryLike = None,
                     thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
-                    elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> CompressedState:
+                    elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10,
+                    clamp_radius: float | None = None) -> CompressedState:
     """The compressed state of the solid sheet with the plate at H/R = ``height`` above the clamp plane.
 
     Travel control: the force is found.
@@ -291,7 +310,7 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
         Phat_I = P_I R / (E T) > 0.
     height : float
         H / R > 0, below the inflated pocket's top.
-    fluid, indenter, geometry, thickness_ratio, layers, elements, tol
+    fluid, indenter, geometry, thickness_ratio, layers, elements, tol, clamp_radius
         As for ``compression_curve``.
 
     Returns
@@ -325,7 +344,7 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     height = check_positive("height", height)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
-                                                        thickness_ratio, layers, elements, tol)
+                                                        thickness_ratio, layers, elements, tol, clamp_radius)
     if height >= start.height:
         raise above_the_pocket(height, start.height)
     unit = np.pi * 3.0 * m.thickness * start.pressure

@@ -26,8 +26,9 @@ from pocket.core.fluids import Fluid
 from .contact import PLATE_SURFACE, Surface
 from .contact import force as force_of
 from .equations import Control
+from .jaw import Jaw, first
 from .model import Model
-from .newton import contact
+from .newton import SWEEP_TOL, contact
 from .rangeend import margins, past_end
 
 __all__ = ["MAX_FORCE_STEP", "first_contact", "fluid_control", "to_force", "to_height"]
@@ -55,13 +56,15 @@ def fluid_control(model: Model, fluid: Fluid, pressure_initial: float, volume_in
     return Control(volume=volume)
 
 
-def first_contact(model: Model, y_inflated: np.ndarray, fill: Control,
-                  surface: Surface = PLATE_SURFACE) -> tuple[np.ndarray, Control]:
+def first_contact(model: Model, y_inflated: np.ndarray, fill: Control, surface: Surface = PLATE_SURFACE,
+                  jaw: Jaw | None = None) -> tuple[np.ndarray, Control]:
     """The inflated state touched by the indenter ``surface`` (default the flat plate) at its pole, its lowest
-    point there: its height and a zero force appended."""
+    point there: its height and a zero force inserted after the fluid's pressure (before the multipliers of the
+    clamp's upper ``jaw``, if given, whose active set is the nodes on it: ``jaw.first``)."""
     height = 0.5 * model.thickness + y_inflated[model.top_z[0]]
-    y = np.concatenate([y_inflated, [height, 0.0]])
-    return y, dataclasses.replace(fill, active=np.array([0]), force=0.0, surface=surface)
+    y = np.concatenate([y_inflated[:model.size + 1], [height, 0.0], y_inflated[model.size + 1:]])
+    jaw = None if jaw is None else first(model, y, jaw, SWEEP_TOL)
+    return y, dataclasses.replace(fill, active=np.array([0]), force=0.0, surface=surface, jaw=jaw)
 
 
 def _march(model, y, control, key, target, step, tol, unit, largest=None):

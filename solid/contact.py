@@ -39,7 +39,7 @@ import scipy.sparse as sp
 from pocket.core.errors import OutOfRangeError
 from pocket.core.indenters import PLATE, Indenter, Plate, Sphere
 
-__all__ = ["PLATE_SURFACE", "Rows", "Surface", "cap_area", "force", "gaps", "rows"]
+__all__ = ["PLATE_SURFACE", "Rows", "Surface", "cap_area", "force", "gaps", "node_terms", "positions", "rows"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -122,11 +122,22 @@ def cap_area(radius: float, rho_c: float) -> float:
     return 2.0 * radius * rho_c**2 / (radius + np.sqrt(radius**2 - rho_c**2))
 
 
+def positions(model, y: np.ndarray, nodes) -> tuple[np.ndarray, np.ndarray]:
+    """(rho, z) (R) of the upper-surface nodes ``nodes`` (indices of ``model.top_z``) of the state y."""
+    return model.top_r[nodes] + y[model.top_radial[nodes]], 0.5 * model.thickness + y[model.top_z[nodes]]
+
+
 def _nodes(model, surface: Surface, y: np.ndarray, nodes):
     """(rho, z) of the upper-surface nodes ``nodes`` of the state y (rho None on the flat plate, which needs
     none)."""
-    z = 0.5 * model.thickness + y[model.top_z[nodes]]
-    return (None if surface.flat else model.top_r[nodes] + y[model.top_radial[nodes]]), z
+    rho, z = positions(model, y, nodes)
+    return (None if surface.flat else rho), z
+
+
+def _lambda(model, y: np.ndarray, active) -> np.ndarray:
+    """The indenter's contact forces lambda (m,) of the state y (after its height; the clamp's jaw's, if any,
+    follow them: ``jaw``)."""
+    return y[model.size + 2:model.size + 2 + len(active)]
 
 
 def gaps(model, surface: Surface, y: np.ndarray, nodes=slice(None)) -> np.ndarray:
@@ -146,7 +157,7 @@ def gaps(model, surface: Surface, y: np.ndarray, nodes=slice(None)) -> np.ndarra
 def force(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> float:
     """The indenter's force sum_k lambda_k dg_k/dh (mu_0 R^2) of the state y in contact on ``active``."""
     rho, z = _nodes(model, surface, y, active)
-    return float(np.sum(y[model.size + 2:] * -surface.local(rho, z, float(y[model.size + 1]))[1][:, 1]))
+    return float(np.sum(_lambda(model, y, active) * -surface.local(rho, z, float(y[model.size + 1]))[1][:, 1]))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -168,22 +179,33 @@ class Rows:
 def rows(model, surface: Surface, y: np.ndarray, active: np.ndarray) -> Rows:
     """The contact's ``Rows`` of the state y on the upper-surface nodes ``active``."""
     n, m = model.basis_u.N, len(active)
-    lam = y[model.size + 2:]
+    lam = _lambda(model, y, active)
     rho, z = _nodes(model, surface, y, active)
     if not surface.flat and np.any(rho >= surface.reach):
         raise OutOfRangeError(f"the sheet would wrap past {surface.end} (a node in contact at rho = {rho.max():.6g} "
                               f"R, the indenter's surface ends at {surface.reach:.6g} R)")
     g, grad, hess = surface.local(rho, z, float(y[model.size + 1]))
     dgdh = -grad[:, 1]
-    cols = np.arange(m)
     if hess is None:
-        E = sp.csc_matrix((-grad[:, 1], (model.top_z[active], cols)), shape=(n, m))
+        E = sp.csc_matrix((-grad[:, 1], (model.top_z[active], np.arange(m))), shape=(n, m))
         return Rows(-g, E, dgdh, float(np.sum(lam * dgdh)), None, None, None, 0.0)
+    E, k_uu = node_terms(model, active, lam, grad, hess)
     dofs = np.stack([model.top_radial[active], model.top_z[active]], axis=1)  # (m, 2)
-    E = sp.csc_matrix((-grad.ravel(), (dofs.ravel(), np.repeat(cols, 2))), shape=(n, m))
     weighted = lam[:, None, None] * hess
-    k_uu = sp.csc_matrix((-weighted.ravel(), (np.repeat(dofs, 2, axis=1).ravel(), np.tile(dofs, 2).ravel())),
-                         shape=(n, n))
     k_uh = sp.csc_matrix((weighted[:, :, 1].ravel(), (dofs.ravel(), np.zeros(2 * m, int))), shape=(n, 1))
     f_u = sp.csr_matrix((-weighted[:, 1, :].ravel(), (np.zeros(2 * m, int), dofs.ravel())), shape=(1, n))
     return Rows(-g, E, dgdh, float(np.sum(lam * dgdh)), k_uu, k_uh, f_u, float(weighted[:, 1, 1].sum()))
+
+
+def node_terms(model, nodes, lam: np.ndarray, grad: np.ndarray, hess: np.ndarray):
+    """The terms of the gaps of the upper-surface nodes ``nodes`` (m,) in the displacement, with their forces
+    ``lam`` (m,), gradients ``grad`` (m, 2) and Hessians ``hess`` (m, 2, 2) in x = (rho, z): E = -dg/du
+    (n x m, CSC) and the curvature -sum_k lam_k d2g_k/du2 (n x n, CSC) (module docstring; the indenter's and
+    the clamp's jaw's, ``jaw``)."""
+    n, m = model.basis_u.N, len(nodes)
+    dofs = np.stack([model.top_radial[nodes], model.top_z[nodes]], axis=1)  # (m, 2)
+    E = sp.csc_matrix((-grad.ravel(), (dofs.ravel(), np.repeat(np.arange(m), 2))), shape=(n, m))
+    weighted = lam[:, None, None] * hess
+    k_uu = sp.csc_matrix((-weighted.ravel(), (np.repeat(dofs, 2, axis=1).ravel(), np.tile(dofs, 2).ravel())),
+                         shape=(n, n))
+    return E, k_uu

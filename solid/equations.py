@@ -18,9 +18,10 @@ node k; on a sphere the distance to its surface), the equations are its stationa
                                           plate dg_k/dh = 1), or
               h - H = 0                  (height control).
 
-The contact's terms, with a sphere's curvature, are derived in ``contact``. Without contact the plate's
-height is not an unknown (the vector stops at p_f). The Jacobian is the bordered matrix of these rows; the
-clamp's and the axis's dofs are removed (``Model.free``).
+The contact's terms, with a sphere's curvature, are derived in ``contact``. Without contact the plate's height
+is not an unknown (the vector stops at p_f). With the clamp's upper jaw (``jaw``, optional) its multipliers
+follow, one per candidate node, and its rows border the rest. The Jacobian is the bordered matrix of these
+rows; the clamp's and the axis's dofs are removed (``Model.free``).
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from . import contact
+from .jaw import Jaw, bordered
 from .model import Model, fluid, solid, split
 
 __all__ = ["Control", "system"]
@@ -41,7 +43,8 @@ __all__ = ["Control", "system"]
 class Control:
     """What is held: the fluid's ``pressure`` (units mu_0), or its ``volume(p_f) -> (V, dV/dp_f)``; in contact,
     the ``active`` upper-surface nodes (indices of ``Model.top_z``) and the plate's ``force`` (mu_0 R^2) or
-    ``height`` (R); the indenter's ``surface`` (``contact``: the flat plate or a sphere)."""
+    ``height`` (R); the indenter's ``surface`` (``contact``: the flat plate or a sphere); the clamp's upper
+    ``jaw`` with its own active set (``jaw``; None: no jaw, the sheet only fixed at the clamp)."""
 
     pressure: float | None = None
     volume: Callable[[float], tuple[float, float]] | None = None
@@ -49,6 +52,7 @@ class Control:
     force: float | None = None
     height: float | None = None
     surface: contact.Surface = contact.PLATE_SURFACE
+    jaw: Jaw | None = None
 
     @property
     def contact(self) -> bool:
@@ -76,7 +80,7 @@ def system(model: Model, y: np.ndarray, control: Control):
     if control.active is not None:
         c = contact.rows(model, control.surface, y, control.active)
         m = len(control.active)
-        residual[0] = residual[0] + c.E @ y[size + 2:]
+        residual[0] = residual[0] + c.E @ y[size + 2:size + 2 + m]
         residual.append([y[size + 1] - control.height] if control.force is None else [c.force - control.force])
         residual.append(c.residual)
         # the plate's row: d/dh and d/dlambda of h - H, or of F - F_given
@@ -92,5 +96,7 @@ def system(model: Model, y: np.ndarray, control: Control):
         blocks.append([c.E.T, None, None, sp.csr_matrix(-c.dgdh[:, None]), None])
     jac = sp.bmat(blocks, format="csc")
     res = np.concatenate([np.atleast_1d(np.asarray(part, dtype=float)) for part in residual])
+    if control.jaw is not None:
+        res, jac = bordered(model, y, control.jaw, res, jac)
     keep = np.concatenate([model.free, np.arange(size, res.size)])
     return res[keep], jac[keep][:, keep], keep

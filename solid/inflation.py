@@ -16,8 +16,9 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 
 from .equations import Control
+from .jaw import Jaw, candidates
 from .model import Model
-from .newton import solve
+from .newton import contact, solve
 
 __all__ = ["MAX_RATIO", "V_START", "to_pressure", "to_volume"]
 
@@ -34,23 +35,32 @@ V_MAX = 1e3
 PATH_TOL = 1e-3
 
 
-def _volume(v: float) -> Control:
-    return Control(volume=lambda pf: (v, 0.0))
+def _volume(v: float, jaw: Jaw | None = None) -> Control:
+    return Control(volume=lambda pf: (v, 0.0), jaw=jaw)
 
 
-def _path(model: Model, target_volume: float, tol: float):
-    """States along log V up to ``target_volume``, solved to ``PATH_TOL``; yields (V, y, iterations)."""
+def _solve(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[np.ndarray, Control, int]:
+    """Newton on ``control``; with the clamp's upper jaw, its active set settled too (``newton.contact``)."""
+    if control.jaw is None:
+        y, iterations = solve(model, y, control, tol)
+        return y, control, iterations
+    return contact(model, y, control, tol)
+
+
+def _path(model: Model, target_volume: float, tol: float, jaw: Jaw | None = None):
+    """States along log V up to ``target_volume``, solved to ``PATH_TOL``; yields (V, y, iterations, the jaw
+    with its active set)."""
     tol = max(tol, PATH_TOL)
-    y = np.zeros(model.size + 1)
+    y = np.zeros(model.size + 1 + (0 if jaw is None else candidates(model).size))
     v0 = min(V_START, target_volume)
-    y, iterations = solve(model, y, _volume(v0), tol)
-    yield v0, y, iterations
+    y, control, iterations = _solve(model, y, _volume(v0, jaw), tol)
+    yield v0, y, iterations, control.jaw
     log_v, previous, log_step = np.log(v0), None, np.log(MAX_RATIO)
     while log_v < np.log(target_volume):
         step = min(log_step, np.log(target_volume) - log_v)
         guess = y if previous is None else y + (y - previous[1]) * step / (log_v - previous[0])
         try:
-            new, iterations = solve(model, guess, _volume(np.exp(log_v + step)), tol)
+            new, control, iterations = _solve(model, guess, _volume(np.exp(log_v + step), control.jaw), tol)
         except ConvergenceError:
             log_step = 0.5 * step
             if log_step < MIN_STEP:
@@ -58,22 +68,24 @@ def _path(model: Model, target_volume: float, tol: float):
             continue
         previous, y, log_v = (log_v, y), new, log_v + step
         log_step = min(np.log(MAX_RATIO), 1.5 * step)
-        yield np.exp(log_v), y, iterations
+        yield np.exp(log_v), y, iterations, control.jaw
 
 
-def to_volume(model: Model, volume: float, tol: float) -> tuple[np.ndarray, int]:
-    """The inflated state of cavity volume ``volume`` (R^3); (y, Newton iterations)."""
+def to_volume(model: Model, volume: float, tol: float, jaw: Jaw | None = None) -> tuple[np.ndarray, int]:
+    """The inflated state of cavity volume ``volume`` (R^3), against the clamp's upper ``jaw`` if given (``jaw``:
+    its multipliers end y); (y, Newton iterations)."""
     total = 0
-    for _, y, iterations in _path(model, volume, tol):
+    for _, y, iterations, jaw in _path(model, volume, tol, jaw):
         total += iterations
-    y, iterations = solve(model, y, _volume(volume), tol)
+    y, _, iterations = _solve(model, y, _volume(volume, jaw), tol)
     return y, total + iterations
 
 
-def to_pressure(model: Model, pressure: float, tol: float) -> tuple[np.ndarray, int]:
-    """The inflated state at the fluid pressure ``pressure`` (units mu_0) on the first branch; (y, iterations)."""
+def to_pressure(model: Model, pressure: float, tol: float, jaw: Jaw | None = None) -> tuple[np.ndarray, int]:
+    """The inflated state at the fluid pressure ``pressure`` (units mu_0) on the first branch, against the clamp's
+    upper ``jaw`` if given (``jaw``: its multipliers end y); (y, iterations)."""
     total, before = 0, None
-    for v, y, iterations in _path(model, V_MAX, tol):
+    for v, y, iterations, jaw in _path(model, V_MAX, tol, jaw):
         total += iterations
         pf = y[model.size]
         if pf >= pressure:
@@ -82,7 +94,7 @@ def to_pressure(model: Model, pressure: float, tol: float) -> tuple[np.ndarray, 
             else:
                 w = (pressure - before[1][model.size]) / (pf - before[1][model.size])
                 guess = before[1] + w * (y - before[1])
-            y, iterations = solve(model, guess, Control(pressure=pressure), tol)
+            y, _, iterations = _solve(model, guess, Control(pressure=pressure, jaw=jaw), tol)
             return y, total + iterations
         if before is not None and pf < before[1][model.size]:
             raise OutOfRangeError(f"the solid's pressure has a maximum below Phat-equivalent {pressure:.6g} mu_0 "

@@ -32,6 +32,7 @@ from pocket.core.errors import ConvergenceError
 
 from .contact import gaps
 from .equations import Control, system
+from .jaw import updated
 from .model import Model
 
 __all__ = ["MAX_ITERATIONS", "MAX_SWEEPS", "SWEEP_STEP", "SWEEP_TOL", "contact", "solve"]
@@ -118,27 +119,44 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     joins. The contact of a flat plate, a sphere or a convex profile is a disc: while the sets tried are the
     first n nodes from the pole, n is bisected between the largest set found too small (a node beyond it inside the
     indenter) and the smallest found too large (a negative force in it), instead of the one or two nodes the
-    rules above remove per update after an overshoot (``_bisect``).
+    rules above remove per update after an overshoot (``_bisect``). The clamp's upper jaw's set, if ``control``
+    has one (``jaw``), is updated alongside by the same rules (without the bisection), and settled alone when
+    there is no indenter (``control.active`` None: inflation).
     """
-    size, total, loose = model.size, 0, max(tol, SWEEP_TOL)
+    total, loose = 0, max(tol, SWEEP_TOL)
     bounds, step = [0, None], max(tol, SWEEP_STEP)
     for sweep in range(MAX_SWEEPS):
         y, iterations = solve(model, y, control, step if sweep < MAX_SWEEPS - 1 else tol)
         total += iterations
-        active, lam = np.asarray(control.active), y[size + 2:]
-        gap = gaps(model, control.surface, y)
-        keep = lam >= 0.0
-        if not keep.any():
-            keep[np.argmax(lam)] = True
-        joining = np.setdiff1d(np.flatnonzero(gap < -loose), active)
-        if keep.all() and joining.size == 0:
+        held = None if control.jaw is None else updated(model, y, control.jaw, loose)
+        moved = None if control.active is None else _indenter(model, y, control, loose, bounds)
+        if moved is None and held is None:
             if step <= tol:
                 return y, control, total
             step = tol  # the set holds: Newton to the tolerance, and the set checked once more there
             continue
         step = max(tol, SWEEP_STEP)
-        new = _bisect(active, np.union1d(active[keep], joining), joining, bool(keep.all()), bounds)
-        forces = dict(zip(active[keep], lam[keep], strict=True))
-        y = np.concatenate([y[:size + 2], [forces.get(k, 0.0) for k in new]])
-        control = dataclasses.replace(control, active=new)
+        if moved is not None:
+            y, control = moved
+        if held is not None:
+            control = dataclasses.replace(control, jaw=held)
     raise ConvergenceError(f"the contact's active set did not settle in {MAX_SWEEPS} updates")
+
+
+def _indenter(model: Model, y: np.ndarray, control: Control, loose: float, bounds: list):
+    """The state and control with the indenter's next active set (``contact``'s rules, ``_bisect``), or None
+    if the set of ``control`` holds at y."""
+    size = model.size
+    active = np.asarray(control.active)
+    lam = y[size + 2:size + 2 + active.size]
+    gap = gaps(model, control.surface, y)
+    keep = lam >= 0.0
+    if not keep.any():
+        keep[np.argmax(lam)] = True
+    joining = np.setdiff1d(np.flatnonzero(gap < -loose), active)
+    if keep.all() and joining.size == 0:
+        return None
+    new = _bisect(active, np.union1d(active[keep], joining), joining, bool(keep.all()), bounds)
+    forces = dict(zip(active[keep], lam[keep], strict=True))
+    y = np.concatenate([y[:size + 2], [forces.get(k, 0.0) for k in new], y[size + 2 + active.size:]])
+    return y, dataclasses.replace(control, active=new)
