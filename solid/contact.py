@@ -130,8 +130,8 @@ def positions(model, y: np.ndarray, nodes) -> tuple[np.ndarray, np.ndarray]:
 def _nodes(model, surface: Surface, y: np.ndarray, nodes):
     """(rho, z) of the upper-surface nodes ``nodes`` of the state y (rho None on the flat plate, which needs
     none)."""
-    rho, z = positions(model, y, nodes)
-    return (None if surface.flat else rho), z
+    z = 0.5 * model.thickness + y[model.top_z[nodes]]
+    return (None if surface.flat else model.top_r[nodes] + y[model.top_radial[nodes]]), z
 
 
 def _lambda(model, y: np.ndarray, active) -> np.ndarray:

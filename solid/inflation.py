@@ -4,7 +4,8 @@ The flat sheet is the start (the solid's tangent there is regular: it bends). Th
 in log V under volume control (the pressure is the multiplier, so pressure maxima pass), from
 ``V_START`` in steps of at most ``MAX_RATIO`` in V, each seeded by the secant through the two
 states before it and halved when Newton fails. A pressure target is bracketed on this path and
-landed on under pressure control from the interpolated bracket; a pressure that falls before
+landed on under pressure control from the interpolated bracket (narrowed under volume control if Newton
+fails from there); a pressure that falls before
 reaching the target has passed its maximum: the target has no state on the first branch
 (OutOfRangeError).
 """
@@ -30,6 +31,8 @@ MAX_RATIO = 2.0
 MIN_STEP = 1e-3
 #: the largest volume a pressure target is sought at (a sheet stretched ~10 times)
 V_MAX = 1e3
+#: landings on a pressure target before giving up (``_land``)
+MAX_LANDINGS = 12
 #: Newton's tolerance on the path's states (units R): they only seed the next, and the state returned is
 #: solved to the caller's tolerance from the last (a step below 1e-3 R leaves an error ~1e-6 R)
 PATH_TOL = 1e-3
@@ -90,14 +93,43 @@ def to_pressure(model: Model, pressure: float, tol: float, jaw: Jaw | None = Non
         pf = y[model.size]
         if pf >= pressure:
             if before is None:
-                guess = y
-            else:
-                w = (pressure - before[1][model.size]) / (pf - before[1][model.size])
-                guess = before[1] + w * (y - before[1])
-            y, _, iterations = _solve(model, guess, Control(pressure=pressure, jaw=jaw), tol)
+                y, _, iterations = _solve(model, y, Control(pressure=pressure, jaw=jaw), tol)
+                return y, total + iterations
+            y, iterations = _land(model, pressure, before, (v, y), tol, jaw)
             return y, total + iterations
         if before is not None and pf < before[1][model.size]:
             raise OutOfRangeError(f"the solid's pressure has a maximum below Phat-equivalent {pressure:.6g} mu_0 "
                                   f"(it falls past V/R^3 = {before[0]:.4g}): no inflated state on the first branch")
         before = (v, y)
     raise OutOfRangeError(f"the fluid pressure {pressure:.6g} mu_0 is not reached by V/R^3 = {V_MAX:g}")
+
+
+def _land(model: Model, pressure: float, low, high, tol: float, jaw: Jaw | None) -> tuple[np.ndarray, int]:
+    """The state at ``pressure`` between the path's states ``low`` = (V, y) below it and ``high`` above, under
+    pressure control from their interpolation at the pressure; if Newton fails from there (a corner element
+    turned inside out on the way: the bracket spans the jaw's first contact, say), the bracket is narrowed under
+    volume control at the interpolated volume (regula falsi in V; each state solved from the state below, the
+    volume step halved while Newton fails) and the landing tried again, ``MAX_LANDINGS`` times in all;
+    (y, iterations)."""
+    total, size, attempts = 0, model.size, 0
+    while True:
+        w = (pressure - low[1][size]) / (high[1][size] - low[1][size])
+        guess = low[1] + w * (high[1] - low[1])
+        try:
+            y, _, iterations = _solve(model, guess, Control(pressure=pressure, jaw=jaw), tol)
+            return y, total + iterations
+        except ConvergenceError:
+            attempts += 1
+            if attempts == MAX_LANDINGS:
+                raise
+        v = low[0] + w * (high[0] - low[0])
+        while True:  # from the converged state below, its volume step halved until Newton converges
+            try:
+                y, control, iterations = _solve(model, low[1], _volume(v, jaw), max(tol, PATH_TOL))
+                break
+            except ConvergenceError:
+                v = 0.5 * (low[0] + v)
+                if v - low[0] < MIN_STEP * low[0]:
+                    raise
+        total, jaw = total + iterations, control.jaw
+        low, high = ((v, y), high) if y[size] < pressure else (low, (v, y))

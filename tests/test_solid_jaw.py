@@ -206,3 +206,27 @@ def test_the_range_command_with_the_jaw_reaches_the_last_force(capsys):
     ratios = [s["pressure_ratio"] for s in json.loads(out)["states"]]
     assert len(ratios) == 5
     assert np.all(np.diff(ratios) > 0.0)
+
+
+def test_a_failed_landing_on_the_pressure_is_narrowed_in_volume(monkeypatch):
+    """Newton failing from the interpolated bracket (told to fail, twice: the jaw's first contact within the
+    bracket made it fail at finer corners) lands all the same, by narrowing the bracket in volume: the same state
+    as the direct landing, to the Newton tolerance (1e-10 R: 1e-8 relative in V is a hundred times that)."""
+    from pocket.solid import inflation
+
+    from pocket.core.errors import ConvergenceError
+
+    plain = solid.inflate(MATERIAL, 0.31, clamp_radius=1.0, **COARSE)
+    real, failed = inflation._solve, []
+
+    def solve(model, y, control, tol):
+        if control.pressure is not None and len(failed) < 2:
+            failed.append(control.pressure)
+            raise ConvergenceError("told to fail", iterations=1)
+        return real(model, y, control, tol)
+
+    monkeypatch.setattr(inflation, "_solve", solve)
+    landed = solid.inflate(MATERIAL, 0.31, clamp_radius=1.0, **COARSE)
+    assert len(failed) == 2
+    assert abs(landed.volume / plain.volume - 1.0) < 1e-8
+    assert abs(landed.height / plain.height - 1.0) < 1e-8
