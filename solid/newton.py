@@ -18,7 +18,9 @@ any force beyond F* wanders there (steps of 2e-5 to 1e-4 R that do not fall, the
 between 0.70 and 0.71 T), and so do its globalisations, with no root nearby to converge to: damped by
 Deuflhard's natural monotonicity test its damping fell below 1e-3, pseudo-transient continuation oscillated for
 200 iterations; under height control likewise. A march that fails so says where it stopped (``compression``);
-the corner's elements set where the path turns (``mesh``).
+the corner's elements set where the path turns (``mesh``). With the clamp's upper jaw (``jaw``, the option
+``clamp_radius``) the corner's node cannot move past r = 1 above the sheet: the same pocket, its upper surface
+wrapped around a jaw's edge of radius T/2 or T, reaches Fhat = 9 at every corner mesh from 1 T to T/16.
 """
 
 from __future__ import annotations

@@ -15,7 +15,7 @@ first of these lengths (units R, positive inside the model: ``margins``) reaches
   half a thickness below the plane; the two ends differ by that travel, O(T/R) like the solid's other
   differences from the membrane.)
 - the mid-surface's lowest height over the free part (r_c < r < 1, the clamp's own node, fixed at z = 0,
-  left out): the free part reaching the clamp plane;
+  left out; with the clamp's upper jaw, r < 1 - its edge's radius): the free part reaching the clamp plane;
 - the indenter's reach less the contact's deformed radius rho_c (its upper surface's at r_c): the contact
   reaching the sphere's equator or the profile's last radius.
 
@@ -72,7 +72,10 @@ def margins(model: Model, y: np.ndarray, control: Control) -> dict[str, float]:
     r_c = contact_radius(model, y, active, surface)
     eta = y[model.mid_dofs[1]]
     under = model.mid_r <= r_c
-    free = ~under & (model.mid_r < 1.0)
+    # the free part ends at the clamp, or where the clamp's upper jaw's edge begins (``jaw``): beneath the edge the
+    # sheet wraps the jaw, which may press its mid-surface a little below the plane (4e-4 T at 0.03 T from the
+    # clamp, under an edge of radius T at corner elements T/16): the jaw's corner, not the free sheet's end
+    free = ~under & (model.mid_r < (1.0 if control.jaw is None else 1.0 - control.jaw.radius))
     out = {_under(surface): float(eta[under].min()),
            CLAMP_PLANE: float(eta[free].min()) if free.any() else np.inf}
     if not surface.flat:
