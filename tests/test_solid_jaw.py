@@ -232,3 +232,22 @@ def test_a_failed_landing_on_the_pressure_is_narrowed_in_volume(monkeypatch):
     assert len(failed) == 2
     assert abs(landed.volume / plain.volume - 1.0) < 1e-8
     assert abs(landed.height / plain.height - 1.0) < 1e-8
+
+
+@pytest.mark.slow
+def test_the_jaw_pressing_the_sheet_below_the_clamp_plane_is_not_the_range_end(monkeypatch):
+    """Under a jaw of radius T, at corner elements T/16, the jaw presses the mid-surface's node beside the clamp a
+    little below the clamp plane already when inflated; the range's end (the free sheet reaching the plane) is
+    not there: the free part ends where the jaw's edge begins, and Fhat = 1 solves."""
+    from pocket.solid import mesh
+
+    monkeypatch.setattr(mesh, "CORNER_SIZE", 0.0625)
+    t = solid.DEFAULT_THICKNESS
+    state = solid.compress(0.3, 0.3, 1.0, thickness_ratio=t, clamp_radius=1.0)
+    profile = state.inflated.profile
+    beneath = profile.r > 1.0 - t
+    print(f"inflated mid-surface beneath the jaw's edge, lowest: {profile.eta[beneath][:-1].min() / t:.3g} T; "
+          f"free part, lowest: {profile.eta[~beneath].min() / t:.3g} T")
+    assert profile.eta[beneath][:-1].min() < 0.0
+    assert profile.eta[~beneath].min() > 0.0
+    assert state.force == 1.0
