@@ -27,7 +27,7 @@ inside the jaw (rho > 1, z > t/2 + a) g is not the distance, but no node of a st
 
 The rows are the indenter's (``contact``: ``contact.node_terms``) with no height: the jaw is fixed, has no
 force row and its gap has no h. The jaw's multipliers mu_k >= 0 (units mu_0 R^2, the jaw pushing the node
-along -grad_x g, out of the jaw) are one per candidate node, every upper-surface node but the clamped one,
+with the force mu_k grad_x g, out of the jaw) are one per candidate node, every upper-surface node but the clamped one,
 appended after the indenter's unknowns: y = [u, p, p_f, (h, lambda_1 .. lambda_m), mu_1 .. mu_J]. An
 active node's row is -g_k = 0 (its force mu_k E_k in the equilibrium, its curvature -mu_k d2g_k/du2 in the
 tangent), an inactive node's is mu_k = 0 (its columns empty), so the unknowns' layout does not change
