@@ -15,7 +15,8 @@ Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``stre
 law's stress and tangent), ``mesh`` (the cross-section), ``assembly`` (the weak forms and their
 vectorised assembly), ``model`` (bases and constraints), ``contact`` (the indenter's gap and its
 derivatives), ``equations`` (the bordered system), ``newton`` (Newton, active set), ``inflation`` and
-``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry points, with their types,
+``compression`` (the load paths), ``edgemesh`` (the mesh's cluster of short elements that follows the
+contact edge, the state carried over to it), ``results`` (the states) and ``api`` (the entry points, with their types,
 imported on first use: scikit-fem's import is not free). ``SOLVER`` is its record.
 """
 
@@ -85,7 +86,8 @@ SOLVER = Solver(
         Option("elements", "int", DEFAULT_ELEMENTS,
                f"elements along the radius, graded towards the clamp ({MIN_ELEMENTS} to {MAX_ELEMENTS}; "
                f"default {DEFAULT_ELEMENTS}); the clamp's corner elements, T/2 long, replace the nodes near it, "
-               "so a state's 'elements' (the mesh's count) can differ by a few",
+               "and in contact a cluster of short elements follows the contact edge, so a state's "
+               "'mesh_elements' (the mesh's count) differs from it",
                lambda name, value: check_count(name, value, MIN_ELEMENTS, MAX_ELEMENTS)),
         Option("tol", "float", 1e-10, "Newton tolerance on the displacement increment, units R (default 1e-10, "
                "at most 1e-4)", lambda name, value: check_tolerance(name, value, 1e-4)),
