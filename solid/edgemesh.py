@@ -10,49 +10,59 @@ off by C h, a fraction of the element (first order in h), whatever the extrapola
 default mesh that element is ~0.02 R long: sample 4's pocket (T/R = 0.08) at Fhat = 0.08 had its
 contact area 7 % off.
 
-What. Between solves at one load the radial nodes move (the layers' heights stay) so that a cluster of
-elements ``size`` long sits about the edge estimate r_e: the element length wanted at r is
+What. Between solves the radial nodes move (the layers' heights stay) so that a cluster of elements
+``size`` long sits about the edge estimate r_e: the element length wanted at r is
 
     h(r) = min(h_0(r), h_e(|r - r_e|)),   h_e(d) = size + (GROWTH - 1) max(d - CORE size, 0),
 
 h_0 the base mesh's (``mesh.section``: graded towards the clamp, its corner elements), h_e flat over
 CORE elements either side of r_e, then growing by about GROWTH per element until it meets h_0 (an
 element of length h at distance d is followed by one of h + (GROWTH - 1) h). The nodes between the base
-nodes a < r_e < b where h_e first exceeds h_0 are placed at equal steps of phi(r) = int dr / h(r) on
-[a, r_e] and on [r_e, b], each with a whole number of elements (so r_e is a vertex node; each side's
+nodes a < r_e < b where h_e first exceeds 1.5 h_0 are placed at equal steps of phi(r) = int dr / h(r)
+on [a, r_e] and on [r_e, b], each with a whole number of elements (so r_e is a vertex node; each side's
 elements are scaled by round(phi) / phi, within a few percent of h); the base nodes outside [a, b]
-stay, the clamp's corner elements among them. The mesh gains the cluster's elements (~2 CORE + 2
-log(h_0 / size) / log(GROWTH)); its topology is a tensor product as before, so every line of nodes at
-a fixed height is carried over by itself.
+stay, the clamp's three corner elements always. The mesh gains the cluster's elements (~2 CORE + 2
+log(h_0 / size) / log(GROWTH): about 10 on the default mesh); its topology is a tensor product as
+before, so every line of nodes at a fixed height is carried over by itself. size = ``SIZE`` T, at least
+``MIN_SIZE`` (the edge is wanted to ~1e-3 R, which a thin sheet's T/32 overshoots at a cost) and at most
+T/4 (the two nodes beyond the edge then lie within the half-space's zone, where the gap grows as
+(r - r_c)^(3/2): ``results.edge_radius`` extrapolates them with that exponent).
 
 The transfer. Each element is a rectangle, its map affine, so a Q2 field restricted to a line of its
 nodes at one height (the vertex lines and the mid-layer lines alike) is the quadratic through the line's
 three nodes of the element (two vertices, the midpoint) in r, and a Q1 field on a vertex line is linear in
 r. The state is carried to the new nodes by evaluating these: Lagrange's quadratic through each old
 element's three nodes for u (exact on every field the old elements hold: any piecewise quadratic in r on
-the old elements, so any global quadratic), linear interpolation for p. The contact forces are nodal
-forces: each is divided by its node's share of the contact area (the consistent weights of a Q2 line,
-h/6, 4h/6, h/6 of an element, times 2 pi r), the density interpolated linearly to the new upper surface's
-nodes inside the old edge, and multiplied back by their shares. The fluid's pressure and the plate's
-height carry over as they are. Newton then solves the same load from there (``newton.contact``, the
-active set updated as ever): on the plate the Jacobian does not depend on the multipliers, so the first
-Newton step sets them; the transfer's error in u is the old mesh's interpolation error, so Newton starts
-within the old discretisation error of the new state and takes a few iterations.
+the old elements, so any global quadratic; of order 3 in the old element's length on a smooth field),
+linear interpolation for p (exact on Q1's fields, order 2). The contact forces are nodal forces: each is
+divided by its node's share of the contact area (the consistent weights of a Q2 line, h/6, 4h/6, h/6
+of an element, times 2 pi r), the density interpolated linearly to the new upper surface's nodes inside
+the edge estimate (the new active set), and multiplied back by their shares (exact on a uniform
+density). The fluid's pressure and the plate's height carry over as they are. Newton then solves the
+same load from there (``newton.contact``, the active set updated as ever): on the plate the Jacobian
+does not depend on the multipliers, so the first Newton step sets them; the transfer's error in u is the
+old mesh's interpolation error, so Newton starts within the old discretisation error of the new state.
 
-Why the edge estimate converges. Let E(c) be the edge estimated on the mesh clustered about c. On the
-cluster the estimate's error is C(theta) size, theta the edge's offset from the node at c in elements
-(the local problem is self-similar at scales below T: the same discrete half-space edge, scaled), and
-away from the cluster the mesh is fixed. So |E(c) - E(c')| <= L |c - c'| + O(size), L = |dC/dtheta| (the
-offset's effect on the bias, measured below 1): the iteration c <- E(c) is a contraction down to the
-estimate's own scale, ``STOP`` size, where it stops; it starts from the base mesh's estimate, off by a
-fraction of a base element, which the cluster's flat core (CORE elements each side) holds. Each move
-costs a transfer and a Newton solve; within a load path the cluster stays about the last edge, so the
-next load starts from a mesh already clustered near it.
+When the mesh moves (``follow``, after each load is solved; ``ahead``, before the next load of a
+curve). The first state in contact is solved on the base mesh; its edge, extrapolated there with
+exponent 2, is off by a fraction of a base element (~0.02 R), which the cluster's core (CORE elements
+of ``size`` either side) holds; the state is carried to the cluster about it and solved again. The mesh
+moves again only while the edge estimate lies farther than ``STOP`` CORE elements (one) from the core's
+centre. Within the core the estimate's error depends on where the edge lies only at the cluster's own
+scale (``size`` times C(theta), theta the edge's offset from the core's centre in elements: the local
+problem is self-similar below the scale T, the same discrete half-space edge, scaled), so moving again
+would only trade one C(theta) size for another. Hence the estimate converges as the cluster's size:
+first order in ``size``, with a small constant (the discrete edge's local error, a fraction of an
+element, whatever the base mesh), as long as the rest of the mesh resolves the sheet (its own error in
+the edge is the global solution's, of higher order). Along a curve (``ahead``) the cluster is moved
+before each next load to where the edge is predicted to be, the state carried there unsolved (the march
+to the load solves it): A_c ~ Fhat / (P/P_I) (the flat plate's F = P A_c of the membrane), so rho_c^2
+scales by (F' / F)(P / P'), P' extrapolated from the last two states, and r_c is read off the state's
+upper surface at that rho_c. A prediction within the core spares the move after the solve.
 
-The estimate's own error (``edge_error``): the spread of two estimates of the same edge from the same
-state, the gaps beyond the active set extrapolated with the membrane's exponent 2 (``results``) and with
-the half-space's 3/2, which bracket the gap's local growth; with the cluster's size it is the C size
-above, reported as ``extra["contact_radius_error"]`` (R).
+The estimate's own error: the spread of two estimates of the same edge from the same state, the gaps
+beyond the active set extrapolated with the membrane's exponent 2 and with the half-space's 3/2, which
+bracket the gap's local growth (``results``), reported as ``extra["contact_radius_error"]`` (R).
 """
 
 from __future__ import annotations
@@ -78,8 +88,9 @@ MIN_SIZE = 2e-3
 #: the cluster's flat core: elements of ``SIZE`` either side of the edge estimate
 CORE = 4
 #: the cluster's growth of the elements' lengths away from its core
-GROWTH = 1.5
-#: the edge estimate has settled when it moves by less than this fraction of the cluster's elements
+GROWTH = 2.0
+#: the mesh moves again while the edge estimate lies farther from the cluster's centre than this fraction of
+#: the core's half-width (CORE elements): one element
 STOP = 0.25
 #: the clamp's corner elements (``mesh.corner_nodes``), whose nodes the cluster leaves where they are
 CLAMP_NODES = 3
