@@ -61,7 +61,8 @@ MIN_ELEMENTS = 8
 MAX_ELEMENTS = 2000
 #: default elements along the radius and through the thickness: P/P_I converged to 1e-4. Measured on the
 #: headline pocket's 10-force curve under the plate (Fhat 0.1 .. 1, T/R = 0.0125, benchmarks/bench_solid.py):
-#: P/P_I moves by at most 3.6e-5 from 64 to 128 elements (two layers), by 2.8e-4 from two layers to four
+#: P/P_I moves by at most 3.6e-5 from 64 to 128 elements (two layers; 2.5e-7 from 64 to 256 on four layers with
+#: the mesh that follows the contact edge, ``edgemesh``: that error was the edge's), by 2.8e-4 from two layers to four
 #: and by 5.5e-5 from four to eight (64 elements), order ~2.3 through the thickness; four layers cost
 #: twice two (a curve in ~2.2 s against ~1.2 s). Inflated (tests/test_solid_thin.py): along the radius V
 #: has converged to ~1e-6 at 32 elements; through the thickness V moves by ~3e-4 (relative) from two layers
