@@ -233,9 +233,9 @@ def ahead(model: Model, y: np.ndarray, control: Control, force: float, before: t
     r_c = edge_radius(model, y, active, control.surface)
     top_rho = model.top_r + y[model.top_radial]
     rho = float(np.interp(r_c, model.top_r, top_rho))
-    pf = float(y[model.size])
-    slope = 0.0 if before is None or before[0] == control.force else (pf - before[1]) / (control.force - before[0])
-    ratio = (force / control.force) * pf / max(pf + slope * (force - control.force), 1e-3 * pf)
+    pf, now = float(y[model.size]), float(control.force or 0.0)
+    slope = 0.0 if before is None or before[0] == now else (pf - before[1]) / (now - before[0])
+    ratio = (force / now) * pf / max(pf + slope * (force - now), 1e-3 * pf)
     edge = float(np.interp(rho * np.sqrt(ratio), top_rho, model.top_r))
     if model.cluster is not None and abs(edge - model.cluster[0]) <= STOP * model.cluster[1]:
         return model, y, control
