@@ -221,7 +221,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
                                                         thickness_ratio, layers, elements, tol)
     unit = np.pi * 3.0 * m.thickness * start.pressure
-    out, before = [], None
+    out, before = [], (0.0, 3.0 * m.thickness * start.pressure)  # the first contact: no force, P_I
     for k, force in enumerate(forces):
         if control.force:  # under a force already: the mesh's cluster moved to where the edge is going
             m, y, control = edgemesh.ahead(m, y, control, force * unit, before)
