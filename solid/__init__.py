@@ -15,7 +15,8 @@ Modules: ``laws`` (W's derivatives), ``kinematics`` (F, stress, tangent), ``stre
 law's stress and tangent), ``mesh`` (the cross-section), ``assembly`` (the weak forms and their
 vectorised assembly), ``model`` (bases and constraints), ``contact`` (the indenter's gap and its
 derivatives), ``equations`` (the bordered system), ``newton`` (Newton, active set), ``inflation`` and
-``compression`` (the load paths), ``results`` (the states) and ``api`` (the entry points, with their types,
+``compression`` (the load paths), ``edgemesh`` (the mesh's cluster of short elements that follows the
+contact edge, the state carried over to it), ``results`` (the states) and ``api`` (the entry points, with their types,
 imported on first use: scikit-fem's import is not free). ``SOLVER`` is its record.
 """
 
@@ -60,7 +61,8 @@ MIN_ELEMENTS = 8
 MAX_ELEMENTS = 2000
 #: default elements along the radius and through the thickness: P/P_I converged to 1e-4. Measured on the
 #: headline pocket's 10-force curve under the plate (Fhat 0.1 .. 1, T/R = 0.0125, benchmarks/bench_solid.py):
-#: P/P_I moves by at most 3.6e-5 from 64 to 128 elements (two layers), by 2.8e-4 from two layers to four
+#: P/P_I moves by at most 3.6e-5 from 64 to 128 elements (two layers; 2.5e-7 from 64 to 256 on four layers with
+#: the mesh that follows the contact edge, ``edgemesh``: that error was the edge's), by 2.8e-4 from two layers to four
 #: and by 5.5e-5 from four to eight (64 elements), order ~2.3 through the thickness; four layers cost
 #: twice two (a curve in ~2.2 s against ~1.2 s). Inflated (tests/test_solid_thin.py): along the radius V
 #: has converged to ~1e-6 at 32 elements; through the thickness V moves by ~3e-4 (relative) from two layers
@@ -85,7 +87,8 @@ SOLVER = Solver(
         Option("elements", "int", DEFAULT_ELEMENTS,
                f"elements along the radius, graded towards the clamp ({MIN_ELEMENTS} to {MAX_ELEMENTS}; "
                f"default {DEFAULT_ELEMENTS}); the clamp's corner elements, T/2 long, replace the nodes near it, "
-               "so a state's 'elements' (the mesh's count) can differ by a few",
+               "and in contact a cluster of short elements follows the contact edge, so a state's "
+               "'mesh_elements' (the mesh's count) differs from it",
                lambda name, value: check_count(name, value, MIN_ELEMENTS, MAX_ELEMENTS)),
         Option("tol", "float", 1e-10, "Newton tolerance on the displacement increment, units R (default 1e-10, "
                "at most 1e-4)", lambda name, value: check_tolerance(name, value, 1e-4)),

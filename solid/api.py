@@ -28,6 +28,7 @@ from . import (
     SOLVER,
     compression,
     contact,
+    edgemesh,
     inflation,
     laws,
     mesh,
@@ -213,16 +214,21 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     >>> from pocket import solid
     >>> states = solid.compression_curve(47 / 160, 0.31, [0.1, 0.19], elements=8, layers=2)
     >>> print([f"{s.pressure_ratio:.3f}" for s in states])
-    ['1.155', '1.295']
+    ['1.156', '1.294']
     """
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
                                                         thickness_ratio, layers, elements, tol)
     unit = np.pi * 3.0 * m.thickness * start.pressure
-    out = []
+    out, before = [], (0.0, 3.0 * m.thickness * start.pressure)  # the first contact: no force, P_I
     for k, force in enumerate(forces):
+        if control.force:  # under a force already: the mesh's cluster moved to where the edge is going
+            m, y, control = edgemesh.ahead(m, y, control, force * unit, before)
+            before = (control.force, float(y[m.size]))
         y, control, iterations = compression.to_force(m, y, control, force * unit, unit, tol)
+        m, y, control, moved = edgemesh.follow(m, y, control, tol)
+        iterations += moved
         out.append(results.compressed(m, material, y, control.active, iterations, start, fluid, force=force,
                                        surface=control.surface))
         if progress is not None:
@@ -330,4 +336,6 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
         raise above_the_pocket(height, start.height)
     unit = np.pi * 3.0 * m.thickness * start.pressure
     y, control, iterations = compression.to_height(m, y, control, height, unit, tol)
+    m, y, control, moved = edgemesh.follow(m, y, control, tol)
+    iterations += moved
     return results.compressed(m, material, y, control.active, iterations, start, fluid, surface=control.surface)

@@ -55,9 +55,14 @@ def test_the_profile_jacobian_is_the_derivative_of_the_residual(held):
 
 
 @pytest.mark.slow
-def test_a_table_of_a_sphere_presses_as_the_sphere():
+def test_a_table_of_a_sphere_presses_as_the_sphere(monkeypatch):
     """The profile sampled from the sphere K = 0.4 (40 rows) against the sphere itself: the same pressure ratio,
-    lowest point to the spline's error, the contact area to the edge estimate's."""
+    lowest point to the spline's error, the contact area to the edge estimate's. On the mesh as asked (the mesh
+    that follows the edge, ``pocket.solid.edgemesh``, left out): the same nodes touch both surfaces, where a
+    cluster about each one's edge estimate would mesh them ~1e-4 R apart."""
+    from pocket.solid import edgemesh
+
+    monkeypatch.setattr(edgemesh, "follow", lambda model, y, control, tol: (model, y, control, 0))
     exact = solid.compress(mooney_rivlin(47 / 160), PHAT, FORCE, indenter=Sphere(K), thickness_ratio=T)
     differences = []
     for rows in (20, 40):
