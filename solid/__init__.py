@@ -59,17 +59,19 @@ MAX_LAYERS = 16
 #: fewest and most elements along the radius
 MIN_ELEMENTS = 8
 MAX_ELEMENTS = 2000
-#: default elements along the radius and through the thickness: P/P_I converged to 1e-4. Measured on the
-#: headline pocket's 10-force curve under the plate (Fhat 0.1 .. 1, T/R = 0.0125, benchmarks/bench_solid.py):
-#: P/P_I moves by at most 3.6e-5 from 64 to 128 elements (two layers; 2.5e-7 from 64 to 256 on four layers with
-#: the mesh that follows the contact edge, ``edgemesh``: that error was the edge's), by 2.8e-4 from two layers to four
-#: and by 5.5e-5 from four to eight (64 elements), order ~2.3 through the thickness; four layers cost
-#: twice two (a curve in ~2.2 s against ~1.2 s). Inflated (tests/test_solid_thin.py): along the radius V
+#: default elements along the radius and through the thickness: P/P_I converged to 1e-4, through the thickness.
+#: Measured on the headline pocket's 10-force curve under the plate (Fhat 0.1 .. 1, T/R = 0.0125,
+#: benchmarks/bench_solid.py): with the mesh that follows the contact edge (``edgemesh``) P/P_I moves by at most
+#: 5e-7 from 32 to 256 elements (four layers; 2.5e-6 from 16, 2.8e-7 from 64; without the edge followed it moved
+#: 3.6e-5 from 64 to 128: that error was the edge's), while a curve on 32 elements costs two thirds of one on 64
+#: (2.4 s against 3.7 s, the machine busy); through the thickness by 2.8e-4 from two layers to four and by 5.5e-5
+#: from four to eight, order ~2.3; four layers cost twice two. Sample 4's contact area (T/R = 0.08, Fhat 0.08 to
+#: 0.32) is within 0.15 % of 256 x 8's on 32 x 4. Inflated (tests/test_solid_thin.py): along the radius V
 #: has converged to ~1e-6 at 32 elements; through the thickness V moves by ~3e-4 (relative) from two layers
 #: to four, by ~4e-5 from four to eight (the clamp's corners are meshed at T/2 whatever the layers,
 #: ``mesh``; the corner size itself moves V by ~4e-4 when doubled: the model's own choice at the
 #: singular corner, a few percent of the membrane's O(T/R) difference the solid is there to measure).
-DEFAULT_ELEMENTS = 64
+DEFAULT_ELEMENTS = 32
 DEFAULT_LAYERS = 4
 
 SOLVER = Solver(
