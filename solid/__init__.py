@@ -24,7 +24,7 @@ import importlib
 from typing import TYPE_CHECKING
 
 from pocket.core.importname import require_import_name
-from pocket.core.inputs import check_count, check_tolerance
+from pocket.core.inputs import check_count, check_range, check_tolerance
 from pocket.core.offset import check_thickness
 from pocket.core.solver import Option, Solver
 
@@ -34,11 +34,14 @@ if TYPE_CHECKING:  # what type checkers and editors see; at run time each is loa
     from .api import compress, compress_height, compression_curve, inflate, inflate_volume
 
 __all__ = [
+    "DEFAULT_CORNER",
     "DEFAULT_ELEMENTS",
     "DEFAULT_LAYERS",
     "DEFAULT_THICKNESS",
+    "MAX_CORNER",
     "MAX_ELEMENTS",
     "MAX_LAYERS",
+    "MIN_CORNER",
     "MIN_ELEMENTS",
     "MIN_LAYERS",
     "SOLVER",
@@ -73,6 +76,11 @@ MAX_ELEMENTS = 2000
 #: singular corner, a few percent of the membrane's O(T/R) difference the solid is there to measure).
 DEFAULT_ELEMENTS = 32
 DEFAULT_LAYERS = 4
+#: the length of the clamp's corner elements, in thicknesses (``mesh``): the sheet's answer depends on it (the
+#: clamp's corner is singular, and regularised at this scale); MIN_CORNER to MAX_CORNER for studies of that effect
+DEFAULT_CORNER = 0.5
+MIN_CORNER = 0.05
+MAX_CORNER = 4.0
 
 SOLVER = Solver(
     name="solid",
@@ -92,6 +100,11 @@ SOLVER = Solver(
                "and in contact a cluster of short elements follows the contact edge, so a state's "
                "'mesh_elements' (the mesh's count) differs from it",
                lambda name, value: check_count(name, value, MIN_ELEMENTS, MAX_ELEMENTS)),
+        Option("corner", "float", DEFAULT_CORNER,
+               f"length of the clamp's corner elements, in thicknesses ({MIN_CORNER:g} to {MAX_CORNER:g}; default "
+               f"{DEFAULT_CORNER:g}): the clamp's corner is singular, and the answer depends on this length",
+               lambda name, value: check_range(name, value, MIN_CORNER, MAX_CORNER,
+                                               "in thicknesses T: the corner elements must fit beside the sheet")),
         Option("tol", "float", 1e-10, "Newton tolerance on the displacement increment, units R (default 1e-10, "
                "at most 1e-4)", lambda name, value: check_tolerance(name, value, 1e-4)),
     ),

@@ -22,6 +22,7 @@ from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, P
 from pocket.core.states import CompressedState, InflatedState
 
 from . import (
+    DEFAULT_CORNER,
     DEFAULT_ELEMENTS,
     DEFAULT_LAYERS,
     DEFAULT_THICKNESS,
@@ -45,7 +46,8 @@ CONTACTS: dict[type[Indenter], tuple[str, ...]] = {Plate: ("active set",), Spher
 GEOMETRIES = {"pocket": "the rectangle [0, 1] x [-t/2, t/2], clamped through its thickness at r = R"}
 
 
-def _model(material, thickness_ratio, layers, elements, tol, geometry) -> tuple[Material, model.Model, float]:
+def _model(material, thickness_ratio, layers, elements, tol, geometry,
+           corner) -> tuple[Material, model.Model, float]:
     """The checked rubber, the discretized sheet about the reference surface ``geometry`` and the checked
     tolerance."""
     material = as_material(material)
@@ -54,12 +56,14 @@ def _model(material, thickness_ratio, layers, elements, tol, geometry) -> tuple[
     layers = SOLVER.check_option("layers", layers)
     elements = SOLVER.check_option("elements", elements)
     tol = SOLVER.check_option("tol", tol)
-    return material, model.discretize(t, mesh.section(t, elements, layers, geometry=geometry), law, geometry), tol
+    corner = SOLVER.check_option("corner", corner)
+    section = mesh.section(t, elements, layers, corner, geometry=geometry)
+    return material, model.discretize(t, section, law, geometry), tol
 
 
 def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None,
             thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
-            tol: float = 1e-10) -> InflatedState:
+            corner: float = DEFAULT_CORNER, tol: float = 1e-10) -> InflatedState:
     """Inflate the sheet, modelled as an axisymmetric incompressible solid, at Phat = ``pressure`` (first branch).
 
     Parameters
@@ -77,6 +81,9 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
         Elements through the thickness, ``MIN_LAYERS`` to ``MAX_LAYERS``.
     elements : int, optional
         Elements along the radius, ``MIN_ELEMENTS`` to ``MAX_ELEMENTS`` (graded towards the clamp).
+    corner : float, optional
+        The length of the clamp's corner elements, in thicknesses T (``mesh``: a regularisation of the clamp's
+        singular corner, which the answer depends on; ``MIN_CORNER`` to ``MAX_CORNER``).
     tol : float, optional
         Newton tolerance on the displacement increment, units R, at most 1e-4.
 
@@ -105,7 +112,7 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     False True
     """
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
-    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry, corner)
     pressure = check_positive("pressure", pressure)
     y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * pressure, tol)
     return results.inflated(m, material, y, iterations, pressure=pressure)
@@ -113,7 +120,8 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
 
 def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None,
                    thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
-                   elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> InflatedState:
+                   elements: int = DEFAULT_ELEMENTS, corner: float = DEFAULT_CORNER,
+                   tol: float = 1e-10) -> InflatedState:
     """Inflate the solid sheet to the cavity volume V / R^3 = ``volume`` (volume control).
 
     Parameters
@@ -122,7 +130,7 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
         The rubber, as for ``inflate``.
     volume : float
         V / R^3 > 0, the volume under the sheet's lower surface.
-    geometry, thickness_ratio, layers, elements, tol
+    geometry, thickness_ratio, layers, elements, corner, tol
         As for ``inflate``.
 
     Returns
@@ -149,19 +157,19 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
     0.31
     """
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
-    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry, corner)
     volume = check_volume("volume", volume)
     y, iterations = inflation.to_volume(m, volume, tol)
     return results.inflated(m, material, y, iterations, volume_given=volume)
 
 
 def _setup(material, pressure_initial, fluid, indenter, geometry, thickness_ratio, layers, elements,
-           tol) -> tuple[Material, model.Model, float, Fluid, InflatedState, np.ndarray, compression.Control]:
+           tol, corner) -> tuple[Material, model.Model, float, Fluid, InflatedState, np.ndarray, compression.Control]:
     """The checked inputs, the inflated state to compress and the first contact from it (the state and its
     control)."""
     indenter, _ = posed(CONTACTS, "solid", indenter)
     fluid = as_fluid(fluid)
-    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry, corner)
     p_i = check_positive("pressure_initial", pressure_initial)
     y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * p_i, tol)
     start = results.inflated(m, material, y, iterations, pressure=p_i)
@@ -174,7 +182,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
                       indenter: Indenter | None = None, geometry: GeometryLike = None,
                       progress: Progress | None = None, thickness_ratio: float = DEFAULT_THICKNESS,
                       layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
-                      tol: float = 1e-10) -> list[CompressedState]:
+                      corner: float = DEFAULT_CORNER, tol: float = 1e-10) -> list[CompressedState]:
     """Compressed states of the solid sheet at the forces Fhat = F / (P_I pi R^2), each from the one before.
 
     Parameters
@@ -190,7 +198,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
         P_atm R / (E T)).
     indenter : Indenter, optional
         None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``pocket.core.indenters.Sphere(K)``, say).
-    geometry, thickness_ratio, layers, elements, tol
+    geometry, thickness_ratio, layers, elements, corner, tol
         As for ``inflate``.
     progress : callable, optional
         ``progress(done, total)``, called after each force.
@@ -219,7 +227,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
-                                                        thickness_ratio, layers, elements, tol)
+                                                        thickness_ratio, layers, elements, tol, corner)
     unit = np.pi * 3.0 * m.thickness * start.pressure
     out, before = [], (0.0, 3.0 * m.thickness * start.pressure)  # the first contact: no force, P_I
     for k, force in enumerate(forces):
@@ -251,7 +259,7 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
     fluid, indenter, geometry
         As for ``compression_curve``.
     **options
-        ``thickness_ratio``, ``layers``, ``elements``, ``tol`` (as for ``inflate``).
+        ``thickness_ratio``, ``layers``, ``elements``, ``corner``, ``tol`` (as for ``inflate``).
 
     Returns
     -------
@@ -284,7 +292,8 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
 def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
                     indenter: Indenter | None = None, geometry: GeometryLike = None,
                     thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
-                    elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10) -> CompressedState:
+                    elements: int = DEFAULT_ELEMENTS, corner: float = DEFAULT_CORNER,
+                   tol: float = 1e-10) -> CompressedState:
     """The compressed state of the solid sheet with the plate at H/R = ``height`` above the clamp plane.
 
     Travel control: the force is found.
@@ -297,7 +306,7 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
         Phat_I = P_I R / (E T) > 0.
     height : float
         H / R > 0, below the inflated pocket's top.
-    fluid, indenter, geometry, thickness_ratio, layers, elements, tol
+    fluid, indenter, geometry, thickness_ratio, layers, elements, corner, tol
         As for ``compression_curve``.
 
     Returns
@@ -331,7 +340,7 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     height = check_positive("height", height)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
-                                                        thickness_ratio, layers, elements, tol)
+                                                        thickness_ratio, layers, elements, tol, corner)
     if height >= start.height:
         raise above_the_pocket(height, start.height)
     unit = np.pi * 3.0 * m.thickness * start.pressure
