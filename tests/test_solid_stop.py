@@ -89,8 +89,9 @@ def test_the_command_line_says_it_in_one_line(failing_above, capsys):
 def test_the_range_command_stops_where_its_path_turns_and_names_a_force_that_solves(capsys):
     """The range command (five forces to Fhat = 9 at the default mesh) exits 1 naming a force between its third
     (5) and fourth (7) forces, and the shortest step it tried beyond; a force 1e-3 below the one named solves from
-    the inflated pocket by another path of steps, the force tried does not. (Not the force named itself: the mesh
-    that follows the contact edge depends on the path's steps, which moves the turning point by about 1e-4.)"""
+    the inflated pocket by another path of steps, one 1e-2 above it does not. (Not the forces named and tried
+    themselves: the mesh that follows the contact edge depends on the path's steps, which moves the turning point
+    by a few 1e-4.)"""
     args = ["compress", "--solver", "solid", "--thickness-ratio", "0.0125", "--alpha", "0.3", "--pressure", "0.3",
             "--force", "1", "3", "5", "7", "9", "--json"]
     assert main(args) == 1
@@ -102,4 +103,4 @@ def test_the_range_command_stops_where_its_path_turns_and_names_a_force_that_sol
     state = solid.compress(0.3, 0.3, named - 1e-3, thickness_ratio=0.0125)
     assert state.force == named - 1e-3
     with pytest.raises(ConvergenceError):
-        solid.compress(0.3, 0.3, tried, thickness_ratio=0.0125)
+        solid.compress(0.3, 0.3, named + 1e-2, thickness_ratio=0.0125)
