@@ -150,7 +150,7 @@ DEFAULT = Plan(
     capsule_fem=(0.0, 0.2, 1.25, 3.2, 5.0),
     capsule_sizes=(32, 64, 128, 256),
     solid_study=(1, 4),
-    solid_refined=((12, 24, 48, 96), (2, 4, 8), (1.0, 0.5, 0.25)),
+    solid_refined=((12, 24, 48, 96, 192), (2, 4, 8), (1.0, 0.5, 0.25)),
 )
 
 QUICK = Plan(
