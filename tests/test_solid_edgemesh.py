@@ -106,11 +106,13 @@ def _compare(indenter=None, fine=(256, 8), forces=FORCES, **case):
     return coarse, finer
 
 
-@pytest.mark.slow
+@pytest.mark.study  # the 256 x 8 solve takes minutes; CI's quick validation report holds the same targets
 def test_sample_4s_contact_area_at_the_default_mesh_is_converged():
     """Sample 4's pocket (T/R = 0.08, Phat_I = 0.0503, a liquid) under the plate at Fhat = 0.08, 0.16 and 0.32:
     the default mesh's contact area within 0.5 % of the mesh of 256 elements by 8 layers, its Lagrangian contact
-    radius within 1e-3 R (before the cluster, 7 % at Fhat = 0.08)."""
+    radius within 1e-3 R (before the cluster, 7 % at Fhat = 0.08). On demand (``pytest -m study``): in CI the
+    quick validation report's convergence study holds the default mesh to the same targets against its own
+    refinements of this pocket along the radius, through the thickness and at the corner."""
     coarse, finer = _compare()
     for a, b in zip(coarse, finer, strict=True):
         print(f"Fhat {a.force}: A_c {a.contact_area:.6f} against {b.contact_area:.6f} "
