@@ -121,12 +121,20 @@ class Study:
         """(the default mesh's error along the axis, whether it is against q*): its distance from q*, or where the
         differences do not shrink (no q*), its distance from the finest mesh plus the finest mesh's own last change
         (module docstring)."""
-        value = self.values[self.meshes.index(self.default)][key]
-        found = self.estimate(key)
+        value, found = self.default_value(key), self.estimate(key)
         if found:
             return self.error(key, value, found[0]), True
         finest, before = self.values[-1][key], self.values[-2][key]
         return self.error(key, value, finest) + self.error(key, before, finest), False
+
+    def default_value(self, key) -> float:
+        """``key`` on the solid's default mesh."""
+        return self.values[self.meshes.index(self.default)][key]
+
+    def reference(self, key) -> float:
+        """q* where it exists, else the finest mesh's value: what the default is measured against."""
+        found = self.estimate(key)
+        return found[0] if found else self.values[-1][key]
 
 
 def studies(numbers, pressure_kpa, forces, counts, done) -> list[Study]:
@@ -158,14 +166,11 @@ def checks(found) -> list[Check]:
     for study in found:
         for key in study.quantities():
             error, _ = study.default_error(key)
-            estimate = study.estimate(key)
-            reference = estimate[0] if estimate else study.values[-1][key]
-            value = study.values[study.meshes.index(study.default)][key]
             tolerance = TARGETS.get(key[0])
             verdict = "info" if tolerance is None else "pass" if error <= tolerance else "fail"
             out.append(Check(f"sample {study.sample}", COMPARISON, "inflation" if key[1] is None else "compression",
-                             key[0], _where(study, key[1]), float(value), float(reference), float(error), tolerance,
-                             verdict))
+                             key[0], _where(study, key[1]), float(study.default_value(key)),
+                             float(study.reference(key)), float(error), tolerance, verdict))
     return out
 
 
