@@ -22,12 +22,15 @@ from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, P
 from pocket.core.states import CompressedState, InflatedState
 
 from . import (
+    DEFAULT_CLAMP_RADIUS,
+    DEFAULT_CORNER,
     DEFAULT_ELEMENTS,
     DEFAULT_LAYERS,
     DEFAULT_THICKNESS,
     SOLVER,
     compression,
     contact,
+    edgemesh,
     inflation,
     jaw,
     laws,
@@ -45,7 +48,8 @@ CONTACTS: dict[type[Indenter], tuple[str, ...]] = {Plate: ("active set",), Spher
 GEOMETRIES = {"pocket": "the rectangle [0, 1] x [-t/2, t/2], clamped through its thickness at r = R"}
 
 
-def _model(material, thickness_ratio, layers, elements, tol, geometry) -> tuple[Material, model.Model, float]:
+def _model(material, thickness_ratio, layers, elements, tol, geometry,
+           corner) -> tuple[Material, model.Model, float]:
     """The checked rubber, the discretized sheet about the reference surface ``geometry`` and the checked
     tolerance."""
     material = as_material(material)
@@ -54,13 +58,13 @@ def _model(material, thickness_ratio, layers, elements, tol, geometry) -> tuple[
     layers = SOLVER.check_option("layers", layers)
     elements = SOLVER.check_option("elements", elements)
     tol = SOLVER.check_option("tol", tol)
-    return material, model.discretize(t, mesh.section(t, elements, layers, geometry=geometry), law, geometry), tol
+    corner = SOLVER.check_option("corner", corner)
+    section = mesh.section(t, elements, layers, corner, geometry=geometry)
+    return material, model.discretize(t, section, law, geometry), tol
 
 
 def _jaw(clamp_radius, m: model.Model) -> jaw.Jaw | None:
-    """The clamp's upper jaw of edge radius ``clamp_radius`` thicknesses (checked), or None (None or 0: no jaw)."""
-    if clamp_radius is None:
-        return None
+    """The clamp's upper jaw of edge radius ``clamp_radius`` thicknesses (checked), or None (0: no jaw)."""
     radius = SOLVER.check_option("clamp_radius", clamp_radius)
     if radius * m.thickness >= 0.5:
         raise InputError(f"clamp_radius = {clamp_radius} thicknesses is {radius * m.thickness:.6g} R at T/R = "
@@ -70,7 +74,8 @@ def _jaw(clamp_radius, m: model.Model) -> jaw.Jaw | None:
 
 def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike = None,
             thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
-            tol: float = 1e-10, clamp_radius: float | None = None) -> InflatedState:
+            corner: float = DEFAULT_CORNER, tol: float = 1e-10,
+            clamp_radius: float = DEFAULT_CLAMP_RADIUS) -> InflatedState:
     """Inflate the sheet, modelled as an axisymmetric incompressible solid, at Phat = ``pressure`` (first branch).
 
     Parameters
@@ -88,11 +93,14 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
         Elements through the thickness, ``MIN_LAYERS`` to ``MAX_LAYERS``.
     elements : int, optional
         Elements along the radius, ``MIN_ELEMENTS`` to ``MAX_ELEMENTS`` (graded towards the clamp).
+    corner : float, optional
+        The length of the clamp's corner elements, in thicknesses T (``mesh``: a regularisation of the clamp's
+        singular corner, which the answer depends on; ``MIN_CORNER`` to ``MAX_CORNER``).
     tol : float, optional
         Newton tolerance on the displacement increment, units R, at most 1e-4.
     clamp_radius : float, optional
         The clamp's upper jaw as a rigid frictionless obstacle, its edge rounded to this radius in thicknesses
-        T (``jaw``); None or 0 (default): no jaw, the sheet only fixed at r = R.
+        T (``jaw``; default ``DEFAULT_CLAMP_RADIUS``); 0: no jaw, the sheet only fixed at r >= R.
 
     Returns
     -------
@@ -119,7 +127,7 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     False True
     """
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
-    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry, corner)
     pressure = check_positive("pressure", pressure)
     y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * pressure, tol, _jaw(clamp_radius, m))
     return results.inflated(m, material, y, iterations, pressure=pressure)
@@ -127,8 +135,8 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
 
 def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryLike = None,
                    thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
-                   elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10,
-                   clamp_radius: float | None = None) -> InflatedState:
+                   elements: int = DEFAULT_ELEMENTS, corner: float = DEFAULT_CORNER,
+                   tol: float = 1e-10, clamp_radius: float = DEFAULT_CLAMP_RADIUS) -> InflatedState:
     """Inflate the solid sheet to the cavity volume V / R^3 = ``volume`` (volume control).
 
     Parameters
@@ -137,7 +145,7 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
         The rubber, as for ``inflate``.
     volume : float
         V / R^3 > 0, the volume under the sheet's lower surface.
-    geometry, thickness_ratio, layers, elements, tol, clamp_radius
+    geometry, thickness_ratio, layers, elements, corner, tol, clamp_radius
         As for ``inflate``.
 
     Returns
@@ -164,20 +172,20 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
     0.31
     """
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
-    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry, corner)
     volume = check_volume("volume", volume)
     y, iterations = inflation.to_volume(m, volume, tol, _jaw(clamp_radius, m))
     return results.inflated(m, material, y, iterations, volume_given=volume)
 
 
-def _setup(material, pressure_initial, fluid, indenter, geometry, thickness_ratio, layers, elements, tol,
-           clamp_radius=None) -> tuple[Material, model.Model, float, Fluid, InflatedState, np.ndarray,
-                                       compression.Control]:
+def _setup(material, pressure_initial, fluid, indenter, geometry, thickness_ratio, layers, elements,
+           tol, corner, clamp_radius) -> tuple[Material, model.Model, float, Fluid, InflatedState, np.ndarray,
+                                              compression.Control]:
     """The checked inputs, the inflated state to compress and the first contact from it (the state and its
     control)."""
     indenter, _ = posed(CONTACTS, "solid", indenter)
     fluid = as_fluid(fluid)
-    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry)
+    material, m, tol = _model(material, thickness_ratio, layers, elements, tol, geometry, corner)
     p_i = check_positive("pressure_initial", pressure_initial)
     clamp = _jaw(clamp_radius, m)
     y, iterations = inflation.to_pressure(m, 3.0 * m.thickness * p_i, tol, clamp)
@@ -191,7 +199,8 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
                       indenter: Indenter | None = None, geometry: GeometryLike = None,
                       progress: Progress | None = None, thickness_ratio: float = DEFAULT_THICKNESS,
                       layers: int = DEFAULT_LAYERS, elements: int = DEFAULT_ELEMENTS,
-                      tol: float = 1e-10, clamp_radius: float | None = None) -> list[CompressedState]:
+                      corner: float = DEFAULT_CORNER, tol: float = 1e-10,
+                      clamp_radius: float = DEFAULT_CLAMP_RADIUS) -> list[CompressedState]:
     """Compressed states of the solid sheet at the forces Fhat = F / (P_I pi R^2), each from the one before.
 
     Parameters
@@ -207,7 +216,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
         P_atm R / (E T)).
     indenter : Indenter, optional
         None (the flat plate) or an ``Indenter`` of ``CONTACTS`` (``pocket.core.indenters.Sphere(K)``, say).
-    geometry, thickness_ratio, layers, elements, tol, clamp_radius
+    geometry, thickness_ratio, layers, elements, corner, tol, clamp_radius
         As for ``inflate``.
     progress : callable, optional
         ``progress(done, total)``, called after each force.
@@ -231,16 +240,21 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     >>> from pocket import solid
     >>> states = solid.compression_curve(47 / 160, 0.31, [0.1, 0.19], elements=8, layers=2)
     >>> print([f"{s.pressure_ratio:.3f}" for s in states])
-    ['1.155', '1.295']
+    ['1.156', '1.294']
     """
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
-                                                        thickness_ratio, layers, elements, tol, clamp_radius)
+                                                        thickness_ratio, layers, elements, tol, corner, clamp_radius)
     unit = np.pi * 3.0 * m.thickness * start.pressure
-    out = []
+    out, before = [], (0.0, 3.0 * m.thickness * start.pressure)  # the first contact: no force, P_I
     for k, force in enumerate(forces):
+        if control.force:  # under a force already: the mesh's cluster moved to where the edge is going
+            m, y, control = edgemesh.ahead(m, y, control, force * unit, before)
+            before = (control.force, float(y[m.size]))
         y, control, iterations = compression.to_force(m, y, control, force * unit, unit, tol)
+        m, y, control, moved = edgemesh.follow(m, y, control, tol)
+        iterations += moved
         out.append(results.compressed(m, material, y, control.active, iterations, start, fluid, force=force,
                                        surface=control.surface))
         if progress is not None:
@@ -263,7 +277,7 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
     fluid, indenter, geometry
         As for ``compression_curve``.
     **options
-        ``thickness_ratio``, ``layers``, ``elements``, ``tol``, ``clamp_radius`` (as for ``inflate``).
+        ``thickness_ratio``, ``layers``, ``elements``, ``corner``, ``tol``, ``clamp_radius`` (as for ``inflate``).
 
     Returns
     -------
@@ -296,8 +310,8 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
 def compress_height(material: MaterialLike, pressure_initial: float, height: float, *, fluid: FluidLike = None,
                     indenter: Indenter | None = None, geometry: GeometryLike = None,
                     thickness_ratio: float = DEFAULT_THICKNESS, layers: int = DEFAULT_LAYERS,
-                    elements: int = DEFAULT_ELEMENTS, tol: float = 1e-10,
-                    clamp_radius: float | None = None) -> CompressedState:
+                    elements: int = DEFAULT_ELEMENTS, corner: float = DEFAULT_CORNER,
+                    tol: float = 1e-10, clamp_radius: float = DEFAULT_CLAMP_RADIUS) -> CompressedState:
     """The compressed state of the solid sheet with the plate at H/R = ``height`` above the clamp plane.
 
     Travel control: the force is found.
@@ -310,7 +324,7 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
         Phat_I = P_I R / (E T) > 0.
     height : float
         H / R > 0, below the inflated pocket's top.
-    fluid, indenter, geometry, thickness_ratio, layers, elements, tol, clamp_radius
+    fluid, indenter, geometry, thickness_ratio, layers, elements, corner, tol, clamp_radius
         As for ``compression_curve``.
 
     Returns
@@ -344,9 +358,11 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     height = check_positive("height", height)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)
     material, m, tol, fluid, start, y, control = _setup(material, pressure_initial, fluid, indenter, geometry,
-                                                        thickness_ratio, layers, elements, tol, clamp_radius)
+                                                        thickness_ratio, layers, elements, tol, corner, clamp_radius)
     if height >= start.height:
         raise above_the_pocket(height, start.height)
     unit = np.pi * 3.0 * m.thickness * start.pressure
     y, control, iterations = compression.to_height(m, y, control, height, unit, tol)
+    m, y, control, moved = edgemesh.follow(m, y, control, tol)
+    iterations += moved
     return results.compressed(m, material, y, control.active, iterations, start, fluid, surface=control.surface)

@@ -31,7 +31,9 @@ class Model:
     nodes, ordered by their Lagrangian radius ``top_r``; ``mid_r`` and ``mid_dofs`` ((2, n): u_r and u_z) the
     same for the mid-surface z = 0; ``free`` the dofs not fixed by the clamp or the axis (of the vector [u, p]);
     ``tables`` the bases at the quadrature points (``assembly``); ``geometry`` the reference surface
-    (``pocket.core.geometries``: the flat clamped disc)."""
+    (``pocket.core.geometries``: the flat clamped disc); ``base`` the radial nodes of the mesh asked for and
+    ``cluster`` (r_e, w) the radius its elements are clustered about and the half-width of the cluster's core
+    of short elements, when the mesh follows a contact edge (``edgemesh``; None: the mesh as asked)."""
 
     mesh: MeshQuad
     thickness: float
@@ -47,6 +49,8 @@ class Model:
     mid_dofs: np.ndarray
     tables: assembly.Tables
     geometry: Geometry = DISC
+    base: np.ndarray | None = None
+    cluster: tuple[float, float] | None = None
 
     @property
     def size(self) -> int:

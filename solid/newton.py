@@ -7,7 +7,8 @@ indenter (its gap g_k < 0, ``contact``) joins it, until neither happens.
 
 Where it fails. Newton is not globalised (no line search, no arc length): the one failure measured along a load
 path is not one a globalisation of the same equations can pass. Pressing a Mooney-Rivlin pocket (alpha = 0.3,
-Phat_I = 0.3, T/R = 0.0125, the default mesh) towards Fhat = 9, with the contact's active set fixed at its 73
+Phat_I = 0.3, T/R = 0.0125, 64 x 4 elements, measured before the mesh followed the contact edge) towards
+Fhat = 9, with the contact's active set fixed at its 73
 nodes, the discrete path turns at Fhat = 5.43283: the smallest singular value of the tangent falls as
 sqrt(F* - F) (4.6e-8 at Fhat = 5.432, 2.6e-8 at 5.4326: F* = 5.4329), its singular vector the pressure at the
 clamp's upper corner and the radial displacement of the corner element's inner edge (``mesh``: that element then
@@ -18,7 +19,10 @@ any force beyond F* wanders there (steps of 2e-5 to 1e-4 R that do not fall, the
 between 0.70 and 0.71 T), and so do its globalisations, with no root nearby to converge to: damped by
 Deuflhard's natural monotonicity test its damping fell below 1e-3, pseudo-transient continuation oscillated for
 200 iterations; under height control likewise. A march that fails so says where it stopped (``compression``);
-the corner's elements set where the path turns (``mesh``). With the clamp's upper jaw (``jaw``, the option
+the corner's elements set where the path turns (``mesh``): on the default 24 x 4 with the contact edge followed
+the march stops at Fhat = 5.4302 (on 16 x 4 earlier, at 5.01, where an iterate inverts an element though the
+path goes on: a force 1e-2 beyond solves by another path of steps).
+With the clamp's upper jaw (``jaw``, the option
 ``clamp_radius``) the corner's node cannot move past r = 1 above the sheet: the same pocket, its upper surface
 wrapped around a jaw's edge of radius T/2 or T, reaches Fhat = 9 at every corner mesh from 1 T to T/16.
 """

@@ -21,22 +21,24 @@ carried by the solid, and its warning says what that means for it (``pocket.core
 Contact on the plate: the contact edge lies between the outermost node of the active set and the next
 node, which is free. Beyond the edge the sheet leaves the plate tangentially, its gap to the plate
 growing as g ~ (r - r_c)^2 where its tension bends it (the membrane's edge, whose curvature jumps there)
-and as (r - r_c)^(3/2) very close to the edge, where the solid is locally a half-space (the Hertz
-asymptotics). So with exponent ``GAP_EXPONENT`` = 2, g^(1/2) is linear in r beyond the edge, and the two
-free nodes beyond the active set, with gaps g_1 and g_2 at r_1 and r_2, place the edge at
+and as (r - r_c)^(3/2) very close to the edge, within a fraction of the thickness, where the solid is
+locally a half-space (the Hertz asymptotics). With the exponent a (g^(1/a) linear in r beyond the edge),
+the two free nodes beyond the active set, with gaps g_1 and g_2 at r_1 and r_2, place the edge at
 
-    r_c = r_1 - g_1^(1/2) (r_2 - r_1) / (g_2^(1/2) - g_1^(1/2)),
+    r_c = r_1 - g_1^(1/a) (r_2 - r_1) / (g_2^(1/a) - g_1^(1/a)),
 
 kept within a node of the active set's edge: between the last active node but one and the first free
 node (the contact acts on the nodes only, so between them the discrete surface may sit a little above or
 below the plate, and the last active node often carries a small force: the continuum's edge can lie
-before it). Measured under the plate at Fhat = 0.5 (alpha = 47/160) from 32 to 256 elements
-(``benchmarks/solid_contact_edge.py``): the exponent fitted through three free nodes is 1.5 to 2.1; this
-estimate spreads by about +-1.4e-3 R at T/R = 0.0125 (Phat_I 0.32) and +-4.5e-4 R at T/R = 0.08 (Phat_I
-0.05) on four layers, while the outermost active node spread by +-5e-3 R and +-2.5e-3 R (two layers):
-about 1 % in A_c at the default 64 elements instead of 2-4 %. The deformed radius rho_c is the upper
-surface's at r_c, the contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact
-forces (``extra["reaction"]``, Fhat).
+before it). The exponent is the one of the nodes' distance from the edge (``edge_radius``):
+``EDGE_EXPONENT`` = 3/2 where they lie in the core of the cluster of short elements the mesh keeps about
+the edge (``edgemesh``), ``GAP_EXPONENT`` = 2 on the mesh as asked, whose elements there are longer than
+the thickness' fraction. The states are solved on the clustered mesh, so that a state's edge is
+extrapolated from nodes ~1e-3 R apart (``edgemesh``: its derivation and its measured convergence); the
+spread of the two exponents' estimates from the same state is its own error estimate
+(``extra["contact_radius_error"]``, R). The deformed radius rho_c is the upper surface's at r_c, the
+contact area pi rho_c^2 / (pi R^2). The plate's reaction is the sum of the contact forces
+(``extra["reaction"]``, Fhat).
 
 Under a sphere of radius K or a profile (``contact``) the same, with the gaps to the indenter and the
 meanings of the membrane solvers: ``height`` the indenter's lowest point h, ``contact_area`` the curved
@@ -62,7 +64,7 @@ from .contact import force as force_of
 from .model import Model, split
 from .post import fields
 
-__all__ = ["GAP_EXPONENT", "compressed", "contact_radius", "inflated"]
+__all__ = ["EDGE_EXPONENT", "GAP_EXPONENT", "compressed", "contact_radius", "edge_radius", "inflated"]
 
 
 def _profile(f, contact: np.ndarray) -> Profile:
@@ -82,22 +84,42 @@ def _layers(model: Model) -> int:
 
 #: the gap's growth beyond a contact edge, g ~ (r - r_c)^GAP_EXPONENT (module docstring)
 GAP_EXPONENT = 2.0
+#: the gap's growth within a fraction of the thickness of the edge, where a mesh clustered there has its
+#: nodes (``edgemesh``): the half-space's (Hertz)
+EDGE_EXPONENT = 1.5
 
 
-def contact_radius(model: Model, y: np.ndarray, active: np.ndarray, surface: Surface = PLATE_SURFACE) -> float:
+def contact_radius(model: Model, y: np.ndarray, active: np.ndarray, surface: Surface = PLATE_SURFACE,
+                   exponent: float = GAP_EXPONENT) -> float:
     """The Lagrangian contact radius r_c / R of the state y in contact on the upper-surface nodes ``active``
     with the indenter ``surface`` (default the flat plate), extrapolated from the gaps of the two nodes beyond
-    them (module docstring)."""
+    them as g ~ (r - r_c)^``exponent`` (module docstring)."""
     edge = int(np.max(active))
     r = model.top_r
     if edge + 2 >= r.size:
         return float(r[edge])
     gap = gaps(model, surface, y, np.arange(edge + 1, edge + 3))
-    q = np.maximum(gap, 0.0) ** (1.0 / GAP_EXPONENT)
+    q = np.maximum(gap, 0.0) ** (1.0 / exponent)
     if q[1] <= q[0]:  # the gap does not grow: no edge to extrapolate to
         return float(r[edge])
     low = r[edge - 1] if edge > 0 else r[edge]
     return float(np.clip(r[edge + 1] - q[0] * (r[edge + 2] - r[edge + 1]) / (q[1] - q[0]), low, r[edge + 1]))
+
+
+def edge_radius(model: Model, y: np.ndarray, active: np.ndarray, surface: Surface = PLATE_SURFACE) -> float:
+    """The contact radius r_c / R of the state y (``contact_radius``) with the gap's exponent of the nodes it is
+    extrapolated from: ``EDGE_EXPONENT`` where they lie in the core of a cluster of short elements about the
+    edge (``edgemesh``, ``Model.cluster``), ``GAP_EXPONENT`` elsewhere."""
+    return contact_radius(model, y, active, surface, EDGE_EXPONENT if in_cluster(model, active) else GAP_EXPONENT)
+
+
+def in_cluster(model: Model, active: np.ndarray) -> bool:
+    """Whether the two nodes beyond the active set lie in the core of the mesh's cluster (``Model.cluster``)."""
+    if model.cluster is None:
+        return False
+    edge, width = model.cluster
+    beyond = model.top_r[min(int(np.max(active)) + 2, model.top_r.size - 1)]
+    return bool(abs(model.top_r[int(np.max(active))] - edge) <= width and abs(beyond - edge) <= width)
 
 
 def volume(model: Model, y: np.ndarray) -> float:
@@ -128,7 +150,7 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     scale = 3.0 * model.thickness
     phat = float(y[model.size]) / scale
     reaction = force_of(model, surface, y, active) / (np.pi * start.pressure * scale)
-    r_c = contact_radius(model, y, active, surface)
+    r_c = edge_radius(model, y, active, surface)
     rho_c = float(np.interp(r_c, f.r, f.top_rho))
     if rho_c >= surface.reach:
         raise OutOfRangeError(f"the sheet would wrap past {surface.end} (its contact reaches rho = {rho_c:.6g} R, "
@@ -137,6 +159,8 @@ def compressed(model: Model, material: Material, y: np.ndarray, active: np.ndarr
     stretch = float(np.interp(r_c, f.r, f.stretch_2) if surface.flat else f.stretch_1[0])
     height = float(y[model.size + 1])
     extra = {**_extra(model, f, iterations), "reaction": reaction}
+    if in_cluster(model, active):
+        extra["contact_radius_error"] = abs(contact_radius(model, y, active, surface) - r_c)
     return CompressedState(
         material=material, pressure_initial=start.pressure, force=reaction if force is None else force,
         pressure=phat, pressure_ratio=phat / start.pressure, contact_area=area, contact_radius=r_c,

@@ -9,8 +9,8 @@ term is off by O(1)).
 import numpy as np
 import pytest
 import scipy.sparse as sp
+from pocket.solid import DEFAULT_CORNER, laws, mesh, model
 from pocket.solid import kinematics as kin
-from pocket.solid import laws, mesh, model
 from pocket.solid.equations import Control, system
 
 from pocket.core.materials import LAWS, Material, energy
@@ -112,7 +112,7 @@ def test_the_jacobian_is_the_derivative_of_the_residual(contact):
     """The bordered Jacobian (rubber, incompressibility, follower pressure, fluid row of a gas, contact rows,
     force row) applied to a direction equals the difference quotient of the residual along it."""
     t = 0.05
-    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(_material("yeoh")))
+    m = model.discretize(t, mesh.section(t, 8, 2, DEFAULT_CORNER), laws.derivatives(_material("yeoh")))
     rng = np.random.default_rng(2)
     x = m.basis_u.doflocs[0]
     u = np.zeros(m.basis_u.N)
@@ -149,7 +149,7 @@ def test_the_vectorised_assembly_is_the_skfem_forms(name):
     from skfem import asm
 
     t = 0.05
-    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(_material(name)))
+    m = model.discretize(t, mesh.section(t, 8, 2, DEFAULT_CORNER), laws.derivatives(_material(name)))
     rng = np.random.default_rng(3)
     u = 1e-3 * rng.standard_normal(m.basis_u.N)  # gradients ~ 1e-3 / (node spacing 0.0125) << 1: J > 0
     p = 0.1 * rng.standard_normal(m.basis_p.N)

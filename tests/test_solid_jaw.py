@@ -5,12 +5,12 @@ of the gradient), the bordered Jacobian with the jaw's rows that of the residual
 the jaw's boundary, computed here from the geometry (a point on the edge's arc, on the side, on the face);
 a converged state has no node inside the jaw (its gaps >= 0 to the tolerance), the jaw's forces are >= 0 and
 push away from it, and the fluid's upward resultant p_f pi R^2 is the clamp's reaction plus the jaw's vertical
-forces. Without the option the solver's path is the one it had: ``clamp_radius = 0`` is no jaw, bit for bit.
+forces. ``clamp_radius = 0`` is no jaw: the solver's path without the jaw's rows, bit for bit.
 """
 
 import numpy as np
 import pytest
-from pocket.solid import contact, jaw, laws, mesh, model
+from pocket.solid import DEFAULT_CLAMP_RADIUS, DEFAULT_CORNER, contact, jaw, laws, mesh, model
 from pocket.solid.equations import Control, system
 from pocket.solid.model import split
 
@@ -84,7 +84,7 @@ def test_the_jacobian_with_the_jaw_is_the_derivative_of_the_residual():
     """The bordered Jacobian with the jaw's rows (active nodes on its edge, inactive ones, and a sphere's rows
     before them) applied to a random direction is the central difference quotient of the residual along it."""
     t = 0.05
-    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(MATERIAL.scaled()))
+    m = model.discretize(t, mesh.section(t, 8, 2, DEFAULT_CORNER), laws.derivatives(MATERIAL.scaled()))
     rng = np.random.default_rng(6)
     x = m.basis_u.doflocs[0]
     u = np.zeros(m.basis_u.N)
@@ -118,7 +118,8 @@ def jawed():
     from pocket.solid import api, inflation
 
     t = solid.DEFAULT_THICKNESS
-    m = model.discretize(t, mesh.section(t, COARSE["elements"], COARSE["layers"]), laws.derivatives(MATERIAL.scaled()))
+    section = mesh.section(t, COARSE["elements"], COARSE["layers"], DEFAULT_CORNER)
+    m = model.discretize(t, section, laws.derivatives(MATERIAL.scaled()))
     clamp = api._jaw(1.0, m)
     y, _ = inflation.to_pressure(m, 3.0 * t * 1.0, 1e-10, clamp)
     return m, y, clamp.radius
@@ -170,16 +171,22 @@ def test_the_fluid_is_held_by_the_clamp_and_the_jaw(jawed):
     assert abs(pf * np.pi - (clamp + held)) <= 1e-9 * pf * np.pi
 
 
-def test_no_jaw_is_the_solver_without_the_option():
-    """clamp_radius = 0 (or None) is today's clamp: the same state, bit for bit, as without the option; a state
-    with a jaw differs."""
-    plain = solid.inflate(MATERIAL, 0.31, **COARSE)
-    for radius in (0, 0.0, None):
-        same = solid.inflate(MATERIAL, 0.31, clamp_radius=radius, **COARSE)
-        assert same.volume == plain.volume
-        assert same.height == plain.height
-        np.testing.assert_array_equal(same.profile.rho, plain.profile.rho)
-    assert solid.inflate(MATERIAL, 0.31, clamp_radius=1.0, **COARSE).volume != plain.volume
+def test_no_jaw_is_the_solver_without_the_jaw():
+    """clamp_radius = 0 is the clamp without a jaw: the same state, bit for bit, as the inflation without the
+    jaw's rows; the default jaw (DEFAULT_CLAMP_RADIUS) holds the inflated headline pocket (its sheet touches the
+    edge), so its state differs."""
+    from pocket.solid import api, inflation, results
+
+    plain = solid.inflate(MATERIAL, 0.31, clamp_radius=0, **COARSE)
+    t = solid.DEFAULT_THICKNESS
+    m = model.discretize(t, mesh.section(t, COARSE["elements"], COARSE["layers"], DEFAULT_CORNER),
+                         laws.derivatives(MATERIAL.scaled()))
+    assert api._jaw(0.0, m) is None
+    y, iterations = inflation.to_pressure(m, 3.0 * t * 0.31, 1e-10, None)
+    without = results.inflated(m, MATERIAL, y, iterations, pressure=0.31)
+    assert (without.volume, without.height) == (plain.volume, plain.height)
+    assert solid.inflate(MATERIAL, 0.31, **COARSE).volume != plain.volume
+    assert DEFAULT_CLAMP_RADIUS > 0.0
 
 
 def test_a_bad_clamp_radius_is_an_input_error():
@@ -193,14 +200,14 @@ def test_a_bad_clamp_radius_is_an_input_error():
 
 
 @pytest.mark.slow
-def test_the_range_command_with_the_jaw_reaches_the_last_force(capsys):
-    """The range command that stops at Fhat = 5.43 without a jaw (``test_solid_stop``) solves all five forces to
-    Fhat = 9 with a jaw of radius T/2 (the radius the default corner elements, T/2 long, resolve), its pressure
-    rising with the force."""
+def test_the_range_command_reaches_the_last_force(capsys):
+    """The range command that stops at Fhat = 5.43 without a jaw (``test_solid_stop``, ``--clamp-radius 0``)
+    solves all five forces to Fhat = 9 with the default jaw (radius T/2, which the default corner elements, T/2
+    long, resolve), its pressure rising with the force, every state reached at its force."""
     import json
 
     args = ["compress", "--solver", "solid", "--thickness-ratio", "0.0125", "--alpha", "0.3", "--pressure", "0.3",
-            "--force", "1", "3", "5", "7", "9", "--clamp-radius", "0.5", "--json"]
+            "--force", "1", "3", "5", "7", "9", "--json"]
     assert main(args) == 0
     out = capsys.readouterr().out
     print(out[-2000:])
@@ -235,15 +242,12 @@ def test_a_failed_landing_on_the_pressure_is_narrowed_in_volume(monkeypatch):
 
 
 @pytest.mark.slow
-def test_the_jaw_pressing_the_sheet_below_the_clamp_plane_is_not_the_range_end(monkeypatch):
+def test_the_jaw_pressing_the_sheet_below_the_clamp_plane_is_not_the_range_end():
     """Under a jaw of radius T, at corner elements T/16, the jaw presses the mid-surface's node beside the clamp a
     little below the clamp plane already when inflated; the range's end (the free sheet reaching the plane) is
     not there: the free part ends where the jaw's edge begins, and Fhat = 1 solves."""
-    from pocket.solid import mesh
-
-    monkeypatch.setattr(mesh, "CORNER_SIZE", 0.0625)
     t = solid.DEFAULT_THICKNESS
-    state = solid.compress(0.3, 0.3, 1.0, thickness_ratio=t, clamp_radius=1.0)
+    state = solid.compress(0.3, 0.3, 1.0, thickness_ratio=t, clamp_radius=1.0, corner=0.0625)
     profile = state.inflated.profile
     beneath = profile.r > 1.0 - t
     print(f"inflated mid-surface beneath the jaw's edge, lowest: {profile.eta[beneath][:-1].min() / t:.3g} T; "

@@ -10,7 +10,7 @@ T/R -> 0 the solid tends to the membrane under the same sphere (``pocket.shootin
 import numpy as np
 import pytest
 import scipy.sparse as sp
-from pocket.solid import compression, contact, inflation, laws, mesh, model
+from pocket.solid import DEFAULT_CORNER, compression, contact, inflation, laws, mesh, model
 from pocket.solid.equations import Control, system
 from pocket.solid.model import split
 
@@ -29,7 +29,7 @@ MATERIAL = mooney_rivlin(47 / 160)
 def pressed():
     """The headline rubber (alpha = 47/160, Phat_I = 0.31, T/R = 0.02) pressed by a sphere of K = 0.4 at
     Fhat = 0.5: (model, y, control)."""
-    m = model.discretize(T, mesh.section(T, ELEMENTS, 2), laws.derivatives(MATERIAL.scaled()))
+    m = model.discretize(T, mesh.section(T, ELEMENTS, 2, DEFAULT_CORNER), laws.derivatives(MATERIAL.scaled()))
     p_i = 3.0 * T * PHAT
     y, _ = inflation.to_pressure(m, p_i, TOL)
     v_i = model.fluid(m, split(m, y)[0])[0]
@@ -45,7 +45,7 @@ def test_the_sphere_jacobian_is_the_derivative_of_the_residual(held):
     curvature lambda_k d2g_k/du2, the normal's turn with h, the force row's derivatives) applied to a random
     direction is the central difference quotient of the residual along it."""
     t, h, radius = 0.05, 0.33, 0.5
-    m = model.discretize(t, mesh.section(t, 8, 2), laws.derivatives(MATERIAL.scaled()))
+    m = model.discretize(t, mesh.section(t, 8, 2, DEFAULT_CORNER), laws.derivatives(MATERIAL.scaled()))
     rng = np.random.default_rng(5)
     x = m.basis_u.doflocs[0]
     u = np.zeros(m.basis_u.N)

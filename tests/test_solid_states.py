@@ -9,7 +9,7 @@ complementary (active nodes on the plate with forces >= 0, the rest below it).
 
 import numpy as np
 import pytest
-from pocket.solid import compression, inflation, kinematics, laws, mesh, model, post
+from pocket.solid import DEFAULT_CORNER, compression, inflation, kinematics, laws, mesh, model, post
 from pocket.solid.model import split
 
 from pocket import shooting, solid
@@ -24,7 +24,8 @@ TOL = 1e-10
 @pytest.fixture(scope="module")
 def pressed():
     """The headline pocket (alpha = 47/160, Phat_I = 0.31) pressed at Fhat = 0.5: (model, y, control)."""
-    m = model.discretize(T, mesh.section(T, ELEMENTS, 2), laws.derivatives(mooney_rivlin(47 / 160).scaled()))
+    m = model.discretize(T, mesh.section(T, ELEMENTS, 2, DEFAULT_CORNER),
+                         laws.derivatives(mooney_rivlin(47 / 160).scaled()))
     p_i = 3.0 * T * PHAT
     y, _ = inflation.to_pressure(m, p_i, TOL)
     v_i = model.fluid(m, split(m, y)[0])[0]
@@ -155,7 +156,8 @@ def test_pointwise_incompressibility_converges_away_from_the_clamp():
     peaks = []
     sizes = (16, 32, 64)
     for n in sizes:
-        m = model.discretize(T, mesh.section(T, n, 2), laws.derivatives(mooney_rivlin(47 / 160).scaled()))
+        m = model.discretize(T, mesh.section(T, n, 2, DEFAULT_CORNER),
+                             laws.derivatives(mooney_rivlin(47 / 160).scaled()))
         y, _ = inflation.to_pressure(m, 3.0 * T * PHAT, TOL)
         uq = m.basis_u.interpolate(split(m, y)[0])
         x = m.basis_u.global_coordinates()

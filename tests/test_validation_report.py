@@ -462,12 +462,15 @@ def test_progress_bar_only_on_a_terminal():
 
 def test_timing_lists_every_task(report):
     """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence, the
-    fits to FE bulge data, the samples solved as membrane and solid, each capsule and the capsule's convergence)."""
+    fits to FE bulge data, the samples solved as membrane and solid, each mesh of the solid's convergence study,
+    each capsule and the capsule's convergence)."""
     results = report[2]
     rows = _rows(report[1] / "timing.csv")
     assert len(rows) == len(results.tasks)
     assert {r["task"] for r in rows} == {"reference", "column", "convergence", "evidence", "fit", "solid",
-                                         "capsule", "capsule convergence"}
+                                         "solid study", "capsule", "capsule convergence"}
+    meshes = {m for study in results.solid_studies for m in study.meshes}
+    assert len([r for r in rows if r["task"] == "solid study"]) == len(results.plan.solid_study) * len(meshes)
     assert len([r for r in rows if r["task"] == "capsule"]) == len(results.capsules)
     assert len([r for r in rows if r["task"] == "solid"]) == 4 * len(results.plan.thickness[0])
     assert len([r for r in rows if r["task"] == "fit"]) == len(results.plan.fits)

@@ -13,9 +13,11 @@ from pocket.validation import solidstudy
 from pocket.validation.solidstudy import AXES, Study
 
 
-def _study(values_of, counts=(16, 32, 64), axis=AXES[0], default=(64, 4)):
-    """A Study whose value of each key on the mesh of n elements is values_of(key, n)."""
-    grid = solidstudy.meshes(axis, counts) if axis == AXES[0] else tuple((64, n) for n in counts)
+def _study(values_of, counts=(16, 32, 64), axis=AXES[0], default=64):
+    """A Study along the radius whose value of each key on the mesh of n elements is values_of(key, n), its
+    default mesh that of ``default`` elements."""
+    grid = tuple((n, 4, 0.5) for n in counts)
+    default = (default, 4, 0.5)
     keys = [("V", None), ("H0", None)] + [(q, 0.1) for q in solidstudy.COMPRESSION]
     values = tuple({key: values_of(key, n) for key in keys} for n in counts)
     return Study(4, 0.08, 5.0, (0.1,), axis, grid, values, (0.0,) * len(counts), default)
@@ -65,9 +67,23 @@ def test_default_not_the_finest():
     def values(key, n):
         return 1.0 + n**-2.0
 
-    study = _study(values, counts=(16, 32, 64), default=(32, 4))
+    study = _study(values, counts=(16, 32, 64), default=32)
     error, _ = study.default_error(("V", None))
     assert error == pytest.approx(32**-2.0, rel=1e-6)
+
+
+def test_the_axes_refine_one_thing_each():
+    """Exact answer: each axis's meshes vary its own entry and hold the others at the solid's defaults; the corner's
+    refined count is 1 / its length (halving the length doubles it, as halving an element doubles a count)."""
+    from pocket import solid
+
+    default = (solid.DEFAULT_ELEMENTS, solid.DEFAULT_LAYERS, solid.DEFAULT_CORNER)
+    for k, axis in enumerate(AXES):
+        grid = solidstudy.meshes(axis, (1.0, 0.5, 0.25))
+        assert all(m[:k] + m[k + 1:] == default[:k] + default[k + 1:] for m in grid)
+        assert [m[k] for m in grid] == [1.0, 0.5, 0.25]
+    study = Study(4, 0.08, 5.0, (0.1,), AXES[2], solidstudy.meshes(AXES[2], (1.0, 0.5, 0.25)), (), (), default)
+    assert list(study.counts) == [1.0, 2.0, 4.0]
 
 
 def test_rows_print_every_quantity_of_every_study():

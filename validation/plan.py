@@ -108,8 +108,8 @@ class Plan:
     capsule_fem: the forces at which the FE model (P2) presses them too; 0 gives the inflated capsule.
     capsule_sizes: element counts of the FE model's mesh convergence on a capsule; empty: no such study.
     solid_study: the paper's samples whose solid is refined along each axis (``solidstudy``); empty: no such study.
-    solid_radial, solid_layers: the element counts along the radius, and the layers, of that study (each holding
-        the solid's default).
+    solid_refined: the element counts along the radius, the layers and the corner elements' lengths (in T, each
+        half the one before) of that study, each holding the solid's default.
     """
 
     name: str
@@ -124,8 +124,7 @@ class Plan:
     capsule_fem: tuple[float, ...] = ()
     capsule_sizes: tuple[int, ...] = ()
     solid_study: tuple[int, ...] = ()
-    solid_radial: tuple[int, ...] = ()
-    solid_layers: tuple[int, ...] = ()
+    solid_refined: tuple[tuple[float, ...], ...] = ((), (), ())
 
     def fem_forces_of(self, pocket) -> tuple:
         """The FE forces of ``pocket`` (empty: no FE column for it in this plan)."""
@@ -151,8 +150,7 @@ DEFAULT = Plan(
     capsule_fem=(0.0, 0.2, 1.25, 3.2, 5.0),
     capsule_sizes=(32, 64, 128, 256),
     solid_study=(1, 4),
-    solid_radial=(32, 64, 128, 256),
-    solid_layers=(2, 4, 8),
+    solid_refined=((12, 24, 48, 96, 192), (2, 4, 8), (1.0, 0.5, 0.25)),
 )
 
 QUICK = Plan(
@@ -166,6 +164,5 @@ QUICK = Plan(
     capsule_fem=(0.0, 1.25, 5.0),
     capsule_sizes=(32, 64, 128),
     solid_study=(4,),
-    solid_radial=(16, 32, 64),
-    solid_layers=(2, 4, 8),
+    solid_refined=((12, 24, 48), (2, 4, 8), (1.0, 0.5, 0.25)),
 )

@@ -121,7 +121,8 @@ def _task(kind, key, pockets, args) -> Task:
     if kind == "solid":
         return Task(kind, f"sample {args[0]}", f"membrane and solid at {args[1]:g} kPa, {len(args[2])} forces", 0.0)
     if kind == "solid study":
-        return Task(kind, f"sample {args[0]}", f"solid on {args[3]} x {args[4]} elements, {len(args[2])} forces", 0.0)
+        return Task(kind, f"sample {args[0]}", f"solid on {args[3]} x {args[4]} elements, corner {args[5]:g} T, "
+                    f"{len(args[2])} forces", 0.0)
     if kind == "capsule":
         fe = f", FE P2 at {len(args[2])}" if args[0].fem and args[2] else ""
         return Task(kind, args[0].name, f"capsule: shooting at {len(args[1])} forces{fe}", 0.0)
@@ -161,7 +162,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
                     submit("solid", k, thickness.compare, number, pressure, forces)
             for number in plan.solid_study:
                 grids = (solidstudy.meshes(axis, counts) for axis, counts in
-                         zip(solidstudy.AXES, (plan.solid_radial, plan.solid_layers), strict=True))
+                         zip(solidstudy.AXES, plan.solid_refined, strict=True))
                 for mesh in dict.fromkeys(m for grid in grids for m in grid):
                     submit("solid study", (number, *mesh), solidstudy.solve, number, solidstudy.PRESSURE_KPA,
                            solidstudy.FORCES, *mesh)
@@ -219,7 +220,7 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     thicknesses = tuple(done["solid"][k] for k in sorted(done["solid"]))
     rows += thickness.checks(thicknesses)
     solid_studies = tuple(solidstudy.studies(plan.solid_study, solidstudy.PRESSURE_KPA, solidstudy.FORCES,
-                                             plan.solid_radial, plan.solid_layers, done["solid study"])
+                                             plan.solid_refined, done["solid study"])
                           if done["solid study"] else ())
     rows += solidstudy.checks(solid_studies)
     capsule_curves = tuple(done["capsule"][k] for k in sorted(done["capsule"]))

@@ -4,9 +4,10 @@ The solid measures the membrane's modelling error (``thickness``), so its number
 converged. Each studied sample of the paper (Table 1: Mooney-Rivlin C1 = 160 kPa, C2 = 47 kPa, R = 20 mm, a liquid)
 is inflated to ``PRESSURE_KPA`` and pressed by the plate at ``FORCES`` (small contacts: the contact edge is the
 solid's least resolved output), and solved on meshes refined along one axis at a time, each halving the element
-size of the one before: along the radius (the elements, the default layers through the thickness) and through the
-thickness (the layers, the default elements along the radius). The clamp's corner elements keep their length, a
-fraction of T (``pocket.solid.mesh``), on every mesh.
+size of the one before: along the radius (the elements), through the thickness (the layers) and at the clamp's corner
+(the corner elements' length, a fraction of T: ``pocket.solid.mesh``), the others at the solid's defaults. The last
+is not a discretisation error like the others: the corner is singular, the answer depends on the length at which it
+is regularised, and the study measures by how much.
 
 Of each quantity q (the inflated V and H0; at each force P/P_I, A_c and the contact edge's Lagrangian radius a_c),
 with the three finest meshes of an axis q_4h, q_2h, q_h: the observed order p = log2((q_4h - q_2h) / (q_2h - q_h))
@@ -44,27 +45,28 @@ ABSOLUTE = ("a_c",)
 #: the default mesh's largest accepted error along an axis, by quantity (the others: informational)
 TARGETS = {"A_c": 5e-3, "a_c": 1e-3}
 #: the refined axes
-AXES = ("radial", "through the thickness")
+AXES = ("radial", "through the thickness", "at the clamp's corner")
 COMPARISON = "solid: mesh convergence"
 
 
-def meshes(axis: str, counts) -> tuple[tuple[int, int], ...]:
-    """The meshes (elements, layers) of ``axis`` with the element or layer ``counts``, the other at the default."""
+def meshes(axis: str, counts) -> tuple[tuple[int, int, float], ...]:
+    """The meshes (elements, layers, corner) of ``axis`` with the element or layer ``counts`` (or the corner
+    elements' lengths in thicknesses), the others at the solid's defaults."""
     from pocket import solid
 
-    if axis == AXES[0]:
-        return tuple((n, solid.DEFAULT_LAYERS) for n in counts)
-    return tuple((solid.DEFAULT_ELEMENTS, n) for n in counts)
+    default, k = (solid.DEFAULT_ELEMENTS, solid.DEFAULT_LAYERS, solid.DEFAULT_CORNER), AXES.index(axis)
+    return tuple((*default[:k], value, *default[k + 1:]) for value in counts)
 
 
-def solve(number: int, pressure_kpa: float, forces: tuple[float, ...], elements: int, layers: int):
+def solve(number: int, pressure_kpa: float, forces: tuple[float, ...], elements: int, layers: int, corner: float):
     """((quantity, force or None) -> value, seconds): sample ``number`` at ``pressure_kpa`` pressed at ``forces``
-    (Fhat) by the solid on the mesh (``elements``, ``layers``)."""
+    (Fhat) by the solid on the mesh (``elements``, ``layers``, the clamp's corner elements ``corner`` T long)."""
     from pocket import solid
 
     material, phat, t = posed(number, pressure_kpa)
     start = time.perf_counter()
-    states = solid.compression_curve(material, phat, forces, thickness_ratio=t, elements=elements, layers=layers)
+    states = solid.compression_curve(material, phat, forces, thickness_ratio=t, elements=elements, layers=layers,
+                                     corner=corner)
     seconds = time.perf_counter() - start
     out: dict[tuple[str, float | None], float] = {("V", None): states[0].inflated.volume,
                                                   ("H0", None): states[0].inflated.height}
@@ -77,7 +79,7 @@ def solve(number: int, pressure_kpa: float, forces: tuple[float, ...], elements:
 
 @dataclasses.dataclass(frozen=True)
 class Study:
-    """One sample refined along one ``axis``: its ``meshes`` (elements, layers), coarse to fine, the ``values``
+    """One sample refined along one ``axis``: its ``meshes`` (elements, layers, corner), coarse to fine, the ``values``
     ((quantity, force) -> value) and ``seconds`` on each, and the solid's ``default`` mesh among them."""
 
     sample: int
@@ -85,10 +87,10 @@ class Study:
     pressure_kpa: float
     forces: tuple[float, ...]
     axis: str
-    meshes: tuple[tuple[int, int], ...]
+    meshes: tuple[tuple[int, int, float], ...]
     values: tuple[dict, ...]
     seconds: tuple[float, ...]
-    default: tuple[int, int]
+    default: tuple[int, int, float]
 
     def quantities(self):
         """(quantity, force): the inflated sheet's (force None), then each force's."""
@@ -97,8 +99,9 @@ class Study:
 
     @property
     def counts(self) -> np.ndarray:
-        """The refined count of each mesh: elements along the radius, or layers."""
-        return np.array([m[0] if self.axis == AXES[0] else m[1] for m in self.meshes])
+        """The refined count of each mesh: elements along the radius, layers, or 1 / the corner's length."""
+        k = AXES.index(self.axis)
+        return np.array([m[k] if k < 2 else 1.0 / m[k] for m in self.meshes])
 
     def series(self, key) -> np.ndarray:
         """The values of ``key`` on each mesh, coarse to fine."""
@@ -118,27 +121,37 @@ class Study:
         """(the default mesh's error along the axis, whether it is against q*): its distance from q*, or where the
         differences do not shrink (no q*), its distance from the finest mesh plus the finest mesh's own last change
         (module docstring)."""
-        value = self.values[self.meshes.index(self.default)][key]
-        found = self.estimate(key)
+        value, found = self.default_value(key), self.estimate(key)
         if found:
             return self.error(key, value, found[0]), True
         finest, before = self.values[-1][key], self.values[-2][key]
         return self.error(key, value, finest) + self.error(key, before, finest), False
 
+    def default_value(self, key) -> float:
+        """``key`` on the solid's default mesh."""
+        return self.values[self.meshes.index(self.default)][key]
 
-def studies(numbers, pressure_kpa, forces, radial, layers, done) -> list[Study]:
-    """The studies of the samples ``numbers`` along each axis from ``done``: (number, elements, layers) -> the
-    ``solve`` of that mesh."""
+    def reference(self, key) -> float:
+        """q* where it exists, else the finest mesh's value: what the default is measured against."""
+        found = self.estimate(key)
+        return found[0] if found else self.values[-1][key]
+
+
+def studies(numbers, pressure_kpa, forces, counts, done) -> list[Study]:
+    """The studies of the samples ``numbers`` along each axis (``counts``: the radial elements, the layers and the
+    corner's lengths of the refinements) from ``done``: (number, elements, layers, corner) -> the ``solve`` of that
+    mesh."""
     from pocket import solid
 
     out = []
     for number in numbers:
         t = posed(number, pressure_kpa)[2]
-        for axis, counts in zip(AXES, (radial, layers), strict=True):
-            grid = meshes(axis, counts)
+        for axis, values in zip(AXES, counts, strict=True):
+            grid = meshes(axis, values)
             solved = [done[(number, *m)] for m in grid]
             out.append(Study(number, t, pressure_kpa, tuple(forces), axis, grid, tuple(s[0] for s in solved),
-                             tuple(s[1] for s in solved), (solid.DEFAULT_ELEMENTS, solid.DEFAULT_LAYERS)))
+                             tuple(s[1] for s in solved),
+                             (solid.DEFAULT_ELEMENTS, solid.DEFAULT_LAYERS, solid.DEFAULT_CORNER)))
     return out
 
 
@@ -153,25 +166,22 @@ def checks(found) -> list[Check]:
     for study in found:
         for key in study.quantities():
             error, _ = study.default_error(key)
-            estimate = study.estimate(key)
-            reference = estimate[0] if estimate else study.values[-1][key]
-            value = study.values[study.meshes.index(study.default)][key]
             tolerance = TARGETS.get(key[0])
             verdict = "info" if tolerance is None else "pass" if error <= tolerance else "fail"
             out.append(Check(f"sample {study.sample}", COMPARISON, "inflation" if key[1] is None else "compression",
-                             key[0], _where(study, key[1]), float(value), float(reference), float(error), tolerance,
-                             verdict))
+                             key[0], _where(study, key[1]), float(study.default_value(key)),
+                             float(study.reference(key)), float(error), tolerance, verdict))
     return out
 
 
 def rows(found) -> tuple[list, list]:
     """(header, rows): every quantity of every study, its values on each mesh, order, extrapolation and the default
     mesh's error."""
-    header = ["sample", "T/R", "P_I (kPa)", "refined", "meshes (elements x layers)", "quantity", "F/(P_I pi R^2)",
-              "values", "observed order", "extrapolated", "default mesh's error"]
+    header = ["sample", "T/R", "P_I (kPa)", "refined", "meshes (elements x layers, corner / T)", "quantity",
+              "F/(P_I pi R^2)", "values", "observed order", "extrapolated", "default mesh's error"]
     out = []
     for study in found:
-        grid = ", ".join(f"{e}x{n}" for e, n in study.meshes)
+        grid = ", ".join(f"{e}x{n} {c:g}" for e, n, c in study.meshes)
         for key in study.quantities():
             estimate = study.estimate(key)
             error, against = study.default_error(key)
@@ -201,7 +211,8 @@ def figure(found) -> Figure:
             series.append(Series(f"{label} (p = {estimate[2]:.2f})", "convergence", study.counts[keep].astype(float),
                                  errors[keep], k))
         if series:
-            what = "elements along the radius" if study.axis == AXES[0] else "layers through the thickness"
+            what = ("elements along the radius", "layers through the thickness",
+                    "T / (the corner elements' length)")[AXES.index(study.axis)]
             panels.append(Panel(f"sample {study.sample} (T/R = {study.thickness_ratio:g}), refined {study.axis}", what,
                                 "|q / q* - 1| (a_c: |q - q*| / R)", tuple(series), log="xy"))
     return Figure("solid_convergence", "The solid's convergence with its mesh: each quantity's distance from its "

@@ -166,6 +166,8 @@ _SOLID = {
     "mesh_layers": Reported("1", "layers of elements through the thickness"),
     "iterations": Reported("1", "Newton iterations of the solve"),
     "reaction": Reported("Fhat", "the indenter's reaction, the sum of the contact forces"),
+    "contact_radius_error": Reported("R", "the contact edge's own error estimate: the spread of its extrapolations "
+                                          "from the gaps beyond it, on the mesh's cluster of short elements there"),
 }
 
 #: the keys by what they describe (the documentation's sections)
