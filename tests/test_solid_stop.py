@@ -90,9 +90,9 @@ def test_the_command_line_says_it_in_one_line(failing_above, capsys):
 def test_the_range_command_stops_where_its_path_turns_and_names_a_force_that_solves(capsys):
     """The range command (five forces to Fhat = 9 at the default mesh) without the jaw exits 1 naming a force
     between its third (5) and fourth (7) forces, and the shortest step it tried beyond; a force 1e-3 below the one
-    named solves from the inflated pocket by another path of steps, one 1e-2 above it does not. (Not the forces named and tried
-    themselves: the mesh that follows the contact edge depends on the path's steps, which moves the turning point
-    by a few 1e-4.)"""
+    named solves from the inflated pocket by another path of steps, one 1e-2 above it does not. (Not the forces
+    named and tried themselves: the mesh that follows the contact edge depends on the path's steps, which moves the
+    turning point by a few 1e-4.)"""
     args = ["compress", "--solver", "solid", "--thickness-ratio", "0.0125", "--alpha", "0.3", "--pressure", "0.3",
             "--force", "1", "3", "5", "7", "9", "--clamp-radius", "0", "--json"]
     assert main(args) == 1
