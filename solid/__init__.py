@@ -71,7 +71,8 @@ MAX_ELEMENTS = 2000
 #: 3.6e-5 from 64 to 128: that error was the edge's), and the curve takes 1.7 s on 16 elements, 2.3 s on 24, 2.8 s
 #: on 32 and 4.2 s on 64 (idle; 2.4 s on 64 before the edge was followed). 24, not 16: pressed towards Fhat = 9
 #: (alpha = 0.3, Phat_I = 0.3) the march on 16 stops at Fhat = 5.01 where an iterate inverts an element though the
-#: path goes on; on 24, 32 and 64 it stops where the clamp's corner folds, 5.43 (``newton``). Through the thickness
+#: path goes on; on 24, 32 and 64 without the clamp's upper jaw it stops where the corner folds, 5.43 (``newton``;
+#: with the jaw, the default, it reaches 9). Through the thickness
 #: P/P_I moves by 2.8e-4 from two layers to four and by 5.5e-5 from four to eight, order ~2.3; four layers cost
 #: twice two. Sample 4's contact area (T/R = 0.08, Fhat 0.08 to 0.32) is within 0.17 % of 256 x 8's on 24 x 4.
 #: Inflated (tests/test_solid_thin.py): along the radius V converges to ~1e-6 by 32 elements (the validation's
@@ -81,9 +82,13 @@ MAX_ELEMENTS = 2000
 #: a few percent of the membrane's O(T/R) difference the solid is there to measure).
 DEFAULT_ELEMENTS = 24
 DEFAULT_LAYERS = 4
-#: the length of the clamp's corner elements, in thicknesses (``mesh``): the sheet's answer depends on it (the
-#: clamp's corner is singular, and regularised at this scale); MIN_CORNER to MAX_CORNER for studies of that effect
-DEFAULT_CORNER = 0.5
+#: the length of the clamp's corner elements, in thicknesses (``mesh``): half the radius of the clamp's upper jaw's
+#: edge (below), so that two elements span it. Measured on sample 4's pocket (T/R = 0.08, 5 kPa, Fhat 0.08 to
+#: 0.32): from corner elements T/4 to T/16 its V moves by 7e-4 and its contact area by up to 0.14 %, where from
+#: T/2 they moved by 2.4e-3 and 0.4 % (at T/2 the sheet's inflated upper surface does not reach the edge at all, at
+#: T/4 and finer it wraps it). Without the jaw the corner is singular, the answer depends on this length at every
+#: scale, and elements much shorter than T/2 fold (``mesh``): there T/2 was the default.
+DEFAULT_CORNER = 0.25
 MIN_CORNER = 0.05
 MAX_CORNER = 4.0
 #: the radius of the clamp's upper jaw's rounded edge, in thicknesses (``jaw``): a real clamp's upper plate
@@ -114,7 +119,8 @@ SOLVER = Solver(
                lambda name, value: check_count(name, value, MIN_ELEMENTS, MAX_ELEMENTS)),
         Option("corner", "float", DEFAULT_CORNER,
                f"length of the clamp's corner elements, in thicknesses ({MIN_CORNER:g} to {MAX_CORNER:g}; default "
-               f"{DEFAULT_CORNER:g}): the clamp's corner is singular, and the answer depends on this length",
+               f"{DEFAULT_CORNER:g}, half the default jaw's edge radius, which they must resolve; without a jaw "
+               "the corner is singular and the answer depends on this length)",
                lambda name, value: check_range(name, value, MIN_CORNER, MAX_CORNER,
                                                "in thicknesses T: the corner elements must fit beside the sheet")),
         Option("tol", "float", 1e-10, "Newton tolerance on the displacement increment, units R (default 1e-10, "

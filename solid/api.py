@@ -240,7 +240,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
     >>> from pocket import solid
     >>> states = solid.compression_curve(47 / 160, 0.31, [0.1, 0.19], elements=8, layers=2)
     >>> print([f"{s.pressure_ratio:.3f}" for s in states])
-    ['1.156', '1.294']
+    ['1.157', '1.295']
     """
     forces = check_forces(forces)
     geometry, _ = geometries.posed(GEOMETRIES, "solid", geometry)

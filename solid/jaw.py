@@ -4,7 +4,7 @@ The sheet is clamped between two rigid jaws at r >= R. As the pocket inflates it
 upwards and wraps around the upper jaw's edge, its upper surface on the inside of the bend. Without the jaw
 the solid's upper corner is free: its nodes move past r = R above the sheet, into what would be the jaw,
 and the corner element folds (``mesh``, ``newton``). With it (the option ``clamp_radius``, rc in
-thicknesses T; off by default) the upper surface's nodes may not enter the jaw.
+thicknesses T; default ``DEFAULT_CLAMP_RADIUS``, 0 for no jaw) the upper surface's nodes may not enter the jaw.
 
 Geometry (units R, t = T/R, a = rc t the edge's radius). The jaw's lower face is z = t/2 for r >= 1 (the
 flat sheet's upper surface, clamped there); its edge is the quarter circle of radius a tangent to that face

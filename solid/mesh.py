@@ -24,19 +24,22 @@ from Fhat = 2.35 on Newton, with the contact's active set fixed, cycled there wi
 stalled alike (Phat = 1.26; at 0.84 with corner elements 0.15 T long and high). A smooth discrete
 surface cannot follow a fold, nor a crease, which a rubber surface compressed past a stretch of
 about 0.65 forms (Hong, Zhao and Suo, Appl. Phys. Lett. 95, 111901, 2009). The elements at the
-clamp are therefore ``corner`` T long (the solver's option, default ``pocket.solid.DEFAULT_CORNER``: T/2)
-whatever the radial elements and the layers, and the
+clamp are therefore ``corner`` T long (the solver's option; T/2 without the clamp's upper jaw, the default
+``pocket.solid.DEFAULT_CORNER`` with it) whatever the radial elements and the layers, and the
 next two grow by ``CORNER_GROWTH``, so that refining along the radius leaves the corners' mesh:
 a regularisation at the thickness' scale, at which the real clamp's jaws (rounded, not rigid)
 regularise the sheet too. With it the same pocket reaches Fhat = 3 and free inflation Phat = 2, and
-on 64 x 4 elements, and on the default 24 x 4 with the contact edge followed, the pocket goes on to
-Fhat = 5.43, where the corner element folds in turn: the discrete
+on 64 x 4 elements, and on the default 24 x 4 with the contact edge followed, the pocket without the clamp's
+upper jaw (``jaw``) goes on to Fhat = 5.43, where the corner element folds in turn: the discrete
 path turns there, in force and in height, and Newton stops (``newton``). Corner elements 1 T long take it to
 Fhat = 7.41, 1.5 and 2 T past Fhat = 9; they change P/P_I at Fhat = 5 by 2.7e-3 and 4.6e-3 (from 0.5 T), more
 than the solid's difference from the membrane there (1.9e-3; at Fhat = 1 7e-4, against their 5e-4 and 1.5e-3).
 The membrane, which has no thickness, sees none of this; doubling the corner elements' length
 changes V by 4e-4 and H0 by 1.3e-4 (relative), a few percent of the membrane's own difference
-from the solid (``tests/test_solid_clamp.py``).
+from the solid (``tests/test_solid_clamp.py``). With the jaw (the default, its edge T/2) the upper surface
+wraps the edge instead of folding, the range goes on past Fhat = 9, and the corner's elements, no longer a
+regularisation but a mesh of the edge's radius, change the headline pocket's V by 1e-6 from T/2 to T/4
+(``tests/test_solid_clamp.py``); the default, T/4, spans the edge with two elements.
 """
 
 from __future__ import annotations

@@ -22,9 +22,9 @@ Deuflhard's natural monotonicity test its damping fell below 1e-3, pseudo-transi
 the corner's elements set where the path turns (``mesh``): on the default 24 x 4 with the contact edge followed
 the march stops at Fhat = 5.4302 (on 16 x 4 earlier, at 5.01, where an iterate inverts an element though the
 path goes on: a force 1e-2 beyond solves by another path of steps).
-With the clamp's upper jaw (``jaw``, the option
-``clamp_radius``) the corner's node cannot move past r = 1 above the sheet: the same pocket, its upper surface
-wrapped around a jaw's edge of radius T/2 or T, reaches Fhat = 9 at every corner mesh from 1 T to T/16.
+All this without the clamp's upper jaw (``clamp_radius = 0``). With it (``jaw``, the default) the corner's node
+cannot move past r = 1 above the sheet: the same pocket, its upper surface wrapped around a jaw's edge of radius
+T/2 or T, reaches Fhat = 9 at every corner mesh from 1 T to T/16.
 """
 
 from __future__ import annotations

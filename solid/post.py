@@ -83,13 +83,22 @@ def _line_volume(r: np.ndarray, rho: np.ndarray, eta: np.ndarray) -> float:
     return float(total)
 
 
+def _levels(x: np.ndarray, tol: float = 1e-10) -> np.ndarray:
+    """The index of each coordinate's level among the distinct values of ``x`` (values within ``tol`` of the one
+    before are one level: a node shared by two elements may be placed by each to a rounding apart, and rounding
+    to fixed decimals splits such a pair where it straddles a rounding boundary)."""
+    ordered = np.sort(x)
+    starts = ordered[np.concatenate([[True], np.diff(ordered) > tol])]
+    return np.searchsorted(starts, x + tol, side="right") - 1
+
+
 def _grid(model: Model):
     """The scalar biquadratic basis and its dofs arranged as the grid (heights, radii)."""
     scalar = model.basis_u.with_element(ElementQuad2())
     loc = scalar.doflocs
-    order = np.lexsort((loc[0], np.round(loc[1], 12)))
-    n_r = np.unique(np.round(loc[0], 12)).size
-    return scalar, order.reshape(-1, n_r)
+    radial = _levels(loc[0])
+    order = np.lexsort((radial, _levels(loc[1])))
+    return scalar, order.reshape(-1, radial.max() + 1)
 
 
 def fields(model: Model, y: np.ndarray) -> Fields:

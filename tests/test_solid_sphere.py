@@ -10,7 +10,7 @@ T/R -> 0 the solid tends to the membrane under the same sphere (``pocket.shootin
 import numpy as np
 import pytest
 import scipy.sparse as sp
-from pocket.solid import DEFAULT_CORNER, compression, contact, inflation, laws, mesh, model
+from pocket.solid import DEFAULT_CLAMP_RADIUS, DEFAULT_CORNER, compression, contact, inflation, laws, mesh, model
 from pocket.solid.equations import Control, system
 from pocket.solid.model import split
 
@@ -136,13 +136,14 @@ def test_a_large_sphere_is_the_flat_plate_to_first_order_in_1_over_k():
     assert abs(order[1] - 1.0) <= 0.5, order
 
 
-def _against_membrane(radius):
+def _against_membrane(radius, clamp_radius):
     """(T/R, dq, dA, bound on |dA|) for T/R = 0.01 and 0.02: the solid's P/P_I and contact area minus the
     membrane's (``pocket.shooting``) under the sphere of radius K = ``radius`` at Fhat = 0.3."""
     membrane = shooting.compress(MATERIAL, PHAT, 0.3, indenter=Sphere(radius))
     rows = []
     for t in (0.01, 0.02):
-        s = solid.compress(MATERIAL, PHAT, 0.3, indenter=Sphere(radius), thickness_ratio=t)
+        s = solid.compress(MATERIAL, PHAT, 0.3, indenter=Sphere(radius), thickness_ratio=t,
+                           clamp_radius=clamp_radius)
         r, rho_c = s.profile.r, s.contact_radius_deformed
         spacing = np.diff(r)[min(np.searchsorted(r, s.contact_radius), r.size - 2)]
         slope = 2.0 * radius * rho_c / np.sqrt(radius**2 - rho_c**2)  # d(cap area)/d rho_c
@@ -153,10 +154,13 @@ def _against_membrane(radius):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("radius", [0.4, 2.0])
-def test_the_solid_tends_to_the_membrane_under_a_sphere(radius):
+@pytest.mark.parametrize("clamp_radius", [0.0, DEFAULT_CLAMP_RADIUS])
+def test_the_solid_tends_to_the_membrane_under_a_sphere(radius, clamp_radius):
     """Limit: as T/R -> 0 the solid's P/P_I and contact area tend to the membrane's under the same sphere, the
-    difference O(T/R) or smaller (fitted order between T = 0.01 and 0.02 printed)."""
-    (t1, dq1, da1, e1), (t2, dq2, da2, e2) = _against_membrane(radius)
+    difference O(T/R) or smaller (fitted order between T = 0.01 and 0.02 printed). The bounds on the differences
+    themselves were measured without the clamp's upper jaw; the jaw's edge (T/2) moves the sheet's hinge inwards
+    by a fraction of T, a further O(T/R) difference of its own, so with it only the order is held."""
+    (t1, dq1, da1, e1), (t2, dq2, da2, e2) = _against_membrane(radius, clamp_radius)
     q_order, a_order = np.log2(dq2 / dq1), np.log2(abs(da2 / da1))
     print(f"K = {radius}: P/P_I - membrane {dq1:.3e} (T/R {t1}), {dq2:.3e} (T/R {t2}), order {q_order:.2f}; "
           f"A_c - membrane {da1:.3e}, {da2:.3e} (edge resolution {e1:.1e}, {e2:.1e}), order {a_order:.2f}")
@@ -165,6 +169,8 @@ def test_the_solid_tends_to_the_membrane_under_a_sphere(radius):
     # with the mesh (the contact edge). Bounds: the order between 0.7 and 2.2, |dq| <= 0.15 T.
     assert np.sign(dq1) == np.sign(dq2)
     assert 0.7 <= q_order <= 2.2
+    if clamp_radius:
+        return
     assert abs(dq1) <= 0.15 * t1
     assert abs(dq2) <= 0.15 * t2
     # The contact area's difference (|dA| / T measured up to 0.16) is of the size of the contact edge's own

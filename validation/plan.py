@@ -103,6 +103,8 @@ class Plan:
     fits: the laws (with their number of terms) fitted to FE bulge data (``identification``).
     thickness: the pressures P_I (kPa) and the forces Fhat at which the paper's four samples are solved by the
         membrane and the solid (``thickness``); empty: no such section.
+    thickness_refined: whether the solid of that section is solved again on a finer mesh, its own uncertainty
+        beside each membrane error (``thickness.REFINED``: ten times the default's time).
     capsules: the forces Fhat at which each capsule of the suite is pressed by the shooting solver
         (``capsules``); empty: no capsule section.
     capsule_fem: the forces at which the FE model (P2) presses them too; 0 gives the inflated capsule.
@@ -120,6 +122,7 @@ class Plan:
     indenter_columns: tuple[Column, ...] = INDENTER_COLUMNS
     fits: tuple[tuple[str, int], ...] = ()
     thickness: tuple[tuple[float, ...], tuple[float, ...]] | tuple = ()
+    thickness_refined: bool = False
     capsules: tuple[float, ...] = ()
     capsule_fem: tuple[float, ...] = ()
     capsule_sizes: tuple[int, ...] = ()
@@ -146,11 +149,12 @@ DEFAULT = Plan(
     convergence_sizes={1: (16, 32, 64, 128, 256), 2: (8, 16, 32, 64, 128)},
     fits=(("neo-hookean", 1), ("mooney-rivlin", 1), ("yeoh", 1), ("gent", 1), ("ogden", 2)),
     thickness=((2.0, 5.0), (0.2, 0.5, 1.0)),
+    thickness_refined=True,
     capsules=tuple(round(5.0 * (k / 20) ** 2, 12) for k in range(21)),
     capsule_fem=(0.0, 0.2, 1.25, 3.2, 5.0),
     capsule_sizes=(32, 64, 128, 256),
     solid_study=(1, 4),
-    solid_refined=((12, 24, 48, 96, 192), (2, 4, 8), (1.0, 0.5, 0.25)),
+    solid_refined=((12, 24, 48, 96, 192), (2, 4, 8), (0.25, 0.125, 0.0625)),
 )
 
 QUICK = Plan(
@@ -164,5 +168,5 @@ QUICK = Plan(
     capsule_fem=(0.0, 1.25, 5.0),
     capsule_sizes=(32, 64, 128),
     solid_study=(4,),
-    solid_refined=((12, 24, 48), (2, 4, 8), (1.0, 0.5, 0.25)),
+    solid_refined=((12, 24, 48), (2, 4, 8), (0.25, 0.125, 0.0625)),
 )

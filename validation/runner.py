@@ -159,7 +159,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
             if plan.thickness:  # the longest tasks: started early
                 pressures, forces = plan.thickness
                 for k, (number, pressure) in enumerate((n, p) for n in sorted(SAMPLES) for p in pressures):
-                    submit("solid", k, thickness.compare, number, pressure, forces)
+                    submit("solid", k, thickness.compare, number, pressure, forces, plan.thickness_refined)
             for number in plan.solid_study:
                 grids = (solidstudy.meshes(axis, counts) for axis, counts in
                          zip(solidstudy.AXES, plan.solid_refined, strict=True))
