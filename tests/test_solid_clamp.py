@@ -72,3 +72,21 @@ def test_the_corner_regularisation_costs_a_fraction_of_the_membrane_difference(c
         difference = value(states[fine]) / (membrane.volume if key == "V" else membrane.height) - 1.0
         print(f"{key}: corner {coarse} T vs {fine} T {corner:+.2e}, solid vs membrane {difference:+.2e}")
         assert abs(corner) < (1e-3 if key == "H0 (mid-surface)" else 0.1 * abs(difference))
+
+
+def test_the_grid_groups_nodes_placed_a_rounding_apart():
+    """``post._levels`` puts coordinates within 1e-10 of each other on one level, whichever side of a fixed decimal
+    rounding boundary they fall (rounding to 12 decimals split such a pair, and the grid of 20 elements with
+    corner elements T/4 failed to reshape); every mesh's grid of nodes is then a full rectangle: the heights by
+    the radii, each node once."""
+    from pocket.solid import post
+
+    x = np.array([0.3, 0.1234567890125 - 1e-16, 0.1234567890125 + 1e-16, 0.7, 0.3 + 5e-11, 0.30000001])
+    np.testing.assert_array_equal(post._levels(x), [1, 0, 0, 3, 1, 2])
+    for elements in (16, 20, 24, 37):
+        for corner in (0.0625, 0.25, 0.5):
+            t = 0.0125
+            m = model.discretize(t, mesh.section(t, elements, 4, corner), laws.derivatives(mooney_rivlin(0.3).scaled()))
+            scalar, grid = post._grid(m)
+            assert grid.shape[0] == 2 * 4 + 1
+            assert np.array_equal(np.sort(grid.ravel()), np.arange(scalar.N))
