@@ -49,8 +49,9 @@ its nodal force over lambda_n is the penetration, ~ 1e-4 / 1e3 = 1e-7 R here, be
 tolerances) on the upper surface's nodes, pressed down under displacement control of its centre
 point; the plate's force is the sum of the nodal contact forces (FElupe's axisymmetric nodal forces are
 the ring's total, 2 pi r times the force per radian). A force F is reached by a secant iteration on
-h. Reported: Fhat = F / (P_I pi R^2), P/P_I and H/H0 (the plate's height over the inflated upper
-pole's).
+h. Reported: Fhat = F / (P_I pi R^2), P/P_I, H/H0 (the plate's height over the inflated upper
+pole's) and the contact area (``contact_area``: from the contact edge, on the mesh as built; FElupe's mesh does
+not follow the edge as ``pocket.solid``'s does).
 """
 
 from __future__ import annotations
@@ -92,14 +93,25 @@ def radial_nodes(elements: int, grading: float) -> np.ndarray:
     return 1.0 - (1.0 - np.linspace(0.0, 1.0, elements + 1)) ** grading
 
 
-def build(alpha=ALPHA, thickness=THICKNESS, elements=64, layers=4, grading=2.0, bulk=1e4):
-    """The flat, unloaded sheet as a FElupe model: Mooney-Rivlin alpha = C2/C1 (mu_0 = 1), T/R = thickness."""
+def build(alpha=ALPHA, thickness=THICKNESS, elements=64, layers=4, grading=2.0, bulk=1e4, corner=None):
+    """The flat, unloaded sheet as a FElupe model: Mooney-Rivlin alpha = C2/C1 (mu_0 = 1), T/R = thickness.
+
+    ``corner`` None: the mesh of the module docstring; a length in thicknesses: ``pocket.solid``'s section
+    instead (its radial nodes, graded by its own exponent with the clamp's corner elements ``corner`` T long, and
+    its layers graded towards both surfaces; ``grading`` unused), the same mesh as the solid's before its
+    cluster follows the contact edge."""
     import felupe as fem
     import felupe.constitution.tensortrax as tt
 
     t = thickness
-    mesh = fem.mesh.convert(fem.Grid(0.5 * t * np.linspace(-1.0, 1.0, layers + 1), radial_nodes(elements, grading)),
-                            order=2, calc_midfaces=True)
+    if corner is None:
+        z, r = 0.5 * t * np.linspace(-1.0, 1.0, layers + 1), radial_nodes(elements, grading)
+    else:
+        from pocket.solid import mesh as solid_mesh
+
+        z = solid_mesh.heights(t, layers)
+        r = solid_mesh.corner_nodes(solid_mesh.radial_nodes(elements), corner * t)
+    mesh = fem.mesh.convert(fem.Grid(z, r), order=2, calc_midfaces=True)
     mesh.update(points=np.vstack([mesh.points, [[t, 0.0]]]))  # the plate's centre point, above the pole
     centre = mesh.npoints - 1
     x = mesh.points
@@ -142,6 +154,34 @@ def measure(m: Pocket) -> dict:
     low, mid = m.lower, m.mid
     return {"height": float(x[m.upper[0], 0]), "height_mid": float(x[mid[0], 0]),
             "volume": _line_volume(x[low, 1], u[low, 0]), "volume_mid": _line_volume(x[mid, 1], x[mid, 0])}
+
+
+def contact_area(m: Pocket, plate: float) -> float:
+    """The contact area under the plate, from the contact edge on the mesh as built.
+
+    The edge's deformed radius rho_c is placed as ``pocket.solid``'s on its mesh as asked: g^(1/2) linear in rho
+    beyond the edge, g the upper surface nodes' gaps to the plate, extrapolated from the two nodes beyond the last
+    one that touches (g <= 0: the penalty's penetration), kept between the touching node before it and the first
+    free node.
+
+    Parameters
+    ----------
+    m : Pocket
+        The model, in its state under the plate.
+    plate : float
+        The plate's height / R.
+
+    Returns
+    -------
+    float
+        rho_c^2: the contact area over pi R^2.
+    """
+    x = m.points[m.upper] + m.field[0].values[m.upper]
+    rho, gap = x[:, 1], plate - x[:, 0]
+    last = int(np.flatnonzero(gap <= 0.0)[-1])
+    (r1, r2), (g1, g2) = rho[last + 1:last + 3], np.sqrt(gap[last + 1:last + 3])
+    rho_c = np.clip(r1 - g1 * (r2 - r1) / (g2 - g1), rho[max(last - 1, 0)], r1)
+    return float(rho_c**2)
 
 
 def _solve(m: Pocket, items, tol):
@@ -224,6 +264,7 @@ def compress(m: Pocket, inflated: dict, forces, penalty=1e3, tol=1e-9) -> list[d
         h, _ = _secant(lambda hh, f=target: force_at(hh) - f, h_prev, h, 1e-8)
         s = measure(m)
         out.append({"force": target, "pressure_ratio": state["p"] / p_i, "height_ratio": h / h0, "plate": h,
-                    **s, "seconds": time.perf_counter() - tic, "iterations": m.iterations})
+                    "contact_area": contact_area(m, h), **s, "seconds": time.perf_counter() - tic,
+                    "iterations": m.iterations})
         h_prev = h
     return out
