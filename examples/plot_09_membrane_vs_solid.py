@@ -23,9 +23,10 @@ Run it as a script: ``python examples/plot_09_membrane_vs_solid.py``.
 # %%
 # ``sample(4)`` is the paper's sample as a case in physical units; its rubber in units of mu_0 and
 # Phat_I = P_I R / (E T) are what both solvers take. The solid also takes the thickness ratio T/R and
-# its mesh: ``elements`` along the radius, ``layers`` through the thickness (its default, 64 by 4, for
+# its mesh: ``elements`` along the radius, ``layers`` through the thickness (its default, 24 by 4, for
 # sample 4; a coarser one for the thickness sweep below, whose volume error it gives to a few percent of
-# itself).
+# itself). Its clamp holds the sheet between two plates, the upper one's edge rounded to half a thickness
+# (``clamp_radius``, in thicknesses): the real clamp, which the membrane, hinged at r = R, does not see.
 import matplotlib.pyplot as plt
 import numpy as np
 

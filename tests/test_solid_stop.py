@@ -7,7 +7,8 @@ one line and exit status 1. The failure is made where it is known: Newton is tol
 (``FAIL_ABOVE``), so the march stops within twice its smallest step (``MIN_FRACTION`` of the first) below it.
 
 The slow lane measures the stop that made this necessary: the headline-like pocket of the range command
-(alpha = 0.3, Phat_I = 0.3, T/R = 0.0125, the default mesh) without the clamp's upper jaw (``--clamp-radius 0``)
+(alpha = 0.3, Phat_I = 0.3, T/R = 0.0125, the default mesh) without the clamp's upper jaw (``--clamp-radius 0``,
+its corner elements T/2 long, the default without a jaw)
 stops where its discrete path turns, at the clamp's upper corner (``pocket.solid.newton``); the force it names
 solves, and a force a step beyond it does not. (With the default jaw it reaches Fhat = 9: ``test_solid_jaw``.)
 """
@@ -94,14 +95,14 @@ def test_the_range_command_stops_where_its_path_turns_and_names_a_force_that_sol
     named and tried themselves: the mesh that follows the contact edge depends on the path's steps, which moves the
     turning point by a few 1e-4.)"""
     args = ["compress", "--solver", "solid", "--thickness-ratio", "0.0125", "--alpha", "0.3", "--pressure", "0.3",
-            "--force", "1", "3", "5", "7", "9", "--clamp-radius", "0", "--json"]
+            "--force", "1", "3", "5", "7", "9", "--clamp-radius", "0", "--corner", "0.5", "--json"]
     assert main(args) == 1
     err = capsys.readouterr().err
     print(err)
     named = float(re.search(r"stopped at Fhat = ([-+0-9.e]+)", err).group(1))
     tried = float(re.search(r"the shortest to Fhat = ([-+0-9.e]+)", err).group(1))
     assert 5.0 < named < tried < 7.0
-    state = solid.compress(0.3, 0.3, named - 1e-3, thickness_ratio=0.0125, clamp_radius=0)
+    state = solid.compress(0.3, 0.3, named - 1e-3, thickness_ratio=0.0125, clamp_radius=0, corner=0.5)
     assert state.force == named - 1e-3
     with pytest.raises(ConvergenceError):
-        solid.compress(0.3, 0.3, named + 1e-2, thickness_ratio=0.0125, clamp_radius=0)
+        solid.compress(0.3, 0.3, named + 1e-2, thickness_ratio=0.0125, clamp_radius=0, corner=0.5)

@@ -168,5 +168,5 @@ QUICK = Plan(
     capsule_fem=(0.0, 1.25, 5.0),
     capsule_sizes=(32, 64, 128),
     solid_study=(4,),
-    solid_refined=((12, 24, 48), (2, 4, 8), (0.25, 0.125, 0.0625)),
+    solid_refined=((24, 48, 96), (2, 4, 8), (0.25, 0.125, 0.0625)),
 )
