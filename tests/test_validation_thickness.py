@@ -39,7 +39,7 @@ def test_the_uncertainty_is_the_error_s_change_on_the_refined_mesh():
     assert float(row[column]) == pytest.approx(abs(0.7 / 0.499 - 0.7 / 0.5), rel=1e-1)  # printed to 2 digits
     # the largest A_c error is the 40 % at Fhat = 0.2: its own uncertainty, 0.28 %, stands beside it
     sentence = next(s for s in thickness.verdict([c]) if s.startswith("A_c: "))
-    assert sentence.endswith(f"(largest error 40.00% +/- {100 * abs(0.7 / 0.499 - 0.7 / 0.5):.1g} % (the solid's "
+    assert sentence.endswith(f"(largest error 40.00% +/- {100 * abs(0.7 / 0.499 - 0.7 / 0.5):.1g}% (the solid's "
                              "mesh)).")
 
 

@@ -229,7 +229,7 @@ def slopes(comparisons) -> dict:
 
 def _stated(error: float, uncertainty: float) -> str:
     """An error in percent with the solid's uncertainty beside it, if known."""
-    return f"{error:.2%}" + ("" if np.isnan(uncertainty) else f" +/- {100.0 * uncertainty:.1g} % (the solid's mesh)")
+    return f"{error:.2%}" + ("" if np.isnan(uncertainty) else f" +/- {100.0 * uncertainty:.1g}% (the solid's mesh)")
 
 
 def verdict(comparisons) -> list[str]:
