@@ -66,7 +66,7 @@ QUANTITIES = INFLATION + COMPRESSION
 #: the comparison name of its checks
 COMPARISON = "membrane (shooting) vs solid"
 #: the solid's mesh refined along all three of its axes at once: its change is the solid's own uncertainty
-REFINED = {"elements": 2 * DEFAULT_ELEMENTS, "layers": 2 * DEFAULT_LAYERS, "corner": 0.5 * DEFAULT_CORNER}
+REFINED: dict = {"elements": 2 * DEFAULT_ELEMENTS, "layers": 2 * DEFAULT_LAYERS, "corner": 0.5 * DEFAULT_CORNER}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -141,10 +141,11 @@ def compare(number: int, pressure_kpa: float, forces: tuple[float, ...], refine:
     seconds = time.perf_counter() - start
     m0 = membrane[0].inflated
     m_top0 = m0.height + _half_thickness(m0, t)
-    values = {("V", None): (m0.volume, continuum["V", None]),
-              ("V (membrane's lower surface)", None): (m0.volume_lower(t), continuum["V", None]),
-              ("H0 (mid-surface)", None): (m0.height, continuum["H0 (mid-surface)", None]),
-              ("H0 (upper surface)", None): (m_top0, continuum["H0 (upper surface)", None])}
+    values: dict[tuple[str, float | None], tuple[float, float]] = {
+        ("V", None): (m0.volume, continuum["V", None]),
+        ("V (membrane's lower surface)", None): (m0.volume_lower(t), continuum["V", None]),
+        ("H0 (mid-surface)", None): (m0.height, continuum["H0 (mid-surface)", None]),
+        ("H0 (upper surface)", None): (m_top0, continuum["H0 (upper surface)", None])}
     for f, m in zip(forces, membrane, strict=True):
         values["P/P_I", f] = (m.pressure_ratio, continuum["P/P_I", f])
         values["H/H0 (mid-surface)", f] = (m.height_ratio, continuum["H/H0 (mid-surface)", f])
