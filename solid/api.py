@@ -94,8 +94,9 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     elements : int, optional
         Elements along the radius, ``MIN_ELEMENTS`` to ``MAX_ELEMENTS`` (graded towards the clamp).
     corner : float, optional
-        The length of the clamp's corner elements, in thicknesses T (``mesh``: a regularisation of the clamp's
-        singular corner, which the answer depends on; ``MIN_CORNER`` to ``MAX_CORNER``).
+        The length of the clamp's corner elements, in thicknesses T (``mesh``: with the jaw, a mesh of its
+        rounded edge; without it, a regularisation of the singular corner that the answer depends on;
+        ``MIN_CORNER`` to ``MAX_CORNER``).
     tol : float, optional
         Newton tolerance on the displacement increment, units R, at most 1e-4.
     clamp_radius : float, optional
