@@ -59,6 +59,29 @@ class Control:
         return self.active is not None
 
 
+class _Blocks:
+    """The Jacobian's blocks, each a sparse matrix placed at a (row, column) offset, gathered as one list of
+    triplets and built once, on the kept unknowns only (``build``): no block matrix is formed and sliced."""
+
+    def __init__(self):
+        self.rows, self.cols, self.vals = [], [], []
+
+    def add(self, row: int, col: int, block) -> None:
+        """Place ``block`` (any scipy sparse matrix) with its (0, 0) at (``row``, ``col``)."""
+        coo = sp.coo_matrix(block)
+        self.rows.append(coo.row + row)
+        self.cols.append(coo.col + col)
+        self.vals.append(coo.data)
+
+    def build(self, keep: np.ndarray, size: int) -> sp.csc_matrix:
+        """The CSC matrix of the blocks' sum on the unknowns ``keep`` (in that order) of the ``size`` in all."""
+        index = np.full(size, -1)
+        index[keep] = np.arange(keep.size)
+        rows, cols = index[np.concatenate(self.rows)], index[np.concatenate(self.cols)]
+        kept = (rows >= 0) & (cols >= 0)
+        return sp.csc_matrix((np.concatenate(self.vals)[kept], (rows[kept], cols[kept])), shape=(keep.size,) * 2)
+
+
 def system(model: Model, y: np.ndarray, control: Control):
     """The residual R(y) and the Jacobian (sparse, CSC) restricted to the free unknowns; the index of those."""
     u, p = split(model, y)
@@ -67,15 +90,20 @@ def system(model: Model, y: np.ndarray, control: Control):
     r_u, r_p, k_uu, k_pu = solid(model, u, p)
     volume, dv, d2v = fluid(model, u)
     r_u = r_u - pf * dv
-    k_uu = k_uu - pf * d2v
-    dv_col = sp.csc_matrix(dv[:, None])
+    blocks = _Blocks()
+    blocks.add(0, 0, k_uu)
+    blocks.add(0, 0, -pf * d2v)
+    blocks.add(0, n, k_pu.T)
+    blocks.add(n, 0, k_pu)
+    blocks.add(0, size, sp.coo_matrix(-dv[:, None]))
     if control.pressure is not None:
-        fluid_row, fluid_res, fluid_diag = sp.csr_matrix((1, n)), pf - control.pressure, 1.0
+        fluid_res, fluid_diag = pf - control.pressure, 1.0
     else:
         assert control.volume is not None  # a Control holds the pressure or the volume
         target, slope = control.volume(pf)
-        fluid_row, fluid_res, fluid_diag = sp.csr_matrix(dv[None, :]), volume - target, -slope
-    blocks = [[k_uu, k_pu.T, -dv_col], [k_pu, None, None], [fluid_row, None, sp.csr_matrix([[fluid_diag]])]]
+        fluid_res, fluid_diag = volume - target, -slope
+        blocks.add(size, 0, sp.coo_matrix(dv[None, :]))
+    blocks.add(size, size, sp.coo_matrix([[fluid_diag]]))
     residual = [r_u, r_p, [fluid_res]]
     if control.active is not None:
         c = contact.rows(model, control.surface, y, control.active)
@@ -83,20 +111,22 @@ def system(model: Model, y: np.ndarray, control: Control):
         residual[0] = residual[0] + c.E @ y[size + 2:size + 2 + m]
         residual.append([y[size + 1] - control.height] if control.force is None else [c.force - control.force])
         residual.append(c.residual)
-        # the plate's row: d/dh and d/dlambda of h - H, or of F - F_given
-        plate = (sp.csr_matrix(np.r_[1.0, np.zeros(m)][None, :]) if control.force is None
-                 else sp.csr_matrix(np.r_[c.f_h, c.dgdh][None, :]))
-        for row in blocks:
-            row.extend([None, None])
-        blocks[0][4] = c.E
+        blocks.add(0, size + 2, c.E)
+        blocks.add(size + 2, 0, c.E.T)
+        blocks.add(size + 2, size + 1, sp.coo_matrix(-c.dgdh[:, None]))
         if c.k_uu is not None:  # a curved indenter: its normal turns with the node and with h
-            blocks[0][0] = blocks[0][0] + c.k_uu
-            blocks[0][3] = c.k_uh
-        blocks.append([None if control.force is None else c.f_u, None, None, plate[:, :1], plate[:, 1:]])
-        blocks.append([c.E.T, None, None, sp.csr_matrix(-c.dgdh[:, None]), None])
-    jac = sp.bmat(blocks, format="csc")
+            blocks.add(0, 0, c.k_uu)
+            blocks.add(0, size + 1, c.k_uh)
+        # the plate's row: d/dh and d/dlambda of h - H, or of F - F_given
+        if control.force is None:
+            blocks.add(size + 1, size + 1, sp.coo_matrix([[1.0]]))
+        else:
+            if c.f_u is not None:
+                blocks.add(size + 1, 0, c.f_u)
+            blocks.add(size + 1, size + 1, sp.coo_matrix([[c.f_h]]))
+            blocks.add(size + 1, size + 2, sp.coo_matrix(c.dgdh[None, :]))
     res = np.concatenate([np.atleast_1d(np.asarray(part, dtype=float)) for part in residual])
     if control.jaw is not None:
-        res, jac = bordered(model, y, control.jaw, res, jac)
+        res = bordered(model, y, control.jaw, res, blocks)
     keep = np.concatenate([model.free, np.arange(size, res.size)])
-    return res[keep], jac[keep][:, keep], keep
+    return res[keep], blocks.build(keep, res.size), keep

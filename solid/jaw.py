@@ -104,21 +104,22 @@ def multipliers(model, y: np.ndarray) -> np.ndarray:
     return y[y.size - candidates(model).size:]
 
 
-def bordered(model, y: np.ndarray, jaw: Jaw, res: np.ndarray, jac: sp.spmatrix):
-    """The residual and Jacobian (over [u, p, p_f, (h, lambda)], in that order, before the clamp's dofs are
-    removed) bordered by the jaw's rows and columns (module docstring)."""
+def bordered(model, y: np.ndarray, jaw: Jaw, res: np.ndarray, blocks) -> np.ndarray:
+    """The residual (over [u, p, p_f, (h, lambda)], in that order, before the clamp's dofs are removed) bordered
+    by the jaw's rows; their Jacobian's blocks added to ``blocks`` (``equations``: ``add(row, col, block)``)
+    (module docstring)."""
     nodes, active, mu = candidates(model), jaw.mask(model), multipliers(model, y)
     size = res.size
     g, grad, hess = _gaps(model, jaw, y)
     on = np.flatnonzero(active)
     E, k_uu = contact.node_terms(model, nodes[on], mu[on], grad[on], hess[on])
-    E = sp.csc_matrix((E.data, E.indices, E.indptr), shape=(size, on.size))  # the u rows first: padded below
-    cols = sp.csc_matrix((np.ones(on.size), (np.arange(on.size), on)), shape=(on.size, active.size))
-    border = E @ cols  # (size, J): the active candidates' columns, the inactive ones empty
-    k_uu.resize((size, size))
-    out = np.concatenate([res + border @ mu, np.where(active, -g, mu)])
-    diagonal = sp.diags((~active).astype(float))
-    return out, sp.bmat([[jac + k_uu, border], [border.T, diagonal]], format="csc")
+    border = sp.coo_matrix(E)
+    border = sp.coo_matrix((border.data, (border.row, on[border.col])), shape=(E.shape[0], active.size))
+    blocks.add(0, 0, k_uu)
+    blocks.add(0, size, border)
+    blocks.add(size, 0, border.T)
+    blocks.add(size, size, sp.diags((~active).astype(float)))
+    return np.concatenate([res + np.pad(border @ mu, (0, size - E.shape[0])), np.where(active, -g, mu)])
 
 
 def updated(model, y: np.ndarray, jaw: Jaw, loose: float) -> Jaw | None:
