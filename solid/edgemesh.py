@@ -38,8 +38,10 @@ linear interpolation for p (exact on Q1's fields, order 2). The contact forces a
 divided by its node's share of the contact area (the consistent weights of a Q2 line, h/6, 4h/6, h/6
 of an element, times 2 pi r), the density interpolated linearly to the new upper surface's nodes inside
 the edge estimate (the new active set), and multiplied back by their shares (exact on a uniform
-density). The fluid's pressure and the plate's height carry over as they are. Newton then solves the
-same load from there (``newton.contact``, the active set updated as ever): on the plate the Jacobian
+density). The fluid's pressure and the plate's height carry over as they are. The new nodes up to the old
+active set's last one are marked as known to touch (``Control.known``: at the same load to the old mesh's
+error, at a larger load the contact only spreads), which bounds the active set's search from below. Newton then
+solves the load from there (``newton.contact``, the active set updated as ever): on the plate the Jacobian
 does not depend on the multipliers, so the first Newton step sets them; the transfer's error in u is the
 old mesh's interpolation error, so Newton starts within the old discretisation error of the new state.
 
@@ -58,9 +60,11 @@ the edge is the global solution's, of higher order). Along a curve (``ahead``) t
 before each next load to where the edge is predicted to be, the state carried there unsolved (the march
 to the load solves it): A_c ~ Fhat / (P/P_I) (the flat plate's F = P A_c of the membrane), so rho_c^2
 scales by (F' / F)(P / P'), P' extrapolated from the last two states (the first contact's, no force at
-P_I, the first of them), and r_c is read off the state's upper surface at that rho_c. A prediction
-within the core spares the move after the solve: on the headline curve none is moved after its solve
-but the first.
+P_I, the first of them), and r_c is read off the state's upper surface at that rho_c. The state arrives with
+the nodes inside that predicted edge active: on the headline curve the prediction is within a node or two of
+the solved edge, so the search takes one or two sets where, from the old edge's set, it took five to seven (the
+10-force curve: 81 Newton iterations instead of 127). A prediction within the core spares the move after the
+solve: on the headline curve none is moved after its solve but the first.
 
 Measured (``tests/test_solid_edgemesh.py``). Sample 4's pocket (alpha = 47/160, Phat_I = 0.0503, T/R =
 0.08, a liquid, the plate) at Fhat = 0.08, 0.16 and 0.32: the default mesh's contact area within +0.15 %,
@@ -193,7 +197,7 @@ def transfer(old: Model, new: Model, y: np.ndarray, control: Control, edge: floa
     """The state y of ``control`` on ``old`` carried to ``new`` (the same heights, the radial nodes moved):
     u by each line's piecewise quadratic, p linearly, the contact forces by their densities (module
     docstring); the active set the new upper-surface nodes within r = ``edge`` (R, the contact edge's
-    estimate; the pole's node at least)."""
+    estimate; the pole's node at least), those up to the old set's last node known to touch (``Control.known``)."""
     out = np.zeros(new.size + y.size - old.size)
     for component in (0, 1):
         for (z, r, dofs), (_, r_new, dofs_new) in zip(_lines(old, component), _lines(new, component), strict=True):
@@ -208,13 +212,14 @@ def transfer(old: Model, new: Model, y: np.ndarray, control: Control, edge: floa
     out = out[:new.size]
     active = np.asarray(control.active)
     new_active = np.flatnonzero(new.top_r <= edge + 1e-12)
+    known = int(np.count_nonzero(new.top_r <= old.top_r[active.max()] + 1e-12))
     density = y[old.size + 2:old.size + 2 + active.size] / _weights(old.top_r)[active]
     lam = np.interp(new.top_r[new_active], old.top_r[active], density) * _weights(new.top_r)[new_active]
     out = np.concatenate([out, y[old.size:old.size + 2], lam])
     if control.jaw is None:
-        return out, dataclasses.replace(control, active=new_active)
+        return out, dataclasses.replace(control, active=new_active, known=known)
     mu, clamp = _jaw_carried(old, new, y[old.size + 2 + active.size:], control.jaw)
-    return np.concatenate([out, mu]), dataclasses.replace(control, active=new_active, jaw=clamp)
+    return np.concatenate([out, mu]), dataclasses.replace(control, active=new_active, jaw=clamp, known=known)
 
 
 def _jaw_carried(old: Model, new: Model, mu: np.ndarray, clamp: Jaw) -> tuple[np.ndarray, Jaw]:
@@ -245,7 +250,8 @@ def _size(model: Model) -> float:
 
 def ahead(model: Model, y: np.ndarray, control: Control, force: float, before: tuple[float, float] | None):
     """The state y of ``control`` (in contact under a force) carried to the mesh clustered about the edge it is
-    predicted to have at the force ``force`` (mu_0 R^2), unsolved (the march to that force solves it); ``before``
+    predicted to have at the force ``force`` (mu_0 R^2), the nodes inside that edge active, unsolved (the march to
+    that force solves it); ``before``
     the force and the fluid's pressure of the state before it, if any (module docstring). (model, y, control)."""
     active = np.asarray(control.active)
     r_c = edge_radius(model, y, active, control.surface)
@@ -258,7 +264,7 @@ def ahead(model: Model, y: np.ndarray, control: Control, force: float, before: t
     if model.cluster is not None and abs(edge - model.cluster[0]) <= STOP * model.cluster[1]:
         return model, y, control
     new = remeshed(model, edge, _size(model))
-    return (new, *transfer(model, new, y, control, r_c))
+    return (new, *transfer(model, new, y, control, edge))
 
 
 def follow(model: Model, y: np.ndarray, control: Control, tol: float):

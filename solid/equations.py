@@ -44,7 +44,9 @@ class Control:
     """What is held: the fluid's ``pressure`` (units mu_0), or its ``volume(p_f) -> (V, dV/dp_f)``; in contact,
     the ``active`` upper-surface nodes (indices of ``Model.top_z``) and the plate's ``force`` (mu_0 R^2) or
     ``height`` (R); the indenter's ``surface`` (``contact``: the flat plate or a sphere); the clamp's upper
-    ``jaw`` with its own active set (``jaw``; None: no jaw, the sheet only fixed at the clamp)."""
+    ``jaw`` with its own active set (``jaw``; None: no jaw, the sheet only fixed at the clamp); ``known``, a hint
+    for the search of the active set (``newton.contact``): the first ``known`` upper-surface nodes, a disc, touch
+    the indenter at this load (0: none known)."""
 
     pressure: float | None = None
     volume: Callable[[float], tuple[float, float]] | None = None
@@ -53,6 +55,7 @@ class Control:
     height: float | None = None
     surface: contact.Surface = contact.PLATE_SURFACE
     jaw: Jaw | None = None
+    known: int = 0
 
     @property
     def contact(self) -> bool:

@@ -95,23 +95,42 @@ def _linear_solve(jac, res: np.ndarray, scale: np.ndarray) -> np.ndarray:
     return scale * spl.spsolve(jac, scale * res, permc_spec="MMD_AT_PLUS_A")
 
 
-def _bisect(active: np.ndarray, new: np.ndarray, joining: np.ndarray, all_pressing: bool, bounds: list):
-    """The next active set: the disc of the nodes before n, n halfway between ``bounds`` (the largest disc
-    edge known too small, the smallest known too large, updated here if the set ``active`` just solved is a
-    disc: too small if a node beyond its edge is above the plate, too large if none is and a force in it is
-    negative), while the bounds leave an edge between them; else the rules' set ``new``. A disc is the nodes
-    1 .. n - 1 with or without the pole's (whose consistent force, at r = 0, is zero to the discretisation: it
-    may leave), which keeps its place in ``new``; the disc of one node is the pole's. The bounds only close in, so
-    the bisection ends."""
-    if np.array_equal(active[active > 0], np.arange(1, active.max() + 1)):
+def _is_disc(nodes: np.ndarray) -> bool:
+    """Whether the upper-surface nodes ``nodes`` (sorted) are a disc: 1 .. n - 1, with or without the pole's."""
+    return bool(np.array_equal(nodes[nodes > 0], np.arange(1, nodes.max() + 1)))
+
+
+@dataclasses.dataclass
+class _Bracket:
+    """The search for a disc's edge (``_bisect``): the largest disc edge known too small (``low``), the smallest
+    known too large (``high``, None: none yet), and the updates of the set made so far."""
+
+    low: int = 0
+    high: int | None = None
+    updates: int = 0
+
+
+def _bisect(active: np.ndarray, new: np.ndarray, joining: np.ndarray, all_pressing: bool, bracket: _Bracket):
+    """The next active set: the disc of the nodes before n, n halfway in ``bracket`` (updated here if the set
+    ``active`` just solved is a disc: too small if a node beyond its edge is above the plate, too large if none is
+    and a force in it other than the pole's is negative), while the bracket leaves an edge inside it; else the
+    rules' set ``new``. The first update takes the rules' set if it is a disc inside the bracket: from a good guess
+    (a state carried to the next load with the edge it is predicted to have, ``edgemesh.ahead``) it is the next
+    node or two, where a halving would go far back. A disc is the nodes 1 .. n - 1 with or without the pole's
+    (whose consistent force, at r = 0, is zero to the discretisation: it may leave), which keeps its place in
+    ``new``; the disc of one node is the pole's. The bracket only closes in, so the bisection ends."""
+    if _is_disc(active):
         edge = active.max() + 1
         if joining.size and joining.max() >= edge:
-            bounds[0] = max(bounds[0], edge)
+            bracket.low = max(bracket.low, edge)
         elif not all_pressing:
-            bounds[1] = edge if bounds[1] is None else min(bounds[1], edge)
-    if bounds[1] is None or bounds[1] - bounds[0] < 2:
+            bracket.high = edge if bracket.high is None else min(bracket.high, edge)
+    bracket.updates += 1
+    if bracket.high is None or bracket.high - bracket.low < 2:
         return new
-    disc = np.union1d(new[:1][new[:1] == 0], np.arange(1, (bounds[0] + bounds[1]) // 2))
+    if bracket.updates == 1 and _is_disc(new) and bracket.low < new.max() + 1 < bracket.high:
+        return new
+    disc = np.union1d(new[:1][new[:1] == 0], np.arange(1, (bracket.low + bracket.high) // 2))
     return disc if disc.size else np.zeros(1, dtype=int)
 
 
@@ -125,20 +144,22 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     joins. The contact of a flat plate, a sphere or a convex profile is a disc: while the sets tried are the
     first n nodes from the pole, n is bisected between the largest set found too small (a node beyond it inside the
     indenter) and the smallest found too large (a negative force in it), instead of the one or two nodes the
-    rules above remove per update after an overshoot (``_bisect``). The clamp's upper jaw's set, if ``control``
+    rules above remove per update after an overshoot (``_bisect``); ``control.known`` nodes from the pole, if
+    given, are taken as touching (the bisection's lower end: a wrong hint only ends the bisection early, the rules
+    then settle the set). The clamp's upper jaw's set, if ``control``
     has one (``jaw``), is updated alongside by the same rules (without the bisection), and settled alone when
     there is no indenter (``control.active`` None: inflation).
     """
     total, loose = 0, max(tol, SWEEP_TOL)
-    bounds, step = [0, None], max(tol, SWEEP_STEP)
+    bracket, step = _Bracket(low=max(control.known - 1, 0)), max(tol, SWEEP_STEP)
     for sweep in range(MAX_SWEEPS):
         y, iterations = solve(model, y, control, step if sweep < MAX_SWEEPS - 1 else tol)
         total += iterations
         held = None if control.jaw is None else updated(model, y, control.jaw, loose)
-        moved = None if control.active is None else _indenter(model, y, control, loose, bounds)
+        moved = None if control.active is None else _indenter(model, y, control, loose, bracket)
         if moved is None and held is None:
             if step <= tol:
-                return y, control, total
+                return y, dataclasses.replace(control, known=0), total
             step = tol  # the set holds: Newton to the tolerance, and the set checked once more there
             continue
         step = max(tol, SWEEP_STEP)
@@ -149,7 +170,7 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     raise ConvergenceError(f"the contact's active set did not settle in {MAX_SWEEPS} updates")
 
 
-def _indenter(model: Model, y: np.ndarray, control: Control, loose: float, bounds: list):
+def _indenter(model: Model, y: np.ndarray, control: Control, loose: float, bracket: _Bracket):
     """The state and control with the indenter's next active set (``contact``'s rules, ``_bisect``), or None
     if the set of ``control`` holds at y."""
     size = model.size
@@ -162,7 +183,7 @@ def _indenter(model: Model, y: np.ndarray, control: Control, loose: float, bound
     joining = np.setdiff1d(np.flatnonzero(gap < -loose), active)
     if keep.all() and joining.size == 0:
         return None
-    new = _bisect(active, np.union1d(active[keep], joining), joining, bool(keep.all()), bounds)
+    new = _bisect(active, np.union1d(active[keep], joining), joining, bool(keep[active > 0].all()), bracket)
     forces = dict(zip(active[keep], lam[keep], strict=True))
     y = np.concatenate([y[:size + 2], [forces.get(k, 0.0) for k in new], y[size + 2 + active.size:]])
     return y, dataclasses.replace(control, active=new)

@@ -7,6 +7,8 @@ pressure, so int (J - 1) dV = 0 is one of the constraint's equations); the conta
 complementary (active nodes on the plate with forces >= 0, the rest below it).
 """
 
+import dataclasses
+
 import numpy as np
 import pytest
 from pocket.solid import DEFAULT_CORNER, compression, inflation, kinematics, laws, mesh, model, post
@@ -121,6 +123,37 @@ def test_the_bisected_active_set_is_the_update_rules_set(pressed, monkeypatch):
     np.testing.assert_array_equal(control_plain.active, control.active)
     # both converged to 1e-10 R in the displacement increment: states agree to a few times that
     assert np.abs(y_plain[:m.size + 2] - y[:m.size + 2]).max() <= 1e-9 * max(1.0, np.abs(y).max())
+
+
+@pytest.mark.parametrize("known", ["right", "too_many"])
+def test_a_disc_known_in_contact_only_shortens_the_search(pressed, known):
+    """The hint ``Control.known`` (the first nodes known to touch the plate, carried to the next load by
+    ``edgemesh.transfer``) narrows the search of the active set but does not decide it: pressed on from
+    Fhat = 0.5 to 0.6, the state and its set are the same with no hint, the right one (the disc in contact at
+    0.5, still pressed at 0.6) and a wrong one (ten nodes more than touch at 0.6), to the Newton tolerance."""
+    m, y, control, _ = pressed
+    unit = np.pi * 3.0 * T * PHAT
+    plain, plain_control, _ = compression.to_force(m, y, control, 1.2 * FORCE * unit, unit, TOL)
+    count = len(control.active) if known == "right" else len(plain_control.active) + 10
+    hinted, hinted_control, _ = compression.to_force(m, y, dataclasses.replace(control, known=count),
+                                                     1.2 * FORCE * unit, unit, TOL)
+    np.testing.assert_array_equal(hinted_control.active, plain_control.active)
+    assert hinted_control.known == 0  # a hint holds for one load: the state returned carries none
+    # both converged to 1e-10 R in the displacement increment: states agree to a few times that
+    assert np.abs(hinted[:m.size + 2] - plain[:m.size + 2]).max() <= 1e-9 * max(1.0, np.abs(plain).max())
+
+
+def test_the_first_update_takes_the_rules_disc_and_later_ones_halve():
+    """``newton._bisect`` on made-up sets: a disc of 33 nodes too large (the last node's force negative) with
+    the disc of 32 as the rules' set: the first update takes it, a later one halves the bracket instead."""
+    from pocket.solid.newton import _bisect, _Bracket
+
+    disc, rules, none = np.arange(33), np.arange(32), np.array([], dtype=int)
+    first = _Bracket(low=20)
+    np.testing.assert_array_equal(_bisect(disc, rules, none, False, first), rules)
+    assert (first.low, first.high) == (20, 33)
+    later = _Bracket(low=20, updates=1)
+    np.testing.assert_array_equal(_bisect(disc, rules, none, False, later), np.arange(26))  # edge (20 + 33) // 2
 
 
 def test_the_sheet_keeps_its_volume(pressed):
