@@ -115,12 +115,12 @@ def _vector(local: np.ndarray, dofs: np.ndarray, size: int) -> np.ndarray:
     return np.bincount(dofs.T.ravel(), weights=local.ravel(), minlength=size)
 
 
-def _matrix(local: np.ndarray, rows: np.ndarray, cols: np.ndarray, shape: tuple[int, int]) -> sp.csr_matrix:
+def _matrix(local: np.ndarray, rows: np.ndarray, cols: np.ndarray, shape: tuple[int, int]) -> sp.coo_matrix:
     """The global matrix of element matrices ``local`` (e, i, j), rows on the dofs ``rows`` (i, e) and columns
-    on ``cols`` (j, e)."""
+    on ``cols`` (j, e): COO, its duplicates summed where it is built into the Jacobian (``equations``)."""
     r = np.broadcast_to(rows.T[:, :, None], local.shape).ravel()
     c = np.broadcast_to(cols.T[:, None, :], local.shape).ravel()
-    return sp.coo_matrix((local.ravel(), (r, c)), shape=shape).tocsr()
+    return sp.coo_matrix((local.ravel(), (r, c)), shape=shape)
 
 
 def pressure_moments(tab: Tables, f: np.ndarray) -> np.ndarray:
@@ -154,7 +154,7 @@ def solid(tab: Tables, law, u: np.ndarray, p: np.ndarray):
 
 
 def fluid(tab: Tables, u: np.ndarray):
-    """The cavity's volume V (R^3) under the lower surface, V' (N_u,) and V'' (N_u x N_u, CSR) at u."""
+    """The cavity's volume V (R^3) under the lower surface, V' (N_u,) and V'' (N_u x N_u, COO) at u."""
     ur, uz, dur = _at_points(tab.facet, tab.facet_dofs, u)
     rho, drho, w = tab.facet_r + ur, 1.0 + dur, tab.facet_weight
     zero = np.zeros_like(rho)
