@@ -51,6 +51,8 @@ own, lambda_2 = rho/r.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from pocket.core.states import Profile
@@ -109,7 +111,8 @@ def clamp_stretch(model: Model, y: np.ndarray, mode: str, rows: np.ndarray) -> f
 
 def edge_tension(model: Model, y: np.ndarray) -> float:
     """T_1 (units E T) at the contact edge of the converged FITTED state y, from the contact zone's flux (module
-    docstring): the edge vertex's rho row over the zone's ``model.flat`` elements, over 2 pi rho(a)."""
+    docstring): the edge vertex's rho row over the zone's ``model.flat`` elements, over 2 pi rho(a); NaN where
+    rho(a) <= 0 (a degenerate state, which the states' own checks refuse)."""
     u, scalars = split(model, y)
     whole, k = placement(model, y, FITTED), model.flat
     assert whole.velocity is not None, "a FITTED placement follows the edge"
@@ -119,7 +122,8 @@ def edge_tension(model: Model, y: np.ndarray) -> float:
     at = edge(model)
     rows = kernel.evaluate(model.law, model.ref, zone, u[: at + 2], float(scalars[0]), tangent=False,
                            geometry=model.geometry).residual
-    return float(rows[at]) / (2.0 * np.pi * float(u[at]))
+    radius = float(u[at])
+    return float(rows[at]) / (2.0 * np.pi * radius) if radius > 0.0 else math.nan
 
 
 def profile(model: Model, y: np.ndarray, mode: str, *, pole: float, clamp: float,

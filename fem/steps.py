@@ -110,9 +110,9 @@ def check_range(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> None:
 
 def check_edge(model: Model, y: np.ndarray) -> None:
     """OutOfRangeError if the meridional tension at the contact edge of the FITTED state y is not positive (module
-    docstring)."""
+    docstring). A NaN (a degenerate edge, rho(a) <= 0) is left to the states' own checks (``ConvergenceError``)."""
     tension = edge_tension(model, y)
-    if not tension > 0.0:
+    if tension <= 0.0:
         raise OutOfRangeError(f"{CAPSULE_EDGE} (T_1 = {tension:.3g} E T at the contact edge of the finite elements' "
                               f"state, at Phat = {y[model.dofs]:.6g})")
 

@@ -15,11 +15,15 @@ import re
 
 import numpy as np
 import pytest
+from pocket.fem import capsule, fitted, model, post
+from pocket.fem.api import default_mesh
+from pocket.fem.newton import Tolerances
 from pocket.shooting.capsule import _END_RTOL
 
 from pocket import fem, shooting
 from pocket.cli import main
 from pocket.core.errors import CAPSULE_EDGE, OutOfRangeError, exit_status
+from pocket.core.geometries import CAPSULE
 from pocket.core.materials import as_material
 
 RUBBER = as_material(0.0)  # neo-Hookean (Mooney-Rivlin alpha = 0)
@@ -39,6 +43,30 @@ def fem_end(force: float = PAST, **options) -> tuple[float, float]:
     lo, hi = (float(v) for v in found.groups())
     assert lo < hi < force
     return lo, hi
+
+
+def _edge_tension(elements: int, rubber, pressure: float, force: float) -> float:
+    """The finite elements' T_1 at the contact edge (``fem.post.edge_tension``) of the capsule pressed by ``force``
+    on the default mesh of ``elements`` elements, a liquid inside."""
+    m = model.discretize(rubber, default_mesh(elements), 2, 1e5, CAPSULE)
+    tol = Tolerances(1e-10, 1e-10)
+    y_i, _ = capsule.inflate(m, pressure, tol)
+    fill = model.Control(volume=model.forms(m, y_i, model.FREE).volume)
+    y, _ = fitted.first_contact(m, y_i, fill, fitted.A_FIRST, tol)
+    y, _ = fitted.force_path(m, y, fill, force * np.pi * pressure, tol)
+    return post.edge_tension(m, y)
+
+
+def test_the_edge_tension_is_the_shooting_solvers():
+    """The edge's T_1 the finite elements watch, the contact zone's flux over 2 pi rho(a), on a taut capsule (Mooney-
+    Rivlin alpha = 0.2, Phat_I = 0.2, Fhat = 0.5) against the shooting state's T_1 at its last contact point: within
+    the finite elements' error, estimated as the shift from the mesh of half as many elements (a flux converges at
+    least at first order, the error of the finer mesh at most that shift)."""
+    reference = shooting.compress(0.2, 0.2, 0.5, geometry="capsule")
+    shot = reference.profile.tension_1[np.flatnonzero(reference.profile.contact)[-1]]
+    coarse, fine = (_edge_tension(n, 0.2, 0.2, 0.5) for n in (64, 128))
+    print(f"T_1 at the edge: shooting {shot!r}, finite elements {fine!r} (128 elements), {coarse!r} (64)")
+    assert abs(fine / shot - 1) <= abs(fine / coarse - 1)
 
 
 def test_a_force_past_the_end_is_refused_naming_the_slack_edge():
