@@ -27,10 +27,16 @@ tangent contact at the edge; the states are ``capsulestates``'.
 
 The end of the range. Nothing like the pocket's clamp ends it. Where the pole's stretch under the plate falls
 below that of the unstressed rubber (1 / lambda_p, at a low Phat_I or with a yielding gas) the patch's tension is
-compressive: such states are returned flagged wrinkled (``pocket.core.states``), as the shooting solver's are. Past
-the force at which the meridional tension at the contact edge vanishes (the end the shooting solver quotes) the free
-part carries a compressive meridional tension too: this solver does not watch for it, and such states come back
-flagged wrinkled.
+compressive: such states are returned flagged wrinkled (``pocket.core.states``), as the shooting solver's are. As
+the force rises the slack can spread to the contact edge, where the meridional tension T_1 then vanishes and the
+free part would leave the plate with the unbounded curvature P / T_1: no membrane state lies beyond
+(``pocket.core.errors.CAPSULE_EDGE``, the end the shooting solver quotes). The free part's vertical balance keeps
+T_1 positive everywhere off the plate but at the edge, so the edge is what is watched: every converged state's T_1
+there, from the contact zone's flux (``post.edge_tension``), must be positive, else the step is outside the model
+(``steps.check_edge``, an ``OutOfRangeError``). The discrete states go on past the end, their edge compressive;
+the continuation (``continuation``) cuts the step that lands there down to its smallest and quotes the end between
+the last force (or plate height) it solved and the nearest beyond it it tried, on the default mesh within a few
+1e-6 of the shooting solver's end. Under the plate a compressive tension is a slack patch, not an end.
 """
 
 from __future__ import annotations

@@ -21,7 +21,8 @@ A_c, as Fhat.
 
 Checks: every number finite, every stretch positive, eta(pi / 2) = 0, the volume at its target (or the gas
 law), the plate reaction and P A_c equal to the force, 0 < a_c < pi / 2. A state that fails one is a solver
-failure (``ConvergenceError``), never returned.
+failure (``ConvergenceError``), never returned. A state past the end of the range (its contact edge slack) never
+reaches them: the solve that finds it says so (``steps.check_edge``, ``OutOfRangeError``).
 """
 
 from __future__ import annotations

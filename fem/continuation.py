@@ -7,8 +7,9 @@ few iterations is doubled. Below ``min_step`` the stepping gives up with a
 ``ConvergenceError`` naming the load it reached.
 
 A step that lands outside the model (``OutOfRangeError``: the free part below
-the clamp plane) is cut like a failed one: a long step's Newton iterates can
-wander out of the model although the load itself is inside it. Only a step
+the clamp plane, a capsule's contact edge slack: ``steps.check_range``) is cut
+like a failed one: a long step's Newton iterates can wander out of the model
+although the load itself is inside it. Only a step
 shorter than ``min_step`` beyond the last converged load that still lands
 outside is reported as outside the model, in the words of
 ``pocket.core.errors.beyond_range``: the range then ends between that load and

@@ -1,15 +1,32 @@
 """Shared solving steps: one controlled solve, the starting dome, landing on a target, locking.
 
 ``solve`` is Newton on the bordered system (``model``, ``newton``) followed by
-the range check: a free part below the clamp plane is outside the membrane
-model (``OutOfRangeError``). Under pressure the free meridian is convex, so
-as the plate comes down it first reaches the clamp plane at the clamp itself,
-where its tangent turns horizontal (the force where that happens ends the
-model's range); past it the meridian dips below the plane and comes up to the
-clamp. The check is therefore the sign of the tangent's vertical component at
-the clamp, t_eta(1) = (R_eta - pi P) / |(R_rho, R_eta - pi P)| from the clamp
-reaction (``post``: a flux, accurate like the energy), positive meaning
-outside; and, for safety, eta < 0 at any node other than the clamp.
+the range check (``check_range``), which says where a converged state is
+outside the membrane model (``OutOfRangeError``).
+
+A clamped sheet: a free part below the clamp plane. Under pressure the free
+meridian is convex, so as the plate comes down it first reaches the clamp
+plane at the clamp itself, where its tangent turns horizontal (the force where
+that happens ends the model's range); past it the meridian dips below the
+plane and comes up to the clamp. The check is therefore the sign of the
+tangent's vertical component at the clamp, t_eta(1) = (R_eta - pi P) /
+|(R_rho, R_eta - pi P)| from the clamp reaction (``post``: a flux, accurate
+like the energy), positive meaning outside; and, for safety, eta < 0 at any
+node other than the clamp.
+
+A meridian ending on a plane of symmetry (the capsule), pressed by the plate
+(FITTED): a meridional tension at the contact edge that is not positive
+(``check_edge``). The free part's vertical balance, cut at a circle of radius
+rho, 2 pi rho T_1 sin(psi) = pi P (rho^2 - rho(a)^2) (F = pi P rho(a)^2),
+makes T_1 positive wherever the free meridian rises outwards (0 < psi < pi,
+rho > rho(a)); only at the edge, where both sides vanish, can it fall to 0,
+and as it does the free part leaves the plate with the unbounded curvature
+P / T_1: the end of the range (``pocket.core.errors.CAPSULE_EDGE``, where the
+shooting solver ends it too). The discrete states go on past it, their edge
+compressive, so the check is the edge's T_1 from the contact zone's flux
+(``post.edge_tension``: the quadrature points of the first free element, which
+cannot resolve that corner, swing negative well inside the range); under the
+plate a compressive tension is a slack patch, flagged wrinkled, not checked.
 
 ``land`` finds the state where a monitored quantity f(y) (the pressure along a
 volume path) equals a target, given two converged states bracketing it: Newton
@@ -37,15 +54,16 @@ from collections.abc import Callable
 import numpy as np
 
 from pocket.core import smallstrain
-from pocket.core.errors import CLAMP_PLANE, ConvergenceError, OutOfRangeError
+from pocket.core.errors import CAPSULE_EDGE, CLAMP_PLANE, ConvergenceError, OutOfRangeError
 from pocket.core.geometries import Symmetry
 
 from .geometry import node_radii, place
 from .model import FITTED, FREE, Control, Model, conform, edge, fields, linearize, placement
 from .newton import Tolerances, newton
-from .post import reaction
+from .post import edge_tension, reaction
 
-__all__ = ["LOCKING", "check_clamp", "dome", "increment", "land", "near_locking", "scales", "solve"]
+__all__ = ["LOCKING", "check_clamp", "check_edge", "check_range", "dome", "increment", "land", "near_locking",
+           "scales", "solve"]
 
 _ETA_FLOOR = -1e-12  # round-off below the clamp plane is not a range violation
 _SLOPE_FLOOR = 1e-12  # nor a tangent at the clamp rising by round-off
@@ -71,14 +89,32 @@ def solve(model: Model, mode: str, control: Control, guess: np.ndarray, tol: Tol
           multiplier=0.0) -> tuple[np.ndarray, int]:
     """Newton under ``control`` from ``guess`` (its prescribed dofs reset: ``model.conform``); (y, iterations).
 
-    OutOfRangeError if the free part comes below the clamp plane."""
+    OutOfRangeError if the state is outside the membrane model (``check_range``)."""
     guess = conform(model, guess, mode)
     if mode == FITTED or control.force is not None:
         control = dataclasses.replace(control, scale=_plate_scale(model, guess, mode, control))
     result = newton(lambda z: linearize(model, z, mode, control, multiplier), guess, tol, increment(model, mode),
                     scales(model, guess, mode))
-    check_clamp(model, result.y, mode, multiplier)
+    check_range(model, result.y, mode, multiplier)
     return result.y, result.iterations
+
+
+def check_range(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> None:
+    """OutOfRangeError if the state y is outside the membrane model (module docstring): ``check_clamp`` on a clamped
+    sheet, ``check_edge`` on a meridian ending on a plane of symmetry pressed by the plate (FITTED)."""
+    if not isinstance(model.geometry.end, Symmetry):
+        check_clamp(model, y, mode, multiplier)
+    elif mode == FITTED:
+        check_edge(model, y)
+
+
+def check_edge(model: Model, y: np.ndarray) -> None:
+    """OutOfRangeError if the meridional tension at the contact edge of the FITTED state y is not positive (module
+    docstring). A NaN (a degenerate edge, rho(a) <= 0) is left to the states' own checks (``ConvergenceError``)."""
+    tension = edge_tension(model, y)
+    if tension <= 0.0:
+        raise OutOfRangeError(f"{CAPSULE_EDGE} (T_1 = {tension:.3g} E T at the contact edge of the finite elements' "
+                              f"state, at Phat = {y[model.dofs]:.6g})")
 
 
 def check_clamp(model: Model, y: np.ndarray, mode: str, multiplier=0.0) -> None:
