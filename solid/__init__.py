@@ -75,7 +75,8 @@ MAX_ELEMENTS = 2000
 #: inverts an element though the path goes on; on 24, 32 and 64 without the clamp's upper jaw it stops where the
 #: corner folds, 5.43 (``newton``; with the jaw, the default, it reaches 9). Through the thickness P/P_I moved by
 #: 2.8e-4 from two layers to four and by 5.5e-5 from four to eight without the jaw, order ~2.3 (with it, by 9.2e-6
-#: from four to eight); four layers cost twice two. Sample 4's contact area (T/R = 0.08, Fhat 0.08 to 0.32) is within 0.17 % of 256 x 8's on 24 x 4.
+#: from four to eight); four layers cost twice two. Sample 4's contact area (T/R = 0.08, Fhat 0.08 to 0.32) is
+#: within 0.5 % of 256 x 8's on 24 x 4 (-0.49 %, +0.24 %, +0.10 %: tests/test_solid_edgemesh.py, a study).
 #: Inflated (tests/test_solid_thin.py): along the radius V converges to ~1e-6 by 32 elements (the validation's
 #: study: sample 4's V moves by 1e-7 from 16 to 32); through the thickness V moves by ~3e-4 (relative) from two
 #: layers to four, by ~4e-5 from four to eight (the clamp's corners are meshed at T/2 whatever the layers,
