@@ -6,7 +6,8 @@
    curve (Fhat 0.1 .. 1) on the mesh ``MESH``, its median time over 3 repeats (one with --quick) beside the
    FElupe baseline the solid was set against (37-40 s for a 17-force curve on this machine: the ratios
    FElupe / solid per curve and per force). Then the mesh's convergence in P/P_I, measured: the same curve
-   on meshes refined twice along the radius, through the thickness, and both, each its largest relative
+   on meshes refined twice along the radius, through the thickness, and both, and on 256 elements along the
+   radius (the reference the default's accuracy is quoted against), each its largest relative
    difference in P/P_I from ``MESH``'s over the 10 forces, with its time (a mesh whose Newton iteration
    stalls says after which force). --quick skips the refined meshes.
 2. Each state's P/P_I and H/H0 against the membrane's (``pocket.shooting``), and the shooting curve's time.
@@ -36,7 +37,7 @@ FORCES = np.linspace(0.1, 1.0, 10)
 MESH = (solid.DEFAULT_ELEMENTS, solid.DEFAULT_LAYERS)
 #: the refined meshes of the convergence check, with what each refines
 REFINED = (((2 * MESH[0], MESH[1]), "radius x 2"), ((MESH[0], 2 * MESH[1]), "thickness x 2"),
-           ((2 * MESH[0], 2 * MESH[1]), "both x 2"))
+           ((2 * MESH[0], 2 * MESH[1]), "both x 2"), ((256, MESH[1]), "256 elements"))
 #: the issue's FElupe baseline on this machine: a 17-force curve in 37-40 s
 FELUPE_SECONDS, FELUPE_FORCES = (37.0, 40.0), 17
 #: FElupe's mesh (``bench_felupe.MESH``) and the forces it is timed on here
