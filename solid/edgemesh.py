@@ -251,8 +251,8 @@ def _size(model: Model) -> float:
 def ahead(model: Model, y: np.ndarray, control: Control, force: float, before: tuple[float, float] | None):
     """The state y of ``control`` (in contact under a force) carried to the mesh clustered about the edge it is
     predicted to have at the force ``force`` (mu_0 R^2), the nodes inside that edge active, unsolved (the march to
-    that force solves it); ``before``
-    the force and the fluid's pressure of the state before it, if any (module docstring). (model, y, control)."""
+    that force solves it); ``before`` the force and the fluid's pressure of the state before it, if any (module
+    docstring). (model, y, control)."""
     active = np.asarray(control.active)
     r_c = edge_radius(model, y, active, control.surface)
     top_rho = model.top_r + y[model.top_radial]
