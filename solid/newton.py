@@ -154,14 +154,18 @@ def contact(model: Model, y: np.ndarray, control: Control, tol: float) -> tuple[
     given, are taken as touching (the bisection's lower end: a wrong hint only ends the bisection early, the rules
     then settle the set). The clamp's upper jaw's set, if ``control``
     has one (``jaw``), is updated alongside by the same rules (without the bisection), and settled alone when
-    there is no indenter (``control.active`` None: inflation).
+    there is no indenter (``control.active`` None: inflation). A node joins the jaw's set once it is
+    ``SWEEP_TOL`` inside, whatever ``tol``: the inflation path's loosely solved states (``inflation.PATH_TOL``,
+    1e-3 R, 8 % of T at T/R = 0.0125) would otherwise let the corner's nodes sink that far into the jaw, which
+    folds short corner elements; the indenter's threshold is ``tol`` where it is looser (its states are solved to
+    the caller's).
     """
     total, loose = 0, max(tol, SWEEP_TOL)
     bracket, step = _Bracket(low=max(control.known - 1, 0)), max(tol, SWEEP_STEP)
     for sweep in range(MAX_SWEEPS):
         y, iterations = solve(model, y, control, step if sweep < MAX_SWEEPS - 1 else tol)
         total += iterations
-        held = None if control.jaw is None else updated(model, y, control.jaw, loose)
+        held = None if control.jaw is None else updated(model, y, control.jaw, SWEEP_TOL)
         moved = None if control.active is None else _indenter(model, y, control, loose, bracket)
         if moved is None and held is None:
             if step <= tol:

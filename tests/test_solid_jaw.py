@@ -143,6 +143,25 @@ def test_no_node_is_inside_the_jaw_and_its_forces_push_out(jawed):
     assert np.all(np.einsum("ij,ij->i", reaction, outward) > 0.0)
 
 
+def test_no_state_on_the_inflation_path_sinks_into_the_jaw():
+    """The path's states are solved loosely (Newton's step to ``inflation.PATH_TOL``, 1e-3 R: 8 % of T at T/R =
+    0.0125), but the jaw's active set is not: a node joins once it is ``SWEEP_TOL`` inside the jaw, whatever the
+    tolerance, so no free node of any state on the path lies deeper. (Joining at the path's tolerance let the
+    corner's nodes sink up to 0.07 T into the jaw, which folded a mesh of short corner elements.)"""
+    from pocket.solid import api, inflation
+    from pocket.solid.newton import SWEEP_TOL
+
+    t = solid.DEFAULT_THICKNESS
+    section = mesh.section(t, COARSE["elements"], COARSE["layers"], DEFAULT_CORNER)
+    m = model.discretize(t, section, laws.derivatives(MATERIAL.scaled()))
+    deepest = []
+    for _, y, _, held in inflation._path(m, 0.9, 1e-10, api._jaw(DEFAULT_CLAMP_RADIUS, m)):
+        gap = jaw._gaps(m, held, y)[0]
+        deepest.append(gap[~held.mask(m)].min(initial=np.inf))
+    print(f"the deepest free node of each path state inside the jaw: {np.array(deepest) / t} T")
+    assert min(deepest) >= -SWEEP_TOL
+
+
 def test_the_fluid_is_held_by_the_clamp_and_the_jaw(jawed):
     """Global vertical equilibrium: p_f pi R^2 equals the clamp's reaction plus the jaw's downward forces
     -sum_k mu_k dg_k/dz (the clamp's reaction read from its dofs' residual, as under the plate)."""
