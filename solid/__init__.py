@@ -67,9 +67,10 @@ MAX_ELEMENTS = 2000
 #: default elements along the radius and through the thickness: P/P_I converged to 1e-4, through the thickness.
 #: Measured on the headline pocket's 10-force curve under the plate (Fhat 0.1 .. 1, T/R = 0.0125,
 #: benchmarks/bench_solid.py): with the mesh that follows the contact edge (``edgemesh``) and the clamp's upper jaw
-#: (the default) P/P_I moves by 6.4e-5 from 24 to 256 elements, four layers (the nodes meeting the jaw's edge at
-#: slightly different forces on the two meshes; without the jaw by at most 2.5e-6 from 16 to 256, and without the
-#: edge followed it moved 3.6e-5 from 64 to 128: that error was the edge's), and the curve takes 1.5 s on 16
+#: (the default), its wrap zone meshed at the corner's length (``mesh.WRAP``), P/P_I moves by 1e-6 from 24 to 256
+#: elements, four layers (6.4e-5 before the wrap zone was: the sheet's lift-off from the jaw fell inside a long
+#: element; without the jaw by at most 2.5e-6 from 16 to 256, and without the edge followed it moved 3.6e-5 from
+#: 64 to 128: that error was the edge's), and the curve takes 1.5 s on 16
 #: elements, 1.8 s on 24, 2.2 s on 32 and 3.1 s on 64 (idle; 2.4 s on 64 before the edge was followed). 24, not 16:
 #: pressed towards Fhat = 9 (alpha = 0.3, Phat_I = 0.3) the march on 16 stops at Fhat = 5.01 where an iterate
 #: inverts an element though the path goes on; on 24, 32 and 64 without the clamp's upper jaw it stops where the

@@ -349,8 +349,8 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     >>> from pocket import solid
     >>> top = solid.inflate(47 / 160, 0.31, elements=16, layers=2).height
     >>> state = solid.compress_height(47 / 160, 0.31, 0.95 * top, elements=16, layers=2)
-    >>> print(f"{state.height_ratio:.4f}, Fhat = {state.force:.3f}")
-    0.9500, Fhat = 0.021
+    >>> print(f"{state.height_ratio:.4f}, Fhat = {state.force:.4f}")
+    0.9500, Fhat = 0.0215
     >>> solid.compress_height(47 / 160, 0.31, 1.01 * top, elements=16, layers=2)
     Traceback (most recent call last):
         ...

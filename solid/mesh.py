@@ -40,6 +40,17 @@ from the solid (``tests/test_solid_clamp.py``). With the jaw (the default, its e
 wraps the edge instead of folding, the range goes on past Fhat = 9, and the corner's elements, no longer a
 regularisation but a mesh of the edge's radius, change the headline pocket's V by 1e-6 from T/2 to T/4
 (``tests/test_solid_clamp.py``); the default, T/4, spans the edge with two elements.
+
+The jaw's wrap zone. Wrapped round the edge, the sheet presses the jaw's side face too and leaves it a little
+further out: on the headline pocket the upper surface lies on the jaw over about 0.6 to 1.2 T from the clamp,
+longer than the edge's radius. Elements that grow from the corner's length straight away cut that zone
+across: the zone's end, where the sheet lifts off, fell inside an element 0.56 T long (from 0.63 to 1.19 T on
+24 elements), its discrete place jumped from node to node as the mesh changed, and P/P_I moved erratically with
+the radial elements, by 5e-5 and more (-6.3e-5 on 24 elements, +1.8e-6 on 56, -5.1e-5
+on 60, against 128, at Fhat = 0.4 of the headline pocket). The elements therefore keep the corner's length over
+``WRAP`` thicknesses from the clamp before they grow: the headline pocket's curve (Fhat 0.1 to 1) then moves
+by 1e-6 from 24 to 256 elements, and by 6e-4 at Fhat = 0.4 from the former meshes' answer, which all of them
+shared.
 """
 
 from __future__ import annotations
@@ -49,12 +60,15 @@ from skfem import MeshQuad
 
 from pocket.core.geometries import DISC, Geometry
 
-__all__ = ["CLAMP_GRADING", "corner_nodes", "radial_nodes", "section"]
+__all__ = ["CLAMP_GRADING", "WRAP", "corner_nodes", "radial_nodes", "section"]
 
 #: grading exponent of the radial nodes towards the clamp
 CLAMP_GRADING = 1.5
 #: growth of the elements' lengths away from the clamp's corners
 CORNER_GROWTH = 1.5
+#: the length from the clamp (in thicknesses) over which the elements keep the corner's length: the jaw's wrap
+#: zone (module docstring), where the upper surface lies on the jaw's edge and side face (to ~1.2 T)
+WRAP = 1.5
 
 
 def radial_nodes(elements: int, grading: float = CLAMP_GRADING) -> np.ndarray:
@@ -76,17 +90,29 @@ def _spacing(r: np.ndarray, x: float) -> float:
     return float(r[k] - r[k - 1])
 
 
-def corner_nodes(r: np.ndarray, smallest: float) -> np.ndarray:
-    """The radial nodes ``r`` with a cluster at the clamp: elements from ``smallest`` at r = 1, each
-    ``CORNER_GROWTH`` times longer until one is twice ``smallest`` (these do not depend on ``r``), then longer
-    or shorter by that ratio until they are within a factor sqrt(``CORNER_GROWTH``) of ``r``'s elements where
-    the cluster ends; the nodes of ``r`` within half an element of the cluster dropped. The cluster stops
-    where its next element would leave less than twice its length to the axis (thick sheets)."""
+def corner_nodes(r: np.ndarray, smallest: float, uniform: float = 0.0) -> np.ndarray:
+    """The radial nodes ``r`` with a cluster at the clamp: elements ``smallest`` long from r = 1 until they span
+    ``uniform`` (at least one), then each ``CORNER_GROWTH`` times longer until one is twice ``smallest`` (these
+    do not depend on ``r``), then longer or shorter by that ratio until they are within a factor
+    sqrt(``CORNER_GROWTH``) of ``r``'s elements where the cluster ends; the nodes of ``r`` within half an element
+    of the cluster dropped. The cluster stops where its next element would leave less than twice its length to
+    the axis (thick sheets).
+
+    Examples
+    --------
+    Elements 0.05 long over 0.1 from the clamp, then growing by 1.5 up to the 0.25-long elements of ``r``:
+
+    >>> import numpy as np
+    >>> np.round(corner_nodes(np.linspace(0.0, 1.0, 5), 0.05, 0.1), 6).tolist()
+    [0.0, 0.25, 0.54375, 0.7125, 0.825, 0.9, 0.95, 1.0]
+    """
     steps = [smallest]
 
     def room(step):
         return 1.0 - sum(steps) - step > 2.0 * step
 
+    while sum(steps) < uniform * (1.0 - 1e-9) and room(smallest):
+        steps.append(smallest)
     while steps[-1] < 2.0 * smallest and room(CORNER_GROWTH * steps[-1]):
         steps.append(CORNER_GROWTH * steps[-1])
     ratio = CORNER_GROWTH if _spacing(r, 1.0 - sum(steps)) > steps[-1] else 1.0 / CORNER_GROWTH
@@ -108,5 +134,5 @@ def section(thickness: float, elements: int, layers: int, corner: float, grading
     S; the only one ``api.GEOMETRIES`` poses), its radial nodes at r0 of the arc lengths graded as above, the
     clamp's corner elements ``corner`` thicknesses long."""
     z = heights(thickness, layers)
-    r = geometry.radius(corner_nodes(radial_nodes(elements, grading), corner * thickness))
+    r = geometry.radius(corner_nodes(radial_nodes(elements, grading), corner * thickness, WRAP * thickness))
     return MeshQuad.init_tensor(r, z).with_defaults()

@@ -22,9 +22,12 @@ T = 0.0125
 
 @pytest.mark.parametrize("thickness", [0.001, 0.0125, 0.04, 0.08, 0.2])
 def test_the_corner_elements_do_not_depend_on_the_radial_elements(thickness):
-    """The three elements at the clamp are DEFAULT_CORNER T, x 1.5, x 1.5^2 long for every radial count and
-    layer count; neighbours differ by at most 2.45 in length: the bulk's last node keeps between 0.5 and 1.5
-    of its element, beside a cluster element within sqrt(1.5) of that element (2.45 = sqrt(1.5) / 0.5)."""
+    """The elements at the clamp are DEFAULT_CORNER T long over mesh.WRAP thicknesses, then x 1.5, x 1.5^2, for
+    every radial count and layer count; neighbours differ by at most 2.45 in length: the bulk's last node keeps
+    between 0.5 and 1.5 of its element, beside a cluster element within sqrt(1.5) of that element (2.45 =
+    sqrt(1.5) / 0.5)."""
+    wrap = int(np.ceil(mesh.WRAP / DEFAULT_CORNER))
+    expected = DEFAULT_CORNER * thickness * np.array([1.0] * wrap + [1.5, 2.25])
     for n in (8, 16, 32, 64, 256, 2000):
         for layers in (2, 4, 16):
             r = np.unique(mesh.section(thickness, n, layers, DEFAULT_CORNER).p[0])
@@ -32,8 +35,7 @@ def test_the_corner_elements_do_not_depend_on_the_radial_elements(thickness):
             assert r[0] == 0.0
             assert r[-1] == 1.0
             assert np.all(d > 0.0)
-            np.testing.assert_allclose(d[-3:][::-1], DEFAULT_CORNER * thickness * np.array([1.0, 1.5, 2.25]),
-                                       rtol=1e-12)
+            np.testing.assert_allclose(d[-expected.size:][::-1], expected, rtol=1e-12)
             assert max((d[1:] / d[:-1]).max(), (d[:-1] / d[1:]).max()) <= 2.45, (n, layers)
 
 
