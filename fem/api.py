@@ -40,7 +40,7 @@ import numpy as np
 
 from pocket import meshes
 from pocket.core import geometries
-from pocket.core.errors import InputError, above_the_pocket
+from pocket.core.errors import UNINFLATED_CAPSULE, InputError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Geometry
 from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
@@ -322,6 +322,8 @@ def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements
     if geometry is geometries.CAPSULE:
         _capsule_contact(indenter, contact)
     model = _model(material, mesh, elements, order, penalty, geometry)
+    if geometry is geometries.CAPSULE and pressure_initial == 0:
+        raise InputError(f"pressure = 0: {UNINFLATED_CAPSULE}")
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)

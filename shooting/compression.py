@@ -35,7 +35,7 @@ import math
 
 import numpy as np
 
-from pocket.core.errors import InputError
+from pocket.core.errors import UNINFLATED_CAPSULE, InputError
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Symmetry, posed
 from pocket.core.indenters import as_indenter
@@ -123,8 +123,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     law = law_of(material)
     if isinstance(geometry.end, Symmetry) and pressure_initial == 0:
-        raise InputError("pressure = 0: a capsule is pressed from an inflated state here (Fhat = F / (P_I pi R^2) "
-                         "needs P_I > 0); the unpressurised capsule is not posed yet")
+        raise InputError(f"pressure = 0: {UNINFLATED_CAPSULE}")
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
     indenter = as_indenter(indenter)

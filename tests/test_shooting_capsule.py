@@ -3,13 +3,15 @@ balances every state must satisfy, the limits with known answers, the end of the
 
 import dataclasses
 import math
+import re
 
 import numpy as np
 import pytest
 from pocket.shooting.capsule import amplification
 
-from pocket import shooting
-from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket import fem, shooting
+from pocket.cli import main
+from pocket.core.errors import UNINFLATED_CAPSULE, ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import gas
 from pocket.core.indenters import Sphere
 from pocket.core.materials import check, energy, mooney_rivlin
@@ -65,6 +67,21 @@ def test_an_unpressurised_capsule_is_the_reference_sphere():
     plain = shooting.inflate(0.2, 0.2, geometry="capsule").stretch_pole
     taut = shooting.inflate(prestretched, 0.2 * 1.1, geometry="capsule").stretch_pole
     assert 1.1 * taut == pytest.approx(plain, rel=1e-12)
+
+
+@pytest.mark.parametrize("solver", [shooting, fem])
+def test_an_uninflated_capsule_is_not_pressed(solver, capsys):
+    """Both solvers, the API and the command line: a capsule at P_I = 0 is refused before any solve, in one line
+    saying why (``UNINFLATED_CAPSULE``: its compression's range ends ever sooner as P_I falls; the figures it
+    quotes are benchmarks/capsule_low_pressure.py's)."""
+    with pytest.raises(InputError, match=f"^pressure = 0: {re.escape(UNINFLATED_CAPSULE)}$"):
+        solver.compression_curve(0.2, 0.0, [0.1], geometry="capsule")
+    name = solver.__name__.rsplit(".", 1)[-1]
+    assert main(["compress", "--geometry", "capsule", "--solver", name, "--alpha", "0.2", "--pressure", "0",
+                 "--force", "0.1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert UNINFLATED_CAPSULE in err
 
 
 def test_the_pressure_maximum_is_refused():

@@ -18,7 +18,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from pocket.core.errors import InputError, OutOfRangeError, PocketError
+from pocket.core.errors import UNINFLATED_CAPSULE, InputError, OutOfRangeError, PocketError
 from pocket.core.fluids import Fluid
 from pocket.core.geometries import DISC
 from pocket.core.indenters import PLATE
@@ -256,8 +256,8 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     out: list[float | OutOfRangeError] = []
     if pocket.pressure_initial == 0.0:  # a capsule given by its radius as its initial height
         key = f"initial.{case.initial[0]}"
-        raise InputError(f"{key} = {quote(case.as_given(key))} gives P_I = 0 (the unstressed capsule), but a load's "
-                         "Fhat = F / (P_I pi R^2) needs P_I > 0")
+        raise InputError(f"{key} = {quote(case.as_given(key))} gives P_I = 0 (the unstressed capsule): "
+                         f"{UNINFLATED_CAPSULE}")
     if case.load_kind == "forces":
         for index, force in enumerate(case.loads):
             key, given = f"loads.forces[{index}]", case.as_given(f"loads.forces[{index}]")
