@@ -41,9 +41,9 @@ from pocket.core.errors import ConvergenceError
 
 from .banded import SingularSystem
 
-__all__ = ["Result", "Tolerances", "newton"]
+__all__ = ["FLOOR", "NOISE", "Result", "Tolerances", "newton"]
 
-_FLOOR = 1e3  # a residual this many tolerances above the target can be round-off
+FLOOR = 1e3  # a residual this many tolerances above the target can be round-off
 NOISE = 10.0  # a residual within this factor of the unknowns' round-off (``_noise``) is at the floor
 
 
@@ -98,7 +98,7 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
             break
         step_size = float(np.abs(dy / scales).max())
         converged = step_size <= tol.increment and r_max <= tol.residual
-        floor = r_max >= 0.1 * r_prev and r_max <= _FLOOR * tol.residual and step_size <= _FLOOR * tol.increment
+        floor = r_max >= 0.1 * r_prev and r_max <= FLOOR * tol.residual and step_size <= FLOOR * tol.increment
         if not (converged or floor) and step_size <= tol.increment:
             floor = r_max <= NOISE * _noise(linearize, y, r)  # the system is spent: only dy is used below
         if converged or floor:
@@ -112,7 +112,7 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
                 break
             step *= 0.5
         else:
-            if r_max > _FLOOR * tol.residual:
+            if r_max > FLOOR * tol.residual:
                 break
             trial = y + dy  # at round-off level the merit need not decrease
             r_trial, system_trial = linearize(trial)

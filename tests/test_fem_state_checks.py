@@ -1,0 +1,68 @@
+"""The finite-element states' own force check: as tight as Newton's acceptance, and no tighter.
+
+Exact answers: a compressed state solved under force control carries the plate's reaction and P A_c equal to the
+force within ``results.force_allowance`` (2 FLOOR tol Fhat: the two border rows the identities are made of, each
+accepted by Newton within FLOOR tol of zero, relative to the plate force; ``results``' docstring derives it). So a
+state built from the same unknowns but echoing a force 10 allowances off, or with its pressure moved so that P A_c is
+10 allowances off, is refused (``ConvergenceError`` naming the identity), on the clamped sheet and the capsule; and a
+fine capsule whose Newton solve stalls at its residual floor (Phat_I = 0.01, neo-Hookean, 2048 elements, Fhat =
+0.14 after 0.1) is returned.
+"""
+
+import numpy as np
+import pytest
+
+from pocket import fem
+from pocket.core import geometries
+from pocket.core.errors import ConvergenceError
+from pocket.fem import api, fitted, results
+from pocket.fem.newton import FLOOR, Tolerances
+
+ALPHA, PHAT, FORCE, ELEMENTS = 0.3, 0.31, 0.19, 16
+
+
+def _solved(geometry: str):
+    """(model, FITTED unknowns at FORCE, iterations, inflated state, fill, tolerances, builder) on ELEMENTS."""
+    posed, _ = geometries.posed(api.GEOMETRIES, "fem", geometry)
+    model, _, _, tol, y_i, inflated, fill, _ = api._setup(ALPHA, PHAT, None, None, posed, None, ELEMENTS, 2,
+                                                          "fitted", None, None, 1e-10)
+    unit = np.pi * inflated.pressure
+    y, iterations = fitted.first_contact(model, y_i, fill, fitted.A_FIRST / 4, tol)
+    y, more = fitted.force_path(model, y, fill, FORCE * unit, tol, unit)
+    return model, y, iterations + more, inflated, fill, tol, api._builder(posed)
+
+
+def test_the_allowance_is_two_rows_at_newtons_floor():
+    """2 FLOOR tol Fhat, linear in the force and in Newton's tolerance."""
+    tol = Tolerances(1e-8, 1e-8)
+    assert results.force_allowance(0.5, tol) == pytest.approx(2 * FLOOR * 1e-8 * 0.5, rel=1e-15)
+    assert results.force_allowance(0.25, Tolerances()) == pytest.approx(results.force_allowance(0.5, tol) / 200,
+                                                                        rel=1e-15)
+
+
+@pytest.mark.parametrize("geometry", ["pocket", "capsule"])
+def test_a_state_ten_allowances_off_is_refused(geometry):
+    """The solved state passes (its identities within the allowance); echoing FORCE + 10 allowances fails on the
+    reaction; moving P by 10 allowances (relative to the force) fails on P A_c (pocket and capsule alike)."""
+    model, y, iterations, inflated, fill, tol, builder = _solved(geometry)
+    state = builder.fitted_state(model, y, iterations, inflated, fill, FORCE, tol)
+    allowance = results.force_allowance(FORCE, tol)
+    for name in ("force_reaction", "force_pressure_area"):
+        assert abs(state.extra[name] - FORCE) <= allowance, (name, state.extra[name] - FORCE, allowance)
+    with pytest.raises(ConvergenceError, match="force_reaction = .* against the force"):
+        builder.fitted_state(model, y, iterations, inflated, fill, FORCE + 10 * allowance, tol)
+    moved = y.copy()
+    moved[model.dofs] *= 1.0 + 10 * allowance / FORCE  # P A_c / P_I moves by 10 allowances
+    with pytest.raises(ConvergenceError, match="force_(reaction|pressure_area) = .* against the force"):
+        builder.fitted_state(model, moved, iterations, inflated, fill, FORCE, tol)
+
+
+@pytest.mark.slow
+def test_a_fine_capsule_stalled_at_its_floor_is_returned():
+    """Neo-Hookean capsule at Phat_I = 0.01 on 2048 elements: Newton stalls at Fhat = 0.14 (seeded by 0.1) and
+    accepts its floor; the state is returned, its identities within the allowance."""
+    states = fem.compression_curve(0.0, 0.01, [0.1, 0.14], geometry="capsule", elements=2048)
+    for state in states:
+        allowance = results.force_allowance(state.force, Tolerances())
+        for name in ("force_reaction", "force_pressure_area"):
+            assert abs(state.extra[name] - state.force) <= allowance, (name, state.extra[name], state.force)
