@@ -1,6 +1,9 @@
 """The finite-element states' own force check: as tight as Newton's acceptance, and no tighter.
 
-Exact answers: a compressed state solved under force control carries the plate's reaction and P A_c equal to the
+Exact answers: the identities' errors are the border rows' algebra, reaction - Fhat = (c - t) F_s / (pi P_I) and
+P A_c / P_I - Fhat = c F_s / (pi P_I) with t, c the tangency and force-control rows (``model.residual``) and F_s
+the force itself, to the round-off of the sums (no nodal row and no 1 / P_I enters). A compressed state solved under
+force control carries the plate's reaction and P A_c equal to the
 force within ``results.force_allowance`` (2 FLOOR tol Fhat: the two border rows the identities are made of, each
 accepted by Newton within FLOOR tol of zero, relative to the plate force; ``results``' docstring derives it). So a
 state built from the same unknowns but echoing a force 10 allowances off, or with its pressure moved so that P A_c is
@@ -9,27 +12,54 @@ fine capsule whose Newton solve stalls at its residual floor (Phat_I = 0.01, neo
 0.14 after 0.1) is returned.
 """
 
+import functools
+from dataclasses import replace
+
 import numpy as np
 import pytest
+from pocket.fem import api, fitted, model, results
+from pocket.fem.newton import FLOOR, Tolerances
 
 from pocket import fem
 from pocket.core import geometries
 from pocket.core.errors import ConvergenceError
-from pocket.fem import api, fitted, results
-from pocket.fem.newton import FLOOR, Tolerances
 
 ALPHA, PHAT, FORCE, ELEMENTS = 0.3, 0.31, 0.19, 16
 
 
+@functools.lru_cache
 def _solved(geometry: str):
     """(model, FITTED unknowns at FORCE, iterations, inflated state, fill, tolerances, builder) on ELEMENTS."""
     posed, _ = geometries.posed(api.GEOMETRIES, "fem", geometry)
-    model, _, _, tol, y_i, inflated, fill, _ = api._setup(ALPHA, PHAT, None, None, posed, None, ELEMENTS, 2,
-                                                          "fitted", None, None, 1e-10)
+    m, _, _, tol, y_i, inflated, fill, _ = api._setup(ALPHA, PHAT, None, None, posed, None, ELEMENTS, 2, "fitted",
+                                                      None, None, 1e-10)
     unit = np.pi * inflated.pressure
-    y, iterations = fitted.first_contact(model, y_i, fill, fitted.A_FIRST / 4, tol)
-    y, more = fitted.force_path(model, y, fill, FORCE * unit, tol, unit)
-    return model, y, iterations + more, inflated, fill, tol, api._builder(posed)
+    y, iterations = fitted.first_contact(m, y_i, fill, fitted.A_FIRST / 4, tol)
+    y, more = fitted.force_path(m, y, fill, FORCE * unit, tol, unit)
+    y.flags.writeable = False  # shared by the tests (cached)
+    return m, y, iterations + more, inflated, fill, tol, api._builder(posed)
+
+
+@pytest.mark.parametrize("geometry", ["pocket", "capsule"])
+def test_the_force_identities_are_the_border_rows(geometry):
+    """reaction - Fhat = (c - t) Fhat and P A_c / P_I - Fhat = c Fhat, t and c the tangency and control rows
+    measured against F_s = pi P_I Fhat: at the solved state (the state's own reports) and with its pressure and
+    edge radius moved by 1e-6 (rows ~1e-6, the reaction -sum_C R_j by ``model.plate_force``); to 1e-12 Fhat,
+    the sums' round-off."""
+    m, y, iterations, inflated, fill, tol, builder = _solved(geometry)
+    unit = np.pi * inflated.pressure
+    force = FORCE * unit
+    state = builder.fitted_state(m, y, iterations, inflated, fill, FORCE, tol)
+    moved = np.array(y)
+    moved[m.dofs] *= 1.0 + 1e-6
+    moved[model.edge(m)] *= 1.0 - 1e-6
+    reports = [(y, state.extra["force_reaction"], state.extra["force_pressure_area"]),
+               (moved, model.plate_force(m, moved, model.FITTED) / unit,
+                moved[m.dofs] * moved[model.edge(m)] ** 2 / inflated.pressure)]
+    for z, reaction, area in reports:
+        t, c = model.residual(m, np.array(z), model.FITTED, replace(fill, force=force, scale=force))[-2:]
+        assert reaction - FORCE == pytest.approx((c - t) * FORCE, abs=1e-12 * FORCE)
+        assert area - FORCE == pytest.approx(c * FORCE, abs=1e-12 * FORCE)
 
 
 def test_the_allowance_is_two_rows_at_newtons_floor():
@@ -44,17 +74,17 @@ def test_the_allowance_is_two_rows_at_newtons_floor():
 def test_a_state_ten_allowances_off_is_refused(geometry):
     """The solved state passes (its identities within the allowance); echoing FORCE + 10 allowances fails on the
     reaction; moving P by 10 allowances (relative to the force) fails on P A_c (pocket and capsule alike)."""
-    model, y, iterations, inflated, fill, tol, builder = _solved(geometry)
-    state = builder.fitted_state(model, y, iterations, inflated, fill, FORCE, tol)
+    m, y, iterations, inflated, fill, tol, builder = _solved(geometry)
+    state = builder.fitted_state(m, y, iterations, inflated, fill, FORCE, tol)
     allowance = results.force_allowance(FORCE, tol)
     for name in ("force_reaction", "force_pressure_area"):
         assert abs(state.extra[name] - FORCE) <= allowance, (name, state.extra[name] - FORCE, allowance)
-    with pytest.raises(ConvergenceError, match="force_reaction = .* against the force"):
-        builder.fitted_state(model, y, iterations, inflated, fill, FORCE + 10 * allowance, tol)
+    with pytest.raises(ConvergenceError, match=r"force_reaction = .* against the force"):
+        builder.fitted_state(m, y, iterations, inflated, fill, FORCE + 10 * allowance, tol)
     moved = y.copy()
-    moved[model.dofs] *= 1.0 + 10 * allowance / FORCE  # P A_c / P_I moves by 10 allowances
-    with pytest.raises(ConvergenceError, match="force_(reaction|pressure_area) = .* against the force"):
-        builder.fitted_state(model, moved, iterations, inflated, fill, FORCE, tol)
+    moved[m.dofs] *= 1.0 + 10 * allowance / FORCE  # P A_c / P_I moves by 10 allowances
+    with pytest.raises(ConvergenceError, match=r"force_(reaction|pressure_area) = .* against the force"):
+        builder.fitted_state(m, moved, iterations, inflated, fill, FORCE, tol)
 
 
 @pytest.mark.slow
