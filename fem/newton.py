@@ -20,7 +20,7 @@ above ``increment``: a residual that has stopped falling, within 1e3 of
 ``residual``, with an increment within 1e3 of ``increment``, also counts.
 So does, with an increment below ``increment``, a residual within NOISE of
 the change that perturbing every unknown by four units in its last place
-makes (``_noise``): no stored state can do better. That floor is the
+makes (``noise``): no stored state can do better. That floor is the
 stiffness times the unknowns' round-off, and grows past 1e3 ``residual``
 when the rows are stiff (a rubber near its locking stretch on the small
 elements by the contact edge: measured 1e-7 for Gent with Jm = 1 at
@@ -41,10 +41,10 @@ from pocket.core.errors import ConvergenceError
 
 from .banded import SingularSystem
 
-__all__ = ["FLOOR", "NOISE", "Result", "Tolerances", "newton"]
+__all__ = ["FLOOR", "NOISE", "Result", "Tolerances", "newton", "noise"]
 
 FLOOR = 1e3  # a residual this many tolerances above the target can be round-off
-NOISE = 10.0  # a residual within this factor of the unknowns' round-off (``_noise``) is at the floor
+NOISE = 10.0  # a residual within this factor of the unknowns' round-off (``noise``) is at the floor
 
 
 @dataclasses.dataclass(frozen=True)
@@ -100,7 +100,7 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
         converged = step_size <= tol.increment and r_max <= tol.residual
         floor = r_max >= 0.1 * r_prev and r_max <= FLOOR * tol.residual and step_size <= FLOOR * tol.increment
         if not (converged or floor) and step_size <= tol.increment:
-            floor = r_max <= NOISE * _noise(linearize, y, r)  # the system is spent: only dy is used below
+            floor = r_max <= NOISE * noise(linearize, y, r)  # the system is spent: only dy is used below
         if converged or floor:
             return Result(y + dy, k, tuple(history))
         r_prev = r_max
@@ -121,7 +121,7 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
     raise ConvergenceError(f"Newton failed after {k} iterations, residual {res:.3e}", iterations=k, residual=res)
 
 
-def _noise(linearize: Callable, y: np.ndarray, r: np.ndarray) -> float:
+def noise(linearize: Callable, y: np.ndarray, r: np.ndarray) -> float:
     """max |R(y') - R(y)| with y' = y (1 +- 4 eps), the signs alternating: the residual's round-off floor."""
     signs = np.where(np.arange(y.size) % 2 == 0, 1.0, -1.0)
     r_near, _ = linearize(y * (1.0 + 4.0 * np.finfo(float).eps * signs))
