@@ -51,36 +51,35 @@ divided by pi P_I (Fhat),
 
     force_reaction - Fhat = (c - t) F_s / (pi P_I),    force_pressure_area - Fhat = c F_s / (pi P_I),
 
-and F_s / (pi P_I) is Fhat itself. Two things bound t and c at the state Newton returns (its last iterate
-plus the last step, whose linear model zeroes the rows):
+and F_s / (pi P_I) is Fhat itself. Newton's two ways of accepting a residual bound t and c at the state it
+returns (its last iterate plus the last step, whose linear model zeroes the rows):
 
-- the rows Newton accepted at that iterate, relative ones: up to ``newton.FLOOR`` times its tolerance when
-  the residual has stopped falling (a fine mesh can stall there: the neo-Hookean capsule at Phat_I = 0.01
-  on 2048 elements, at Fhat = 0.14 seeded from 0.1, accepted 5.3e-8 and kept 2.3e-8 in the tangency row,
-  its reaction 3.2e-9 off in Fhat): 2 FLOOR tol Fhat for the two rows;
-- the round-off the last step leaves, which its linear model cannot remove: the solve's error in the nodal
-  unknowns moves each nodal row by about its noise nu (``newton.noise``: the rows' change when every unknown
-  moves by four units in its last place, absolute, E T R), so the n_C tied rows summed into the reaction
-  move by up to n_C nu, absolute: relative to F_s the tangency row is then n_C nu / F_s, however small
-  the force, and in Fhat n_C nu / (pi P_I). Newton takes a residual within ``newton.NOISE`` of its noise,
-  so NOISE n_C nu / (pi P_I).
+- a residual that has stopped falling within ``newton.FLOOR`` times its tolerance: a row within FLOOR tol
+  (a fine mesh can stall there: the neo-Hookean capsule at Phat_I = 0.01 on 2048 elements, at Fhat = 0.14
+  seeded from 0.1, accepted 5.3e-8 and kept 2.3e-8 in the tangency row, its reaction 3.2e-9 off in Fhat);
+- a residual within ``newton.NOISE`` of the unknowns' round-off, the rows' change when every unknown moves
+  by ``newton.ULPS`` units in its last place: the round-off the last step cannot remove. For one row, with
+  the worst signs, that is nu = ULPS eps (|C_k| |U| + |D_k| |s|) (``newton.border_noise``, C_k and D_k the
+  row's gradient in the bordered tangent, read at the state under force control: ``identity_noise``).
 
-Hence, with ``tol`` Newton's residual tolerance and nu measured at the state,
+Hence, with ``tol`` Newton's residual tolerance,
 
-    |force - Fhat| <= 2 FLOOR tol Fhat + NOISE n_C nu / (pi P_I).
+    |force - Fhat| <= Fhat (2 FLOOR tol + NOISE (nu_t + nu_c)).
 
-The first term is relative to the force (the 1 / P_I of the reaction cancels against the P_I in F_s); the
-second is absolute, grows with the tied rows (the contact zone's nodes: 2 p + 1 on the disc, half the
-mesh's on the capsule) and as 1 / Phat_I. It is the one that matters at small forces on a fine graded
-mesh (the disc on 2048 elements at Fhat = 1e-7: the reaction 8e-13 off, 8e-6 of the force). The penalty
-plate's force, a quadrature of the contact pressure rather than a sum of nodal rows, rests on its
-force-control row alone (the first term); a curved indenter's reaction is one nodal row (n_C = 1).
+The first term is relative to the force: the 1 / P_I of the reaction cancels against the P_I in F_s. The
+second is where the reaction's own round-off sits: the tangency row's gradient is k_C / F_s, k_C = K 1_C the
+sum of the n_C tied rows of the stiffness, so Fhat nu_t = ULPS eps |k_C| |U| / (pi P_I) + ...: absolute in
+Fhat, accumulated over the contact zone's nodes (half the mesh's on the capsule) and stiff where the
+elements are small (the disc's graded pole), growing as 1 / Phat_I at a given stiffness, and, however small the
+force, not shrinking with it. It is what admits a tiny force on a fine mesh (the disc on 2048 elements at
+Fhat = 1e-7, Phat_I = 0.01: the reaction 8e-13 off, 40 times the first term, 1 % of the second). The
+penalty plate's force, a quadrature of the contact pressure rather than a reaction, rests on its
+force-control row alone (the first term); a curved indenter's reaction rows are ``obstacle``'s, read alike.
 """
 
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable
 
 import numpy as np
 
@@ -89,22 +88,22 @@ from pocket.core.fluids import LIQUID
 from pocket.core.states import CompressedState, InflatedState
 
 from . import post
-from .model import FITTED, FREE, PENALTY, Control, Model, fields, forms, plate_force
-from .newton import FLOOR, NOISE, Tolerances, noise
+from .model import FITTED, FREE, PENALTY, Control, Model, fields, forms, linearize, plate_force
+from .newton import FLOOR, NOISE, Tolerances, border_noise
 from .penalty import contact_area_active, contact_zone_active, penetration
 
-__all__ = ["CONSISTENCY", "fitted_state", "force_allowance", "inflated", "penalty_state", "reaction_floor",
-           "uncompressed"]
+__all__ = ["CONSISTENCY", "fitted_state", "force_allowance", "force_control", "identity_noise", "inflated",
+           "penalty_state", "uncompressed"]
 
 #: relative tolerance of the state's own volume, gas law and pressure: Newton leaves ~1e-12
 CONSISTENCY = 1e-9
-#: the border rows a force identity of a state is made of, at most (module docstring)
-_FORCE_ROWS = 2
+#: the border rows the force identities are made of (``model``): the tangency row and the control row
+_FORCE_ROWS = (1, 2)
 
 
-def force_allowance(force: float, tol: Tolerances, floor: float = 0.0) -> float:
+def force_allowance(force: float, tol: Tolerances, noise: float = 0.0) -> float:
     """How far a reported force (Fhat) of a state Newton accepted under ``tol`` may be from the force asked:
-    2 FLOOR tol.residual |force| + NOISE floor (module docstring).
+    |force| (2 FLOOR tol.residual + NOISE noise) (module docstring).
 
     Parameters
     ----------
@@ -112,9 +111,9 @@ def force_allowance(force: float, tol: Tolerances, floor: float = 0.0) -> float:
         The force Fhat = F / (P_I pi R^2) the state was solved for.
     tol : Tolerances
         Newton's tolerances of the solve.
-    floor : float, optional
-        The round-off floor of the reaction, in Fhat (``reaction_floor``); 0 for a force that is not a sum of
-        nodal rows.
+    noise : float, optional
+        The round-off of the identities' rows at the state, relative to the plate force like the rows
+        (``identity_noise``).
 
     Returns
     -------
@@ -124,41 +123,29 @@ def force_allowance(force: float, tol: Tolerances, floor: float = 0.0) -> float:
     Examples
     --------
     >>> from pocket.fem.newton import Tolerances
-    >>> print(f"{force_allowance(0.14, Tolerances()):.3g}", f"{force_allowance(0.14, Tolerances(), 1e-10):.3g}")
-    2.8e-08 2.9e-08
+    >>> print(f"{force_allowance(0.14, Tolerances()):.3g}", f"{force_allowance(0.14, Tolerances(), 1e-8):.3g}")
+    2.8e-08 4.2e-08
     """
-    return _FORCE_ROWS * FLOOR * tol.residual * abs(force) + NOISE * floor
+    return abs(force) * (len(_FORCE_ROWS) * FLOOR * tol.residual + NOISE * noise)
 
 
-def reaction_floor(residual: Callable[[np.ndarray], np.ndarray], y: np.ndarray, rows: int,
-                   pressure_initial: float) -> float:
-    """n_C nu / (pi P_I): the round-off floor, in Fhat, of a reaction summed over ``rows`` nodal rows of the
-    state y, nu the nodal rows' noise there (``newton.noise``; ``residual(y)``: the rows, E T R).
-
-    Parameters
-    ----------
-    residual : callable
-        y -> the nodal rows at y, E T R.
-    y : ndarray
-        The state's unknowns.
-    rows : int
-        n_C, the nodal rows summed into the reaction.
-    pressure_initial : float
-        Phat_I.
-
-    Returns
-    -------
-    float
-        The floor, in Fhat.
-    """
-    nu = noise(lambda z: (residual(z), None), y, residual(y))
-    return rows * nu / (np.pi * pressure_initial)
+def identity_noise(system, y: np.ndarray) -> float:
+    """The round-off of the force identities' rows (the tangency and the force-control row) of the bordered
+    ``system`` linearised at y under force control: ``newton.border_noise`` of the two, summed."""
+    return float(border_noise(system, y)[list(_FORCE_ROWS)].sum())
 
 
-def _check_force(name: str, value: float, force: float, tol: Tolerances, where: str, floor: float = 0.0) -> None:
+def force_control(fill: Control, force: float, pressure_initial: float) -> Control:
+    """``fill`` under the control of the plate force Fhat = ``force``, the rows measured against it: the
+    linearisation the identities' round-off is read from."""
+    plate = force * np.pi * pressure_initial
+    return dataclasses.replace(fill, force=plate, scale=plate)
+
+
+def _check_force(name: str, value: float, force: float, tol: Tolerances, where: str, noise: float = 0.0) -> None:
     """ConvergenceError if the reported force ``value`` (``name``, Fhat) is off the force asked by more than
     ``force_allowance``."""
-    allowed = force_allowance(force, tol, floor)
+    allowed = force_allowance(force, tol, noise)
     if not abs(value - force) <= allowed:
         _fail(where, f"{name} = {value!r} against the force {force!r} (F = P A_c; allowed {allowed:.3g})")
 
@@ -308,9 +295,9 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
     _check_common(model, y, FITTED, out, where, _volume_target(fill, pressure))
     _check_gas(fill, out, where)
     identities = ("force_reaction", "force_pressure_area") if fill.indenter.pressure_area else ("force_reaction",)
-    floor = reaction_floor(lambda z: forms(model, z, FITTED).residual, y, model.tied().size, p_i)
+    noise = identity_noise(linearize(model, y, FITTED, force_control(fill, force, p_i))[1], y)
     for name in identities:
-        _check_force(name, extra[name], force, tol, where, floor)
+        _check_force(name, extra[name], force, tol, where, noise)
     if not 0.0 < a < 1.0:
         _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
     return out

@@ -24,7 +24,7 @@ at each profile node in contact (the edge node's value the edge's, NaN off the c
   F = (-dU + P dV) / dh.
 
 Checks as ``results``' (finite numbers, positive stretches, rho(1) = 1, the fluid's volume or gas law)
-and the reaction equal to the force asked (within ``results.force_allowance``: its control row and one nodal row).
+and the reaction equal to the force asked (within ``results.force_allowance``).
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from . import post
 from .geometry import contact_elements
 from .model import WRAPPED, Control, Model, fields, placement
 from .newton import Tolerances
-from .obstacle import contact_pressure, forms, zone
+from .obstacle import contact_pressure, forms, linearize, zone
 from .results import (
     _check_common,
     _check_force,
@@ -48,7 +48,8 @@ from .results import (
     _fail,
     _least_tensions,
     _volume_target,
-    reaction_floor,
+    force_control,
+    identity_noise,
 )
 from .surfaces import surface
 
@@ -150,8 +151,8 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
     where = f"at Fhat = {force!r} under the {fill.indenter.name}"
     _check_common(model, y, WRAPPED, out, where, _volume_target(fill, pressure))
     _check_gas(fill, out, where)
-    floor = reaction_floor(lambda z: forms(model, z, surf).free.residual, y, 1, p_i)
-    _check_force("force_reaction", extra["force_reaction"], force, tol, where, floor)
+    noise = identity_noise(linearize(model, y, force_control(fill, force, p_i), surf)[1], y)
+    _check_force("force_reaction", extra["force_reaction"], force, tol, where, noise)
     if not 0.0 < a < 1.0:
         _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
     return out

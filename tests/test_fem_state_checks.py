@@ -3,22 +3,24 @@
 Exact answers: the identities' errors are the border rows' algebra, reaction - Fhat = (c - t) F_s / (pi P_I) and
 P A_c / P_I - Fhat = c F_s / (pi P_I) with t, c the tangency and force-control rows (``model.residual``) and F_s
 the force itself, to the round-off of the sums. The allowance (``results``' docstring derives it) is
-2 FLOOR tol Fhat + NOISE n_C nu / (pi P_I): the two relative rows Newton accepts within FLOOR tol, and the n_C tied
-rows' noise nu (``newton.noise``, recomputed here on a linear residual whose noise is known) over pi P_I. A state
+Fhat (2 FLOOR tol + NOISE nu): the two rows Newton accepts within FLOOR tol, or within NOISE of their round-off nu,
+the worst change of the rows when the unknowns move by ULPS units in their last place (``newton.border_noise``,
+checked here on a small system whose gradients are given). A state
 built from solved unknowns but echoing a force 10 allowances off, or with its pressure moved so that P A_c is 10
 allowances off, is refused (``ConvergenceError`` naming the identity), on the clamped sheet and the capsule; a fine
 capsule whose Newton solve stalls at its residual floor (Phat_I = 0.01, neo-Hookean, 2048 elements, Fhat = 0.14
-after 0.1) is returned, and so is a tiny force on a fine disc, whose reaction is off by more than the relative term
-(its absolute round-off over a force of 1e-7) but within the floor term.
+after 0.1) is returned, and so is a tiny force on a fine disc, whose reaction is off by more than the first term
+(its round-off does not shrink with the force) but within the allowance.
 """
 
 import functools
 from dataclasses import replace
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 from pocket.fem import api, fitted, model, results
-from pocket.fem.newton import FLOOR, NOISE, Tolerances
+from pocket.fem.newton import FLOOR, NOISE, ULPS, Tolerances, border_noise
 
 from pocket import fem
 from pocket.core import geometries
@@ -62,22 +64,22 @@ def test_the_force_identities_are_the_border_rows(geometry):
         assert area - FORCE == pytest.approx(c * FORCE, abs=1e-12 * FORCE)
 
 
-def test_the_allowance_is_the_rows_and_the_floor():
-    """2 FLOOR tol Fhat + NOISE floor; the floor of a residual 1e3 y (its noise under y (1 +- 4 eps): 4e3 eps
-    max |y|) summed over 5 rows at Phat_I = 0.5 is 5 * 4e3 eps max |y| / (pi 0.5)."""
+def test_the_allowance_is_the_rows_at_newtons_floor_and_noise():
+    """Fhat (2 FLOOR tol + NOISE noise); the rows' noise of a bordered system C = [[1, -2], [0, 3]],
+    D = [[-1], [2]] at y = [U, s] = [1, -1, 2] is ULPS eps (|C| |U| + |D| |s|) = ULPS eps [5, 7]."""
     tol = Tolerances(1e-8, 1e-8)
-    assert results.force_allowance(0.5, tol) == pytest.approx(2 * FLOOR * 1e-8 * 0.5, rel=1e-15)
-    assert results.force_allowance(0.5, tol, 3e-9) == pytest.approx(2 * FLOOR * 1e-8 * 0.5 + NOISE * 3e-9, rel=1e-15)
-    y = np.linspace(-2.0, 1.0, 7)
-    floor = results.reaction_floor(lambda z: 1e3 * z, y, 5, 0.5)
-    assert floor == pytest.approx(5 * 4e3 * np.finfo(float).eps * 2.0 / (np.pi * 0.5), rel=1e-6)
+    assert results.force_allowance(0.5, tol) == pytest.approx(0.5 * 2 * FLOOR * 1e-8, rel=1e-15)
+    assert results.force_allowance(0.5, tol, 3e-9) == pytest.approx(0.5 * (2 * FLOOR * 1e-8 + NOISE * 3e-9),
+                                                                    rel=1e-15)
+    system = SimpleNamespace(C=np.array([[1.0, -2.0], [0.0, 3.0]]), D=np.array([[-1.0], [2.0]]))
+    expected = ULPS * np.finfo(float).eps * np.array([1 + 2 + 2, 3 + 4])
+    assert np.allclose(border_noise(system, np.array([1.0, -1.0, 2.0])), expected, rtol=1e-15, atol=0)
 
 
-def _allowance(m, y, inflated, tol) -> float:
-    """The allowance of the FITTED state y at FORCE, its floor from the tied rows (``results.reaction_floor``)."""
-    floor = results.reaction_floor(lambda z: model.forms(m, z, model.FITTED).residual, np.array(y), m.tied().size,
-                                   inflated.pressure)
-    return results.force_allowance(FORCE, tol, floor)
+def _allowance(m, y, inflated, fill, tol) -> float:
+    """The allowance of the FITTED state y at FORCE, its noise read from the tangent as the state's check reads it."""
+    system = model.linearize(m, np.array(y), model.FITTED, results.force_control(fill, FORCE, inflated.pressure))[1]
+    return results.force_allowance(FORCE, tol, results.identity_noise(system, np.array(y)))
 
 
 @pytest.mark.parametrize("geometry", ["pocket", "capsule"])
@@ -86,7 +88,7 @@ def test_a_state_ten_allowances_off_is_refused(geometry):
     reaction; moving P by 10 allowances (relative to the force) fails on P A_c (pocket and capsule alike)."""
     m, y, iterations, inflated, fill, tol, builder = _solved(geometry)
     state = builder.fitted_state(m, y, iterations, inflated, fill, FORCE, tol)
-    allowance = _allowance(m, y, inflated, tol)
+    allowance = _allowance(m, y, inflated, fill, tol)
     for name in ("force_reaction", "force_pressure_area"):
         assert abs(state.extra[name] - FORCE) <= allowance, (name, state.extra[name] - FORCE, allowance)
     with pytest.raises(ConvergenceError, match=r"force_reaction = .* against the force"):
@@ -110,9 +112,9 @@ def test_a_fine_capsule_stalled_at_its_floor_is_returned():
 
 
 def test_a_tiny_force_on_a_fine_disc_is_returned():
-    """Fhat = 1e-7 at Phat_I = 0.01 on 2048 elements (alpha 0.3): the reaction is off by more than the relative
-    term 2 FLOOR tol Fhat (the round-off of the tied rows does not shrink with the force) and within the
-    allowance's floor term, which the state's own check computed."""
+    """Fhat = 1e-7 at Phat_I = 0.01 on 2048 elements (alpha 0.3): the reaction is off by more than the first
+    term, 2 FLOOR tol Fhat (the round-off of the tied rows does not shrink with the force), and the state is
+    returned: within the noise term its own check read."""
     force, tol = 1e-7, Tolerances()
     state = fem.compress(ALPHA, 0.01, force, elements=2048)
     error = abs(state.extra["force_reaction"] - force)
