@@ -153,9 +153,9 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
         error = fill.gas.residual(pressure, linear.volume, fill.volume)
         if abs(error) > results.CONSISTENCY:
             results._fail(where, f"the gas law (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma off by {error:.3g}")
-    noise = results.identity_noise(linearize(model, y, FITTED, results.force_control(fill, force, p_i))[1], y)
-    for name in ("force_reaction", "force_pressure_area"):
-        results._check_force(name, extra[name], force, tol, where, noise)
+    results._check_forces({name: extra[name] for name in ("force_reaction", "force_pressure_area")}, force, tol, where,
+                          lambda: results.identity_noise(
+                              linearize(model, y, FITTED, results.force_control(fill, force, p_i))[1], y))
     if not 0.0 < a < 1.0:
         results._fail(where, f"contact radius a_c = {a_c!r} outside (0, pi/2)")
     return out

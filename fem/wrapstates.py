@@ -41,7 +41,7 @@ from .newton import Tolerances
 from .obstacle import contact_pressure, forms, linearize, zone
 from .results import (
     _check_common,
-    _check_force,
+    _check_forces,
     _check_gas,
     _echo,
     _extra,
@@ -151,8 +151,8 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
     where = f"at Fhat = {force!r} under the {fill.indenter.name}"
     _check_common(model, y, WRAPPED, out, where, _volume_target(fill, pressure))
     _check_gas(fill, out, where)
-    noise = identity_noise(linearize(model, y, force_control(fill, force, p_i), surf)[1], y)
-    _check_force("force_reaction", extra["force_reaction"], force, tol, where, noise)
+    _check_forces({"force_reaction": extra["force_reaction"]}, force, tol, where,
+                  lambda: identity_noise(linearize(model, y, force_control(fill, force, p_i), surf)[1], y))
     if not 0.0 < a < 1.0:
         _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
     return out

@@ -5,12 +5,12 @@ P A_c / P_I - Fhat = c F_s / (pi P_I) with t, c the tangency and force-control r
 the force itself, to the round-off of the sums. The allowance (``results``' docstring derives it) is
 Fhat (2 FLOOR tol + NOISE nu): the two rows Newton accepts within FLOOR tol, or within NOISE of their round-off nu,
 the worst change of the rows when the unknowns move by ULPS units in their last place (``newton.border_noise``,
-checked here on a small system whose gradients are given). A state
-built from solved unknowns but echoing a force 10 allowances off, or with its pressure moved so that P A_c is 10
-allowances off, is refused (``ConvergenceError`` naming the identity), on the clamped sheet and the capsule; a fine
-capsule whose Newton solve stalls at its residual floor (Phat_I = 0.01, neo-Hookean, 2048 elements, Fhat = 0.14
-after 0.1) is returned, and so is a tiny force on a fine disc, whose reaction is off by more than the first term
-(its round-off does not shrink with the force) but within the allowance.
+checked here on a small system whose gradients are given). A state built from solved unknowns but echoing a force
+10 allowances off, or with its pressure moved so that P A_c is 10 allowances off, is refused (``ConvergenceError``
+naming the identity), on the clamped sheet, the capsule and under a curved indenter; a fine capsule whose Newton
+solve stalls at its residual floor (Phat_I = 0.01, neo-Hookean, 2048 elements, Fhat = 0.14 after 0.1) is returned,
+and so is a tiny force on a fine disc, whose reaction is off by more than the first term (its round-off does not
+shrink with the force) but within the allowance.
 """
 
 import functools
@@ -19,12 +19,14 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from pocket.fem import api, fitted, model, results
+from pocket.fem import api, fitted, model, obstacle, results, wrapping, wrapstates
 from pocket.fem.newton import FLOOR, NOISE, ULPS, Tolerances, border_noise
+from pocket.fem.surfaces import surface
 
 from pocket import fem
 from pocket.core import geometries
 from pocket.core.errors import ConvergenceError
+from pocket.core.indenters import Sphere
 
 ALPHA, PHAT, FORCE, ELEMENTS = 0.3, 0.31, 0.19, 16
 
@@ -97,6 +99,21 @@ def test_a_state_ten_allowances_off_is_refused(geometry):
     moved[m.dofs] *= 1.0 + 10 * allowance / FORCE  # P A_c / P_I moves by 10 allowances
     with pytest.raises(ConvergenceError, match=r"force_(reaction|pressure_area) = .* against the force"):
         builder.fitted_state(m, moved, iterations, inflated, fill, FORCE, tol)
+
+
+def test_a_curved_indenters_state_ten_allowances_off_is_refused():
+    """Under a sphere of radius 2 R (32 elements): the solved state passes; echoing FORCE + 10 allowances (its
+    noise term read from ``obstacle``'s tangent, as the state's check reads it) fails on the reaction."""
+    m, _, _, tol, y_i, inflated, fill, _ = api._setup(ALPHA, PHAT, None, Sphere(2.0), geometries.DISC, None, 32, 2,
+                                                      "fitted", None, None, 1e-10)
+    unit = np.pi * inflated.pressure
+    y, iterations = wrapping.first_contact(m, y_i, fill, wrapping.first_radius(inflated, fill, fitted.A_FIRST), tol)
+    y, more = wrapping.force_path(m, y, fill, FORCE * unit, tol, unit)
+    wrapstates.state(m, y, iterations + more, inflated, fill, FORCE, tol)
+    system = obstacle.linearize(m, y, results.force_control(fill, FORCE, inflated.pressure), surface(fill.indenter))[1]
+    allowance = results.force_allowance(FORCE, tol, results.identity_noise(system, y))
+    with pytest.raises(ConvergenceError, match=r"force_reaction = .* against the force"):
+        wrapstates.state(m, y, iterations + more, inflated, fill, FORCE + 10 * allowance, tol)
 
 
 @pytest.mark.slow
