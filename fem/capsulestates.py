@@ -20,10 +20,10 @@ pi Fhat Phat_I, and the force diagnostics of the disc's states (``results``): th
 A_c, as Fhat.
 
 Checks: every number finite, every stretch positive, eta(pi / 2) = 0, the volume at its target (or the gas
-law), the plate reaction and P A_c equal to the force (within ``results.force_allowance``, the disc's), 0 < a_c <
-pi / 2. A state that fails one is a solver
-failure (``ConvergenceError``), never returned. A state past the end of the range (its contact edge slack) never
-reaches them: the solve that finds it says so (``steps.check_edge``, ``OutOfRangeError``).
+law), the plate reaction and P A_c equal to the force (within ``results.force_allowance``, the disc's bound),
+0 < a_c < pi / 2. A state that fails one is a solver failure (``ConvergenceError``), never returned. A state past
+the end of the range (its contact edge slack) never reaches them: the solve that finds it says so
+(``steps.check_edge``, ``OutOfRangeError``).
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ from pocket.core.states import CompressedState, InflatedState, Profile
 
 from . import post, results
 from .geometry import node_radii
-from .model import FITTED, FREE, Control, Model, edge, fields, forms, linearize, placement
+from .model import FITTED, FREE, Control, Model, edge, fields, forms, placement
 from .newton import Tolerances
 
 __all__ = ["fitted_state", "inflated", "uncompressed"]
@@ -154,8 +154,7 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
         if abs(error) > results.CONSISTENCY:
             results._fail(where, f"the gas law (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma off by {error:.3g}")
     results._check_forces({name: extra[name] for name in ("force_reaction", "force_pressure_area")}, force, tol, where,
-                          lambda: results.identity_noise(
-                              linearize(model, y, FITTED, results.force_control(fill, force, p_i))[1], y))
+                          lambda: results._fitted_noise(model, y, fill, force, p_i))
     if not 0.0 < a < 1.0:
         results._fail(where, f"contact radius a_c = {a_c!r} outside (0, pi/2)")
     return out

@@ -144,6 +144,11 @@ def force_control(fill: Control, force: float, pressure_initial: float) -> Contr
     return dataclasses.replace(fill, force=plate, scale=plate)
 
 
+def _fitted_noise(model: Model, y: np.ndarray, fill: Control, force: float, pressure_initial: float) -> float:
+    """``identity_noise`` of the FITTED state y at the force Fhat = ``force`` (the disc's and the capsule's)."""
+    return identity_noise(linearize(model, y, FITTED, force_control(fill, force, pressure_initial))[1], y)
+
+
 def _check_forces(reported: dict[str, float], force: float, tol: Tolerances, where: str,
                   noise: Callable[[], float] | None = None) -> None:
     """ConvergenceError if a reported force (name: Fhat) is off the force asked by more than ``force_allowance``;
@@ -304,7 +309,7 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
     _check_gas(fill, out, where)
     identities = ("force_reaction", "force_pressure_area") if fill.indenter.pressure_area else ("force_reaction",)
     _check_forces({name: extra[name] for name in identities}, force, tol, where,
-                  lambda: identity_noise(linearize(model, y, FITTED, force_control(fill, force, p_i))[1], y))
+                  lambda: _fitted_noise(model, y, fill, force, p_i))
     if not 0.0 < a < 1.0:
         _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
     return out
