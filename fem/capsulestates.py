@@ -20,9 +20,10 @@ pi Fhat Phat_I, and the force diagnostics of the disc's states (``results``): th
 A_c, as Fhat.
 
 Checks: every number finite, every stretch positive, eta(pi / 2) = 0, the volume at its target (or the gas
-law), the plate reaction and P A_c equal to the force, 0 < a_c < pi / 2. A state that fails one is a solver
-failure (``ConvergenceError``), never returned. A state past the end of the range (its contact edge slack) never
-reaches them: the solve that finds it says so (``steps.check_edge``, ``OutOfRangeError``).
+law), the plate reaction and P A_c equal to the force (within ``results.force_allowance``, the disc's bound),
+0 < a_c < pi / 2. A state that fails one is a solver failure (``ConvergenceError``), never returned. A state past
+the end of the range (its contact edge slack) never reaches them: the solve that finds it says so
+(``steps.check_edge``, ``OutOfRangeError``).
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ from pocket.core.states import CompressedState, InflatedState, Profile
 from . import post, results
 from .geometry import node_radii
 from .model import FITTED, FREE, Control, Model, edge, fields, forms, placement
+from .newton import Tolerances
 
 __all__ = ["fitted_state", "inflated", "uncompressed"]
 
@@ -120,8 +122,9 @@ def uncompressed(state: InflatedState, fill: Control, contact: str) -> Compresse
 
 
 def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedState, fill: Control,
-                 force) -> CompressedState:
-    """The compressed capsule of FITTED unknowns y at the given ``force`` (Fhat, echoed) with the fluid ``fill``."""
+                 force, tol: Tolerances) -> CompressedState:
+    """The compressed capsule of FITTED unknowns y at the given ``force`` (Fhat, echoed) with the fluid ``fill``;
+    ``tol``: Newton's tolerances of the solve (``results.force_allowance``)."""
     n, p_i = model.dofs, state.pressure
     pressure, h, a = (float(v) for v in y[n:])
     rho_c, a_c = float(y[edge(model)]), _arc(model) * a
@@ -150,9 +153,8 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
         error = fill.gas.residual(pressure, linear.volume, fill.volume)
         if abs(error) > results.CONSISTENCY:
             results._fail(where, f"the gas law (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma off by {error:.3g}")
-    for name in ("force_reaction", "force_pressure_area"):
-        if abs(extra[name] - force) > results.CONSISTENCY * force + results.FORCE_FLOOR * model.elements:
-            results._fail(where, f"{name} = {extra[name]!r} against the force {force!r} (F = P A_c)")
+    results._check_forces({name: extra[name] for name in ("force_reaction", "force_pressure_area")}, force, tol, where,
+                          lambda: results._fitted_noise(model, y, fill, force, p_i))
     if not 0.0 < a < 1.0:
         results._fail(where, f"contact radius a_c = {a_c!r} outside (0, pi/2)")
     return out

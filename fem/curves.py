@@ -98,7 +98,7 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces,
             except ConvergenceError as err:
                 raise _at_force(fhat, err) from err
             history.append((np.sqrt(force), y))
-            states.append(builder.fitted_state(model, y, iterations, inflated, fill, fhat))
+            states.append(builder.fitted_state(model, y, iterations, inflated, fill, fhat, tol))
         if progress is not None:
             progress(k + 1, len(forces))
     return states
@@ -110,7 +110,7 @@ def fitted_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height
     y, iterations = fitted.first_contact(model, y_i, fill, fitted.A_FIRST / 4, tol)
     y, more = fitted.height_path(model, y, fill, height, tol)
     fhat = fitted.plate_force_of(model, y) / (np.pi * inflated.pressure)
-    return builder.fitted_state(model, y, iterations + more, inflated, fill, fhat)
+    return builder.fitted_state(model, y, iterations + more, inflated, fill, fhat, tol)
 
 
 def _touching(model: Model, y_i: np.ndarray, inflated) -> np.ndarray:
@@ -140,7 +140,7 @@ def penalty_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces
                     iterations += more
             except ConvergenceError as err:
                 raise _at_force(fhat, err) from err
-            states.append(results.penalty_state(model, y, lam, iterations, inflated, fill, fhat))
+            states.append(results.penalty_state(model, y, lam, iterations, inflated, fill, fhat, tol))
             in_contact = True
         if progress is not None:
             progress(k + 1, len(forces))
@@ -156,4 +156,4 @@ def penalty_height(model: Model, y_i: np.ndarray, inflated, fill: Control, heigh
     if augmented:
         y, lam, more = penalty.augment(model, y, replace(fill, height=height), lam, tol)
         iterations += more
-    return results.penalty_state(model, y, lam, iterations, inflated, fill)
+    return results.penalty_state(model, y, lam, iterations, inflated, fill, None, tol)

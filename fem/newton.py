@@ -41,10 +41,11 @@ from pocket.core.errors import ConvergenceError
 
 from .banded import SingularSystem
 
-__all__ = ["Result", "Tolerances", "newton"]
+__all__ = ["FLOOR", "NOISE", "ULPS", "Result", "Tolerances", "border_noise", "newton"]
 
-_FLOOR = 1e3  # a residual this many tolerances above the target can be round-off
+FLOOR = 1e3  # a residual this many tolerances above the target can be round-off
 NOISE = 10.0  # a residual within this factor of the unknowns' round-off (``_noise``) is at the floor
+ULPS = 4.0  # the units in the last place the unknowns' round-off is measured in
 
 
 @dataclasses.dataclass(frozen=True)
@@ -98,7 +99,7 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
             break
         step_size = float(np.abs(dy / scales).max())
         converged = step_size <= tol.increment and r_max <= tol.residual
-        floor = r_max >= 0.1 * r_prev and r_max <= _FLOOR * tol.residual and step_size <= _FLOOR * tol.increment
+        floor = r_max >= 0.1 * r_prev and r_max <= FLOOR * tol.residual and step_size <= FLOOR * tol.increment
         if not (converged or floor) and step_size <= tol.increment:
             floor = r_max <= NOISE * _noise(linearize, y, r)  # the system is spent: only dy is used below
         if converged or floor:
@@ -112,7 +113,7 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
                 break
             step *= 0.5
         else:
-            if r_max > _FLOOR * tol.residual:
+            if r_max > FLOOR * tol.residual:
                 break
             trial = y + dy  # at round-off level the merit need not decrease
             r_trial, system_trial = linearize(trial)
@@ -124,5 +125,14 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
 def _noise(linearize: Callable, y: np.ndarray, r: np.ndarray) -> float:
     """max |R(y') - R(y)| with y' = y (1 +- 4 eps), the signs alternating: the residual's round-off floor."""
     signs = np.where(np.arange(y.size) % 2 == 0, 1.0, -1.0)
-    r_near, _ = linearize(y * (1.0 + 4.0 * np.finfo(float).eps * signs))
+    r_near, _ = linearize(y * (1.0 + ULPS * np.finfo(float).eps * signs))
     return float(np.abs(r_near - r).max()) if _finite(r_near) else np.inf
+
+
+def border_noise(system, y: np.ndarray) -> np.ndarray:
+    """ULPS eps (|C| |U| + |D| |s|): the most each border row of the bordered ``system`` (C (m, N), D (m, m), at
+    y = [U, s]) moves when every unknown moves by ULPS units in its last place, whatever their signs (the
+    worst case of ``_noise``, row by row, to first order)."""
+    n = system.C.shape[1]
+    u, s = np.abs(y[:n]), np.abs(y[n:])
+    return ULPS * np.finfo(float).eps * (np.abs(system.C) @ u + np.abs(system.D) @ s)

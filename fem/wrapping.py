@@ -151,7 +151,7 @@ def curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: T
                     try:
                         y, iterations = solve(model, replace(fill, force=force), predict(history, np.sqrt(force)),
                                               tol)
-                        state = wrapstates.state(model, y, iterations, inflated, fill, fhat)
+                        state = wrapstates.state(model, y, iterations, inflated, fill, fhat, tol)
                         _same_branch(state, states[-1])
                     except (ConvergenceError, OutOfRangeError):
                         state = None
@@ -159,7 +159,7 @@ def curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: T
             except ConvergenceError as err:
                 raise _at_force(fhat, err) from err
             history.append((np.sqrt(force), y))
-            states.append(state or wrapstates.state(model, y, iterations, inflated, fill, fhat))
+            states.append(state or wrapstates.state(model, y, iterations, inflated, fill, fhat, tol))
         if progress is not None:
             progress(k + 1, len(forces))
     return states
@@ -179,4 +179,4 @@ def at_height(model: Model, y_i: np.ndarray, inflated, fill: Control, height: fl
     y, iterations = first_contact(model, y_i, fill, first_radius(inflated, fill, A_FIRST / 4), tol)
     y, more = height_path(model, y, fill, height, tol)
     fhat = reaction(model, y, surface(fill.indenter)) / (np.pi * inflated.pressure)
-    return wrapstates.state(model, y, iterations + more, inflated, fill, fhat)
+    return wrapstates.state(model, y, iterations + more, inflated, fill, fhat, tol)

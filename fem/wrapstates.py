@@ -24,7 +24,7 @@ at each profile node in contact (the edge node's value the edge's, NaN off the c
   F = (-dU + P dV) / dh.
 
 Checks as ``results``' (finite numbers, positive stretches, rho(1) = 1, the fluid's volume or gas law)
-and the reaction equal to the force asked.
+and the reaction equal to the force asked (within ``results.force_allowance``).
 """
 
 from __future__ import annotations
@@ -37,17 +37,19 @@ from pocket.core.states import CompressedState
 from . import post
 from .geometry import contact_elements
 from .model import WRAPPED, Control, Model, fields, placement
-from .obstacle import contact_pressure, forms, zone
+from .newton import Tolerances
+from .obstacle import contact_pressure, forms, linearize, zone
 from .results import (
-    CONSISTENCY,
-    FORCE_FLOOR,
     _check_common,
+    _check_forces,
     _check_gas,
     _echo,
     _extra,
     _fail,
     _least_tensions,
     _volume_target,
+    force_control,
+    identity_noise,
 )
 from .surfaces import surface
 
@@ -103,8 +105,10 @@ def _stored_energy(model: Model, y: np.ndarray, zn, surf) -> float:
     return float(2.0 * np.pi * (inside + free) / 3.0)
 
 
-def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control, force) -> CompressedState:
-    """The compressed state of WRAPPED unknowns y at the given ``force`` (Fhat, echoed) with ``fill``."""
+def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control, force,
+          tol: Tolerances) -> CompressedState:
+    """The compressed state of WRAPPED unknowns y at the given ``force`` (Fhat, echoed) with ``fill``; ``tol``:
+    Newton's tolerances of the solve (``results.force_allowance``)."""
     surf = surface(fill.indenter)
     n, p_i = model.dofs, inflated.pressure
     e = 2 * model.order * contact_elements(model.elements)
@@ -147,8 +151,8 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
     where = f"at Fhat = {force!r} under the {fill.indenter.name}"
     _check_common(model, y, WRAPPED, out, where, _volume_target(fill, pressure))
     _check_gas(fill, out, where)
-    if abs(extra["force_reaction"] - force) > CONSISTENCY * force + FORCE_FLOOR * model.elements:
-        _fail(where, f"force_reaction = {extra['force_reaction']!r} against the force {force!r}")
+    _check_forces({"force_reaction": extra["force_reaction"]}, force, tol, where,
+                  lambda: identity_noise(linearize(model, y, force_control(fill, force, p_i), surf)[1], y))
     if not 0.0 < a < 1.0:
         _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
     return out
