@@ -59,6 +59,11 @@ class Contact:
     indenter: Indenter = PLATE
     _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
+    #: None, or a formulation's ``jacobian(x, force, f)``: dR/dx at x (f the residuals there) cheaper than the
+    #: residual's differences (or None where it has none). A continuation then starts each force's Newton
+    #: iteration from it at the predicted x, instead of from the Jacobian carried from the last force.
+    jacobian = None
+
     @property
     def label(self) -> str:
         """The pocket in messages: its rubber, Phat_I and (a gas) its fluid."""

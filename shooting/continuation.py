@@ -1,6 +1,8 @@
 """Continuation in the force, as every compression of this solver is solved: each force from the last two states
 (``pocket.shooting.compression``'s module docstring tells the method: damped Newton-Broyden steps seeded by secant
-extrapolation, halved on failure, the range end consulted where a step fails).
+extrapolation, halved on failure, the range end consulted where a step fails). A problem that gives its Jacobian
+(``Contact.jacobian``: the capsule's) has each force's iteration start from it at the prediction instead of from
+the last force's.
 
 A problem is a ``pocket.shooting.contact.Contact`` (a pocket's contact with its indenter, or a closed capsule between
 two plates); this module knows nothing of which: a problem's own ``end`` may seed itself with ``first_state``.
@@ -104,8 +106,11 @@ def advance(problem, branch, force):
     while f0 < force:
         f_try = min(f0 + step, force)
         guess = branch.guess(f_try)
+        derivative = None if problem.jacobian is None else \
+            lambda x, f, f_try=f_try: problem.jacobian(x, f_try, f)
         sol = newton.solve(lambda x, f=f_try: problem.residual(x, f), guess, tol=problem.residual_tol,
-                           floor=problem.residual_floor, jacobian=branch.jacobian)
+                           floor=problem.residual_floor, jacobian=branch.jacobian if derivative is None else None,
+                           derivative=derivative)
         if sol.success and problem.close(sol.x, guess, x0) and \
                 problem.clamp_angle(sol.x, f_try) <= math.pi + band(problem.rtol):
             sign = _orientation(problem, sol, f_try, branch)
