@@ -29,6 +29,17 @@ with V = 2 v(pi/2) the whole capsule (v integrated from the edge: the volume bet
 equatorial plane) and the plate's height H = -eta(pi/2) (eta measured from the plate). Each force is solved by
 the continuation of ``pocket.shooting.compression``.
 
+The shots. The zone's equations have a regular singular point at the pole (lambda_2 = rho / sin S), where the
+integrator's steps grow only in proportion to S; the zone is therefore started from the pole series at
+S_0 = (its rtol)^(1/4) (``CapsuleProblem.zone_start``: the series leaves out a relative O(S_0^4), the zone's
+tolerance), not at ``R_POLE``, a third fewer steps. The Jacobian is shot column by column, each shooting only
+what its unknown moves (``CapsuleProblem.jacobian``: q the free part alone, c the free part from the edge carried
+a step on along the zone, e the whole shot): about two shots instead of the residual's three differences, so
+each force's Newton iteration starts from a fresh one at the predicted unknowns (about four residuals a force)
+rather than from the last force's, which the capsule's Jacobian outgrows from one force to the next (its
+Broyden steps then converged linearly). A state's profile is read off its own final shot, by the integrator's
+dense output at equally spaced points (``_N_CONTACT`` on the zone, ``PROFILE_STEP`` apart on the free part).
+
 Low inflation pressures. A shot from the pole to the equator amplifies an error near the pole about
 exp(pi / (2 sqrt(t)))-fold, t = lambda Phat_I / 2 (``amplification``; the theory's small-force section): the free
 part is shot in K segments (``CapsuleProblem.segments``): a single shot where it amplifies at most ``_TAME``-fold
@@ -85,7 +96,7 @@ __all__ = ["CapsuleProblem", "amplification", "capsule_pressure", "inflate_capsu
 
 _GROWTH = 1.4  # ratio of successive strains in the march for the bracket
 _POINTS = 201  # points of an inflated capsule's profile
-_N_CONTACT = 64  # most stored steps of the contact zone are the integrator's; at least this many points there
+_N_CONTACT = 64  # the contact zone's points in a state's profile
 _LANDING = 1e-8  # how far the check shot of an inflated capsule may land from the closed form, where it amplifies
 # the integration's errors less than _TAME-fold
 _TAME = 1e3
@@ -99,11 +110,15 @@ _SEGMENT_GROWTH = 30.0  # the most a segment of the free part may amplify errors
 # the contact zone's relative tolerance, over rtol: the zone's end state is the integrator's error away from the exact
 # one, and that error does not vary smoothly with the pole stretch (the adaptive steps change with it): at rtol 1e-10
 # lambda_1 at the edge jitters by 3e-12 as lambda_0 moves by 1e-11, which the free part amplifies into the equator's
-# angle; Newton read it as a residual noise of about 2e-11, above its tolerance 1e-12, and stalled there, differencing
-# and halving (674 residual evaluations for the benchmark's 20 forces). At 1e-2 rtol the jitter is 7e-14, the zone
-# takes 26 steps instead of 18, and the 20 forces take 192 evaluations.
+# angle; Newton, carrying its Jacobian from force to force, read it as a residual noise of about 2e-11, above its
+# tolerance 1e-12, and stalled there (674 residual evaluations for the benchmark's 20 forces, 192 at 1e-2 rtol).
+# Started from ``jacobian`` at each force, Newton takes 111 at 1e-2, 1e-1 or 1; 1e-2 keeps the zone's error, which
+# the states carry (4e-11 in the pressure ratio at 1), two orders below the free part's.
 _ZONE_RTOL = 1e-2
 _SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to about 1e-3)
+_NO_STEPS = np.empty((0, 6))  # the steps of a shot that stores none
+_NO_NODES = np.empty(0)  # the interior nodes of a free part shot in one segment
+_SUMMED = np.array([0.0, 1.0, 0.0, 0.0, 1.0])  # the components summed over the free part's segments: eta and v
 
 
 def amplification(pressure: float, stretch: float) -> float:
@@ -234,7 +249,7 @@ class CapsuleProblem(Contact):
         """The amplification of a shot from the pole to the equator on this capsule (``amplification``)."""
         return amplification(self.inflated.pressure, self.inflated.stretch_pole)
 
-    @property
+    @functools.cached_property
     def segments(self) -> int:
         """K, the free part's segments: one where a single shot amplifies errors at most ``_TAME``-fold, else enough
         that each amplifies them at most ``_SEGMENT_GROWTH``-fold (growth^(1/K))."""
@@ -268,7 +283,7 @@ class CapsuleProblem(Contact):
     def _nodes(self, a: float) -> np.ndarray:
         """The arc lengths of the free part's interior nodes, dividing [a, pi/2] into ``segments`` equal parts."""
         k = self.segments
-        return a + (0.5 * math.pi - a) * np.arange(1, k) / k
+        return a + (0.5 * math.pi - a) * np.arange(1, k) / k if k > 1 else _NO_NODES
 
     def geometry(self, x, force):
         """(q, lambda_0, a_c, p, nodes) for unknowns x at ``force`` (nodes: shape (K - 1, 3), each node's (rho, psi,
@@ -281,45 +296,75 @@ class CapsuleProblem(Contact):
             return None
         return q, l0, a, self.law.pressure_factor * self.inflated.pressure * q, np.reshape(x[3:], (-1, 3))
 
+    @functools.cached_property
+    def zone_start(self) -> float:
+        """S_0, where the contact zone's shot starts from the pole series: the series' error there is of relative
+        order S_0^4 (p = 0, psi = 0: only the stretches' O(S^4) term is left out), so S_0 = (zone rtol)^(1/4)
+        keeps it at the zone's tolerance, and the integrator's steps, which grow in proportion to S from the
+        pole (its regular singular point), start there instead of at ``R_POLE``."""
+        return self.zone_tolerance.rtol ** 0.25
+
     def _zone(self, l0, a, store):
-        """(status, y(a), steps) of the contact zone from the pole to the edge a (p = 0, psi = 0)."""
-        if a <= R_POLE:
-            y = pole_state(l0, self.law, 0.0, a, sphere=True)
-            return OK, y, np.array([[a, *y]]) if store else np.empty((0, 6))
-        tol = self.zone_tolerance
-        status, _, y, steps = integrate(pole_state(l0, self.law, 0.0, R_POLE, sphere=True), R_POLE, self.law, 0.0,
-                                        rtol=tol.rtol, atol=tol.atol, store=store, r_end=a,
-                                        max_step=a / _N_CONTACT if store else np.inf, sphere=True, slack=True)
+        """(status, y(a), steps) of the contact zone from the pole to the edge a (p = 0, psi = 0); ``store``: the
+        steps are the profile's ``_N_CONTACT`` points, equally spaced on (0, a] (the shot's dense output; the pole
+        series' below ``zone_start``)."""
+        start = self.zone_start
+        arcs = np.linspace(0.0, a, _N_CONTACT + 1)[1:] if store else None
+        if a <= start:
+            status, y, steps = OK, pole_state(l0, self.law, 0.0, a, sphere=True), _NO_STEPS
+        else:
+            tol = self.zone_tolerance
+            status, _, y, steps = integrate(pole_state(l0, self.law, 0.0, start, sphere=True), start, self.law, 0.0,
+                                            rtol=tol.rtol, atol=tol.atol, r_end=a, h0=start, sphere=True, slack=True,
+                                            grid=arcs)
+        if store and status == OK:
+            near = arcs[arcs <= start]
+            steps = np.vstack([[[arc, *pole_state(l0, self.law, 0.0, arc, sphere=True)] for arc in near],
+                               steps[near.size:]]) if near.size else steps
         return status, y, steps
 
-    def _shot(self, geometry, store):
-        """(status, y(pi/2), steps of the free part, steps of the contact zone, y(a), the segments' mismatches at
-        the nodes) at ``geometry``: each segment of the free part shot from its node (the first from the edge),
-        eta and v summed over the segments (the steps' too)."""
-        _q, l0, a, p, nodes = geometry
-        status, edge, zone = self._zone(l0, a, store)
-        if status != OK:
-            return status, edge, np.empty((0, 6)), zone
+    def _zone_on(self, edge, a, end):
+        """(status, y(end)): the contact zone's state ``edge`` at ``a`` carried on to ``end`` > a (one short
+        shot at the zone's tolerance: ``jacobian``'s column of c)."""
+        tol = self.zone_tolerance
+        status, _, y, _ = integrate(edge, a, self.law, 0.0, rtol=tol.rtol, atol=tol.atol, r_end=end, h0=end - a,
+                                    sphere=True, slack=True)
+        return status, y
+
+    def _free(self, edge, a, p, nodes, store):
+        """(status, y(pi/2), steps, the segments' mismatches at the nodes) of the free part from the contact edge a
+        (``edge`` the zone's state there) at the pressure p: each segment shot from its node (the first from the
+        edge), eta and v summed over the segments (the steps' too). ``store``: the steps are the profile's points,
+        equally spaced at most ``PROFILE_STEP`` apart on each segment (the shot's dense output)."""
         tol = self.tolerance
         ends = [*self._nodes(a), 0.5 * math.pi]
         starts = [(edge[0], 0.0, edge[3]), *map(tuple, nodes)]
         offset, pieces, mismatches = np.zeros(5), [], []
         for k, (begin, end) in enumerate(zip([a, *ends[:-1]], ends, strict=True)):
             rho, psi, l1 = starts[k]
+            grid = np.linspace(begin, end, math.ceil((end - begin) / PROFILE_STEP) + 1) if store else None
             status, _, y, steps = integrate(np.array([rho, 0.0, psi, l1, 0.0]), begin, self.law, p, rtol=tol.rtol,
-                                            atol=tol.atol, store=store, r_end=end,
-                                            max_step=PROFILE_STEP if store else np.inf, psi_max=PSI_MAX_EDGE,
-                                            sphere=True)
+                                            atol=tol.atol, r_end=end, psi_max=PSI_MAX_EDGE, sphere=True, grid=grid)
             if status != OK:
-                return status, y, np.empty((0, 6)), zone
+                return status, y, _NO_STEPS, mismatches
             if k + 1 < len(starts):
                 mismatches.extend(y[[0, 2, 3]] - np.asarray(starts[k + 1]))
-            y = y + offset * np.array([0.0, 1.0, 0.0, 0.0, 1.0])
+            y = y + offset * _SUMMED
             if store:
-                pieces.append(steps[:, 1:] + offset * np.array([0.0, 1.0, 0.0, 0.0, 1.0]))
-                pieces[-1] = np.column_stack([steps[:, 0], pieces[-1]])[(1 if k else 0):]
+                steps[:, 1:] += offset * _SUMMED
+                pieces.append(steps[(1 if k else 0):])
             offset = y
-        return status, y, np.vstack(pieces) if store else np.empty((0, 6)), zone, edge, mismatches
+        return status, y, np.vstack(pieces) if store else _NO_STEPS, mismatches
+
+    def _shot(self, geometry, store):
+        """(status, y(pi/2), steps of the free part, steps of the contact zone, y(a), the segments' mismatches at
+        the nodes) at ``geometry`` (``_zone``, then ``_free``)."""
+        _q, l0, a, p, nodes = geometry
+        status, edge, zone = self._zone(l0, a, store)
+        if status != OK:
+            return status, edge, _NO_STEPS, zone
+        status, y, steps, mismatches = self._free(edge, a, p, nodes, store)
+        return status, y, steps, zone, edge, mismatches
 
     def residual(self, x, force, angle=None):
         """The three residuals at ``force`` (module docstring); None where a shot stops or x is outside."""
@@ -328,14 +373,47 @@ class CapsuleProblem(Contact):
             if shot is not None:
                 self._last["failure"] = (shot[0], float(x[0]), self.stretch(x[1]), float(force))
             return None
-        y, edge = shot[1], shot[4]
+        return self._residuals(x, force, shot[1], shot[4], shot[5])
+
+    def _residuals(self, x, force, y, edge, mismatches):
+        """The residuals of unknowns x at ``force`` whose shot reached the equator at y with the contact edge's
+        state ``edge`` and the segments' ``mismatches``."""
         inflated = self.inflated
         ratio = self.fluid.volume_ratio(inflated.pressure * x[0], inflated.pressure)
         if self.height is None:
             last = x[0] * edge[0] ** 2 / force - 1.0
         else:
             last = (-y[1] - self.height) / inflated.stretch_pole
-        return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last, *shot[5]])
+        return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last, *mismatches])
+
+    def jacobian(self, x, force, f):
+        """dR/dx at x (its residuals f, its shot the last one: ``Contact.shoot``'s cache) by forward differences
+        (``newton.difference_steps``), each column shooting only what its unknown moves: q the free part alone
+        (the pressure), c the free part from the edge carried on along the zone (``_zone_on``), e the whole shot;
+        about two shots' cost instead of three. None with segments (their nodes move one segment each: the
+        residual's differences then) or where a shot of a column stops."""
+        shot = self.shoot(x, force)
+        if self.segments > 1 or shot is None or shot[0] != OK:
+            return None
+        _, _, a, _, nodes = self.geometry(x, force)
+        edge = shot[4]
+        jac = np.empty((3, 3))
+        for j, h in enumerate(newton.difference_steps(x)):
+            moved = x.copy()
+            moved[j] += h
+            geometry = self.geometry(moved, force)
+            if geometry is None:
+                return None
+            _, l0_j, a_j, p_j, _ = geometry
+            status, edge_j = (OK, edge) if j == 0 else self._zone_on(edge, a, a_j) if j == 2 else \
+                self._zone(l0_j, a_j, 0)[:2]
+            if status != OK:
+                return None
+            status, y, _, _ = self._free(edge_j, a_j, p_j, nodes, 0)
+            if status != OK:
+                return None
+            jac[:, j] = (self._residuals(moved, force, y, edge_j, []) - f) / h
+        return jac
 
     def clamp_angle(self, x, force) -> float:
         """No clamp: 0, so that the continuation's test of the clamp plane never fires."""
@@ -347,17 +425,16 @@ class CapsuleProblem(Contact):
     def compressed(self, force, x, fluid) -> tuple[CompressedState, float]:
         """The compressed state at ``force`` for the solved unknowns x, and 0 (no clamp angle)."""
         q, l0, a, _, _ = self.geometry(x, force)
-        status, y, _, _, edge, _ = self.shoot(x, force)
-        stored = self.shoot(x, force, store=20000)
-        for what, code in (("final", status), ("profile", stored[0])):
-            if code != OK:
-                raise ConvergenceError(f"capsule compression at force = {force!r}: the {what} shot "
-                                       f"{STATUS[code]}", load=force)
+        stored = self.shoot(x, force, store=True)  # the residual's shot, with the profile's points (dense output)
+        if stored[0] != OK:
+            raise ConvergenceError(f"capsule compression at force = {force!r}: the final shot {STATUS[stored[0]]}",
+                                   load=force)
+        _, y, free, zone, edge, _ = stored
         inflated = self.inflated
         height = -y[1]
         rho_c = edge[0]
         force_out = force if self.height is None else q * rho_c**2
-        profile = self._profile(l0, stored[3], stored[2], -stored[1][1])
+        profile = self._profile(l0, zone, free, height)
         state = CompressedState(
             pressure_initial=inflated.pressure, force=force_out, pressure=inflated.pressure * q, pressure_ratio=q,
             contact_area=rho_c**2, contact_radius=a, stretch_contact=rho_c / math.sin(a), height=height,
@@ -370,9 +447,8 @@ class CapsuleProblem(Contact):
         return state, 0.0
 
     def _profile(self, l0, zone, free, height) -> Profile:
-        """The meridian from the pole to the equator: the contact zone's steps (flat at the plate), then the free
-        part's; eta from the equatorial plane, the plate's ``height`` above it (the stored shot's own, within the
-        integration's tolerance of the state's)."""
+        """The meridian from the pole to the equator: the contact zone's points (flat at the plate), then the free
+        part's; eta from the equatorial plane, the plate's ``height`` above it."""
         steps = np.vstack([zone, free[1:]])
         arc = np.concatenate([[0.0], steps[:, 0]])
         rho = np.concatenate([[0.0], steps[:, 1]])
