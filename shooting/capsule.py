@@ -386,6 +386,13 @@ class CapsuleProblem(Contact):
             last = (-y[1] - self.height) / inflated.stretch_pole
         return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last, *mismatches])
 
+    @staticmethod
+    def predictor(force: float) -> float:
+        """log F: the variable in which a continuation predicts the unknowns, a quadratic through the last three
+        states (the contact radius grows like sqrt(F), the curve is taken over decades of F; in F itself the
+        prediction missed ten times further)."""
+        return math.log(force)
+
     def jacobian(self, x, force, f):
         """dR/dx at x (its residuals f, its shot the last one: ``Contact.shoot``'s cache) by forward differences
         (``newton.difference_steps``), each column shooting only what its unknown moves: q the free part alone

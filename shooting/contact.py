@@ -63,6 +63,9 @@ class Contact:
     #: residual's differences (or None where it has none). A continuation then starts each force's Newton
     #: iteration from it at the predicted x, instead of from the Jacobian carried from the last force.
     jacobian = None
+    #: None, or the function of the force in which a continuation's prediction is a polynomial (the force itself
+    #: if None)
+    predictor = None
 
     @property
     def label(self) -> str:

@@ -71,16 +71,19 @@ class Branch:
     jacobian: np.ndarray | None = None
     orientation: float = 0.0
 
-    def guess(self, force):
+    def guess(self, force, variable=None):
         """Prediction of x at ``force``: the polynomial through the last three points (two: the secant), those
         at a positive force (the inflated state at 0 is no point of the curve in the unknowns of a compression:
-        a capsule's contact radius is c sqrt(Fhat))."""
+        a capsule's contact radius is c sqrt(Fhat)), in the force or in ``variable(force)`` if given (a problem's
+        ``Contact.predictor``)."""
         points = [(f, x) for f, x in self.points if f > 0.0]
         if not points:
             return self.points[-1][1]
+        at = (lambda f: f) if variable is None else variable
+        t = at(force)
         guess = np.zeros_like(points[-1][1])
         for j, (fj, xj) in enumerate(points):  # Lagrange's form
-            weight = math.prod((force - fk) / (fj - fk) for k, (fk, _) in enumerate(points) if k != j)
+            weight = math.prod((t - at(fk)) / (at(fj) - at(fk)) for k, (fk, _) in enumerate(points) if k != j)
             guess = guess + weight * xj
         return guess
 
@@ -105,7 +108,7 @@ def advance(problem, branch, force):
     step, end, unknown = force - f0, None, ""
     while f0 < force:
         f_try = min(f0 + step, force)
-        guess = branch.guess(f_try)
+        guess = branch.guess(f_try, problem.predictor)
         derivative = None if problem.jacobian is None else \
             lambda x, f, f_try=f_try: problem.jacobian(x, f_try, f)
         sol = newton.solve(lambda x, f=f_try: problem.residual(x, f), guess, tol=problem.residual_tol,
