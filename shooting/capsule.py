@@ -118,6 +118,7 @@ _ZONE_RTOL = 1e-2
 _SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to about 1e-3)
 _NO_STEPS = np.empty((0, 6))  # the steps of a shot that stores none
 _NO_NODES = np.empty(0)  # the interior nodes of a free part shot in one segment
+_NO_STARTS = np.empty((0, 3))  # ... and their unknown starts
 _SUMMED = np.array([0.0, 1.0, 0.0, 0.0, 1.0])  # the components summed over the free part's segments: eta and v
 
 
@@ -288,13 +289,17 @@ class CapsuleProblem(Contact):
     def geometry(self, x, force):
         """(q, lambda_0, a_c, p, nodes) for unknowns x at ``force`` (nodes: shape (K - 1, 3), each node's (rho, psi,
         lambda_1)), or None outside the model's domain."""
-        q, e, c = x[:3]
+        q, e, c = float(x[0]), float(x[1]), float(x[2])
         l0 = self.stretch(e)
-        scale = math.sqrt(force) if self.height is None else 1.0
-        a = c * scale
+        a = c * math.sqrt(force) if self.height is None else c
         if not (q > 0.0 and l0 > 0.0 and 0.0 < a < 0.5 * math.pi and force > 0.0):
             return None
-        return q, l0, a, self.law.pressure_factor * self.inflated.pressure * q, np.reshape(x[3:], (-1, 3))
+        return q, l0, a, self._pressure * q, np.reshape(x[3:], (-1, 3)) if x.size > 3 else _NO_STARTS
+
+    @functools.cached_property
+    def _pressure(self) -> float:
+        """p at q = 1: the inflated capsule's pressure in units of tau T / R."""
+        return self.law.pressure_factor * self.inflated.pressure
 
     @functools.cached_property
     def zone_start(self) -> float:
@@ -337,23 +342,24 @@ class CapsuleProblem(Contact):
         edge), eta and v summed over the segments (the steps' too). ``store``: the steps are the profile's points,
         equally spaced at most ``PROFILE_STEP`` apart on each segment (the shot's dense output)."""
         tol = self.tolerance
-        ends = [*self._nodes(a), 0.5 * math.pi]
-        starts = [(edge[0], 0.0, edge[3]), *map(tuple, nodes)]
-        offset, pieces, mismatches = np.zeros(5), [], []
-        for k, (begin, end) in enumerate(zip([a, *ends[:-1]], ends, strict=True)):
-            rho, psi, l1 = starts[k]
+        begin, y0, offset = a, np.array([edge[0], 0.0, 0.0, edge[3], 0.0]), None
+        pieces, mismatches = [], []
+        for k, end in enumerate([*self._nodes(a), 0.5 * math.pi]):
             grid = np.linspace(begin, end, math.ceil((end - begin) / PROFILE_STEP) + 1) if store else None
-            status, _, y, steps = integrate(np.array([rho, 0.0, psi, l1, 0.0]), begin, self.law, p, rtol=tol.rtol,
-                                            atol=tol.atol, r_end=end, psi_max=PSI_MAX_EDGE, sphere=True, grid=grid)
+            status, _, y, steps = integrate(y0, begin, self.law, p, rtol=tol.rtol, atol=tol.atol, r_end=end,
+                                            psi_max=PSI_MAX_EDGE, sphere=True, grid=grid)
             if status != OK:
                 return status, y, _NO_STEPS, mismatches
-            if k + 1 < len(starts):
-                mismatches.extend(y[[0, 2, 3]] - np.asarray(starts[k + 1]))
-            y = y + offset * _SUMMED
-            if store:
+            if k < len(nodes):  # the next segment starts at its node
+                rho, psi, l1 = nodes[k]
+                mismatches.extend((y[0] - rho, y[2] - psi, y[3] - l1))
+                y0 = np.array([rho, 0.0, psi, l1, 0.0])
+            if offset is not None:
+                y += offset * _SUMMED
                 steps[:, 1:] += offset * _SUMMED
+            if store:
                 pieces.append(steps[(1 if k else 0):])
-            offset = y
+            begin, offset = end, y
         return status, y, np.vstack(pieces) if store else _NO_STEPS, mismatches
 
     def _shot(self, geometry, store):

@@ -69,7 +69,9 @@ NUMERICAL = (STEPS, SMALL_STEP)
 _NS = tableau.N_STAGES
 _LANDING = 1e-13  # a step ends on a knot when within this of it (units R); a slip of that size is harmless
 _EXPONENT = -1.0 / 8.0
-_NO_GRID = np.empty(0)
+_NO_GRID = np.empty(0)  # (and no knots: the compiled loop only reads these)
+_NO_TABLE = (np.empty(0), np.empty((4, 0)))
+_NO_STEPS = np.empty((0, 6))
 
 
 @functools.partial(compiled, inline="always")
@@ -259,11 +261,11 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
         atol = np.full(5, atol)
     h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
     grid = _NO_GRID if grid is None else np.asarray(grid, dtype=float)
-    buf = np.empty((grid.size, 6)) if grid.size else np.empty((store, 6)) if store else np.empty((0, 6))
-    breaks, coef = (np.empty(0), np.empty((4, 0))) if table is None else table
+    buf = np.empty((grid.size, 6)) if grid.size else np.empty((store, 6)) if store else _NO_STEPS
+    breaks, coef = _NO_TABLE if table is None else table
     status, r_end, y_end, m = _integrate(
         np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(wrap),
-        breaks, coef, np.sqrt(breaks), float(rtol), atol,
+        breaks, coef, _NO_GRID if table is None else np.sqrt(breaks), float(rtol), atol,
         float(h0), float(max_step), float(psi_max), bool(sphere), bool(slack), buf, grid, tableau.A, tableau.B,
         tableau.C, tableau.E3, tableau.E5, tableau.A_EXTRA, tableau.C_EXTRA, tableau.D,
     )
