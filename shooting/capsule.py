@@ -30,15 +30,20 @@ equatorial plane) and the plate's height H = -eta(pi/2) (eta measured from the p
 the continuation of ``pocket.shooting.compression``.
 
 The shots. The zone's equations have a regular singular point at the pole (lambda_2 = rho / sin S), where the
-integrator's steps grow only in proportion to S; the zone is therefore started from the pole series at
-S_0 = (its rtol)^(1/4) (``CapsuleProblem.zone_start``: the series leaves out a relative O(S_0^4), the zone's
-tolerance), not at ``R_POLE``, a third fewer steps. The Jacobian is shot column by column, each shooting only
+integrator's steps grow only in proportion to S; the zone is therefore started from its pole series one order
+further than ``pole_state``'s (``_zone_series``): with lambda_1 = l0 + c2 S^2 + c4 S^4 and lambda_2 = l0 + d2 S^2
++ d4 S^4 (rho = lambda_2 sin S), rho' = lambda_1 and (rho t1)' = t2 rho' order by order give c2 = l0 (A - 3B) /
+(16 A) and d2 = l0 (3A - B) / (16 A) (A, B = dt1/dl1, dt1/dl2 at (l0, l0): ``pole_state``'s with k = 0), and at
+S^4 c4 and d4, linear in t1's second derivatives there (the expressions in the code, solved by sympy). It leaves
+out a relative O(S^6), so the zone starts at S_0 = (its rtol)^(1/6) (``CapsuleProblem.zone_start``, 0.01 at
+rtol 1e-12) instead of ``R_POLE``: half the steps. The Jacobian is shot column by column, each shooting only
 what its unknown moves (``CapsuleProblem.jacobian``: q the free part alone, c the free part from the edge carried
 a step on along the zone, e the whole shot): about two shots instead of the residual's three differences, so
-each force's Newton iteration starts from a fresh one at the predicted unknowns (about four residuals a force)
-rather than from the last force's, which the capsule's Jacobian outgrows from one force to the next (its
-Broyden steps then converged linearly). A state's profile is read off its own final shot, by the integrator's
-dense output at equally spaced points (``_N_CONTACT`` on the zone, ``PROFILE_STEP`` apart on the free part).
+each force's Newton iteration starts from a fresh one at the predicted unknowns (a quadratic in log F through
+the last three states, ``CapsuleProblem.predictor``; about three residuals a force) rather than from the last
+force's, which the capsule's Jacobian outgrows from one force to the next (its Broyden steps then converged
+linearly). A state's profile is read off its own final shot, by the integrator's dense output at equally spaced
+points (``_N_CONTACT`` on the zone, ``PROFILE_STEP`` apart on the free part).
 
 Low inflation pressures. A shot from the pole to the equator amplifies an error near the pole about
 exp(pi / (2 sqrt(t)))-fold, t = lambda Phat_I / 2 (``amplification``; the theory's small-force section): the free
@@ -71,6 +76,7 @@ import math
 
 import numpy as np
 
+from pocket.core.compiled import compiled
 from pocket.core.errors import (
     CAPSULE_EDGE,
     STRETCH_LIMIT,
@@ -90,7 +96,7 @@ from .end import End
 from .equations import pole_state
 from .integrator import OK, STATUS, integrate
 from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, Tolerance
-from .tensions import inside, tensions
+from .tensions import inside, tensions, tensions_compiled
 
 __all__ = ["CapsuleProblem", "amplification", "capsule_pressure", "inflate_capsule"]
 
@@ -128,6 +134,32 @@ def amplification(pressure: float, stretch: float) -> float:
     dent's homogeneous solutions grow like exp(r / l), l^2 = t R^2 lambda^2: the theory's small-force section)."""
     t = 0.5 * stretch * pressure
     return math.inf if t <= 0.0 else math.exp(min(700.0, 0.5 * math.pi / math.sqrt(t)))
+
+
+@compiled
+def _zone_series(l0, code, params, arc):
+    """y = [rho, 0, 0, lambda_1, 0] of the contact zone (p = 0, psi = 0) at the arc length ``arc`` from the pole of
+    stretch l0, by its series to O(S^4) (module docstring, "The shots"); t1's second derivatives by central
+    differences of the kernel's first (a relative step 1e-4: their error, about 1e-8, enters the S^4 terms only)."""
+    _, _, a, b = tensions_compiled(l0, l0, code, params)
+    h = 1e-4 * l0
+    a11 = (tensions_compiled(l0 + h, l0, code, params)[2] - tensions_compiled(l0 - h, l0, code, params)[2]) / (2 * h)
+    a12 = (tensions_compiled(l0 + h, l0, code, params)[3] - tensions_compiled(l0 - h, l0, code, params)[3]) / (2 * h)
+    a22 = (tensions_compiled(l0, l0 + h, code, params)[3] - tensions_compiled(l0, l0 - h, code, params)[3]) / (2 * h)
+    c2 = l0 * (a - 3.0 * b) / (16.0 * a)
+    d2 = l0 * (3.0 * a - b) / (16.0 * a)
+    c4 = l0 * (18.0 * a**3 + 5.0 * a * a * a11 * l0 - 30.0 * a * a * a12 * l0 - 90.0 * a * a * b
+               - 55.0 * a * a * a22 * l0 + 30.0 * a * a11 * b * l0 + 100.0 * a * a12 * b * l0 + 30.0 * a * b * b
+               + 30.0 * a * b * a22 * l0 - 55.0 * a11 * b * b * l0 - 30.0 * a12 * b * b * l0 + 10.0 * b**3
+               + 5.0 * b * b * a22 * l0) / (3072.0 * a**3)
+    d4 = l0 * (74.0 * a**3 + a * a * a11 * l0 - 6.0 * a * a * a12 * l0 - 50.0 * a * a * b - 11.0 * a * a * a22 * l0
+               + 6.0 * a * a11 * b * l0 + 20.0 * a * a12 * b * l0 + 6.0 * a * b * b + 6.0 * a * b * a22 * l0
+               - 11.0 * a11 * b * b * l0 - 6.0 * a12 * b * b * l0 + 2.0 * b**3 + b * b * a22 * l0) / (3072.0 * a**3)
+    s2 = arc * arc
+    y = np.zeros(5)
+    y[0] = (l0 + (d2 + d4 * s2) * s2) * np.sin(arc)
+    y[3] = l0 + (c2 + c4 * s2) * s2
+    return y
 
 
 def capsule_pressure(law, stretch: float) -> float:
@@ -303,28 +335,28 @@ class CapsuleProblem(Contact):
 
     @functools.cached_property
     def zone_start(self) -> float:
-        """S_0, where the contact zone's shot starts from the pole series: the series' error there is of relative
-        order S_0^4 (p = 0, psi = 0: only the stretches' O(S^4) term is left out), so S_0 = (zone rtol)^(1/4)
-        keeps it at the zone's tolerance, and the integrator's steps, which grow in proportion to S from the
-        pole (its regular singular point), start there instead of at ``R_POLE``."""
-        return self.zone_tolerance.rtol ** 0.25
+        """S_0, where the contact zone's shot starts from its pole series (``_zone_series``): the series' error there
+        is of relative order S_0^6, so S_0 = (zone rtol)^(1/6) keeps it at the zone's tolerance, and the integrator's
+        steps, which grow in proportion to S from the pole (its regular singular point), start there instead of at
+        ``R_POLE``."""
+        return self.zone_tolerance.rtol ** (1.0 / 6.0)
 
     def _zone(self, l0, a, store):
         """(status, y(a), steps) of the contact zone from the pole to the edge a (p = 0, psi = 0); ``store``: the
         steps are the profile's ``_N_CONTACT`` points, equally spaced on (0, a] (the shot's dense output; the pole
         series' below ``zone_start``)."""
-        start = self.zone_start
+        start, law = self.zone_start, self.law
         arcs = np.linspace(0.0, a, _N_CONTACT + 1)[1:] if store else None
         if a <= start:
-            status, y, steps = OK, pole_state(l0, self.law, 0.0, a, sphere=True), _NO_STEPS
+            status, y, steps = OK, _zone_series(l0, law.code, law.params, a), _NO_STEPS
         else:
             tol = self.zone_tolerance
-            status, _, y, steps = integrate(pole_state(l0, self.law, 0.0, start, sphere=True), start, self.law, 0.0,
+            status, _, y, steps = integrate(_zone_series(l0, law.code, law.params, start), start, law, 0.0,
                                             rtol=tol.rtol, atol=tol.atol, r_end=a, h0=start, sphere=True, slack=True,
                                             grid=arcs)
         if store and status == OK:
             near = arcs[arcs <= start]
-            steps = np.vstack([[[arc, *pole_state(l0, self.law, 0.0, arc, sphere=True)] for arc in near],
+            steps = np.vstack([[[arc, *_zone_series(l0, law.code, law.params, arc)] for arc in near],
                                steps[near.size:]]) if near.size else steps
         return status, y, steps
 
