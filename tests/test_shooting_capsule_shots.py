@@ -6,9 +6,10 @@ import math
 import numpy as np
 import pytest
 from pocket.shooting import newton
-from pocket.shooting.capsule import CapsuleProblem, _zone_series, inflate_capsule
+from pocket.shooting.capsule import CapsuleProblem, _zone_series
 from pocket.shooting.continuation import first_state
 from pocket.shooting.equations import pole_state
+from pocket.shooting.inflation import inflate
 from pocket.shooting.integrator import OK, integrate
 from pocket.shooting.laws import law_of
 from pocket.shooting.shots import R_POLE
@@ -20,8 +21,7 @@ YEOH = check("yeoh", {"c10": 1.0, "c20": -0.05, "c30": 0.01})
 
 
 def _problem(material, phat, rtol=1e-10):
-    law = law_of(material)
-    return CapsuleProblem(inflate_capsule(material, law, phat, rtol), rtol, law)
+    return CapsuleProblem(inflate(material, phat, geometry="capsule", rtol=rtol), rtol, law_of(material))
 
 
 def _exact_zone(law, stretch, arc):
