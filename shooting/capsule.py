@@ -35,12 +35,12 @@ further than ``pole_state``'s (``_zone_series``): with lambda_1 = l0 + c2 S^2 + 
 + d4 S^4 (rho = lambda_2 sin S), rho' = lambda_1 and (rho t1)' = t2 rho' order by order give c2 = l0 (A - 3B) /
 (16 A) and d2 = l0 (3A - B) / (16 A) (A, B = dt1/dl1, dt1/dl2 at (l0, l0): ``pole_state``'s with k = 0), and at
 S^4 c4 and d4, linear in t1's second derivatives there (the expressions in the code, solved by sympy). It leaves
-out a relative O(S^6), so the zone starts at S_0 = (its rtol)^(1/6) (``CapsuleProblem.zone_start``, 0.01 at
-rtol 1e-12) instead of ``R_POLE``: half the steps. The Jacobian is shot column by column, each shooting only
+out a relative O(S^6), so the zone starts at S_0 = (its rtol)^(1/6) (``CapsuleProblem.zone_start``, 0.015 at
+rtol 1e-11) instead of ``R_POLE``: half the steps. The Jacobian is shot column by column, each shooting only
 what its unknown moves (``CapsuleProblem.jacobian``: q the free part alone, c the free part from the edge carried
 a step on along the zone, e the whole shot): about two shots instead of the residual's three differences, so
-each force's Newton iteration starts from a fresh one at the predicted unknowns (a quadratic in log F through
-the last three states, ``CapsuleProblem.predictor``; about three residuals a force) rather than from the last
+each force's Newton iteration starts from a fresh one at the predicted unknowns (a quartic in log F through
+the last five states, ``CapsuleProblem.predictor``; two or three residuals a force) rather than from the last
 force's, which the capsule's Jacobian outgrows from one force to the next (its Broyden steps then converged
 linearly). A state's profile is read off its own final shot, by the integrator's dense output at equally spaced
 points (``_N_CONTACT`` on the zone, ``PROFILE_STEP`` apart on the free part).
@@ -118,9 +118,10 @@ _SEGMENT_GROWTH = 30.0  # the most a segment of the free part may amplify errors
 # lambda_1 at the edge jitters by 3e-12 as lambda_0 moves by 1e-11, which the free part amplifies into the equator's
 # angle; Newton, carrying its Jacobian from force to force, read it as a residual noise of about 2e-11, above its
 # tolerance 1e-12, and stalled there (674 residual evaluations for the benchmark's 20 forces, 192 at 1e-2 rtol).
-# Started from ``jacobian`` at each force, Newton takes 111 at 1e-2, 1e-1 or 1; 1e-2 keeps the zone's error, which
-# the states carry (4e-11 in the pressure ratio at 1), two orders below the free part's.
-_ZONE_RTOL = 1e-2
+# Started from ``jacobian`` at each force, Newton takes as many at 1e-2, 1e-1 or 1 (111, then 94, measured); 1e-1
+# keeps the zone's error, which the states carry (they move by 5e-12 from 1e-2 to 1e-1, by 3e-11 to 1), an order
+# below the free part's: the states at rtol 1e-10 stay within 2.6e-11 of those at 1e-13 at each.
+_ZONE_RTOL = 1e-1
 _SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to about 1e-3)
 _NO_STEPS = np.empty((0, 6))  # the steps of a shot that stores none
 _NO_NODES = np.empty(0)  # the interior nodes of a free part shot in one segment
@@ -424,11 +425,14 @@ class CapsuleProblem(Contact):
             last = (-y[1] - self.height) / inflated.stretch_pole
         return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last, *mismatches])
 
+    PREDICTOR_DEGREE = 4
+
     @staticmethod
     def predictor(force: float) -> float:
-        """log F: the variable in which a continuation predicts the unknowns, a quadratic through the last three
-        states (the contact radius grows like sqrt(F), the curve is taken over decades of F; in F itself the
-        prediction missed ten times further)."""
+        """log F: the variable in which a continuation predicts the unknowns, a quartic through the last five
+        states (``PREDICTOR_DEGREE``; the contact radius grows like sqrt(F), the curve is taken over decades of F;
+        a quadratic in F itself missed ten times further than one in log F, a quartic in log F a hundred times less
+        again: at the benchmark's last forces 4e-7, where one Newton step from the fresh Jacobian converges)."""
         return math.log(force)
 
     def jacobian(self, x, force, f):

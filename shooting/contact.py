@@ -64,8 +64,9 @@ class Contact:
     #: iteration from it at the predicted x, instead of from the Jacobian carried from the last force.
     jacobian = None
     #: None, or the function of the force in which a continuation's prediction is a polynomial (the force itself
-    #: if None)
+    #: if None), of degree ``PREDICTOR_DEGREE`` through the last states
     predictor = None
+    PREDICTOR_DEGREE = 2
 
     @property
     def label(self) -> str:
