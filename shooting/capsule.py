@@ -498,12 +498,10 @@ class CapsuleProblem(Contact):
     def _profile(self, l0, zone, free, height) -> Profile:
         """The meridian from the pole to the equator: the contact zone's points (flat at the plate), then the free
         part's; eta from the equatorial plane, the plate's ``height`` above it."""
-        steps = np.vstack([zone, free[1:]])
-        arc = np.concatenate([[0.0], steps[:, 0]])
-        rho = np.concatenate([[0.0], steps[:, 1]])
-        eta = np.concatenate([[0.0], steps[:, 2]]) + height
-        l1 = np.concatenate([[l0], steps[:, 4]])
-        l2 = np.concatenate([[l0], steps[:, 1] / np.sin(steps[:, 0])])
+        arc, rho, eta, _, l1, _ = np.vstack([[0.0, 0.0, 0.0, 0.0, l0, 0.0], zone, free[1:]]).T.copy()
+        eta += height
+        l2 = np.empty_like(arc)
+        l2[0], l2[1:] = l0, rho[1:] / np.sin(arc[1:])
         t1, t2, _, _ = tensions(l1, l2, self.law.code, self.law.params)
         contact = np.zeros(arc.size, bool)
         contact[:zone.shape[0] + 1] = True

@@ -82,10 +82,10 @@ class Branch:
         if not points:
             return self.points[-1][1]
         at = (lambda f: f) if variable is None else variable
-        t = at(force)
+        t, ts = at(force), [at(f) for f, _ in points]
         guess = np.zeros_like(points[-1][1])
-        for j, (fj, xj) in enumerate(points):  # Lagrange's form
-            weight = math.prod((t - at(fk)) / (at(fj) - at(fk)) for k, (fk, _) in enumerate(points) if k != j)
+        for j, (tj, (_, xj)) in enumerate(zip(ts, points, strict=True)):  # Lagrange's form
+            weight = math.prod((t - tk) / (tj - tk) for k, tk in enumerate(ts) if k != j)
             guess = guess + weight * xj
         return guess
 
@@ -95,11 +95,12 @@ class Branch:
 
 
 def _orientation(problem, sol, force, branch):
-    """sign det J at a solution: by differences for the first state of a branch, or when the
-    Broyden-updated J (an approximation) disagrees with the branch."""
+    """sign det J at a solution: by differences (or the problem's own ``jacobian``) for the first state of a
+    branch, or when the Broyden-updated J (an approximation) disagrees with the branch."""
     sign = 0.0 if sol.jacobian is None else np.sign(np.linalg.det(sol.jacobian))
     if sign != branch.orientation or not branch.orientation:
-        jac = newton.differences(lambda v: problem.residual(v, force), sol.x, sol.f)
+        jac = None if problem.jacobian is None else problem.jacobian(sol.x, force, sol.f)
+        jac = newton.differences(lambda v: problem.residual(v, force), sol.x, sol.f) if jac is None else jac
         sign = 0.0 if jac is None else np.sign(np.linalg.det(jac))
     return sign
 
