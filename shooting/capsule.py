@@ -146,20 +146,20 @@ def _zone_series(l0, code, params, arc):
     """y = [rho, 0, 0, lambda_1, 0] of the contact zone (p = 0, psi = 0) at the arc length ``arc`` from the pole of
     stretch l0, by its series to O(S^4) (module docstring, "The shots"); t1's second derivatives by central
     differences of the kernel's first (a relative step 1e-4: their error, about 1e-8, enters the S^4 terms only)."""
-    _, _, a, b = tensions_compiled(l0, l0, code, params)
+    _, _, a, b = tensions_compiled(l0, l0, code, params)  # A, B: dt1/dl1, dt1/dl2; t11, t12, t22: t1's second
     h = 1e-4 * l0
-    a11 = (tensions_compiled(l0 + h, l0, code, params)[2] - tensions_compiled(l0 - h, l0, code, params)[2]) / (2 * h)
-    a12 = (tensions_compiled(l0 + h, l0, code, params)[3] - tensions_compiled(l0 - h, l0, code, params)[3]) / (2 * h)
-    a22 = (tensions_compiled(l0, l0 + h, code, params)[3] - tensions_compiled(l0, l0 - h, code, params)[3]) / (2 * h)
+    t11 = (tensions_compiled(l0 + h, l0, code, params)[2] - tensions_compiled(l0 - h, l0, code, params)[2]) / (2 * h)
+    t12 = (tensions_compiled(l0 + h, l0, code, params)[3] - tensions_compiled(l0 - h, l0, code, params)[3]) / (2 * h)
+    t22 = (tensions_compiled(l0, l0 + h, code, params)[3] - tensions_compiled(l0, l0 - h, code, params)[3]) / (2 * h)
     c2 = l0 * (a - 3.0 * b) / (16.0 * a)
     d2 = l0 * (3.0 * a - b) / (16.0 * a)
-    c4 = l0 * (18.0 * a**3 + 5.0 * a * a * a11 * l0 - 30.0 * a * a * a12 * l0 - 90.0 * a * a * b
-               - 55.0 * a * a * a22 * l0 + 30.0 * a * a11 * b * l0 + 100.0 * a * a12 * b * l0 + 30.0 * a * b * b
-               + 30.0 * a * b * a22 * l0 - 55.0 * a11 * b * b * l0 - 30.0 * a12 * b * b * l0 + 10.0 * b**3
-               + 5.0 * b * b * a22 * l0) / (3072.0 * a**3)
-    d4 = l0 * (74.0 * a**3 + a * a * a11 * l0 - 6.0 * a * a * a12 * l0 - 50.0 * a * a * b - 11.0 * a * a * a22 * l0
-               + 6.0 * a * a11 * b * l0 + 20.0 * a * a12 * b * l0 + 6.0 * a * b * b + 6.0 * a * b * a22 * l0
-               - 11.0 * a11 * b * b * l0 - 6.0 * a12 * b * b * l0 + 2.0 * b**3 + b * b * a22 * l0) / (3072.0 * a**3)
+    c4 = l0 * (18.0 * a**3 + 5.0 * a * a * t11 * l0 - 30.0 * a * a * t12 * l0 - 90.0 * a * a * b
+               - 55.0 * a * a * t22 * l0 + 30.0 * a * t11 * b * l0 + 100.0 * a * t12 * b * l0 + 30.0 * a * b * b
+               + 30.0 * a * b * t22 * l0 - 55.0 * t11 * b * b * l0 - 30.0 * t12 * b * b * l0 + 10.0 * b**3
+               + 5.0 * b * b * t22 * l0) / (3072.0 * a**3)
+    d4 = l0 * (74.0 * a**3 + a * a * t11 * l0 - 6.0 * a * a * t12 * l0 - 50.0 * a * a * b - 11.0 * a * a * t22 * l0
+               + 6.0 * a * t11 * b * l0 + 20.0 * a * t12 * b * l0 + 6.0 * a * b * b + 6.0 * a * b * t22 * l0
+               - 11.0 * t11 * b * b * l0 - 6.0 * t12 * b * b * l0 + 2.0 * b**3 + b * b * t22 * l0) / (3072.0 * a**3)
     s2 = arc * arc
     y = np.zeros(5)
     y[0] = (l0 + (d2 + d4 * s2) * s2) * np.sin(arc)

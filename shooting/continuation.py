@@ -74,9 +74,9 @@ class Branch:
     orientation: float = 0.0
 
     def guess(self, force, variable=None, degree=2):
-        """Prediction of x at ``force``: the polynomial through the last ``degree`` + 1 points (fewer: of their
-        number less one; two: the secant), those at a positive force (the inflated state at 0 is no point of the
-        curve in the unknowns of a compression: a capsule's contact radius is c sqrt(Fhat)), in the force or in
+        """Prediction of x at ``force``: the polynomial through the last ``degree`` + 1 points (of a lower degree
+        where there are fewer; two: the secant), those at a positive force (the inflated state at 0 is no point of
+        the curve in the unknowns of a compression: a capsule's contact radius is c sqrt(Fhat)), in the force or in
         ``variable(force)`` if given (a problem's ``Contact.predictor`` and ``Contact.PREDICTOR_DEGREE``)."""
         points = [(f, x) for f, x in self.points[-degree - 1:] if f > 0.0]
         if not points:
