@@ -42,8 +42,10 @@ a step on along the zone, e the whole shot): about two shots instead of the resi
 each force's Newton iteration starts from a fresh one at the predicted unknowns (a quartic in log F through
 the last five states, ``CapsuleProblem.predictor``; two or three residuals a force) rather than from the last
 force's, which the capsule's Jacobian outgrows from one force to the next (its Broyden steps then converged
-linearly). A state's profile is read off its own final shot, by the integrator's dense output at equally spaced
-points (``_N_CONTACT`` on the zone, ``PROFILE_STEP`` apart on the free part).
+linearly). A residual's shot with the free part in one segment is compiled whole (``_compiled_shot``: the zone and
+the free part by the same calls of the integrator, without the Python between them). A state's profile is read
+off its own final shot, by the integrator's dense output at equally spaced points (``_N_CONTACT`` on the zone,
+``PROFILE_STEP`` apart on the free part).
 
 Low inflation pressures. A shot from the pole to the equator amplifies an error near the pole about
 exp(pi / (2 sqrt(t)))-fold, t = lambda Phat_I / 2 (``amplification``; the theory's small-force section): the free
@@ -89,12 +91,12 @@ from pocket.core.errors import (
 from pocket.core.geometries import CAPSULE
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-from . import brent, newton
+from . import brent, newton, tableau
 from .contact import Contact
 from .continuation import first_state
 from .end import End
 from .equations import pole_state
-from .integrator import OK, STATUS, integrate
+from .integrator import OK, STATUS, _integrate, integrate
 from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, Tolerance
 from .tensions import inside, tensions, tensions_compiled
 
@@ -128,6 +130,7 @@ _SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to
 # tenth of the next ones, about a sixteenth of the free part (measured on the benchmark's curve): one step fewer of ten
 _FIRST_STEPS = 16
 _NO_STEPS = np.empty((0, 6))  # the steps of a shot that stores none
+_NO_TABLE = np.empty((4, 0))  # (with _NO_NODES for its breakpoints) no profile table: ``_compiled_shot``'s free sheet
 _NO_NODES = np.empty(0)  # the interior nodes of a free part shot in one segment
 _NO_STARTS = np.empty((0, 3))  # ... and their unknown starts
 _SUMMED = np.array([0.0, 1.0, 0.0, 0.0, 1.0])  # the components summed over the free part's segments: eta and v
@@ -165,6 +168,31 @@ def _zone_series(l0, code, params, arc):
     y[0] = (l0 + (d2 + d4 * s2) * s2) * np.sin(arc)
     y[3] = l0 + (c2 + c4 * s2) * s2
     return y
+
+
+@compiled
+def _compiled_shot(l0, a, p, code, params, start, zone_rtol, zone_atol, rtol, atol, psi_max, yes, no, none, table,
+                   steps, A, B, C, E3, E5, AX, CX, D):
+    """(status, y(pi/2), y(a)): ``CapsuleProblem._zone`` then ``_free`` for a free part in one segment, storing
+    nothing, compiled whole (the residual's shot: a third of its cost was the Python between and around the two
+    integrations). The same calls of the integrator with the same arguments, so the same numbers bit for bit
+    (``tests/test_shooting_capsule_shots.py``); ``yes`` and ``no`` are True and False passed in (as literals they
+    would type the integrator anew, and compile it again)."""
+    status = OK
+    if a <= start:
+        edge = _zone_series(l0, code, params, a)
+    else:
+        status, _, edge, _ = _integrate(_zone_series(l0, code, params, start), start, a, code, params, 0.0, 0.0, none,
+                                        table, none, zone_rtol, zone_atol, start, np.inf, np.pi, yes, yes, steps,
+                                        none, A, B, C, E3, E5, AX, CX, D)
+    if status != OK:
+        return status, edge, edge
+    y0 = np.zeros(5)
+    y0[0], y0[3] = edge[0], edge[3]
+    status, _, y, _ = _integrate(y0, a, 0.5 * np.pi, code, params, p, 0.0, none, table, none, rtol, atol,
+                                 (0.5 * np.pi - a) / _FIRST_STEPS, np.inf, psi_max, yes, no, steps, none, A, B, C, E3,
+                                 E5, AX, CX, D)
+    return status, y, edge
 
 
 def capsule_pressure(law, stretch: float) -> float:
@@ -400,10 +428,20 @@ class CapsuleProblem(Contact):
             begin, offset = end, y
         return status, y, np.vstack(pieces) if store else _NO_STEPS, mismatches
 
+    def _one_shot(self, l0, a, p):
+        """(status, y(pi/2), y(a)) of the zone and a free part in one segment (``_compiled_shot``)."""
+        law, zone, free = self.law, self.zone_tolerance, self.tolerance
+        return _compiled_shot(l0, a, p, law.code, law.params, self.zone_start, zone.rtol, zone.atol, free.rtol,
+                              free.atol, PSI_MAX_EDGE, True, False, _NO_NODES, _NO_TABLE, _NO_STEPS, tableau.A,
+                              tableau.B, tableau.C, tableau.E3, tableau.E5, tableau.A_EXTRA, tableau.C_EXTRA, tableau.D)
+
     def _shot(self, geometry, store):
         """(status, y(pi/2), steps of the free part, steps of the contact zone, y(a), the segments' mismatches at
         the nodes) at ``geometry`` (``_zone``, then ``_free``)."""
         _q, l0, a, p, nodes = geometry
+        if not (store or nodes.size):
+            status, y, edge = self._one_shot(l0, a, p)
+            return status, y, _NO_STEPS, _NO_STEPS, edge, []
         status, edge, zone = self._zone(l0, a, store)
         if status != OK:
             return status, edge, _NO_STEPS, zone
@@ -459,11 +497,12 @@ class CapsuleProblem(Contact):
             if geometry is None:
                 return None
             _, l0_j, a_j, p_j, _ = geometry
-            status, edge_j = (OK, edge) if j == 0 else self._zone_on(edge, a, a_j) if j == 2 else \
-                self._zone(l0_j, a_j, 0)[:2]
-            if status != OK:
-                return None
-            status, y, _, _ = self._free(edge_j, a_j, p_j, nodes, 0)
+            if j == 1:
+                status, y, edge_j = self._one_shot(l0_j, a_j, p_j)
+            else:
+                status, edge_j = (OK, edge) if j == 0 else self._zone_on(edge, a, a_j)
+                if status == OK:
+                    status, y, _, _ = self._free(edge_j, a_j, p_j, nodes, 0)
             if status != OK:
                 return None
             jac[:, j] = (self._residuals(moved, force, y, edge_j, []) - f) / h

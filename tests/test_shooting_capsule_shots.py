@@ -58,6 +58,23 @@ def test_the_contact_zone_from_its_pole_series(material, stretch, arc):
     assert np.max(np.abs(edge - _exact_zone(problem.law, stretch, arc))) <= 10 * tol, edge
 
 
+@pytest.mark.parametrize("material", [0.3, NEO, YEOH])
+@pytest.mark.parametrize(("stretch", "arc", "ratio"), [(1.1, 0.9, 1.3), (1.3, 0.5, 1.1), (1.05, 5e-3, 1.0),
+                                                       (1.2, 1.2, 2.0), (0.9, 0.7, 3.0)])
+def test_the_compiled_shot_is_the_zone_then_the_free_part(material, stretch, arc, ratio):
+    """Exact answer: the residual's compiled shot (``_compiled_shot``) makes the same calls of the integrator as
+    ``_zone`` then ``_free``: the same status, edge and equator state, bit for bit (a shot that stops too)."""
+    problem = _problem(material, 0.3)
+    p = problem._pressure * ratio
+    status, y, edge = problem._one_shot(stretch, arc, p)
+    zone_status, zone_edge, _ = problem._zone(stretch, arc, False)
+    assert np.array_equal(edge, zone_edge)
+    if zone_status == OK:
+        zone_status, zone_y, _, _ = problem._free(zone_edge, arc, p, np.empty((0, 3)), False)
+        assert np.array_equal(y, zone_y)
+    assert status == zone_status
+
+
 @pytest.mark.parametrize(("material", "phat", "force"), [(0.2, 0.3, 1.0), (NEO, 0.35, 2.0)])
 def test_the_jacobian_is_the_residuals_derivative(material, phat, force):
     """Exact answer: central differences of the residual with steps 1e-4 (truncation O(h^2) ~ 1e-8, the shots' noise
