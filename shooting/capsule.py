@@ -437,7 +437,8 @@ class CapsuleProblem(Contact):
 
     def _shot(self, geometry, store):
         """(status, y(pi/2), steps of the free part, steps of the contact zone, y(a), the segments' mismatches at
-        the nodes) at ``geometry`` (``_zone``, then ``_free``)."""
+        the nodes) at ``geometry`` (``_zone``, then ``_free``: compiled whole, ``_one_shot``, for a free part in one
+        segment storing nothing)."""
         _q, l0, a, p, nodes = geometry
         if not (store or nodes.size):
             status, y, edge = self._one_shot(l0, a, p)
