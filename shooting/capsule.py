@@ -42,8 +42,9 @@ a step on along the zone, e the whole shot): about two shots instead of the resi
 each force's Newton iteration starts from a fresh one at the predicted unknowns (a quartic in log F through
 the last five states, ``CapsuleProblem.predictor``; two or three residuals a force) rather than from the last
 force's, which the capsule's Jacobian outgrows from one force to the next (its Broyden steps then converged
-linearly). A residual's shot with the free part in one segment is compiled whole (``_compiled_shot``: the zone and
-the free part by the same calls of the integrator, without the Python between them). A state's profile is read
+linearly). A residual's shot and the Jacobian's, with the free part in one segment, are compiled whole
+(``_compiled_shot``: the zone and the free part by the same calls of the integrator, without the Python between
+them). A state's profile is read
 off its own final shot, by the integrator's dense output at equally spaced points (``_N_CONTACT`` on the zone,
 ``PROFILE_STEP`` apart on the free part).
 
@@ -171,20 +172,19 @@ def _zone_series(l0, code, params, arc):
 
 
 @compiled
-def _compiled_shot(l0, a, p, code, params, start, zone_rtol, zone_atol, rtol, atol, psi_max, yes, no, none, table,
-                   steps, A, B, C, E3, E5, AX, CX, D):
-    """(status, y(pi/2), y(a)): ``CapsuleProblem._zone`` then ``_free`` for a free part in one segment, storing
-    nothing, compiled whole (the residual's shot: a third of its cost was the Python between and around the two
-    integrations). The same calls of the integrator with the same arguments, so the same numbers bit for bit
+def _compiled_shot(y_start, s_start, h0, a, p, code, params, zone_rtol, zone_atol, rtol, atol, psi_max, yes, no, none,
+                   table, steps, A, B, C, E3, E5, AX, CX, D):
+    """(status, y(pi/2), y(a)): the contact zone's state ``y_start`` at the arc length ``s_start`` carried on to the
+    edge a (first step h0; none where a <= s_start), then the free part in one segment, storing nothing: compiled
+    whole, ``CapsuleProblem._zone`` (or its carrying on, the Jacobian's column of c) then ``_free`` for the residual
+    and its Jacobian (a third of a residual's cost was the Python between and around the two integrations). The
+    same calls of the integrator with the same arguments, so the same numbers bit for bit
     (``tests/test_shooting_capsule_shots.py``); ``yes`` and ``no`` are True and False passed in (as literals they
     would type the integrator anew, and compile it again)."""
-    status = OK
-    if a <= start:
-        edge = _zone_series(l0, code, params, a)
-    else:
-        status, _, edge, _ = _integrate(_zone_series(l0, code, params, start), start, a, code, params, 0.0, 0.0, none,
-                                        table, none, zone_rtol, zone_atol, start, np.inf, np.pi, yes, yes, steps,
-                                        none, A, B, C, E3, E5, AX, CX, D)
+    status, edge = OK, y_start
+    if a > s_start:
+        status, _, edge, _ = _integrate(y_start, s_start, a, code, params, 0.0, 0.0, none, table, none, zone_rtol,
+                                        zone_atol, h0, np.inf, np.pi, yes, yes, steps, none, A, B, C, E3, E5, AX, CX, D)
     if status != OK:
         return status, edge, edge
     y0 = np.zeros(5)
@@ -393,14 +393,6 @@ class CapsuleProblem(Contact):
                                steps[near.size:]]) if near.size else steps
         return status, y, steps
 
-    def _zone_on(self, edge, a, end):
-        """(status, y(end)): the contact zone's state ``edge`` at ``a`` carried on to ``end`` > a (one short
-        shot at the zone's tolerance: ``jacobian``'s column of c)."""
-        tol = self.zone_tolerance
-        status, _, y, _ = integrate(edge, a, self.law, 0.0, rtol=tol.rtol, atol=tol.atol, r_end=end, h0=end - a,
-                                    sphere=True, slack=True)
-        return status, y
-
     def _free(self, edge, a, p, nodes, store):
         """(status, y(pi/2), steps, the segments' mismatches at the nodes) of the free part from the contact edge a
         (``edge`` the zone's state there) at the pressure p: each segment shot from its node (the first from the
@@ -429,11 +421,20 @@ class CapsuleProblem(Contact):
         return status, y, np.vstack(pieces) if store else _NO_STEPS, mismatches
 
     def _one_shot(self, l0, a, p):
-        """(status, y(pi/2), y(a)) of the zone and a free part in one segment (``_compiled_shot``)."""
+        """(status, y(pi/2), y(a)) of the zone from the pole and a free part in one segment (``_zone`` then ``_free``,
+        compiled whole: ``_carried``)."""
+        start, law = self.zone_start, self.law
+        if a <= start:
+            return self._carried(_zone_series(l0, law.code, law.params, a), a, start, a, p)
+        return self._carried(_zone_series(l0, law.code, law.params, start), start, start, a, p)
+
+    def _carried(self, y, arc, h0, a, p):
+        """(status, y(pi/2), y(a)): the zone's state y at ``arc`` carried on to the edge a (first step h0), then a
+        free part in one segment at the pressure p (``_compiled_shot``)."""
         law, zone, free = self.law, self.zone_tolerance, self.tolerance
-        return _compiled_shot(l0, a, p, law.code, law.params, self.zone_start, zone.rtol, zone.atol, free.rtol,
-                              free.atol, PSI_MAX_EDGE, True, False, _NO_NODES, _NO_TABLE, _NO_STEPS, tableau.A,
-                              tableau.B, tableau.C, tableau.E3, tableau.E5, tableau.A_EXTRA, tableau.C_EXTRA, tableau.D)
+        return _compiled_shot(y, arc, h0, a, p, law.code, law.params, zone.rtol, zone.atol, free.rtol, free.atol,
+                              PSI_MAX_EDGE, True, False, _NO_NODES, _NO_TABLE, _NO_STEPS, tableau.A, tableau.B,
+                              tableau.C, tableau.E3, tableau.E5, tableau.A_EXTRA, tableau.C_EXTRA, tableau.D)
 
     def _shot(self, geometry, store):
         """(status, y(pi/2), steps of the free part, steps of the contact zone, y(a), the segments' mismatches at
@@ -480,16 +481,15 @@ class CapsuleProblem(Contact):
         return math.log(force)
 
     def jacobian(self, x, force, f):
-        """dR/dx at x (its residuals f, its shot the last one: ``Contact.shoot``'s cache) by forward differences
-        (``newton.difference_steps``), each column shooting only what its unknown moves: q the free part alone
-        (the pressure), c the free part from the edge carried on along the zone (``_zone_on``), e the whole shot;
-        about two shots' cost instead of three. None with segments (their nodes move one segment each: the
-        residual's differences then) or where a shot of a column stops."""
+        """dR/dx at x (its residuals f; its shot from ``Contact.shoot``'s cache when it was the last) by forward
+        differences (``newton.difference_steps``), each column shooting only what its unknown moves: q the free
+        part alone (the pressure), c the free part from the edge carried a step on along the zone (``_carried``),
+        e the whole shot; about two shots' cost instead of three. None with segments (their nodes move one segment
+        each: the residual's differences then) or where a shot of a column stops."""
         shot = self.shoot(x, force)
         if self.segments > 1 or shot is None or shot[0] != OK:
             return None
-        _, _, a, _, nodes = self.geometry(x, force)
-        edge = shot[4]
+        a, edge = self.geometry(x, force)[2], shot[4]
         jac = np.empty((3, 3))
         for j, h in enumerate(newton.difference_steps(x)):
             moved = x.copy()
@@ -498,12 +498,8 @@ class CapsuleProblem(Contact):
             if geometry is None:
                 return None
             _, l0_j, a_j, p_j, _ = geometry
-            if j == 1:
-                status, y, edge_j = self._one_shot(l0_j, a_j, p_j)
-            else:
-                status, edge_j = (OK, edge) if j == 0 else self._zone_on(edge, a, a_j)
-                if status == OK:
-                    status, y, _, _ = self._free(edge_j, a_j, p_j, nodes, 0)
+            status, y, edge_j = self._one_shot(l0_j, a_j, p_j) if j == 1 else \
+                self._carried(edge, a, a_j - a, a_j, p_j)
             if status != OK:
                 return None
             jac[:, j] = (self._residuals(moved, force, y, edge_j, []) - f) / h
