@@ -44,9 +44,8 @@ the last five states, ``CapsuleProblem.predictor``; two or three residuals a for
 force's, which the capsule's Jacobian outgrows from one force to the next (its Broyden steps then converged
 linearly). A residual's shot and the Jacobian's, with the free part in one segment, are compiled whole
 (``_compiled_shot``: the zone and the free part by the same calls of the integrator, without the Python between
-them). A state's profile is read
-off its own final shot, by the integrator's dense output at equally spaced points (``_N_CONTACT`` on the zone,
-``PROFILE_STEP`` apart on the free part).
+them). A state's profile is read off its own final shot, by the integrator's dense output at equally spaced points
+(``_N_CONTACT`` on the zone, ``PROFILE_STEP`` apart on the free part).
 
 Low inflation pressures. A shot from the pole to the equator amplifies an error near the pole about
 exp(pi / (2 sqrt(t)))-fold, t = lambda Phat_I / 2 (``amplification``; the theory's small-force section): the free
