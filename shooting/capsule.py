@@ -29,6 +29,24 @@ with V = 2 v(pi/2) the whole capsule (v integrated from the edge: the volume bet
 equatorial plane) and the plate's height H = -eta(pi/2) (eta measured from the plate). Each force is solved by
 the continuation of ``pocket.shooting.compression``.
 
+The shots. The zone's equations have a regular singular point at the pole (lambda_2 = rho / sin S), where the
+integrator's steps grow only in proportion to S; the zone is therefore started from its pole series one order
+further than ``pole_state``'s (``_zone_series``): with lambda_1 = l0 + c2 S^2 + c4 S^4 and lambda_2 = l0 + d2 S^2
++ d4 S^4 (rho = lambda_2 sin S), rho' = lambda_1 and (rho t1)' = t2 rho' order by order give c2 = l0 (A - 3B) /
+(16 A) and d2 = l0 (3A - B) / (16 A) (A, B = dt1/dl1, dt1/dl2 at (l0, l0): ``pole_state``'s with k = 0), and at
+S^4 c4 and d4, linear in t1's second derivatives there (the expressions in the code, solved by sympy). It leaves
+out a relative O(S^6), so the zone starts at S_0 = (its rtol)^(1/6) (``CapsuleProblem.zone_start``, 0.015 at
+rtol 1e-11) instead of ``R_POLE``: half the steps. The Jacobian is shot column by column, each shooting only
+what its unknown moves (``CapsuleProblem.jacobian``: q the free part alone, c the free part from the edge carried
+a step on along the zone, e the whole shot): about two shots instead of the residual's three differences, so
+each force's Newton iteration starts from a fresh one at the predicted unknowns (a quartic in log F through
+the last five states, ``CapsuleProblem.predictor``; two or three residuals a force) rather than from the last
+force's, which the capsule's Jacobian outgrows from one force to the next (its Broyden steps then converged
+linearly). A residual's shot and the Jacobian's, with the free part in one segment, are compiled whole
+(``_compiled_shot``: the zone and the free part by the same calls of the integrator, without the Python between
+them). A state's profile is read off its own final shot, by the integrator's dense output at equally spaced points
+(``_N_CONTACT`` on the zone, ``PROFILE_STEP`` apart on the free part).
+
 Low inflation pressures. A shot from the pole to the equator amplifies an error near the pole about
 exp(pi / (2 sqrt(t)))-fold, t = lambda Phat_I / 2 (``amplification``; the theory's small-force section): the free
 part is shot in K segments (``CapsuleProblem.segments``): a single shot where it amplifies at most ``_TAME``-fold
@@ -60,6 +78,7 @@ import math
 
 import numpy as np
 
+from pocket.core.compiled import compiled
 from pocket.core.errors import (
     CAPSULE_EDGE,
     STRETCH_LIMIT,
@@ -72,20 +91,20 @@ from pocket.core.errors import (
 from pocket.core.geometries import CAPSULE
 from pocket.core.states import CompressedState, InflatedState, Profile
 
-from . import brent, newton
+from . import brent, newton, tableau
 from .contact import Contact
 from .continuation import first_state
 from .end import End
 from .equations import pole_state
-from .integrator import OK, STATUS, integrate
+from .integrator import OK, STATUS, _integrate, integrate
 from .shots import PROFILE_STEP, PSI_MAX_EDGE, R_POLE, Tolerance
-from .tensions import inside, tensions
+from .tensions import inside, tensions, tensions_compiled
 
 __all__ = ["CapsuleProblem", "amplification", "capsule_pressure", "inflate_capsule"]
 
 _GROWTH = 1.4  # ratio of successive strains in the march for the bracket
 _POINTS = 201  # points of an inflated capsule's profile
-_N_CONTACT = 64  # most stored steps of the contact zone are the integrator's; at least this many points there
+_N_CONTACT = 64  # the contact zone's points in a state's profile
 _LANDING = 1e-8  # how far the check shot of an inflated capsule may land from the closed form, where it amplifies
 # the integration's errors less than _TAME-fold
 _TAME = 1e3
@@ -99,11 +118,22 @@ _SEGMENT_GROWTH = 30.0  # the most a segment of the free part may amplify errors
 # the contact zone's relative tolerance, over rtol: the zone's end state is the integrator's error away from the exact
 # one, and that error does not vary smoothly with the pole stretch (the adaptive steps change with it): at rtol 1e-10
 # lambda_1 at the edge jitters by 3e-12 as lambda_0 moves by 1e-11, which the free part amplifies into the equator's
-# angle; Newton read it as a residual noise of about 2e-11, above its tolerance 1e-12, and stalled there, differencing
-# and halving (674 residual evaluations for the benchmark's 20 forces). At 1e-2 rtol the jitter is 7e-14, the zone
-# takes 26 steps instead of 18, and the 20 forces take 192 evaluations.
-_ZONE_RTOL = 1e-2
+# angle; Newton, carrying its Jacobian from force to force, read it as a residual noise of about 2e-11, above its
+# tolerance 1e-12, and stalled there (674 residual evaluations for the benchmark's 20 forces, 192 at 1e-2 rtol).
+# Started from ``jacobian`` at each force, Newton takes as many at 1e-2, 1e-1 or 1 (111, then 94, measured); 1e-1
+# keeps the zone's error, which the states carry (they move by 5e-12 from 1e-2 to 1e-1, by 3e-11 to 1), an order
+# below the free part's: the states at rtol 1e-10 stay within 2.6e-11 of those at 1e-13 at each.
+_ZONE_RTOL = 1e-1
 _SEGMENTS_MAX = 16  # the most segments the free part is shot in (Phat_I down to about 1e-3)
+# the free part's segments start with this fraction of their length as the first step: the integrator's default, a
+# hundredth of the start's arc length, is made for shots from the pole; from the contact edge its first step was a
+# tenth of the next ones, about a sixteenth of the free part (measured on the benchmark's curve): one step fewer of ten
+_FIRST_STEPS = 16
+_NO_STEPS = np.empty((0, 6))  # the steps of a shot that stores none
+_NO_TABLE = np.empty((4, 0))  # (with _NO_NODES for its breakpoints) no profile table: ``_compiled_shot``'s free sheet
+_NO_NODES = np.empty(0)  # the interior nodes of a free part shot in one segment
+_NO_STARTS = np.empty((0, 3))  # ... and their unknown starts
+_SUMMED = np.array([0.0, 1.0, 0.0, 0.0, 1.0])  # the components summed over the free part's segments: eta and v
 
 
 def amplification(pressure: float, stretch: float) -> float:
@@ -112,6 +142,56 @@ def amplification(pressure: float, stretch: float) -> float:
     dent's homogeneous solutions grow like exp(r / l), l^2 = t R^2 lambda^2: the theory's small-force section)."""
     t = 0.5 * stretch * pressure
     return math.inf if t <= 0.0 else math.exp(min(700.0, 0.5 * math.pi / math.sqrt(t)))
+
+
+@compiled
+def _zone_series(l0, code, params, arc):
+    """y = [rho, 0, 0, lambda_1, 0] of the contact zone (p = 0, psi = 0) at the arc length ``arc`` from the pole of
+    stretch l0, by its series to O(S^4) (module docstring, "The shots"); t1's second derivatives by central
+    differences of the kernel's first (a relative step 1e-4: their error, about 1e-8, enters the S^4 terms only)."""
+    _, _, a, b = tensions_compiled(l0, l0, code, params)  # A, B: dt1/dl1, dt1/dl2; t11, t12, t22: t1's second
+    h = 1e-4 * l0
+    t11 = (tensions_compiled(l0 + h, l0, code, params)[2] - tensions_compiled(l0 - h, l0, code, params)[2]) / (2 * h)
+    t12 = (tensions_compiled(l0 + h, l0, code, params)[3] - tensions_compiled(l0 - h, l0, code, params)[3]) / (2 * h)
+    t22 = (tensions_compiled(l0, l0 + h, code, params)[3] - tensions_compiled(l0, l0 - h, code, params)[3]) / (2 * h)
+    c2 = l0 * (a - 3.0 * b) / (16.0 * a)
+    d2 = l0 * (3.0 * a - b) / (16.0 * a)
+    c4 = l0 * (18.0 * a**3 + 5.0 * a * a * t11 * l0 - 30.0 * a * a * t12 * l0 - 90.0 * a * a * b
+               - 55.0 * a * a * t22 * l0 + 30.0 * a * t11 * b * l0 + 100.0 * a * t12 * b * l0 + 30.0 * a * b * b
+               + 30.0 * a * b * t22 * l0 - 55.0 * t11 * b * b * l0 - 30.0 * t12 * b * b * l0 + 10.0 * b**3
+               + 5.0 * b * b * t22 * l0) / (3072.0 * a**3)
+    d4 = l0 * (74.0 * a**3 + a * a * t11 * l0 - 6.0 * a * a * t12 * l0 - 50.0 * a * a * b - 11.0 * a * a * t22 * l0
+               + 6.0 * a * t11 * b * l0 + 20.0 * a * t12 * b * l0 + 6.0 * a * b * b + 6.0 * a * b * t22 * l0
+               - 11.0 * t11 * b * b * l0 - 6.0 * t12 * b * b * l0 + 2.0 * b**3 + b * b * t22 * l0) / (3072.0 * a**3)
+    s2 = arc * arc
+    y = np.zeros(5)
+    y[0] = (l0 + (d2 + d4 * s2) * s2) * np.sin(arc)
+    y[3] = l0 + (c2 + c4 * s2) * s2
+    return y
+
+
+@compiled
+def _compiled_shot(y_start, s_start, h0, a, p, code, params, zone_rtol, zone_atol, rtol, atol, psi_max, yes, no, none,
+                   table, steps, A, B, C, E3, E5, AX, CX, D):
+    """(status, y(pi/2), y(a)): the contact zone's state ``y_start`` at the arc length ``s_start`` carried on to the
+    edge a (first step h0; none where a <= s_start), then the free part in one segment, storing nothing: compiled
+    whole, ``CapsuleProblem._zone`` (or its carrying on, the Jacobian's column of c) then ``_free`` for the residual
+    and its Jacobian (a third of a residual's cost was the Python between and around the two integrations). The
+    same calls of the integrator with the same arguments, so the same numbers bit for bit
+    (``tests/test_shooting_capsule_shots.py``); ``yes`` and ``no`` are True and False passed in (as literals they
+    would type the integrator anew, and compile it again)."""
+    status, edge = OK, y_start
+    if a > s_start:
+        status, _, edge, _ = _integrate(y_start, s_start, a, code, params, 0.0, 0.0, none, table, none, zone_rtol,
+                                        zone_atol, h0, np.inf, np.pi, yes, yes, steps, none, A, B, C, E3, E5, AX, CX, D)
+    if status != OK:
+        return status, edge, edge
+    y0 = np.zeros(5)
+    y0[0], y0[3] = edge[0], edge[3]
+    status, _, y, _ = _integrate(y0, a, 0.5 * np.pi, code, params, p, 0.0, none, table, none, rtol, atol,
+                                 (0.5 * np.pi - a) / _FIRST_STEPS, np.inf, psi_max, yes, no, steps, none, A, B, C, E3,
+                                 E5, AX, CX, D)
+    return status, y, edge
 
 
 def capsule_pressure(law, stretch: float) -> float:
@@ -234,7 +314,7 @@ class CapsuleProblem(Contact):
         """The amplification of a shot from the pole to the equator on this capsule (``amplification``)."""
         return amplification(self.inflated.pressure, self.inflated.stretch_pole)
 
-    @property
+    @functools.cached_property
     def segments(self) -> int:
         """K, the free part's segments: one where a single shot amplifies errors at most ``_TAME``-fold, else enough
         that each amplifies them at most ``_SEGMENT_GROWTH``-fold (growth^(1/K))."""
@@ -268,58 +348,106 @@ class CapsuleProblem(Contact):
     def _nodes(self, a: float) -> np.ndarray:
         """The arc lengths of the free part's interior nodes, dividing [a, pi/2] into ``segments`` equal parts."""
         k = self.segments
-        return a + (0.5 * math.pi - a) * np.arange(1, k) / k
+        return a + (0.5 * math.pi - a) * np.arange(1, k) / k if k > 1 else _NO_NODES
 
     def geometry(self, x, force):
         """(q, lambda_0, a_c, p, nodes) for unknowns x at ``force`` (nodes: shape (K - 1, 3), each node's (rho, psi,
         lambda_1)), or None outside the model's domain."""
-        q, e, c = x[:3]
+        q, e, c = float(x[0]), float(x[1]), float(x[2])
         l0 = self.stretch(e)
-        scale = math.sqrt(force) if self.height is None else 1.0
-        a = c * scale
+        a = c * math.sqrt(force) if self.height is None else c
         if not (q > 0.0 and l0 > 0.0 and 0.0 < a < 0.5 * math.pi and force > 0.0):
             return None
-        return q, l0, a, self.law.pressure_factor * self.inflated.pressure * q, np.reshape(x[3:], (-1, 3))
+        return q, l0, a, self._pressure * q, np.reshape(x[3:], (-1, 3)) if x.size > 3 else _NO_STARTS
+
+    @functools.cached_property
+    def _pressure(self) -> float:
+        """p at q = 1: the inflated capsule's pressure in units of tau T / R."""
+        return self.law.pressure_factor * self.inflated.pressure
+
+    @functools.cached_property
+    def zone_start(self) -> float:
+        """S_0, where the contact zone's shot starts from its pole series (``_zone_series``): the series' error there
+        is of relative order S_0^6, so S_0 = (zone rtol)^(1/6) keeps it at the zone's tolerance, and the integrator's
+        steps, which grow in proportion to S from the pole (its regular singular point), start there instead of at
+        ``R_POLE``."""
+        return self.zone_tolerance.rtol ** (1.0 / 6.0)
 
     def _zone(self, l0, a, store):
-        """(status, y(a), steps) of the contact zone from the pole to the edge a (p = 0, psi = 0)."""
-        if a <= R_POLE:
-            y = pole_state(l0, self.law, 0.0, a, sphere=True)
-            return OK, y, np.array([[a, *y]]) if store else np.empty((0, 6))
-        tol = self.zone_tolerance
-        status, _, y, steps = integrate(pole_state(l0, self.law, 0.0, R_POLE, sphere=True), R_POLE, self.law, 0.0,
-                                        rtol=tol.rtol, atol=tol.atol, store=store, r_end=a,
-                                        max_step=a / _N_CONTACT if store else np.inf, sphere=True, slack=True)
+        """(status, y(a), steps) of the contact zone from the pole to the edge a (p = 0, psi = 0); ``store``: the
+        steps are the profile's ``_N_CONTACT`` points, equally spaced on (0, a] (the shot's dense output; the pole
+        series' below ``zone_start``)."""
+        start, law = self.zone_start, self.law
+        arcs = np.linspace(0.0, a, _N_CONTACT + 1)[1:] if store else None
+        if a <= start:
+            status, y, steps = OK, _zone_series(l0, law.code, law.params, a), _NO_STEPS
+        else:
+            tol = self.zone_tolerance
+            status, _, y, steps = integrate(_zone_series(l0, law.code, law.params, start), start, law, 0.0,
+                                            rtol=tol.rtol, atol=tol.atol, r_end=a, h0=start, sphere=True, slack=True,
+                                            grid=arcs)
+        if store and status == OK:
+            near = arcs[arcs <= start]
+            steps = np.vstack([[[arc, *_zone_series(l0, law.code, law.params, arc)] for arc in near],
+                               steps[near.size:]]) if near.size else steps
         return status, y, steps
+
+    def _free(self, edge, a, p, nodes, store):
+        """(status, y(pi/2), steps, the segments' mismatches at the nodes) of the free part from the contact edge a
+        (``edge`` the zone's state there) at the pressure p: each segment shot from its node (the first from the
+        edge), eta and v summed over the segments (the steps' too). ``store``: the steps are the profile's points,
+        equally spaced at most ``PROFILE_STEP`` apart on each segment (the shot's dense output)."""
+        tol = self.tolerance
+        begin, y0, offset = a, np.array([edge[0], 0.0, 0.0, edge[3], 0.0]), None
+        pieces, mismatches = [], []
+        for k, end in enumerate([*self._nodes(a), 0.5 * math.pi]):
+            grid = np.linspace(begin, end, math.ceil((end - begin) / PROFILE_STEP) + 1) if store else None
+            status, _, y, steps = integrate(y0, begin, self.law, p, rtol=tol.rtol, atol=tol.atol, r_end=end,
+                                            h0=(end - begin) / _FIRST_STEPS,
+                                            psi_max=PSI_MAX_EDGE, sphere=True, grid=grid)
+            if status != OK:
+                return status, y, _NO_STEPS, mismatches
+            if k < len(nodes):  # the next segment starts at its node
+                rho, psi, l1 = nodes[k]
+                mismatches.extend((y[0] - rho, y[2] - psi, y[3] - l1))
+                y0 = np.array([rho, 0.0, psi, l1, 0.0])
+            if offset is not None:
+                y += offset * _SUMMED
+                steps[:, 1:] += offset * _SUMMED
+            if store:
+                pieces.append(steps[(1 if k else 0):])
+            begin, offset = end, y
+        return status, y, np.vstack(pieces) if store else _NO_STEPS, mismatches
+
+    def _one_shot(self, l0, a, p):
+        """(status, y(pi/2), y(a)) of the zone from the pole and a free part in one segment (``_zone`` then ``_free``,
+        compiled whole: ``_carried``)."""
+        start, law = self.zone_start, self.law
+        if a <= start:
+            return self._carried(_zone_series(l0, law.code, law.params, a), a, start, a, p)
+        return self._carried(_zone_series(l0, law.code, law.params, start), start, start, a, p)
+
+    def _carried(self, y, arc, h0, a, p):
+        """(status, y(pi/2), y(a)): the zone's state y at ``arc`` carried on to the edge a (first step h0), then a
+        free part in one segment at the pressure p (``_compiled_shot``)."""
+        law, zone, free = self.law, self.zone_tolerance, self.tolerance
+        return _compiled_shot(y, arc, h0, a, p, law.code, law.params, zone.rtol, zone.atol, free.rtol, free.atol,
+                              PSI_MAX_EDGE, True, False, _NO_NODES, _NO_TABLE, _NO_STEPS, tableau.A, tableau.B,
+                              tableau.C, tableau.E3, tableau.E5, tableau.A_EXTRA, tableau.C_EXTRA, tableau.D)
 
     def _shot(self, geometry, store):
         """(status, y(pi/2), steps of the free part, steps of the contact zone, y(a), the segments' mismatches at
-        the nodes) at ``geometry``: each segment of the free part shot from its node (the first from the edge),
-        eta and v summed over the segments (the steps' too)."""
+        the nodes) at ``geometry`` (``_zone``, then ``_free``: compiled whole, ``_one_shot``, for a free part in one
+        segment storing nothing)."""
         _q, l0, a, p, nodes = geometry
+        if not (store or nodes.size):
+            status, y, edge = self._one_shot(l0, a, p)
+            return status, y, _NO_STEPS, _NO_STEPS, edge, []
         status, edge, zone = self._zone(l0, a, store)
         if status != OK:
-            return status, edge, np.empty((0, 6)), zone
-        tol = self.tolerance
-        ends = [*self._nodes(a), 0.5 * math.pi]
-        starts = [(edge[0], 0.0, edge[3]), *map(tuple, nodes)]
-        offset, pieces, mismatches = np.zeros(5), [], []
-        for k, (begin, end) in enumerate(zip([a, *ends[:-1]], ends, strict=True)):
-            rho, psi, l1 = starts[k]
-            status, _, y, steps = integrate(np.array([rho, 0.0, psi, l1, 0.0]), begin, self.law, p, rtol=tol.rtol,
-                                            atol=tol.atol, store=store, r_end=end,
-                                            max_step=PROFILE_STEP if store else np.inf, psi_max=PSI_MAX_EDGE,
-                                            sphere=True)
-            if status != OK:
-                return status, y, np.empty((0, 6)), zone
-            if k + 1 < len(starts):
-                mismatches.extend(y[[0, 2, 3]] - np.asarray(starts[k + 1]))
-            y = y + offset * np.array([0.0, 1.0, 0.0, 0.0, 1.0])
-            if store:
-                pieces.append(steps[:, 1:] + offset * np.array([0.0, 1.0, 0.0, 0.0, 1.0]))
-                pieces[-1] = np.column_stack([steps[:, 0], pieces[-1]])[(1 if k else 0):]
-            offset = y
-        return status, y, np.vstack(pieces) if store else np.empty((0, 6)), zone, edge, mismatches
+            return status, edge, _NO_STEPS, zone
+        status, y, steps, mismatches = self._free(edge, a, p, nodes, store)
+        return status, y, steps, zone, edge, mismatches
 
     def residual(self, x, force, angle=None):
         """The three residuals at ``force`` (module docstring); None where a shot stops or x is outside."""
@@ -328,14 +456,53 @@ class CapsuleProblem(Contact):
             if shot is not None:
                 self._last["failure"] = (shot[0], float(x[0]), self.stretch(x[1]), float(force))
             return None
-        y, edge = shot[1], shot[4]
+        return self._residuals(x, force, shot[1], shot[4], shot[5])
+
+    def _residuals(self, x, force, y, edge, mismatches):
+        """The residuals of unknowns x at ``force`` whose shot reached the equator at y with the contact edge's
+        state ``edge`` and the segments' ``mismatches``."""
         inflated = self.inflated
         ratio = self.fluid.volume_ratio(inflated.pressure * x[0], inflated.pressure)
         if self.height is None:
             last = x[0] * edge[0] ** 2 / force - 1.0
         else:
             last = (-y[1] - self.height) / inflated.stretch_pole
-        return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last, *shot[5]])
+        return np.array([y[2] - 0.5 * math.pi, 2.0 * y[4] / inflated.volume - ratio, last, *mismatches])
+
+    PREDICTOR_DEGREE = 4
+
+    @staticmethod
+    def predictor(force: float) -> float:
+        """log F: the variable in which a continuation predicts the unknowns, a quartic through the last five
+        states (``PREDICTOR_DEGREE``; the contact radius grows like sqrt(F), the curve is taken over decades of F;
+        a quadratic in F itself missed ten times further than one in log F, a quartic in log F a hundred times less
+        again: at the benchmark's last forces 4e-7, where one Newton step from the fresh Jacobian converges)."""
+        return math.log(force)
+
+    def jacobian(self, x, force, f):
+        """dR/dx at x (its residuals f; its shot from ``Contact.shoot``'s cache when it was the last) by forward
+        differences (``newton.difference_steps``), each column shooting only what its unknown moves: q the free
+        part alone (the pressure), c the free part from the edge carried a step on along the zone (``_carried``),
+        e the whole shot; about two shots' cost instead of three. None with segments (their nodes move one segment
+        each: the residual's differences then) or where a shot of a column stops."""
+        shot = self.shoot(x, force)
+        if self.segments > 1 or shot is None or shot[0] != OK:
+            return None
+        a, edge = self.geometry(x, force)[2], shot[4]
+        jac = np.empty((3, 3))
+        for j, h in enumerate(newton.difference_steps(x)):
+            moved = x.copy()
+            moved[j] += h
+            geometry = self.geometry(moved, force)
+            if geometry is None:
+                return None
+            _, l0_j, a_j, p_j, _ = geometry
+            status, y, edge_j = self._one_shot(l0_j, a_j, p_j) if j == 1 else \
+                self._carried(edge, a, a_j - a, a_j, p_j)
+            if status != OK:
+                return None
+            jac[:, j] = (self._residuals(moved, force, y, edge_j, []) - f) / h
+        return jac
 
     def clamp_angle(self, x, force) -> float:
         """No clamp: 0, so that the continuation's test of the clamp plane never fires."""
@@ -347,17 +514,16 @@ class CapsuleProblem(Contact):
     def compressed(self, force, x, fluid) -> tuple[CompressedState, float]:
         """The compressed state at ``force`` for the solved unknowns x, and 0 (no clamp angle)."""
         q, l0, a, _, _ = self.geometry(x, force)
-        status, y, _, _, edge, _ = self.shoot(x, force)
-        stored = self.shoot(x, force, store=20000)
-        for what, code in (("final", status), ("profile", stored[0])):
-            if code != OK:
-                raise ConvergenceError(f"capsule compression at force = {force!r}: the {what} shot "
-                                       f"{STATUS[code]}", load=force)
+        stored = self.shoot(x, force, store=True)  # the residual's shot, with the profile's points (dense output)
+        if stored[0] != OK:
+            raise ConvergenceError(f"capsule compression at force = {force!r}: the final shot {STATUS[stored[0]]}",
+                                   load=force)
+        _, y, free, zone, edge, _ = stored
         inflated = self.inflated
         height = -y[1]
         rho_c = edge[0]
         force_out = force if self.height is None else q * rho_c**2
-        profile = self._profile(l0, stored[3], stored[2], -stored[1][1])
+        profile = self._profile(l0, zone, free, height)
         state = CompressedState(
             pressure_initial=inflated.pressure, force=force_out, pressure=inflated.pressure * q, pressure_ratio=q,
             contact_area=rho_c**2, contact_radius=a, stretch_contact=rho_c / math.sin(a), height=height,
@@ -370,15 +536,12 @@ class CapsuleProblem(Contact):
         return state, 0.0
 
     def _profile(self, l0, zone, free, height) -> Profile:
-        """The meridian from the pole to the equator: the contact zone's steps (flat at the plate), then the free
-        part's; eta from the equatorial plane, the plate's ``height`` above it (the stored shot's own, within the
-        integration's tolerance of the state's)."""
-        steps = np.vstack([zone, free[1:]])
-        arc = np.concatenate([[0.0], steps[:, 0]])
-        rho = np.concatenate([[0.0], steps[:, 1]])
-        eta = np.concatenate([[0.0], steps[:, 2]]) + height
-        l1 = np.concatenate([[l0], steps[:, 4]])
-        l2 = np.concatenate([[l0], steps[:, 1] / np.sin(steps[:, 0])])
+        """The meridian from the pole to the equator: the contact zone's points (flat at the plate), then the free
+        part's; eta from the equatorial plane, the plate's ``height`` above it."""
+        arc, rho, eta, _, l1, _ = np.vstack([[0.0, 0.0, 0.0, 0.0, l0, 0.0], zone, free[1:]]).T.copy()
+        eta += height
+        l2 = np.empty_like(arc)
+        l2[0], l2[1:] = l0, rho[1:] / np.sin(arc[1:])
         t1, t2, _, _ = tensions(l1, l2, self.law.code, self.law.params)
         contact = np.zeros(arc.size, bool)
         contact[:zone.shape[0] + 1] = True

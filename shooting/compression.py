@@ -11,7 +11,8 @@ polytropic law) enters only its volume residual.
 Each force is solved by the damped Newton-Broyden method of
 ``pocket.shooting.newton``, by continuation in the force from the inflated state:
 forces are taken in increasing order, each seeded by secant extrapolation from
-the last two states and the last Jacobian. A step that does not converge is
+the last two states and the last Jacobian (or, for a problem that gives its Jacobian, that at the
+prediction: ``pocket.shooting.continuation``). A step that does not converge is
 halved (and the step grows again after successes). Near a fold of the force
 (the end of the range for some alpha < 0, ``pocket.shooting.plateend``) continuation in
 the force stalls; there the state is found on the branch by its clamp angle instead.

@@ -59,6 +59,15 @@ class Contact:
     indenter: Indenter = PLATE
     _last: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
+    #: None, or a formulation's ``jacobian(x, force, f)``: dR/dx at x (f the residuals there) cheaper than the
+    #: residual's differences (or None where it has none). A continuation then starts each force's Newton
+    #: iteration from it at the predicted x, instead of from the Jacobian carried from the last force.
+    jacobian = None
+    #: None, or the function of the force in which a continuation's prediction is a polynomial (the force itself
+    #: if None), of degree ``PREDICTOR_DEGREE`` through the last states
+    predictor = None
+    PREDICTOR_DEGREE = 2
+
     @property
     def label(self) -> str:
         """The pocket in messages: its rubber, Phat_I and (a gas) its fluid."""

@@ -1,6 +1,9 @@
 """Continuation in the force, as every compression of this solver is solved: each force from the last two states
 (``pocket.shooting.compression``'s module docstring tells the method: damped Newton-Broyden steps seeded by secant
-extrapolation, halved on failure, the range end consulted where a step fails).
+extrapolation, halved on failure, the range end consulted where a step fails). A problem that gives its Jacobian
+(``Contact.jacobian``: the capsule's) has each force's iteration start from it at the prediction instead of from
+the last force's; a problem may predict in a variable of its own and with a polynomial of another degree
+(``Contact.predictor``, ``Contact.PREDICTOR_DEGREE``: the capsule's quartic in log F).
 
 A problem is a ``pocket.shooting.contact.Contact`` (a pocket's contact with its indenter, or a closed capsule between
 two plates); this module knows nothing of which: a problem's own ``end`` may seed itself with ``first_state``.
@@ -21,6 +24,7 @@ from .end import end_of
 __all__ = ["Branch", "advance", "band", "beyond", "first_state", "past_the_profile"]
 
 _MIN_STEP = 1e-9  # smallest force step, relative to the force, before a solve is declared failed
+_KEPT = 5  # the most solved points a branch keeps (``Branch.guess`` reads up to a problem's degree + 1)
 _FOLD_STEP = 1e-3  # near a fold of the force (within 10 such steps of it), the step below which the state is
 # sought on the end's branch (``Contact.on_branch``)
 
@@ -61,7 +65,7 @@ def _on_branch(problem, force):
 
 @dataclasses.dataclass(frozen=True)
 class Branch:
-    """Where a continuation stands: the last three solved (force, x), the last Jacobian, and the sign
+    """Where a continuation stands: the last solved (force, x), up to ``_KEPT``, the last Jacobian, and the sign
     of det dR/dx on the first branch (it changes at a fold of the force: a state with the other
     sign lies past the fold, on another branch)."""
 
@@ -69,30 +73,34 @@ class Branch:
     jacobian: np.ndarray | None = None
     orientation: float = 0.0
 
-    def guess(self, force):
-        """Prediction of x at ``force``: the polynomial through the last three points (two: the secant), those
-        at a positive force (the inflated state at 0 is no point of the curve in the unknowns of a compression:
-        a capsule's contact radius is c sqrt(Fhat))."""
-        points = [(f, x) for f, x in self.points if f > 0.0]
+    def guess(self, force, variable=None, degree=2):
+        """Prediction of x at ``force``: the polynomial through the last ``degree`` + 1 points (of a lower degree
+        where there are fewer; two: the secant), those at a positive force (the inflated state at 0 is no point of
+        the curve in the unknowns of a compression: a capsule's contact radius is c sqrt(Fhat)), in the force or in
+        ``variable(force)`` if given (a problem's ``Contact.predictor`` and ``Contact.PREDICTOR_DEGREE``)."""
+        points = [(f, x) for f, x in self.points[-degree - 1:] if f > 0.0]
         if not points:
             return self.points[-1][1]
+        at = (lambda f: f) if variable is None else variable
+        t, ts = at(force), [at(f) for f, _ in points]
         guess = np.zeros_like(points[-1][1])
-        for j, (fj, xj) in enumerate(points):  # Lagrange's form
-            weight = math.prod((force - fk) / (fj - fk) for k, (fk, _) in enumerate(points) if k != j)
+        for j, (tj, (_, xj)) in enumerate(zip(ts, points, strict=True)):  # Lagrange's form
+            weight = math.prod((t - tk) / (tj - tk) for k, tk in enumerate(ts) if k != j)
             guess = guess + weight * xj
         return guess
 
     def then(self, force, x, jacobian, orientation):
-        return Branch(points=(*self.points[-2:], (force, x)), jacobian=jacobian,
+        return Branch(points=(*self.points[1 - _KEPT:], (force, x)), jacobian=jacobian,
                        orientation=self.orientation or orientation)
 
 
 def _orientation(problem, sol, force, branch):
-    """sign det J at a solution: by differences for the first state of a branch, or when the
-    Broyden-updated J (an approximation) disagrees with the branch."""
+    """sign det J at a solution: by differences (or the problem's own ``jacobian``) for the first state of a
+    branch, or when the Broyden-updated J (an approximation) disagrees with the branch."""
     sign = 0.0 if sol.jacobian is None else np.sign(np.linalg.det(sol.jacobian))
     if sign != branch.orientation or not branch.orientation:
-        jac = newton.differences(lambda v: problem.residual(v, force), sol.x, sol.f)
+        jac = None if problem.jacobian is None else problem.jacobian(sol.x, force, sol.f)
+        jac = newton.differences(lambda v: problem.residual(v, force), sol.x, sol.f) if jac is None else jac
         sign = 0.0 if jac is None else np.sign(np.linalg.det(jac))
     return sign
 
@@ -103,9 +111,12 @@ def advance(problem, branch, force):
     step, end, unknown = force - f0, None, ""
     while f0 < force:
         f_try = min(f0 + step, force)
-        guess = branch.guess(f_try)
+        guess = branch.guess(f_try, problem.predictor, problem.PREDICTOR_DEGREE)
+        derivative = None if problem.jacobian is None else \
+            lambda x, f, f_try=f_try: problem.jacobian(x, f_try, f)
         sol = newton.solve(lambda x, f=f_try: problem.residual(x, f), guess, tol=problem.residual_tol,
-                           floor=problem.residual_floor, jacobian=branch.jacobian)
+                           floor=problem.residual_floor, jacobian=branch.jacobian if derivative is None else None,
+                           derivative=derivative)
         if sol.success and problem.close(sol.x, guess, x0) and \
                 problem.clamp_angle(sol.x, f_try) <= math.pi + band(problem.rtol):
             sign = _orientation(problem, sol, f_try, branch)

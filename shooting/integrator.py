@@ -7,7 +7,10 @@ thousands of times, and the Python version costs about 100x more per call
 (``benchmarks/bench_shooting.py``). ``tests/test_shooting_integrator.py`` checks it
 against ``solve_ivp(method="DOP853")``. The absolute tolerance may differ per
 component, so that small quantities (the height and angle of a shallow dome, its
-volume) are resolved relative to their own size.
+volume) are resolved relative to their own size. Given a grid of points, it returns the state there by each
+step's dense output, DOP853's 7th-order interpolant (three more evaluations of the equations in a step that holds
+a point), instead of storing its steps: a profile at any resolution for about the cost of the shot itself, whose
+steps the grid does not change.
 
 Integration stops early, with a status, where the membrane model stops making
 sense: the meridian reaches the axis (rho <= 0), its angle leaves (-pi/2, psi_max)
@@ -66,6 +69,9 @@ NUMERICAL = (STEPS, SMALL_STEP)
 _NS = tableau.N_STAGES
 _LANDING = 1e-13  # a step ends on a knot when within this of it (units R); a slip of that size is harmless
 _EXPONENT = -1.0 / 8.0
+_NO_GRID = np.empty(0)  # (and no knots: the compiled loop only reads these)
+_NO_TABLE = (np.empty(0), np.empty((4, 0)))
+_NO_STEPS = np.empty((0, 6))
 
 
 @functools.partial(compiled, inline="always")
@@ -84,11 +90,49 @@ def _status(y, code, params, r, psi_max, sphere, slack):
     return OK
 
 
+@functools.partial(compiled, inline="always")
+def _interpolant(K, y, ynew, r, hh, code, params, p, wrap, breaks, coef, sphere, AX, CX, D, terms):
+    """The step's 7th-order interpolant (scipy's ``Dop853DenseOutput``) into ``terms`` (shape (7, n)): the three
+    more stages into K[13:] first."""
+    n = y.size
+    ytmp = np.empty(n)
+    for s in range(_NS + 1, _NS + 4):
+        for i in range(n):
+            acc = 0.0
+            for j in range(s):
+                acc += AX[s - _NS - 1, j] * K[j, i]
+            ytmp[i] = y[i] + hh * acc
+        derivatives(r + CX[s - _NS - 1] * hh, ytmp, code, params, p, wrap, breaks, coef, sphere, K[s])
+    for i in range(n):
+        delta = ynew[i] - y[i]
+        terms[0, i] = delta
+        terms[1, i] = hh * K[0, i] - delta
+        terms[2, i] = 2.0 * delta - hh * (K[_NS, i] + K[0, i])
+        for m in range(4):
+            acc = 0.0
+            for j in range(_NS + 4):
+                acc += D[m, j] * K[j, i]
+            terms[3 + m, i] = hh * acc
+
+
+@functools.partial(compiled, inline="always")
+def _dense(terms, y, x, out):
+    """Write y_old + the interpolant ``terms`` at x = (r - r_old) / h into ``out``: Horner's scheme in x and
+    1 - x alternately, from the highest term (scipy's ``Dop853DenseOutput._call_impl``)."""
+    for i in range(y.size):
+        acc = 0.0
+        for m in range(6, -1, -1):
+            acc += terms[m, i]
+            acc *= x if m % 2 == 0 else 1.0 - x
+        out[i] = y[i] + acc
+
+
 @compiled
 def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, atol, h0, hmax, psi_max, sphere, slack,
-               store, A, B, C, E3, E5):
+               store, grid, A, B, C, E3, E5, AX, CX, D):
     n = y0.size
-    K = np.empty((_NS + 1, n))
+    K = np.empty((_NS + 4, n))
+    terms = np.empty((7, n))
     y = y0.copy()
     ynew = np.empty(n)
     ytmp = np.empty(n)
@@ -100,11 +144,17 @@ def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, ato
         k += 1
     h = h0
     nstore = 0
-    if store.shape[0] > 0:
+    g = 0  # the next point of ``grid`` ahead
+    while g < grid.size and grid[g] <= r:
+        store[g, 0] = grid[g]
+        store[g, 1:] = y
+        g += 1
+    nstore = g
+    if store.shape[0] > 0 and grid.size == 0:
         store[0, 0] = r
         store[0, 1:] = y
         nstore = 1
-    maxsteps = 100000 if store.shape[0] == 0 else store.shape[0] - 1
+    maxsteps = 100000 if store.shape[0] == 0 or grid.size > 0 else store.shape[0] - 1
     for _ in range(maxsteps):
         if r >= r1:
             return OK, r, y, nstore
@@ -154,12 +204,19 @@ def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, ato
             factor = 0.2 if not np.isfinite(err) else max(0.2, 0.9 * err**_EXPONENT)
             h = hh * factor
             rejected = True
+        if g < grid.size and grid[g] <= rnew:
+            _interpolant(K, y, ynew, r, hh, code, params, p, wrap, breaks, coef, sphere, AX, CX, D, terms)
+        while g < grid.size and grid[g] <= rnew:
+            store[g, 0] = grid[g]
+            _dense(terms, y, (grid[g] - r) / hh, store[g, 1:])
+            g += 1
+        nstore = max(nstore, g)
         r = rnew
         y[:] = ynew
         f[:] = K[_NS]
         while k < knots.size and knots[k] <= y[0] + _LANDING:
             k += 1
-        if nstore > 0:
+        if nstore > 0 and grid.size == 0:
             store[nstore, 0] = r
             store[nstore, 1:] = y
             nstore += 1
@@ -170,7 +227,7 @@ def _integrate(y0, r0, r1, code, params, p, wrap, breaks, coef, knots, rtol, ato
 
 
 def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.inf, psi_max=np.pi, r_end=1.0,
-              wrap=0.0, table=None, sphere=False, slack=False):
+              wrap=0.0, table=None, sphere=False, slack=False, grid=None):
     """Integrate the membrane equations from r0 to ``r_end`` (the clamp r = 1 unless given).
 
     y0: state [rho, eta, psi, lambda_1, v] at r0, shape (5,). law: a ``pocket.shooting.laws.Law``.
@@ -190,19 +247,26 @@ def integrate(y0, r0, law, p, *, rtol, atol=None, store=0, h0=None, max_step=np.
     vanishing or compressive t1 does not stop the integration (a flat contact zone on a plate, p = 0 and psi = 0:
     no equation divides by t1 there; such a state is flagged wrinkled, ``pocket.core.states``).
 
+    grid: None, or increasing points r (shape (m,)) at which to return the state instead of at the steps: by the
+    steps' dense output (DOP853's 7th-order interpolant, Hairer's CONTD8, as scipy's ``dense_output``; three
+    more evaluations of the equations in each step holding a point, none in the others), with the steps the
+    shot takes without it (so its y_end is the same); points at or before r0 get y0.
+
     Returns (status, r_end, y_end, steps) where steps has shape (m, 6) with
-    columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store``).
+    columns [r, rho, eta, psi, lambda_1, v] (empty unless ``store`` or ``grid``; with ``grid``, its points
+    reached).
     """
     atol = np.asarray(rtol * 1e-2 if atol is None else atol, dtype=float)
     if atol.shape != (5,):  # a float for every component (the compiled loop only reads it)
         atol = np.full(5, atol)
     h0 = max(1e-2 * r0, 1e-6) if h0 is None else h0
-    buf = np.empty((store, 6)) if store else np.empty((0, 6))
-    breaks, coef = (np.empty(0), np.empty((4, 0))) if table is None else table
+    grid = _NO_GRID if grid is None else np.asarray(grid, dtype=float)
+    buf = np.empty((grid.size, 6)) if grid.size else np.empty((store, 6)) if store else _NO_STEPS
+    breaks, coef = _NO_TABLE if table is None else table
     status, r_end, y_end, m = _integrate(
         np.asarray(y0, dtype=float), float(r0), float(r_end), law.code, law.params, float(p), float(wrap),
-        breaks, coef, np.sqrt(breaks), float(rtol), atol,
-        float(h0), float(max_step), float(psi_max), bool(sphere), bool(slack), buf, tableau.A, tableau.B, tableau.C,
-        tableau.E3, tableau.E5,
+        breaks, coef, _NO_GRID if table is None else np.sqrt(breaks), float(rtol), atol,
+        float(h0), float(max_step), float(psi_max), bool(sphere), bool(slack), buf, grid, tableau.A, tableau.B,
+        tableau.C, tableau.E3, tableau.E5, tableau.A_EXTRA, tableau.C_EXTRA, tableau.D,
     )
     return int(status), float(r_end), y_end, buf[:m]

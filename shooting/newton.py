@@ -8,7 +8,8 @@ Nonlinear Equations, 1983, ch. 6 and 8):
   the factor 1 - 1e-4 lambda (lambda the step fraction taken), or the trial point
   lies where the residual is defined (``fun`` returns None outside the model's domain,
   e.g. a shot that does not reach the clamp);
-- J starts as the caller's (the last solve's, in a continuation) or as differences,
+- J starts as the caller's (the last solve's, in a continuation) or as differences (or
+  as the caller's ``derivative``, a cheaper Jacobian where a problem has one),
   gets Broyden's rank-one update after each step that halves the residual, and is
   recomputed by differences after a slower step or when a step with an updated J
   fails to decrease the residual;
@@ -30,7 +31,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["Solution", "differences", "solve"]
+__all__ = ["Solution", "difference_steps", "differences", "solve"]
 
 _ARMIJO = 1e-4
 _MIN_FRACTION = 2.0**-12
@@ -56,15 +57,19 @@ class Solution:
         return float(np.max(np.abs(self.f))) if self.f is not None else float("inf")
 
 
+def difference_steps(x, step=_STEP) -> np.ndarray:
+    """The forward-difference steps of the unknowns x: ``step`` max(|x_j|, 1) each, shape (n,)."""
+    return step * np.maximum(np.abs(x), 1.0)
+
+
 def differences(fun, x, f, step=_STEP):
     """Forward-difference Jacobian of ``fun`` at ``x`` (shape (n, n)), or None where undefined.
 
-    Each column steps x_j by ``step`` max(|x_j|, 1) towards the side where ``fun`` is defined.
+    Each column steps x_j by ``difference_steps`` towards the side where ``fun`` is defined.
     """
     n = x.size
     jac = np.empty((n, n))
-    for j in range(n):
-        h = step * max(abs(x[j]), 1.0)
+    for j, h in enumerate(difference_steps(x, step)):
         for sign in (1.0, -1.0):
             xj = x.copy()
             xj[j] += sign * h
@@ -78,9 +83,10 @@ def differences(fun, x, f, step=_STEP):
 
 
 def solve(fun: Callable[[np.ndarray], np.ndarray | None], x0, *, tol: float, jacobian=None,
-          max_iterations=30, floor=None) -> Solution:
+          max_iterations=30, floor=None, derivative=None) -> Solution:
     """Solve fun(x) = 0 from ``x0`` (shape (n,)) to max |fun(x)| <= ``tol``, or to a stall below
-    ``floor`` (module docstring)."""
+    ``floor`` (module docstring). ``derivative``: None, or ``derivative(x, f)``, the Jacobian at x, where fun(x) = f
+    (or None), used where a fresh one is due instead of ``differences``."""
     count = [0]
 
     def call(x):
@@ -101,7 +107,8 @@ def solve(fun: Callable[[np.ndarray], np.ndarray | None], x0, *, tol: float, jac
         if norm <= tol:
             return result(x, f, jac, True, "converged")
         if jac is None:
-            jac, fresh = differences(call, x, f), True
+            jac, fresh = None if derivative is None else derivative(x, f), True
+            jac = differences(call, x, f) if jac is None else jac
             if jac is None:
                 return result(x, f, None, False, "the residual is undefined next to the point")
         try:

@@ -82,6 +82,22 @@ def test_a_given_jacobian_is_used_and_returned_updated():
     np.testing.assert_allclose(sol.jacobian, a, rtol=1e-14)
 
 
+def test_a_given_derivative_replaces_the_differences():
+    """Exact answer: on f = A x - b a ``derivative`` giving A is the Jacobian each fresh start takes: one step, no
+    difference quotients (2 evaluations); where it gives None the differences are taken (2 more evaluations, and
+    their Jacobian, inexact, may take a step more)."""
+    a, b = np.array([[3.0, 1.0], [1.0, 2.0]]), np.array([9.0, 8.0])
+    calls = []
+    sol = newton.solve(lambda x: a @ x - b, [0.0, 0.0], tol=1e-12, derivative=lambda x, f: calls.append(f) or a)
+    assert sol.success
+    assert (sol.evaluations, len(calls)) == (2, 1)
+    np.testing.assert_allclose(calls[0], -b)  # the residual at the start
+    np.testing.assert_allclose(sol.x, np.linalg.solve(a, b), rtol=1e-14)
+    none = newton.solve(lambda x: a @ x - b, [0.0, 0.0], tol=1e-12, derivative=lambda x, f: None)
+    assert none.success
+    assert none.evaluations >= 4
+
+
 def test_start_outside_the_domain():
     sol = newton.solve(lambda x: None, [1.0, 1.0], tol=1e-12)
     assert not sol.success
