@@ -260,7 +260,7 @@ def inflate(material: MaterialLike, pressure: float, *, geometry: GeometryLike =
     model = _model(material, mesh, elements, order, DEFAULT_PENALTY, geometry)
     if geometry is geometries.CAPSULE:
         pressure = check_non_negative("pressure", pressure)
-        y, iterations = capsule.inflate(model, pressure, _tolerances(tol))
+        y, iterations = inflation.inflated_at(model, pressure, _tolerances(tol), capsule.inflate)
         return capsulestates.inflated(model, y, iterations, pressure=pressure)
     pressure = check_positive("pressure", pressure)
     y, iterations = inflation.inflated_at(model, pressure, _tolerances(tol))
@@ -328,7 +328,7 @@ def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)
     if geometry is geometries.CAPSULE:  # the upper half's volume is the volume row's (``capsule``)
-        y_i, iterations = capsule.inflate(model, p_i, tol)
+        y_i, iterations = inflation.inflated_at(model, p_i, tol, capsule.inflate)
         state = capsulestates.inflated(model, y_i, iterations, pressure=p_i)
         fill = Control(volume=0.5 * state.volume, gas=sealed(fluid, p_i), indenter=indenter)
         return model, contact, augmented, tol, y_i, state, fill, curved

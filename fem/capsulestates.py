@@ -52,22 +52,27 @@ def _capsule(model: Model, y: np.ndarray) -> dict:
     return dict(geometry=model.geometry.name, radius_equator=float(y[model.dofs - 2]))
 
 
-def _equator_stretch(model: Model, y: np.ndarray, rows: np.ndarray) -> float:
-    """lambda_1 at the equator from its eta reaction (module docstring)."""
+def _slopes(model: Model, y: np.ndarray, mode: str) -> np.ndarray:
+    """|dx/dS| at every node (the meridian's stretch where the node is in the rubber's reference), (nodes,)."""
+    return post.node_slope(model, y, mode) / _arc(model)
+
+
+def _equator_stretch(model: Model, y: np.ndarray, rows: np.ndarray, slopes: np.ndarray) -> float:
+    """lambda_1 at the equator from its eta reaction (module docstring); ``slopes``: ``_slopes`` at y."""
     n, pressure = model.dofs, float(y[model.dofs])
     radius = float(y[n - 2])
     tension = (np.pi * pressure * radius**2 - rows[n - 1]) / (2.0 * np.pi * radius)
-    slope = post.node_slope(model, y, FREE if y.size == n + 1 else FITTED)[-1] / _arc(model)
-    return model.law.planar_stretch(float(tension), float(slope), hoop=radius)
+    return model.law.planar_stretch(float(tension), float(slopes[-1]), hoop=radius)
 
 
-def _profile(model: Model, y: np.ndarray, mode: str, pole: float, equator: float, contact: float = 0.0) -> Profile:
-    """Every node's S, rho, eta, stretches, tensions and contact flag (S <= a_c)."""
+def _profile(model: Model, y: np.ndarray, mode: str, slopes: np.ndarray, pole: float, equator: float,
+             contact: float = 0.0) -> Profile:
+    """Every node's S, rho, eta, stretches, tensions and contact flag (S <= a_c); ``slopes``: ``_slopes`` at y."""
     u = y[: model.dofs]
     r = node_radii(placement(model, y, mode), model.ref)
     arc = _arc(model) * r
     rho, eta = u[0::2].copy(), u[1::2].copy()
-    l1 = post.node_slope(model, y, mode) / _arc(model)
+    l1 = slopes.copy()
     l2 = np.empty_like(r)
     l2[1:] = rho[1:] / post.reference_radius(model, r[1:])
     l1[0] = l2[0] = pole
@@ -99,8 +104,9 @@ def inflated(model: Model, y: np.ndarray, iterations: int, *, pressure: float | 
     """The inflated capsule of FREE unknowns y; ``pressure`` or ``volume`` (the whole capsule's): the given input,
     echoed."""
     linear = forms(model, y, FREE)
-    pole, equator = post.pole_stretch(model, y, FREE), _equator_stretch(model, y, linear.residual)
-    profile = _profile(model, y, FREE, pole, equator)
+    slopes = _slopes(model, y, FREE)
+    pole, equator = post.pole_stretch(model, y, FREE), _equator_stretch(model, y, linear.residual, slopes)
+    profile = _profile(model, y, FREE, slopes, pole, equator)
     state = InflatedState(
         material=model.law.material, geometry=model.geometry,
         pressure=pressure if pressure is not None else float(y[model.dofs]),
@@ -132,12 +138,13 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
     rows = linear.residual
     reaction = -float(rows[model.tied()].sum()) / (np.pi * p_i)
     area = pressure * rho_c**2 / p_i
-    pole, equator = post.pole_stretch(model, y, FITTED), _equator_stretch(model, y, rows)
+    slopes = _slopes(model, y, FITTED)
+    pole, equator = post.pole_stretch(model, y, FITTED), _equator_stretch(model, y, rows, slopes)
     extra = results._extra(model, iterations, FITTED)
     extra.update(force_reaction=reaction, force_pressure_area=area, force_difference=reaction - area,
                  penetration=max(0.0, float((y[edge(model) + 1: n: 2] - h).max())), **_capsule(model, y),
                  stretch_pole=pole, force_ETR=np.pi * force * p_i)
-    profile = _profile(model, y, FITTED, pole, equator, a_c)
+    profile = _profile(model, y, FITTED, slopes, pole, equator, a_c)
     out = CompressedState(
         material=model.law.material, fluid=results._fluid(fill), indenter=fill.indenter, pressure_initial=p_i,
         force=force, pressure=pressure, pressure_ratio=pressure / p_i, contact_area=rho_c**2, contact_radius=a_c,

@@ -205,9 +205,10 @@ def _least_slope(along, chain):
     return s, -minus, pairs[s]
 
 
-def inflated_at(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarray, int]:
-    """``to_pressure(model, target, tol)``, solved once per (law, mesh, reference surface, target, tol) among the last
-    ``REMEMBERED`` asked (module docstring); (y, Newton iterations of its solve), y a copy of its own.
+def inflated_at(model: Model, target: float, tol: Tolerances, solve=None) -> tuple[np.ndarray, int]:
+    """``solve(model, target, tol)`` (default ``to_pressure``; the capsule's: ``pocket.fem.capsule.inflate``), solved
+    once per (law, mesh, reference surface, target, tol) among the last ``REMEMBERED`` asked (module docstring); (y,
+    Newton iterations of its solve), y a copy of its own.
 
     A target with no state is not remembered: its error is raised again by a fresh solve.
     """
@@ -218,7 +219,7 @@ def inflated_at(model: Model, target: float, tol: Tolerances) -> tuple[np.ndarra
         _SOLVED.move_to_end(key)
         y, iterations = _SOLVED[key]
     else:
-        y, iterations = _SOLVED[key] = to_pressure(model, target, tol)
+        y, iterations = _SOLVED[key] = (to_pressure if solve is None else solve)(model, target, tol)
         while len(_SOLVED) > REMEMBERED:
             _SOLVED.popitem(last=False)
     return y.copy(), iterations

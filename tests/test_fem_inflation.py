@@ -152,6 +152,34 @@ def test_one_inflation_per_pocket_and_mesh_bit_for_bit(counted):
     assert len(counted) == 4
 
 
+def test_a_capsule_inflation_is_remembered_apart_from_the_pocket(monkeypatch):
+    """Exact answer: a capsule's inflation is solved once per (law, Phat_I, mesh) too, a capsule and a pocket of
+    the same rubber, pressure and mesh are remembered apart (the reference surface is in the key), and the
+    remembered capsule is a fresh solve's, bit for bit."""
+    import collections
+
+    from pocket.fem import capsule, inflation
+
+    calls = []
+    solve = capsule.inflate
+
+    def counted_capsule(model, target, tol):
+        calls.append(target)
+        return solve(model, target, tol)
+
+    monkeypatch.setattr(capsule, "inflate", counted_capsule)
+    monkeypatch.setattr(inflation, "_SOLVED", collections.OrderedDict(), raising=False)
+    fresh = fem.compress(0.3, 0.3, 0.5, geometry="capsule", elements=32)
+    again = [fem.compress(0.3, 0.3, 0.5, geometry="capsule", elements=32),
+             fem.inflate(0.3, 0.3, geometry="capsule", elements=32)]
+    assert calls == [0.3]
+    _same(again[0], fresh)
+    _same(again[1], fresh.inflated)
+    pocket = fem.inflate(0.3, 0.3, elements=32)
+    assert calls == [0.3]
+    assert pocket.extra.get("geometry") != fresh.inflated.extra["geometry"]
+
+
 def test_the_memory_of_inflations_is_bounded(counted):
     """The last REMEMBERED inflations are remembered, the oldest forgotten first; a pressure with no
     state is never remembered (its error comes again)."""
