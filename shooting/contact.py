@@ -31,6 +31,8 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+from collections.abc import Callable
+from typing import ClassVar
 
 import numpy as np
 
@@ -62,11 +64,15 @@ class Contact:
     #: None, or a formulation's ``jacobian(x, force, f)``: dR/dx at x (f the residuals there) cheaper than the
     #: residual's differences (or None where it has none). A continuation then starts each force's Newton
     #: iteration from it at the predicted x, instead of from the Jacobian carried from the last force.
-    jacobian = None
-    #: None, or the function of the force in which a continuation's prediction is a polynomial (the force itself
-    #: if None), of degree ``PREDICTOR_DEGREE`` through the last states
-    predictor = None
+    jacobian: ClassVar[Callable[..., np.ndarray | None] | None] = None
+    #: the degree of a continuation's prediction, a polynomial in ``predictor`` through the last states
     PREDICTOR_DEGREE = 2
+
+    @staticmethod
+    def predictor(force: float) -> float:
+        """The variable in which a continuation predicts the unknowns (``PREDICTOR_DEGREE``): the force itself; a
+        formulation may choose another (the capsule's log F)."""
+        return force
 
     @property
     def label(self) -> str:
