@@ -38,13 +38,14 @@ CAPSULE_EDGE = ("the meridional tension at the contact edge vanishes (the patch 
 #: why a capsule is pressed from P_I > 0 only, as every solver and application words it. Under a plate the patch's
 #: meridional stretch falls towards its edge by a strain of order (a_c / R)^2 ~ the compression (the theory's
 #: contact series), which only the inflated capsule's tension keeps taut; the range ends where the slack patch
-#: reaches the contact edge, the sooner the lower P_I (benchmarks/capsule_low_pressure.py, neo-Hookean, a liquid:
-#: no end down to Phat_I = 0.02, then at compressions 1 - H / lambda_I of 5.6 %, 2.3 % and 1.3 % at 0.01, 0.005
-#: and 0.003), towards none at P_I = 0: from the uninflated capsule the membrane's branch has no length
+#: reaches the contact edge, the sooner the lower P_I (benchmarks/capsule_low_pressure.py, neo-Hookean, a liquid,
+#: both solvers: no end down to Phat_I = 0.02, then at compressions 1 - H / lambda_I of 5.6 %, 2.3 %, 1.3 % and
+#: 0.41 % at 0.01, 0.005, 0.003 and 0.001), about 4 Phat_I, none at P_I = 0: from the uninflated capsule the
+#: membrane's branch has no length
 UNINFLATED_CAPSULE = ("an uninflated capsule (P_I = 0) is not pressed: the patch under a plate goes slack unless the "
                       "inflation's tension holds it, and the range of a capsule's compression ends where the slack "
-                      "reaches the contact edge, the sooner the lower P_I (at a compression of 5.6 % at Phat_I = 0.01, 1.3 % at 0.003, "
-                      "tending to none as P_I -> 0); a capsule is pressed from P_I > 0")
+                      "reaches the contact edge, the sooner the lower P_I (at a compression of 5.6 % at Phat_I = "
+                      "0.01, 0.41 % at 0.001: about 4 Phat_I, none at P_I = 0); a capsule is pressed from P_I > 0")
 
 #: the largest pole stretch lambda_0 at which the membrane solvers (shooting, FE) seek an inflated state. A rubber
 #: whose pressure maximum has just vanished (Mooney-Rivlin alpha just above 0.05544) reaches Phat = 2 only at
