@@ -321,9 +321,9 @@ def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements
     contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
     if geometry is geometries.CAPSULE:
         _capsule_contact(indenter, contact)
-    model = _model(material, mesh, elements, order, penalty, geometry)
     if geometry is geometries.CAPSULE and pressure_initial == 0:
         raise InputError(f"pressure = 0: {UNINFLATED_CAPSULE}")
+    model = _model(material, mesh, elements, order, penalty, geometry)
     p_i = check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)

@@ -123,7 +123,7 @@ def _iterate(linearize, y, tol, increment, scales) -> Result:
 
 
 def _noise(linearize: Callable, y: np.ndarray, r: np.ndarray) -> float:
-    """max |R(y') - R(y)| with y' = y (1 +- 4 eps), the signs alternating: the residual's round-off floor."""
+    """max |R(y') - R(y)| with y' = y (1 +- ULPS eps), the signs alternating: the residual's round-off floor."""
     signs = np.where(np.arange(y.size) % 2 == 0, 1.0, -1.0)
     r_near, _ = linearize(y * (1.0 + ULPS * np.finfo(float).eps * signs))
     return float(np.abs(r_near - r).max()) if _finite(r_near) else np.inf

@@ -151,8 +151,8 @@ def _zone_series(l0, code, params, arc):
     differences of the kernel's first (a relative step 1e-4: their error, about 1e-8, enters the S^4 terms only)."""
     _, _, a, b = tensions_compiled(l0, l0, code, params)  # A, B: dt1/dl1, dt1/dl2; t11, t12, t22: t1's second
     h = 1e-4 * l0
-    t11 = (tensions_compiled(l0 + h, l0, code, params)[2] - tensions_compiled(l0 - h, l0, code, params)[2]) / (2 * h)
-    t12 = (tensions_compiled(l0 + h, l0, code, params)[3] - tensions_compiled(l0 - h, l0, code, params)[3]) / (2 * h)
+    up, down = tensions_compiled(l0 + h, l0, code, params), tensions_compiled(l0 - h, l0, code, params)
+    t11, t12 = (up[2] - down[2]) / (2 * h), (up[3] - down[3]) / (2 * h)
     t22 = (tensions_compiled(l0, l0 + h, code, params)[3] - tensions_compiled(l0, l0 - h, code, params)[3]) / (2 * h)
     c2 = l0 * (a - 3.0 * b) / (16.0 * a)
     d2 = l0 * (3.0 * a - b) / (16.0 * a)

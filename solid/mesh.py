@@ -132,7 +132,7 @@ def section(thickness: float, elements: int, layers: int, corner: float, grading
     ``left`` (the axis), ``right`` (the clamp), ``bottom`` (wetted by the fluid) and ``top``: the undeformed
     sheet about the reference surface ``geometry`` (the flat clamped disc, whose radius r0(S) is its arc length
     S; the only one ``api.GEOMETRIES`` poses), its radial nodes at r0 of the arc lengths graded as above, the
-    clamp's corner elements ``corner`` thicknesses long."""
+    clamp's corner elements ``corner`` thicknesses long over the jaw's wrap zone (``WRAP`` thicknesses)."""
     z = heights(thickness, layers)
     r = geometry.radius(corner_nodes(radial_nodes(elements, grading), corner * thickness, WRAP * thickness))
     return MeshQuad.init_tensor(r, z).with_defaults()
