@@ -40,7 +40,7 @@ import numpy as np
 
 from pocket import meshes
 from pocket.core import geometries
-from pocket.core.errors import UNINFLATED_CAPSULE, InputError, above_the_pocket
+from pocket.core.errors import CAPSULE_EDGE, UNINFLATED_CAPSULE, InputError, OutOfRangeError, above_the_pocket
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Geometry
 from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
@@ -55,6 +55,8 @@ from . import (
     capsule,
     capsulestates,
     curves,
+    descent,
+    fitted,
     inflation,
     results,
     wrapping,
@@ -314,23 +316,23 @@ def inflate_volume(material: MaterialLike, volume: float, *, geometry: GeometryL
 
 
 def _setup(material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented,
-           tol):
+           tol, uninflated=False):
     """Checked inputs, the model, the inflated state to compress, the fluid sealed in it with the indenter (the
-    volume row's ``Control``) and whether the indenter is curved (``CONTACTS``)."""
+    volume row's ``Control``) and whether the indenter is curved (``CONTACTS``). ``uninflated``: a capsule may be
+    at P_I = 0 (height control)."""
     indenter, (methods, curved) = posed(CONTACTS, "fem", indenter)
     contact, penalty, augmented = _contact(indenter, methods, contact, penalty, augmented)
     if geometry is geometries.CAPSULE:
         _capsule_contact(indenter, contact)
-    if geometry is geometries.CAPSULE and pressure_initial == 0:
+    uninflated = uninflated and geometry is geometries.CAPSULE and pressure_initial == 0
+    if geometry is geometries.CAPSULE and pressure_initial == 0 and not uninflated:
         raise InputError(f"pressure = 0: {UNINFLATED_CAPSULE}")
     model = _model(material, mesh, elements, order, penalty, geometry)
-    p_i = check_positive("pressure_initial", pressure_initial)
+    p_i = 0.0 if uninflated else check_positive("pressure_initial", pressure_initial)
     fluid = as_fluid(fluid)
     tol = _tolerances(tol)
     if geometry is geometries.CAPSULE:  # the upper half's volume is the volume row's (``capsule``)
-        y_i, iterations = inflation.inflated_at(model, p_i, tol, capsule.inflate)
-        state = capsulestates.inflated(model, y_i, iterations, pressure=p_i)
-        fill = Control(volume=0.5 * state.volume, gas=sealed(fluid, p_i), indenter=indenter)
+        y_i, state, fill = descent.filled(model, p_i, fluid, indenter, tol)
         return model, contact, augmented, tol, y_i, state, fill, curved
     y_i, iterations = inflation.inflated_at(model, p_i, tol)
     state = results.inflated(model, y_i, iterations, pressure=p_i)
@@ -414,9 +416,30 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
         material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol)
     if curved and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
+    if contact == FITTED and geometry is geometries.CAPSULE:
+        return _capsule_curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED:
         return curves.fitted_curve(model, y_i, inflated, fill, forces, tolerances, progress, _builder(geometry))
     return curves.penalty_curve(model, y_i, inflated, fill, forces, tolerances, augmented, progress)
+
+
+def _capsule_curve(model: Model, y_i: np.ndarray, inflated: InflatedState, fill: Control, forces: list[float],
+                   tol: Tolerances, progress: Progress | None) -> list[CompressedState]:
+    """A capsule's states at the forces Fhat, in increasing order of force (each from those before it): past the
+    end of the branch from the touch, on the branch reached deep (``descent``), if they lie on it."""
+    order = sorted(set(forces))
+    unit = np.pi * inflated.pressure
+    ends: list[str] = []  # the end of the branch from the touch, once met
+
+    def deeper(force: float, fhat: float, end: str) -> tuple[np.ndarray, int]:
+        ends.append(end)
+        return descent.to_force(model, inflated.pressure, fill, force, tol, f"force = {fhat!r}", ends[0], unit)
+
+    counted = None if progress is None else \
+        lambda done, _total: progress(sum(forces.count(f) for f in order[:done]), len(forces))
+    states = curves.fitted_curve(model, y_i, inflated, fill, order, tol, counted, capsulestates, deeper)
+    solved = dict(zip(order, states, strict=True))
+    return [solved[f] for f in forces]
 
 
 def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
@@ -525,11 +548,14 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     height = check_positive("height", height)
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model, contact, augmented, tolerances, y_i, inflated, fill, curved = _setup(
-        material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol)
+        material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol,
+        uninflated=True)
     if height > inflated.height:
         raise above_the_pocket(height, inflated.height)
     if height == inflated.height:
         return _builder(geometry).uncompressed(inflated, fill, contact)
+    if geometry is geometries.CAPSULE and contact == FITTED:
+        return _capsule_height(model, y_i, inflated, fill, height, tolerances)
     if curved and contact == FITTED:
         return wrapping.at_height(model, y_i, inflated, fill, height, tolerances)
     if contact == FITTED:
@@ -537,3 +563,18 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     return curves.penalty_height(model, y_i, inflated, fill, height, tolerances, augmented)
 
 
+def _capsule_height(model: Model, y_i: np.ndarray, inflated: InflatedState, fill: Control, height: float,
+                    tol: Tolerances) -> CompressedState:
+    """The capsule's state with the plates at ``height``: pressed from the touch, or past the end of that branch
+    (and at P_I = 0 always) on the branch reached deep (``descent``)."""
+    end = None
+    if inflated.pressure > 0.0:
+        try:
+            return curves.fitted_height(model, y_i, inflated, fill, height, tol, capsulestates)
+        except OutOfRangeError as err:
+            if err.end is None or CAPSULE_EDGE not in str(err):
+                raise
+            end = err.end
+    y, iterations = descent.to_height(model, inflated.pressure, fill, height, tol, f"height = {height!r}", end)
+    force = fitted.plate_force_of(model, y) / (np.pi * inflated.pressure if inflated.pressure > 0.0 else 1.0)
+    return capsulestates.fitted_state(model, y, iterations, inflated, fill, force, tol)

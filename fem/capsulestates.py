@@ -129,30 +129,33 @@ def uncompressed(state: InflatedState, fill: Control, contact: str) -> Compresse
 
 def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedState, fill: Control,
                  force, tol: Tolerances) -> CompressedState:
-    """The compressed capsule of FITTED unknowns y at the given ``force`` (Fhat, echoed) with the fluid ``fill``;
+    """The compressed capsule of FITTED unknowns y at the given ``force`` (Fhat, echoed; at P_I = 0, where Fhat is
+    undefined, F / (E T R), and the state's ``force`` and ``pressure_ratio`` are NaN) with the fluid ``fill``;
     ``tol``: Newton's tolerances of the solve (``results.force_allowance``)."""
     n, p_i = model.dofs, state.pressure
+    unit = np.pi * p_i if p_i > 0.0 else 1.0  # the force's unit, E T R
     pressure, h, a = (float(v) for v in y[n:])
     rho_c, a_c = float(y[edge(model)]), _arc(model) * a
     linear = forms(model, y, FITTED)
     rows = linear.residual
-    reaction = -float(rows[model.tied()].sum()) / (np.pi * p_i)
-    area = pressure * rho_c**2 / p_i
+    reaction = -float(rows[model.tied()].sum()) / unit
+    area = np.pi * pressure * rho_c**2 / unit
     slopes = _slopes(model, y, FITTED)
     pole, equator = post.pole_stretch(model, y, FITTED), _equator_stretch(model, y, rows, slopes)
     extra = results._extra(model, iterations, FITTED)
     extra.update(force_reaction=reaction, force_pressure_area=area, force_difference=reaction - area,
                  penetration=max(0.0, float((y[edge(model) + 1: n: 2] - h).max())), **_capsule(model, y),
-                 stretch_pole=pole, force_ETR=np.pi * force * p_i)
+                 stretch_pole=pole, force_ETR=force * unit)
     profile = _profile(model, y, FITTED, slopes, pole, equator, a_c)
     out = CompressedState(
         material=model.law.material, fluid=results._fluid(fill), indenter=fill.indenter, pressure_initial=p_i,
-        force=force, pressure=pressure, pressure_ratio=pressure / p_i, contact_area=rho_c**2, contact_radius=a_c,
-        stretch_contact=rho_c / float(np.sin(a_c)), height=h, height_ratio=h / state.height,
-        volume=2.0 * linear.volume, profile=profile, inflated=state, solver="fem", extra=extra,
-        contact_radius_deformed=rho_c, **results._least_tensions(linear, profile),
+        force=force if p_i > 0.0 else np.nan, pressure=pressure, pressure_ratio=pressure / p_i if p_i > 0.0 else np.nan,
+        contact_area=rho_c**2, contact_radius=a_c, stretch_contact=rho_c / float(np.sin(a_c)), height=h,
+        height_ratio=h / state.height, volume=2.0 * linear.volume, profile=profile, inflated=state, solver="fem",
+        extra=extra, contact_radius_deformed=rho_c, **results._least_tensions(linear, profile),
     )
-    where = f"of the capsule at Fhat = {force!r}"
+    where = f"of the capsule at Fhat = {force!r}" if p_i > 0.0 else \
+        f"of the uninflated capsule at F/(E T R) = {force!r}"
     assert fill.volume is not None, "a fill holds the upper half's V_I"
     _common(model, y, FITTED, out, where, linear.volume,
             fill.volume * (1.0 if fill.gas is None else fill.gas.ratio(pressure)[0]))
@@ -161,7 +164,7 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
         if abs(error) > results.CONSISTENCY:
             results._fail(where, f"the gas law (P + P_atm) V^gamma = (P_I + P_atm) V_I^gamma off by {error:.3g}")
     results._check_forces({name: extra[name] for name in ("force_reaction", "force_pressure_area")}, force, tol, where,
-                          lambda: results._fitted_noise(model, y, fill, force, p_i))
+                          lambda: results._fitted_noise(model, y, fill, force, unit))
     if not 0.0 < a < 1.0:
         results._fail(where, f"contact radius a_c = {a_c!r} outside (0, pi/2)")
     return out

@@ -68,7 +68,9 @@ def follow(
             if isinstance(err, OutOfRangeError):
                 end = f"{name} = {show(reached):.10g} to {show(load):.10g} (the last load converged and the " \
                     "nearest beyond it tried)"
-                raise beyond_range(f"{name} = {show(stop):.10g}", end, str(err)) from err
+                refusal = beyond_range(f"{name} = {show(stop):.10g}", end, str(err))
+                refusal.end = end
+                raise refusal from err
             raise ConvergenceError(
                 f"load stepping gave up at {name} = {show(reached):.6g} on the way to {show(stop):.6g}: {err}",
                 load=reached,

@@ -72,9 +72,11 @@ def _next_fitted(model, history, fill, force, tol, unit):
 
 
 def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces, tol: Tolerances,
-                 progress=None, builder=results) -> list:
+                 progress=None, builder=results, deeper=None) -> list:
     """Compressed states (edge-fitted contact) at the forces Fhat, from the inflated unknowns y_i; ``builder``: the
-    module that builds them (``results``; ``capsulestates`` on the capsule)."""
+    module that builds them (``results``; ``capsulestates`` on the capsule). ``deeper(force, fhat, end)``, if given:
+    (y, iterations) of a force (units E T R) past the ``end`` of the branch the stepping followed (the end its
+    refusal quotes), on another branch (a capsule's, ``descent``); the states after it follow that branch."""
     p_i, states = inflated.pressure, []
     history: list[tuple[float, np.ndarray]] = []  # (sqrt(force), unknowns) of the states solved
     for k, fhat in enumerate(forces):
@@ -97,6 +99,11 @@ def fitted_curve(model: Model, y_i: np.ndarray, inflated, fill: Control, forces,
                     y, iterations = _next_fitted(model, history, fill, force, tol, np.pi * p_i)
             except ConvergenceError as err:
                 raise _at_force(fhat, err) from err
+            except OutOfRangeError as err:
+                if deeper is None or err.end is None:
+                    raise
+                y, iterations = deeper(force, fhat, err.end)
+                history.clear()  # the states of the branch left behind do not extrapolate to this one
             history.append((np.sqrt(force), y))
             states.append(builder.fitted_state(model, y, iterations, inflated, fill, fhat, tol))
         if progress is not None:

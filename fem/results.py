@@ -137,16 +137,17 @@ def identity_noise(system, y: np.ndarray) -> float:
     return float(border_noise(system, y)[list(_FORCE_ROWS)].sum())
 
 
-def force_control(fill: Control, force: float, pressure_initial: float) -> Control:
-    """``fill`` under the control of the plate force Fhat = ``force``, the rows measured against it: the
-    linearisation the identities' round-off is read from."""
-    plate = force * np.pi * pressure_initial
+def force_control(fill: Control, force: float, unit: float) -> Control:
+    """``fill`` under the control of the plate force ``force`` (in units of ``unit`` E T R: pi Phat_I for Fhat),
+    the rows measured against it: the linearisation the identities' round-off is read from."""
+    plate = force * unit
     return dataclasses.replace(fill, force=plate, scale=plate)
 
 
-def _fitted_noise(model: Model, y: np.ndarray, fill: Control, force: float, pressure_initial: float) -> float:
-    """``identity_noise`` of the FITTED state y at the force Fhat = ``force`` (the disc's and the capsule's)."""
-    return identity_noise(linearize(model, y, FITTED, force_control(fill, force, pressure_initial))[1], y)
+def _fitted_noise(model: Model, y: np.ndarray, fill: Control, force: float, unit: float) -> float:
+    """``identity_noise`` of the FITTED state y at the force ``force`` (units of ``unit`` E T R, as for
+    ``force_control``; the disc's and the capsule's)."""
+    return identity_noise(linearize(model, y, FITTED, force_control(fill, force, unit))[1], y)
 
 
 def _check_forces(reported: dict[str, float], force: float, tol: Tolerances, where: str,
@@ -309,7 +310,7 @@ def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedSt
     _check_gas(fill, out, where)
     identities = ("force_reaction", "force_pressure_area") if fill.indenter.pressure_area else ("force_reaction",)
     _check_forces({name: extra[name] for name in identities}, force, tol, where,
-                  lambda: _fitted_noise(model, y, fill, force, p_i))
+                  lambda: _fitted_noise(model, y, fill, force, np.pi * p_i))
     if not 0.0 < a < 1.0:
         _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
     return out

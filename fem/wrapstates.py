@@ -152,7 +152,7 @@ def state(model: Model, y: np.ndarray, iterations: int, inflated, fill: Control,
     _check_common(model, y, WRAPPED, out, where, _volume_target(fill, pressure))
     _check_gas(fill, out, where)
     _check_forces({"force_reaction": extra["force_reaction"]}, force, tol, where,
-                  lambda: identity_noise(linearize(model, y, force_control(fill, force, p_i), surf)[1], y))
+                  lambda: identity_noise(linearize(model, y, force_control(fill, force, np.pi * p_i), surf)[1], y))
     if not 0.0 < a < 1.0:
         _fail(where, f"contact radius a/R = {a!r} outside (0, 1)")
     return out

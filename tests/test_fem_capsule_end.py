@@ -6,7 +6,8 @@ curvature P / T_1 (``pocket.core.errors.CAPSULE_EDGE``). The finite elements wat
 zone's flux (``fem.post.edge_tension``, ``fem.steps.check_edge``): a step that lands where it is not positive is
 outside the model, and the continuation bisects down to the end and quotes it. The capsule is the shooting solver's
 own case (neo-Hookean, Phat_I = 0.01: ``tests/test_shooting_capsule.py``), whose ``range_end`` is the reference,
-computed here.
+computed here. Deeper, the states resume on a second branch (``tests/test_fem_capsule_deep.py``): a force past
+the end is refused only where it lies between the two, as ``PAST`` does.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from pocket.core.materials import as_material
 
 RUBBER = as_material(0.0)  # neo-Hookean (Mooney-Rivlin alpha = 0)
 PRESSURE = 0.01
-PAST = 0.2  # a force past the end (the shooting solver's is near 0.15), but not past it by a factor
+PAST = 0.2  # a force past the end (the shooting solver's is near 0.15), short of the deep branch (about 1)
 KEYS = ("pressure_ratio", "height", "volume", "contact_area", "contact_radius", "contact_radius_deformed",
         "stretch_contact")
 
@@ -70,15 +71,18 @@ def test_the_edge_tension_is_the_shooting_solvers():
 
 
 def test_a_force_past_the_end_is_refused_naming_the_slack_edge():
-    """One message: the force is beyond the model's range, the end quoted as a bracket below it, and the reason
-    the shooting solver gives (the edge's tension vanishing), with the finite elements' edge tension there."""
+    """One message: the force lies between the capsule's two branches, the end of the one from the touch quoted as
+    a bracket below it and the start of the deep one as a bracket above it, and the reason the shooting solver
+    gives (the edge's tension vanishing)."""
     with pytest.raises(OutOfRangeError) as refused:
         fem.compress(RUBBER, PRESSURE, PAST, geometry="capsule")
     message = str(refused.value)
-    assert message.startswith(f"force = {PAST} is beyond the model's range, which ends at force = ")
-    assert CAPSULE_EDGE in message
-    assert "at the contact edge of the finite elements' state" in message
-    assert "\n" not in message
+    found = re.fullmatch(rf"force = {PAST} lies between the capsule's two branches of states: the one pressed from "
+                         r"the touch ends at force = (\S+) to (\S+) \(.*\), the one reached deeper starts at force = "
+                         r"(\S+) to (\S+) \(.*\); between them " + re.escape(CAPSULE_EDGE), message)
+    assert found, message
+    end_lo, end_hi, start_hi, start_lo = (float(v) for v in found.groups())
+    assert end_lo < end_hi < PAST < start_lo < start_hi
 
 
 @pytest.mark.slow  # a minute: the shooting solver's march to its end at this low pressure
@@ -143,7 +147,7 @@ def test_the_command_line_refuses_a_force_past_the_end_in_one_line(capsys):
     assert out == ""
     assert err.count("\n") == 1
     assert "Traceback" not in err
-    assert f"force = {PAST} is beyond the model's range" in err
+    assert f"force = {PAST} lies between the capsule's two branches of states" in err
     assert CAPSULE_EDGE in err
 
 

@@ -80,7 +80,8 @@ def test_the_allowance_is_the_rows_at_newtons_floor_and_noise():
 
 def _allowance(m, y, inflated, fill, tol) -> float:
     """The allowance of the FITTED state y at FORCE, its noise read from the tangent as the state's check reads it."""
-    system = model.linearize(m, np.array(y), model.FITTED, results.force_control(fill, FORCE, inflated.pressure))[1]
+    control = results.force_control(fill, FORCE, np.pi * inflated.pressure)
+    system = model.linearize(m, np.array(y), model.FITTED, control)[1]
     return results.force_allowance(FORCE, tol, results.identity_noise(system, np.array(y)))
 
 
@@ -110,7 +111,7 @@ def test_a_curved_indenters_state_ten_allowances_off_is_refused():
     y, iterations = wrapping.first_contact(m, y_i, fill, wrapping.first_radius(inflated, fill, fitted.A_FIRST), tol)
     y, more = wrapping.force_path(m, y, fill, FORCE * unit, tol, unit)
     wrapstates.state(m, y, iterations + more, inflated, fill, FORCE, tol)
-    system = obstacle.linearize(m, y, results.force_control(fill, FORCE, inflated.pressure), surface(fill.indenter))[1]
+    system = obstacle.linearize(m, y, results.force_control(fill, FORCE, unit), surface(fill.indenter))[1]
     allowance = results.force_allowance(FORCE, tol, results.identity_noise(system, y))
     with pytest.raises(ConvergenceError, match=r"force_reaction = .* against the force"):
         wrapstates.state(m, y, iterations + more, inflated, fill, FORCE + 10 * allowance, tol)

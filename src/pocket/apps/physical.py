@@ -256,8 +256,8 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     out: list[float | OutOfRangeError] = []
     if pocket.pressure_initial == 0.0:  # a capsule given by its radius as its initial height
         key = f"initial.{case.initial[0]}"
-        raise InputError(f"{key} = {quote(case.as_given(key))} gives P_I = 0 (the unstressed capsule): "
-                         f"{UNINFLATED_CAPSULE}")
+        raise InputError(f"{key} = {quote(case.as_given(key))} gives P_I = 0 (the unstressed capsule), which a case "
+                         f"file does not press yet: {UNINFLATED_CAPSULE}")
     if case.load_kind == "forces":
         for index, force in enumerate(case.loads):
             key, given = f"loads.forces[{index}]", case.as_given(f"loads.forces[{index}]")

@@ -143,6 +143,12 @@ def _at_heights(args, material, options: dict) -> list:
     return states
 
 
+def _time(state) -> float:
+    """A state's time in a VTK series: its force Fhat (0 inflated), or F / (E T R) for an uninflated capsule."""
+    force = getattr(state, "force", 0.0)
+    return force if math.isfinite(force) else state.extra["force_ETR"]
+
+
 def _main(args) -> int:
     step = "inflate" if args.command == "inflate" else "compress"
     options = solver_flags(args, args.solver, step)
@@ -172,8 +178,8 @@ def _main(args) -> int:
     if args.vtk is not None:
         from pocket.apps.vtk.files import write_series
 
-        steps = sorted(states, key=lambda s: getattr(s, "force", 0.0))  # the time is the force, increasing
-        write_series(args.vtk, steps, times=[getattr(s, "force", 0.0) for s in steps], overwrite=args.overwrite)
+        steps = sorted(states, key=_time)  # the time is the force, increasing
+        write_series(args.vtk, steps, times=[_time(s) for s in steps], overwrite=args.overwrite)
     warn(states)
     if args.json:
         print(json.dumps(rows if step == "compress" and len(args.force or args.height) > 1 else rows[0]))

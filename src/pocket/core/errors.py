@@ -25,6 +25,7 @@ __all__ = [
     "PocketError",
     "above_pressure_maximum",
     "beyond_range",
+    "capsule_gap",
     "exit_status",
     "past_stretch_limit",
 ]
@@ -35,17 +36,14 @@ CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
 CAPSULE_EDGE = ("the meridional tension at the contact edge vanishes (the patch under the plate is slack up to its "
                 "edge): the free membrane would leave the plate with unbounded curvature, outside membrane theory")
 
-#: why a capsule is pressed from P_I > 0 only, as every solver and application words it. Under a plate the patch's
-#: meridional stretch falls towards its edge by a strain of order (a_c / R)^2 ~ the compression (the theory's
-#: contact series), which only the inflated capsule's tension keeps taut; the range ends where the slack patch
-#: reaches the contact edge, the sooner the lower P_I (benchmarks/capsule_low_pressure.py, neo-Hookean, a liquid,
-#: both solvers: no end down to Phat_I = 0.02, then at compressions 1 - H / lambda_I of 5.6 %, 2.3 %, 1.3 % and
-#: 0.41 % at 0.01, 0.005, 0.003 and 0.001), about 4 Phat_I, none at P_I = 0: from the uninflated capsule the
-#: membrane's branch has no length
-UNINFLATED_CAPSULE = ("an uninflated capsule (P_I = 0) is not pressed: the patch under a plate goes slack unless the "
-                      "inflation's tension holds it, and the range of a capsule's compression ends where the slack "
-                      "reaches the contact edge, the sooner the lower P_I (at a compression of 5.6 % at Phat_I = "
-                      "0.01, 0.41 % at 0.001: about 4 Phat_I, none at P_I = 0); a capsule is pressed from P_I > 0")
+#: why an uninflated capsule (P_I = 0) is pressed by the plates' height only: its Fhat = F / (P_I pi R^2) is undefined.
+#: Its states start deep: from the touch the patch under a plate is compressed (its meridional stretch falls towards
+#: the edge by a strain of order the compression, which only an inflation's tension keeps taut) and the contact edge's
+#: meridional tension vanishes at once; only at a compression of about 21 % (neo-Hookean, a liquid) does the free
+#: membrane's tension, growing like the compression squared, hold the edge again (``capsule_gap``)
+UNINFLATED_CAPSULE = ("an uninflated capsule (P_I = 0) has no Fhat = F / (P_I pi R^2): it is pressed by the plates' "
+                      "height (compress_height, pocket compress --height), its states starting at the compression "
+                      "where its contact edge's meridional tension first holds")
 
 #: the largest pole stretch lambda_0 at which the membrane solvers (shooting, FE) seek an inflated state. A rubber
 #: whose pressure maximum has just vanished (Mooney-Rivlin alpha just above 0.05544) reaches Phat = 2 only at
@@ -104,6 +102,10 @@ class OutOfRangeError(PocketError, ValueError):
         ...
     pocket.core.errors.OutOfRangeError: force = 20.0 is beyond the model's range, which ends at ...
     """
+
+    #: the end of the range the refusal quotes, where a load stepping found it (``pocket.fem.continuation``):
+    #: for a caller that words the refusal again
+    end: str | None = None
 
 
 class ConvergenceError(PocketError, RuntimeError):
@@ -209,6 +211,18 @@ def above_the_pocket(height: float, top: float) -> OutOfRangeError:
     top H0/R = ``top``: there is no compressed state there."""
     return OutOfRangeError(f"height = {height!r} is above the inflated pocket (H0/R = {top:.10g}): the indenter "
                            "would not touch it")
+
+
+def capsule_gap(asked: str, start: str, end: str | None = None) -> OutOfRangeError:
+    """The one wording, for every solver, of a capsule's load where the membrane has no state: above the start
+    ``start`` of the branch of states reached deep (the plates' height or force there, as ``"height = 0.785"``) and,
+    for P_I > 0, past the ``end`` of the branch pressed from the touch; between them ``CAPSULE_EDGE``."""
+    if end is None:
+        return OutOfRangeError(f"{asked} is outside the capsule's range, whose states start deeper, at {start}: "
+                               f"before it {CAPSULE_EDGE}")
+    return OutOfRangeError(f"{asked} lies between the capsule's two branches of states: the one pressed from the "
+                           f"touch ends at {end}, the one reached deeper starts at {start}; between them "
+                           f"{CAPSULE_EDGE}")
 
 
 def beyond_range(asked: str, end: str, reason: str = CLAMP_PLANE) -> OutOfRangeError:

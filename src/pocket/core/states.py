@@ -36,10 +36,13 @@ from .indenters import PLATE, Indenter
 from .materials import Material
 from .offset import check_thickness, volume_correction
 
-__all__ = ["CHECKS", "CompressedState", "InflatedState", "Profile"]
+__all__ = ["CHECKS", "UNINFLATED_UNDEFINED", "CompressedState", "InflatedState", "Profile"]
 
 #: the membrane's own validity, reported by every state after its KEYS
 CHECKS = ("tension_1_min", "tension_2_min", "wrinkled")
+#: the keys a compressed state of an uninflated capsule (P_I = 0) leaves NaN and does not report: Fhat = F / (P_I pi
+#: R^2) and P / P_I, undefined there (its force is ``force_ETR`` = F / (E T R))
+UNINFLATED_UNDEFINED = ("force", "pressure_ratio")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -251,9 +254,10 @@ class CompressedState(_Membrane):
     pressure_initial : float
         Phat_I = P_I R / (E T), as given.
     force : float
-        Fhat = F / (P_I pi R^2), as given (force control) or found (travel control).
+        Fhat = F / (P_I pi R^2), as given (force control) or found (travel control); NaN, and not reported, for
+        an uninflated capsule (P_I = 0), whose force is its ``extra["force_ETR"]`` = F / (E T R).
     pressure, pressure_ratio : float
-        Phat = P R / (E T) and P / P_I.
+        Phat = P R / (E T) and P / P_I (NaN, and not reported, where P_I = 0).
     contact_area : float
         The deformed area in contact, A_c / (pi R^2) (the curved area on a curved indenter;
         pi (lambda_c a_c)^2 / (pi R^2) on the plate).
@@ -349,5 +353,6 @@ class CompressedState(_Membrane):
     def scalars(self) -> dict:
         """The reported quantities as a flat dict (JSON-ready), as ``InflatedState.scalars`` with the
         ``CONTACT_KEYS`` a solver gave, and the fluid."""
-        keys = self.KEYS + tuple(k for k in self.CONTACT_KEYS if math.isfinite(getattr(self, k)))
+        keys = tuple(k for k in self.KEYS if not (self.pressure_initial == 0.0 and k in UNINFLATED_UNDEFINED)) + \
+            tuple(k for k in self.CONTACT_KEYS if math.isfinite(getattr(self, k)))
         return _scalars(self, keys, self.extra, {**self.material.describe(), **self.fluid.describe()})

@@ -1,0 +1,157 @@
+"""The finite-element capsule deep in its compression: the second branch of a low P_I, and the uninflated capsule.
+
+Pressed from the touch, a neo-Hookean capsule at Phat_I = 0.01 ends its first branch at Fhat ~ 0.15 (the contact
+edge's meridional tension vanishing, ``tests/test_fem_capsule_end.py``); deeper its states resume, and an uninflated
+capsule (P_I = 0) has only those. ``pocket.fem.descent`` reaches them from Phat_I = 0.1 at a fixed plate height,
+lowering the sealed fluid. What is checked: the uninflated state's own balances (its volume the unstressed sphere's,
+F = P A_c, Fhat and P / P_I not reported), that it is the limit of inflated capsules as P_I -> 0, the start of its
+range where the edge's tension vanishes, the gap between a low P_I's two branches refused with both ends, force
+and height control inverse to each other on the deep branch, and the command line.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+
+import numpy as np
+import pytest
+from pocket.fem import descent
+
+from pocket import fem
+from pocket.cli import main
+from pocket.core.errors import CAPSULE_EDGE, UNINFLATED_CAPSULE, InputError, OutOfRangeError, exit_status
+from pocket.core.states import UNINFLATED_UNDEFINED
+
+RUBBER = 0.0  # neo-Hookean (Mooney-Rivlin alpha = 0)
+ELEMENTS = 32  # a coarse mesh: what is checked here holds on any mesh
+DEEP = 0.6  # a plate height on the uninflated capsule's branch (its start is near 0.79)
+KEYS = ("pressure", "height", "volume", "contact_area", "contact_radius", "contact_radius_deformed", "stretch_pole",
+        "radius_equator")
+
+
+def _key(state, key: str) -> float:
+    return float(state.extra[key]) if key in state.extra else float(getattr(state, key))
+
+
+def _uninflated(height: float = DEEP, **options):
+    return fem.compress_height(RUBBER, 0.0, height, geometry="capsule", elements=ELEMENTS, **options)
+
+
+def test_the_uninflated_capsule_keeps_its_volume_and_its_plates_carry_p_times_a():
+    """At P_I = 0 the liquid keeps the unstressed sphere's volume (the finite elements' own, that of the inflated
+    state at Phat = 0), each plate carries F = P A_c (``force_ETR`` = pi P rho_c^2 and the plate's reaction), and
+    the keys undefined without P_I (Fhat, P / P_I) are NaN and not reported."""
+    state = _uninflated()
+    assert state.pressure_initial == 0.0
+    assert abs(state.volume / state.inflated.volume - 1.0) < 1e-9
+    assert abs(state.inflated.volume / (4.0 / 3.0 * math.pi) - 1.0) < 1e-6  # the discrete sphere, P2 elements
+    assert state.height == DEEP
+    force = state.extra["force_ETR"]
+    assert abs(force / (math.pi * state.pressure * state.contact_area) - 1.0) < 1e-12
+    assert abs(state.extra["force_reaction"] / force - 1.0) < 1e-8
+    assert all(math.isnan(getattr(state, key)) for key in UNINFLATED_UNDEFINED)
+    assert not set(UNINFLATED_UNDEFINED) & set(state.scalars())
+
+
+def test_the_uninflated_capsule_is_the_limit_of_inflated_ones():
+    """At a fixed plate height the state is a smooth function of Phat_I (the deep branch is regular there), so
+    s(p) = s(0) + s1 p + s2 p^2 + O(p^3): the linear extrapolation from p and 2p, 2 s(p) - s(2p), misses s(0) by
+    -2 s2 p^2, which the second difference s(3p) - 2 s(2p) + s(p) = 2 s2 p^2 measures. So the state solved at
+    P_I = 0 must lie within that (twice: the cubic terms) of the extrapolation, plus Newton's noise. The steps are
+    not small: an inflated capsule's discrete sphere is stiffened only by its tension, ~ p, against the mesh's
+    misfit of the sphere, so its volume is off the closed form by a relative 3e-6 at p = 2e-3 on this mesh (2e-7 at
+    1e-2), which would swamp the second difference of smaller steps."""
+    p = 1e-2
+    at = {k: fem.compress_height(RUBBER, k * p, DEEP, geometry="capsule", elements=ELEMENTS) for k in (1, 2, 3)}
+    zero = _uninflated()
+    for key in KEYS:
+        (s1, s2, s3), s0 = (_key(at[k], key) for k in (1, 2, 3)), _key(zero, key)
+        extrapolated = 2.0 * s1 - s2
+        second = abs(s3 - 2.0 * s2 + s1)
+        print(f"{key}: P_I = 0 {s0!r}, extrapolated {extrapolated!r}, second difference {second:.2e}")
+        assert abs(extrapolated - s0) <= 2.0 * second + 1e-9 * max(1.0, abs(s0)), key
+
+
+def test_the_uninflated_range_starts_where_the_edge_tension_vanishes():
+    """A height above the uninflated capsule's range is refused, its start quoted as a bracket of heights [beyond,
+    reached] below the height asked; at the reached height the state solves with a small positive tension at the
+    contact edge, and the height beyond it is refused in turn."""
+    with pytest.raises(OutOfRangeError) as refused:
+        _uninflated(0.9)
+    message = str(refused.value)
+    found = re.fullmatch(r"height = 0\.9 is outside the capsule's range, whose states start deeper, at plate height "
+                         r"h/R = (\S+) to (\S+) \(.*\): before it " + re.escape(CAPSULE_EDGE), message)
+    assert found, message
+    reached, beyond = (float(v) for v in found.groups())
+    assert reached < beyond < 0.9
+    start = _uninflated(reached)
+    edge = start.profile.tension_1[np.flatnonzero(start.profile.contact)[-1]]
+    deep = _uninflated().profile
+    assert 0.0 < edge < 0.01 * deep.tension_1[np.flatnonzero(deep.contact)[-1]]
+    with pytest.raises(OutOfRangeError, match=re.escape(CAPSULE_EDGE)):
+        _uninflated(beyond)
+
+
+def test_force_control_at_p_i_zero_is_refused_saying_why():
+    """Fhat = F / (P_I pi R^2) has no meaning at P_I = 0: force control is an InputError naming the plates'
+    height instead."""
+    with pytest.raises(InputError, match=f"^pressure = 0: {re.escape(UNINFLATED_CAPSULE)}$"):
+        fem.compress(RUBBER, 0.0, 1.0, geometry="capsule", elements=ELEMENTS)
+
+
+def test_a_low_pressures_deep_branch_inverts_force_and_height_control():
+    """At Phat_I = 0.01 a force past the first branch's end and past the gap (Fhat = 3) is solved deep; the plates'
+    height it finds, given back, finds its force again (to Newton's tolerance, relative 1e-8), and the state
+    echoes its P_I and carries F = P A_c."""
+    state = fem.compress(RUBBER, 0.01, 3.0, geometry="capsule", elements=ELEMENTS)
+    assert state.height < 0.9  # deeper than the first branch's end (0.947)
+    back = fem.compress_height(RUBBER, 0.01, state.height, geometry="capsule", elements=ELEMENTS)
+    assert abs(back.force / 3.0 - 1.0) < 1e-8
+    assert abs(state.pressure_ratio * state.contact_area / 3.0 - 1.0) < 1e-12
+
+
+def test_a_height_between_the_branches_is_refused_with_both_ends():
+    """At Phat_I = 0.01 a height between the branches is refused in one line quoting the first branch's end above
+    it and the deep branch's start below it, each a bracket, and a curve crossing the gap from both sides solves
+    each force on its own branch (the curve's forces in any order)."""
+    with pytest.raises(OutOfRangeError) as refused:
+        fem.compress_height(RUBBER, 0.01, 0.9, geometry="capsule", elements=ELEMENTS)
+    message = str(refused.value)
+    found = re.fullmatch(r"height = 0\.9 lies between the capsule's two branches of states: the one pressed from the "
+                         r"touch ends at plate height h/R = (\S+) to (\S+) \(.*\), the one reached deeper starts at "
+                         r"plate height h/R = (\S+) to (\S+) \(.*\); between them " + re.escape(CAPSULE_EDGE), message)
+    assert found, message
+    end_reached, end_beyond, start_reached, start_beyond = (float(v) for v in found.groups())
+    assert start_reached < start_beyond < 0.9 < end_beyond < end_reached
+    deep, near = fem.compression_curve(RUBBER, 0.01, [3.0, 0.1], geometry="capsule", elements=ELEMENTS)
+    assert deep.height < start_reached
+    assert near.height > end_reached
+    assert deep.force == 3.0
+    assert near.force == 0.1
+
+
+def test_the_descent_starts_from_a_capsule_whose_branch_has_no_end():
+    """The anchor of the descent is pressed from the touch to its deep height without meeting an end."""
+    anchor = fem.compress_height(RUBBER, descent.ANCHOR, descent.DEEP, geometry="capsule", elements=ELEMENTS)
+    assert anchor.height == descent.DEEP
+
+
+def test_the_command_line_presses_an_uninflated_capsule_by_its_height(capsys):
+    """``pocket compress --pressure 0 --height`` prints the state, F / (E T R) its force and no Fhat; ``--force``
+    at P_I = 0 is one line on stderr, exit 2."""
+    args = ["compress", "--geometry", "capsule", "--solver", "fem", "--law", "neo-hookean", "--mu", "1",
+            "--pressure", "0", "--elements", str(ELEMENTS)]
+    assert main([*args, "--height", str(DEEP), "--json"]) == 0
+    row = json.loads(capsys.readouterr().out)
+    assert row["pressure_initial"] == 0.0
+    assert row["force_ETR"] > 0.0
+    assert "force" not in row
+    assert "pressure_ratio" not in row
+    status = main([*args, "--force", "1"])
+    out, err = capsys.readouterr()
+    assert status == exit_status(InputError("")) == 2
+    assert out == ""
+    assert err.count("\n") == 1
+    assert UNINFLATED_CAPSULE in err
