@@ -56,7 +56,8 @@ def register(subparsers) -> None:
                                  f"solvers {_serving('inflate_volume')}")
         else:
             p.add_argument("--pressure", type=model_value(name, "Phat_I = P_I R / (E T)"), required=True,
-                           metavar="PHAT_I", help="initial pressure, Phat_I = P_I R / (E T)")
+                           metavar="PHAT_I", help="initial pressure, Phat_I = P_I R / (E T) (0: an uninflated "
+                           "capsule, pressed by --height, its force reported as force_ETR = F / (E T R))")
             load = p.add_mutually_exclusive_group(required=True)
             load.add_argument("--force", type=model_value(name, "Fhat = F / (P_I pi R^2)"), nargs="+", metavar="FHAT",
                               help="force, Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
