@@ -24,11 +24,11 @@ import re
 import time
 
 import numpy as np
+from pocket.fem import api, capsulestates, curves
 
 from pocket import fem, shooting
-from pocket.core.geometries import CAPSULE
-from pocket.fem import api, capsulestates, curves
 from pocket.core.errors import CAPSULE_EDGE, OutOfRangeError
+from pocket.core.geometries import CAPSULE
 from pocket.core.materials import mooney_rivlin
 
 NEO_HOOKEAN = mooney_rivlin(0.0)
