@@ -214,11 +214,13 @@ def report(state) -> dict:
 
 
 def warn(states) -> None:
-    """Print the warnings of ``states`` (and of the inflated states they start from) on stderr, each
-    once, as ``pocket: warning: ...`` lines."""
+    """Print the warnings of ``states`` (and of the inflated states they start from, but an uninflated capsule's
+    unstressed sphere) on stderr, each once, as ``pocket: warning: ...`` lines."""
     seen = []
     for state in states:
-        for text in (*getattr(getattr(state, "inflated", None), "warnings", ()), *state.warnings):
+        # an uninflated capsule's inflated state is the unstressed sphere, tension-free by definition: not a warning
+        inflated = getattr(state, "inflated", None) if getattr(state, "pressure_initial", None) != 0.0 else None
+        for text in (*getattr(inflated, "warnings", ()), *state.warnings):
             if text not in seen:
                 seen.append(text)
     for text in seen:
