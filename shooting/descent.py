@@ -61,10 +61,15 @@ ANCHOR = 0.1
 #: compression at every Phat_I (H* = 0.793 at P_I = 0, neo-Hookean, a liquid), and nearly taut there (at P_I = 0 the
 #: pole's tension is compressive by 0.006 E T at 0.5, positive below about 0.48)
 H_DEEP = 0.5
-_FORCE = 0.1  # Fhat of the anchor's force-controlled state, where its height control starts
+#: the deepest H_d: where the fluid's change at H_d stalls (the edge's tension vanishing on the way: a soft gas, whose
+#: pressure the squeeze raises less, has H* below 0.5), H_d is halved, down to this
+_DEEPEST = 0.125
+_FORCE = 0.01  # Fhat of the anchor's force-controlled state, where its height control starts: the force's
+# continuation from the inflated state is cheapest to a small force (a call took 0.15 s from here, 0.25 s from 0.1)
 _UNIT = 1.0  # the "force" argument of a height-controlled problem: unused, but its domain needs it > 0
 _H_STEP = 0.05  # the first step of a march in height (units R)
 _P_STEP = 0.02  # ... and of the march in Phat_I
+_P_STALL = 1e-6  # the step in Phat_I at which its march has stalled (where the edge goes slack: ``_DEEPEST``)
 _STALL = 1e-9  # the step (relative to the march's length) at which a march that cannot go on has failed
 _END_STEP = 1e-6  # the step in height at which the march up stops at H*: its accuracy
 _EDGE_SLACK = 1e-2  # the edge's tension, relative to the anchor's inflated tension, below which a stall is at H*
@@ -164,13 +169,18 @@ def _descent(material, pressure_initial, height, fluid, rtol) -> tuple[CapsulePr
     def sealed(pressure):  # the capsule inflated at Phat_I = pressure, at the fixed height H_d
         return problem(inflate(material, pressure, geometry=CAPSULE, rtol=rtol), deep)
 
-    deep = min(height, H_DEEP)
-    x = _pressed(anchor, law, fluid, rtol, deep)
-    reached, x = _march(sealed, x, ANCHOR, pressure_initial, _P_STEP)
-    if reached != pressure_initial:
-        raise ConvergenceError(f"capsule at height = {height!r}: the march in Phat_I from {ANCHOR} towards "
-                               f"{pressure_initial!r} at H/R = {deep!r} stalled at Phat_I = {reached:.10g}",
-                               load=reached)
+    deep, (top, x) = min(height, H_DEEP), _touched(anchor, law, fluid, rtol)
+    while True:  # the anchor pressed to H_d, then its fluid changed there; H_d halved where that march stalls
+        x = _pressed(anchor, law, fluid, rtol, x, top, deep)
+        reached, lowered = _march(sealed, x, ANCHOR, pressure_initial, _P_STEP, taut=True, smallest=_P_STALL)
+        if reached == pressure_initial:
+            break
+        if deep <= _DEEPEST:
+            raise ConvergenceError(f"capsule at height = {height!r}: the march in Phat_I from {ANCHOR} towards "
+                                   f"{pressure_initial!r} at H/R = {deep!r} stalled at Phat_I = {reached:.10g}",
+                                   load=reached)
+        top, deep = deep, max(_DEEPEST, 0.5 * deep)
+    x = lowered
     if height > deep:
         reached, x = _march(lambda h: problem(target, h), x, deep, height, _H_STEP, taut=True, smallest=_END_STEP)
         if reached != height:
@@ -178,14 +188,20 @@ def _descent(material, pressure_initial, height, fluid, rtol) -> tuple[CapsulePr
     return problem(target, height), x
 
 
-def _pressed(anchor, law, fluid, rtol, deep):
-    """The unknowns (scaled by itself) of the ``anchor`` capsule pressed to H/R = ``deep``: its state at Fhat =
-    ``_FORCE`` by the force's continuation, then the march in height."""
+def _touched(anchor, law, fluid, rtol) -> tuple[float, np.ndarray]:
+    """(H/R, the unknowns of height control): the ``anchor`` capsule at Fhat = ``_FORCE``, by the force's
+    continuation from its inflated state."""
     start = CapsuleProblem(anchor, rtol, law, fluid)
     force, x = first_state(start, _FORCE)
     top = -start.shoot(x, force)[1][1]
     x = x.copy()
     x[2] *= math.sqrt(force)  # c = a / sqrt(Fhat) -> a, the unknown of height control
+    return top, x
+
+
+def _pressed(anchor, law, fluid, rtol, x, top, deep) -> np.ndarray:
+    """The unknowns of the ``anchor`` capsule (scaled by itself) pressed from H/R = ``top`` (its unknowns x) down to
+    ``deep``, by the march in height."""
     reached, x = _march(lambda h: CapsuleProblem(anchor, rtol, law, fluid, height=h), x, top, deep, _H_STEP)
     if reached != deep:
         raise ConvergenceError(f"capsule at Phat_I = {ANCHOR}: the march in height from H/R = {top:.10g} towards "

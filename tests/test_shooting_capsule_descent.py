@@ -7,7 +7,7 @@ import re
 
 import numpy as np
 import pytest
-from pocket.shooting.descent import _descent, capsule_at_height
+from pocket.shooting.descent import H_DEEP, _descent, capsule_at_height
 
 from pocket import shooting
 from pocket.core.errors import CAPSULE_EDGE, InputError, OutOfRangeError
@@ -135,6 +135,21 @@ def test_a_gas_sealed_at_zero_gauge_pressure():
         air.ambient * SPHERE**air.gamma, rel=1e-9)
     assert state.volume < SPHERE
     assert state.pressure < capsule_at_height(NEO, 0.0, HEIGHTS[1]).pressure
+
+
+@pytest.mark.slow
+def test_a_soft_gas_is_pressed_deeper_first():
+    """A gas sealed at P_I = 0 under a low ambient pressure (Phat_atm = 0.5, isothermal) yields to the squeeze: its
+    second branch starts below H_DEEP, so the descent changes the fluid at a deeper plate height; a height above its
+    H* is refused quoting it, one below solves, holding (P + P_atm) V = P_atm 4 pi / 3 to 1e-9."""
+    air = gas(0.5, 1.0)
+    with pytest.raises(OutOfRangeError, match=re.escape(CAPSULE_EDGE)) as info:
+        capsule_at_height(NEO, 0.0, 0.6, fluid=air)
+    end = _lower_end(info.value)
+    print(f"soft gas at P_I = 0: H* = {end}")
+    assert end < H_DEEP
+    state = capsule_at_height(NEO, 0.0, end - 0.01, fluid=air)
+    assert (state.pressure + air.ambient) * state.volume == pytest.approx(air.ambient * SPHERE, rel=1e-9)
 
 
 @pytest.mark.slow
