@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 
 from pocket.core.errors import OutOfRangeError, above_the_pocket
+from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Symmetry, posed
 from pocket.core.indenters import Indenter, as_indenter
 from pocket.core.inputs import check_non_negative, check_positive
@@ -36,9 +37,11 @@ from pocket.core.solver import FluidLike, GeometryLike, MaterialLike
 from pocket.core.states import CompressedState
 
 from . import brent
+from .capsule import CapsuleProblem
 from .compression import compress
 from .descent import capsule_at_height
 from .inflation import GEOMETRIES, inflate
+from .laws import law_of
 from .problem import problem_of
 from .rangeend import range_end
 
@@ -105,7 +108,10 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
         problem_of(geometry, as_indenter(indenter))  # an InputError for an indenter other than the plates
         if check_non_negative("pressure", pressure_initial) == 0.0:
             return capsule_at_height(material, 0.0, height, fluid=fluid, rtol=rtol)
-    top = inflate(material, pressure_initial, geometry=geometry, rtol=rtol).height
+    inflated = inflate(material, pressure_initial, geometry=geometry, rtol=rtol)
+    top = inflated.height
+    if capsule and height < top:  # a Phat_I too low for the shots' segments: refused before the search of the range
+        CapsuleProblem(inflated, rtol, law_of(material), as_fluid(fluid)).conditioned()
 
     def solved(force):
         return compress(material, pressure_initial, force, fluid=fluid, indenter=indenter, geometry=geometry,

@@ -10,7 +10,7 @@ import pytest
 from pocket.shooting.descent import H_DEEP, _descent, capsule_at_height
 
 from pocket import shooting
-from pocket.core.errors import CAPSULE_EDGE, InputError, OutOfRangeError
+from pocket.core.errors import CAPSULE_EDGE, ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import LIQUID, gas
 from pocket.core.indenters import Sphere
 
@@ -123,6 +123,13 @@ def test_height_control_at_zero_pressure_is_the_descent(uninflated):
     np.testing.assert_array_equal(_values(state), _values(uninflated[1]))
     with pytest.raises(InputError, match="pressure = 0"):
         shooting.compress(NEO, 0.0, 0.1, geometry="capsule")
+
+
+def test_height_control_below_the_segments_reach_is_refused_at_once():
+    """At Phat_I = 0.001 the first branch's shots need more segments than the solver takes: ``compress_height``
+    says so before searching that branch's range (the ConvergenceError ``compress`` gives, without its cost)."""
+    with pytest.raises(ConvergenceError, match="amplifies its errors"):
+        shooting.compress_height(NEO, 0.001, 0.7, geometry="capsule")
 
 
 def test_a_gas_sealed_at_zero_gauge_pressure():
