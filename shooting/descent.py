@@ -9,24 +9,26 @@ branch fill the plate heights H <= H*, H* the height where the edge's tension va
 branch's least compression: H* = 0.793 at P_I = 0, 0.848 at Phat_I = 0.01, neo-Hookean, a liquid). Between the
 first branch's end and H* (at a low P_I > 0) no membrane state lies; at a higher P_I the two branches are one.
 
-The route (``capsule_at_height``). The second branch is reached where it joins the first: at the anchor
-Phat_A = ``ANCHOR`` (0.1), whose range has no end (the neo-Hookean liquid's first branch has none above Phat_I
-~ 0.02), the capsule is pressed from its inflated state (a force-controlled state at Fhat = ``_FORCE``, then height
-control, ``CapsuleProblem(height=...)``) down to the plate height H_d = min(H, ``H_DEEP``); H_DEEP = 0.5 lies
-below H* at every Phat_I, so the states at H_d on the path below all lie on the second branch. There, at fixed H_d,
-the fluid sealed in the capsule is changed from that of Phat_A to that of the target Phat_I (a liquid: its
-volume from V_I(Phat_A) to V_I(Phat_I), at P_I = 0 the unstressed sphere's 4 pi / 3; a gas: the amount sealed at
-Phat_I), each step a new ``CapsuleProblem`` on the capsule inflated at that Phat_I, and then, if H > H_d, the plates
-are raised to H at the target Phat_I. Every problem on the way is scaled by the anchor (``CapsuleProblem``'s
-``reference``: q = P / P_A, e = (lambda_0 - 1) / (lambda_A - 1), and the anchor's count of the free part's
-segments), so that P_I = 0 is posed and a solution's unknowns are the next problem's as they stand.
+The route (``capsule_at_height``). The second branch is reached where it joins the first: at the anchor Phat_A =
+``ANCHOR`` (0.1), whose range has no end (the neo-Hookean liquid's first branch has none above Phat_I ~ 0.02), the
+capsule is pressed from its inflated state (a force-controlled state at Fhat = ``_FORCE``, then height control,
+``CapsuleProblem(height=...)``) down to the plate height H_d = min(H, ``H_DEEP``); H_DEEP = 0.5 lies below the
+neo-Hookean liquid's H* at every Phat_I, so the states at H_d on the path below all lie on the second branch (where
+they do not, a soft gas's, the path stalls and H_d is halved, down to ``_DEEPEST``). There, at fixed H_d, the fluid
+sealed in the capsule is changed from that of Phat_A to that of the target Phat_I (a liquid: its volume from
+V_I(Phat_A) to V_I(Phat_I), at P_I = 0 the unstressed sphere's 4 pi / 3; a gas: the amount sealed at Phat_I), each
+step a new ``CapsuleProblem`` on the capsule inflated at that Phat_I, and then, if H > H_d, the plates are raised to
+H at the target Phat_I. Every problem on the way is scaled by the anchor (``CapsuleProblem``'s ``reference``:
+q = P / P_A, e = (lambda_0 - 1) / (lambda_A - 1), and the anchor's count of the free part's segments), so that P_I = 0
+is posed and a solution's unknowns are the next problem's as they stand.
 
 Each leg is a natural continuation (``_march``): a step's unknowns predicted by the secant through the last two
 states, solved by ``pocket.shooting.newton``, the step doubled after a success and halved after a failure. On the
-way up the edge's meridional tension T_1 is watched: a state with T_1 <= 0 at the edge (its shot goes slack) is
-refused as a failure, so the march stops below H*, its steps halved down to ``_END_STEP``: H* to within twice that
-(a bisection). A height above it is an OutOfRangeError quoting H* (``CAPSULE_EDGE``); a march that stalls where the
-edge's tension has not fallen below ``_EDGE_SLACK`` of the anchor's is a ConvergenceError.
+path in Phat_I and on the way up the edge's meridional tension T_1 is watched: a state with T_1 <= 0 at the edge
+(its shot goes slack) is refused as a failure, so that the march up stops below H*, its steps halved down to
+``_END_STEP``: H* to within twice that (a bisection). A height above it is an OutOfRangeError quoting H*
+(``CAPSULE_EDGE``); a march that stalls where the edge's tension has not fallen below ``_EDGE_SLACK`` of the
+anchor's is a ConvergenceError.
 
 At P_I = 0 the state's ``pressure_ratio`` and ``force`` (Fhat = F / (P_I pi R^2)) have no value (NaN); the force
 is ``extra["force_ETR"]`` = F / (E T R) = pi P rho_c^2 (units E T / R for P), the ``height_ratio`` H over the
@@ -139,7 +141,8 @@ def capsule_at_height(material: MaterialLike, pressure_initial: float, height: f
 
     Examples
     --------
-    The uninflated neo-Hookean capsule of liquid, pressed to 72 % of its radius: the plate carries F = P A_c.
+    The uninflated neo-Hookean capsule of liquid pressed to 72 % of its radius: its pressure, the force on each plate
+    (F = P A_c), and its volume, the unstressed sphere's:
 
     >>> import math
     >>> from pocket.shooting.descent import capsule_at_height
