@@ -6,7 +6,8 @@ several pressures by one march along the first branch,
 plate, a sphere or a user's profile, force given), ``range_end`` the force at which step 2 leaves the
 model (the free sheet reaches the clamp plane; under a sphere also its equator, under a profile its
 end, ``pocket.shooting.surfaceend``), ``compress_height`` the state with the indenter at a given height
-(travel control, ``pocket.shooting.travel``).
+(travel control, ``pocket.shooting.travel``; a capsule's states past the end of its first branch, and at P_I = 0,
+by a descent in the inflation pressure: ``pocket.shooting.descent``).
 The rubber is any law of ``pocket.core.materials`` (a number is a Mooney-Rivlin
 alpha, ``mooney_rivlin``), its tensions derived from its strain energy in
 ``pocket.shooting.tensions``; a compression's fluid is a liquid or a gas sealed at the

@@ -54,6 +54,15 @@ part is shot in K segments (``CapsuleProblem.segments``): a single shot where it
 lambda_1) unknowns and their continuity residuals, up to ``_SEGMENTS_MAX`` (Phat_I ~ 2e-3), below which a
 compression is a ConvergenceError saying why.
 
+Reference scales. q, e, the segments' count and ``residual_tol`` (from the pole strain, ``Contact.residual_tol``)
+are scaled by the inflated capsule, which at P_I = 0 (the unstressed sphere: no pressure, no strain, no tension)
+scales nothing. ``CapsuleProblem(reference=...)`` scales them by another inflated capsule instead (q = P / P_ref,
+e = (lambda_0 - 1) / (lambda_ref - 1), the segments of a shot amplifying as on it), so that P_I = 0 is posed under
+height control (``pocket.shooting.descent``); the volume residual's fluid law then reads the absolute pressure
+P_ref q (a gas sealed at P_I = 0 gauge: (P + P_atm) V^gamma = P_atm V_I^gamma). Without a reference every number
+is the inflated capsule's, bit for bit. A state at P_I = 0 has no P / P_I nor Fhat (NaN): its force is
+``extra["force_ETR"]`` = pi P rho_c^2.
+
 A slack patch. At a low Phat_I (or a gas that yields) the pole's stretch under the plate falls with the force and
 can pass below that of the unstressed rubber (1 / lambda_p): the patch's tension at the pole vanishes and turns
 compressive, where a real membrane would wrinkle under the plate. No equation of the flat zone divides by its
@@ -287,9 +296,12 @@ def inflate_capsule(material, law, pressure: float, rtol: float) -> InflatedStat
 class CapsuleProblem(Contact):
     """The compression of the inflated capsule ``inflated`` between two plates (module docstring); fields as
     ``Contact``. ``height``: None under force control, or the plates' height H / R under height control (the
-    third residual then holds H, and the force is q rho_c^2)."""
+    third residual then holds H, and the force is q rho_c^2). ``reference``: None, or another inflated capsule
+    whose pressure and pole strain scale the unknowns (q = P / P_ref, e = (lambda_0 - 1) / (lambda_ref - 1)) and
+    set the free part's segments (module docstring, "Reference scales"); None scales them by ``inflated``."""
 
     height: float | None = None
+    reference: InflatedState | None = None
 
     @property
     def label(self) -> str:
@@ -297,7 +309,18 @@ class CapsuleProblem(Contact):
 
     @property
     def key(self) -> tuple:
-        return (*super().key, CAPSULE.name)
+        scale = () if self.reference is None else (self.scale.pressure, self.scale.stretch_pole)
+        return (*super().key, CAPSULE.name, *scale)
+
+    @property
+    def scale(self) -> InflatedState:
+        """The inflated capsule whose pressure and pole strain scale the unknowns: ``reference``, or ``inflated``."""
+        return self.inflated if self.reference is None else self.reference
+
+    @property
+    def strain(self) -> float:
+        """s = lambda_ref - 1, the scale of the pole strain's unknown e (``scale``)."""
+        return self.scale.stretch_pole - 1.0
 
     @functools.cached_property
     def tolerance(self) -> Tolerance:
@@ -312,7 +335,8 @@ class CapsuleProblem(Contact):
     @property
     def growth(self) -> float:
         """The amplification of a shot from the pole to the equator on this capsule (``amplification``)."""
-        return amplification(self.inflated.pressure, self.inflated.stretch_pole)
+        scale = self.scale
+        return amplification(scale.pressure, scale.stretch_pole)
 
     @functools.cached_property
     def segments(self) -> int:
@@ -340,10 +364,11 @@ class CapsuleProblem(Contact):
     def start(self) -> np.ndarray:
         """Unknowns (q, e, c, nodes) of the inflated capsule (Fhat -> 0): the nodes' (rho, psi, lambda_1) on its
         sphere."""
-        lam = self.inflated.stretch_pole
+        lam, scale = self.inflated.stretch_pole, self.scale
         arcs = self._nodes(0.0)
         nodes = np.column_stack([lam * np.sin(arcs), arcs, np.full_like(arcs, lam)]).ravel()
-        return np.concatenate([[1.0, 1.0, 1.0 / lam], nodes])
+        q, e = self.inflated.pressure / scale.pressure, (lam - 1.0) / self.strain
+        return np.concatenate([[q, e, 1.0 / lam], nodes])
 
     def _nodes(self, a: float) -> np.ndarray:
         """The arc lengths of the free part's interior nodes, dividing [a, pi/2] into ``segments`` equal parts."""
@@ -362,8 +387,8 @@ class CapsuleProblem(Contact):
 
     @functools.cached_property
     def _pressure(self) -> float:
-        """p at q = 1: the inflated capsule's pressure in units of tau T / R."""
-        return self.law.pressure_factor * self.inflated.pressure
+        """p at q = 1: the pressure of ``scale`` in units of tau T / R."""
+        return self.law.pressure_factor * self.scale.pressure
 
     @functools.cached_property
     def zone_start(self) -> float:
@@ -462,7 +487,7 @@ class CapsuleProblem(Contact):
         """The residuals of unknowns x at ``force`` whose shot reached the equator at y with the contact edge's
         state ``edge`` and the segments' ``mismatches``."""
         inflated = self.inflated
-        ratio = self.fluid.volume_ratio(inflated.pressure * x[0], inflated.pressure)
+        ratio = self.fluid.volume_ratio(self.scale.pressure * x[0], inflated.pressure)
         if self.height is None:
             last = x[0] * edge[0] ** 2 / force - 1.0
         else:
@@ -522,16 +547,20 @@ class CapsuleProblem(Contact):
         inflated = self.inflated
         height = -y[1]
         rho_c = edge[0]
-        force_out = force if self.height is None else q * rho_c**2
+        pressure = self.scale.pressure * q
+        # P / P_I: q itself (bit for bit) where the scale is the inflated capsule's; none at P_I = 0 (nor Fhat)
+        ratio = q * (self.scale.pressure / inflated.pressure) if inflated.pressure > 0.0 else math.nan
+        force_out = force if self.height is None else ratio * rho_c**2
+        force_etr = math.pi * (force_out * inflated.pressure if inflated.pressure > 0.0 else pressure * rho_c**2)
         profile = self._profile(l0, zone, free, height)
         state = CompressedState(
-            pressure_initial=inflated.pressure, force=force_out, pressure=inflated.pressure * q, pressure_ratio=q,
+            pressure_initial=inflated.pressure, force=force_out, pressure=pressure, pressure_ratio=ratio,
             contact_area=rho_c**2, contact_radius=a, stretch_contact=rho_c / math.sin(a), height=height,
             height_ratio=height / inflated.height, volume=2.0 * y[4], profile=profile, inflated=inflated,
             solver="shooting", material=inflated.material, fluid=fluid, indenter=self.indenter,
             contact_radius_deformed=rho_c,
             extra={"geometry": CAPSULE.name, "stretch_pole": float(l0), "radius_equator": float(y[0]),
-                   "force_ETR": math.pi * force_out * inflated.pressure},
+                   "force_ETR": force_etr},
         )
         return state, 0.0
 

@@ -14,6 +14,12 @@ below H(Fhat_end) is outside the model: each an OutOfRangeError naming the bound
 range has no end (Fhat_end = inf, a Gent sheet locking first) is bracketed by doubling the force
 from 1; a solve that fails there is the ConvergenceError it raised.
 
+A closed capsule (``pocket.shooting.capsule``) at a low Phat_I ends its first branch where the meridional tension
+at the contact edge vanishes (``CAPSULE_EDGE``), and has none at P_I = 0; its states at larger compressions, its
+second branch, are reached by a descent in the inflation pressure (``pocket.shooting.descent``): that route is taken
+at P_I = 0 and for a height below the end of the first branch. A height between the two branches is an
+OutOfRangeError quoting both ends.
+
 The finite-element solver controls the height directly (its load is the indenter's position):
 the two routes are independent, and the tests compare them.
 """
@@ -23,15 +29,20 @@ from __future__ import annotations
 import math
 
 from pocket.core.errors import OutOfRangeError, above_the_pocket
-from pocket.core.geometries import posed
-from pocket.core.indenters import Indenter
-from pocket.core.inputs import check_positive
+from pocket.core.fluids import as_fluid
+from pocket.core.geometries import Symmetry, posed
+from pocket.core.indenters import Indenter, as_indenter
+from pocket.core.inputs import check_non_negative, check_positive
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike
 from pocket.core.states import CompressedState
 
 from . import brent
+from .capsule import CapsuleProblem
 from .compression import compress
+from .descent import capsule_at_height
 from .inflation import GEOMETRIES, inflate
+from .laws import law_of
+from .problem import problem_of
 from .rangeend import range_end
 
 __all__ = ["compress_height"]
@@ -51,7 +62,8 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     material : Material or float
         The rubber, a ``pocket.core.materials.Material`` (any stress unit) or a Mooney-Rivlin alpha = C2/C1.
     pressure_initial : float
-        Phat_I = P_I R / (E T) > 0.
+        Phat_I = P_I R / (E T) > 0; a capsule's >= 0 (at P_I = 0 the state's ``force`` and ``pressure_ratio`` are
+        NaN, its force ``extra["force_ETR"]`` = F / (E T R): ``pocket.shooting.descent``).
     height : float
         H / R > 0, at most the inflated pocket's height H0 / R (there the force is 0).
     fluid, indenter, geometry, rtol
@@ -67,7 +79,8 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     InputError
         For invalid input.
     OutOfRangeError
-        For a height above the inflated pocket, or below the lowest the model reaches.
+        For a height above the inflated pocket, or below the lowest the model reaches, or (a capsule) between its
+        two branches.
     ConvergenceError
         If a solve fails.
 
@@ -79,10 +92,26 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     >>> pressed = shooting.compress(47 / 160, 0.31, 0.19)
     >>> print(round(shooting.compress_height(47 / 160, 0.31, pressed.height).force, 8))
     0.19
+
+    The uninflated capsule (P_I = 0) of liquid, pressed to H = 0.6 R: F / (E T R), and its volume, the unstressed
+    sphere's:
+
+    >>> import math
+    >>> state = shooting.compress_height(0.0, 0.0, 0.6, geometry="capsule")
+    >>> print(f"{state.extra['force_ETR']:.4f}", abs(state.volume - 4.0 * math.pi / 3.0) < 1e-9)
+    0.3646 True
     """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     height = check_positive("height", height)
-    top = inflate(material, pressure_initial, geometry=geometry, rtol=rtol).height
+    capsule = isinstance(geometry.end, Symmetry)
+    if capsule:
+        problem_of(geometry, as_indenter(indenter))  # an InputError for an indenter other than the plates
+        if check_non_negative("pressure", pressure_initial) == 0.0:
+            return capsule_at_height(material, 0.0, height, fluid=fluid, rtol=rtol)
+    inflated = inflate(material, pressure_initial, geometry=geometry, rtol=rtol)
+    top = inflated.height
+    if capsule and height < top:  # a Phat_I too low for the shots' segments: refused before the search of the range
+        CapsuleProblem(inflated, rtol, law_of(material), as_fluid(fluid)).conditioned()
 
     def solved(force):
         return compress(material, pressure_initial, force, fluid=fluid, indenter=indenter, geometry=geometry,
@@ -98,9 +127,21 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     while not math.isfinite(end) and low > height:
         hi *= 2.0
         low = solved(hi).height
+    if low > height and capsule and math.isfinite(end):  # its first branch ends where the edge goes slack: deeper
+        return _second_branch(material, pressure_initial, height, fluid, rtol, low)  # lies the second
     if low > height:
         raise OutOfRangeError(f"height = {height!r} is below the lowest the model reaches (H/R = {low:.10g}, at "
                               f"the end of its range, force = {end:.10g})")
     force = brent.root(lambda f: solved(f).height - height if f > 0.0 else top - height, 0.0, hi,
                        fa=top - height, fb=low - height, rtol=_FORCE_RTOL)
     return solved(force)
+
+
+def _second_branch(material, pressure_initial, height, fluid, rtol, first) -> CompressedState:
+    """The capsule's state at ``height`` on its second branch (``capsule_at_height``); an OutOfRangeError quoting
+    both ends for a height between the branches, the first's end at H/R = ``first``."""
+    try:
+        return capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol)
+    except OutOfRangeError as err:
+        raise OutOfRangeError(f"{err}; the first branch, pressed from the inflated capsule, ends at height = "
+                              f"{first:.10g}: no membrane state lies between the two") from None
