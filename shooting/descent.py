@@ -41,7 +41,7 @@ import math
 
 import numpy as np
 
-from pocket.core.errors import CAPSULE_EDGE, ConvergenceError, OutOfRangeError, above_the_pocket, beyond_range
+from pocket.core.errors import ConvergenceError, OutOfRangeError, above_the_pocket, capsule_gap
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import CAPSULE
 from pocket.core.inputs import check_non_negative, check_positive
@@ -217,7 +217,9 @@ def _lower_end(problem, x, height, anchor) -> OutOfRangeError | ConvergenceError
     H* where the edge's tension has vanished there (``_EDGE_SLACK``), else a ConvergenceError."""
     tension = problem.edge_tension(x, _UNIT)
     if tension <= _EDGE_SLACK * 0.5 * anchor.pressure * anchor.stretch_pole:
-        return beyond_range(f"height = {height!r}", f"height = {problem.height:.7g} ({problem.label}: the least "
-                                                   "compression of its branch of deeper ones)", CAPSULE_EDGE)
+        start = f"height = {problem.height:.7g}"
+        refusal = capsule_gap(f"height = {height!r}", start)
+        refusal.end = start
+        return refusal
     return ConvergenceError(f"{problem.label}: the march in height towards {height!r} stalled at H/R = "
                             f"{problem.height:.10g}, the contact edge's tension {tension:.3g} E T", load=problem.height)

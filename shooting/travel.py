@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 
-from pocket.core.errors import OutOfRangeError, above_the_pocket
+from pocket.core.errors import OutOfRangeError, above_the_pocket, capsule_gap
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Symmetry, posed
 from pocket.core.indenters import Indenter, as_indenter
@@ -143,5 +143,6 @@ def _second_branch(material, pressure_initial, height, fluid, rtol, first) -> Co
     try:
         return capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol)
     except OutOfRangeError as err:
-        raise OutOfRangeError(f"{err}; the first branch, pressed from the inflated capsule, ends at height = "
-                              f"{first:.10g}: no membrane state lies between the two") from None
+        if err.end is None:
+            raise
+        raise capsule_gap(f"height = {height!r}", err.end, f"height = {first:.10g}") from None

@@ -1,0 +1,69 @@
+"""The uninflated capsule (P_I = 0) by the two solvers, independently: the shooting solver's descent
+(``pocket.shooting.descent``) against the finite elements' (``pocket.fem.descent``).
+
+Each reaches the deep branch by its own route and equations; they must agree on every key of the capsule's
+contract within the finite elements' error, estimated as the shift of the key from the mesh of half as many
+elements (the keys converge at least at first order, so the finer mesh's error is at most that shift), and on
+where the branch starts (the contact edge's tension vanishing) within the same estimate of the finite elements'
+start. The shooting solver's own error (rtol 1e-10) is far below: its keys move by less than 1e-9 at rtol 1e-12
+(``tests/test_shooting_capsule_descent.py``).
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from pocket import fem, shooting
+from pocket.core.errors import OutOfRangeError
+
+RUBBER = 0.0  # neo-Hookean
+KEYS = ("pressure", "height", "volume", "contact_area", "contact_radius", "contact_radius_deformed")
+EXTRA = ("stretch_pole", "radius_equator", "force_ETR")
+
+
+def _values(state) -> dict[str, float]:
+    return {**{k: float(getattr(state, k)) for k in KEYS}, **{k: float(state.extra[k]) for k in EXTRA}}
+
+
+@pytest.mark.parametrize("height", [0.7, 0.6, 0.3])
+def test_the_solvers_agree_on_the_uninflated_capsule(height):
+    """Every key, at a plate height where the pole's patch is compressive (0.7, 0.6) and where it is taut (0.3)."""
+    shot = _values(shooting.compress_height(RUBBER, 0.0, height, geometry="capsule"))
+    state = fem.compress_height(RUBBER, 0.0, height, geometry="capsule")
+    elements = state.extra["elements"]
+    fine = _values(state)
+    coarse = _values(fem.compress_height(RUBBER, 0.0, height, geometry="capsule", elements=elements // 2))
+    for key in fine:
+        mesh = abs(fine[key] - coarse[key])
+        print(f"H = {height}, {key}: shooting {shot[key]!r}, finite elements {fine[key]!r} ({elements} elements), "
+              f"differ by {abs(fine[key] - shot[key]):.2e}; mesh shift {mesh:.2e}")
+        assert abs(fine[key] - shot[key]) <= mesh + 1e-12, key
+
+
+def _fem_start(**options) -> tuple[float, float]:
+    """The bracket (reached, beyond) of heights the finite elements quote for the start of the uninflated capsule's
+    range, refusing a height above it."""
+    with pytest.raises(OutOfRangeError) as refused:
+        fem.compress_height(RUBBER, 0.0, 0.9, geometry="capsule", **options)
+    found = re.search(r"start deeper, at plate height h/R = (\S+) to (\S+) \(", str(refused.value))
+    assert found, str(refused.value)
+    reached, beyond = (float(v) for v in found.groups())
+    return reached, beyond
+
+
+def test_the_solvers_agree_on_where_the_uninflated_range_starts():
+    """The shooting solver's H* (bisected to 2e-6) lies in the finite elements' bracket widened by their mesh's
+    error there, estimated as the shift of the bracket's middle from the mesh of half as many elements plus that
+    bracket's half-width."""
+    with pytest.raises(OutOfRangeError) as refused:
+        shooting.compress_height(RUBBER, 0.0, 0.9, geometry="capsule")
+    shot = float(re.search(r"start deeper, at height = (\S+):", str(refused.value)).group(1))
+    reached, beyond = _fem_start()
+    elements = fem.inflate(RUBBER, 0.0, geometry="capsule").extra["elements"]
+    coarse = _fem_start(elements=elements // 2)
+    mesh = abs(0.5 * (reached + beyond) - 0.5 * sum(coarse)) + 0.5 * (coarse[1] - coarse[0])
+    print(f"H*: shooting {shot!r}; finite elements [{reached!r}, {beyond!r}] ({elements} elements), {coarse} "
+          f"({elements // 2}); allowed {mesh + 2e-6:.2e} beyond the bracket")
+    assert reached - mesh - 2e-6 <= shot <= beyond + mesh + 2e-6
