@@ -36,7 +36,7 @@ import math
 
 import numpy as np
 
-from pocket.core.errors import UNINFLATED_CAPSULE, InputError
+from pocket.core.errors import CAPSULE_EDGE, UNINFLATED_CAPSULE, InputError, OutOfRangeError
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Symmetry, posed
 from pocket.core.indenters import as_indenter
@@ -46,6 +46,7 @@ from pocket.core.states import CompressedState
 from .capsule import CapsuleProblem
 from .contact import Contact
 from .continuation import Branch, advance, band, beyond, past_the_profile
+from .descent import capsule_at_force
 from .inflation import GEOMETRIES, inflate
 from .laws import law_of
 from .problem import problem_of
@@ -65,6 +66,21 @@ def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
         tension_2_min=inflated.tension_2_min, indenter=problem.indenter,
     )
     return problem.untouched(state) if isinstance(problem, CapsuleProblem) else state
+
+
+def _pressed(problem: Contact, branch: Branch, force: float, fluid, rtol: float) -> tuple[CompressedState, Branch]:
+    """The state at ``force`` continued along ``branch``, and the branch extended to it; an OutOfRangeError past
+    the range's end (``beyond``)."""
+    branch = advance(problem, branch, force)
+    past_the_profile(problem, force, branch.points[-1][1])
+    state, clamp_angle = problem.compressed(force, branch.points[-1][1], fluid)
+    # a solved state past an end: an indenter's lowest point below the clamp plane (a taut, prestretched sheet under
+    # a small sphere gets there with no failed step), or the free sheet at the clamp plane
+    if state.height < 0.0:  # no seed: the end is sought from inside the range
+        beyond(force, problem, None)
+    if clamp_angle >= math.pi - band(rtol):
+        beyond(force, problem, branch.points[-1])
+    return state, branch
 
 
 def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, geometry=None, rtol=1e-10,
@@ -138,19 +154,20 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     counts = {f: forces.count(f) for f in forces}
     states, done = {}, 0
     branch = Branch(points=((0.0, problem.start()),))
+    deep = None  # a capsule's first branch's end, once a force is past it: the later forces lie deeper
     for f in sorted(counts):
         if f == 0.0:
             states[f] = _uncompressed(problem, f, fluid)
-        else:
-            branch = advance(problem, branch, f)
-            past_the_profile(problem, f, branch.points[-1][1])
-            states[f], clamp_angle = problem.compressed(f, branch.points[-1][1], fluid)
-            # a solved state past an end: an indenter's lowest point below the clamp plane (a taut, prestretched
-            # sheet under a small sphere gets there with no failed step), or the free sheet at the clamp plane
-            if states[f].height < 0.0:  # no seed: the end is sought from inside the range
-                beyond(f, problem, None)
-            if clamp_angle >= math.pi - band(rtol):
-                beyond(f, problem, branch.points[-1])
+        elif deep is None:
+            try:
+                states[f], branch = _pressed(problem, branch, f, fluid, rtol)
+            except OutOfRangeError as err:
+                if not isinstance(problem, CapsuleProblem) or err.end is None or CAPSULE_EDGE not in str(err):
+                    raise
+                deep = err.end
+        if f not in states:
+            assert deep is not None, "a force the first branch did not solve is past its end"
+            states[f] = capsule_at_force(material, pressure_initial, f, deep, fluid=fluid, rtol=rtol)
         done += counts[f]
         if progress is not None:
             progress(done, len(forces))

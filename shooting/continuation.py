@@ -40,7 +40,9 @@ def beyond(force, problem, seed):
     if force > end.force:
         where = (end.reason if not end.fold else
                  f"the force has a maximum, with the sheet's angle at the clamp at {end.angle:.6g} rad")
-        raise beyond_range(f"force = {force!r}", f"force = {end.force:.10g} ({problem.label})", where)
+        refusal = beyond_range(f"force = {force!r}", f"force = {end.force:.10g} ({problem.label})", where)
+        refusal.end, refusal.bound = f"force = {end.force:.10g}", end.force
+        raise refusal
     return end
 
 

@@ -48,13 +48,13 @@ from pocket.core.inputs import check_non_negative, check_positive
 from pocket.core.solver import FluidLike, MaterialLike
 from pocket.core.states import CompressedState
 
-from . import newton
+from . import brent, newton
 from .capsule import CapsuleProblem
 from .continuation import first_state
 from .inflation import inflate
 from .laws import law_of
 
-__all__ = ["ANCHOR", "H_DEEP", "capsule_at_height"]
+__all__ = ["ANCHOR", "H_DEEP", "capsule_at_force", "capsule_at_height"]
 
 #: Phat_A, the inflation pressure the descent starts from: the neo-Hookean liquid's first branch has no end above
 #: Phat_I ~ 0.02 (benchmarks/capsule_low_pressure.py), so at 0.1 it reaches every height, into the second branch
@@ -74,6 +74,7 @@ _P_STEP = 0.02  # ... and of the march in Phat_I
 _P_STALL = 1e-6  # the step in Phat_I at which its march has stalled (where the edge goes slack: ``_DEEPEST``)
 _STALL = 1e-9  # the step (relative to the march's length) at which a march that cannot go on has failed
 _END_STEP = 1e-6  # the step in height at which the march up stops at H*: its accuracy
+_FORCE_RTOL = 1e-12  # the relative width of the height bracket at the force's root (``capsule_at_force``)
 _EDGE_SLACK = 1e-2  # the edge's tension, relative to the anchor's inflated tension, below which a stall is at H*
 
 
@@ -219,7 +220,53 @@ def _lower_end(problem, x, height, anchor) -> OutOfRangeError | ConvergenceError
     if tension <= _EDGE_SLACK * 0.5 * anchor.pressure * anchor.stretch_pole:
         start = f"height = {problem.height:.7g}"
         refusal = capsule_gap(f"height = {height!r}", start)
-        refusal.end = start
+        refusal.end, refusal.bound = start, problem.height
         return refusal
     return ConvergenceError(f"{problem.label}: the march in height towards {height!r} stalled at H/R = "
                             f"{problem.height:.10g}, the contact edge's tension {tension:.3g} E T", load=problem.height)
+
+
+def capsule_at_force(material: MaterialLike, pressure_initial: float, force: float, end: str, *,
+                     fluid: FluidLike = None, rtol: float = 1e-10) -> CompressedState:
+    """The capsule's state at Fhat = ``force`` on its second branch, past the ``end`` of its first (as the refusal
+    of the first branch words it, ``"force = ..."``), Phat_I = ``pressure_initial`` > 0.
+
+    On the second branch the force falls as the plates rise, to its least at the branch's start H*: a force below
+    that lies between the branches (an OutOfRangeError quoting both ends, ``capsule_gap``); above it, its height is
+    the root of F(H) - force by Brent's method (``pocket.shooting.brent``) between H* and a height halved from it
+    until the force there exceeds the one asked, each F(H) a state of ``capsule_at_height``. The state returned is
+    the one solved at the root: its ``force`` the found Fhat, within the root's relative 1e-12 of ``force``.
+
+    Examples
+    --------
+    A neo-Hookean capsule at Phat_I = 0.01 ends its first branch at Fhat = 0.1495; at Fhat = 3 it lies deep:
+
+    >>> state = capsule_at_force(0.0, 0.01, 3.0, "force = 0.1495")
+    >>> print(f"{state.force:.10f}", f"{state.height:.4f}")
+    3.0000000000 0.7665
+    """
+    top = inflate(material, pressure_initial, geometry=CAPSULE, rtol=rtol).height
+    try:
+        capsule_at_height(material, pressure_initial, top, fluid=fluid, rtol=rtol)
+    except OutOfRangeError as err:
+        if err.bound is None:
+            raise
+        start = err.bound
+    else:
+        raise ConvergenceError(f"capsule at Phat_I = {pressure_initial!r}: a state at its inflated height on the "
+                               "branch reached deep, which should start below it", load=force)
+
+    def excess(height):
+        return capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol).force - force
+
+    least = excess(start)
+    if least > 0.0:
+        raise capsule_gap(f"force = {force!r}", f"force = {least + force:.10g} (height = {start:.10g})", end)
+    low = 0.5 * start
+    while (above := excess(low)) < 0.0:
+        if low < _DEEPEST * 0.5:
+            raise ConvergenceError(f"capsule at Phat_I = {pressure_initial!r}: no state up to force = {force!r} down "
+                                   f"to the plate height {low:.3g}", load=force)
+        low *= 0.5
+    height = brent.root(excess, low, start, fa=above, fb=least, rtol=_FORCE_RTOL)
+    return capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol)

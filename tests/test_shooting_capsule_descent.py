@@ -7,7 +7,7 @@ import re
 
 import numpy as np
 import pytest
-from pocket.shooting.descent import H_DEEP, _descent, capsule_at_height
+from pocket.shooting.descent import H_DEEP, _descent, capsule_at_force, capsule_at_height
 
 from pocket import shooting
 from pocket.core.errors import CAPSULE_EDGE, ConvergenceError, InputError, OutOfRangeError
@@ -211,3 +211,29 @@ def test_a_height_between_the_branches_is_refused_quoting_both_ends():
     assert second < height < first
     deep = shooting.compress_height(NEO, 0.01, second - 0.01, geometry="capsule")
     np.testing.assert_array_equal(_values(deep), _values(capsule_at_height(NEO, 0.01, second - 0.01)))
+
+
+@pytest.mark.slow  # a few descents at Phat_I = 0.01, seconds
+def test_a_force_short_of_the_deep_branch_is_refused_quoting_both_ends():
+    """At Phat_I = 0.01 the second branch's force falls as the plates rise, to its least at H*: a force past the
+    first branch's end (given) but below that least is refused quoting the first's end as given and the second's
+    start, whose force is the state's at the height it quotes (both to ten digits)."""
+    with pytest.raises(OutOfRangeError, match="lies between the capsule's two branches") as info:
+        capsule_at_force(NEO, 0.01, 0.2, "force = 0.1495")
+    found = re.search(r"ends at force = 0\.1495, the one reached deeper starts at force = (\S+) \(height = (\S+)\)",
+                      str(info.value))
+    assert found, str(info.value)
+    least, height = (float(v) for v in found.groups())
+    assert least > 0.2
+    assert capsule_at_height(NEO, 0.01, height).force == pytest.approx(least, rel=1e-8)
+
+
+@pytest.mark.slow  # the first branch's end at Phat_I = 0.01 (a minute), then the deep state
+def test_a_curve_past_the_first_branchs_end_goes_on_deep():
+    """A curve at Phat_I = 0.01 through Fhat = 0.1 (its first branch) and 3 (past that branch's end at 0.15): the
+    second force is solved on the deep branch, by Brent's method on the plates' height, its force found to 1e-12;
+    given back as a height, the descent finds the same state."""
+    near, deep = shooting.compression_curve(NEO, 0.01, [0.1, 3.0], geometry="capsule")
+    assert near.height > 0.9 > deep.height
+    assert deep.force == pytest.approx(3.0, rel=1e-12)
+    np.testing.assert_allclose(_values(capsule_at_height(NEO, 0.01, deep.height)), _values(deep), rtol=1e-9)

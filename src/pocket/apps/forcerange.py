@@ -9,12 +9,14 @@ the same membrane model as the shooting (to ~1e-9 at its default mesh), is given
 shooting's, so that both quote the same end. At the clamp-plane end the plate carries
 all of P pi R^2, so the deformed contact area is pi R^2 (``shooting.plateend``); an end
 with less is a force maximum of the branch. A capsule has no clamp plane: its range ends where the meridional
-tension at the contact edge vanishes (``pocket.core.errors.CAPSULE_EDGE``), if it does.
+tension at the contact edge vanishes (``pocket.core.errors.CAPSULE_EDGE``), if it does, and its states resume
+deeper, on a second branch: a force past that end is asked of the solver, whose refusal (a force between the two
+branches) is quoted after the load as the case gives it.
 """
 
 from __future__ import annotations
 
-from pocket.core.errors import CAPSULE_EDGE, CLAMP_PLANE, beyond_range
+from pocket.core.errors import CLAMP_PLANE, OutOfRangeError, beyond_range
 from pocket.core.geometries import DISC
 from pocket.core.inputs import quote
 from pocket.core.units import written_like
@@ -49,10 +51,13 @@ def check_force(pocket, key: str, given, force: float) -> float:
     end = entry(solver, "range_end", _PURPOSE)(pocket.material, pocket.pressure_initial, **options)
     if force <= end:
         return force
-    if pocket.case.geometry != DISC:  # no clamp plane: the plates are infinite and the equator is free
-        reason = CAPSULE_EDGE
-    else:
-        at_end = entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, end, **options)
-        reason = CLAMP_PLANE if abs(at_end.contact_area - 1.0) < _FULL_CONTACT else "the force has a maximum"
+    if pocket.case.geometry != DISC:  # no clamp plane; past the first branch's end a capsule's states resume deeper
+        try:
+            entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, force, **options)
+        except OutOfRangeError as err:
+            raise OutOfRangeError(f"{key} = {quote(given)} (Fhat = {force:.10g}): {err}") from None
+        return force
+    at_end = entry(solver, "compress", _PURPOSE)(pocket.material, pocket.pressure_initial, end, **options)
+    reason = CLAMP_PLANE if abs(at_end.contact_area - 1.0) < _FULL_CONTACT else "the force has a maximum"
     raise beyond_range(f"{key} = {quote(given)} (Fhat = {force:.10g})",
                        f"{written_like(end * pocket.force_scale_N, given, 'force')} (Fhat = {end:.10g})", reason)

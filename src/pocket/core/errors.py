@@ -106,6 +106,8 @@ class OutOfRangeError(PocketError, ValueError):
     #: the end of the range the refusal quotes, where a load stepping found it (``pocket.fem.continuation``):
     #: for a caller that words the refusal again
     end: str | None = None
+    #: that end as a number, in the unit of the load asked (``pocket.shooting.descent``: a height H/R)
+    bound: float | None = None
 
 
 class ConvergenceError(PocketError, RuntimeError):
