@@ -50,11 +50,11 @@ COMPRESSED_KEYS = ("pressure", "pressure_ratio", "contact_area", "contact_radius
 
 
 def equator_balance(state) -> tuple[float, float]:
-    """(2 pi rho T_1, P pi rho^2 - F) at the equator of a compressed capsule, units E T R (F = pi Fhat Phat_I;
-    T_1 the profile's at its last point, the equator)."""
+    """(2 pi rho T_1, P pi rho^2 - F) at the equator of a compressed capsule, units E T R (F = ``force_ETR``, pi
+    Fhat Phat_I where P_I > 0; T_1 the profile's at its last point, the equator)."""
     rho = float(state.extra["radius_equator"])
     pull = 2.0 * math.pi * rho * float(state.profile.tension_1[-1])
-    return pull, math.pi * (state.pressure * rho**2 - state.force * state.pressure_initial)
+    return pull, math.pi * state.pressure * rho**2 - float(state.extra["force_ETR"])
 
 
 def _worst(rows: list[Check], count: int) -> Check:

@@ -4,15 +4,16 @@ The figure draws the force-deformation curves as the literature plots them (Feng
 Briscoe 1996): the force on each plate in units of E T R, F / (E T R) = pi Fhat Phat_I (a state's ``force_ETR``),
 against the compression 1 - H / lambda_I = 1 - gap / (2 lambda_I R), the gap's closure relative to the inflated
 capsule's diameter; (a) every law at Phat_I = ``capsules.PRESSURE`` filled with a liquid, the FE model as markers,
-(b) the paper's rubber at three Phat_I and with a gas.
+(b) the paper's rubber at three Phat_I, with a gas, and uninflated (``uninflated``: P_I = 0, where the plates'
+height presses it and lambda_I = 1).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from . import capsulechecks
-from .capsules import FORCE, GAS, PRESSURE, STUDY, capsule_value
+from . import capsulechecks, uninflated
+from .capsules import FEM_ELEMENTS, FORCE, GAS, PRESSURE, STUDY, capsule_value
 from .convergence import FITTED_P2_FINEST, RICHARDSON_FACTOR, observed_order, richardson
 from .plotdata import Figure, Panel, Series
 from .pockets import cell
@@ -38,8 +39,9 @@ def _series(curve, solver: str, label: str, color: int) -> Series:
                   np.array([s.extra["force_ETR"] for s in states]), color)
 
 
-def figure(curves) -> Figure:
-    """Force against compression (module docstring)."""
+def figure(curves, unpressurised=None) -> Figure:
+    """Force against compression (module docstring); ``unpressurised``: the uninflated capsule
+    (``uninflated.Uninflated``), drawn in panel (b), or None."""
     liquids = [c for c in curves if c.capsule.pressure == PRESSURE and not c.capsule.fluid.is_gas]
     laws = []
     for k, curve in enumerate(liquids):
@@ -51,27 +53,37 @@ def figure(curves) -> Figure:
     paper.sort(key=lambda c: (c.capsule.fluid.is_gas, c.capsule.pressure))
     pressures = tuple(_series(c, "shooting", f"Phat_I = {c.capsule.pressure:g}, {c.capsule.fluid.kind}", k)
                       for k, c in enumerate(paper))
+    if unpressurised is not None:
+        for solver, states in (("shooting", unpressurised.shooting), ("FEM P2", unpressurised.fem)):
+            pressures += (Series(f"Phat_I = 0, liquid: {solver}", solver, np.array([compression(s) for s in states]),
+                                 np.array([s.extra["force_ETR"] for s in states]), len(paper)),)
     return Figure(NAME, "A capsule between two plates: the force on each plate F / (E T R) against the compression "
                   "1 - H / lambda_I (the gap between the plates is 2 H R, lambda_I R the inflated capsule's radius), "
                   f"(a) every law's example rubber at Phat_I = {PRESSURE:g} filled with a liquid, the FE model (P2, "
                   f"its default mesh) as markers, (b) the paper's rubber ({STUDY.material.law}, alpha = "
                   f"{STUDY.material.alpha:.3g}) at "
-                  f"several Phat_I, and filled with a gas (Phat_atm = {GAS.ambient:g}, gamma = {GAS.gamma:g}). "
-                  "Lines: the shooting solver.",
+                  f"several Phat_I, and filled with a gas (Phat_atm = {GAS.ambient:g}, gamma = {GAS.gamma:g})"
+                  + (", and uninflated (P_I = 0, a liquid, pressed by the plates' height; the FE model as markers)"
+                     if unpressurised is not None else "") + ". Lines: the shooting solver.",
                   (Panel(f"(a) every law, Phat_I = {PRESSURE:g}, a liquid", _X, _Y, tuple(laws)),
                    Panel(f"(b) {STUDY.material.law}: Phat_I and the fluid", _X, _Y, pressures)))
 
 
-def state_rows(curves) -> tuple[list, list]:
-    """(header, rows): every capsule state of every solver."""
+def state_rows(curves, unpressurised=None) -> tuple[list, list]:
+    """(header, rows): every capsule state of every solver (and of the uninflated capsule ``unpressurised``, if
+    given: its Fhat and P / P_I NaN)."""
     header = ["case", "solver", "material", "fluid", "compression", *_KEYS]
     rows = []
-    for curve in curves:
-        for solver, states in (("shooting", curve.shooting), ("FEM P2", curve.fem)):
-            for s in states:
-                values = [capsule_value(s, k) if k != "wrinkled" else s.wrinkled for k in _KEYS]
-                rows.append([curve.capsule.name, solver, s.material.law, s.fluid.kind, repr(compression(s))]
-                            + [v if isinstance(v, bool) else repr(float(v)) for v in values])
+    groups = [(curve.capsule.name, solver, states) for curve in curves
+              for solver, states in (("shooting", curve.shooting), ("FEM P2", curve.fem))]
+    if unpressurised is not None:
+        groups += [(uninflated.NAME, solver, states)
+                   for solver, states in (("shooting", unpressurised.shooting), ("FEM P2", unpressurised.fem))]
+    for name, solver, states in groups:
+        for s in states:
+            values = [capsule_value(s, k) if k != "wrinkled" else s.wrinkled for k in _KEYS]
+            rows.append([name, solver, s.material.law, s.fluid.kind, repr(compression(s))]
+                        + [v if isinstance(v, bool) else repr(float(v)) for v in values])
     return header, rows
 
 
@@ -117,9 +129,33 @@ def _rubber(material) -> str:
     return f"{material.law}: {values}"
 
 
-def blocks(curves, sequence, checks, caption: str) -> list:
+def _uninflated_blocks(found, checks) -> list:
+    own = [c for c in checks if c.case == uninflated.NAME]
+    worst = max((c for c in own if c.tolerance), key=lambda c: c.error / c.tolerance)
+    low, high = found.fem_start
+    rows = [[f"{s.height:g}", solver, cell(compression(s), 3), cell(s.pressure, 8), cell(s.extra["force_ETR"], 8),
+             cell(s.contact_radius_deformed, 8), cell(s.extra["radius_equator"], 8)]
+            for solver, states in (("shooting", found.shooting), ("FEM P2", found.fem)) for s in states]
+    return [("h", 3, "The uninflated capsule"),
+            ("p", f"The paper's rubber ({STUDY.material.law}, alpha = {STUDY.material.alpha:.3g}) filled with a liquid "
+                  "at P_I = 0, the usual microcapsule test: Fhat and P / P_I are undefined, the force is F / (E T R), "
+                  "and the capsule is pressed by the plates' height H R. Its states start deep (the theory's "
+                  "section 12, 'Two branches'): the contact edge's meridional tension first holds at H/R = "
+                  f"{found.start:.7g} by the shooting solver, in [{low:.10g}, {high:.10g}] by the FE model "
+                  f"(P2, {FEM_ELEMENTS} elements); at the smaller compressions the pole's patch is compressive "
+                  f"(flagged wrinkled), and the states checked, from a compression of "
+                  f"{1.0 - max(uninflated.HEIGHTS):.2g} on, are taut. Checked as the other capsules: F = P "
+                  "A_c, the equator's balance, the liquid's volume (the unstressed sphere's), every key between the "
+                  f"solvers, every state taut; worst error over tolerance {cell(worst.error / worst.tolerance, 2)} "
+                  f"({worst.quantity}, {worst.comparison}), "
+                  f"{'fail' if any(c.verdict == 'fail' for c in own) else 'pass'}. {found.seconds:.1f} s."),
+            ("table", ["H/R", "solver", "compression", "Phat", "F / (E T R)", "contact radius rho_c / R",
+                       "equator rho / R"], rows)]
+
+
+def blocks(curves, sequence, checks, caption: str, unpressurised=None) -> list:
     """The section's blocks: what it solves and checks, one row per capsule, the figure (its ``caption``), the
-    convergence study (``sequence``, or None)."""
+    uninflated capsule (``unpressurised``, or None), the convergence study (``sequence``, or None)."""
     header, rows = _case_rows(curves, checks)
     fem = any(c.fem for c in curves)
     out = [("h", 2, "A capsule between two plates"),
@@ -138,6 +174,8 @@ def blocks(curves, sequence, checks, caption: str) -> list:
                    f"section 'Tolerances'; every capsule state is in {CSV}."),
            ("table", header, rows),
            ("image", f"{NAME}.png", f"{caption} Data: {NAME}.csv.")]
+    if unpressurised is not None:
+        out += _uninflated_blocks(unpressurised, checks)
     if sequence is not None:
         out += _convergence_blocks(sequence)
     return out

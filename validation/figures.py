@@ -112,7 +112,7 @@ def figures(results) -> list[Figure]:
     if results.solid_studies:
         out.append(solid_study_figure(results.solid_studies))
     if results.capsules:
-        out.append(capsule_figure(results.capsules))
+        out.append(capsule_figure(results.capsules, results.uninflated))
     if results.sequences:
         out.append(convergence_figure(results))
     return [without_zeros(f) for f in out]

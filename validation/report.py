@@ -85,7 +85,7 @@ def _write_tables(results, directory: pathlib.Path) -> list[str]:
         names.append("solid_convergence.csv: the solid on each mesh of its convergence study, the observed orders and "
                      "the default mesh's error")
     if results.capsules:
-        _write_rows(directory / capsulereport.CSV, *capsulereport.state_rows(results.capsules))
+        _write_rows(directory / capsulereport.CSV, *capsulereport.state_rows(results.capsules, results.uninflated))
         names.append(f"{capsulereport.CSV}: every capsule state of every solver (the dimensionless keys, the "
                      "compression 1 - H / lambda_I)")
     if results.curves:

@@ -42,6 +42,7 @@ from . import (
     identification,
     solidstudy,
     thickness,
+    uninflated,
     verdicts,
 )
 from .plan import Plan
@@ -75,6 +76,7 @@ class Results:
     thicknesses: tuple  # thickness.Comparison, by sample then pressure
     capsules: tuple  # capsules.Curve, in the order of capsules.CASES
     capsule_sequence: convergence.Sequence | None  # the FE model's mesh convergence on a capsule
+    uninflated: uninflated.Uninflated | None  # the uninflated capsule by both solvers
     solid_studies: tuple  # solidstudy.Study, by sample then axis
     checks: tuple  # verdicts.Check
     findings: tuple  # findings.Finding
@@ -128,6 +130,9 @@ def _task(kind, key, pockets, args) -> Task:
         return Task(kind, args[0].name, f"capsule: shooting at {len(args[1])} forces{fe}", 0.0)
     if kind == "capsule convergence":
         return Task(kind, capsules.STUDY.name, f"capsule: FE P2 on {len(args[0])} meshes", 0.0)
+    if kind == "capsule uninflated":
+        return Task(kind, uninflated.NAME, f"uninflated capsule: shooting at {len(uninflated.HEIGHTS)} heights, FE P2 "
+                    f"at {len(uninflated.FEM_HEIGHTS)}", 0.0)
     return Task(kind, "", "the paper's statements", 0.0)
 
 
@@ -144,7 +149,7 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
     pending: dict = {}  # future -> (kind, key, index into tasks)
     tasks: list = []
     done: dict = {"reference": {}, "column": {}, "convergence": {}, "evidence": {}, "fit": {}, "solid": {},
-                  "solid study": {}, "capsule": {}, "capsule convergence": {}}
+                  "solid study": {}, "capsule": {}, "capsule convergence": {}, "capsule uninflated": {}}
 
     def submit(kind, key, function, *args):
         pending[pool.submit(_timed, function, *args)] = (kind, key, len(tasks))
@@ -174,6 +179,8 @@ def run(pockets, button, plan: Plan, *, executor=None, progress=True, convergenc
                     submit("capsule", k, capsules.solve, capsule, plan.capsules, plan.capsule_fem)
                 if plan.capsule_sizes:
                     submit("capsule convergence", None, capsules.sequence, plan.capsule_sizes)
+                if plan.capsule_fem:
+                    submit("capsule uninflated", None, uninflated.solve)
         later = convergence_tasks(main, plan)
         while pending or later:
             if later and not any(kind == "reference" for kind, _, _ in pending.values()):
@@ -228,6 +235,9 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
     capsule_sequence = done["capsule convergence"].get(None)
     if capsule_sequence is not None:
         rows += capsulechecks.order_checks(capsule_sequence)
+    unpressurised = done["capsule uninflated"].get(None)
+    if unpressurised is not None:
+        rows += uninflated.checks(unpressurised)
     found: tuple = ()
     proof = done["evidence"].get(None)
     if proof is not None:
@@ -235,5 +245,5 @@ def _results(plan, pockets, button, done, tasks, seconds) -> Results:
         found = tuple(findings.findings(button, proof, evidence.eq9_residuals(head.reference[0].inflated), head))
     return Results(plan=plan, pockets=pockets, button=button, curves=curves, columns=columns, sequences=sequences,
                    evidence=proof, fits=fits, thicknesses=thicknesses, capsules=capsule_curves,
-                   capsule_sequence=capsule_sequence, solid_studies=solid_studies, checks=tuple(rows), findings=found,
-                   tasks=tasks, seconds=seconds)
+                   capsule_sequence=capsule_sequence, uninflated=unpressurised, solid_studies=solid_studies,
+                   checks=tuple(rows), findings=found, tasks=tasks, seconds=seconds)

@@ -311,7 +311,8 @@ def blocks(results, figs, picture: bool, why: str, tables, vtk, title: str, wall
         out += _solid_study_blocks(results, figs)
     if results.capsules:
         caption = next(f.caption for f in figs if f.name == capsulereport.NAME)
-        out += capsulereport.blocks(results.capsules, results.capsule_sequence, results.checks, caption)
+        out += capsulereport.blocks(results.capsules, results.capsule_sequence, results.checks, caption,
+                                    results.uninflated)
     if results.sequences:
         out += _convergence_blocks(results)
         out.append(("image", "convergence.png", "Error against element size (log-log), observed orders in the "

@@ -10,6 +10,7 @@ tolerances and their reasons:
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import numpy as np
 
@@ -220,16 +221,19 @@ def reference_checks(curves) -> list[Check]:
     return [dataclasses.replace(worst, where=f"worst of {len(curves.forces)} forces")]
 
 
-def membrane_checks(name: str, label: str, states) -> list[Check]:
-    """One verdict over a curve's ``states`` (and the inflated state they start from): fail if any has a
-    tension <= 0 (``wrinkled``); the value is the smallest tension of all, in units of E T."""
-    states = [states[0].inflated, *states]
+def membrane_checks(name: str, label: str, states, inflated: bool = True) -> list[Check]:
+    """One verdict over a curve's ``states`` (and the inflated state they start from, if ``inflated``: not an
+    uninflated capsule's unstressed sphere, tension-free by definition): fail if any has a tension <= 0
+    (``wrinkled``); the value is the smallest tension of all, in units of E T."""
+    states = [states[0].inflated, *states] if inflated else list(states)
     worst = min(states, key=lambda s: min(s.tension_1_min, s.tension_2_min))
     low = min(worst.tension_1_min, worst.tension_2_min)
     which = "T_1" if worst.tension_1_min <= worst.tension_2_min else "T_2"
     wrinkled = sum(s.wrinkled for s in states)
     count = f"{wrinkled} of {len(states)} states wrinkled" if wrinkled else f"{len(states)} states"
-    where = f"{label}, {count}; smallest: {which} at Fhat = {getattr(worst, 'force', 0.0):.4g}"
+    force = getattr(worst, "force", 0.0)
+    at = f"Fhat = {force:.4g}" if math.isfinite(force) else f"H/R = {worst.height:.4g}"
+    where = f"{label}, {count}; smallest: {which} at {at}"
     return [Check(name, MEMBRANE, "membrane", f"smallest tension ({label})", where, float(low), 0.0,
                   max(0.0, -float(low)), TOLERANCES["membrane"][0], "fail" if wrinkled else "pass")]
 
