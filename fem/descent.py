@@ -24,8 +24,11 @@ beyond it tried (``pocket.core.errors.capsule_gap``).
 
 The neo-Hookean liquid's branch has no end from Phat_I ~ 0.02 up, hence ``ANCHOR`` = 0.1, five times that; and at
 ``DEEP`` = 0.5 (a compression of 50 % of R) the uninflated neo-Hookean capsule's edge tension is 0.046 E T, about
-twenty times its value where the branch starts. A rubber or gas for which either fails says where (the anchor's
-range end, or the continuation's last initial pressure).
+twenty times its value where the branch starts. A soft gas (a low ambient pressure: the squeeze raises its pressure
+less) may start its deep branch below ``DEEP``: where the edge's tension vanishes on the way down in P_I, the
+height is halved, down to ``DEEPEST`` (at P_I = 0, neo-Hookean, Phat_atm = 0.5, isothermal, the branch starts at
+H = 0.416). A rubber or gas for which it still fails says where (the anchor's range end, or the continuation's last
+initial pressure).
 """
 
 from __future__ import annotations
@@ -45,10 +48,11 @@ from .model import FITTED, Control, Model
 from .newton import Tolerances
 from .steps import solve
 
-__all__ = ["ANCHOR", "DEEP", "filled", "to_force", "to_height"]
+__all__ = ["ANCHOR", "DEEP", "DEEPEST", "filled", "to_force", "to_height"]
 
 ANCHOR = 0.1  # Phat_I of the capsule the descent starts from (module docstring)
 DEEP = 0.5  # H/R: the plate height the fluid is lowered at (module docstring)
+DEEPEST = 0.125  # ... and the lowest it is halved to, where the deep branch starts below it (``_deep``)
 
 
 def filled(model: Model, pressure_initial: float, fluid: Fluid, indenter: Indenter,
@@ -60,8 +64,8 @@ def filled(model: Model, pressure_initial: float, fluid: Fluid, indenter: Indent
     return y_i, state, Control(volume=0.5 * state.volume, gas=sealed(fluid, pressure_initial), indenter=indenter)
 
 
-def _deep(model: Model, pressure_initial: float, fluid: Fluid, indenter: Indenter, height: float,
-          tol: Tolerances) -> tuple[np.ndarray, int]:
+def _lowered(model: Model, pressure_initial: float, fluid: Fluid, indenter: Indenter, height: float,
+             tol: Tolerances) -> tuple[np.ndarray, int]:
     """Steps 1 and 2 (module docstring): the FITTED state at the target Phat_I with the plate at ``height``."""
     y_a, _, fill = filled(model, ANCHOR, fluid, indenter, tol)
     y, total = fitted.first_contact(model, y_a, fill, fitted.A_FIRST / 4, tol)
@@ -76,6 +80,20 @@ def _deep(model: Model, pressure_initial: float, fluid: Fluid, indenter: Indente
     return y, total
 
 
+def _deep(model: Model, pressure_initial: float, fluid: Fluid, indenter: Indenter, height: float,
+          tol: Tolerances) -> tuple[np.ndarray, int, float]:
+    """``_lowered`` at ``height``, or, where the edge's tension vanishes on the way (a soft gas, whose pressure the
+    squeeze raises less, starts its deep branch below ``DEEP``), at half the height, down to ``DEEPEST``; (y,
+    iterations, the height it reached the target at)."""
+    while True:
+        try:
+            return (*_lowered(model, pressure_initial, fluid, indenter, height, tol), height)
+        except OutOfRangeError:
+            if height <= DEEPEST:
+                raise
+            height = max(DEEPEST, 0.5 * height)
+
+
 def to_height(model: Model, pressure_initial: float, fill: Control, height: float, tol: Tolerances,
               asked: str, end: str | None = None) -> tuple[np.ndarray, int]:
     """The FITTED state at the plate height ``height`` reached deep (module docstring); (y, iterations).
@@ -84,8 +102,8 @@ def to_height(model: Model, pressure_initial: float, fill: Control, height: floa
     quotes the end of the branch from the touch (None at P_I = 0): a height above the deep branch's start is the
     ``OutOfRangeError`` of ``capsule_gap``."""
     fluid = Fluid() if fill.gas is None else fill.gas.fluid
-    y, total = _deep(model, pressure_initial, fluid, fill.indenter, min(height, DEEP), tol)
-    if height > DEEP:
+    y, total, deep = _deep(model, pressure_initial, fluid, fill.indenter, min(height, DEEP), tol)
+    if height > deep:
         y, iterations = _raised(lambda: fitted.height_path(model, y, fill, height, tol), asked, end)
         total += iterations
     return y, total
@@ -96,7 +114,7 @@ def to_force(model: Model, pressure_initial: float, fill: Control, force: float,
     """The FITTED state at the plate force ``force`` (units E T R) reached deep; as ``to_height`` (``unit``: the
     force in messages is F / unit)."""
     fluid = Fluid() if fill.gas is None else fill.gas.fluid
-    y, total = _deep(model, pressure_initial, fluid, fill.indenter, DEEP, tol)
+    y, total, _ = _deep(model, pressure_initial, fluid, fill.indenter, DEEP, tol)
     y, iterations = _raised(lambda: fitted.force_path(model, y, fill, force, tol, unit), asked, end)
     return y, total + iterations
 

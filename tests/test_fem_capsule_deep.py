@@ -22,6 +22,7 @@ from pocket.fem import descent
 from pocket import fem
 from pocket.cli import main
 from pocket.core.errors import CAPSULE_EDGE, UNINFLATED_CAPSULE, InputError, OutOfRangeError, exit_status
+from pocket.core.fluids import gas
 from pocket.core.states import UNINFLATED_UNDEFINED
 
 RUBBER = 0.0  # neo-Hookean (Mooney-Rivlin alpha = 0)
@@ -155,3 +156,19 @@ def test_the_command_line_presses_an_uninflated_capsule_by_its_height(capsys):
     assert out == ""
     assert err.count("\n") == 1
     assert UNINFLATED_CAPSULE in err
+
+
+def test_a_soft_gas_starts_its_range_below_the_descents_height():
+    """A gas with a low ambient pressure (Phat_atm = 0.5, isothermal) is squeezed to a pressure too low to hold the
+    edge at ``descent.DEEP``: the descent lowers the fluid at half that height, and a height above the range's
+    start is refused quoting it (below ``DEEP``); below the start the state solves, holding the gas law
+    (P + P_atm) V = P_atm V_0 with V_0 the unstressed sphere's."""
+    air = gas(0.5, 1.0)
+    with pytest.raises(OutOfRangeError) as refused:
+        fem.compress_height(RUBBER, 0.0, 0.6, geometry="capsule", fluid=air, elements=ELEMENTS)
+    found = re.search(r"start deeper, at plate height h/R = (\S+) to ", str(refused.value))
+    assert found, str(refused.value)
+    start = float(found.group(1))
+    assert descent.DEEPEST < start < descent.DEEP
+    state = fem.compress_height(RUBBER, 0.0, start - 0.01, geometry="capsule", fluid=air, elements=ELEMENTS)
+    assert abs((state.pressure + air.ambient) * state.volume / (air.ambient * state.inflated.volume) - 1.0) < 1e-9
