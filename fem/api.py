@@ -44,7 +44,16 @@ from pocket.core.errors import CAPSULE_EDGE, UNINFLATED_CAPSULE, InputError, Out
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Geometry
 from pocket.core.indenters import Indenter, Plate, Profile, Sphere, posed
-from pocket.core.inputs import check_forces, check_non_negative, check_positive, check_volume, quote
+from pocket.core.inputs import (
+    FORCE_UNITS,
+    check_choice,
+    check_forces,
+    check_non_negative,
+    check_positive,
+    check_volume,
+    forces_in_fhat,
+    quote,
+)
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike, Numbers, Progress
 from pocket.core.states import CompressedState, InflatedState
 
@@ -355,7 +364,7 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
                       indenter: Indenter | None = None, geometry: GeometryLike = None,
                       progress: Progress | None = None, mesh: Mesh = None, elements: int | None = None, order: int = 2,
                       contact: str = FITTED, penalty: float | None = None, augmented: bool | None = None,
-                      tol: float = 1e-10) -> list[CompressedState]:
+                      tol: float = 1e-10, force_unit: str = "Fhat") -> list[CompressedState]:
     """Compress the inflated pocket at each force Fhat = F / (P_I pi R^2), each state seeded by those before it.
 
     Parameters
@@ -382,6 +391,10 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
         The contact penalty of ``contact="penalty"``, units E T / R^2 (default 1e5).
     augmented : bool, optional
         Augmented-Lagrangian updates of ``contact="penalty"`` (default true).
+    force_unit : {"Fhat", "ETR"}, optional
+        The unit of ``forces``: Fhat (default) or F / (E T R), the force on each plate of a capsule in units of its
+        wall's E T and its radius R: the only unit of an uninflated capsule's (P_I = 0, ``geometry="capsule"``),
+        whose states lie deep (``pocket.fem.descent``), each reported with ``extra["force_ETR"]`` the force asked.
 
     Returns
     -------
@@ -409,11 +422,21 @@ def compression_curve(material: MaterialLike, pressure_initial: float, forces: N
 
     >>> print(all(abs(s.force * s.pressure_initial - s.pressure * s.contact_area) < 1e-9 for s in states))
     True
+
+    An uninflated capsule (P_I = 0) of liquid pressed by F = 0.5 E T R on each plate, about half-way closed:
+
+    >>> (squeezed,) = fem.compression_curve(0.0, 0.0, [0.5], geometry="capsule", force_unit="ETR", elements=32)
+    >>> print(round(squeezed.extra["force_ETR"], 10), round(squeezed.height, 4))
+    0.5 0.5583
     """
-    forces = check_forces(forces)
+    unit = check_choice("force_unit", force_unit, FORCE_UNITS)
     geometry, _ = geometries.posed(GEOMETRIES, "fem", geometry)
     model, contact, augmented, tolerances, y_i, inflated, fill, curved = _setup(
-        material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol)
+        material, pressure_initial, fluid, indenter, geometry, mesh, elements, order, contact, penalty, augmented, tol,
+        uninflated=unit == "ETR")
+    if inflated.pressure == 0.0:
+        return _uninflated_curve(model, inflated, fill, check_forces(forces), tolerances, progress)
+    forces = forces_in_fhat(forces, unit, inflated.pressure)
     if curved and contact == FITTED:
         return wrapping.curve(model, y_i, inflated, fill, forces, tolerances, progress)
     if contact == FITTED and geometry is geometries.CAPSULE:
@@ -442,6 +465,20 @@ def _capsule_curve(model: Model, y_i: np.ndarray, inflated: InflatedState, fill:
     return [solved[f] for f in forces]
 
 
+def _uninflated_curve(model: Model, inflated: InflatedState, fill: Control, forces: list[float], tol: Tolerances,
+                      progress: Progress | None) -> list[CompressedState]:
+    """The uninflated capsule's states at the forces F / (E T R), each reached deep on its own
+    (``descent.to_force``)."""
+    states: dict[float, CompressedState] = {}
+    for done, force in enumerate(forces, start=1):
+        if force not in states:
+            y, iterations = descent.to_force(model, 0.0, fill, force, tol, f"force_ETR = {force!r}")
+            states[force] = capsulestates.fitted_state(model, y, iterations, inflated, fill, force, tol)
+        if progress is not None:
+            progress(done, len(forces))
+    return [states[f] for f in forces]
+
+
 def compress(material: MaterialLike, pressure_initial: float, force: float, *, fluid: FluidLike = None,
              indenter: Indenter | None = None, geometry: GeometryLike = None, **options: Any) -> CompressedState:
     """Compress the pocket inflated at Phat_I = ``pressure_initial`` by the force Fhat = F / (P_I pi R^2).
@@ -455,12 +492,12 @@ def compress(material: MaterialLike, pressure_initial: float, force: float, *, f
     pressure_initial : float
         Phat_I = P_I R / (E T) > 0.
     force : float
-        Fhat = F / (P_I pi R^2) >= 0.
+        Fhat = F / (P_I pi R^2) >= 0 (or F / (E T R): ``force_unit``).
     fluid, indenter, geometry
         As for ``compression_curve``.
     **options
         The options of ``compression_curve``: ``mesh``, ``elements``, ``order``, ``contact``, ``penalty``,
-        ``augmented``, ``tol``.
+        ``augmented``, ``tol``, ``force_unit``.
 
     Returns
     -------

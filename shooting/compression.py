@@ -40,7 +40,7 @@ from pocket.core.errors import CAPSULE_EDGE, UNINFLATED_CAPSULE, InputError, Out
 from pocket.core.fluids import as_fluid
 from pocket.core.geometries import Symmetry, posed
 from pocket.core.indenters import as_indenter
-from pocket.core.inputs import check_force, check_positive
+from pocket.core.inputs import FORCE_UNITS, check_choice, check_forces, check_positive, forces_in_fhat
 from pocket.core.states import CompressedState
 
 from .capsule import CapsuleProblem
@@ -68,6 +68,17 @@ def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
     return problem.untouched(state) if isinstance(problem, CapsuleProblem) else state
 
 
+def _uninflated(material, forces: list[float], fluid, rtol: float, progress) -> list[CompressedState]:
+    """The uninflated capsule's states at the forces F / (E T R) (``compression_curve``), each its own root."""
+    states: dict[float, CompressedState] = {}
+    for done, force in enumerate(forces, start=1):
+        if force not in states:
+            states[force] = capsule_at_force(material, 0.0, force, fluid=fluid, rtol=rtol)
+        if progress is not None:
+            progress(done, len(forces))
+    return [states[f] for f in forces]
+
+
 def _pressed(problem: Contact, branch: Branch, force: float, fluid, rtol: float) -> tuple[CompressedState, Branch]:
     """The state at ``force`` continued along ``branch``, and the branch extended to it; an OutOfRangeError past
     the range's end (``beyond``)."""
@@ -84,7 +95,7 @@ def _pressed(problem: Contact, branch: Branch, force: float, fluid, rtol: float)
 
 
 def compression_curve(material, pressure_initial, forces, *, fluid=None, indenter=None, geometry=None, rtol=1e-10,
-                      progress=None) -> list[CompressedState]:
+                      progress=None, force_unit="Fhat") -> list[CompressedState]:
     """Compress the inflated pocket at each force Fhat = F / (P_I pi R^2) of ``forces``, by continuation.
 
     The pocket is inflated at Phat_I (``inflate``), its fluid sealed, then pressed by the indenter; the
@@ -110,6 +121,11 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
         Relative tolerance of the ODE integration, at most 1e-4.
     progress : callable, optional
         ``progress(done, total)``, called after each force (``total`` = len(forces)).
+    force_unit : {"Fhat", "ETR"}, optional
+        The unit of ``forces``: Fhat (default) or F / (E T R), the force on each plate of a capsule in units of
+        its wall's E T and its radius R: the only unit of an uninflated capsule's (P_I = 0, ``geometry="capsule"``),
+        whose states lie deep (``pocket.shooting.descent.capsule_at_force``), the force found to a relative 1e-12
+        and reported as ``extra["force_ETR"]``.
 
     Returns
     -------
@@ -139,14 +155,16 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     """
     geometry, _ = posed(GEOMETRIES, "shooting", geometry)
     law = law_of(material)
+    unit = check_choice("force_unit", force_unit, FORCE_UNITS)
     if isinstance(geometry.end, Symmetry) and pressure_initial == 0:
-        raise InputError(f"pressure = 0: {UNINFLATED_CAPSULE}")
+        if unit == "Fhat":
+            raise InputError(f"pressure = 0: {UNINFLATED_CAPSULE}")
+        problem_of(geometry, as_indenter(indenter))  # an InputError for an indenter other than the plates
+        return _uninflated(material, check_forces(forces), as_fluid(fluid), rtol, progress)
     pressure_initial = check_positive("pressure", pressure_initial)
     fluid = as_fluid(fluid)
     indenter = as_indenter(indenter)
-    forces = [check_force(f) for f in np.atleast_1d(np.asarray(forces, dtype=object))]
-    if not forces:
-        raise InputError("no force given")
+    forces = forces_in_fhat(list(np.atleast_1d(np.asarray(forces, dtype=object))), unit, pressure_initial)
     problem = problem_of(geometry, indenter)(inflate(material, pressure_initial, geometry=geometry, rtol=rtol), rtol,
                                            law, fluid, indenter)
     if isinstance(problem, CapsuleProblem):
@@ -175,7 +193,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
 
 
 def compress(material, pressure_initial, force, *, fluid=None, indenter=None, geometry=None,
-             rtol=1e-10) -> CompressedState:
+             rtol=1e-10, force_unit="Fhat") -> CompressedState:
     """Compress the pocket inflated at Phat_I = ``pressure_initial`` by the force Fhat = F / (P_I pi R^2).
 
     One state of ``compression_curve``.
@@ -187,8 +205,8 @@ def compress(material, pressure_initial, force, *, fluid=None, indenter=None, ge
     pressure_initial : float
         Phat_I = P_I R / (E T) > 0.
     force : float
-        Fhat = F / (P_I pi R^2) >= 0.
-    fluid, indenter, geometry, rtol
+        Fhat = F / (P_I pi R^2) >= 0 (or F / (E T R): ``force_unit``).
+    fluid, indenter, geometry, rtol, force_unit
         As for ``compression_curve``.
 
     Returns
@@ -228,6 +246,12 @@ def compress(material, pressure_initial, force, *, fluid=None, indenter=None, ge
     >>> pressed = shooting.compress(47 / 160, 0.31, 0.19, indenter=Sphere(0.5), fluid=gas(10.0, 1.4))
     >>> print(pressed.pressure > state.inflated.pressure, pressed.volume < state.volume)
     True True
+
+    An uninflated capsule (P_I = 0) of liquid pressed by F = 0.5 E T R on each plate, about half-way closed:
+
+    >>> squeezed = shooting.compress(0.0, 0.0, 0.5, geometry="capsule", force_unit="ETR")
+    >>> print(round(squeezed.extra["force_ETR"], 10), round(squeezed.height, 4))
+    0.5 0.5583
     """
     return compression_curve(material, pressure_initial, [force], fluid=fluid, indenter=indenter, geometry=geometry,
-                             rtol=rtol)[0]
+                             rtol=rtol, force_unit=force_unit)[0]

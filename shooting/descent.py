@@ -226,16 +226,18 @@ def _lower_end(problem, x, height, anchor) -> OutOfRangeError | ConvergenceError
                             f"{problem.height:.10g}, the contact edge's tension {tension:.3g} E T", load=problem.height)
 
 
-def capsule_at_force(material: MaterialLike, pressure_initial: float, force: float, end: str, *,
+def capsule_at_force(material: MaterialLike, pressure_initial: float, force: float, end: str | None = None, *,
                      fluid: FluidLike = None, rtol: float = 1e-10) -> CompressedState:
-    """The capsule's state at Fhat = ``force`` on its second branch, past the ``end`` of its first (as the refusal
-    of the first branch words it, ``"force = ..."``), Phat_I = ``pressure_initial`` > 0.
+    """The capsule's state at the force ``force`` on its second branch: Fhat where Phat_I = ``pressure_initial``
+    > 0, past the ``end`` of its first branch (as that branch's refusal words it, ``"force = ..."``); at P_I = 0,
+    where Fhat is undefined and the second branch is the only one, F / (E T R) (``end`` None).
 
     On the second branch the force falls as the plates rise, to its least at the branch's start H*: a force below
     that lies between the branches (an OutOfRangeError quoting both ends, ``capsule_gap``); above it, its height is
     the root of F(H) - force by Brent's method (``pocket.shooting.brent``) between H* and a height halved from it
     until the force there exceeds the one asked, each F(H) a state of ``capsule_at_height``. The state returned is
-    the one solved at the root: its ``force`` the found Fhat, within the root's relative 1e-12 of ``force``.
+    the one solved at the root: its force (``force``, or ``extra["force_ETR"]`` at P_I = 0) the one found, within
+    the root's relative 1e-12 of ``force``.
 
     Examples
     --------
@@ -244,7 +246,14 @@ def capsule_at_force(material: MaterialLike, pressure_initial: float, force: flo
     >>> state = capsule_at_force(0.0, 0.01, 3.0, "force = 0.1495")
     >>> print(f"{state.force:.10f}", f"{state.height:.4f}")
     3.0000000000 0.7665
+
+    The uninflated capsule pressed by F = 0.5 E T R:
+
+    >>> state = capsule_at_force(0.0, 0.0, 0.5)
+    >>> print(f"{state.extra['force_ETR']:.10f}", f"{state.height:.4f}")
+    0.5000000000 0.5583
     """
+    name = "force" if pressure_initial > 0.0 else "force_ETR"
     top = inflate(material, pressure_initial, geometry=CAPSULE, rtol=rtol).height
     try:
         capsule_at_height(material, pressure_initial, top, fluid=fluid, rtol=rtol)
@@ -257,15 +266,16 @@ def capsule_at_force(material: MaterialLike, pressure_initial: float, force: flo
                                "branch reached deep, which should start below it", load=force)
 
     def excess(height):
-        return capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol).force - force
+        state = capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol)
+        return (state.force if pressure_initial > 0.0 else state.extra["force_ETR"]) - force
 
     least = excess(start)
     if least > 0.0:
-        raise capsule_gap(f"force = {force!r}", f"force = {least + force:.10g} (height = {start:.10g})", end)
+        raise capsule_gap(f"{name} = {force!r}", f"{name} = {least + force:.10g} (height = {start:.10g})", end)
     low = 0.5 * start
     while (above := excess(low)) < 0.0:
         if low < _DEEPEST * 0.5:
-            raise ConvergenceError(f"capsule at Phat_I = {pressure_initial!r}: no state up to force = {force!r} down "
+            raise ConvergenceError(f"capsule at Phat_I = {pressure_initial!r}: no state up to {name} = {force!r} down "
                                    f"to the plate height {low:.3g}", load=force)
         low *= 0.5
     height = brent.root(excess, low, start, fa=above, fb=least, rtol=_FORCE_RTOL)

@@ -67,3 +67,23 @@ def test_the_solvers_agree_on_where_the_uninflated_range_starts():
     print(f"H*: shooting {shot!r}; finite elements [{reached!r}, {beyond!r}] ({elements} elements), {coarse} "
           f"({elements // 2}); allowed {mesh + 2e-6:.2e} beyond the bracket")
     assert reached - mesh - 2e-6 <= shot <= beyond + mesh + 2e-6
+
+
+@pytest.mark.slow  # the shooting solver's Brent's method on its heights, seconds a force
+def test_the_solvers_agree_on_the_uninflated_capsule_under_force_control():
+    """F / (E T R) given (``force_unit="ETR"``): each solver finds its own plate height for the force (the
+    shooting solver by Brent's method on its heights, the finite elements by their continuation in the force),
+    and the two agree on every key within the finite elements' mesh shift; each reports the force asked."""
+    shot = shooting.compression_curve(RUBBER, 0.0, [0.5, 2.0], geometry="capsule", force_unit="ETR")
+    fine = fem.compression_curve(RUBBER, 0.0, [0.5, 2.0], geometry="capsule", force_unit="ETR")
+    elements = fine[0].extra["elements"]
+    coarse = fem.compression_curve(RUBBER, 0.0, [0.5, 2.0], geometry="capsule", force_unit="ETR",
+                                   elements=elements // 2)
+    for force, s, f, c in zip((0.5, 2.0), shot, fine, coarse, strict=True):
+        assert abs(s.extra["force_ETR"] / force - 1.0) < 1e-12
+        assert f.extra["force_ETR"] == force
+        a, b, rough = _values(s), _values(f), _values(c)
+        for key in a:
+            print(f"F/(ETR) = {force}, {key}: shooting {a[key]!r}, finite elements {b[key]!r}, mesh shift "
+                  f"{abs(b[key] - rough[key]):.2e}")
+            assert abs(a[key] - b[key]) <= abs(b[key] - rough[key]) + 1e-12 * max(1.0, abs(b[key])), key

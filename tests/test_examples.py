@@ -248,6 +248,26 @@ def test_capsule_fit_recovers_the_wall_and_its_curve_is_the_solvers(tmp_path):
     assert lam == pytest.approx(shooting.inflate(capsule.NEO, phat, geometry="capsule").stretch_pole, rel=1e-15)
 
 
+@pytest.mark.slow  # the slow lane: some forty capsule states
+def test_uninflated_capsule_curves_start_and_end_where_the_solvers_say(capsys):
+    """Exact answers: the uninflated curve starts at the start the shooting solver quoted (its first state solved
+    there, to the shots' tolerance); each finite-element marker at a height is the shooting solver's state there
+    (within 1e-6 in F / (E T R): the default mesh's error away from the start, ``tests/test_capsule_uninflated_
+    solvers.py``), the one under a force reports it; and the slightly inflated capsule's first branch lies wholly
+    above its deep branch, both refusals printed."""
+    capsule = example("plot_14_uninflated_capsule")
+    numbers = capsule.main()
+    assert numbers["uninflated"][0].height == pytest.approx(numbers["start"], abs=1e-9)
+    for marker in numbers["markers"][:3]:
+        shot = shooting.compress_height(capsule.NEO, 0.0, marker.height, geometry="capsule")
+        assert marker.extra["force_ETR"] == pytest.approx(shot.extra["force_ETR"], rel=1e-6)
+    assert numbers["markers"][3].extra["force_ETR"] == 1.0
+    assert min(s.height for s in numbers["first"]) > max(s.height for s in numbers["second"])
+    printed = capsys.readouterr().out
+    assert "outside the capsule's range" in printed
+    assert "lies between the capsule's two branches" in printed
+
+
 def test_membrane_against_solid_prints_both_models_and_the_error_falls_at_first_order():
     """Exact answers: the membrane's column is the shooting solver's states solved afresh (the pressure at each
     force, in kPa). Physics that could fail: at T/R = 0.08 the membrane's fluid volume is off by more than 1 %

@@ -172,3 +172,34 @@ def test_a_soft_gas_starts_its_range_below_the_descents_height():
     assert descent.DEEPEST < start < descent.DEEP
     state = fem.compress_height(RUBBER, 0.0, start - 0.01, geometry="capsule", fluid=air, elements=ELEMENTS)
     assert abs((state.pressure + air.ambient) * state.volume / (air.ambient * state.inflated.volume) - 1.0) < 1e-9
+
+
+def test_an_uninflated_capsule_under_a_force_in_units_of_etr():
+    """``force_unit="ETR"``: at P_I = 0 the state carries the force asked, F / (E T R), its plate's reaction
+    agreeing (Newton's tolerance, relative 1e-8), and the height it finds gives the force back by height control; a
+    force below the range's start is refused quoting the start; at P_I > 0 the same forces are Fhat = F / (E T R) /
+    (pi Phat_I)."""
+    state = fem.compress(RUBBER, 0.0, 0.5, geometry="capsule", force_unit="ETR", elements=ELEMENTS)
+    assert state.extra["force_ETR"] == 0.5
+    assert abs(state.extra["force_reaction"] / 0.5 - 1.0) < 1e-8
+    assert abs(_uninflated(state.height).extra["force_ETR"] / 0.5 - 1.0) < 1e-8
+    with pytest.raises(OutOfRangeError, match=r"^force_ETR = 0\.01 is outside the capsule's range, whose states "
+                                              r"start deeper, at plate force F/\(E T R\) = "):
+        fem.compress(RUBBER, 0.0, 0.01, geometry="capsule", force_unit="ETR", elements=ELEMENTS)
+    inflated = fem.compress(RUBBER, 0.2, 0.5, geometry="capsule", force_unit="ETR", elements=ELEMENTS)
+    assert inflated.force == 0.5 / (math.pi * 0.2)
+    assert abs(inflated.extra["force_ETR"] / 0.5 - 1.0) < 1e-15
+
+
+def test_the_command_line_presses_an_uninflated_capsule_by_a_force_in_etr(capsys):
+    """``--force-etr`` at ``--pressure 0``: a state per force, each reporting the force asked; with a solver that
+    does not press an uninflated capsule, one line and exit 2."""
+    args = ["compress", "--geometry", "capsule", "--law", "neo-hookean", "--mu", "1", "--pressure", "0"]
+    assert main([*args, "--solver", "fem", "--elements", str(ELEMENTS), "--force-etr", "0.5", "1", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [row["force_ETR"] for row in rows] == [0.5, 1.0]
+    assert main([*args, "--solver", "analytical", "--force-etr", "0.5"]) == 2
+    out, err = capsys.readouterr()
+    assert out == ""
+    assert err.count("\n") == 1
+    assert "--force-etr" in err

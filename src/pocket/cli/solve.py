@@ -17,7 +17,7 @@ from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, entry
 from pocket.core.errors import ConvergenceError, InputError
 from pocket.core.indenters import PLATE
-from pocket.core.inputs import check_positive, check_volume
+from pocket.core.inputs import check_positive, check_volume, forces_in_fhat
 
 from .common import (
     MODEL_UNITS,
@@ -61,6 +61,10 @@ def register(subparsers) -> None:
             load = p.add_mutually_exclusive_group(required=True)
             load.add_argument("--force", type=model_value(name, "Fhat = F / (P_I pi R^2)"), nargs="+", metavar="FHAT",
                               help="force, Fhat = F / (P_I pi R^2); several give a curve (by continuation)")
+            load.add_argument("--force-etr", type=model_value(name, "F/(E T R)"), nargs="+", metavar="F/(ETR)",
+                              help="a capsule's force on each plate in units of its wall's E T and its radius R, F / "
+                                   "(E T R): the force of an uninflated capsule (--pressure 0), whose Fhat is "
+                                   f"undefined; several give a curve (solvers {_serving('compression_curve')})")
             load.add_argument("--height", type=model_value(name, "H/R"), nargs="+", metavar="H/R",
                               help="travel control: the indenter's lowest point at a height in H/R above the clamp "
                                    "plane, at most the inflated height H0/R (a capsule's: each plate's distance from "
@@ -125,9 +129,25 @@ def _solve(args, step: str, material, options: dict) -> list:
     if args.height is not None:
         return _at_heights(args, material, options)
     curve = entry(args.solver, "compression_curve", "--force")
+    forces = args.force or args.force_etr
+    if args.force_etr is not None:
+        options = {**options, **_in_etr(args)}
+        forces = forces if "force_unit" in options else forces_in_fhat(forces, "ETR", args.pressure)
     with progress_bar(f"compress ({args.solver})", " forces") as progress:
-        extra = {} if progress is None or len(args.force) == 1 else {"progress": progress}
-        return curve(material, args.pressure, args.force, **options, **extra)
+        extra = {} if progress is None or len(forces) == 1 else {"progress": progress}
+        return curve(material, args.pressure, forces, **options, **extra)
+
+
+def _in_etr(args) -> dict:
+    """The options of forces given by ``--force-etr``: none where P_I > 0 (they are passed as Fhat), else the
+    unit, for the solvers that press an uninflated capsule (an InputError for the others)."""
+    if args.pressure != 0.0:
+        check_positive("--pressure", args.pressure)
+        return {}
+    if args.solver not in ("shooting", "fem"):
+        raise InputError(f"--force-etr at --pressure 0 (an uninflated capsule): solver {args.solver} does not "
+                         "press one; the solvers shooting and fem do")
+    return {"force_unit": "ETR"}
 
 
 def _at_heights(args, material, options: dict) -> list:
@@ -166,8 +186,8 @@ def _main(args) -> int:
         from pocket.apps.vtk.files import KIND
 
         check_replaceable(args.vtk, KIND, "--vtk", overwrite=args.overwrite)
-        given = getattr(args, "height", None)
-        loads, name = (given, "height") if given else (getattr(args, "force", ()), "force")
+        loads, name = next(((given, name.replace("_", "-")) for name in ("height", "force_etr", "force")
+                            if (given := getattr(args, name, None))), ((), "force"))
         repeated = sorted({f for f in loads if loads.count(f) > 1})
         if repeated:
             raise InputError(f"--{name} gives {', '.join(map(repr, repeated))} more than once, but the time of a "
@@ -183,7 +203,8 @@ def _main(args) -> int:
         write_series(args.vtk, steps, times=[_time(s) for s in steps], overwrite=args.overwrite)
     warn(states)
     if args.json:
-        print(json.dumps(rows if step == "compress" and len(args.force or args.height) > 1 else rows[0]))
+        several = step == "compress" and len(args.force or args.force_etr or args.height) > 1
+        print(json.dumps(rows if several else rows[0]))
     else:
         print(f"# solver: {rows[0]['solver']}")
         print(_table(rows))

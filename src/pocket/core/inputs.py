@@ -21,6 +21,7 @@ import numpy as np
 from .errors import STRETCH_LIMIT, InputError
 
 __all__ = [
+    "FORCE_UNITS",
     "MAGNITUDES",
     "MAX_FILE_BYTES",
     "VOLUME_LIMIT",
@@ -37,6 +38,7 @@ __all__ = [
     "check_range",
     "check_tolerance",
     "check_volume",
+    "forces_in_fhat",
     "quote",
 ]
 
@@ -159,6 +161,26 @@ def check_force(force) -> float:
         raise InputError(f"force = {quote(force)} is outside the magnitudes of the model's dimensionless inputs "
                          f"(at most {MAGNITUDES[1]:g})")
     return number
+
+
+#: the units a compression's forces are given in: Fhat = F / (P_I pi R^2), or F / (E T R) (a capsule's
+#: ``force_ETR``, the only one an uninflated capsule has: its Fhat is undefined)
+FORCE_UNITS = ("Fhat", "ETR")
+
+
+def forces_in_fhat(forces: Iterable[float] | np.ndarray | float, unit: str, pressure_initial: float) -> list[float]:
+    """Checked ``forces`` (``check_forces``) given in ``unit`` (one of ``FORCE_UNITS``) as Fhat = F / (P_I pi R^2),
+    for P_I = ``pressure_initial`` > 0.
+
+    Examples
+    --------
+    >>> [round(f, 12) for f in forces_in_fhat([0.0, 0.1 * math.pi], "ETR", 0.1)]
+    [0.0, 1.0]
+    """
+    checked = check_forces(forces)
+    if check_choice("force_unit", unit, FORCE_UNITS) == "Fhat":
+        return checked
+    return [f / (math.pi * pressure_initial) for f in checked]
 
 
 def check_forces(forces: Iterable[float] | np.ndarray | float) -> list[float]:

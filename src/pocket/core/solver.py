@@ -217,7 +217,8 @@ class CompressionCurve(Protocol):
         Fhat of each state, >= 0 (dimensionless); at least one.
     **options
         ``fluid``, ``indenter``, ``geometry`` (as for ``Compress``), ``progress`` (a ``Progress``, called after
-        each force) and the solver's options.
+        each force), the solver's options and, for the solvers that press an uninflated capsule (shooting, fem),
+        ``force_unit`` (``pocket.core.inputs.FORCE_UNITS``: "ETR" for forces F / (E T R)).
 
     Returns
     -------
