@@ -36,14 +36,16 @@ CLAMP_PLANE = "the free part of the sheet reaches the clamp plane"
 CAPSULE_EDGE = ("the meridional tension at the contact edge vanishes (the patch under the plate is slack up to its "
                 "edge): the free membrane would leave the plate with unbounded curvature, outside membrane theory")
 
-#: why an uninflated capsule (P_I = 0) is pressed by the plates' height only: its Fhat = F / (P_I pi R^2) is undefined.
+#: why an uninflated capsule (P_I = 0) is pressed by the plates' height or a force in units of E T R only: its
+#: Fhat = F / (P_I pi R^2) is undefined.
 #: Its states start deep: from the touch the patch under a plate is compressed (its meridional stretch falls towards
 #: the edge by a strain of order the compression, which only an inflation's tension keeps taut) and the contact edge's
 #: meridional tension vanishes at once; only at a compression of about 21 % (neo-Hookean, a liquid) does the free
 #: membrane's tension, growing like the compression squared, hold the edge again (``capsule_gap``)
 UNINFLATED_CAPSULE = ("an uninflated capsule (P_I = 0) has no Fhat = F / (P_I pi R^2): it is pressed by the plates' "
-                      "height (compress_height, pocket compress --height), its states starting at the compression "
-                      "where its contact edge's meridional tension first holds")
+                      "height (compress_height; pocket compress --height) or by a force F / (E T R) (force_unit = "
+                      "'ETR'; --force-etr), its states starting at the compression where its contact edge's "
+                      "meridional tension first holds")
 
 #: the largest pole stretch lambda_0 at which the membrane solvers (shooting, FE) seek an inflated state. A rubber
 #: whose pressure maximum has just vanished (Mooney-Rivlin alpha just above 0.05544) reaches Phat = 2 only at
