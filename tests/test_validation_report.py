@@ -463,12 +463,12 @@ def test_progress_bar_only_on_a_terminal():
 def test_timing_lists_every_task(report):
     """Exact answer: one timing row per solve task of the run (references, FE columns, convergence, evidence, the
     fits to FE bulge data, the samples solved as membrane and solid, each mesh of the solid's convergence study,
-    each capsule and the capsule's convergence)."""
+    each capsule, the capsule's convergence and the uninflated capsule)."""
     results = report[2]
     rows = _rows(report[1] / "timing.csv")
     assert len(rows) == len(results.tasks)
     assert {r["task"] for r in rows} == {"reference", "column", "convergence", "evidence", "fit", "solid",
-                                         "solid study", "capsule", "capsule convergence"}
+                                         "solid study", "capsule", "capsule convergence", "capsule uninflated"}
     meshes = {m for study in results.solid_studies for m in study.meshes}
     assert len([r for r in rows if r["task"] == "solid study"]) == len(results.plan.solid_study) * len(meshes)
     assert len([r for r in rows if r["task"] == "capsule"]) == len(results.capsules)
@@ -868,20 +868,25 @@ def test_solid_convergence_section(report, page):
 
 def test_capsule_section(report, page):
     """Exact answers: every capsule of the suite ran, each shooting and FE state has its row of
-    capsule_states.csv (force_ETR = pi Fhat Phat_I, the compression 1 - H / lambda_I of its own height), the FE
-    model was compared on each capsule it poses, and the section and its figure are on the page."""
-    from pocket.validation import capsulechecks, capsules
+    capsule_states.csv (force_ETR = pi Fhat Phat_I; at P_I = 0, where Fhat is undefined, pi Phat rho_c^2, F = P
+    A_c), the FE model was compared on each capsule it poses and on the uninflated one, and the section, its
+    uninflated capsule and its figure are on the page."""
+    from pocket.validation import capsulechecks, capsules, uninflated
 
     results = report[2]
     assert [c.capsule for c in results.capsules] == list(capsules.CASES)
     rows = _rows(report[1] / "capsule_states.csv")
-    assert len(rows) == sum(len(c.shooting) + len(c.fem) for c in results.capsules)
+    unpressurised = results.uninflated
+    assert len(rows) == sum(len(c.shooting) + len(c.fem) for c in results.capsules) + \
+        len(unpressurised.shooting) + len(unpressurised.fem)
     for r in rows:
-        assert float(r["force_ETR"]) == pytest.approx(np.pi * float(r["force"]) * float(r["pressure_initial"]),
-                                                      rel=1e-14)
+        expected = np.pi * (float(r["force"]) * float(r["pressure_initial"]) if r["case"] != uninflated.NAME else
+                            float(r["pressure"]) * float(r["contact_radius_deformed"]) ** 2)
+        assert float(r["force_ETR"]) == pytest.approx(expected, rel=1e-14)
     compared = {c.case for c in results.checks if c.comparison == capsulechecks.FEM}
-    assert compared == {c.name for c in capsules.CASES if c.fem}
+    assert compared == {c.name for c in capsules.CASES if c.fem} | {uninflated.NAME}
     assert "A capsule between two plates" in page.headings
+    assert "The uninflated capsule" in page.headings
     assert "capsules.png" in page.images
 
 

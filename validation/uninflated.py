@@ -86,7 +86,7 @@ def solve() -> Uninflated:
 
 
 def _balances(label: str, states) -> list[Check]:
-    comparison, out = f"{BALANCES} ({label}, P_I = 0)", []
+    comparison, out = f"{BALANCES} ({label})", []
     for s in states:
         where = f"H/R = {s.height:.4g}"
         area = math.pi * s.pressure * s.contact_radius_deformed**2
@@ -105,7 +105,7 @@ def checks(found: Uninflated) -> list[Check]:
     """Every check of the uninflated capsule (module docstring)."""
     out = _balances("shooting", found.shooting) + _balances("FEM P2", found.fem)
     sphere = 4.0 * math.pi / 3.0
-    out.append(row(NAME, f"{BALANCES} (shooting, P_I = 0)", "consistency", "V_I = 4 pi / 3 (the unstressed sphere)",
+    out.append(row(NAME, f"{BALANCES} (shooting)", "consistency", "V_I = 4 pi / 3 (the unstressed sphere)",
                    "P_I = 0", found.shooting[0].inflated.volume, sphere,
                    relative(found.shooting[0].inflated.volume, sphere), TOLERANCES["fluid"][0]))
     out += membrane_checks(NAME, "shooting", found.shooting, False) + membrane_checks(NAME, "FEM P2", found.fem, False)
