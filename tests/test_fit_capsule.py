@@ -123,8 +123,11 @@ BAD = {
     "a gap in nm for um": ("force [uN],gap [nm]\n0,101\n1,0.05\n", [], "the gap column falls to 5e-11 m"),
     "no initial pressure": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n", ["--initial-pressure"],
                             "--initial-pressure is missing"),
-    "an initial pressure of 0": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n", ["--initial-pressure", "0 Pa"],
-                                 "--initial-pressure = '0 Pa'"),
+    "a negative initial pressure": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n", ["--initial-pressure", "-1 Pa"],
+                                    "--initial-pressure = '-1 Pa'"),
+    "an initial pressure of 0 fitted": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n",
+                                        ["--initial-pressure", "0 Pa", "--fit-initial-pressure", None],
+                                        "an uninflated capsule's P_I is held"),
     "no radius": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n", ["--radius"], "--radius is missing"),
     "a prestretch fitted": ("force [uN],gap [um]\n0,100\n1,99\n2,98\n", ["--fit-prestretch", None],
                             "no prestretch to fit"),
@@ -284,11 +287,14 @@ def test_out_writes_the_figure(model, tmp_path, capsys):
 
 
 def test_fit_refuses_what_it_cannot_fit():
-    """Before any solve: P_I not > 0, and P_I held by ``fixed`` (it is the fit's own argument)."""
+    """Before any solve: P_I < 0, P_I = 0 fitted (an uninflated capsule's is held), and P_I held by ``fixed`` (it
+    is the fit's own argument)."""
     forces, gaps = squeeze()
     setup = Setup((Dataset("capsule", forces, {"gap": gaps}, None, "s"),), R, T)
-    with pytest.raises(InputError, match="needs P_I > 0"):
-        capsuletest.fit(setup, "neo-hookean", 0.0)
+    with pytest.raises(InputError, match="needs P_I >= 0"):
+        capsuletest.fit(setup, "neo-hookean", -1.0)
+    with pytest.raises(InputError, match="an uninflated capsule's P_I is held"):
+        capsuletest.fit(setup, "neo-hookean", 0.0, fit_pressure=True)
     with pytest.raises(InputError, match="--fix initial_pressure"):
         capsuletest.fit(setup, "neo-hookean", P_I, fixed={"initial_pressure": 1.0})
 

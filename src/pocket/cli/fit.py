@@ -61,8 +61,7 @@ def _request(args):
         raise InputError("--radius is missing: the fit needs the clamp radius (or a case file with a [fit] table)")
     law, terms = args.law or DEFAULT_LAW, 1 if args.terms is None else args.terms
     thickness = None if args.thickness is None else positive("--thickness", args.thickness, "length")
-    initial = None if args.initial_pressure is None else positive("--initial-pressure", args.initial_pressure,
-                                                                  "pressure")
+    initial = None if args.initial_pressure is None else _initial(args, capsule)
     fix, sigma = _pairs(args.fix, "--fix"), _pairs(args.sigma, "--sigma")
     if capsule and PRESTRETCH in fix:
         raise InputError(f"--fix {PRESTRETCH}: a capsule's reference sphere is unstressed, it has no prestretch")
@@ -73,8 +72,21 @@ def _request(args):
              "--initial-pressure": (args.initial_pressure, "pressure")}
     warnings = unit_warnings(law, terms, given, fix, "--fix", sigma, "--sigma", quantities)
     return Request(tuple(pathlib.Path(p) for p in args.data), law, radius, thickness, initial, terms, fixed, sigma_si,
-                   args.fit_prestretch, args.solver or "shooting", warnings, geometry=args.geometry,
+                   args.fit_prestretch, args.solver or ("fem" if initial == 0.0 else "shooting"), warnings,
+                   geometry=args.geometry,
                    fit_initial_pressure=args.fit_initial_pressure)
+
+
+def _initial(args, capsule: bool) -> float:
+    """``--initial-pressure`` in Pa: > 0, or 0 for a capsule (an uninflated one, its P_I held)."""
+    from pocket.core.units import positive, quantity
+
+    if capsule and quantity("--initial-pressure", args.initial_pressure, "pressure") == 0.0:
+        if args.fit_initial_pressure:
+            raise InputError("--fit-initial-pressure from --initial-pressure = 0: an uninflated capsule's P_I is held "
+                             "(its fit starts from a positive P_I)")
+        return 0.0
+    return positive("--initial-pressure", args.initial_pressure, "pressure")
 
 
 def _capsule_flags(args) -> None:
@@ -82,8 +94,8 @@ def _capsule_flags(args) -> None:
     if args.radius is None:
         raise InputError("--radius is missing: a capsule's fit needs the capsule's undeformed radius R")
     if args.initial_pressure is None:
-        raise InputError("--initial-pressure is missing: a capsule's fit needs its initial pressure P_I > 0 (held, "
-                         "or the start of --fit-initial-pressure)")
+        raise InputError("--initial-pressure is missing: a capsule's fit needs its initial pressure P_I (held, 0 for "
+                         "an uninflated capsule, or the start of --fit-initial-pressure)")
     if args.fit_prestretch:
         raise InputError("--fit-prestretch: a capsule's reference sphere is unstressed, it has no prestretch to fit")
 
@@ -198,7 +210,9 @@ def register(subparsers) -> None:
     p.add_argument("--sigma", action="append", metavar="COLUMN=VALUE",
                    help="a column's measurement uncertainty ('height=0.01 mm'): its residuals in units of it")
     p.add_argument("--solver", choices=("shooting", "fem"),
-                   help="the model's solver (each is listed below; default shooting)")
+                   help="the model's solver (each is listed below; default shooting, but fem for an uninflated "
+                        "capsule, --initial-pressure 0: the shooting solver finds each of its forces by a root over "
+                        "its plate heights, about sixty times slower)")
     p.add_argument("--json", action="store_true", help="print the result as one JSON object")
     p.add_argument("--out", metavar="DIR", help="also write DIR/fit.png (data, fitted curve, residuals) and "
                    "DIR/fitted.toml (the fitted sheet, for pocket run; not yet for a capsule)")

@@ -36,11 +36,12 @@ import numpy as np
 from pocket.core.errors import ConvergenceError, OutOfRangeError
 from pocket.core.materials import Material
 
+from ..solvers import entry, record
 from . import model
 from .keys import PRESTRETCH, Key, keys
 from .model import Setup, admissible, compressed, missing
 
-__all__ = ["INITIAL_PRESSURE", "Trial", "capsule_keys", "predict", "residuals"]
+__all__ = ["INITIAL_PRESSURE", "Trial", "capsule_keys", "predict", "residuals", "uninflated"]
 
 #: the key of the capsule's initial pressure (Pa)
 INITIAL_PRESSURE = "initial_pressure"
@@ -93,20 +94,24 @@ def predict(setup: Setup, trial: Trial | None) -> tuple[list[dict], int]:
     """The model's value at each datum of ``setup``'s capsule tests (per test, column name -> SI array of the test's
     shape, NaN where the model has no state) for ``trial`` (None: outside the admissible set), and the number of
     solver calls (module docstring)."""
-    if trial is None or not admissible(trial.material) or not trial.pressure_initial > 0.0:
+    if trial is None or not admissible(trial.material) or not trial.pressure_initial >= 0.0:
         return missing(setup), 0
     calls = [0]
     radius, pressure = setup.radius, trial.pressure_initial
     unit = trial.material.scaled()
-    phat = pressure * radius / setup.tension(trial.material)
+    tension = setup.tension(trial.material)
+    phat = pressure * radius / tension
     out = []
     for test in setup.tests:
         order = np.argsort(test.control)
-        forces = [float(f) for f in test.control[order] / (pressure * math.pi * radius**2)]
-        try:
-            states = compressed(setup, unit, phat, forces, calls, geometry="capsule")
-        except (OutOfRangeError, ConvergenceError):
-            states = [None] * len(forces)
+        if pressure == 0.0:  # an uninflated capsule: each force F / (E T R) on its own (``uninflated``)
+            states = uninflated(setup, unit, [float(f) for f in test.control[order] / (tension * radius)], calls)
+        else:
+            forces = [float(f) for f in test.control[order] / (pressure * math.pi * radius**2)]
+            try:
+                states = compressed(setup, unit, phat, forces, calls, geometry="capsule")
+            except (OutOfRangeError, ConvergenceError):
+                states = [None] * len(forces)
         values = {name: np.full(test.control.shape, math.nan) for name in test.responses}
         for i, state in zip(order, states, strict=True):
             if state is not None:
@@ -115,6 +120,21 @@ def predict(setup: Setup, trial: Trial | None) -> tuple[list[dict], int]:
                                                       state.inflated.height - state.height)
         out.append(values)
     return out, calls[0]
+
+
+def uninflated(setup: Setup, material: Material, forces: list[float], calls: list) -> list:
+    """The uninflated capsule's states (P_I = 0) at ``forces`` F / (E T R), each solved alone by the setup's solver
+    (``force_unit="ETR"``); None where it has none (a force short of its range's start, a failed solve)."""
+    curve = entry(record(setup.solver), "compression_curve", "an uninflated capsule's compression test")
+    states = []
+    for force in forces:
+        calls[0] += 1
+        try:
+            (state,) = curve(material, 0.0, [force], geometry="capsule", force_unit="ETR", **setup.options)
+        except (OutOfRangeError, ConvergenceError):
+            state = None
+        states.append(state)
+    return states
 
 
 def residuals(setup: Setup, values: list[dict]) -> np.ndarray:

@@ -17,7 +17,11 @@ cost is one valley in E T; a trial with a datum without state costs infinitely m
 after one with every state: a soft wall may have none, past its pressure maximum or its range's end); the fit runs
 from the best of each shape (``search``). A scan stops early because a failed solve costs much more
 than one that succeeds: the shooting solver gives up on a capsule inflated at a small Phat_I only after cutting
-its continuation's steps many times.
+its continuation's steps many times. An uninflated capsule (P_I = 0, held) has no Phat_I: its force F / (E T R) is
+a function of the compression alone, so each shape is tried at the E T that puts the largest force at the F / (E T
+R) of ``UNINFLATED_FORCES``, from deep (a soft wall) to shallow, the same way; its states are solved force by force
+(``pocket.apps.fit.capsulemodel.uninflated``: a force short of the range's start has no state), the finite
+elements' much faster than the shooting solver's there.
 
 Separating P_I from E T. The same law says why they can be hard to tell apart: a test that stays at small
 deformation sees mainly P_I (the force scales with it), and E T through a logarithm, which a change of P_I can
@@ -45,10 +49,12 @@ from .model import PENALTY, Setup
 from .start import at_tensions
 from .stats import CORRELATED
 
-__all__ = ["PRESSURES", "CapsuleFit", "CapsuleProblem", "fit", "separation", "summary"]
+__all__ = ["PRESSURES", "UNINFLATED_FORCES", "CapsuleFit", "CapsuleProblem", "fit", "separation", "summary"]
 
 #: the Phat_I = P_I R / (E T) at which each start shape is tried (module docstring)
 PRESSURES = (0.4, 0.2, 0.1, 0.05, 0.02, 0.01)
+#: an uninflated capsule's: the F / (E T R) of its largest force at which each start shape is tried (module docstring)
+UNINFLATED_FORCES = (10.0, 3.0, 1.0, 0.3, 0.1)
 
 
 class CapsuleProblem(Problem):
@@ -110,7 +116,8 @@ def fit(setup: Setup, law: str, pressure_initial: float, *, terms: int = 1, fixe
     law : str
         The law (``pocket.core.materials.LAWS``).
     pressure_initial : float
-        P_I in Pa, > 0: held, or the start of its fit.
+        P_I in Pa, > 0: held, or the start of its fit; 0, held: an uninflated capsule, its forces F / (E T R) at
+        each trial's E T (``pocket.apps.fit.capsulemodel.uninflated``).
     terms : int, optional
         Ogden's terms.
     fixed : dict, optional
@@ -125,7 +132,7 @@ def fit(setup: Setup, law: str, pressure_initial: float, *, terms: int = 1, fixe
     Raises
     ------
     InputError
-        For P_I not > 0, fewer data than unknowns + 1, an unknown key (before any solve).
+        For P_I < 0 (or 0 with ``fit_pressure``), fewer data than unknowns + 1, an unknown key (before any solve).
     ConvergenceError
         If no start, or no result, has a state for every datum.
 
@@ -151,8 +158,11 @@ def fit(setup: Setup, law: str, pressure_initial: float, *, terms: int = 1, fixe
     mu = 0.10000 MPa
     """
     clock = time.perf_counter()
-    if not pressure_initial > 0.0 or not math.isfinite(pressure_initial):
-        raise InputError(f"initial pressure = {pressure_initial!r} Pa, but a capsule's fit needs P_I > 0")
+    if not pressure_initial >= 0.0 or not math.isfinite(pressure_initial):
+        raise InputError(f"initial pressure = {pressure_initial!r} Pa, but a capsule's fit needs P_I >= 0")
+    if pressure_initial == 0.0 and fit_pressure:
+        raise InputError("initial pressure = 0 Pa: an uninflated capsule's P_I is held (its fit starts from a "
+                         "positive P_I)")
     all_keys = capsule_keys(law, terms)
     fixed = dict(fixed or {})
     if INITIAL_PRESSURE in fixed:
@@ -180,7 +190,11 @@ def _scan(setup: Setup, law: str, terms: int, pressure: float, all_keys, fixed: 
           count: dict) -> list[list[Trial]]:
     """Per start shape of ``law``, the trial at P_I = ``pressure`` with the least cost over the scan of ``PRESSURES``
     (module docstring), the values of ``fixed`` put in; a shape without a trial that has every state is left out."""
-    tensions = [pressure * setup.radius / p for p in PRESSURES]
+    if pressure > 0.0:
+        tensions = [pressure * setup.radius / p for p in PRESSURES]
+    else:  # an uninflated capsule: its largest force at F / (E T R) from deep (soft) to shallow (stiff)
+        largest = max(float(np.max(test.control)) for test in setup.tests)
+        tensions = [largest / (setup.radius * f) for f in UNINFLATED_FORCES]
     materials = at_tensions(setup, law, terms, tensions)
     out = []
     for first in range(0, len(materials), len(tensions)):
