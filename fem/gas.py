@@ -63,6 +63,8 @@ class Gas:
     def ratio(self, pressure: float) -> tuple[float, float]:
         """(q, dq/dP) at the gauge pressure P: V / V_I and its slope (module docstring)."""
         total = pressure + self.ambient
+        if not total > 0.0:  # a Newton iterate past vacuum has no gas state: a non-finite residual, the step cut
+            return math.inf, -math.inf
         q = math.exp(-math.log1p((pressure - self.pressure_initial) / (self.pressure_initial + self.ambient))
                      / self.gamma)
         return q, -q / (self.gamma * total)

@@ -121,6 +121,8 @@ moderate_forces = st.floats(min_value=1e-3, max_value=3.0)
 
 @settings(max_examples=30, deadline=None)
 @given(materials, moderate_pressures, moderate_forces, fluids)
+# a soft gas whose Newton iterate once passed below vacuum (P + P_atm < 0): a math domain error, not a named one
+@example(material=0.0, pressure=0.03431140593820599, force=2.7578125, fluid=gas(0.01, 1.0))
 def test_any_rubber_and_fluid_give_a_consistent_state_or_a_named_error(material, pressure, force, fluid):
     """Any law (stresses in any unit), any fluid: a compressed state echoing the rubber and fluid as given,
     with F = P A_c, the fluid's volume law (V = V_I for a liquid, the polytropic law for a gas) to 1e-9,
