@@ -468,9 +468,12 @@ def _capsule_curve(model: Model, y_i: np.ndarray, inflated: InflatedState, fill:
 def _uninflated_curve(model: Model, inflated: InflatedState, fill: Control, forces: list[float], tol: Tolerances,
                       progress: Progress | None) -> list[CompressedState]:
     """The uninflated capsule's states at the forces F / (E T R), each reached deep on its own
-    (``descent.to_force``)."""
+    (``descent.to_force``); at F = 0 the unstressed sphere the plates touch, the one state of its branch from the
+    touch."""
     states: dict[float, CompressedState] = {}
     for done, force in enumerate(forces, start=1):
+        if force == 0.0 and force not in states:  # the unstressed sphere the plates touch
+            states[force] = capsulestates.uncompressed(inflated, fill, FITTED)
         if force not in states:
             y, iterations = descent.to_force(model, 0.0, fill, force, tol, f"force_ETR = {force!r}")
             states[force] = capsulestates.fitted_state(model, y, iterations, inflated, fill, force, tol)

@@ -121,10 +121,13 @@ def inflated(model: Model, y: np.ndarray, iterations: int, *, pressure: float | 
 
 
 def uncompressed(state: InflatedState, fill: Control, contact: str) -> CompressedState:
-    """The state at Fhat = 0: the inflated capsule (with the fluid ``fill`` holds), its contact edge at the pole."""
+    """The state at Fhat = 0: the inflated capsule (with the fluid ``fill`` holds), its contact edge at the pole (at
+    P_I = 0 the unstressed sphere the plates touch: its ``force`` and ``pressure_ratio`` NaN, its ``force_ETR``
+    0)."""
     out = results.uncompressed(state, fill, contact)
-    return dataclasses.replace(out, extra={**out.extra, "stretch_pole": state.stretch_pole, "force_ETR": 0.0},
-                               contact_radius_deformed=0.0)
+    out = dataclasses.replace(out, extra={**out.extra, "stretch_pole": state.stretch_pole, "force_ETR": 0.0},
+                              contact_radius_deformed=0.0)
+    return out if state.pressure > 0.0 else dataclasses.replace(out, force=np.nan, pressure_ratio=np.nan)
 
 
 def fitted_state(model: Model, y: np.ndarray, iterations: int, state: InflatedState, fill: Control,

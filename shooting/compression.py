@@ -38,7 +38,7 @@ import numpy as np
 
 from pocket.core.errors import CAPSULE_EDGE, UNINFLATED_CAPSULE, InputError, OutOfRangeError
 from pocket.core.fluids import as_fluid
-from pocket.core.geometries import Symmetry, posed
+from pocket.core.geometries import CAPSULE, Symmetry, posed
 from pocket.core.indenters import as_indenter
 from pocket.core.inputs import FORCE_UNITS, check_choice, check_forces, check_positive, forces_in_fhat
 from pocket.core.states import CompressedState
@@ -55,11 +55,12 @@ __all__ = ["compress", "compression_curve"]
 
 
 def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
-    """Fhat = 0: the inflated state itself, seen as a compressed state with no contact."""
+    """Fhat = 0: the inflated state itself, seen as a compressed state with no contact (at P_I = 0, the unstressed
+    capsule touched by the plates: its ``force`` and ``pressure_ratio`` NaN, its ``force_ETR`` 0)."""
     inflated = problem.inflated
     state = CompressedState(
-        pressure_initial=inflated.pressure, force=force,
-        pressure=inflated.pressure, pressure_ratio=1.0, contact_area=0.0, contact_radius=0.0,
+        pressure_initial=inflated.pressure, force=force if inflated.pressure > 0.0 else math.nan,
+        pressure=inflated.pressure, pressure_ratio=1.0 if inflated.pressure > 0.0 else math.nan, contact_area=0.0, contact_radius=0.0,
         stretch_contact=inflated.stretch_pole, height=inflated.height, height_ratio=1.0,
         volume=inflated.volume, profile=inflated.profile, inflated=inflated, solver="shooting",
         material=inflated.material, fluid=fluid, tension_1_min=inflated.tension_1_min,
@@ -69,9 +70,13 @@ def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
 
 
 def _uninflated(material, forces: list[float], fluid, rtol: float, progress) -> list[CompressedState]:
-    """The uninflated capsule's states at the forces F / (E T R) (``compression_curve``), each its own root."""
+    """The uninflated capsule's states at the forces F / (E T R) (``compression_curve``), each its own root; at
+    F = 0 the unstressed sphere the plates touch, the one state of its branch from the touch."""
     states: dict[float, CompressedState] = {}
     for done, force in enumerate(forces, start=1):
+        if force == 0.0 and force not in states:
+            sphere = inflate(material, 0.0, geometry=CAPSULE, rtol=rtol)
+            states[force] = _uncompressed(CapsuleProblem(sphere, rtol, law_of(material), fluid), force, fluid)
         if force not in states:
             states[force] = capsule_at_force(material, 0.0, force, fluid=fluid, rtol=rtol)
         if progress is not None:

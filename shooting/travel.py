@@ -30,7 +30,7 @@ import math
 
 from pocket.core.errors import OutOfRangeError, above_the_pocket, capsule_gap
 from pocket.core.fluids import as_fluid
-from pocket.core.geometries import Symmetry, posed
+from pocket.core.geometries import CAPSULE, Symmetry, posed
 from pocket.core.indenters import Indenter, as_indenter
 from pocket.core.inputs import check_non_negative, check_positive
 from pocket.core.solver import FluidLike, GeometryLike, MaterialLike
@@ -107,7 +107,7 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     if capsule:
         problem_of(geometry, as_indenter(indenter))  # an InputError for an indenter other than the plates
         if check_non_negative("pressure", pressure_initial) == 0.0:
-            return capsule_at_height(material, 0.0, height, fluid=fluid, rtol=rtol)
+            return _uninflated(material, height, fluid, rtol)
     inflated = inflate(material, pressure_initial, geometry=geometry, rtol=rtol)
     top = inflated.height
     if capsule and height < top:  # a Phat_I too low for the shots' segments: refused before the search of the range
@@ -135,6 +135,17 @@ def compress_height(material: MaterialLike, pressure_initial: float, height: flo
     force = brent.root(lambda f: solved(f).height - height if f > 0.0 else top - height, 0.0, hi,
                        fa=top - height, fb=low - height, rtol=_FORCE_RTOL)
     return solved(force)
+
+
+def _uninflated(material, height, fluid, rtol) -> CompressedState:
+    """The uninflated capsule's state at ``height``: the unstressed sphere the plates touch at its own height,
+    else a state of the branch reached deep (``capsule_at_height``)."""
+    top = inflate(material, 0.0, geometry=CAPSULE, rtol=rtol).height
+    if height > top:
+        raise above_the_pocket(height, top)
+    if height == top:
+        return compress(material, 0.0, 0.0, fluid=fluid, geometry=CAPSULE, rtol=rtol, force_unit="ETR")
+    return capsule_at_height(material, 0.0, height, fluid=fluid, rtol=rtol)
 
 
 def _second_branch(material, pressure_initial, height, fluid, rtol, first) -> CompressedState:

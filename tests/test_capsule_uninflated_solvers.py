@@ -11,6 +11,7 @@ start. The shooting solver's own error (rtol 1e-10) is far below: its keys move 
 
 from __future__ import annotations
 
+import math
 import re
 
 import pytest
@@ -87,3 +88,22 @@ def test_the_solvers_agree_on_the_uninflated_capsule_under_force_control():
             print(f"F/(ETR) = {force}, {key}: shooting {a[key]!r}, finite elements {b[key]!r}, mesh shift "
                   f"{abs(b[key] - rough[key]):.2e}")
             assert abs(a[key] - b[key]) <= abs(b[key] - rough[key]) + 1e-12 * max(1.0, abs(b[key])), key
+
+
+@pytest.mark.parametrize("solver", [shooting, fem])
+def test_an_uninflated_capsule_at_no_force_is_the_unstressed_sphere_the_plates_touch(solver):
+    """Exact answer: at P_I = 0 the plates touch the unstressed sphere at F = 0 (force control) and at its own
+    height H = R (height control), the one state of the branch pressed from the touch: height 1, volume 4 pi / 3,
+    no contact, F / (E T R) = 0, its Fhat and P / P_I undefined (NaN, and not reported); the same state both ways.
+    A height above it does not touch the capsule."""
+    by_force = solver.compress(RUBBER, 0.0, 0.0, geometry="capsule", force_unit="ETR")
+    by_height = solver.compress_height(RUBBER, 0.0, 1.0, geometry="capsule")
+    for state in (by_force, by_height):
+        assert (state.height, state.contact_area, state.contact_radius, state.pressure) == (1.0, 0.0, 0.0, 0.0)
+        assert state.extra["force_ETR"] == 0.0
+        assert math.isnan(state.force) and math.isnan(state.pressure_ratio)
+        assert "force" not in state.scalars() and "pressure_ratio" not in state.scalars()
+        assert abs(state.volume / (4.0 * math.pi / 3.0) - 1.0) < 1e-9  # the FE's sphere is its mesh's
+    assert by_force.scalars() == by_height.scalars()
+    with pytest.raises(OutOfRangeError, match=r"^height = 1\.01 is above the inflated pocket"):
+        solver.compress_height(RUBBER, 0.0, 1.01, geometry="capsule")

@@ -42,7 +42,7 @@ WRITTEN = {
     "fluid.gamma": ("a number", "1", f"a gas's polytropic exponent, {GAMMA_RANGE[0]:g} (isothermal) to 5/3 "
                                    "(1.4: air compressed adiabatically)"),
     "initial.pressure": ("a pressure", "one of three", "P_I, the gauge pressure the pocket is inflated "
-                                                                 "to and sealed at"),
+                                                                 "to and sealed at (> 0; a capsule's may be 0)"),
     "initial.height": ("a length", "one of three", "H0, the inflated pole height (pocket solves for P_I)"),
     "initial.volume": ("a volume", "one of three", "the inflated volume under the sheet (pocket solves "
                                                              "for P_I; not with the analytical solver)"),

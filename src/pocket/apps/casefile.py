@@ -143,7 +143,7 @@ def solved(case: Case, progress=None) -> tuple[dict, Pocket, list]:
     extra = {} if progress is None else {"progress": progress}
     curve = entry(pocket.solver(), "compression_curve", f"the loads of case {case.name}")
     states = curve(pocket.material, pocket.pressure_initial,
-                   [load for load in loads if not isinstance(load, OutOfRangeError)], **pocket.options(), **extra)
+                   [load for load in loads if not isinstance(load, OutOfRangeError)], **pocket.curve_options(), **extra)
     result = {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
               "states": [compressed_row(pocket, s, i) for i, s in zip(reached, states, strict=True)],
               "unreachable": [_unreached(case, i, e) for i, e in enumerate(loads) if isinstance(e, OutOfRangeError)],

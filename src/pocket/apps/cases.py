@@ -46,7 +46,10 @@ Its lengths are in units of R, its forces F on each plate; ``initial.height`` is
 height above its equatorial plane (lambda R, half its height), ``initial.volume`` the whole capsule's, and
 ``loads.heights`` each plate's distance from the equatorial plane (half the gap between the plates). Only the
 flat plates press a capsule; a solver or an indenter that does not pose it refuses the case in one line
-before any work.
+before any work. A capsule may be uninflated, ``initial.pressure = "0 Pa"`` (or its radius as
+``initial.height``): full of liquid at no pressure, or of a gas sealed at the ambient pressure. Its forces are
+then given to the solvers as F / (E T R) (``pocket.apps.physical``), and a force short of the compression at
+which its states start is listed as not reached.
 
 The rubber and the fluid are read by ``pocket.apps.rubbers``. E = 3 mu_0 (mu_0 the
 small-strain shear modulus; 6 (C1 + C2) for Mooney-Rivlin) makes pressures
@@ -415,7 +418,7 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
     given[f"{section}.radius"] = clamp["radius"]
     initial = _table(data, "initial", where)
     kind = _one_of(initial, ("pressure", "height", "volume"), "initial", where)
-    value = positive(f"initial.{kind}", initial[kind], {"height": "length"}.get(kind, kind))
+    value = _initial(kind, initial[kind], geometry)
     given[f"initial.{kind}"] = initial[kind]
     if kind == "volume":  # V/R^3 within the model's range before anything is solved
         check_volume("initial.volume", value / radius**3, f"{quote(initial[kind])} (V/R^3 = {value / radius**3:.3g})")
@@ -435,6 +438,13 @@ def parse(data: dict, where: str = "case", *, require_loads: bool = True, base=N
                 initial=(kind, value), load_kind=load_kind, loads=loads, solver=solver, options=options,
                 label=_text(data, "label", where), tags=_tags(data, where), given=tuple(given.items()),
                 warnings=tuple(warnings), indenter=indenter, geometry=geometry)
+
+
+def _initial(kind: str, value, geometry: Geometry) -> float:
+    """The SI value of ``initial.<kind>``: > 0, or a capsule's pressure 0 (an uninflated capsule)."""
+    if kind == "pressure" and geometry != DISC and quantity("initial.pressure", value, "pressure") == 0.0:
+        return 0.0
+    return positive(f"initial.{kind}", value, {"height": "length"}.get(kind, kind))
 
 
 def _geometry(data, where) -> Geometry:

@@ -2,7 +2,8 @@
 
 With E = 3 mu_0 the modulus (6 (C1 + C2) for Mooney-Rivlin), T the thickness and R the clamp radius (a
 capsule's radius; its F the force on each plate, its H each plate's distance from the equatorial plane)
-(``pocket.core.states``): P = Phat E T / R, F = Fhat P_I pi R^2, lengths = (x/R) R, areas =
+(``pocket.core.states``): P = Phat E T / R, F = Fhat P_I pi R^2 (an uninflated capsule's, P_I = 0, F = (F / (E T R))
+E T R: its force in the solvers' unit ``force_unit = "ETR"``), lengths = (x/R) R, areas =
 (A/(pi R^2)) pi R^2, volumes = (V/R^3) R^3; a gas's ambient pressure enters the solvers as
 Phat_atm = P_atm R / (E T). The solvers get the rubber as ``Pocket.material``: the float
 alpha = C2/C1 for Mooney-Rivlin (the path it always took), the law's ``Material`` scaled to
@@ -18,7 +19,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from pocket.core.errors import UNINFLATED_CAPSULE, InputError, OutOfRangeError, PocketError
+from pocket.core.errors import InputError, OutOfRangeError, PocketError
 from pocket.core.fluids import Fluid
 from pocket.core.geometries import DISC
 from pocket.core.indenters import PLATE
@@ -95,8 +96,33 @@ class Pocket:
 
     @property
     def force_scale_N(self) -> float:
-        """P_I pi R^2: F = Fhat * force_scale_N."""
+        """P_I pi R^2: F = Fhat * force_scale_N (0 for an uninflated capsule, which has no Fhat)."""
         return self.pressure_initial_Pa * math.pi * self.case.radius**2
+
+    @property
+    def uninflated(self) -> bool:
+        """Whether P_I = 0: an uninflated capsule, pressed by forces F / (E T R) (``force_unit``)."""
+        return self.pressure_initial == 0.0
+
+    @property
+    def force_unit(self) -> str:
+        """The unit of the forces the solvers are given (``pocket.core.inputs.FORCE_UNITS``): ``"Fhat"``, or
+        ``"ETR"`` for an uninflated capsule."""
+        return "ETR" if self.uninflated else "Fhat"
+
+    @property
+    def force_unit_N(self) -> float:
+        """The solvers' unit of force in N: P_I pi R^2 (``force_scale_N``), or E T R for an uninflated capsule."""
+        return self.pressure_scale_Pa * self.case.radius**2 if self.uninflated else self.force_scale_N
+
+    def solver_force(self, state) -> float:
+        """The force of a compressed ``state`` in the solvers' unit (``force_unit``): its Fhat, or an uninflated
+        capsule's ``extra["force_ETR"]``."""
+        return float(state.extra["force_ETR"]) if self.uninflated else state.force
+
+    def force_N(self, state) -> float:
+        """The force F of a compressed ``state``, N (on each plate of a capsule)."""
+        return self.solver_force(state) * self.force_unit_N
 
     def solver(self):
         """The record of the case's solver (``pocket.core.solver.Solver``: its entry points by ``entry``)."""
@@ -108,6 +134,11 @@ class Pocket:
         it is a gas and the indenter if it is not the flat plate (``fluid_options``)."""
         solver = self.solver()
         return {**{k: v for k, v in self.case.options if step in solver.option(k).steps}, **self.fluid_options(step)}
+
+    def curve_options(self) -> dict:
+        """The keyword arguments of the solver's ``compression_curve`` for the case's loads: ``options()``, and for
+        an uninflated capsule ``force_unit="ETR"``."""
+        return {**self.options(), **({"force_unit": "ETR"} if self.uninflated else {})}
 
     def fluid_options(self, step: str = "compress") -> dict:
         """What a step is given besides its solver's options: ``{"geometry": ...}`` for a capsule (any surface
@@ -211,11 +242,16 @@ def _pressing(case: Case) -> str:
     return "plate" if case.indenter == PLATE else "indenter"
 
 
-def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
-    """Why height ``index`` of the indenter (below the inflated height ``top``, m) has no state: it is below
-    the lowest height the model reaches, said in the case's own unit."""
+def _height_error(pocket: Pocket, index: int, top: float, refusal: OutOfRangeError) -> OutOfRangeError:
+    """Why height ``index`` of the indenter (below the inflated height ``top``, m) has no state: for a pocket, it is
+    below the lowest height the model reaches, said in the case's own unit; for a capsule, the solver's
+    ``refusal`` (a height above the start of its branch reached deep, or between its two branches) after the load
+    as the case gives it."""
     case = pocket.case
     given = case.as_given(f"loads.heights[{index}]")
+    if case.geometry != DISC:
+        return OutOfRangeError(f"loads.heights[{index}] = {quote(given)} (H/R = "
+                               f"{case.loads[index] / case.radius:.10g}): {refusal}")
     lowest = ""
     try:
         end = range_end(pocket.solver(), pocket.material, pocket.pressure_initial, **pocket.options())
@@ -233,8 +269,8 @@ def _height_error(pocket: Pocket, index: int, top: float) -> OutOfRangeError:
 
 
 def forces(pocket: Pocket) -> list[float]:
-    """The case's loads as forces Fhat (``load_forces``); the first load the model does not reach is its
-    ``OutOfRangeError``."""
+    """The case's loads as forces in the solvers' unit (``load_forces``); the first load the model does not reach is
+    its ``OutOfRangeError``."""
     out = []
     for value in load_forces(pocket):
         if isinstance(value, OutOfRangeError):
@@ -244,20 +280,20 @@ def forces(pocket: Pocket) -> list[float]:
 
 
 def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
-    """Each of the case's loads as a force Fhat (heights of the indenter's lowest point solved for their force: by
-    the solver's ``compress_height`` where its record lists it, else by a search on its forces, ``force_where``),
-    or, for a load the model does not reach, the ``OutOfRangeError`` saying why.
+    """Each of the case's loads as a force in the solvers' unit (``Pocket.force_unit``: Fhat, or an uninflated
+    capsule's F / (E T R)) (heights of the indenter's lowest point solved for their force: by the solver's
+    ``compress_height`` where its record lists it, else by a search on its forces, ``force_where``), or, for a
+    load the model does not reach, the ``OutOfRangeError`` saying why.
 
     A height above the inflated pocket, or below the lowest the model reaches, or a force past the
     end of the model's range (``pocket.apps.forcerange``), is not reached; its error quotes the load as the
-    case gives it, with the bound in its unit.
+    case gives it, with the bound in its unit. A capsule's load short of the start of its branch reached deep, or
+    between its two branches, is not reached either: its error is the solver's refusal after the load as given.
     """
     case = pocket.case
     out: list[float | OutOfRangeError] = []
-    if pocket.pressure_initial == 0.0:  # a capsule given by its radius as its initial height
-        key = f"initial.{case.initial[0]}"
-        raise InputError(f"{key} = {quote(case.as_given(key))} gives P_I = 0 (the unstressed capsule), which a case "
-                         f"file does not press yet: {UNINFLATED_CAPSULE}")
+    if case.load_kind == "forces" and pocket.uninflated:
+        return _uninflated_forces(pocket)
     if case.load_kind == "forces":
         for index, force in enumerate(case.loads):
             key, given = f"loads.forces[{index}]", case.as_given(f"loads.forces[{index}]")
@@ -281,13 +317,37 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
             continue
         try:
             if travel:
-                out.append(entry(solver, "compress_height", "loads.heights")(
-                    pocket.material, pocket.pressure_initial, height / case.radius, **options).force)
+                out.append(pocket.solver_force(entry(solver, "compress_height", "loads.heights")(
+                    pocket.material, pocket.pressure_initial, height / case.radius, **options)))
             else:
                 out.append(force_where(solver, pocket.material, pocket.pressure_initial, "height",
                                        height / case.radius, increasing=False, **options))
-        except OutOfRangeError:
-            out.append(_height_error(pocket, index, top))
+        except OutOfRangeError as err:
+            out.append(_height_error(pocket, index, top, err))
+    return out
+
+
+def _uninflated_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
+    """An uninflated capsule's force loads as F / (E T R), or for a force short of its states the solver's refusal
+    after the load as the case gives it (``load_forces``).
+
+    F = 0 is the unstressed sphere the plates touch. Every other state lies on the branch reached deep, which
+    starts at a least force and whose force grows as the plates close: the loads are asked of the solver from the
+    least up, and once one is solved every larger one lies on the branch.
+    """
+    case = pocket.case
+    given = [case.as_given(f"loads.forces[{index}]") for index in range(len(case.loads))]
+    values = [_inside(f"loads.forces[{index}]", quote(given[index]), "F / (E T R)", force / pocket.force_unit_N)
+              for index, force in enumerate(case.loads)]
+    out: list[float | OutOfRangeError] = list(values)
+    compress = entry(pocket.solver(), "compress", "loads.forces")
+    for index in sorted((i for i, f in enumerate(values) if f != 0.0), key=values.__getitem__):
+        try:
+            compress(pocket.material, 0.0, values[index], force_unit="ETR", **pocket.options())
+            break
+        except OutOfRangeError as err:
+            out[index] = OutOfRangeError(f"loads.forces[{index}] = {quote(given[index])} (F / (E T R) = "
+                                         f"{values[index]:.10g}): {err}")
     return out
 
 
@@ -350,11 +410,12 @@ def compressed_row(pocket: Pocket, state, load: int | None = None) -> dict:
     asked = {"pressure_initial": pocket.pressure_initial}
     if pocket.alpha is not None:
         asked["alpha"] = pocket.alpha
-    row = {"force_N": state.force * pocket.force_scale_N}
+    row: dict[str, object] = {"force_N": pocket.force_N(state)}
     if load is not None:
         row = {"load": case.as_given(f"loads.{case.load_kind}[{load}]"), **row}
         if case.load_kind == "forces":
-            row["force_N"], asked["force"] = case.loads[load], case.loads[load] / pocket.force_scale_N
+            force = "force_ETR" if pocket.uninflated else "force"
+            row["force_N"], asked[force] = case.loads[load], case.loads[load] / pocket.force_unit_N
     patch = contact_patch(state)
     row.update({"pressure_Pa": state.pressure * scale,
                 "pressure_rise_Pa": (state.pressure - pocket.pressure_initial) * scale,

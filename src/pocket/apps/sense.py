@@ -126,6 +126,15 @@ class Reading:
         return {**out, **dict(self.rubber)}
 
 
+def _inflated(pocket: Pocket) -> None:
+    """An InputError for an uninflated capsule (P_I = 0): the readings are in units of P_I, and its force of Fhat."""
+    if pocket.uninflated:
+        key = f"initial.{pocket.case.initial[0]}"
+        raise InputError(f"{key} = {quote(pocket.case.as_given(key))} gives P_I = 0, an uninflated capsule: sensing "
+                         "reads a pressure's rise over P_I (P / P_I) and a force in units of P_I pi R^2, which it "
+                         "has not")
+
+
 def _readings(pocket: Pocket, fhats) -> list[Reading]:
     states, slopes = curve_with_slopes(pocket.solver(), pocket.material, pocket.pressure_initial, fhats,
                                        ["pressure_ratio"], **pocket.options())
@@ -200,6 +209,7 @@ def sense(pocket: Pocket, *, pressure=None, ratio=None) -> Reading:
     >>> print(round(state.pressure * pocket.pressure_scale_Pa, 6))
     5000.0
     """
+    _inflated(pocket)
     if (pressure is None) == (ratio is None):
         raise InputError("give either a pressure or a pressure ratio, not both or neither")
     if pressure is not None:
@@ -255,6 +265,7 @@ def calibration(pocket: Pocket, max_force, points: int = 21, *, key: str = "max_
     >>> print([(r.force_N, round(r.pressure_Pa)) for r in table])
     [(0.0, 4813), (0.5, 5435), (1.0, 6050)]
     """
+    _inflated(pocket)
     points = check_count("points", points, 2, MAX_POINTS)
     top = quantity(key, max_force, "force")
     if not top > 0.0:
@@ -295,6 +306,7 @@ def sensitivity_at_rest(pocket: Pocket) -> float:
     >>> print(round(at_rest, 4), abs(at_rest / calibration(pocket, "1 N", 3)[0].sensitivity_kPa_per_N - 1) < 1e-5)
     1.2114 True
     """
+    _inflated(pocket)
     solver = pocket.solver()
     inflate = entry(solver, "inflate", "the sensitivity at rest")
     phat, h = pocket.pressure_initial, _INFLATION_STEP * pocket.pressure_initial
@@ -438,6 +450,7 @@ def range_linearity(pocket: Pocket, low, high, points: int = 21, *, key: str = "
     >>> print(f"{range_linearity(resolve(sample(1)), '0 N', '1 N', points=5):.3f} %")
     0.170 %
     """
+    _inflated(pocket)
     points = check_count("points", points, 2, MAX_POINTS)
     start, top = force_range(low, high, key)
     top = check_force(pocket, key, high, top / pocket.force_scale_N)

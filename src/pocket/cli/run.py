@@ -64,11 +64,10 @@ def _write_vtk(directory, pocket, states: list, of: str) -> None:
     case's scales in every file's field data."""
     from pocket.apps.vtk.files import write_series
 
-    steps = list({s.force: s for s in sorted(states, key=lambda s: s.force)}.values())
+    steps = list({pocket.force_N(s): s for s in sorted(states, key=pocket.force_N)}.values())
     scales = {"length_scale_m": pocket.case.radius, "pressure_scale_Pa": pocket.pressure_scale_Pa,
-              "force_scale_N": pocket.force_scale_N}
-    write_series(directory, steps, times=[s.force * pocket.force_scale_N for s in steps], overwrite=True,
-                 fields=scales, of=of)
+              **({} if pocket.uninflated else {"force_scale_N": pocket.force_scale_N})}
+    write_series(directory, steps, times=[pocket.force_N(s) for s in steps], overwrite=True, fields=scales, of=of)
 
 
 def _main(args) -> int:
@@ -89,7 +88,9 @@ def _main(args) -> int:
     if args.vtk is not None:
         _write_vtk(args.vtk, pocket, states, of)
     write(result, paths, of)
-    for text in dict.fromkeys(w for row in (result["inflated"], *result["states"]) for w in row["warnings"]
+    # an uninflated capsule's inflated state is the unstressed sphere, tension-free by definition: not a warning
+    inflated = () if pocket.uninflated else (result["inflated"],)
+    for text in dict.fromkeys(w for row in (*inflated, *result["states"]) for w in row["warnings"]
                               if w not in case.warnings):
         print(f"pocket: warning: {text}", file=sys.stderr)
     missed = result["unreachable"]
@@ -103,7 +104,9 @@ def _main(args) -> int:
     print(f"# {case.name}: {'a capsule, ' if capsule else ''}solver {case.solver}, {case.material.law} rubber (E = "
           f"{case.modulus:.6g} Pa), {fluid}, Phat_I = {rows[0]['pressure_initial']:.10g}, H0 = "
           f"{result['inflated']['height_m']:.6g} m" + (", the force F on each plate" if capsule else ""))
-    shown = tuple("gap_m" if capsule and k == "height_m" else k for k in _SHOWN)
+    # a capsule's gap; an uninflated capsule's force in E T R, its P / P_I undefined
+    swap = {"height_m": "gap_m" if capsule else "height_m", "force": "force_ETR" if pocket.uninflated else "force"}
+    shown = tuple(swap.get(k, k) for k in _SHOWN if not (pocket.uninflated and k == "pressure_ratio"))
     print("  ".join(f"{k:>15}" for k in shown))
     for row in rows:
         print("  ".join(f"{row[k]:>15.8g}" if isinstance(row[k], float) else f"{row[k]!s:>15}" for k in shown))
@@ -130,6 +133,6 @@ def register(subparsers) -> None:
                    help="also write the compressed states as a ParaView series (as "
                    "compress --vtk does: surface.pvd, profile.pvd, indenter.pvd), the time of each step its "
                    "force in N; lengths are in units of the clamp radius, and every file's field data holds "
-                   "length_scale_m (R), pressure_scale_Pa (E T / R) and force_scale_N (P_I pi R^2) to turn "
-                   "them into SI")
+                   "length_scale_m (R), pressure_scale_Pa (E T / R) and force_scale_N (P_I pi R^2; not for an "
+                   "uninflated capsule, which has no Fhat) to turn them into SI")
     p.set_defaults(handler=_main)

@@ -118,7 +118,7 @@ from pocket.core.fluids import Fluid
 from pocket.core.geometries import DISC, GEOMETRIES, Symmetry
 from pocket.core.inputs import check_count
 from pocket.core.materials import LAWS
-from pocket.core.states import CHECKS
+from pocket.core.states import CHECKS, UNINFLATED_UNDEFINED
 
 from ..contactpatch import contact_patch
 from ..folders import check_replaceable, staged
@@ -167,7 +167,8 @@ def _profile(state):
 def field_data(state) -> dict[str, np.ndarray]:
     """A state's numeric scalars as VTK field data (``pocket.apps.vtk.files``).
 
-    Its ``KEYS``, for a compressed state its contact patch, its smallest tensions and ``wrinkled`` (1.0 or 0.0),
+    Its ``KEYS`` (an uninflated capsule's but its undefined Fhat and P / P_I), for a compressed state its contact
+    patch, its smallest tensions and ``wrinkled`` (1.0 or 0.0),
     the rubber's parameters and the fluid's, the codes of its solver, law and fluid (``CODES``) and its numeric
     diagnostics.
 
@@ -190,7 +191,9 @@ def field_data(state) -> dict[str, np.ndarray]:
     >>> print(data["pressure_ratio"][0] == state.pressure_ratio, data["force"], data["wrinkled"])
     True [0.19] [0.]
     """
-    out = {key: np.array([float(getattr(state, key))]) for key in state.KEYS if getattr(state, key) is not None}
+    uninflated = getattr(state, "pressure_initial", None) == 0.0  # an uninflated capsule: no Fhat, no P / P_I
+    out = {key: np.array([float(getattr(state, key))]) for key in state.KEYS
+           if getattr(state, key) is not None and not (uninflated and key in UNINFLATED_UNDEFINED)}
     if hasattr(state, "indenter"):  # a compressed state: its contact patch
         out.update({key: np.array([value]) for key, value in contact_patch(state).items()})
     out.update({key: np.array([float(getattr(state, key))]) for key in CHECKS})  # wrinkled: 1.0 or 0.0
