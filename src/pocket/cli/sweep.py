@@ -51,7 +51,8 @@ def _main(args) -> int:
     executor = _executor(args)
     try:
         with progress_bar("sweep", " points") as progress:
-            computed, reused = run_sweep(args.out, alphas, args.pressure, args.force, executor, solver=args.solver,
+            computed, reused = run_sweep(args.out, alphas, args.pressure, args.force or args.force_etr, executor,
+                                         solver=args.solver, force_unit="Fhat" if args.force else "ETR",
                                          options=options, progress=progress, material=material, fluid=fluid,
                                          indenter=indenter, prestretch=args.prestretch or 1.0,
                                          geometry=geometry_of(args))
@@ -76,9 +77,16 @@ def register(subparsers) -> None:
         "rewritten in grid order. Stopped early (interrupt, error), the file keeps its complete rows only. "
         f"{capsule_units('compress')} {MODEL_UNITS}")
     p.add_argument("--pressure", type=model_value("sweep", "Phat_I = P_I R / (E T)"), nargs="+", required=True,
-                   metavar="PHAT_I", help="values of the initial pressure, Phat_I = P_I R / (E T)")
-    p.add_argument("--force", type=model_value("sweep", "Fhat = F / (P_I pi R^2)"), nargs="+", required=True,
-                   metavar="FHAT", help="values of the force, Fhat = F / (P_I pi R^2)")
+                   metavar="PHAT_I", help="values of the initial pressure, Phat_I = P_I R / (E T) (0 with "
+                   "--force-etr: an uninflated capsule)")
+    load = p.add_mutually_exclusive_group(required=True)
+    load.add_argument("--force", type=model_value("sweep", "Fhat = F / (P_I pi R^2)"), nargs="+", metavar="FHAT",
+                      help="values of the force, Fhat = F / (P_I pi R^2)")
+    load.add_argument("--force-etr", type=model_value("sweep", "F/(E T R)"), nargs="+", metavar="F/(ETR)",
+                      help="or a capsule's forces on each plate in units of its wall's E T and its radius R, "
+                           "F / (E T R), the same forces at every --pressure (each row's force_ETR, and its Fhat "
+                           "where P_I > 0); the only forces of an uninflated capsule (--pressure 0), whose Fhat is "
+                           "undefined (solvers shooting and fem)")
     p.add_argument("--out", required=True, type=path_name, metavar="FILE.csv",
                    help="results; an existing sweep file is resumed")
     p.add_argument("--solver", choices=tuple(SOLVERS), default="shooting",

@@ -134,6 +134,14 @@ class Geometry(abc.ABC):
     def end(self) -> Support:
         """What holds the meridian's end S = L."""
 
+    def __reduce_ex__(self, protocol):
+        """A surface of ``GEOMETRIES`` is pickled by name, so that one sent to another process (a sweep's workers)
+        is the one of ``GEOMETRIES`` there: the solvers tell the surfaces apart by identity (``geometry is
+        CAPSULE``). Any other pickles as an object does."""
+        if GEOMETRIES.get(self.name) is self:
+            return (_named, (self.name,))
+        return super().__reduce_ex__(protocol)
+
     @property
     @abc.abstractmethod
     def volume(self) -> float:
@@ -232,6 +240,11 @@ CAPSULE = Capsule()
 
 #: name -> the reference surface of that name (what ``--geometry`` offers)
 GEOMETRIES: dict[str, Geometry] = {DISC.name: DISC, CAPSULE.name: CAPSULE}
+
+
+def _named(name: str) -> Geometry:
+    """The surface of ``GEOMETRIES`` named ``name`` (how a pickled surface is read back)."""
+    return GEOMETRIES[name]
 
 
 def as_geometry(value) -> Geometry:

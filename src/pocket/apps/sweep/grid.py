@@ -28,6 +28,11 @@ asked, never the values a solver hands back, and every float is written
 exactly (``repr``), so a point reads back equal to the number asked: that is
 the key on which a rerun recognises the points already done.
 
+A capsule's forces may be given as F / (E T R) instead (``force_unit="ETR"``; ``pocket sweep --force-etr``),
+the same force for every Phat_I: the row's ``force_ETR`` is the force asked and its ``force`` the Fhat
+F / (E T R) / (pi Phat_I) given to the solver. Only these take Phat_I = 0, the uninflated capsule, which has no
+Fhat: its ``force`` and ``pressure_ratio`` cells are empty, and its forces go to the solver as F / (E T R).
+
 The file's life:
 
 1. Before any point is solved, an existing file must be a sweep file (its
@@ -58,13 +63,13 @@ import pathlib
 from collections.abc import Callable
 from concurrent.futures import as_completed
 
-from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
+from pocket.core.errors import UNINFLATED_CAPSULE, ConvergenceError, InputError, OutOfRangeError
 from pocket.core.fluids import Fluid, as_fluid
 from pocket.core.geometries import DISC, Geometry, as_geometry
 from pocket.core.indenters import PLATE, Indenter, as_indenter
-from pocket.core.inputs import check_force, check_positive
+from pocket.core.inputs import FORCE_UNITS, check_choice, check_force, check_non_negative, check_positive
 from pocket.core.materials import Material, as_material, mooney_rivlin
-from pocket.core.states import CHECKS, CompressedState
+from pocket.core.states import CHECKS, UNINFLATED_UNDEFINED, CompressedState
 
 from ..contactpatch import contact_patch
 from ..folders import write_whole
@@ -78,23 +83,42 @@ __all__ = ["COLUMNS", "MAX_POINTS", "STATUSES", "run_sweep", "solve_curve", "sol
 MAX_POINTS = 100_000
 
 
+def _asked(pressure_initial: float, force: float, unit: str) -> dict:
+    """The force cells of a point as asked: its Fhat (``unit`` "Fhat"); for a force F / (E T R) (``unit`` "ETR"),
+    its ``force_ETR`` and the Fhat = F / (E T R) / (pi Phat_I) it is where P_I > 0 (none for an uninflated
+    capsule)."""
+    if unit == "Fhat":
+        return {"force": force}
+    return {"force": force / (math.pi * pressure_initial) if pressure_initial > 0.0 else "", "force_ETR": force}
+
+
+def _loads(pressure_initial: float, forces: list[float], unit: str) -> tuple[list[float], dict]:
+    """The forces of a curve as its solver takes them, and the keyword that says their unit: Fhat, or for an
+    uninflated capsule F / (E T R) with ``force_unit="ETR"``."""
+    if unit == "ETR" and pressure_initial == 0.0:
+        return list(forces), {"force_unit": "ETR"}
+    return [_asked(pressure_initial, f, unit)["force"] for f in forces], {}
+
+
 def _row(solver: str, material, pressure_initial: float, force: float, options: dict, state=None,
-         error: Exception | None = None) -> dict:
-    """The CSV row (dict of COLUMNS) of one point: its ``state``, or the ``error`` that stopped it."""
+         error: Exception | None = None, unit: str = "Fhat") -> dict:
+    """The CSV row (dict of COLUMNS) of one point: its ``state``, or the ``error`` that stopped it; ``force`` in
+    ``unit`` (``_asked``)."""
     row: dict[str, object] = dict.fromkeys(COLUMNS, "")
     if isinstance(error, OutOfRangeError):
         row.update(status="out_of_range", message=line(error))
     elif error is not None:
         row.update(status="failed", message=line(error))
     else:
-        row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS if key != "alpha"})
+        row.update({key: float(getattr(state, key)) for key in CompressedState.KEYS
+                    if key != "alpha" and not (pressure_initial == 0.0 and key in UNINFLATED_UNDEFINED)})
         row.update(contact_patch(state))
         row.update({key: float(state.extra[key]) for key in CAPSULE if key in state.extra})
         row.update({key: float(getattr(state, key)) for key in CHECKS[:2]}, wrinkled=state.wrinkled)
         row.update(status="ok", message=line("; ".join(state.warnings)))
     row.update(identity(solver, options, material, as_fluid(options.get("fluid")),
                         as_indenter(options.get("indenter")), as_geometry(options.get("geometry"))))  # as asked
-    row.update(alpha=_alpha_cell(material), pressure_initial=pressure_initial, force=force)
+    row.update(alpha=_alpha_cell(material), pressure_initial=pressure_initial, **_asked(pressure_initial, force, unit))
     return row
 
 
@@ -103,7 +127,8 @@ def _alpha_cell(material: Material):
     return "" if material.exact_alpha is None else material.exact_alpha
 
 
-def solve_point(solver: str, material, pressure_initial: float, force: float, options: dict) -> dict:
+def solve_point(solver: str, material, pressure_initial: float, force: float, options: dict,
+                unit: str = "Fhat") -> dict:
     """One grid point, from a fresh inflation, as a CSV row; a model's failure becomes the row's status, not an error.
 
     Parameters
@@ -115,10 +140,13 @@ def solve_point(solver: str, material, pressure_initial: float, force: float, op
     pressure_initial : float
         Phat_I = P_I R / (E T).
     force : float
-        Fhat = F / (P_I pi R^2).
+        Fhat = F / (P_I pi R^2), or F / (E T R) (``unit``).
     options : dict
         The solver's options, with the ``fluid`` (a ``Fluid``) if it is a gas and the ``indenter`` if it is not
         the flat plate.
+    unit : {"Fhat", "ETR"}, optional
+        The unit of ``force``: Fhat, or a capsule's F / (E T R) (at P_I = 0, an uninflated capsule's, the only unit
+        it has).
 
     Returns
     -------
@@ -136,14 +164,16 @@ def solve_point(solver: str, material, pressure_initial: float, force: float, op
     >>> print(solve_point("shooting", mooney_rivlin(47 / 160), 0.31, 20.0, {})["status"])
     out_of_range
     """
+    (load,), extra = _loads(pressure_initial, [force], unit)
     try:
-        state = entry(solver, "compress", "a sweep point")(material, pressure_initial, force, **options)
+        state = entry(solver, "compress", "a sweep point")(material, pressure_initial, load, **options, **extra)
     except (OutOfRangeError, ConvergenceError) as err:
-        return _row(solver, material, pressure_initial, force, options, error=err)
-    return _row(solver, material, pressure_initial, force, options, state)
+        return _row(solver, material, pressure_initial, force, options, error=err, unit=unit)
+    return _row(solver, material, pressure_initial, force, options, state, unit=unit)
 
 
-def solve_curve(solver: str, material, pressure_initial: float, forces, options: dict) -> list[dict]:
+def solve_curve(solver: str, material, pressure_initial: float, forces, options: dict,
+                unit: str = "Fhat") -> list[dict]:
     """The points of one curve (one rubber, fluid and Phat_I) as CSV rows, by continuation through the forces.
 
     The rows are those of ``solve_point`` to the solver's tolerance. Where the continuation fails at a force,
@@ -160,8 +190,8 @@ def solve_curve(solver: str, material, pressure_initial: float, forces, options:
     pressure_initial : float
         Phat_I = P_I R / (E T).
     forces : sequence of float
-        Fhat, distinct, in increasing order.
-    options : dict
+        Fhat (or F / (E T R), ``unit``), distinct, in increasing order.
+    options, unit
         As for ``solve_point``.
 
     Returns
@@ -181,23 +211,30 @@ def solve_curve(solver: str, material, pressure_initial: float, forces, options:
     True
     """
     done = [0]
+    loads, extra = _loads(pressure_initial, list(forces), unit)
     try:
         states = entry(solver, "compression_curve", "a sweep curve")(
-            material, pressure_initial, forces, progress=lambda count, _: done.append(count), **options)
+            material, pressure_initial, loads, progress=lambda count, _: done.append(count), **options, **extra)
     except (OutOfRangeError, ConvergenceError):
         k = done[-1]
-        rows = solve_curve(solver, material, pressure_initial, forces[:k], options) if k else []
-        rows.append(solve_point(solver, material, pressure_initial, forces[k], options))
+        rows = solve_curve(solver, material, pressure_initial, forces[:k], options, unit) if k else []
+        rows.append(solve_point(solver, material, pressure_initial, forces[k], options, unit))
         rest = forces[k + 1:]
         if rows[-1]["status"] == "out_of_range":
-            return rows + [solve_point(solver, material, pressure_initial, f, options) for f in rest]
-        return rows + (solve_curve(solver, material, pressure_initial, rest, options) if rest else [])
-    return [_row(solver, material, pressure_initial, f, options, state) for f, state in zip(forces, states,
-                                                                                             strict=True)]
+            return rows + [solve_point(solver, material, pressure_initial, f, options, unit) for f in rest]
+        return rows + (solve_curve(solver, material, pressure_initial, rest, options, unit) if rest else [])
+    return [_row(solver, material, pressure_initial, f, options, state, unit=unit)
+            for f, state in zip(forces, states, strict=True)]
 
 
-def _grid(materials, pressures, forces) -> list[tuple]:
-    pressures = [check_positive("pressure", p) for p in pressures]
+def _grid(materials, pressures, forces, unit: str, geometry: Geometry) -> list[tuple]:
+    if geometry != DISC and any(p == 0.0 for p in pressures) and unit == "Fhat":
+        raise InputError(f"pressure = 0: {UNINFLATED_CAPSULE}")
+    if geometry == DISC and unit == "ETR":
+        raise InputError("forces F / (E T R) (--force-etr) are a capsule's (--geometry capsule); a pocket's are Fhat")
+    uninflated = unit == "ETR"  # a capsule's forces F / (E T R) are defined at P_I = 0
+    pressures = [check_non_negative("pressure", p) if uninflated else check_positive("pressure", p)
+                 for p in pressures]
     forces = [check_force(f) for f in forces]
     if not (materials and pressures and forces):
         raise InputError("a sweep needs at least one alpha (or a rubber), one pressure and one force")
@@ -218,7 +255,7 @@ def _curves(points) -> dict:
 def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", options=None,
               progress: Callable[[int, int], None] | None = None, material: Material | None = None,
               fluid: Fluid | None = None, indenter: Indenter | None = None, prestretch: float = 1.0,
-              geometry: Geometry | str | None = None) -> tuple[int, int]:
+              geometry: Geometry | str | None = None, force_unit: str = "Fhat") -> tuple[int, int]:
     """Solve every (alpha, Phat_I, Fhat) of a grid not already in the sweep file, on an executor.
 
     Each curve (a rubber and Phat_I) missing points is one task (``solve_curve``) through the grid's forces up
@@ -235,7 +272,7 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     pressures : sequence of float
         Phat_I = P_I R / (E T).
     forces : sequence of float
-        Fhat = F / (P_I pi R^2).
+        Fhat = F / (P_I pi R^2), or F / (E T R) (``force_unit``).
     executor : concurrent.futures.Executor
         Where the curves are solved (``pocket.apps.sweep.workers.local_executor``, a dask cluster's,
         ``pocket.apps.sweep.cluster.connect``). A sweep that stops early leaves the curves not yet solved in it:
@@ -256,6 +293,9 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     geometry : Geometry or str, optional
         The membrane (``pocket.core.geometries``): None or "pocket" the flat clamped sheet, "capsule" the closed
         capsule between two plates (its Fhat's F on each plate), part of each point.
+    force_unit : {"Fhat", "ETR"}, optional
+        The unit of ``forces``: Fhat, or a capsule's F / (E T R), the same force for every Phat_I (each point's
+        ``force_ETR``, and its Fhat where P_I > 0); only these take Phat_I = 0, an uninflated capsule.
 
     Returns
     -------
@@ -288,7 +328,9 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     materials = [mooney_rivlin(a) for a in alphas or ()] if material is None else [as_material(material)]
     if prestretch != 1.0:  # every alpha's sheet clamped with it
         materials = [prestretched(m, prestretch, "prestretch") for m in materials]
-    grid = _grid(materials, pressures, forces)
+    unit = check_choice("force_unit", force_unit, FORCE_UNITS)
+    geometry = as_geometry(geometry)
+    grid = _grid(materials, pressures, forces, unit, geometry)
     options = record(solver).checked(dict(options or {}), "compress")
     for name in ("compress", "compression_curve"):  # refused here, before the file is touched
         entry(solver, name, "a sweep")
@@ -298,18 +340,18 @@ def run_sweep(path, alphas, pressures, forces, executor, *, solver="shooting", o
     indenter = as_indenter(indenter)
     if indenter != PLATE:
         options["indenter"] = indenter
-    geometry = as_geometry(geometry)
     if geometry != DISC:
         options["geometry"] = geometry
     cells = {m: identity(solver, options, m, fluid, indenter, geometry) for m in materials}
-    keys = [key({**cells[m], "alpha": _alpha_cell(m), "pressure_initial": p, "force": f})
+    keys = [key({**cells[m], "alpha": _alpha_cell(m), "pressure_initial": p, **_asked(p, f, unit)})
             for m, p, f in grid]
     journal = Journal(pathlib.Path(path))
     failed = True
     try:
         todo = {k: point for point, k in zip(grid, keys, strict=True) if k not in journal.rows}
         curves = _curves(grid)
-        futures = [executor.submit(solve_curve, solver, m, p, [f for f in curves[m, p] if f <= fs[-1]], options)
+        futures = [executor.submit(solve_curve, solver, m, p, [f for f in curves[m, p] if f <= fs[-1]], options,
+                                   unit=unit)
                    for (m, p), fs in _curves(todo.values()).items()]
         done = 0
         for future in as_completed(futures):

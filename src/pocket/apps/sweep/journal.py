@@ -21,7 +21,9 @@ contact patch; empty for a pocket), and its other keys are a capsule's (``pocket
 ``height`` each plate's distance from the equatorial plane, ``volume`` the whole capsule's).
 Floats are written exactly (``repr``), so a point reads back equal to the number asked.
 
-A point is its solver and options, rubber, fluid, indenter, geometry, Phat_I and Fhat (``key``): a file
+A point is its solver and options, rubber, fluid, indenter, geometry, Phat_I and Fhat (``key``; an uninflated
+capsule's, at Phat_I = 0, has no Fhat, and its ``force`` and ``pressure_ratio`` cells are empty: its force is
+``force_ETR``): a file
 may hold points of several sweeps, of several solvers and indenters, and a rerun recognises its own
 and keeps every row it reads, so nothing of the file is lost: a line that is not a row of one, or a
 second row of one point, is refused before any work. A file of an earlier pocket, whose rows lack
@@ -124,8 +126,10 @@ def identity(solver: str, options: dict, material: Material, fluid: Fluid, inden
 
 def key(row) -> tuple:
     """The point of a row: its IDENTITY cells (solver, options, rubber, fluid, indenter, geometry), then alpha (None for
-    another law), Phat_I and Fhat."""
+    another law), Phat_I and Fhat; an uninflated capsule's (Phat_I = 0, no Fhat) F / (E T R), ``force_ETR``."""
     alpha, pressure, force = (row[k] for k in _NUMBERS)
+    if float(pressure) == 0.0:
+        force = row["force_ETR"]
     return (*(row[k] for k in IDENTITY), None if alpha in ("", None) else float(alpha), float(pressure),
             float(force))
 
