@@ -4,11 +4,11 @@
 
 Prints medians of repeated runs (the load average with them), after one run that compiles (or loads the compiled
 code), of a neo-Hookean capsule filled with a liquid at P_I = 0 pressed to the plate height H = 0.6 R and by the
-force F = 0.5 E T R on each plate, by each solver, with the shooting solver's time over the finite elements'. The
-uninflated capsule is reached by a descent from a capsule inflated to Phat_I = 0.1 (``pocket.shooting.descent``,
-``pocket.fem.descent``); under force control the shooting solver finds the height by Brent's method on its
-descents (each about a tenth of a second) after locating the branch's start, the finite elements by their force
-continuation on the deep branch.
+force F = 0.5 E T R on each plate, and along a curve of five forces, by each solver, with the shooting solver's time
+over the finite elements'. The uninflated capsule is reached by a descent from a capsule inflated to Phat_I = 0.1
+(``pocket.shooting.descent``, ``pocket.fem.descent``); under force control the shooting solver finds the height by
+Brent's method on its descents (each about a tenth of a second) after locating the branch's start (once for a
+curve), the finite elements by their force continuation on the deep branch.
 """
 
 from __future__ import annotations
@@ -21,12 +21,15 @@ from pocket import fem, shooting
 
 NEO = 0.0  # Mooney-Rivlin alpha = 0: the neo-Hookean rubber
 HEIGHT, FORCE_ETR = 0.6, 0.5
+CURVE_ETR = (0.1, 0.2, 0.5, 1.0, 2.0)
 REPEAT = 5
 
 CALLS = {
     "P_I = 0, H = 0.6 R": lambda solver: solver.compress_height(NEO, 0.0, HEIGHT, geometry="capsule"),
     "P_I = 0, F = 0.5 E T R": lambda solver: solver.compress(NEO, 0.0, FORCE_ETR, geometry="capsule",
                                                              force_unit="ETR"),
+    "P_I = 0, F = 0.1 to 2 E T R, 5 forces": lambda solver: solver.compression_curve(
+        NEO, 0.0, CURVE_ETR, geometry="capsule", force_unit="ETR"),
 }
 
 

@@ -46,7 +46,7 @@ from pocket.core.states import CompressedState
 from .capsule import CapsuleProblem
 from .contact import Contact
 from .continuation import Branch, advance, band, beyond, past_the_profile
-from .descent import capsule_at_force
+from .descent import branch_start, capsule_at_force
 from .inflation import GEOMETRIES, inflate
 from .laws import law_of
 from .problem import problem_of
@@ -73,12 +73,14 @@ def _uninflated(material, forces: list[float], fluid, rtol: float, progress) -> 
     """The uninflated capsule's states at the forces F / (E T R) (``compression_curve``), each its own root; at
     F = 0 the unstressed sphere the plates touch, the one state of its branch from the touch."""
     states: dict[float, CompressedState] = {}
+    start = None  # where the branch reached deep starts, once located
     for done, force in enumerate(forces, start=1):
         if force == 0.0 and force not in states:
             sphere = inflate(material, 0.0, geometry=CAPSULE, rtol=rtol)
             states[force] = _uncompressed(CapsuleProblem(sphere, rtol, law_of(material), fluid), force, fluid)
         if force not in states:
-            states[force] = capsule_at_force(material, 0.0, force, fluid=fluid, rtol=rtol)
+            start = start or branch_start(material, 0.0, fluid=fluid, rtol=rtol)
+            states[force] = capsule_at_force(material, 0.0, force, fluid=fluid, rtol=rtol, start=start)
         if progress is not None:
             progress(done, len(forces))
     return [states[f] for f in forces]
@@ -178,6 +180,7 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
     states, done = {}, 0
     branch = Branch(points=((0.0, problem.start()),))
     deep = None  # a capsule's first branch's end, once a force is past it: the later forces lie deeper
+    start = None  # ... and where the branch reached deep starts, once located
     for f in sorted(counts):
         if f == 0.0:
             states[f] = _uncompressed(problem, f, fluid)
@@ -190,7 +193,8 @@ def compression_curve(material, pressure_initial, forces, *, fluid=None, indente
                 deep = err.end
         if f not in states:
             assert deep is not None, "a force the first branch did not solve is past its end"
-            states[f] = capsule_at_force(material, pressure_initial, f, deep, fluid=fluid, rtol=rtol)
+            start = start or branch_start(material, pressure_initial, fluid=fluid, rtol=rtol)
+            states[f] = capsule_at_force(material, pressure_initial, f, deep, fluid=fluid, rtol=rtol, start=start)
         done += counts[f]
         if progress is not None:
             progress(done, len(forces))

@@ -54,7 +54,7 @@ from .continuation import first_state
 from .inflation import inflate
 from .laws import law_of
 
-__all__ = ["ANCHOR", "H_DEEP", "capsule_at_force", "capsule_at_height"]
+__all__ = ["ANCHOR", "H_DEEP", "branch_start", "capsule_at_force", "capsule_at_height"]
 
 #: Phat_A, the inflation pressure the descent starts from: the neo-Hookean liquid's first branch has no end above
 #: Phat_I ~ 0.02 (benchmarks/capsule_low_pressure.py), so at 0.1 it reaches every height, into the second branch
@@ -192,6 +192,39 @@ def _descent(material, pressure_initial, height, fluid, rtol) -> tuple[CapsulePr
     return problem(target, height), x
 
 
+def _force(state: CompressedState) -> float:
+    """The force on each plate of a capsule's ``state``: Fhat, or at P_I = 0 F / (E T R)."""
+    return state.force if state.pressure_initial > 0.0 else float(state.extra["force_ETR"])
+
+
+def branch_start(material: MaterialLike, pressure_initial: float, *, fluid: FluidLike = None,
+                 rtol: float = 1e-10) -> tuple[float, float]:
+    """Where the capsule's branch reached deep starts: (H*, the force there), its least compression and least
+    force (Fhat, or at P_I = 0 F / (E T R)), H* located by the march up from H_d to within ``_END_STEP``.
+
+    Most of the time of a state at a force (``capsule_at_force``): a curve of forces locates it once and passes it
+    on.
+
+    Examples
+    --------
+    >>> height, force = branch_start(0.0, 0.0)
+    >>> print(f"H* = {height:.5f}, F = {force:.5f} E T R")
+    H* = 0.79308, F = 0.06423 E T R
+    """
+    fluid = as_fluid(fluid)
+    top = inflate(material, pressure_initial, geometry=CAPSULE, rtol=rtol).height
+    try:
+        capsule_at_height(material, pressure_initial, top, fluid=fluid, rtol=rtol)
+    except OutOfRangeError as err:
+        if err.bound is None:
+            raise
+        start = err.bound
+    else:
+        raise ConvergenceError(f"capsule at Phat_I = {pressure_initial!r}: a state at its inflated height on the "
+                               "branch reached deep, which should start below it", load=top)
+    return start, _force(capsule_at_height(material, pressure_initial, start, fluid=fluid, rtol=rtol))
+
+
 def _touched(anchor, law, fluid, rtol) -> tuple[float, np.ndarray]:
     """(H/R, the unknowns of height control): the ``anchor`` capsule at Fhat = ``_FORCE``, by the force's
     continuation from its inflated state."""
@@ -227,7 +260,8 @@ def _lower_end(problem, x, height, anchor) -> OutOfRangeError | ConvergenceError
 
 
 def capsule_at_force(material: MaterialLike, pressure_initial: float, force: float, end: str | None = None, *,
-                     fluid: FluidLike = None, rtol: float = 1e-10) -> CompressedState:
+                     fluid: FluidLike = None, rtol: float = 1e-10,
+                     start: tuple[float, float] | None = None) -> CompressedState:
     """The capsule's state at the force ``force`` on its second branch: Fhat where Phat_I = ``pressure_initial``
     > 0, past the ``end`` of its first branch (as that branch's refusal words it, ``"force = ..."``); at P_I = 0,
     where Fhat is undefined and the second branch is the only one, F / (E T R) (``end`` None).
@@ -237,7 +271,8 @@ def capsule_at_force(material: MaterialLike, pressure_initial: float, force: flo
     the root of F(H) - force by Brent's method (``pocket.shooting.brent``) between H* and a height halved from it
     until the force there exceeds the one asked, each F(H) a state of ``capsule_at_height``. The state returned is
     the one solved at the root: its force (``force``, or ``extra["force_ETR"]`` at P_I = 0) the one found, within
-    the root's relative 1e-12 of ``force``.
+    the root's relative 1e-12 of ``force``. ``start``: the branch's start as ``branch_start`` gives it, where a
+    curve of forces has located it already (else it is located here).
 
     Examples
     --------
@@ -254,29 +289,19 @@ def capsule_at_force(material: MaterialLike, pressure_initial: float, force: flo
     0.5000000000 0.5583
     """
     name = "force" if pressure_initial > 0.0 else "force_ETR"
-    top = inflate(material, pressure_initial, geometry=CAPSULE, rtol=rtol).height
-    try:
-        capsule_at_height(material, pressure_initial, top, fluid=fluid, rtol=rtol)
-    except OutOfRangeError as err:
-        if err.bound is None:
-            raise
-        start = err.bound
-    else:
-        raise ConvergenceError(f"capsule at Phat_I = {pressure_initial!r}: a state at its inflated height on the "
-                               "branch reached deep, which should start below it", load=force)
+    highest, smallest = branch_start(material, pressure_initial, fluid=fluid, rtol=rtol) if start is None else start
 
     def excess(height):
-        state = capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol)
-        return (state.force if pressure_initial > 0.0 else state.extra["force_ETR"]) - force
+        return _force(capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol)) - force
 
-    least = excess(start)
+    least = smallest - force
     if least > 0.0:
-        raise capsule_gap(f"{name} = {force!r}", f"{name} = {least + force:.10g} (height = {start:.10g})", end)
-    low = 0.5 * start
+        raise capsule_gap(f"{name} = {force!r}", f"{name} = {smallest:.10g} (height = {highest:.10g})", end)
+    low = 0.5 * highest
     while (above := excess(low)) < 0.0:
         if low < _DEEPEST * 0.5:
             raise ConvergenceError(f"capsule at Phat_I = {pressure_initial!r}: no state up to {name} = {force!r} down "
                                    f"to the plate height {low:.3g}", load=force)
         low *= 0.5
-    height = brent.root(excess, low, start, fa=above, fb=least, rtol=_FORCE_RTOL)
+    height = brent.root(excess, low, highest, fa=above, fb=least, rtol=_FORCE_RTOL)
     return capsule_at_height(material, pressure_initial, height, fluid=fluid, rtol=rtol)
