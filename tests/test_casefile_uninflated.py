@@ -149,3 +149,20 @@ def _toml(data: dict) -> str:
         if isinstance(table, dict):
             lines += [f"[{name}]", *(f"{key} = {json.dumps(value)}" for key, value in table.items())]
     return "\n".join(lines) + "\n"
+
+
+def test_the_built_in_uninflated_capsule_reaches_every_load(tmp_path, capsys):
+    """``pocket run --example uninflated-capsule``: every force, 0 to 40 uN, lies past where the states start
+    (0.064 E T R = 4.8 uN), so all five are solved; F = 0 is the unstressed sphere (gap 2 R), and the gap closes
+    as the force grows."""
+    assert main(["run", "--example", "uninflated-capsule", "--out", str(tmp_path)]) == 0
+    capsys.readouterr()
+    result = json.loads((tmp_path / "example_uninflated-capsule.json").read_text())
+    rows = result["states"]
+    assert [row["load"] for row in rows] == ["0 uN", "5 uN", "10 uN", "20 uN", "40 uN"]
+    assert result["unreachable"] == []
+    assert rows[0]["gap_m"] == pytest.approx(2 * R, rel=1e-15)
+    gaps = [row["gap_m"] for row in rows]
+    assert gaps == sorted(gaps, reverse=True) and len(set(gaps)) == len(gaps)
+    assert [row["force_ETR"] for row in rows] == pytest.approx([f * 1e-6 / ETR for f in (0, 5, 10, 20, 40)],
+                                                               rel=1e-14)

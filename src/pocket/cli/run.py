@@ -26,7 +26,8 @@ def add_case_arguments(parser) -> None:
     parser.add_argument("--sample", type=int, metavar="N", help="built-in sample N (1-4) of the paper's Table 1")
     parser.add_argument("--example", choices=tuple(EXAMPLES),
                         help="a built-in example case: capsule, a 50 um microcapsule with a 0.5 um neo-Hookean wall "
-                        "squeezed between two plates (forces on each plate, up to 20 uN)")
+                        "squeezed between two plates (forces on each plate, up to 20 uN); uninflated-capsule, the "
+                        "same capsule full of liquid at no pressure (up to 40 uN, by the finite elements)")
 
 
 def case_from_args(args) -> tuple[Case, str]:
