@@ -148,11 +148,11 @@ FOLDER = pathlib.Path({folder!r})
 solve = sweep.solve_curve
 
 
-def held(*args):
+def held(*args, **kwargs):
     (FOLDER / "started").touch()
     while not (FOLDER / "release").exists():
         time.sleep(0.05)
-    return solve(*args)
+    return solve(*args, **kwargs)
 
 
 sweep.solve_curve = held
