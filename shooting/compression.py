@@ -60,7 +60,8 @@ def _uncompressed(problem: Contact, force: float, fluid) -> CompressedState:
     inflated = problem.inflated
     state = CompressedState(
         pressure_initial=inflated.pressure, force=force if inflated.pressure > 0.0 else math.nan,
-        pressure=inflated.pressure, pressure_ratio=1.0 if inflated.pressure > 0.0 else math.nan, contact_area=0.0, contact_radius=0.0,
+        pressure=inflated.pressure, pressure_ratio=1.0 if inflated.pressure > 0.0 else math.nan, contact_area=0.0,
+        contact_radius=0.0,
         stretch_contact=inflated.stretch_pole, height=inflated.height, height_ratio=1.0,
         volume=inflated.volume, profile=inflated.profile, inflated=inflated, solver="shooting",
         material=inflated.material, fluid=fluid, tension_1_min=inflated.tension_1_min,

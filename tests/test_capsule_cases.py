@@ -88,7 +88,8 @@ def test_the_built_in_capsule_is_a_microcapsule_at_phat_a_tenth():
     assert case.geometry is CAPSULE
     assert case.initial[1] * case.radius / (case.modulus * case.thickness) == pytest.approx(0.1, rel=1e-14)
     assert example("capsule") == case
-    with pytest.raises(InputError, match=r"^example = 'torus', but the built-in examples are capsule, uninflated-capsule$"):
+    with pytest.raises(InputError, match=r"^example = 'torus', but the built-in examples are capsule, "
+                                         r"uninflated-capsule$"):
         example("torus")
 
 

@@ -19,14 +19,15 @@ import meshio
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from pocket.shooting.descent import branch_start
 
 from pocket.apps.casefile import solved
 from pocket.apps.cases import parse
 from pocket.apps.physical import resolve
+from pocket.apps.sense import sensitivity_at_rest
 from pocket.cli import main
 from pocket.core.errors import InputError, OutOfRangeError
 from pocket.core.materials import check
-from pocket.shooting.descent import branch_start
 
 R, T, MU = 50e-6, 0.5e-6, 1e6
 NEO = check("neo-hookean", {"mu": 1.0})  # the case's rubber, in units of mu
@@ -50,14 +51,17 @@ def test_a_case_presses_an_uninflated_capsule_by_forces_in_newtons():
     liquid, the capsule guide's table), so it is listed as not reached with the solver's reason; the others hold
     F = P A_c in SI to the finite elements' force check (relative 1e-8, far above its allowance)."""
     result, pocket, _ = solved(_case())
-    assert pocket.pressure_initial == 0.0 and pocket.uninflated and pocket.force_unit == "ETR"
+    assert pocket.pressure_initial == 0.0
+    assert pocket.uninflated
+    assert pocket.force_unit == "ETR"
     assert pocket.force_unit_N == pytest.approx(ETR, rel=1e-15)
     rows = result["states"]
     assert [row["load"] for row in rows] == ["0 uN", "5 uN", "20 uN"]
     for row, newtons in zip(rows, (0.0, 5e-6, 20e-6), strict=True):
         assert row["force_N"] == pytest.approx(newtons, rel=1e-15, abs=0.0)
         assert row["force_ETR"] == pytest.approx(newtons / ETR, rel=1e-14, abs=0.0)
-        assert "force" not in row and "pressure_ratio" not in row
+        assert "force" not in row
+        assert "pressure_ratio" not in row
         assert row["gap_m"] == pytest.approx(2.0 * row["height"] * R, rel=1e-14)
     sphere = rows[0]
     assert (sphere["gap_m"], sphere["contact_area_m2"], sphere["pressure_Pa"]) == (pytest.approx(2 * R, rel=1e-15),
@@ -118,12 +122,12 @@ def test_sensing_refuses_an_uninflated_capsule(tmp_path, capsys):
     path.write_text(_toml(UNINFLATED))
     assert main(["sense", str(path), "--pressure", "2 kPa"]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1
+    assert out == ""
+    assert err.count("\n") == 1
     assert err.startswith("pocket: error: initial.pressure = '0 Pa' gives P_I = 0, an uninflated capsule")
-    with pytest.raises(InputError):
-        from pocket.apps.sense import sensitivity_at_rest
-
-        sensitivity_at_rest(resolve(_case()))
+    pocket = resolve(_case())
+    with pytest.raises(InputError, match="an uninflated capsule: sensing reads"):
+        sensitivity_at_rest(pocket)
 
 
 def test_pocket_run_writes_an_uninflated_capsules_results_and_series(tmp_path, capsys):
@@ -135,14 +139,17 @@ def test_pocket_run_writes_an_uninflated_capsules_results_and_series(tmp_path, c
     assert main(["run", str(path), "--out", str(tmp_path / "out"), "--vtk", str(tmp_path / "vtk")]) == 0
     out = capsys.readouterr().out.splitlines()
     header = out[1].split()
-    assert "force_ETR" in header and "force" not in header and "pressure_ratio" not in header
+    assert "force_ETR" in header
+    assert "force" not in header
+    assert "pressure_ratio" not in header
     rows = list(csv.DictReader((tmp_path / "out" / "squeeze.csv").open()))
     assert [float(row["force_N"]) for row in rows] == pytest.approx([0.0, 5e-6, 20e-6], rel=1e-15)
     series = (tmp_path / "vtk" / "surface.pvd").read_text()
     times = [float(line.split('timestep="')[1].split('"')[0]) for line in series.splitlines() if "timestep" in line]
     assert times == pytest.approx([0.0, 5e-6, 20e-6], rel=1e-15)
     mesh = meshio.read(tmp_path / "vtk" / "step_0002_surface.vtu")
-    assert "force" not in mesh.field_data and "pressure_ratio" not in mesh.field_data
+    assert "force" not in mesh.field_data
+    assert "pressure_ratio" not in mesh.field_data
     assert "force_scale_N" not in mesh.field_data
     assert mesh.field_data["force_ETR"][0] == pytest.approx(20e-6 / ETR, rel=1e-12)
     assert mesh.field_data["length_scale_m"][0] == pytest.approx(R, rel=1e-15)
@@ -170,7 +177,8 @@ def test_the_built_in_uninflated_capsule_reaches_every_load(tmp_path, capsys):
     assert result["unreachable"] == []
     assert rows[0]["gap_m"] == pytest.approx(2 * R, rel=1e-15)
     gaps = [row["gap_m"] for row in rows]
-    assert gaps == sorted(gaps, reverse=True) and len(set(gaps)) == len(gaps)
+    assert gaps == sorted(gaps, reverse=True)
+    assert len(set(gaps)) == len(gaps)
     assert [row["force_ETR"] for row in rows] == pytest.approx([f * 1e-6 / ETR for f in (0, 5, 10, 20, 40)],
                                                                rel=1e-14)
 
