@@ -77,10 +77,11 @@ def test_a_case_presses_an_uninflated_capsule_by_forces_in_newtons():
 
 
 def test_an_uninflated_capsule_by_its_radius_as_initial_height_is_the_same_case():
-    """Exact answer: an initial height of R is the unstressed capsule, P_I = 0, the same states as "0 Pa"."""
-    by_pressure = solved(_case(loads={"forces": ["5 uN"]}))[0]["states"]
-    by_height = solved(_case(initial={"height": "50 um"}, loads={"forces": ["5 uN"]}))[0]["states"]
-    assert [r["height_m"] for r in by_height] == [r["height_m"] for r in by_pressure]
+    """Exact answer: an initial height of R is the unstressed capsule, P_I = 0, pressed in the same unit E T R as
+    "0 Pa"."""
+    by_pressure, by_height = resolve(_case()), resolve(_case(initial={"height": "50 um"}))
+    assert by_height.pressure_initial == by_pressure.pressure_initial == 0.0
+    assert (by_height.force_unit, by_height.force_unit_N) == (by_pressure.force_unit, by_pressure.force_unit_N)
 
 
 @pytest.mark.parametrize("solver", ["fem", pytest.param("shooting", marks=pytest.mark.slow)])
@@ -190,7 +191,7 @@ def _start_etr() -> float:
     return branch_start(NEO, 0.0)[1]
 
 
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=6, deadline=None)  # each example a case of up to four forces solved: about 0.4 s
 @given(st.lists(st.one_of(st.just(0.0), st.floats(0.001, 0.063), st.floats(0.066, 1.0)), min_size=1, max_size=4))
 def test_any_forces_on_an_uninflated_capsule_are_solved_or_listed_as_short_of_its_states(etrs):
     """Whatever the forces and their order (a force within 2 % of where the states start is not drawn: the two
