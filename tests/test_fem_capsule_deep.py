@@ -203,3 +203,15 @@ def test_the_command_line_presses_an_uninflated_capsule_by_a_force_in_etr(capsys
     assert out == ""
     assert err.count("\n") == 1
     assert "--force-etr" in err
+
+
+def test_a_refused_force_etr_at_a_positive_pressure_is_said_as_given(capsys):
+    """At P_I > 0 ``--force-etr`` forces go to the solver as Fhat = F / (E T R) / (pi Phat_I): a refusal names the
+    values given and the Fhat each is (computed here), before the solver's reason; one line, exit 2."""
+    assert main(["compress", "--alpha", "0.2", "--pressure", "0.31", "--force-etr", "100"]) == 2
+    out, err = capsys.readouterr()
+    assert out == ""
+    assert err.count("\n") == 1
+    fhat = 100 / (math.pi * 0.31)
+    assert err.startswith(f"pocket: error: --force-etr 100 at --pressure 0.31 are Fhat = F / (E T R) / (pi Phat_I) "
+                          f"= {fhat:.10g}: force = {fhat!r} is beyond the model's range")

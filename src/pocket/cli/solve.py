@@ -15,7 +15,7 @@ import math
 
 from pocket.apps.folders import check_replaceable
 from pocket.apps.solvers import SOLVERS, entry
-from pocket.core.errors import ConvergenceError, InputError
+from pocket.core.errors import ConvergenceError, InputError, OutOfRangeError
 from pocket.core.indenters import PLATE
 from pocket.core.inputs import check_positive, check_volume, forces_in_fhat
 
@@ -135,7 +135,15 @@ def _solve(args, step: str, material, options: dict) -> list:
         forces = forces if "force_unit" in options else forces_in_fhat(forces, "ETR", args.pressure)
     with progress_bar(f"compress ({args.solver})", " forces") as progress:
         extra = {} if progress is None or len(forces) == 1 else {"progress": progress}
-        return curve(material, args.pressure, forces, **options, **extra)
+        try:
+            return curve(material, args.pressure, forces, **options, **extra)
+        except OutOfRangeError as err:
+            if args.force_etr is None or "force_unit" in options:
+                raise
+            # the forces went to the solver as Fhat: the refusal says which --force-etr value that was
+            raise OutOfRangeError(f"--force-etr {' '.join(map(_fmt, args.force_etr))} at --pressure "
+                                  f"{_fmt(args.pressure)} are Fhat = F / (E T R) / (pi Phat_I) = "
+                                  f"{' '.join(map(_fmt, forces))}: {err}") from None
 
 
 def _in_etr(args) -> dict:
