@@ -21,6 +21,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from pocket.shooting.descent import branch_start
 
+from pocket.apps import casefile
 from pocket.apps.casefile import solved
 from pocket.apps.cases import parse
 from pocket.apps.physical import resolve
@@ -84,21 +85,23 @@ def test_an_uninflated_capsule_by_its_radius_as_initial_height_is_the_same_case(
     assert (by_height.force_unit, by_height.force_unit_N) == (by_pressure.force_unit, by_pressure.force_unit_N)
 
 
-@pytest.mark.parametrize("solver", ["fem", pytest.param("shooting", marks=pytest.mark.slow)])
+@pytest.mark.parametrize("solver", ["fem", "shooting"])
 def test_heights_of_an_uninflated_capsule_cross_check_its_forces(solver):
-    """Heights by a solver (the shooting solver's case takes seconds: each height's force is solved again as a force,
-    a root of its heights), then the forces found as force loads by the finite elements: each comes back at its
-    height within the finite elements' error, estimated as the shift from the mesh of half as many elements (the
-    keys converge at least at first order; near the start of the states, where the contact edge's tension vanishes,
-    only slowly: 1.5e-4 of the force at H/R = 0.78 on the default mesh). R is the unstressed sphere, force 0; 45 um
-    lies above where the states start (H/R = 0.793 here), listed as not reached with the solver's reason."""
+    """Heights by a solver (each state solved at its height, to round-off), then the forces found as force loads by
+    the finite elements: each comes back at its height within the finite elements' error, estimated as the shift
+    from the mesh of half as many elements (the keys converge at least at first order; near the start of the states,
+    where the contact edge's tension vanishes, only slowly: 1.5e-4 of the force at H/R = 0.78 on the default mesh).
+    R is the unstressed sphere, force 0; 45 um lies above where the states start (H/R = 0.793 here), listed as not
+    reached with the solver's reason."""
     heights = ["50 um", "45 um", "39 um", "30 um"]
-    result = solved(_case(loads={"heights": heights}, solver={"name": solver}))[0]
+    case = _case(loads={"heights": heights}, solver={"name": solver})
+    result = solved(case)[0]
     rows = result["states"]
     assert [row["load"] for row in rows] == ["50 um", "39 um", "30 um"]
     assert rows[0]["force_N"] == 0.0
-    for row in rows:
+    for row, index in zip(rows, (0, 2, 3), strict=True):
         assert row["force_N"] == pytest.approx(row["force_ETR"] * ETR, rel=1e-14)
+        assert row["height"] == pytest.approx(case.loads[index] / case.radius, rel=1e-13, abs=0.0)
     (missed,) = result["unreachable"]
     assert missed["warnings"][0].startswith("loads.heights[1] = '45 um' (H/R = 0.9): height = 0.9 ")
     assert START in missed["warnings"][0]
@@ -108,6 +111,19 @@ def test_heights_of_an_uninflated_capsule_cross_check_its_forces(solver):
     coarse = solved(_case(loads={"forces": forces}, solver={"name": "fem", "elements": elements // 2}))[0]["states"]
     for row, half, height in zip(back, coarse, (39e-6, 30e-6), strict=True):
         assert abs(row["height_m"] - height) <= abs(row["height_m"] - half["height_m"])
+
+
+def test_a_case_of_heights_solves_each_state_once(monkeypatch):
+    """A height the solver holds itself is its state: no compression curve is asked for afterwards (at P_I = 0 the
+    shooting solver's would find each height's force again as a root of its heights); forces are one curve."""
+    asked = []
+    real = casefile.entry
+    monkeypatch.setattr(casefile, "entry", lambda solver, name, purpose: asked.append(name) or real(solver, name,
+                                                                                                    purpose))
+    solved(_case(loads={"heights": ["39 um", "30 um"]}))
+    assert asked == []
+    solved(_case(loads={"forces": ["5 uN", "20 uN"]}))
+    assert asked == ["compression_curve"]
 
 
 def test_a_flat_pocket_is_not_uninflated():

@@ -1,7 +1,8 @@
 """Solve a case file and write its results as JSON and CSV (``pocket run``).
 
 The case (``pocket.apps.cases``) is resolved to the dimensionless model
-(``pocket.apps.physical``), inflated and compressed at each load by its solver, and
+(``pocket.apps.physical``), inflated and compressed at each load by its solver (forces along one compression
+curve; heights each where the solver holds it, ``compress_height``, else at the force a search finds), and
 written as ``DIR/<stem>.json`` (the case: SI values and, under ``given``, every
 input as the file wrote it; the inflated state, the compressed states, and the
 provenance: pocket's and its libraries' versions) and ``DIR/<stem>.csv`` (one row
@@ -134,16 +135,23 @@ def solved(case: Case, progress=None) -> tuple[dict, Pocket, list]:
     True
     """
     pocket = resolve(case)
-    loads = load_forces(pocket)
+    held: dict = {}  # the states of heights the solver held itself
+    loads = load_forces(pocket, held)
     reached = [i for i, load in enumerate(loads) if not isinstance(load, OutOfRangeError)]
     if not reached:
         first = loads[0]
         assert isinstance(first, OutOfRangeError)  # no load reached: each is its error
         raise first
-    extra = {} if progress is None else {"progress": progress}
-    curve = entry(pocket.solver(), "compression_curve", f"the loads of case {case.name}")
-    states = curve(pocket.material, pocket.pressure_initial,
-                   [load for load in loads if not isinstance(load, OutOfRangeError)], **pocket.curve_options(), **extra)
+    if set(held) == set(reached):  # heights, each solved where it is: not again at its force
+        states = [held[i] for i in reached]
+        if progress is not None:
+            progress(len(states), len(states))
+    else:
+        extra = {} if progress is None else {"progress": progress}
+        curve = entry(pocket.solver(), "compression_curve", f"the loads of case {case.name}")
+        states = curve(pocket.material, pocket.pressure_initial,
+                       [load for load in loads if not isinstance(load, OutOfRangeError)], **pocket.curve_options(),
+                       **extra)
     result = {"case": case.fields(), "inflated": inflated_row(pocket, states[0].inflated),
               "states": [compressed_row(pocket, s, i) for i, s in zip(reached, states, strict=True)],
               "unreachable": [_unreached(case, i, e) for i, e in enumerate(loads) if isinstance(e, OutOfRangeError)],

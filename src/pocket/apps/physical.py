@@ -279,7 +279,7 @@ def forces(pocket: Pocket) -> list[float]:
     return out
 
 
-def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
+def load_forces(pocket: Pocket, held: dict | None = None) -> list[float | OutOfRangeError]:
     """Each of the case's loads as a force in the solvers' unit (``Pocket.force_unit``: Fhat, or an uninflated
     capsule's F / (E T R)) (heights of the indenter's lowest point solved for their force: by the solver's
     ``compress_height`` where its record lists it, else by a search on its forces, ``force_where``), or, for a
@@ -289,6 +289,8 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
     end of the model's range (``pocket.apps.forcerange``), is not reached; its error quotes the load as the
     case gives it, with the bound in its unit. A capsule's load short of the start of its branch reached deep, or
     between its two branches, is not reached either: its error is the solver's refusal after the load as given.
+    ``held``: a dict that gets, for each height the solver held itself (``compress_height``), its index -> the state
+    solved there, so that it need not be solved again at its force.
     """
     case = pocket.case
     out: list[float | OutOfRangeError] = []
@@ -317,8 +319,11 @@ def load_forces(pocket: Pocket) -> list[float | OutOfRangeError]:
             continue
         try:
             if travel:
-                out.append(pocket.solver_force(entry(solver, "compress_height", "loads.heights")(
-                    pocket.material, pocket.pressure_initial, height / case.radius, **options)))
+                state = entry(solver, "compress_height", "loads.heights")(pocket.material, pocket.pressure_initial,
+                                                                          height / case.radius, **options)
+                if held is not None:
+                    held[index] = state
+                out.append(pocket.solver_force(state))
             else:
                 out.append(force_where(solver, pocket.material, pocket.pressure_initial, "height",
                                        height / case.radius, increasing=False, **options))
